@@ -1,0 +1,16 @@
+# One place for warnings and sanitizers, applied per target so that third-party
+# headers found through find_package stay outside -Werror-style noise.
+function(antumbra_target_defaults target)
+  target_compile_options(${target} PRIVATE
+    $<$<CXX_COMPILER_ID:GNU,Clang>:-Wall -Wextra -Wpedantic -Wshadow -Wnon-virtual-dtor
+      -Wconversion -Wno-sign-conversion -Wno-missing-field-initializers>)
+  if(ANTUMBRA_SANITIZE)
+    target_compile_options(${target} PRIVATE -fsanitize=address,undefined -fno-omit-frame-pointer)
+    target_link_options(${target} PRIVATE -fsanitize=address,undefined)
+  endif()
+endfunction()
+
+if(ANTUMBRA_SANITIZE)
+  # Link-time sanitizer runtime must reach every executable, including tests.
+  add_link_options(-fsanitize=address,undefined)
+endif()

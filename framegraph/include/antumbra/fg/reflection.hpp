@@ -1,0 +1,113 @@
+#pragma once
+// What a pass type publishes about itself: ports and parameters. Validation, the
+// JSON Schema, the editor's property panels and the barrier plan all derive from
+// this, so a pass never has to say the same thing twice.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "antumbra/fg/json_document.hpp"
+
+namespace antumbra::fg {
+
+// Formats a graph resource can have. Names in JSON are given by to_string().
+enum class Format : std::uint8_t {
+  undefined,
+  r8,
+  rg8,
+  rgba8,
+  rgba8_srgb,
+  bgra8,
+  bgra8_srgb,
+  r16f,
+  rg16f,
+  rgba16f,
+  r32f,
+  rg32f,
+  rgba32f,
+  r32ui,
+  rg32ui,
+  rgba32ui,
+  r11g11b10f,
+  d16,
+  d32f,
+  d24s8,
+};
+
+std::string_view to_string(Format format);
+std::optional<Format> parse_format(std::string_view name);
+const std::vector<Format>& all_formats();
+bool is_depth_format(Format format);
+std::uint32_t bytes_per_texel(Format format);
+
+enum class ResourceKind : std::uint8_t { image, buffer };
+std::string_view to_string(ResourceKind kind);
+
+// How a pass touches a resource through a port.
+enum class Access : std::uint8_t {
+  none,                // not yet touched (initial state)
+  sampled,             // read through a sampler
+  storage_read,        // imageLoad / readonly SSBO
+  storage_write,       // imageStore / writeonly SSBO; previous contents not needed
+  storage_read_write,  // read-modify-write
+  color_attachment,    // written as a colour attachment
+  depth_attachment,    // depth written (and tested)
+  depth_read,          // depth tested, not written
+  uniform_read,        // uniform buffer
+  transfer_src,
+  transfer_dst,
+  present,             // handed to the presentation engine / read back
+};
+std::string_view to_string(Access access);
+bool is_write(Access access);
+bool is_read(Access access);
+
+// Where in the pipeline the access happens, for the barrier plan.
+enum class Stage : std::uint8_t { none, vertex, fragment, compute, graphics, transfer, host };
+std::string_view to_string(Stage stage);
+
+enum class PortDirection : std::uint8_t { input, output };
+
+struct PortDesc {
+  std::string name;
+  PortDirection direction = PortDirection::input;
+  ResourceKind kind = ResourceKind::image;
+  Access access = Access::sampled;
+  Stage stage = Stage::fragment;
+  std::vector<Format> formats;  // accepted formats; empty = any
+  std::uint32_t min_layers = 1;
+  std::uint32_t max_layers = 1;  // 0 = unlimited
+  bool optional = false;
+  // Ports in the same group must have equal sizes (attachments rendered together).
+  std::string size_group;
+  std::string description;
+};
+
+enum class ParamType : std::uint8_t { boolean, integer, number, enumeration, string };
+std::string_view to_string(ParamType type);
+
+struct ParamDesc {
+  std::string name;
+  ParamType type = ParamType::number;
+  Json default_value;
+  std::optional<double> min;
+  std::optional<double> max;
+  std::vector<std::string> choices;  // for enumeration
+  std::string description;
+};
+
+struct PassDesc {
+  std::string type;  // registry name, e.g. "gbuffer"
+  std::string description;
+  std::vector<PortDesc> ports;
+  std::vector<ParamDesc> params;
+  bool side_effects = false;  // never culled (e.g. writes to the host)
+
+  [[nodiscard]] const PortDesc* find_port(std::string_view name) const;
+  [[nodiscard]] const ParamDesc* find_param(std::string_view name) const;
+};
+
+}  // namespace antumbra::fg
