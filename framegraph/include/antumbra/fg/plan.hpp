@@ -67,6 +67,10 @@ struct PlanBarrier {
   Access to = Access::none;
   Stage to_stage = Stage::none;
   bool discard = false;  // previous contents not needed (first use / aliasing)
+  // For the first use of an aliased resource: the resource that used the same heap
+  // memory last before it (-1 if none). Its last access must finish first;
+  // from_stage then names that access's stage.
+  int previous_alias = -1;
 };
 
 struct PlanPass {
@@ -91,6 +95,7 @@ struct Plan {
   std::vector<PlanResource> resources;
   std::vector<PlanPass> passes;           // executed passes, in order
   std::vector<std::string> culled_passes;  // names, in description order
+  std::vector<std::string> disabled_passes;  // "enabled": false, in description order
   int output = -1;                        // index into resources
   std::vector<PlanBarrier> final_barriers;  // after the last pass (output -> present)
   AliasingReport aliasing;

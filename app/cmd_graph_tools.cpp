@@ -1,0 +1,113 @@
+// validate, plan and schema: the Vulkan-free commands, usable in CI without a GPU.
+#include <cstdio>
+#include <iostream>
+
+#include "antumbra/fg/compiler.hpp"
+#include "antumbra/fg/plan_io.hpp"
+#include "antumbra/fg/schema.hpp"
+#include "commands.hpp"
+#include "register_builtin_passes.hpp"
+
+namespace antumbra::app {
+namespace {
+
+void print_plan_text(const fg::Plan& plan) {
+  std::printf("graph %s (%s) at %ux%u\n", plan.name.c_str(), plan.file.c_str(), plan.viewport.width,
+              plan.viewport.height);
+  std::printf("passes (execution order):\n");
+  for (std::size_t i = 0; i < plan.passes.size(); ++i) {
+    const auto& pass = plan.passes[i];
+    std::printf("  %2zu %-20s %-20s %zu barrier(s)\n", i, pass.name.c_str(), pass.type.c_str(),
+                pass.barriers.size());
+  }
+  for (const auto& culled : plan.culled_passes) std::printf("     %-20s (culled)\n", culled.c_str());
+  std::printf("resources:\n");
+  for (const auto& r : plan.resources) {
+    std::printf("  %-20s %-8s %5ux%-5u x%-3u life [%d, %d]%s\n", r.name.c_str(),
+                std::string(fg::to_string(r.format)).c_str(), r.extent.width, r.extent.height, r.layers,
+                r.first_use, r.last_use,
+                r.aliased ? (" aliased @" + std::to_string(r.heap_offset)).c_str() : "");
+  }
+  std::printf("aliasing: %llu bytes in the transient heap instead of %llu (saved %llu)\n",
+              static_cast<unsigned long long>(plan.aliasing.heap_bytes),
+              static_cast<unsigned long long>(plan.aliasing.bytes_without_aliasing),
+              static_cast<unsigned long long>(plan.aliasing.bytes_saved()));
+}
+
+}  // namespace
+
+bool parse_size(const std::string& text, unsigned& width, unsigned& height) {
+  const auto x = text.find('x');
+  if (x == std::string::npos || x == 0 || x + 1 >= text.size()) return false;
+  try {
+    std::size_t used = 0;
+    const unsigned long w = std::stoul(text.substr(0, x), &used);
+    if (used != x) return false;
+    const unsigned long h = std::stoul(text.substr(x + 1), &used);
+    if (used != text.size() - x - 1) return false;
+    if (w < 1 || h < 1 || w > 16384 || h > 16384) return false;
+    width = static_cast<unsigned>(w);
+    height = static_cast<unsigned>(h);
+    return true;
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
+int run_validate(const ValidateOptions& options) {
+  const auto registry = passes::builtin_pass_registry();
+  bool failed = false;
+  nlohmann::json report = nlohmann::json::array();
+  for (const auto& file : options.files) {
+    const auto result = fg::compile_file(file, registry.reflection());
+    const auto& diagnostics = result.diagnostics();
+    const bool file_failed =
+        !result.ok() || (options.werror && diagnostics.warning_count() > 0);
+    failed = failed || file_failed;
+    if (options.format == "json") {
+      report.push_back({{"file", file}, {"valid", !file_failed}, {"diagnostics", diagnostics.to_json()}});
+      continue;
+    }
+    for (const auto& d : diagnostics) {
+      if (d.severity == fg::Severity::note) continue;
+      std::fprintf(stderr, "%s\n", fg::format_text(d).c_str());
+    }
+    std::printf("%s: %s (%zu error(s), %zu warning(s))\n", file.c_str(), file_failed ? "invalid" : "valid",
+                diagnostics.error_count(), diagnostics.warning_count());
+  }
+  if (options.format == "json") std::cout << nlohmann::json{{"files", report}}.dump(2) << '\n';
+  return failed ? kExitDiagnostics : kExitOk;
+}
+
+int run_plan(const PlanOptions& options) {
+  unsigned width = 0;
+  unsigned height = 0;
+  if (!parse_size(options.size, width, height)) {
+    std::fprintf(stderr, "antumbra plan: --size must be WxH with 1..16384, got \"%s\"\n", options.size.c_str());
+    return kExitUsage;
+  }
+  const auto registry = passes::builtin_pass_registry();
+  fg::CompileOptions compile_options;
+  compile_options.viewport = {width, height};
+  const auto result = fg::compile_file(options.file, registry.reflection(), compile_options);
+  for (const auto& d : result.diagnostics()) {
+    if (d.severity != fg::Severity::note) std::fprintf(stderr, "%s\n", fg::format_text(d).c_str());
+  }
+  if (!result.ok()) return kExitDiagnostics;
+  if (options.format == "dot") {
+    std::cout << fg::plan_to_dot(result.value());
+  } else if (options.format == "text") {
+    print_plan_text(result.value());
+  } else {
+    std::cout << fg::plan_to_json_text(result.value());
+  }
+  return kExitOk;
+}
+
+int run_schema() {
+  const auto registry = passes::builtin_pass_registry();
+  std::cout << fg::generate_schema(registry.reflection()).dump(2) << '\n';
+  return kExitOk;
+}
+
+}  // namespace antumbra::app

@@ -1,0 +1,138 @@
+// antumbra render: compile the graph, render headless, write the image, print timings.
+#include <cstdio>
+#include <filesystem>
+
+#include "antumbra/fg/graph_desc.hpp"
+#include "antumbra/fg/json_document.hpp"
+#include "antumbra/gpu/timing.hpp"
+#include "antumbra/scene/scene_file.hpp"
+#include "commands.hpp"
+#include "render_session.hpp"
+
+namespace antumbra::app {
+namespace {
+
+void print_diagnostics(const fg::Diagnostics& diagnostics) {
+  for (const auto& d : diagnostics) {
+    if (d.severity != fg::Severity::note) std::fprintf(stderr, "%s\n", fg::format_text(d).c_str());
+  }
+}
+
+void print_timings(const RenderSession& session, const std::vector<PassTiming>& timings,
+                   int frames) {
+  std::printf("%-20s %-20s %10s %10s\n", "pass", "type", "gpu ms", "cpu ms");
+  double gpu_total = 0.0;
+  double cpu_total = 0.0;
+  for (const auto& t : timings) {
+    std::printf("%-20s %-20s %10.3f %10.3f\n", t.name.c_str(), t.type.c_str(), t.gpu_ms, t.cpu_ms);
+    gpu_total += t.gpu_ms;
+    cpu_total += t.cpu_ms;
+  }
+  std::printf("%-20s %-20s %10.3f %10.3f   (median of %d frame(s))\n", "total", "", gpu_total,
+              cpu_total, frames);
+  for (const auto& culled : session.executor().plan().culled_passes) {
+    std::printf("%-20s (culled: its outputs reach no graph output)\n", culled.c_str());
+  }
+}
+
+}  // namespace
+
+int run_render(const RenderOptions& options) {
+  unsigned width = 0;
+  unsigned height = 0;
+  if (!parse_size(options.size, width, height)) {
+    std::fprintf(stderr, "antumbra render: --size must be WxH with 1..16384, got \"%s\"\n",
+                 options.size.c_str());
+    return kExitUsage;
+  }
+  const DataPaths paths = find_data_paths();
+  const std::string graph_path =
+      options.graph.empty() ? (paths.graphs() / "deferred.json").string() : options.graph;
+  const std::string scene_path =
+      options.scene.empty() ? (paths.scenes() / "atrium.json").string() : options.scene;
+  gpu::CpuTimer stage;
+
+  // User input first, so a broken file fails fast without touching the GPU.
+  auto document = fg::load_json_file(graph_path);
+  if (!document.ok()) {
+    print_diagnostics(document.diagnostics());
+    return kExitDiagnostics;
+  }
+  auto graph = fg::parse_graph(document.value());
+  if (!graph.ok()) {
+    print_diagnostics(graph.diagnostics());
+    return kExitDiagnostics;
+  }
+  if (!options.output.empty()) {
+    if (graph->find_resource(options.output) < 0) {
+      std::fprintf(stderr, "antumbra render: --output \"%s\" is not a resource of %s\n",
+                   options.output.c_str(), graph_path.c_str());
+      return kExitUsage;
+    }
+    // The requested resource becomes the graph's output: it is kept alive (never
+    // aliased) and only the passes that feed it run.
+    graph->output = options.output;
+  }
+  auto scene = scene::load_scene_file(scene_path);
+  print_diagnostics(scene.diagnostics());
+  if (!scene.ok()) return kExitDiagnostics;
+  const double parse_ms = stage.elapsed_ms();
+
+  stage.restart();
+  SessionOptions session_options;
+  session_options.device = options.device;
+  session_options.validation = options.validation;
+  session_options.viewport = {width, height};
+  RenderSession session(paths, session_options);
+  const double device_ms = stage.elapsed_ms();
+  std::printf("device: %s%s\n", session.gpu().device_name().c_str(),
+              options.validation ? " (validation + synchronization validation on)" : "");
+
+  stage.restart();
+  const auto diagnostics = session.load_graph(graph.value());
+  print_diagnostics(diagnostics);
+  if (diagnostics.has_errors()) return kExitDiagnostics;
+  const double compile_ms = stage.elapsed_ms();
+
+  stage.restart();
+  session.set_scene(std::move(scene.value()));
+  const double upload_ms = stage.elapsed_ms();
+
+  TraceWriter trace;
+  stage.restart();
+  session.render(options.frames, options.trace.empty() ? nullptr : &trace);
+  const double render_ms = stage.elapsed_ms();
+
+  stage.restart();
+  const std::string resource = session.executor().plan().resources.at(
+      static_cast<std::size_t>(session.executor().plan().output)).name;
+  const auto out_dir = std::filesystem::path(options.out).parent_path();
+  if (!out_dir.empty()) std::filesystem::create_directories(out_dir);
+  session.write_image(resource, options.out);
+  if (!options.hdr_out.empty()) session.write_image(resource, options.hdr_out);
+  const double write_ms = stage.elapsed_ms();
+
+  print_timings(session, session.pass_timings(), options.frames);
+  std::printf("cpu stages: parse %.1f ms, device %.1f ms, compile+realise %.1f ms, upload %.1f ms, "
+              "render %.1f ms, write %.1f ms\n",
+              parse_ms, device_ms, compile_ms, upload_ms, render_ms, write_ms);
+  std::printf("wrote %s (%s, %ux%u)\n", options.out.c_str(), resource.c_str(), width, height);
+
+  if (!options.trace.empty()) {
+    double t = 0.0;
+    for (const auto& [name, ms] : {std::pair{"parse", parse_ms}, {"device", device_ms},
+                                   {"compile", compile_ms}, {"upload", upload_ms}}) {
+      trace.add({name, "cpu", t * 1000.0, ms * 1000.0, 1});
+      t += ms;
+    }
+    trace.write(options.trace);
+  }
+  if (options.validation && session.gpu().validation_error_count() > 0) {
+    std::fprintf(stderr, "antumbra render: %zu validation error(s)\n",
+                 session.gpu().validation_error_count());
+    return kExitRuntime;
+  }
+  return kExitOk;
+}
+
+}  // namespace antumbra::app

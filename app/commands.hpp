@@ -1,0 +1,49 @@
+#pragma once
+// One function per subcommand. Each returns the process exit code:
+// 0 success, 1 diagnostics found, 2 usage error, 3 runtime or device error.
+
+#include <string>
+#include <vector>
+
+namespace antumbra::app {
+
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitDiagnostics = 1;
+inline constexpr int kExitUsage = 2;
+inline constexpr int kExitRuntime = 3;
+
+struct ValidateOptions {
+  std::vector<std::string> files;
+  std::string format = "text";  // text | json
+  bool werror = false;
+};
+
+struct PlanOptions {
+  std::string file;
+  std::string format = "json";  // json | dot | text
+  std::string size = "1280x720";
+};
+
+struct RenderOptions {
+  std::string graph;  // empty: the default graph
+  std::string scene;  // empty: the default scene
+  std::string size = "1280x720";
+  int frames = 1;
+  std::string out = "out/frame.png";
+  std::string output;  // resource to write; empty: the graph's output
+  std::string device = "auto";
+  bool validation = false;
+  std::string trace;
+  std::string hdr_out;  // optional .pfm of the HDR resource
+};
+
+int run_validate(const ValidateOptions& options);
+int run_plan(const PlanOptions& options);
+int run_schema();
+int run_render(const RenderOptions& options);
+int run_devices(const std::string& device, bool validation);
+
+// "1280x720" -> width, height; false when malformed or out of 1..16384.
+bool parse_size(const std::string& text, unsigned& width, unsigned& height);
+
+}  // namespace antumbra::app

@@ -1,0 +1,21 @@
+#pragma once
+// Where the program finds data/ and the pass shaders: ANTUMBRA_ROOT, else the first
+// folder holding both data/ and passes/ going up from the working directory, then
+// from the executable, then the source tree it was built from.
+
+#include <filesystem>
+#include <string>
+
+namespace antumbra::app {
+
+struct DataPaths {
+  std::filesystem::path root;  // holds data/ and passes/
+  [[nodiscard]] std::filesystem::path graphs() const { return root / "data" / "graphs"; }
+  [[nodiscard]] std::filesystem::path scenes() const { return root / "data" / "scenes"; }
+  [[nodiscard]] std::filesystem::path shaders() const { return root / "passes"; }
+};
+
+// Throws std::runtime_error naming the places searched when nothing fits.
+DataPaths find_data_paths();
+
+}  // namespace antumbra::app

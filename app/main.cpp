@@ -1,0 +1,93 @@
+// antumbra: the command-line entry point.
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <exception>
+#include <iostream>
+
+#include "commands.hpp"
+
+namespace {
+
+int dispatch(int argc, char** argv) {
+  using namespace antumbra::app;
+  CLI::App cli{"Antumbra: a JSON frame graph for many-light soft shadows on Vulkan 1.3"};
+  cli.require_subcommand(1);
+  cli.set_version_flag("--version", "antumbra 0.1.0");
+
+  RenderOptions render;
+  auto* render_cmd = cli.add_subcommand("render", "Render frames and write an image");
+  render_cmd->add_option("--graph", render.graph, "Frame graph JSON (default: data/graphs/deferred.json)");
+  render_cmd->add_option("--scene", render.scene, "Scene JSON (default: data/scenes/atrium.json)");
+  render_cmd->add_option("--size", render.size, "Viewport WxH")->capture_default_str();
+  render_cmd->add_option("--frames", render.frames, "Frames to render")->check(CLI::Range(1, 100000))->capture_default_str();
+  render_cmd->add_option("--out", render.out, "PNG to write")->capture_default_str();
+  render_cmd->add_option("--output", render.output, "Graph resource to write (default: the graph output)");
+  render_cmd->add_option("--hdr-out", render.hdr_out, "Also write this resource as PFM (float)");
+  render_cmd->add_option("--device", render.device, "auto|cpu|gpu|N|<name substring>")->capture_default_str();
+  render_cmd->add_flag("--validation", render.validation, "Khronos validation + synchronization validation");
+  render_cmd->add_option("--trace", render.trace, "Write a Chrome/Perfetto trace JSON");
+
+  ValidateOptions validate;
+  auto* validate_cmd = cli.add_subcommand("validate", "Check frame graph files (no GPU needed)");
+  validate_cmd->add_option("files", validate.files, "Graph files")->required();
+  validate_cmd->add_option("--format", validate.format, "text|json")
+      ->check(CLI::IsMember({"text", "json"}))->capture_default_str();
+  validate_cmd->add_flag("--werror", validate.werror, "Treat warnings as errors");
+
+  PlanOptions plan;
+  auto* plan_cmd = cli.add_subcommand("plan", "Print the compiled plan of a graph");
+  plan_cmd->add_option("file", plan.file, "Graph file")->required();
+  auto* plan_format = plan_cmd->add_option_group("format");
+  bool plan_dot = false;
+  bool plan_json = false;
+  bool plan_text = false;
+  plan_format->add_flag("--dot", plan_dot, "Graphviz dot");
+  plan_format->add_flag("--json", plan_json, "Canonical JSON (default)");
+  plan_format->add_flag("--text", plan_text, "Readable summary");
+  plan_format->require_option(0, 1);
+  plan_cmd->add_option("--size", plan.size, "Viewport WxH the plan is compiled for")->capture_default_str();
+
+  cli.add_subcommand("schema", "Print the JSON Schema of graph files");
+
+  std::string devices_device = "auto";
+  bool devices_validation = false;
+  auto* devices_cmd = cli.add_subcommand("devices", "List Vulkan devices and the one --device picks");
+  devices_cmd->add_option("--device", devices_device, "Selection to explain")->capture_default_str();
+  devices_cmd->add_flag("--validation", devices_validation, "Enable validation while probing");
+
+  try {
+    cli.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return cli.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return cli.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return cli.exit(e);
+  } catch (const CLI::ParseError& e) {
+    cli.exit(e);
+    return kExitUsage;
+  }
+
+  if (render_cmd->parsed()) return run_render(render);
+  if (validate_cmd->parsed()) return run_validate(validate);
+  if (plan_cmd->parsed()) {
+    plan.format = plan_dot ? "dot" : (plan_text ? "text" : "json");
+    return run_plan(plan);
+  }
+  if (devices_cmd->parsed()) return run_devices(devices_device, devices_validation);
+  return run_schema();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    return dispatch(argc, argv);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "antumbra: error: %s\n", e.what());
+    return antumbra::app::kExitRuntime;
+  } catch (...) {
+    std::fprintf(stderr, "antumbra: error: unknown failure\n");
+    return antumbra::app::kExitRuntime;
+  }
+}

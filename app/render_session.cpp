@@ -1,0 +1,161 @@
+#include "render_session.hpp"
+
+#include <algorithm>
+#include <map>
+#include <stdexcept>
+
+#include "antumbra/fg/compiler.hpp"
+#include "antumbra/gpu/image_io.hpp"
+#include "antumbra/gpu/pipeline_cache.hpp"
+#include "register_builtin_passes.hpp"
+
+namespace antumbra::app {
+namespace {
+
+double median(std::vector<double> values) {
+  if (values.empty()) return 0.0;
+  std::sort(values.begin(), values.end());
+  const std::size_t mid = values.size() / 2;
+  return values.size() % 2 == 1 ? values[mid] : 0.5 * (values[mid - 1] + values[mid]);
+}
+
+}  // namespace
+
+// Opens a GPU timestamp scope and measures CPU recording time around each pass.
+class RenderSession::Observer final : public fgvk::PassObserver {
+ public:
+  explicit Observer(gpu::GpuTimer& timer) : timer_(timer) {}
+
+  void begin_pass(VkCommandBuffer cmd, const fg::PlanPass& pass) override {
+    scope_ = timer_.begin_scope(cmd, pass.name);
+    cpu_.restart();
+  }
+  void end_pass(VkCommandBuffer cmd, const fg::PlanPass& pass) override {
+    cpu_ms_[pass.name].push_back(cpu_.elapsed_ms());
+    timer_.end_scope(cmd, scope_);
+  }
+  void gather_gpu() {
+    if (timer_.completed_frames() == last_completed_) return;
+    last_completed_ = timer_.completed_frames();
+    for (const auto& scope : timer_.last_results()) gpu_ms_[scope.name].push_back(scope.gpu_ms);
+  }
+  std::map<std::string, std::vector<double>> cpu_ms_;
+  std::map<std::string, std::vector<double>> gpu_ms_;
+
+ private:
+  gpu::GpuTimer& timer_;
+  gpu::CpuTimer cpu_;
+  std::uint32_t scope_ = 0;
+  std::uint64_t last_completed_ = 0;
+};
+
+RenderSession::RenderSession(const DataPaths& paths, const SessionOptions& options)
+    : paths_(paths), options_(options) {
+  gpu::ContextOptions context_options;
+  context_options.validation = options.validation;
+  context_options.device = options.device;
+  gpu_ = std::make_unique<gpu::Context>(context_options);
+  gpu::ShaderCompilerOptions shader_options;
+  shader_options.include_dirs = {paths_.shaders()};
+  shaders_ = std::make_unique<gpu::ShaderCompiler>(shader_options);
+  pipeline_cache_ = std::make_unique<gpu::PipelineCache>(*gpu_);
+  registry_ = std::make_unique<fgvk::PassRegistry>(passes::builtin_pass_registry());
+  executor_ = std::make_unique<fgvk::Executor>(*gpu_, *shaders_, *registry_, paths_.shaders().string(),
+                                               pipeline_cache_->handle());
+  frames_ = std::make_unique<gpu::FrameLoop>(*gpu_);
+  timer_ = std::make_unique<gpu::GpuTimer>(*gpu_, frames_->frames_in_flight());
+  observer_ = std::make_unique<Observer>(*timer_);
+}
+
+RenderSession::~RenderSession() {
+  if (gpu_) gpu_->wait_idle();
+}
+
+fg::Diagnostics RenderSession::load_graph(const fg::GraphDesc& graph) {
+  fg::CompileOptions compile_options;
+  compile_options.viewport = {options_.viewport.width, options_.viewport.height};
+  compile_options.footprint = executor_->footprint_fn();
+  auto plan = fg::compile(graph, registry_->reflection(), compile_options);
+  fg::Diagnostics diagnostics = plan.diagnostics();
+  if (!plan.ok()) return diagnostics;
+  try {
+    executor_->load(std::move(plan.value()));
+  } catch (const fgvk::PassError& e) {
+    diagnostics.append(e.diagnostics());
+  }
+  return diagnostics;
+}
+
+void RenderSession::set_scene(scene::Scene scene) {
+  if (frames_) frames_->wait_all();
+  scene_ = std::move(scene);
+  gpu_scene_ = std::make_unique<passes::GpuScene>(*gpu_, *scene_, frames_->frames_in_flight());
+}
+
+void RenderSession::render(int frames, TraceWriter* trace) {
+  if (!scene_ || !executor_->loaded()) throw std::logic_error("render() needs a scene and a graph");
+  gpu::CpuTimer clock;
+  for (int i = 0; i < frames; ++i) {
+    const double frame_start = clock.elapsed_ms();
+    VkCommandBuffer cmd = frames_->begin_frame();
+    gpu_->collect_garbage();
+    observer_->gather_gpu();
+    timer_->begin_frame(cmd, frames_->slot());
+    const auto frame = gpu_scene_->update(frames_->slot(), *scene_, options_.viewport,
+                                          frames_->frame_number());
+    executor_->record(cmd, frame, observer_.get());
+    frames_->end_frame();
+    if (trace != nullptr) {
+      trace->add({"frame " + std::to_string(i), "cpu", frame_start * 1000.0,
+                  (clock.elapsed_ms() - frame_start) * 1000.0, 1});
+    }
+  }
+  frames_->wait_all();
+  // Timestamps of the last frames are read when their slot comes round again; run
+  // one empty pass over the slots so every rendered frame is counted.
+  for (std::uint32_t i = 0; i < frames_->frames_in_flight(); ++i) {
+    VkCommandBuffer cmd = frames_->begin_frame();
+    observer_->gather_gpu();
+    timer_->begin_frame(cmd, frames_->slot());
+    frames_->end_frame();
+  }
+  frames_->wait_all();
+  observer_->gather_gpu();
+  if (trace != nullptr) {
+    double t = 0.0;
+    for (const auto& timing : pass_timings()) {
+      trace->add({timing.name, "gpu", t * 1000.0, timing.gpu_ms * 1000.0, 2});
+      t += timing.gpu_ms;
+    }
+  }
+}
+
+std::vector<PassTiming> RenderSession::pass_timings() const {
+  std::vector<PassTiming> timings;
+  for (const auto& pass : executor_->plan().passes) {
+    PassTiming t{pass.name, pass.type};
+    if (auto it = observer_->gpu_ms_.find(pass.name); it != observer_->gpu_ms_.end()) {
+      t.gpu_ms = median(it->second);
+    }
+    if (auto it = observer_->cpu_ms_.find(pass.name); it != observer_->cpu_ms_.end()) {
+      t.cpu_ms = median(it->second);
+    }
+    timings.push_back(t);
+  }
+  return timings;
+}
+
+void RenderSession::write_image(const std::string& resource, const std::string& path) {
+  const gpu::Image* image = executor_->gpu_image(resource);
+  const fgvk::BoundImage* bound = executor_->image(resource);
+  if (image == nullptr || bound == nullptr) {
+    throw std::runtime_error("resource \"" + resource + "\" is not a realised image of the graph");
+  }
+  frames_->wait_all();
+  const auto host = gpu::read_image(*gpu_, *image, bound->layout);
+  const bool pfm = path.size() > 4 && path.substr(path.size() - 4) == ".pfm";
+  const bool ok = pfm ? gpu::write_pfm(path, host) : gpu::write_png(path, host);
+  if (!ok) throw std::runtime_error("cannot write " + path);
+}
+
+}  // namespace antumbra::app

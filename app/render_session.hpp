@@ -1,0 +1,75 @@
+#pragma once
+// Everything one headless render needs, built in order and torn down in reverse:
+// device, shader compiler, pass registry, executor, scene on the GPU, frame loop.
+// Shared by `render` and (later) `bench` and the editor.
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "antumbra/fg/diagnostics.hpp"
+#include "antumbra/fg/graph_desc.hpp"
+#include "antumbra/fgvk/executor.hpp"
+#include "antumbra/gpu/context.hpp"
+#include "antumbra/gpu/frame_loop.hpp"
+#include "antumbra/gpu/pipeline_cache.hpp"
+#include "antumbra/gpu/shader_compiler.hpp"
+#include "antumbra/gpu/timing.hpp"
+#include "antumbra/scene/scene.hpp"
+#include "common/gpu_scene.hpp"
+#include "data_paths.hpp"
+#include "trace_writer.hpp"
+
+namespace antumbra::app {
+
+struct SessionOptions {
+  std::string device = "auto";
+  bool validation = false;
+  VkExtent2D viewport{1280, 720};
+};
+
+struct PassTiming {
+  std::string name;
+  std::string type;
+  double gpu_ms = 0.0;  // median over the timed frames
+  double cpu_ms = 0.0;  // recording time, median
+};
+
+class RenderSession {
+ public:
+  RenderSession(const DataPaths& paths, const SessionOptions& options);
+  ~RenderSession();
+
+  // Compiles and realises a graph. On errors (graph or shader diagnostics) returns
+  // them and keeps the previous graph running.
+  fg::Diagnostics load_graph(const fg::GraphDesc& graph);
+  void set_scene(scene::Scene scene);
+
+  // Renders `frames` frames; per-pass timings are gathered from every frame.
+  void render(int frames, TraceWriter* trace);
+  [[nodiscard]] std::vector<PassTiming> pass_timings() const;
+
+  // Writes a graph image to PNG (or PFM when the path ends in .pfm).
+  void write_image(const std::string& resource, const std::string& path);
+
+  [[nodiscard]] gpu::Context& gpu() { return *gpu_; }
+  [[nodiscard]] const fgvk::Executor& executor() const { return *executor_; }
+
+ private:
+  class Observer;
+  DataPaths paths_;
+  SessionOptions options_;
+  std::unique_ptr<gpu::Context> gpu_;
+  std::unique_ptr<gpu::ShaderCompiler> shaders_;
+  std::unique_ptr<gpu::PipelineCache> pipeline_cache_;
+  std::unique_ptr<fgvk::PassRegistry> registry_;
+  std::unique_ptr<fgvk::Executor> executor_;
+  std::unique_ptr<gpu::FrameLoop> frames_;
+  std::unique_ptr<gpu::GpuTimer> timer_;
+  std::optional<scene::Scene> scene_;
+  std::unique_ptr<passes::GpuScene> gpu_scene_;
+  std::unique_ptr<Observer> observer_;
+};
+
+}  // namespace antumbra::app

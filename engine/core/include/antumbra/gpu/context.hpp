@@ -1,0 +1,208 @@
+#pragma once
+// The Vulkan context: instance (+ validation with synchronization validation), one
+// physical device, one device with one graphics+compute queue, the sub-allocator, the
+// timeline semaphore every submission signals, and the deferred-destruction queue keyed
+// to that timeline. Passed explicitly as `Context&`; there is no global instance.
+//
+// Threading: one thread records, submits and destroys; only the validation callback
+// may run on other threads (its counters are synchronised).
+
+#include <array>
+#include <atomic>
+#include <cstdint>
+#include <deque>
+#include <functional>
+#include <mutex>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+#include "antumbra/gpu/memory.hpp"
+#include "antumbra/gpu/vk_check.hpp"
+
+namespace antumbra::gpu {
+
+struct ContextOptions {
+  std::string app_name = "antumbra";
+  bool validation = false;
+  bool sync_validation = true;  // only when validation is on
+  // auto | cpu | gpu | <index> | <case-insensitive name substring>. auto prefers
+  // discrete, then integrated, then virtual GPUs, then CPU (lavapipe).
+  std::string device = "auto";
+  std::vector<std::string> instance_extensions;
+  std::vector<std::string> device_extensions;
+  bool headless = true;  // false: VK_KHR_swapchain is enabled on the device as well
+};
+
+// Optional features that were found and enabled (required ones are always on:
+// dynamicRendering, synchronization2, timelineSemaphore, VK_KHR_push_descriptor).
+struct DeviceFeatures {
+  bool sampler_anisotropy = false;
+  bool storage_image_write_without_format = false;
+  bool storage_image_read_without_format = false;
+  bool multiview = false;
+  bool descriptor_indexing = false;  // runtime arrays, partially bound, non-uniform sampled
+  bool host_query_reset = false;
+  bool geometry_shader = false;
+  bool shader_output_layer = false;  // gl_Layer from vertex shaders
+  bool image_cube_array = false;
+  bool fill_mode_non_solid = false;
+  bool multi_draw_indirect = false;
+  bool scalar_block_layout = false;
+  bool shader_draw_parameters = false;
+};
+
+struct DeviceInfo {
+  std::uint32_t index = 0;
+  std::string name;
+  VkPhysicalDeviceType type = VK_PHYSICAL_DEVICE_TYPE_OTHER;
+  std::uint32_t api_version = 0;
+};
+
+struct ValidationMessage {
+  VkDebugUtilsMessageSeverityFlagBitsEXT severity{};
+  std::string id_name;
+  std::string text;
+};
+
+// Semaphores a submission waits on / signals besides the context's timeline (binary
+// semaphores of a swapchain, for instance).
+struct SubmitExtras {
+  std::vector<VkSemaphoreSubmitInfo> waits;
+  std::vector<VkSemaphoreSubmitInfo> signals;
+  VkFence fence = VK_NULL_HANDLE;
+};
+
+// Extension entry points, loaded once (nullptr where the extension is absent).
+struct ExtensionFunctions {
+  PFN_vkSetDebugUtilsObjectNameEXT set_object_name = nullptr;
+  PFN_vkCmdBeginDebugUtilsLabelEXT cmd_begin_label = nullptr;
+  PFN_vkCmdEndDebugUtilsLabelEXT cmd_end_label = nullptr;
+  PFN_vkCmdPushDescriptorSetKHR cmd_push_descriptor_set = nullptr;
+};
+
+class Context {
+ public:
+  static constexpr std::size_t kKeptValidationMessages = 64;
+
+  // Throws NoVulkanDeviceError (no driver/device), DeviceSelectionError (no device
+  // matches), std::runtime_error (validation layer missing) or VulkanError.
+  explicit Context(const ContextOptions& options);
+  Context(const Context&) = delete;
+  Context& operator=(const Context&) = delete;
+  ~Context();  // waits for the device, destroys everything still queued
+
+  [[nodiscard]] VkInstance instance() const { return instance_; }
+  [[nodiscard]] VkPhysicalDevice physical_device() const { return physical_device_; }
+  [[nodiscard]] VkDevice device() const { return device_; }
+  [[nodiscard]] VkQueue queue() const { return queue_; }
+  [[nodiscard]] std::uint32_t queue_family() const { return queue_family_; }
+  [[nodiscard]] const VkPhysicalDeviceProperties& properties() const { return properties_; }
+  [[nodiscard]] const VkPhysicalDeviceLimits& limits() const { return properties_.limits; }
+  [[nodiscard]] const std::string& device_name() const { return device_name_; }
+  [[nodiscard]] bool is_cpu() const;
+  [[nodiscard]] const DeviceFeatures& features() const { return features_; }
+  [[nodiscard]] const ExtensionFunctions& ext() const { return ext_; }
+  [[nodiscard]] Allocator& allocator() { return *allocator_; }
+  [[nodiscard]] bool validation_enabled() const { return validation_; }
+  // Every physical device, in enumeration order (also listed in selection errors).
+  [[nodiscard]] const std::vector<DeviceInfo>& devices() const { return devices_; }
+
+  // Debug-utils names and labels; no-ops when VK_EXT_debug_utils is unavailable.
+  void set_name(std::uint64_t handle, VkObjectType type, std::string_view name) const;
+  template <class T>
+  void set_name(T handle, VkObjectType type, std::string_view name) const {
+    set_name(handle_bits(handle), type, name);
+  }
+  void begin_label(VkCommandBuffer cmd, std::string_view name,
+                   std::array<float, 4> color = {0.f, 0.f, 0.f, 0.f}) const;
+  void end_label(VkCommandBuffer cmd) const;
+
+  // Validation-layer messages seen so far (errors and warnings, any thread).
+  [[nodiscard]] std::size_t validation_error_count() const { return errors_.load(); }
+  [[nodiscard]] std::size_t validation_warning_count() const { return warnings_.load(); }
+  [[nodiscard]] std::vector<ValidationMessage> validation_messages() const;  // last N
+  void reset_validation_counts();
+
+  // Submission. Every submit signals the timeline with the next value and returns it.
+  [[nodiscard]] VkSemaphore timeline() const { return timeline_; }
+  [[nodiscard]] std::uint64_t last_submitted_value() const { return last_submitted_; }
+  [[nodiscard]] std::uint64_t completed_value() const;
+  std::uint64_t submit(VkCommandBuffer cmd, const SubmitExtras& extras = {});
+  void wait_for(std::uint64_t timeline_value) const;
+  // Records, submits and waits: for init-time uploads and tests, not per frame.
+  void submit_immediate(const std::function<void(VkCommandBuffer)>& record);
+
+  // Deferred destruction: the object is destroyed once the GPU has passed every
+  // submission up to and including the one being recorded now.
+  void destroy_deferred(VkObjectType type, std::uint64_t handle, const Allocation& allocation = {});
+  void collect_garbage();  // call once per frame
+  void wait_idle();        // vkDeviceWaitIdle, then destroys everything queued
+  [[nodiscard]] std::size_t pending_destruction_count() const { return pending_.size(); }
+  [[nodiscard]] std::uint64_t destroyed_count() const { return destroyed_count_; }
+
+ private:
+  struct PendingDestroy {
+    VkObjectType type;
+    std::uint64_t handle;
+    Allocation allocation;
+    std::uint64_t after_value;
+  };
+
+  static VKAPI_ATTR VkBool32 VKAPI_CALL debug_callback(
+      VkDebugUtilsMessageSeverityFlagBitsEXT severity, VkDebugUtilsMessageTypeFlagsEXT types,
+      const VkDebugUtilsMessengerCallbackDataEXT* data, void* user);
+
+  void create_instance(const ContextOptions& options);
+  void select_physical_device(const ContextOptions& options);
+  void create_device(const ContextOptions& options);
+  void destroy_now(const PendingDestroy& object);
+
+  bool validation_ = false;
+  bool debug_utils_ = false;
+  VkInstance instance_ = VK_NULL_HANDLE;
+  VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
+  VkPhysicalDevice physical_device_ = VK_NULL_HANDLE;
+  VkDevice device_ = VK_NULL_HANDLE;
+  VkQueue queue_ = VK_NULL_HANDLE;
+  std::uint32_t queue_family_ = 0;
+  VkPhysicalDeviceProperties properties_{};
+  std::string device_name_;
+  DeviceFeatures features_;
+  ExtensionFunctions ext_;
+  std::vector<DeviceInfo> devices_;
+  std::unique_ptr<Allocator> allocator_;
+
+  VkSemaphore timeline_ = VK_NULL_HANDLE;
+  std::uint64_t last_submitted_ = 0;
+  VkCommandPool immediate_pool_ = VK_NULL_HANDLE;
+
+  std::deque<PendingDestroy> pending_;
+  std::uint64_t destroyed_count_ = 0;
+
+  std::atomic<std::size_t> errors_{0};
+  std::atomic<std::size_t> warnings_{0};
+  mutable std::mutex messages_mutex_;
+  std::deque<ValidationMessage> messages_;
+};
+
+// RAII debug label around a region of a command buffer.
+class CommandLabel {
+ public:
+  CommandLabel(const Context& context, VkCommandBuffer cmd, std::string_view name,
+               std::array<float, 4> color = {0.f, 0.f, 0.f, 0.f})
+      : context_(context), cmd_(cmd) {
+    context_.begin_label(cmd_, name, color);
+  }
+  CommandLabel(const CommandLabel&) = delete;
+  CommandLabel& operator=(const CommandLabel&) = delete;
+  ~CommandLabel() { context_.end_label(cmd_); }
+
+ private:
+  const Context& context_;
+  VkCommandBuffer cmd_;
+};
+
+}  // namespace antumbra::gpu

@@ -1,0 +1,84 @@
+#pragma once
+// Device memory sub-allocation (VMA is not packaged in Debian, so we keep a small one):
+// per memory type, 64 MiB blocks carved by first-fit free lists; larger requests get a
+// dedicated VkDeviceMemory. Linear (buffers) and optimal (images) resources live in
+// separate blocks, which satisfies bufferImageGranularity without per-range bookkeeping.
+// Host-visible blocks are mapped once and stay mapped.
+//
+// Not thread-safe: one thread records and allocates (the engine is single-threaded).
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+#include "antumbra/gpu/free_list.hpp"
+
+namespace antumbra::gpu {
+
+enum class MemoryUsage {
+  gpu_only,  // DEVICE_LOCAL
+  upload,    // HOST_VISIBLE | HOST_COHERENT, written by the CPU, read by the GPU
+  readback,  // HOST_VISIBLE | HOST_COHERENT, HOST_CACHED preferred
+};
+
+enum class ResourceTiling { linear, optimal };
+
+struct Allocation {
+  VkDeviceMemory memory = VK_NULL_HANDLE;
+  VkDeviceSize offset = 0;
+  VkDeviceSize size = 0;
+  std::byte* mapped = nullptr;  // at `offset`; nullptr unless host-visible
+  std::uint32_t memory_type = 0;
+  std::uint32_t pool = 0;   // internal: which (type, tiling) pool
+  std::uint32_t block = 0;  // internal: block index in the pool
+  bool dedicated = false;
+
+  [[nodiscard]] bool valid() const { return memory != VK_NULL_HANDLE; }
+};
+
+class Allocator {
+ public:
+  static constexpr VkDeviceSize kBlockSize = VkDeviceSize{64} << 20;
+
+  Allocator(VkPhysicalDevice physical_device, VkDevice device);
+  Allocator(const Allocator&) = delete;
+  Allocator& operator=(const Allocator&) = delete;
+  ~Allocator();
+
+  // Throws VulkanError (VK_ERROR_OUT_OF_DEVICE_MEMORY) when no memory type fits.
+  Allocation allocate(const VkMemoryRequirements& requirements, MemoryUsage usage,
+                      ResourceTiling tiling);
+  // A dedicated device-local allocation the caller places several resources into
+  // (transient aliasing). Mapped when the chosen type is host-visible.
+  Allocation allocate_heap(VkDeviceSize size, std::uint32_t memory_type_bits);
+  void free(const Allocation& allocation);
+
+  // The memory type index for usage among type_bits; throws when none fits.
+  [[nodiscard]] std::uint32_t find_memory_type(std::uint32_t type_bits, MemoryUsage usage) const;
+  [[nodiscard]] std::size_t block_count() const;
+  [[nodiscard]] std::size_t dedicated_count() const { return dedicated_count_; }
+  [[nodiscard]] VkDeviceSize allocated_bytes() const { return allocated_bytes_; }
+
+ private:
+  struct Block {
+    VkDeviceMemory memory = VK_NULL_HANDLE;
+    std::byte* mapped = nullptr;
+    FreeList free_list;
+  };
+  struct Pool {
+    std::vector<std::unique_ptr<Block>> blocks;
+  };
+
+  VkDeviceMemory allocate_memory(VkDeviceSize size, std::uint32_t type, std::byte** mapped);
+
+  VkDevice device_;
+  VkPhysicalDeviceMemoryProperties properties_{};
+  std::vector<Pool> pools_;  // index = memory_type * 2 + tiling
+  std::size_t dedicated_count_ = 0;
+  VkDeviceSize allocated_bytes_ = 0;
+};
+
+}  // namespace antumbra::gpu

@@ -1,0 +1,57 @@
+#pragma once
+// Runtime failures of the Vulkan API become exceptions that carry the VkResult, its
+// name and where the call was made. Bad user input is reported as Diagnostics instead.
+
+#include <cstdint>
+#include <source_location>
+#include <stdexcept>
+#include <string>
+
+#include <vulkan/vulkan.h>
+
+namespace antumbra::gpu {
+
+// "VK_ERROR_OUT_OF_DEVICE_MEMORY", or "VkResult(<n>)" for codes this build does not know.
+const char* result_name(VkResult result);
+const char* device_type_name(VkPhysicalDeviceType type);
+
+class VulkanError : public std::runtime_error {
+ public:
+  VulkanError(VkResult result, const std::string& what, std::source_location location);
+  [[nodiscard]] VkResult result() const { return result_; }
+  [[nodiscard]] const std::source_location& location() const { return location_; }
+
+ private:
+  VkResult result_;
+  std::source_location location_;
+};
+
+// No Vulkan driver, no physical device, or instance creation refused: tests skip on this.
+class NoVulkanDeviceError : public std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Devices exist, but none matches ContextOptions::device or has what we require. The
+// message lists every device (index, name, type, API version).
+class DeviceSelectionError : public std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Throws VulkanError unless result is VK_SUCCESS (or another non-negative status code
+// the caller chose to accept by not calling check on it).
+inline void check(VkResult result, const char* what,
+                  std::source_location location = std::source_location::current()) {
+  if (result < VK_SUCCESS) throw VulkanError(result, what, location);
+}
+
+// Non-dispatchable handles are pointers on 64-bit builds and uint64_t on 32-bit ones.
+template <class T>
+std::uint64_t handle_bits(T handle) {
+  if constexpr (std::is_pointer_v<T>) {
+    return reinterpret_cast<std::uint64_t>(handle);
+  } else {
+    return static_cast<std::uint64_t>(handle);
+  }
+}
+
+}  // namespace antumbra::gpu

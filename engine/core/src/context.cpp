@@ -1,0 +1,213 @@
+// Context creation: instance, validation, device selection, device and queue.
+#include <algorithm>
+#include <cctype>
+#include <cstring>
+#include <optional>
+#include <sstream>
+
+#include <spdlog/spdlog.h>
+
+#include "antumbra/gpu/context.hpp"
+#include "device_selection.hpp"
+
+namespace antumbra::gpu {
+
+namespace {
+
+constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
+
+bool has_layer(const char* name) {
+  std::uint32_t count = 0;
+  vkEnumerateInstanceLayerProperties(&count, nullptr);
+  std::vector<VkLayerProperties> layers(count);
+  vkEnumerateInstanceLayerProperties(&count, layers.data());
+  return std::any_of(layers.begin(), layers.end(), [&](const VkLayerProperties& l) {
+    return std::strcmp(l.layerName, name) == 0;
+  });
+}
+
+bool has_instance_extension(const char* name) {
+  std::uint32_t count = 0;
+  vkEnumerateInstanceExtensionProperties(nullptr, &count, nullptr);
+  std::vector<VkExtensionProperties> extensions(count);
+  vkEnumerateInstanceExtensionProperties(nullptr, &count, extensions.data());
+  return std::any_of(extensions.begin(), extensions.end(), [&](const VkExtensionProperties& e) {
+    return std::strcmp(e.extensionName, name) == 0;
+  });
+}
+
+void add_unique(std::vector<const char*>& list, const char* name) {
+  if (std::none_of(list.begin(), list.end(),
+                   [&](const char* n) { return std::strcmp(n, name) == 0; })) {
+    list.push_back(name);
+  }
+}
+
+}  // namespace
+
+Context::Context(const ContextOptions& options) {
+  try {
+    create_instance(options);
+    select_physical_device(options);
+    create_device(options);
+  } catch (...) {
+    // The destructor does not run for a half-built object: undo what exists.
+    if (device_) vkDestroyDevice(device_, nullptr);
+    if (messenger_) {
+      auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
+          vkGetInstanceProcAddr(instance_, "vkDestroyDebugUtilsMessengerEXT"));
+      if (destroy) destroy(instance_, messenger_, nullptr);
+    }
+    if (instance_) vkDestroyInstance(instance_, nullptr);
+    throw;
+  }
+  allocator_ = std::make_unique<Allocator>(physical_device_, device_);
+
+  VkSemaphoreTypeCreateInfo type_info{VK_STRUCTURE_TYPE_SEMAPHORE_TYPE_CREATE_INFO};
+  type_info.semaphoreType = VK_SEMAPHORE_TYPE_TIMELINE;
+  type_info.initialValue = 0;
+  VkSemaphoreCreateInfo semaphore_info{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO, &type_info};
+  check(vkCreateSemaphore(device_, &semaphore_info, nullptr, &timeline_), "vkCreateSemaphore");
+  set_name(timeline_, VK_OBJECT_TYPE_SEMAPHORE, "context.timeline");
+
+  VkCommandPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+  pool_info.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
+  pool_info.queueFamilyIndex = queue_family_;
+  check(vkCreateCommandPool(device_, &pool_info, nullptr, &immediate_pool_), "vkCreateCommandPool");
+  set_name(immediate_pool_, VK_OBJECT_TYPE_COMMAND_POOL, "context.immediate_pool");
+  spdlog::info("Vulkan device: {} ({}), validation {}", device_name_,
+               device_type_name(properties_.deviceType), validation_ ? "on" : "off");
+}
+
+Context::~Context() {
+  if (device_) {
+    wait_idle();
+    vkDestroyCommandPool(device_, immediate_pool_, nullptr);
+    vkDestroySemaphore(device_, timeline_, nullptr);
+    allocator_.reset();
+    vkDestroyDevice(device_, nullptr);
+  }
+  if (messenger_) {
+    auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
+        vkGetInstanceProcAddr(instance_, "vkDestroyDebugUtilsMessengerEXT"));
+    if (destroy) destroy(instance_, messenger_, nullptr);
+  }
+  if (instance_) vkDestroyInstance(instance_, nullptr);
+}
+
+bool Context::is_cpu() const {
+  return properties_.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+}
+
+void Context::create_instance(const ContextOptions& options) {
+  std::uint32_t loader_version = 0;
+  if (vkEnumerateInstanceVersion(&loader_version) != VK_SUCCESS ||
+      loader_version < VK_API_VERSION_1_3) {
+    throw NoVulkanDeviceError("the Vulkan loader does not offer Vulkan 1.3");
+  }
+  validation_ = options.validation;
+  std::vector<const char*> layers;
+  if (validation_) {
+    if (!has_layer(kValidationLayer)) {
+      throw std::runtime_error(
+          "validation requested but VK_LAYER_KHRONOS_validation is not installed "
+          "(Debian: apt install vulkan-validationlayers)");
+    }
+    layers.push_back(kValidationLayer);
+  }
+  std::vector<const char*> extensions;
+  for (const auto& name : options.instance_extensions) add_unique(extensions, name.c_str());
+  debug_utils_ = has_instance_extension(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+  if (debug_utils_) add_unique(extensions, VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+  VkInstanceCreateFlags flags = 0;
+  if (has_instance_extension(VK_KHR_PORTABILITY_ENUMERATION_EXTENSION_NAME)) {
+    add_unique(extensions, VK_KHR_PORTABILITY_ENUMERATION_EXTENSION_NAME);
+    flags |= VK_INSTANCE_CREATE_ENUMERATE_PORTABILITY_BIT_KHR;
+  }
+
+  VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
+  app.pApplicationName = options.app_name.c_str();
+  app.pEngineName = "antumbra";
+  app.apiVersion = VK_API_VERSION_1_3;
+
+  // The messenger is chained into instance creation too, so messages from
+  // vkCreateInstance/vkDestroyInstance are counted as well.
+  VkDebugUtilsMessengerCreateInfoEXT messenger_info{
+      VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
+  messenger_info.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT |
+                                   VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
+  messenger_info.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT |
+                               VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
+                               VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
+  messenger_info.pfnUserCallback = &Context::debug_callback;
+  messenger_info.pUserData = this;
+
+  const VkValidationFeatureEnableEXT enables[] = {
+      VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT};
+  VkValidationFeaturesEXT features{VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT};
+  features.enabledValidationFeatureCount = 1;
+  features.pEnabledValidationFeatures = enables;
+
+  VkInstanceCreateInfo info{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
+  info.flags = flags;
+  info.pApplicationInfo = &app;
+  info.enabledLayerCount = static_cast<std::uint32_t>(layers.size());
+  info.ppEnabledLayerNames = layers.data();
+  info.enabledExtensionCount = static_cast<std::uint32_t>(extensions.size());
+  info.ppEnabledExtensionNames = extensions.data();
+  const void* chain = nullptr;
+  if (validation_ && debug_utils_) {
+    messenger_info.pNext = chain;
+    chain = &messenger_info;
+  }
+  if (validation_ && options.sync_validation) {
+    features.pNext = chain;
+    chain = &features;
+  }
+  info.pNext = chain;
+  const VkResult result = vkCreateInstance(&info, nullptr, &instance_);
+  if (result == VK_ERROR_INCOMPATIBLE_DRIVER) {
+    throw NoVulkanDeviceError(
+        "no Vulkan 1.3 driver (vkCreateInstance: VK_ERROR_INCOMPATIBLE_DRIVER)");
+  }
+  check(result, "vkCreateInstance");
+
+  if (validation_ && debug_utils_) {
+    auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
+        vkGetInstanceProcAddr(instance_, "vkCreateDebugUtilsMessengerEXT"));
+    messenger_info.pNext = nullptr;
+    check(create(instance_, &messenger_info, nullptr, &messenger_),
+          "vkCreateDebugUtilsMessengerEXT");
+  }
+  if (debug_utils_) {
+    ext_.set_object_name = reinterpret_cast<PFN_vkSetDebugUtilsObjectNameEXT>(
+        vkGetInstanceProcAddr(instance_, "vkSetDebugUtilsObjectNameEXT"));
+    ext_.cmd_begin_label = reinterpret_cast<PFN_vkCmdBeginDebugUtilsLabelEXT>(
+        vkGetInstanceProcAddr(instance_, "vkCmdBeginDebugUtilsLabelEXT"));
+    ext_.cmd_end_label = reinterpret_cast<PFN_vkCmdEndDebugUtilsLabelEXT>(
+        vkGetInstanceProcAddr(instance_, "vkCmdEndDebugUtilsLabelEXT"));
+  }
+}
+
+void Context::select_physical_device(const ContextOptions& options) {
+  std::uint32_t count = 0;
+  check(vkEnumeratePhysicalDevices(instance_, &count, nullptr), "vkEnumeratePhysicalDevices");
+  if (count == 0) throw NoVulkanDeviceError("no Vulkan physical device is present");
+  std::vector<VkPhysicalDevice> physical(count);
+  check(vkEnumeratePhysicalDevices(instance_, &count, physical.data()),
+        "vkEnumeratePhysicalDevices");
+
+  std::vector<DeviceCandidate> candidates;
+  for (std::uint32_t i = 0; i < count; ++i) {
+    candidates.push_back(
+        describe_device(physical[i], i, options.device_extensions, !options.headless));
+    devices_.push_back(candidates.back().info);
+  }
+  const DeviceCandidate& chosen = choose_device(candidates, options.device);
+  physical_device_ = physical[chosen.info.index];
+  queue_family_ = chosen.queue_family;
+  vkGetPhysicalDeviceProperties(physical_device_, &properties_);
+  device_name_ = properties_.deviceName;
+}
+
+}  // namespace antumbra::gpu

@@ -1,0 +1,36 @@
+#pragma once
+// glTF 2.0 import (.gltf with external or embedded buffers, and .glb) through tinygltf.
+// Every index, offset, stride, count and component type is checked before any byte is
+// read, because tinygltf itself does not: a malformed file gives SC03x diagnostics,
+// never a crash or an endless recursion. Images are not decoded (untextured model).
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "antumbra/fg/diagnostics.hpp"
+#include "antumbra/scene/scene.hpp"
+
+namespace antumbra::scene {
+
+struct GltfImport {
+  // One mesh per triangle primitive per node of the default scene (scene 0 when the
+  // file names none). Vertices are in the primitive's local space; `transform` is the
+  // node's world matrix; `material` indexes `materials`.
+  std::vector<Mesh> meshes;
+  // glTF materials in file order (baseColorFactor -> albedo, metallic/roughness
+  // factors; alphaMode BLEND with alpha < 1 -> translucent), then one default material
+  // used by primitives without a material.
+  std::vector<Material> materials;
+};
+
+struct GltfLimits {
+  std::size_t max_triangles = 10'000'000;
+  std::size_t max_node_visits = 100'000;  // bounds instancing blow-ups
+};
+
+// Diagnostics carry file = `path` and a JSON Pointer into the glTF (e.g. /accessors/3),
+// without line numbers.
+fg::Result<GltfImport> load_gltf(const std::string& path, const GltfLimits& limits = {});
+
+}  // namespace antumbra::scene

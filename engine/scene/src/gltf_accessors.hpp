@@ -1,0 +1,50 @@
+#pragma once
+// Bounds-checked reading of glTF accessors. tinygltf parses the JSON and loads the
+// buffers but trusts every index, offset, stride and count in the file; these readers
+// check all of them before touching a byte, and read with memcpy (no alignment
+// assumptions).
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "antumbra/scene/scene.hpp"
+
+#include <tiny_gltf.h>  // from /usr/include, a system directory: its warnings stay out
+
+namespace antumbra::scene::detail {
+
+// A problem found in the glTF: a code from scene_codes.hpp, a message and a JSON
+// Pointer into the glTF document.
+struct GltfIssue {
+  const char* code = nullptr;
+  std::string message;
+  std::string pointer;
+};
+
+// `referrer` is the pointer of the value holding the accessor index (for bad indices).
+bool read_positions(const tinygltf::Model& model, int accessor, const std::string& referrer,
+                    std::vector<glm::vec3>& out, GltfIssue& issue);
+bool read_normals(const tinygltf::Model& model, int accessor, const std::string& referrer,
+                  std::vector<glm::vec3>& out, GltfIssue& issue);
+bool read_texcoords(const tinygltf::Model& model, int accessor, const std::string& referrer,
+                    std::vector<glm::vec2>& out, GltfIssue& issue);
+// Any of the three index component types; values are NOT range-checked here.
+bool read_indices(const tinygltf::Model& model, int accessor, const std::string& referrer,
+                  std::vector<std::uint32_t>& out, GltfIssue& issue);
+
+// Turns one glTF primitive into `mesh` (local space): validated attributes, indices
+// (generated when absent; strips and fans become lists), normals computed when missing.
+// Points and lines leave `mesh` empty and add a warning.
+bool build_primitive_mesh(const tinygltf::Model& model, const tinygltf::Primitive& prim,
+                          const std::string& pointer, Mesh& mesh, GltfIssue& issue,
+                          std::vector<GltfIssue>& warnings);
+
+// Type checks of the glTF JSON (gltf_schema.cpp), run before tinygltf, which ignores
+// wrongly typed properties. Geometry-relevant problems go to `errors`.
+void check_gltf_schema(const std::string& path, std::vector<GltfIssue>& errors,
+                       std::vector<GltfIssue>& warnings);
+
+}  // namespace antumbra::scene::detail

@@ -1,0 +1,298 @@
+// glTF import: loads with tinygltf, walks the default scene's node tree (guarding
+// against cycles and instancing blow-ups), and turns triangle primitives into Meshes.
+#include "antumbra/scene/gltf_loader.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <unordered_set>
+
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "antumbra/scene/scene_codes.hpp"
+#include "gltf_accessors.hpp"
+
+namespace antumbra::scene {
+namespace {
+
+using detail::GltfIssue;
+
+constexpr int kMaxNodeDepth = 1024;
+
+// Images are not needed (untextured rendering): skip decoding them entirely.
+bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, int,
+                const unsigned char*, int, void*) {
+  return true;
+}
+
+bool is_binary(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  char magic[4] = {};
+  in.read(magic, 4);
+  return in.gcount() == 4 && std::string_view(magic, 4) == "glTF";
+}
+
+bool finite(const glm::mat4& m) {
+  for (int c = 0; c < 4; ++c) {
+    for (int r = 0; r < 4; ++r) {
+      if (!std::isfinite(m[c][r])) return false;
+    }
+  }
+  return true;
+}
+
+Material convert_material(const tinygltf::Material& m, std::size_t index) {
+  Material out;
+  out.name = m.name.empty() ? "material" + std::to_string(index) : m.name;
+  glm::vec4 base(1.0f);
+  const auto& f = m.pbrMetallicRoughness.baseColorFactor;
+  if (f.size() == 4 && std::all_of(f.begin(), f.end(), [](double v) { return std::isfinite(v); })) {
+    base = glm::clamp(glm::vec4(f[0], f[1], f[2], f[3]), 0.0f, 1.0f);
+  }
+  const auto clamp01 = [](double v, float fallback) {
+    return std::isfinite(v) ? std::clamp(static_cast<float>(v), 0.0f, 1.0f) : fallback;
+  };
+  out.albedo = glm::vec3(base);
+  out.metallic = clamp01(m.pbrMetallicRoughness.metallicFactor, 1.0f);
+  out.roughness = clamp01(m.pbrMetallicRoughness.roughnessFactor, 1.0f);
+  out.translucent = m.alphaMode == "BLEND" && base.a < 1.0f;
+  out.transmittance = base;
+  return out;
+}
+
+class Importer {
+ public:
+  Importer(const tinygltf::Model& model, const GltfLimits& limits, GltfImport& out)
+      : model_(model), limits_(limits), out_(out) {}
+
+  // Returns false with `issue_` set on the first error.
+  bool run();
+  [[nodiscard]] const GltfIssue& issue() const { return issue_; }
+  [[nodiscard]] const std::vector<GltfIssue>& warnings() const { return warnings_; }
+
+ private:
+  bool fail(const char* code, std::string message, std::string pointer) {
+    issue_ = GltfIssue{code, std::move(message), std::move(pointer)};
+    return false;
+  }
+  bool node_matrix(const tinygltf::Node& node, const std::string& p, glm::mat4& out);
+  bool visit(int node, const std::string& referrer, const glm::mat4& parent, int depth);
+  bool add_mesh(int mesh, const std::string& referrer, const glm::mat4& world);
+  bool add_primitive(const tinygltf::Primitive& prim, const std::string& p, const std::string& name,
+                     const glm::mat4& world);
+
+  const tinygltf::Model& model_;
+  const GltfLimits& limits_;
+  GltfImport& out_;
+  GltfIssue issue_;
+  std::vector<GltfIssue> warnings_;
+  std::vector<bool> on_path_;
+  std::size_t visits_ = 0;
+  std::size_t triangles_ = 0;
+};
+
+bool Importer::run() {
+  for (const std::string& ext : model_.extensionsRequired) {
+    // Material and texture extensions only refine shading we do not use; geometry
+    // compression/quantisation would leave us reading encoded bytes as floats.
+    if (ext.starts_with("KHR_materials_") || ext.starts_with("KHR_texture_")) continue;
+    return fail(codes::kGltfUnsupported, "required extension '" + ext + "' is not supported",
+                "/extensionsRequired");
+  }
+  for (std::size_t i = 0; i < model_.materials.size(); ++i) {
+    out_.materials.push_back(convert_material(model_.materials[i], i));
+  }
+  out_.materials.push_back(Material{.name = "default"});
+  on_path_.assign(model_.nodes.size(), false);
+  if (model_.scenes.empty()) {
+    return fail(codes::kGltfNoGeometry,
+                model_.defaultScene >= 0 ? "\"scene\" " + std::to_string(model_.defaultScene) +
+                                               " names a scene, but the file has no scenes"
+                                         : "the file has no scenes",
+                model_.defaultScene >= 0 ? "/scene" : "");
+  }
+  const int scene = model_.defaultScene < 0 ? 0 : model_.defaultScene;
+  if (static_cast<std::size_t>(scene) >= model_.scenes.size()) {
+    return fail(codes::kGltfBadReference, "scene " + std::to_string(scene) + " does not exist",
+                "/scene");
+  }
+  const auto& roots = model_.scenes[static_cast<std::size_t>(scene)].nodes;
+  const std::string sp = "/scenes/" + std::to_string(scene) + "/nodes";
+  for (std::size_t i = 0; i < roots.size(); ++i) {
+    if (!visit(roots[i], sp + "/" + std::to_string(i), glm::mat4(1.0f), 0)) return false;
+  }
+  if (out_.meshes.empty()) {
+    return fail(codes::kGltfNoGeometry, "scene " + std::to_string(scene) + " contains no triangles",
+                "/scenes/" + std::to_string(scene));
+  }
+  return true;
+}
+
+bool Importer::node_matrix(const tinygltf::Node& node, const std::string& p, glm::mat4& out) {
+  out = glm::mat4(1.0f);
+  if (!node.matrix.empty()) {
+    if (node.matrix.size() != 16) {
+      return fail(codes::kGltfParse, "node matrix needs 16 numbers", p + "/matrix");
+    }
+    for (int i = 0; i < 16; ++i) {  // column-major in glTF and glm alike
+      out[i / 4][i % 4] = static_cast<float>(node.matrix[static_cast<std::size_t>(i)]);
+    }
+  } else {
+    const auto& t = node.translation;
+    const auto& r = node.rotation;
+    const auto& s = node.scale;
+    if ((!t.empty() && t.size() != 3) || (!r.empty() && r.size() != 4) ||
+        (!s.empty() && s.size() != 3)) {
+      return fail(codes::kGltfParse, "node translation/rotation/scale has the wrong arity", p);
+    }
+    glm::mat4 m(1.0f);
+    if (!t.empty()) m = glm::translate(m, glm::vec3(t[0], t[1], t[2]));
+    // glTF quaternions are (x, y, z, w); glm's constructor takes w first.
+    if (!r.empty()) {
+      m *= glm::mat4_cast(
+          glm::normalize(glm::quat(static_cast<float>(r[3]), static_cast<float>(r[0]),
+                                   static_cast<float>(r[1]), static_cast<float>(r[2]))));
+    }
+    if (!s.empty()) m = glm::scale(m, glm::vec3(s[0], s[1], s[2]));
+    out = m;
+  }
+  if (!finite(out)) return fail(codes::kGltfNonFinite, "node transform is not finite", p);
+  return true;
+}
+
+bool Importer::visit(int node, const std::string& referrer, const glm::mat4& parent, int depth) {
+  if (node < 0 || static_cast<std::size_t>(node) >= model_.nodes.size()) {
+    return fail(codes::kGltfBadReference, "node " + std::to_string(node) + " does not exist",
+                referrer);
+  }
+  const auto n = static_cast<std::size_t>(node);
+  const std::string p = "/nodes/" + std::to_string(node);
+  if (on_path_[n]) {
+    return fail(codes::kGltfNodeCycle,
+                "node " + std::to_string(node) + " is its own ancestor (cycle in the node tree)",
+                referrer);
+  }
+  if (++visits_ > limits_.max_node_visits || depth > kMaxNodeDepth) {
+    return fail(codes::kGltfTooLarge, "node tree is too deep or instanced too often", p);
+  }
+  glm::mat4 local;
+  if (!node_matrix(model_.nodes[n], p, local)) return false;
+  const glm::mat4 world = parent * local;
+  const tinygltf::Node& nd = model_.nodes[n];
+  if (nd.mesh >= 0 && !add_mesh(nd.mesh, p + "/mesh", world)) return false;
+  on_path_[n] = true;
+  for (std::size_t i = 0; i < nd.children.size(); ++i) {
+    if (!visit(nd.children[i], p + "/children/" + std::to_string(i), world, depth + 1))
+      return false;
+  }
+  on_path_[n] = false;
+  return true;
+}
+
+bool Importer::add_mesh(int mesh, const std::string& referrer, const glm::mat4& world) {
+  if (static_cast<std::size_t>(mesh) >= model_.meshes.size()) {
+    return fail(codes::kGltfBadReference, "mesh " + std::to_string(mesh) + " does not exist",
+                referrer);
+  }
+  const tinygltf::Mesh& m = model_.meshes[static_cast<std::size_t>(mesh)];
+  const std::string mp = "/meshes/" + std::to_string(mesh);
+  for (std::size_t i = 0; i < m.primitives.size(); ++i) {
+    // Built by appending: GCC 12 reports a false -Wrestrict on "literal" + std::string.
+    std::string name = m.name.empty() ? std::string("mesh").append(std::to_string(mesh)) : m.name;
+    if (m.primitives.size() > 1) name.append(".").append(std::to_string(i));
+    if (!add_primitive(m.primitives[i], mp + "/primitives/" + std::to_string(i), name, world)) {
+      return false;
+    }
+  }
+  return true;
+}
+
+bool Importer::add_primitive(const tinygltf::Primitive& prim, const std::string& p,
+                             const std::string& name, const glm::mat4& world) {
+  Mesh mesh;
+  mesh.name = name;
+  if (!detail::build_primitive_mesh(model_, prim, p, mesh, issue_, warnings_)) return false;
+  if (mesh.indices.empty()) return true;  // skipped (points/lines), with a warning
+  triangles_ += mesh.triangle_count();
+  if (triangles_ > limits_.max_triangles) {
+    return fail(codes::kGltfTooLarge,
+                "more than " + std::to_string(limits_.max_triangles) + " triangles", p);
+  }
+  const int material = prim.material;
+  if (material >= static_cast<int>(model_.materials.size())) {
+    return fail(codes::kGltfBadReference,
+                "material " + std::to_string(material) + " does not exist", p + "/material");
+  }
+  mesh.material = material < 0 ? static_cast<int>(out_.materials.size()) - 1 : material;
+  mesh.transform = world;
+  mesh.update_bounds();
+  out_.meshes.push_back(std::move(mesh));
+  return true;
+}
+
+}  // namespace
+
+fg::Result<GltfImport> load_gltf(const std::string& path, const GltfLimits& limits) {
+  fg::Diagnostics diagnostics;
+  const auto report = [&](const char* code, fg::Severity severity, std::string message,
+                          std::string pointer) {
+    diagnostics.add(
+        fg::Diagnostic{code, severity, std::move(message), path, std::move(pointer), 0, 0});
+  };
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) {
+    report(codes::kGltfFileMissing, fg::Severity::error, "file not found", "");
+    return diagnostics;
+  }
+  std::vector<GltfIssue> schema_errors;
+  std::vector<GltfIssue> schema_warnings;
+  detail::check_gltf_schema(path, schema_errors, schema_warnings);
+  for (const GltfIssue& w : schema_warnings) {
+    report(w.code, fg::Severity::warning, w.message, w.pointer);
+  }
+  if (!schema_errors.empty()) {
+    for (const GltfIssue& e : schema_errors)
+      report(e.code, fg::Severity::error, e.message, e.pointer);
+    return diagnostics;
+  }
+  tinygltf::Model model;
+  std::string error;
+  std::string warning;
+  bool loaded = false;
+  try {
+    tinygltf::TinyGLTF loader;
+    loader.SetImageLoader(skip_image, nullptr);
+    loaded = is_binary(path) ? loader.LoadBinaryFromFile(&model, &error, &warning, path)
+                             : loader.LoadASCIIFromFile(&model, &error, &warning, path);
+  } catch (const std::exception& e) {  // tinygltf/nlohmann on hostile input, bad_alloc
+    error = e.what();
+  }
+  const auto trim = [](std::string s) {
+    while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) s.pop_back();
+    return s;
+  };
+  if (!trim(warning).empty()) {
+    report(codes::kGltfWarning, fg::Severity::warning, "tinygltf: " + trim(warning), "");
+  }
+  if (!loaded) {
+    report(codes::kGltfParse, fg::Severity::error,
+           "cannot load: " + (trim(error).empty() ? std::string("unknown error") : trim(error)),
+           "");
+    return diagnostics;
+  }
+  GltfImport out;
+  Importer importer(model, limits, out);
+  const bool ok = importer.run();
+  for (const GltfIssue& w : importer.warnings()) {
+    report(w.code, fg::Severity::warning, w.message, w.pointer);
+  }
+  if (!ok) {
+    const GltfIssue& e = importer.issue();
+    report(e.code, fg::Severity::error, e.message, e.pointer);
+    return diagnostics;
+  }
+  return fg::Result<GltfImport>(std::move(out), std::move(diagnostics));
+}
+
+}  // namespace antumbra::scene

@@ -1,0 +1,140 @@
+#include <cmath>
+
+#include "antumbra/scene/scene_codes.hpp"
+#include "gltf_accessors.hpp"
+
+namespace antumbra::scene::detail {
+namespace {
+
+constexpr int kModeTriangles = TINYGLTF_MODE_TRIANGLES;
+constexpr int kModeStrip = TINYGLTF_MODE_TRIANGLE_STRIP;
+constexpr int kModeFan = TINYGLTF_MODE_TRIANGLE_FAN;
+
+bool fail(GltfIssue& issue, const char* code, std::string message, std::string pointer) {
+  issue = GltfIssue{code, std::move(message), std::move(pointer)};
+  return false;
+}
+
+int attribute(const tinygltf::Primitive& prim, const char* name) {
+  const auto it = prim.attributes.find(name);
+  return it == prim.attributes.end() ? -1 : it->second;
+}
+
+std::vector<std::uint32_t> to_triangle_list(const std::vector<std::uint32_t>& in, int mode) {
+  if (mode == kModeTriangles) return in;
+  std::vector<std::uint32_t> out;
+  for (std::size_t i = 2; i < in.size(); ++i) {
+    if (mode == kModeFan) {
+      out.insert(out.end(), {in[0], in[i - 1], in[i]});
+    } else if (i % 2 == 0) {  // strips alternate winding to keep one orientation
+      out.insert(out.end(), {in[i - 2], in[i - 1], in[i]});
+    } else {
+      out.insert(out.end(), {in[i - 1], in[i - 2], in[i]});
+    }
+  }
+  return out;
+}
+
+bool usable_normal(const glm::vec3& n) {
+  return std::isfinite(n.x) && std::isfinite(n.y) && std::isfinite(n.z) && glm::dot(n, n) > 1e-12f;
+}
+
+// Area-weighted smooth normals over shared vertices (flat for unshared ones).
+void compute_normals(Mesh& mesh, bool only_unusable) {
+  std::vector<glm::vec3> sum(mesh.vertices.size(), glm::vec3(0.0f));
+  for (std::size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
+    const std::uint32_t a = mesh.indices[i], b = mesh.indices[i + 1], c = mesh.indices[i + 2];
+    const glm::vec3 n = glm::cross(mesh.vertices[b].position - mesh.vertices[a].position,
+                                   mesh.vertices[c].position - mesh.vertices[a].position);
+    sum[a] += n;
+    sum[b] += n;
+    sum[c] += n;
+  }
+  for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
+    glm::vec3& n = mesh.vertices[v].normal;
+    if (only_unusable && usable_normal(n)) {
+      n = glm::normalize(n);
+      continue;
+    }
+    n = usable_normal(sum[v]) ? glm::normalize(sum[v]) : glm::vec3(0.0f, 1.0f, 0.0f);
+  }
+}
+
+}  // namespace
+
+bool build_primitive_mesh(const tinygltf::Model& model, const tinygltf::Primitive& prim,
+                          const std::string& p, Mesh& mesh, GltfIssue& issue,
+                          std::vector<GltfIssue>& warnings) {
+  if (prim.mode >= 0 && prim.mode < kModeTriangles) {
+    warnings.push_back({codes::kGltfUnsupported, "points and lines are skipped", p + "/mode"});
+    return true;
+  }
+  if (prim.mode != kModeTriangles && prim.mode != kModeStrip && prim.mode != kModeFan) {
+    return fail(issue, codes::kGltfParse, "invalid primitive mode " + std::to_string(prim.mode),
+                p + "/mode");
+  }
+  const int position_id = attribute(prim, "POSITION");
+  if (position_id < 0) {
+    return fail(issue, codes::kGltfBadAccessor, "primitive has no POSITION attribute",
+                p + "/attributes");
+  }
+  std::vector<glm::vec3> positions;
+  if (!read_positions(model, position_id, p + "/attributes/POSITION", positions, issue)) {
+    return false;
+  }
+  for (const glm::vec3& v : positions) {
+    if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) {
+      return fail(issue, codes::kGltfNonFinite, "POSITION contains NaN or infinite values",
+                  "/accessors/" + std::to_string(position_id));
+    }
+  }
+  const std::size_t count = positions.size();
+  const auto check_count = [&](std::size_t n, const char* what) {
+    if (n == count) return true;
+    return fail(issue, codes::kGltfCountMismatch,
+                std::string(what) + " has " + std::to_string(n) + " elements but POSITION has " +
+                    std::to_string(count),
+                p + "/attributes/" + what);
+  };
+  std::vector<glm::vec3> normals;
+  if (const int id = attribute(prim, "NORMAL"); id >= 0) {
+    if (!read_normals(model, id, p + "/attributes/NORMAL", normals, issue)) return false;
+    if (!check_count(normals.size(), "NORMAL")) return false;
+  }
+  std::vector<glm::vec2> uvs;
+  if (const int id = attribute(prim, "TEXCOORD_0"); id >= 0) {
+    if (!read_texcoords(model, id, p + "/attributes/TEXCOORD_0", uvs, issue)) return false;
+    if (!check_count(uvs.size(), "TEXCOORD_0")) return false;
+  }
+  std::vector<std::uint32_t> indices;
+  if (prim.indices >= 0) {
+    if (!read_indices(model, prim.indices, p + "/indices", indices, issue)) return false;
+    for (std::size_t i = 0; i < indices.size(); ++i) {
+      if (indices[i] >= count) {
+        return fail(issue, codes::kGltfIndexOutOfRange,
+                    "index " + std::to_string(indices[i]) + " at position " + std::to_string(i) +
+                        " is out of range for " + std::to_string(count) + " vertices",
+                    "/accessors/" + std::to_string(prim.indices));
+      }
+    }
+  } else {
+    indices.resize(count);
+    for (std::size_t i = 0; i < count; ++i) indices[i] = static_cast<std::uint32_t>(i);
+  }
+  if (prim.mode == kModeTriangles && indices.size() % 3 != 0) {
+    return fail(issue, codes::kGltfCountMismatch,
+                std::to_string(indices.size()) + " indices do not form whole triangles",
+                prim.indices >= 0 ? "/accessors/" + std::to_string(prim.indices) : p);
+  }
+  mesh.vertices.resize(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    mesh.vertices[i].position = positions[i];
+    mesh.vertices[i].normal = normals.empty() ? glm::vec3(0.0f) : normals[i];
+    mesh.vertices[i].uv = uvs.empty() ? glm::vec2(0.0f) : uvs[i];
+  }
+  mesh.indices = to_triangle_list(indices, prim.mode);
+  compute_normals(mesh, /*only_unusable=*/!normals.empty());
+  return true;
+}
+
+}  // namespace antumbra::scene::detail

@@ -1,0 +1,173 @@
+// Type checks on the glTF JSON before tinygltf sees it. tinygltf silently ignores a
+// property of the wrong type ("scene": "hello", "primitives": {...}) and carries on
+// with defaults, which turns schema errors into confusing downstream failures or
+// silently missing geometry. Properties the importer relies on are errors; the rest
+// (names, material details, extensions) are warnings, since the geometry is still fine.
+#include <cstring>
+#include <fstream>
+#include <iterator>
+
+#include <nlohmann/json.hpp>
+
+#include "antumbra/scene/scene_codes.hpp"
+#include "gltf_accessors.hpp"
+
+namespace antumbra::scene::detail {
+namespace {
+
+using nlohmann::json;
+
+enum class Kind { integer, number, string, boolean, array, object };
+
+struct Rule {
+  const char* pattern;  // JSON Pointer; "*" matches every array element / object member
+  Kind kind;
+  bool error;
+};
+
+constexpr Rule kRules[] = {
+    {"/scene", Kind::integer, true},
+    {"/scenes", Kind::array, true},
+    {"/scenes/*/nodes", Kind::array, true},
+    {"/scenes/*/nodes/*", Kind::integer, true},
+    {"/nodes", Kind::array, true},
+    {"/nodes/*/children", Kind::array, true},
+    {"/nodes/*/children/*", Kind::integer, true},
+    {"/nodes/*/mesh", Kind::integer, true},
+    {"/nodes/*/matrix", Kind::array, true},
+    {"/nodes/*/matrix/*", Kind::number, true},
+    {"/nodes/*/translation/*", Kind::number, true},
+    {"/nodes/*/rotation/*", Kind::number, true},
+    {"/nodes/*/scale/*", Kind::number, true},
+    {"/meshes", Kind::array, true},
+    {"/meshes/*/primitives", Kind::array, true},
+    {"/meshes/*/primitives/*/attributes", Kind::object, true},
+    {"/meshes/*/primitives/*/attributes/*", Kind::integer, true},
+    {"/meshes/*/primitives/*/indices", Kind::integer, true},
+    {"/meshes/*/primitives/*/material", Kind::integer, true},
+    {"/meshes/*/primitives/*/mode", Kind::integer, true},
+    {"/accessors", Kind::array, true},
+    {"/accessors/*/bufferView", Kind::integer, true},
+    {"/accessors/*/byteOffset", Kind::integer, true},
+    {"/accessors/*/componentType", Kind::integer, true},
+    {"/accessors/*/count", Kind::integer, true},
+    {"/accessors/*/type", Kind::string, true},
+    {"/accessors/*/normalized", Kind::boolean, true},
+    {"/bufferViews", Kind::array, true},
+    {"/bufferViews/*/buffer", Kind::integer, true},
+    {"/bufferViews/*/byteOffset", Kind::integer, true},
+    {"/bufferViews/*/byteLength", Kind::integer, true},
+    {"/bufferViews/*/byteStride", Kind::integer, true},
+    {"/buffers", Kind::array, true},
+    {"/buffers/*/byteLength", Kind::integer, true},
+    {"/buffers/*/uri", Kind::string, true},
+    {"/materials", Kind::array, true},
+    {"/materials/*/pbrMetallicRoughness", Kind::object, false},
+    {"/materials/*/pbrMetallicRoughness/baseColorFactor/*", Kind::number, false},
+    {"/materials/*/pbrMetallicRoughness/metallicFactor", Kind::number, false},
+    {"/materials/*/pbrMetallicRoughness/roughnessFactor", Kind::number, false},
+    {"/materials/*/alphaMode", Kind::string, false},
+    {"/materials/*/normalTexture/scale", Kind::number, false},
+    {"/materials/*/*/index", Kind::integer, false},
+    {"/materials/*/pbrMetallicRoughness/*/index", Kind::integer, false},
+    {"/*/*/name", Kind::string, false},
+    {"/*/*/extensions/*", Kind::object, false},
+    {"/materials/*/*/extensions/*", Kind::object, false},
+    {"/materials/*/pbrMetallicRoughness/*/extensions/*", Kind::object, false},
+};
+
+bool matches(const json& v, Kind kind) {
+  switch (kind) {
+    case Kind::integer:  // glTF indices and counts are non-negative integers
+      return v.is_number_unsigned() || (v.is_number_integer() && v.get<std::int64_t>() >= 0);
+    case Kind::number:
+      return v.is_number();
+    case Kind::string:
+      return v.is_string();
+    case Kind::boolean:
+      return v.is_boolean();
+    case Kind::array:
+      return v.is_array();
+    case Kind::object:
+      return v.is_object();
+  }
+  return false;
+}
+
+const char* describe(Kind kind) {
+  switch (kind) {
+    case Kind::integer:
+      return "a non-negative integer";
+    case Kind::number:
+      return "a number";
+    case Kind::string:
+      return "a string";
+    case Kind::boolean:
+      return "a boolean";
+    case Kind::array:
+      return "an array";
+    case Kind::object:
+      return "an object";
+  }
+  return "";
+}
+
+void check(const json& value, std::string_view pattern, const std::string& pointer,
+           const Rule& rule, std::vector<GltfIssue>& errors, std::vector<GltfIssue>& warnings) {
+  if (pattern.empty()) {
+    if (matches(value, rule.kind)) return;
+    GltfIssue issue{codes::kGltfParse,
+                    std::string("expected ") + describe(rule.kind) + ", found " + value.type_name(),
+                    pointer};
+    if (rule.error) {
+      errors.push_back(std::move(issue));
+    } else {
+      issue.code = codes::kGltfWarning;
+      issue.message += " (ignored)";
+      warnings.push_back(std::move(issue));
+    }
+    return;
+  }
+  const std::size_t next = pattern.find('/', 1);
+  const std::string_view token =
+      pattern.substr(1, next == std::string_view::npos ? pattern.npos : next - 1);
+  const std::string_view rest =
+      next == std::string_view::npos ? std::string_view() : pattern.substr(next);
+  if (token == "*") {
+    if (value.is_array()) {
+      for (std::size_t i = 0; i < value.size(); ++i) {
+        check(value[i], rest, pointer + "/" + std::to_string(i), rule, errors, warnings);
+      }
+    } else if (value.is_object()) {
+      for (const auto& [key, member] : value.items()) {
+        check(member, rest, pointer + "/" + key, rule, errors, warnings);
+      }
+    }
+  } else if (value.is_object()) {
+    if (const auto it = value.find(std::string(token)); it != value.end()) {
+      check(*it, rest, pointer + "/" + std::string(token), rule, errors, warnings);
+    }
+  }
+}
+
+// The JSON text of a .gltf, or the JSON chunk of a .glb ("" when unreadable).
+std::string json_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (bytes.size() < 20 || bytes.compare(0, 4, "glTF") != 0) return bytes;
+  std::uint32_t length = 0;
+  std::memcpy(&length, bytes.data() + 12, 4);
+  if (bytes.compare(16, 4, "JSON") != 0 || length > bytes.size() - 20) return "";
+  return bytes.substr(20, length);
+}
+
+}  // namespace
+
+void check_gltf_schema(const std::string& path, std::vector<GltfIssue>& errors,
+                       std::vector<GltfIssue>& warnings) {
+  const json root = json::parse(json_text(path), nullptr, /*allow_exceptions=*/false);
+  if (root.is_discarded() || !root.is_object()) return;  // tinygltf reports syntax errors
+  for (const Rule& rule : kRules) check(root, rule.pattern, "", rule, errors, warnings);
+}
+
+}  // namespace antumbra::scene::detail

@@ -1,0 +1,94 @@
+#pragma once
+// Strict, located reading of JSON values for the scene format: every problem becomes a
+// diagnostic at the offending value's JSON Pointer, and reading carries on so that one
+// pass reports as many problems as it can.
+
+#include <initializer_list>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+
+#include <glm/glm.hpp>
+
+#include "antumbra/fg/json_document.hpp"
+
+namespace antumbra::scene::detail {
+
+using fg::Json;
+
+struct Range {
+  double min = -1e30;
+  double max = 1e30;
+  bool min_exclusive = false;
+  bool max_exclusive = false;
+
+  static Range any() { return {}; }
+  static Range non_negative() { return {0.0, 1e30, false, false}; }
+  static Range positive() { return {0.0, 1e30, true, false}; }
+  static Range unit() { return {0.0, 1.0, false, false}; }
+  [[nodiscard]] bool contains(double v) const;
+  [[nodiscard]] std::string describe() const;  // "> 0", "in [0, 1]"...
+};
+
+// The closest of `candidates` to `word` when it is a plausible typo, else "".
+std::string closest_match(std::string_view word, std::span<const std::string_view> candidates);
+inline std::string closest_match(std::string_view word,
+                                 std::initializer_list<std::string_view> candidates) {
+  return closest_match(word, std::span(candidates.begin(), candidates.size()));
+}
+const char* json_type_name(const Json& value);
+
+class JsonReader {
+ public:
+  JsonReader(const fg::JsonDocument& document, fg::Diagnostics& diagnostics)
+      : document_(document), diagnostics_(diagnostics) {}
+
+  [[nodiscard]] const fg::JsonDocument& document() const { return document_; }
+  void error(const char* code, std::string message, const std::string& pointer,
+             bool at_key = false);
+  void warning(const char* code, std::string message, const std::string& pointer,
+               bool at_key = false);
+
+  // True when `value` is an object; reports its keys that are not in `known`.
+  bool check_object(const Json& value, const std::string& pointer, std::string_view what,
+                    std::span<const std::string_view> known);
+  bool check_object(const Json& value, const std::string& pointer, std::string_view what,
+                    std::initializer_list<std::string_view> known) {
+    return check_object(value, pointer, what, std::span(known.begin(), known.size()));
+  }
+  bool check_type(const Json& value, const std::string& pointer, Json::value_t type);
+
+  // Member readers. Absent and optional -> `fallback`; absent and required (no
+  // fallback) -> SC005 and nullopt; wrong type or range -> diagnostic and nullopt.
+  std::optional<float> get_float(const Json& object, const std::string& pointer,
+                                 std::string_view key, std::optional<float> fallback,
+                                 Range range = Range::any());
+  std::optional<int> get_int(const Json& object, const std::string& pointer, std::string_view key,
+                             std::optional<int> fallback, Range range = Range::any());
+  std::optional<bool> get_bool(const Json& object, const std::string& pointer, std::string_view key,
+                               std::optional<bool> fallback);
+  std::optional<std::string> get_string(const Json& object, const std::string& pointer,
+                                        std::string_view key, std::optional<std::string> fallback);
+  std::optional<glm::vec2> get_vec2(const Json& object, const std::string& pointer,
+                                    std::string_view key, std::optional<glm::vec2> fallback,
+                                    Range range = Range::any());
+  std::optional<glm::vec3> get_vec3(const Json& object, const std::string& pointer,
+                                    std::string_view key, std::optional<glm::vec3> fallback,
+                                    Range range = Range::any());
+  std::optional<glm::vec4> get_vec4(const Json& object, const std::string& pointer,
+                                    std::string_view key, std::optional<glm::vec4> fallback,
+                                    Range range = Range::any());
+
+  // Reads an array of `n` numbers at `pointer` into `out`.
+  bool read_numbers(const Json& value, const std::string& pointer, int n, float* out, Range range);
+
+ private:
+  const Json* member(const Json& object, const std::string& pointer, std::string_view key,
+                     bool required);
+
+  const fg::JsonDocument& document_;
+  fg::Diagnostics& diagnostics_;
+};
+
+}  // namespace antumbra::scene::detail

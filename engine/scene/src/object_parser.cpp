@@ -1,0 +1,290 @@
+// The "objects" array: procedural primitives and glTF files, each with a transform, an
+// optional material and an optional "repeat" grid.
+#include <cmath>
+#include <filesystem>
+#include <vector>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "antumbra/scene/gltf_loader.hpp"
+#include "antumbra/scene/primitives.hpp"
+#include "antumbra/scene/scene_codes.hpp"
+#include "antumbra/scene/scene_file.hpp"
+#include "parse_context.hpp"
+
+namespace antumbra::scene::detail {
+namespace {
+
+constexpr std::string_view kPrimitives[] = {"box", "plane", "cylinder", "sphere", "arch"};
+
+struct Placement {
+  glm::mat4 transform{1.0f};
+  std::vector<glm::vec3> offsets{glm::vec3(0.0f)};  // one per copy
+  std::vector<std::string> suffixes{""};            // "[i]" / "[i,j]" per copy
+};
+
+glm::mat4 compose(const glm::vec3& position, const glm::vec3& rotation_deg,
+                  const glm::vec3& scale) {
+  glm::mat4 m = glm::translate(glm::mat4(1.0f), position);
+  m = glm::rotate(m, glm::radians(rotation_deg.z), glm::vec3(0, 0, 1));
+  m = glm::rotate(m, glm::radians(rotation_deg.y), glm::vec3(0, 1, 0));
+  m = glm::rotate(m, glm::radians(rotation_deg.x), glm::vec3(1, 0, 0));
+  return glm::scale(m, scale);
+}
+
+// Returns false (after reporting) when the repeat spec is unusable.
+bool parse_repeat(JsonReader& r, const Json& value, const std::string& p, Placement& out) {
+  std::vector<std::pair<const Json*, std::string>> axes;
+  if (value.is_array()) {
+    if (value.empty() || value.size() > 3) {
+      r.error(codes::kBadArity, "'repeat' takes 1 to 3 {count, offset} entries", p);
+      return false;
+    }
+    for (std::size_t i = 0; i < value.size(); ++i) {
+      axes.emplace_back(&value[i], fg::pointer_append(p, i));
+    }
+  } else {
+    axes.emplace_back(&value, p);
+  }
+  long long total = 1;
+  std::vector<std::pair<int, glm::vec3>> grid;
+  for (const auto& [axis, ap] : axes) {
+    if (!r.check_object(*axis, ap, "'repeat'", {"count", "offset"})) return false;
+    const auto count = r.get_int(*axis, ap, "count", std::nullopt, {1.0, 1e9, false, false});
+    const auto offset = r.get_vec3(*axis, ap, "offset", std::nullopt);
+    if (!count || !offset) return false;
+    total *= *count;
+    if (total > kMaxRepeatCopies) {
+      r.error(codes::kTooManyCopies,
+              "'repeat' makes more than " + std::to_string(kMaxRepeatCopies) + " copies", p);
+      return false;
+    }
+    grid.emplace_back(*count, *offset);
+  }
+  out.offsets = {glm::vec3(0.0f)};
+  out.suffixes = {""};
+  for (const auto& [count, offset] : grid) {
+    std::vector<glm::vec3> offsets;
+    std::vector<std::string> suffixes;
+    for (std::size_t c = 0; c < out.offsets.size(); ++c) {
+      for (int k = 0; k < count; ++k) {
+        offsets.push_back(out.offsets[c] + offset * static_cast<float>(k));
+        suffixes.push_back(out.suffixes[c] + (out.suffixes[c].empty() ? "" : ",") +
+                           std::to_string(k));
+      }
+    }
+    out.offsets = std::move(offsets);
+    out.suffixes = std::move(suffixes);
+  }
+  for (auto& s : out.suffixes) s = "[" + s + "]";
+  return true;
+}
+
+std::optional<Placement> parse_placement(JsonReader& r, const Json& o, const std::string& p) {
+  Placement out;
+  const auto position = r.get_vec3(o, p, "position", glm::vec3(0.0f));
+  const auto rotation = r.get_vec3(o, p, "rotation", glm::vec3(0.0f));
+  std::optional<glm::vec3> scale = glm::vec3(1.0f);
+  if (const auto it = o.find("scale"); it != o.end() && it->is_number()) {
+    const auto s = r.get_float(o, p, "scale", 1.0f, Range::positive());
+    scale = s ? std::optional<glm::vec3>(glm::vec3(*s)) : std::nullopt;
+  } else {
+    scale = r.get_vec3(o, p, "scale", glm::vec3(1.0f), Range::positive());
+  }
+  bool ok = position && rotation && scale;
+  if (const auto it = o.find("repeat"); it != o.end()) {
+    ok = parse_repeat(r, *it, fg::pointer_append(p, "repeat"), out) && ok;
+  }
+  if (!ok) return std::nullopt;
+  out.transform = compose(*position, *rotation, *scale);
+  return out;
+}
+
+// The material index named by the object's "material" key, or `fallback`.
+std::optional<int> parse_material_ref(ParseContext& ctx, const Json& o, const std::string& p,
+                                      int fallback) {
+  const auto name = ctx.reader.get_string(o, p, "material", std::string());
+  if (!name) return std::nullopt;
+  if (name->empty()) return fallback;
+  const int index = ctx.scene.find_material(*name);
+  if (index >= 0) return index;
+  std::string message = "unknown material '" + *name + "'";
+  std::vector<std::string_view> names;
+  for (const auto& m : ctx.scene.materials) names.push_back(m.name);
+  if (const std::string hint = closest_match(*name, names); !hint.empty()) {
+    message += "; did you mean '" + hint + "'?";
+  }
+  ctx.reader.error(codes::kUnknownMaterial, std::move(message), p + "/material");
+  return std::nullopt;
+}
+
+std::optional<Mesh> build_primitive(JsonReader& r, const Json& o, const std::string& p,
+                                    std::string_view kind) {
+  const Range positive = Range::positive();
+  if (kind == "box") {
+    const auto size = r.get_vec3(o, p, "size", glm::vec3(1.0f), positive);
+    if (size) return make_box(*size);
+  } else if (kind == "plane") {
+    const auto size = r.get_vec2(o, p, "size", glm::vec2(1.0f), positive);
+    if (size) return make_plane(*size);
+  } else if (kind == "cylinder") {
+    const auto radius = r.get_float(o, p, "radius", 0.5f, positive);
+    const auto height = r.get_float(o, p, "height", 1.0f, positive);
+    const auto segments = r.get_int(o, p, "segments", 24, {3, 256});
+    if (radius && height && segments) return make_cylinder(*radius, *height, *segments);
+  } else if (kind == "sphere") {
+    const auto radius = r.get_float(o, p, "radius", 0.5f, positive);
+    const auto segments = r.get_int(o, p, "segments", 24, {3, 256});
+    const auto rings = r.get_int(o, p, "rings", 12, {2, 256});
+    if (radius && segments && rings) return make_sphere(*radius, *segments, *rings);
+  } else if (kind == "arch") {
+    ArchParams a;
+    const auto width = r.get_float(o, p, "width", a.width, positive);
+    const auto height = r.get_float(o, p, "height", a.height, positive);
+    const auto depth = r.get_float(o, p, "depth", a.depth, positive);
+    const auto pier = r.get_float(o, p, "pierWidth", a.pier_width, positive);
+    const auto crown = r.get_float(o, p, "crown", a.crown, positive);
+    const auto style = r.get_string(o, p, "style", "round");
+    const auto segments = r.get_int(o, p, "segments", a.segments, {1, 64});
+    if (!width || !height || !depth || !pier || !crown || !style || !segments) return std::nullopt;
+    if (*style != "round" && *style != "pointed") {
+      r.error(codes::kOutOfRange, "arch style '" + *style + "' must be 'round' or 'pointed'",
+              p + "/style");
+      return std::nullopt;
+    }
+    a = ArchParams{*width,   *height, *depth,
+                   *pier,    *crown,  *style == "round" ? ArchStyle::round : ArchStyle::pointed,
+                   *segments};
+    if (a.width - 2.0f * a.pier_width <= 0.0f) {
+      r.error(codes::kBadArchShape, "arch piers (2 x pierWidth) leave no opening in its width", p);
+      return std::nullopt;
+    }
+    if (arch_springline(a) < 0.0f) {
+      r.error(codes::kBadArchShape,
+              "arch opening does not fit: height - crown is below the curve's rise", p);
+      return std::nullopt;
+    }
+    return make_arch(a);
+  }
+  return std::nullopt;
+}
+
+void add_copies(ParseContext& ctx, const Mesh& prototype, const Placement& placement,
+                const std::string& name) {
+  for (std::size_t c = 0; c < placement.offsets.size(); ++c) {
+    Mesh mesh = prototype;
+    mesh.name = name + (placement.offsets.size() > 1 ? placement.suffixes[c] : "");
+    mesh.transform = glm::translate(glm::mat4(1.0f), placement.offsets[c]) * placement.transform *
+                     prototype.transform;
+    mesh.update_bounds();
+    ctx.scene.meshes.push_back(std::move(mesh));
+  }
+}
+
+void parse_gltf_object(ParseContext& ctx, const Json& o, const std::string& p,
+                       const Placement& placement, std::optional<int> material_override,
+                       const std::string& name) {
+  const auto relative = ctx.reader.get_string(o, p, "gltf", std::nullopt);
+  if (!relative) return;
+  const std::string gp = p + "/gltf";
+  const std::filesystem::path path = ctx.base_dir / *relative;
+  std::error_code ec;
+  if (relative->empty() || !std::filesystem::is_regular_file(path, ec)) {
+    ctx.reader.error(codes::kGltfFileMissing, "glTF file '" + path.string() + "' not found", gp);
+    return;
+  }
+  auto imported = load_gltf(path.string());
+  for (const fg::Diagnostic& d : imported.diagnostics()) {
+    std::string message = "in glTF '" + *relative + "': " + d.message;
+    if (!d.pointer.empty()) message += " (at " + d.pointer + " in the glTF)";
+    if (d.severity == fg::Severity::error) {
+      ctx.reader.error(d.code.c_str(), std::move(message), gp);
+    } else {
+      ctx.reader.warning(d.code.c_str(), std::move(message), gp);
+    }
+  }
+  if (!imported.ok()) return;
+  const int first_material = static_cast<int>(ctx.scene.materials.size());
+  if (!material_override) {
+    for (Material m : imported->materials) {
+      m.name = *relative + "#" + m.name;
+      ctx.scene.materials.push_back(std::move(m));
+    }
+  }
+  for (Mesh& mesh : imported->meshes) {
+    mesh.material = material_override ? *material_override : first_material + mesh.material;
+    add_copies(ctx, mesh, placement, name + "/" + mesh.name);
+  }
+}
+
+void parse_object(ParseContext& ctx, const Json& o, const std::string& p, std::size_t index) {
+  JsonReader& r = ctx.reader;
+  if (!r.check_type(o, p, Json::value_t::object)) return;
+  const bool is_primitive = o.contains("primitive");
+  const bool is_gltf = o.contains("gltf");
+  if (is_primitive == is_gltf) {
+    r.error(codes::kObjectKind,
+            is_gltf ? "an object has either 'primitive' or 'gltf', not both"
+                    : "an object needs a 'primitive' or a 'gltf' key",
+            p);
+    return;
+  }
+  std::optional<std::string> kind;
+  if (is_primitive) {
+    kind = r.get_string(o, p, "primitive", std::nullopt);
+    if (!kind) return;
+    if (std::find(std::begin(kPrimitives), std::end(kPrimitives), *kind) == std::end(kPrimitives)) {
+      std::string message = "unknown primitive '" + *kind + "'";
+      const std::string hint = closest_match(*kind, {"box", "plane", "cylinder", "sphere", "arch"});
+      message += hint.empty() ? "; expected box, plane, cylinder, sphere or arch"
+                              : "; did you mean '" + hint + "'?";
+      r.error(codes::kUnknownPrimitive, std::move(message), p + "/primitive");
+      return;
+    }
+  }
+  const auto check_keys = [&](std::initializer_list<std::string_view> extra) {
+    std::vector<std::string_view> keys = {"name",  "position", "rotation",
+                                          "scale", "material", "repeat"};
+    keys.insert(keys.end(), extra.begin(), extra.end());
+    const std::string what = kind ? "a " + *kind + " object" : std::string("a glTF object");
+    r.check_object(o, p, what, keys);
+  };
+  if (!kind) {
+    check_keys({"gltf"});
+  } else if (*kind == "box" || *kind == "plane") {
+    check_keys({"primitive", "size"});
+  } else if (*kind == "cylinder") {
+    check_keys({"primitive", "radius", "height", "segments"});
+  } else if (*kind == "sphere") {
+    check_keys({"primitive", "radius", "segments", "rings"});
+  } else {
+    check_keys(
+        {"primitive", "width", "height", "depth", "pierWidth", "crown", "style", "segments"});
+  }
+  const auto name = r.get_string(o, p, "name", std::string());
+  const auto placement = parse_placement(r, o, p);
+  const bool has_material = o.contains("material");
+  const auto material = parse_material_ref(ctx, o, p, 0);
+  if (!name || !placement || !material) return;
+  const std::string base =
+      name->empty() ? (kind ? *kind : std::string("gltf")) + "#" + std::to_string(index) : *name;
+  if (!kind) {
+    parse_gltf_object(ctx, o, p, *placement, has_material ? material : std::optional<int>(), base);
+    return;
+  }
+  auto mesh = build_primitive(r, o, p, *kind);
+  if (!mesh) return;
+  mesh->material = *material;
+  add_copies(ctx, *mesh, *placement, base);
+}
+
+}  // namespace
+
+void parse_objects(ParseContext& ctx, const Json& objects, const std::string& pointer) {
+  if (!ctx.reader.check_type(objects, pointer, Json::value_t::array)) return;
+  for (std::size_t i = 0; i < objects.size(); ++i) {
+    parse_object(ctx, objects[i], fg::pointer_append(pointer, i), i);
+  }
+}
+
+}  // namespace antumbra::scene::detail

@@ -1,0 +1,206 @@
+// Top level of the scene format: version, camera, materials, lights. Objects are in
+// object_parser.cpp.
+#include <cmath>
+#include <unordered_map>
+
+#include "antumbra/scene/scene_codes.hpp"
+#include "antumbra/scene/scene_file.hpp"
+#include "parse_context.hpp"
+
+namespace antumbra::scene {
+namespace {
+
+using detail::Json;
+using detail::JsonReader;
+using detail::Range;
+
+// Returns false when the version is missing or unusable: the rest of the file is then
+// not validated, since its meaning is unknown.
+bool check_version(JsonReader& r, const Json& root) {
+  const auto it = root.find("version");
+  if (it == root.end()) {
+    r.error(codes::kVersionMissing,
+            "missing \"version\"; this build reads scene format version " +
+                std::to_string(kSceneFormatVersion),
+            "");
+    return false;
+  }
+  if (!it->is_number_integer()) {
+    r.error(codes::kWrongType,
+            std::string("\"version\" must be an integer, found ") + detail::json_type_name(*it),
+            "/version");
+    return false;
+  }
+  const auto version = it->get<double>();
+  if (version < 1 || version > kSceneFormatVersion) {
+    r.error(codes::kVersionUnsupported,
+            "scene format version " + it->dump() +
+                (version > kSceneFormatVersion ? " is newer than this build supports ("
+                                               : " does not exist (supported: ") +
+                std::to_string(kSceneFormatVersion) + ")",
+            "/version");
+    return false;
+  }
+  return true;
+}
+
+void parse_camera(JsonReader& r, const Json& root, Camera& camera) {
+  const std::string p = "/camera";
+  const auto it = root.find("camera");
+  if (it == root.end()) {
+    r.error(codes::kMissingKey, "missing required key 'camera'", "");
+    return;
+  }
+  if (!r.check_object(*it, p, "the camera", {"position", "target", "up", "fovY", "near", "far"})) {
+    return;
+  }
+  const Json& c = *it;
+  const auto position = r.get_vec3(c, p, "position", std::nullopt);
+  const auto target = r.get_vec3(c, p, "target", std::nullopt);
+  const auto up = r.get_vec3(c, p, "up", glm::vec3(0, 1, 0));
+  const auto fov = r.get_float(c, p, "fovY", 60.0f, {0.0, 180.0, true, true});
+  const auto near = r.get_float(c, p, "near", 0.1f, Range::positive());
+  const auto far = r.get_float(c, p, "far", 200.0f, Range::positive());
+  if (position) camera.position = *position;
+  if (target) camera.target = *target;
+  if (up) camera.up = *up;
+  if (fov) camera.fov_y_degrees = *fov;
+  if (near) camera.near = *near;
+  if (far) camera.far = *far;
+  if (near && far && *far <= *near) {
+    r.error(codes::kOutOfRange, "'far' must be greater than 'near'", p + "/far");
+  }
+  if (position && target) {
+    const glm::vec3 view = *target - *position;
+    if (glm::length(view) < 1e-6f) {
+      r.error(codes::kCameraDegenerate, "camera target equals its position", p + "/target");
+    } else if (up && glm::length(glm::cross(glm::normalize(view), *up)) < 1e-4f) {
+      r.error(codes::kCameraDegenerate, "camera 'up' is zero or parallel to the view direction",
+              c.contains("up") ? p + "/up" : p + "/target");
+    }
+  }
+}
+
+void parse_material(JsonReader& r, const Json& m, const std::string& p, Material& out) {
+  if (!r.check_object(m, p, "a material",
+                      {"albedo", "roughness", "metallic", "translucent", "transmittance"})) {
+    return;
+  }
+  if (auto v = r.get_vec3(m, p, "albedo", out.albedo, Range::non_negative())) out.albedo = *v;
+  if (auto v = r.get_float(m, p, "roughness", out.roughness, Range::unit())) out.roughness = *v;
+  if (auto v = r.get_float(m, p, "metallic", out.metallic, Range::unit())) out.metallic = *v;
+  if (auto v = r.get_bool(m, p, "translucent", false)) out.translucent = *v;
+  const glm::vec4 fallback(glm::clamp(out.albedo, 0.0f, 1.0f), 0.5f);
+  if (auto v = r.get_vec4(m, p, "transmittance", fallback, Range::unit())) out.transmittance = *v;
+  if (m.contains("transmittance") && !out.translucent) {
+    r.warning(codes::kTransmittanceIgnored,
+              "'transmittance' has no effect unless 'translucent' is true", p + "/transmittance",
+              true);
+  }
+}
+
+void parse_materials(JsonReader& r, const Json& root, Scene& scene) {
+  scene.materials.push_back(Material{.name = "default"});
+  const auto it = root.find("materials");
+  if (it == root.end() || !r.check_type(*it, "/materials", Json::value_t::object)) return;
+  for (const auto& [name, value] : it->items()) {
+    Material material{.name = name};
+    parse_material(r, value, fg::pointer_append("/materials", name), material);
+    if (name == "default") {
+      scene.materials[0] = material;
+    } else {
+      scene.materials.push_back(std::move(material));
+    }
+  }
+}
+
+void parse_light(JsonReader& r, const Json& l, const std::string& p, PointLight& out) {
+  if (!r.check_object(
+          l, p, "a light",
+          {"name", "type", "position", "color", "intensity", "range", "size", "castsShadows"})) {
+    return;
+  }
+  if (auto v = r.get_string(l, p, "name", std::nullopt)) out.name = *v;
+  if (auto v = r.get_string(l, p, "type", "point"); v && *v != "point") {
+    const bool later = *v == "spot" || *v == "directional";
+    r.error(codes::kLightTypeUnsupported,
+            "light type '" + *v + (later ? "' is not supported yet" : "' is unknown") +
+                "; scene format 1 supports 'point'",
+            p + "/type");
+  }
+  if (auto v = r.get_vec3(l, p, "position", std::nullopt)) out.position = *v;
+  if (auto v = r.get_vec3(l, p, "color", out.color, Range::non_negative())) out.color = *v;
+  if (auto v = r.get_float(l, p, "intensity", out.intensity, Range::non_negative())) {
+    out.intensity = *v;
+  }
+  if (auto v = r.get_float(l, p, "range", out.range, Range::positive())) out.range = *v;
+  if (auto v = r.get_float(l, p, "size", out.size, Range::non_negative())) out.size = *v;
+  if (auto v = r.get_bool(l, p, "castsShadows", true)) out.casts_shadows = *v;
+}
+
+void parse_lights(JsonReader& r, const Json& root, Scene& scene) {
+  const auto it = root.find("lights");
+  if (it == root.end() || !r.check_type(*it, "/lights", Json::value_t::array)) return;
+  std::unordered_map<std::string, std::size_t> seen;  // name -> first index
+  for (std::size_t i = 0; i < it->size(); ++i) {
+    const std::string p = fg::pointer_append("/lights", i);
+    PointLight light;
+    parse_light(r, (*it)[i], p, light);
+    const bool has_name = (*it)[i].is_object() && (*it)[i].contains("name");
+    if (has_name && (*it)[i]["name"].is_string()) {
+      if (light.name.empty()) {
+        r.error(codes::kLightNameEmpty, "light name is empty", p + "/name");
+      } else if (const auto [first, inserted] = seen.emplace(light.name, i); !inserted) {
+        r.error(codes::kLightNameDuplicate,
+                "duplicate light name '" + light.name + "' (first used by /lights/" +
+                    std::to_string(first->second) + ")",
+                p + "/name");
+      }
+    }
+    scene.lights.push_back(std::move(light));
+  }
+}
+
+}  // namespace
+
+fg::Result<Scene> parse_scene(const fg::JsonDocument& document) {
+  fg::Diagnostics diagnostics;
+  JsonReader r(document, diagnostics);
+  Scene scene;
+  scene.source_file = document.file();
+  const Json& root = document.root();
+  if (!r.check_type(root, "", Json::value_t::object)) return diagnostics;
+  if (!check_version(r, root)) return diagnostics;
+  r.check_object(
+      root, "", "the scene",
+      {"version", "name", "description", "camera", "ambient", "materials", "objects", "lights"});
+  if (auto v = r.get_string(root, "", "name", std::string())) scene.name = *v;
+  (void)r.get_string(root, "", "description", std::string());
+  if (auto v = r.get_vec3(root, "", "ambient", glm::vec3(0.0f), Range::non_negative())) {
+    scene.ambient = *v;
+  }
+  parse_camera(r, root, scene.camera);
+  parse_materials(r, root, scene);
+  if (const auto it = root.find("objects"); it != root.end()) {
+    detail::ParseContext ctx{r, scene, std::filesystem::path(document.file()).parent_path()};
+    detail::parse_objects(ctx, *it, "/objects");
+  }
+  parse_lights(r, root, scene);
+  scene.bounds = scene.compute_bounds();
+  if (diagnostics.has_errors()) return diagnostics;
+  return fg::Result<Scene>(std::move(scene), std::move(diagnostics));
+}
+
+fg::Result<Scene> load_scene_file(const std::string& path) {
+  auto document = fg::load_json_file(path);
+  if (!document.ok()) return document.diagnostics();
+  return parse_scene(document.value());
+}
+
+fg::Result<Scene> parse_scene_text(std::string_view text, const std::string& file) {
+  auto document = fg::parse_json(text, file);
+  if (!document.ok()) return document.diagnostics();
+  return parse_scene(document.value());
+}
+
+}  // namespace antumbra::scene

@@ -1,0 +1,38 @@
+#pragma once
+// The graph compiler: GraphDesc + Registry -> Plan. The phases are declared in
+// compiler_phases.hpp so tests can drive each one alone.
+
+#include <functional>
+#include <string>
+
+#include "antumbra/fg/diagnostics.hpp"
+#include "antumbra/fg/graph_desc.hpp"
+#include "antumbra/fg/plan.hpp"
+#include "antumbra/fg/registry.hpp"
+
+namespace antumbra::fg {
+
+using FootprintFn = std::function<Footprint(const PlanResource&)>;
+
+// Images: width*height*layers*bytes_per_texel rounded up to 64 KiB (aligned to
+// 64 KiB); buffers: size rounded up to 256 bytes (aligned to 256). The executor
+// passes a callback that asks the driver instead.
+Footprint default_footprint(const PlanResource& resource);
+
+struct CompileOptions {
+  Extent2D viewport{1280, 720};
+  FootprintFn footprint = default_footprint;
+};
+
+// Runs every phase; stops at the first phase that reports errors. Warnings and
+// notes (unused resources, culled passes) accompany a successful plan.
+Result<Plan> compile(const GraphDesc& graph, const Registry& registry, const CompileOptions& options = {});
+
+// load_json_file + parse_graph + compile.
+Result<Plan> compile_file(const std::string& path, const Registry& registry,
+                          const CompileOptions& options = {});
+// parse_json + parse_graph + compile, for text already in memory (editor, tests).
+Result<Plan> compile_text(std::string_view text, const std::string& file, const Registry& registry,
+                          const CompileOptions& options = {});
+
+}  // namespace antumbra::fg

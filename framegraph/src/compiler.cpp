@@ -1,0 +1,203 @@
+// compile(): runs the phases in order and assembles the Plan.
+#include "antumbra/fg/compiler.hpp"
+
+#include "antumbra/fg/compiler_phases.hpp"
+#include "antumbra/fg/diagnostic_codes.hpp"
+
+namespace antumbra::fg {
+namespace {
+
+// Built by appending: GCC 12 warns (-Wrestrict, a false positive) on "'" + s + "'".
+std::string quote_name(std::string_view s) {
+  std::string out;
+  out.reserve(s.size() + 2);
+  out += '\'';
+  out.append(s);
+  out += '\'';
+  return out;
+}
+
+// The output must name an image that some enabled pass writes.
+int check_output(const GraphDesc& graph, const std::vector<ResolvedPass>& passes, Diagnostics& diags) {
+  const int output = graph.find_resource(graph.output);
+  const auto error = [&](const char* code, const std::string& message) {
+    diags.add(graph.document.make(code, Severity::error, message, "/output"));
+  };
+  if (output < 0) {
+    std::vector<std::string> names;
+    for (const auto& r : graph.resources) names.push_back(r.name);
+    error(codes::kUnknownResource,
+          "output names unknown resource " + quote_name(graph.output) + did_you_mean(graph.output, names));
+    return -1;
+  }
+  if (graph.resources[static_cast<std::size_t>(output)].kind != ResourceKind::image) {
+    error(codes::kOutputNotImage, "output " + quote_name(graph.output) + " is a buffer; the output must be an image");
+    return -1;
+  }
+  for (const ResolvedPass& rp : passes) {
+    if (!rp.enabled) continue;
+    for (const BoundPort& w : rp.writes) {
+      if (w.resource == output) return output;
+    }
+  }
+  error(codes::kOutputNotProduced, "no enabled pass writes the output " + quote_name(graph.output));
+  return -1;
+}
+
+void warn_unused_resources(const GraphDesc& graph, const std::vector<ResolvedPass>& passes, Diagnostics& diags) {
+  std::vector<bool> used(graph.resources.size(), false);
+  for (const ResolvedPass& rp : passes) {
+    for (const auto* list : {&rp.reads, &rp.writes}) {
+      for (const BoundPort& b : *list) used[static_cast<std::size_t>(b.resource)] = true;
+    }
+  }
+  for (std::size_t i = 0; i < graph.resources.size(); ++i) {
+    const ResourceDesc& r = graph.resources[i];
+    if (used[i] || r.name == graph.output) continue;
+    diags.add(graph.document.make(codes::kUnusedResource, Severity::warning,
+                                  "resource " + quote_name(r.name) + " is declared but no pass uses it", r.pointer,
+                                  true));
+  }
+}
+
+std::string describe_edges(const GraphDesc& graph, const std::vector<DepEdge>& edges) {
+  std::string out;
+  for (const DepEdge& e : edges) {
+    out += (out.empty() ? "" : ", ") + graph.passes[static_cast<std::size_t>(e.from)].name + " -> " +
+           graph.passes[static_cast<std::size_t>(e.to)].name + " (" +
+           (e.resource >= 0 ? "via " + graph.resources[static_cast<std::size_t>(e.resource)].name
+                            : std::string("after")) +
+           ")";
+  }
+  return out;
+}
+
+// Builds the plan's passes and resources from the kept passes in execution order.
+Plan assemble(const GraphDesc& graph, const std::vector<ResolvedPass>& passes, const std::vector<bool>& keep,
+              const std::vector<int>& order, int output, const CompileOptions& options) {
+  Plan plan;
+  plan.name = graph.name;
+  plan.file = graph.document.file();
+  plan.viewport = options.viewport;
+  std::vector<int> remap(graph.resources.size(), -1);
+  std::vector<bool> used(graph.resources.size(), false);
+  for (int p : order) {
+    for (const auto* list : {&passes[static_cast<std::size_t>(p)].reads, &passes[static_cast<std::size_t>(p)].writes}) {
+      for (const BoundPort& b : *list) used[static_cast<std::size_t>(b.resource)] = true;
+    }
+  }
+  if (output >= 0) used[static_cast<std::size_t>(output)] = true;
+  for (std::size_t i = 0; i < graph.resources.size(); ++i) {
+    if (!used[i]) continue;
+    const ResourceDesc& d = graph.resources[i];
+    PlanResource r;
+    r.name = d.name;
+    r.kind = d.kind;
+    r.format = d.format;
+    r.size = d.size;
+    if (d.kind == ResourceKind::image) r.extent = resolve_extent(d.size, options.viewport);
+    r.layers = d.layers;
+    r.buffer_size = d.buffer_size;
+    r.persistent = d.persistent;
+    r.is_output = static_cast<int>(i) == output;
+    remap[i] = static_cast<int>(plan.resources.size());
+    plan.resources.push_back(std::move(r));
+  }
+  plan.output = output >= 0 ? remap[static_cast<std::size_t>(output)] : -1;
+  for (int p : order) {
+    const ResolvedPass& rp = passes[static_cast<std::size_t>(p)];
+    PlanPass pass;
+    pass.name = graph.passes[static_cast<std::size_t>(p)].name;
+    pass.type = rp.desc->type;
+    pass.source_index = rp.source_index;
+    pass.params = rp.params;
+    // Bindings follow the pass type's port order, whatever order the file used.
+    for (const PortDesc& port : rp.desc->ports) {
+      PlanBinding binding{port.name, -1, port.access, port.stage};
+      for (const auto* list : {&rp.reads, &rp.writes}) {
+        for (const BoundPort& b : *list) {
+          if (b.port == &port) binding.resource = remap[static_cast<std::size_t>(b.resource)];
+        }
+      }
+      pass.bindings.push_back(std::move(binding));
+    }
+    plan.passes.push_back(std::move(pass));
+  }
+  for (std::size_t i = 0; i < passes.size(); ++i) {
+    const std::string& name = graph.passes[i].name;
+    if (!passes[i].enabled) {
+      plan.disabled_passes.push_back(name);
+    } else if (!keep[i]) {
+      plan.culled_passes.push_back(name);
+    }
+  }
+  return plan;
+}
+
+}  // namespace
+
+Result<Plan> compile(const GraphDesc& graph, const Registry& registry, const CompileOptions& options) {
+  Diagnostics diags;
+  std::vector<ResolvedPass> passes = resolve_passes(graph, registry, diags);
+  bind_ports(graph, passes, diags);
+  const int output = check_output(graph, passes, diags);
+  if (diags.has_errors()) return diags;
+  warn_unused_resources(graph, passes, diags);
+
+  const DependencyGraph deps = build_dependencies(graph, passes, diags);
+  if (diags.has_errors()) return diags;
+  if (auto left = find_cycle_edges(deps, passes); !left.empty()) {
+    const auto& first = graph.passes[static_cast<std::size_t>(left.front().to)];
+    diags.add(graph.document.make(codes::kCycle, Severity::error,
+                                  "the passes form a cycle; edges left: " + describe_edges(graph, left),
+                                  first.pointer));
+    return diags;
+  }
+  const std::vector<bool> keep = cull_passes(deps, passes, output);
+  for (std::size_t i = 0; i < passes.size(); ++i) {
+    const auto& pass = graph.passes[i];
+    if (!passes[i].enabled) {
+      diags.add(graph.document.make(codes::kPassDisabled, Severity::note,
+                                    "pass " + quote_name(pass.name) + " is disabled", pass.pointer));
+    } else if (!keep[i]) {
+      diags.add(graph.document.make(codes::kPassCulled, Severity::note,
+                                    "pass " + quote_name(pass.name) + " is culled: its outputs reach neither " +
+                                        quote_name(graph.output) + " nor a side effect",
+                                    pass.pointer));
+    }
+  }
+  const std::vector<int> order = order_passes(deps, keep);
+
+  Plan plan = assemble(graph, passes, keep, order, output, options);
+  compute_lifetimes(plan);
+  plan_aliasing(plan, options.footprint ? options.footprint : FootprintFn(default_footprint));
+  plan_barriers(plan);
+  return Result<Plan>(std::move(plan), std::move(diags));
+}
+
+Result<Plan> compile_text(std::string_view text, const std::string& file, const Registry& registry,
+                          const CompileOptions& options) {
+  Result<JsonDocument> doc = parse_json(text, file);
+  if (!doc) return doc.diagnostics();
+  Result<GraphDesc> graph = parse_graph(doc.value());
+  if (!graph) return graph.diagnostics();
+  Result<Plan> plan = compile(graph.value(), registry, options);
+  Diagnostics all = graph.diagnostics();
+  all.append(plan.diagnostics());
+  if (!plan) return all;
+  return Result<Plan>(std::move(plan.value()), std::move(all));
+}
+
+Result<Plan> compile_file(const std::string& path, const Registry& registry, const CompileOptions& options) {
+  Result<JsonDocument> doc = load_json_file(path);
+  if (!doc) return doc.diagnostics();
+  Result<GraphDesc> graph = parse_graph(doc.value());
+  if (!graph) return graph.diagnostics();
+  Result<Plan> plan = compile(graph.value(), registry, options);
+  Diagnostics all = graph.diagnostics();
+  all.append(plan.diagnostics());
+  if (!plan) return all;
+  return Result<Plan>(std::move(plan.value()), std::move(all));
+}
+
+}  // namespace antumbra::fg

@@ -1,0 +1,238 @@
+// Phases 3-6: dependency edges, cycle detection, culling and ordering.
+#include <algorithm>
+#include <functional>
+#include <queue>
+#include <tuple>
+
+#include "antumbra/fg/compiler_phases.hpp"
+#include "antumbra/fg/diagnostic_codes.hpp"
+
+namespace antumbra::fg {
+namespace {
+
+// Built by appending: GCC 12 warns (-Wrestrict, a false positive) on "'" + s + "'".
+std::string quote_name(std::string_view s) {
+  std::string out;
+  out.reserve(s.size() + 2);
+  out += '\'';
+  out.append(s);
+  out += '\'';
+  return out;
+}
+
+void add_edge(std::vector<DepEdge>& edges, DepEdge edge) { edges.push_back(edge); }
+
+bool edge_less(const DepEdge& a, const DepEdge& b) {
+  return std::tie(a.from, a.to, a.kind, a.resource) < std::tie(b.from, b.to, b.kind, b.resource);
+}
+
+// Sorted and without duplicates (a pass may read one resource through two ports).
+void normalize(std::vector<DepEdge>& edges) {
+  std::sort(edges.begin(), edges.end(), edge_less);
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+}
+
+}  // namespace
+
+std::string_view to_string(EdgeKind kind) {
+  switch (kind) {
+    case EdgeKind::read_after_write: return "read";
+    case EdgeKind::write_after_read: return "write-after-read";
+    case EdgeKind::write_after_write: return "write-after-write";
+    case EdgeKind::after: return "after";
+  }
+  return "read";
+}
+
+DependencyGraph build_dependencies(const GraphDesc& graph, const std::vector<ResolvedPass>& passes,
+                                   Diagnostics& diags) {
+  DependencyGraph deps;
+  const std::size_t n_res = graph.resources.size();
+  std::vector<int> last_writer(n_res, -1);
+  std::vector<std::vector<int>> readers(n_res);  // readers since the last write
+  std::vector<DepEdge> persistent_reads;         // reads of last frame's contents
+
+  for (std::size_t i = 0; i < passes.size(); ++i) {
+    const ResolvedPass& rp = passes[i];
+    if (!rp.enabled) continue;
+    const int to = static_cast<int>(i);
+    for (const BoundPort& read : rp.reads) {
+      const auto r = static_cast<std::size_t>(read.resource);
+      if (last_writer[r] >= 0) {
+        add_edge(deps.edges, {last_writer[r], to, EdgeKind::read_after_write, read.resource});
+      } else if (graph.resources[r].persistent) {
+        persistent_reads.push_back({-1, to, EdgeKind::read_after_write, read.resource});
+      } else {
+        // Say who writes it later, if anyone: the fix is usually to reorder.
+        std::string hint;
+        for (std::size_t j = i + 1; j < passes.size() && hint.empty(); ++j) {
+          for (const BoundPort& w : passes[j].writes) {
+            if (w.resource == read.resource && passes[j].enabled) {
+              hint = "; " + quote_name(graph.passes[j].name) +
+                     " writes it later (move it earlier, or make the resource persistent to read the previous "
+                     "frame)";
+              break;
+            }
+          }
+        }
+        diags.add(graph.document.make(codes::kReadNeverWritten, Severity::error,
+                                      "pass " + quote_name(graph.passes[i].name) + " reads " +
+                                          quote_name(graph.resources[r].name) + " but no earlier pass writes it" + hint,
+                                      read.pointer));
+      }
+      readers[r].push_back(to);
+    }
+    for (const BoundPort& write : rp.writes) {
+      const auto r = static_cast<std::size_t>(write.resource);
+      if (last_writer[r] >= 0) add_edge(deps.edges, {last_writer[r], to, EdgeKind::write_after_write, write.resource});
+      for (int reader : readers[r]) {
+        if (reader != to) add_edge(deps.edges, {reader, to, EdgeKind::write_after_read, write.resource});
+      }
+      readers[r].clear();
+      last_writer[r] = to;
+    }
+  }
+  // A persistent read consumes what the frame's last writer left behind.
+  for (DepEdge e : persistent_reads) {
+    const auto r = static_cast<std::size_t>(e.resource);
+    if (last_writer[r] < 0) {
+      const auto& pass = graph.passes[static_cast<std::size_t>(e.to)];
+      const auto* read = &passes[static_cast<std::size_t>(e.to)].reads.front();
+      for (const auto& b : passes[static_cast<std::size_t>(e.to)].reads) {
+        if (b.resource == e.resource) read = &b;
+      }
+      diags.add(graph.document.make(codes::kReadNeverWritten, Severity::error,
+                                    "pass " + quote_name(pass.name) + " reads persistent " +
+                                        quote_name(graph.resources[r].name) + " but no pass ever writes it",
+                                    read->pointer));
+      continue;
+    }
+    e.from = last_writer[r];
+    add_edge(deps.previous_frame, e);
+  }
+  // Explicit ordering: "after": ["x"] makes x run first.
+  std::vector<std::string> names;
+  for (const auto& p : graph.passes) names.push_back(p.name);
+  for (std::size_t i = 0; i < passes.size(); ++i) {
+    if (!passes[i].enabled) continue;
+    const auto& pass = graph.passes[i];
+    for (std::size_t k = 0; k < pass.after.size(); ++k) {
+      const int j = graph.find_pass(pass.after[k]);
+      if (j < 0) {
+        diags.add(graph.document.make(codes::kUnknownAfter, Severity::error,
+                                      "\"after\" names unknown pass " + quote_name(pass.after[k]) +
+                                          did_you_mean(pass.after[k], names),
+                                      pointer_append(pass.pointer + "/after", k)));
+      } else if (passes[static_cast<std::size_t>(j)].enabled) {
+        add_edge(deps.edges, {j, static_cast<int>(i), EdgeKind::after, -1});
+      }
+    }
+  }
+  normalize(deps.edges);
+  normalize(deps.previous_frame);
+  return deps;
+}
+
+std::vector<DepEdge> find_cycle_edges(const DependencyGraph& deps, const std::vector<ResolvedPass>& passes) {
+  std::vector<int> in_degree(passes.size(), 0);
+  std::vector<std::vector<int>> out_edges(passes.size());
+  for (std::size_t e = 0; e < deps.edges.size(); ++e) {
+    ++in_degree[static_cast<std::size_t>(deps.edges[e].to)];
+    out_edges[static_cast<std::size_t>(deps.edges[e].from)].push_back(static_cast<int>(e));
+  }
+  std::vector<int> ready;
+  for (std::size_t i = 0; i < passes.size(); ++i) {
+    if (in_degree[i] == 0) ready.push_back(static_cast<int>(i));
+  }
+  std::vector<bool> done(passes.size(), false);
+  while (!ready.empty()) {
+    const int p = ready.back();
+    ready.pop_back();
+    done[static_cast<std::size_t>(p)] = true;
+    for (int e : out_edges[static_cast<std::size_t>(p)]) {
+      const auto to = static_cast<std::size_t>(deps.edges[static_cast<std::size_t>(e)].to);
+      if (--in_degree[to] == 0) ready.push_back(static_cast<int>(to));
+    }
+  }
+  std::vector<DepEdge> left;
+  for (const DepEdge& e : deps.edges) {
+    if (!done[static_cast<std::size_t>(e.from)] && !done[static_cast<std::size_t>(e.to)]) left.push_back(e);
+  }
+  std::sort(left.begin(), left.end(), edge_less);
+  return left;
+}
+
+std::vector<bool> cull_passes(const DependencyGraph& deps, const std::vector<ResolvedPass>& passes,
+                              int output_resource) {
+  std::vector<bool> keep(passes.size(), false);
+  std::vector<int> work;
+  const auto mark = [&](int p) {
+    if (!keep[static_cast<std::size_t>(p)]) {
+      keep[static_cast<std::size_t>(p)] = true;
+      work.push_back(p);
+    }
+  };
+  int output_writer = -1;
+  for (std::size_t i = 0; i < passes.size(); ++i) {
+    if (!passes[i].enabled) continue;
+    if (passes[i].side_effects) mark(static_cast<int>(i));
+    for (const BoundPort& w : passes[i].writes) {
+      if (w.resource == output_resource) output_writer = static_cast<int>(i);
+    }
+  }
+  if (output_writer >= 0) mark(output_writer);
+  // Walk producer edges backwards: whoever feeds a kept pass is kept. WAR and
+  // "after" edges only order passes; they do not make the earlier one needed.
+  // A write-after-write keeps the earlier writer only when the later write may
+  // keep its contents (an attachment that loads); storage_write discards them.
+  const auto keeps_contents = [&](const DepEdge& e) {
+    for (const BoundPort& w : passes[static_cast<std::size_t>(e.to)].writes) {
+      if (w.resource == e.resource) return w.port->access != Access::storage_write;
+    }
+    return true;
+  };
+  std::vector<std::vector<int>> producers(passes.size());
+  for (const auto* list : {&deps.edges, &deps.previous_frame}) {
+    for (const DepEdge& e : *list) {
+      if (e.kind == EdgeKind::read_after_write || (e.kind == EdgeKind::write_after_write && keeps_contents(e))) {
+        producers[static_cast<std::size_t>(e.to)].push_back(e.from);
+      }
+    }
+  }
+  while (!work.empty()) {
+    const int p = work.back();
+    work.pop_back();
+    for (int from : producers[static_cast<std::size_t>(p)]) mark(from);
+  }
+  return keep;
+}
+
+std::vector<int> order_passes(const DependencyGraph& deps, const std::vector<bool>& keep) {
+  const std::size_t n = keep.size();
+  std::vector<int> in_degree(n, 0);
+  std::vector<std::vector<int>> successors(n);
+  for (const DepEdge& e : deps.edges) {
+    const auto from = static_cast<std::size_t>(e.from);
+    const auto to = static_cast<std::size_t>(e.to);
+    if (!keep[from] || !keep[to]) continue;
+    successors[from].push_back(e.to);
+    ++in_degree[to];
+  }
+  // Min-heap on the description index keeps the order stable and predictable.
+  std::priority_queue<int, std::vector<int>, std::greater<>> ready;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (keep[i] && in_degree[i] == 0) ready.push(static_cast<int>(i));
+  }
+  std::vector<int> order;
+  while (!ready.empty()) {
+    const int p = ready.top();
+    ready.pop();
+    order.push_back(p);
+    for (int s : successors[static_cast<std::size_t>(p)]) {
+      if (--in_degree[static_cast<std::size_t>(s)] == 0) ready.push(s);
+    }
+  }
+  return order;
+}
+
+}  // namespace antumbra::fg

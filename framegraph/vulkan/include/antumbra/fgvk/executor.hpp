@@ -1,0 +1,78 @@
+#pragma once
+// Maps a compiled plan onto Vulkan: realises resources (aliased transients placed in
+// one heap at the planned offsets), creates the pass objects, and each frame records
+// the planned barriers as synchronization2 barriers around every pass, with a
+// debug label and a timestamp scope per pass.
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "antumbra/fg/compiler.hpp"
+#include "antumbra/fg/plan.hpp"
+#include "antumbra/fgvk/pass.hpp"
+#include "antumbra/fgvk/pass_registry.hpp"
+#include "antumbra/fgvk/vk_sync.hpp"
+
+namespace antumbra::gpu {
+class Image;
+}
+
+namespace antumbra::fgvk {
+
+// Hooks around each recorded pass (GPU timestamps, CPU timing); optional.
+class PassObserver {
+ public:
+  virtual ~PassObserver() = default;
+  virtual void begin_pass(VkCommandBuffer cmd, const fg::PlanPass& pass) = 0;
+  virtual void end_pass(VkCommandBuffer cmd, const fg::PlanPass& pass) = 0;
+};
+
+class Executor {
+ public:
+  Executor(gpu::Context& gpu, gpu::ShaderCompiler& shaders, const PassRegistry& registry,
+           std::string shader_root, VkPipelineCache pipeline_cache = VK_NULL_HANDLE);
+  Executor(const Executor&) = delete;
+  Executor& operator=(const Executor&) = delete;
+  ~Executor();
+
+  // Real memory footprints on this device, for fg::CompileOptions::footprint, so the
+  // aliasing plan's offsets are valid for the images actually created.
+  [[nodiscard]] fg::FootprintFn footprint_fn() const;
+
+  // Realises `plan`. All-or-nothing: on an exception the previous plan stays live
+  // and its objects untouched.
+  void load(fg::Plan plan);
+  [[nodiscard]] bool loaded() const { return state_ != nullptr; }
+  [[nodiscard]] const fg::Plan& plan() const;
+
+  // Records one frame of the plan into `cmd`.
+  void record(VkCommandBuffer cmd, const FrameResources& frame, PassObserver* observer = nullptr);
+
+  // The realised image of a resource, with its current layout; nullptr if none.
+  [[nodiscard]] const BoundImage* image(std::string_view resource) const;
+  // The realised image itself (for read-back); nullptr if none.
+  [[nodiscard]] const gpu::Image* gpu_image(std::string_view resource) const;
+  // Bytes of device memory the plan's resources use (heap + individual allocations).
+  [[nodiscard]] std::uint64_t resource_bytes() const;
+  // Every shader file the passes read (for file watching).
+  [[nodiscard]] std::vector<std::string> shader_files() const;
+
+ private:
+  struct State;
+  void record_barriers(VkCommandBuffer cmd, const std::vector<fg::PlanBarrier>& barriers);
+
+  gpu::Context& gpu_;
+  gpu::ShaderCompiler& shaders_;
+  const PassRegistry& registry_;
+  std::string shader_root_;
+  VkPipelineCache pipeline_cache_;
+  std::unique_ptr<State> state_;
+  Samplers samplers_;
+  struct OwnedSamplers;
+  std::unique_ptr<OwnedSamplers> owned_samplers_;
+};
+
+}  // namespace antumbra::fgvk

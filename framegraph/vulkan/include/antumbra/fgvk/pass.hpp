@@ -1,0 +1,120 @@
+#pragma once
+// The runtime side of a pass type: what the executor calls. A pass records its
+// draws or dispatches into the command buffer it is given; the executor has already
+// placed every barrier its ports need (a pass never issues barriers for graph
+// resources), opened a debug label and started a timestamp scope.
+
+#include <cstdint>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+#include "antumbra/fg/diagnostics.hpp"
+#include "antumbra/fg/plan.hpp"
+
+namespace antumbra::gpu {
+class Context;
+class ShaderCompiler;
+}  // namespace antumbra::gpu
+
+namespace antumbra::fgvk {
+
+struct FrameResources;
+
+// Thrown by Pass::prepare() when user-editable input (a shader) is broken; carries
+// the located diagnostics so callers can print them and keep the last good state.
+class PassError : public std::runtime_error {
+ public:
+  PassError(const std::string& what, fg::Diagnostics diagnostics)
+      : std::runtime_error(what), diagnostics_(std::move(diagnostics)) {}
+  [[nodiscard]] const fg::Diagnostics& diagnostics() const { return diagnostics_; }
+
+ private:
+  fg::Diagnostics diagnostics_;
+};
+
+// A graph image as a pass sees it.
+struct BoundImage {
+  VkImage image = VK_NULL_HANDLE;
+  VkImageView view = VK_NULL_HANDLE;  // all layers (2D, or 2D array when layers > 1)
+  VkFormat format = VK_FORMAT_UNDEFINED;
+  fg::Format graph_format = fg::Format::undefined;
+  VkExtent2D extent{};
+  std::uint32_t layers = 1;
+  VkImageLayout layout = VK_IMAGE_LAYOUT_UNDEFINED;  // the layout the executor put it in
+};
+
+struct BoundBuffer {
+  VkBuffer buffer = VK_NULL_HANDLE;
+  VkDeviceSize size = 0;
+};
+
+// Ports of one pass resolved to realised resources (nullptr for unbound optional ports).
+class PassBindings {
+ public:
+  struct Entry {
+    std::string port;
+    const BoundImage* image = nullptr;
+    const BoundBuffer* buffer = nullptr;
+  };
+  explicit PassBindings(std::vector<Entry> entries) : entries_(std::move(entries)) {}
+  PassBindings() = default;
+
+  [[nodiscard]] const BoundImage* image(std::string_view port) const;
+  [[nodiscard]] const BoundBuffer* buffer(std::string_view port) const;
+  // The image of a required port: throws std::logic_error when unbound, because the
+  // graph compiler has already guaranteed required ports are bound.
+  [[nodiscard]] const BoundImage& required_image(std::string_view port) const;
+
+ private:
+  std::vector<Entry> entries_;
+};
+
+// Shared samplers owned by the executor.
+struct Samplers {
+  VkSampler nearest_clamp = VK_NULL_HANDLE;
+  VkSampler linear_clamp = VK_NULL_HANDLE;
+};
+
+// Handed to Pass::prepare() whenever the plan or the shaders change.
+struct PrepareContext {
+  gpu::Context& gpu;
+  gpu::ShaderCompiler& shaders;
+  const fg::PlanPass& pass;
+  const PassBindings& bindings;
+  const std::string& shader_root;  // folder that holds passes/<name>/*.vert|frag|comp
+  VkPipelineCache pipeline_cache = VK_NULL_HANDLE;
+};
+
+// Handed to Pass::execute() once per frame.
+struct ExecuteContext {
+  gpu::Context& gpu;
+  VkCommandBuffer cmd;
+  const fg::PlanPass& pass;
+  const PassBindings& bindings;
+  const FrameResources& frame;
+  const Samplers& samplers;
+};
+
+class Pass {
+ public:
+  Pass() = default;
+  Pass(const Pass&) = delete;
+  Pass& operator=(const Pass&) = delete;
+  virtual ~Pass() = default;
+
+  // Creates pipelines for the formats of the bound resources. May throw; the
+  // executor then keeps the previous state.
+  virtual void prepare(PrepareContext& context) = 0;
+  virtual void execute(ExecuteContext& context) = 0;
+  // Shader files the pass depends on (with includes), for file watching.
+  [[nodiscard]] virtual std::vector<std::string> shader_files() const { return {}; }
+};
+
+using PassFactory = std::unique_ptr<Pass> (*)(const fg::PlanPass& pass);
+
+}  // namespace antumbra::fgvk

@@ -1,0 +1,270 @@
+#include "antumbra/fgvk/executor.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "antumbra/gpu/commands.hpp"
+#include "antumbra/gpu/context.hpp"
+#include "antumbra/gpu/handle.hpp"
+#include "antumbra/gpu/resources.hpp"
+
+namespace antumbra::fgvk {
+
+struct Executor::OwnedSamplers {
+  gpu::Sampler nearest;
+  gpu::Sampler linear;
+};
+
+namespace {
+
+struct RealisedResource {
+  gpu::Image image;
+  gpu::Buffer buffer;
+  BoundImage bound_image;
+  BoundBuffer bound_buffer;
+  SyncState state;  // as the GPU will see it after everything recorded so far
+  bool depth = false;
+};
+
+gpu::ImageDesc image_desc(const fg::PlanResource& r) {
+  gpu::ImageDesc desc;
+  desc.format = to_vk_format(r.format);
+  desc.extent = {r.extent.width, r.extent.height};
+  desc.layers = r.layers;
+  desc.usage = image_usage(r);
+  desc.name = r.name;
+  return desc;
+}
+
+}  // namespace
+
+struct Executor::State {
+  fg::Plan plan;
+  gpu::MemoryHeap heap;
+  std::vector<RealisedResource> resources;
+  std::vector<std::unique_ptr<Pass>> passes;
+  std::vector<PassBindings> bindings;
+  std::uint64_t bytes = 0;  // heap + individually allocated resources
+};
+
+Executor::Executor(gpu::Context& gpu, gpu::ShaderCompiler& shaders, const PassRegistry& registry,
+                   std::string shader_root, VkPipelineCache pipeline_cache)
+    : gpu_(gpu),
+      shaders_(shaders),
+      registry_(registry),
+      shader_root_(std::move(shader_root)),
+      pipeline_cache_(pipeline_cache),
+      owned_samplers_(std::make_unique<OwnedSamplers>()) {
+  gpu::SamplerDesc nearest;
+  nearest.filter = VK_FILTER_NEAREST;
+  nearest.mipmap = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+  owned_samplers_->nearest = gpu::create_sampler(gpu_, nearest, "executor.nearest_clamp");
+  owned_samplers_->linear = gpu::create_sampler(gpu_, gpu::SamplerDesc{}, "executor.linear_clamp");
+  samplers_ = {owned_samplers_->nearest, owned_samplers_->linear};
+}
+
+Executor::~Executor() = default;
+
+fg::FootprintFn Executor::footprint_fn() const {
+  gpu::Context* gpu = &gpu_;
+  return [gpu](const fg::PlanResource& r) -> fg::Footprint {
+    if (r.kind == fg::ResourceKind::buffer) {
+      const auto req = gpu::Buffer::memory_requirements(*gpu, r.buffer_size, buffer_usage(r));
+      return {req.size, req.alignment};
+    }
+    const auto req = gpu::Image::memory_requirements(*gpu, image_desc(r));
+    // Aliased images sit next to each other in one heap: keep them on separate
+    // bufferImageGranularity pages so linear and optimal resources never share one.
+    const auto granularity = gpu->limits().bufferImageGranularity;
+    return {req.size, std::max<std::uint64_t>(req.alignment, granularity)};
+  };
+}
+
+const fg::Plan& Executor::plan() const {
+  if (!state_) throw std::logic_error("Executor::plan() before load()");
+  return state_->plan;
+}
+
+void Executor::load(fg::Plan plan) {
+  auto state = std::make_unique<State>();
+  state->plan = std::move(plan);
+  const auto& resources = state->plan.resources;
+
+  // The transient heap: memory types every aliased resource accepts.
+  std::uint32_t type_bits = ~0u;
+  std::uint64_t heap_end = 0;
+  for (const auto& r : resources) {
+    if (!r.aliased || r.first_use < 0) continue;
+    const VkMemoryRequirements req =
+        r.kind == fg::ResourceKind::buffer
+            ? gpu::Buffer::memory_requirements(gpu_, r.buffer_size, buffer_usage(r))
+            : gpu::Image::memory_requirements(gpu_, image_desc(r));
+    if (req.size > r.footprint.size || r.heap_offset % req.alignment != 0) {
+      throw std::runtime_error("aliasing plan does not fit this device for resource " + r.name +
+                               " (compile with Executor::footprint_fn())");
+    }
+    type_bits &= req.memoryTypeBits;
+    heap_end = std::max<std::uint64_t>(heap_end, r.heap_offset + req.size);
+  }
+  if (heap_end > 0) {
+    if (type_bits == 0) throw std::runtime_error("aliased resources share no memory type");
+    state->heap = gpu::create_heap(gpu_, std::max<std::uint64_t>(heap_end, state->plan.aliasing.heap_bytes),
+                                   type_bits, state->plan.name + ".transient_heap");
+    state->bytes += state->heap.size();
+  }
+
+  state->resources.resize(resources.size());
+  for (std::size_t i = 0; i < resources.size(); ++i) {
+    const auto& r = resources[i];
+    auto& out = state->resources[i];
+    if (r.first_use < 0 && !r.is_output) continue;  // declared but unused: nothing to realise
+    if (r.kind == fg::ResourceKind::buffer) {
+      const auto usage = buffer_usage(r);
+      out.buffer = r.aliased ? gpu::Buffer::create_placed(gpu_, r.buffer_size, usage, state->heap,
+                                                          r.heap_offset, r.name)
+                             : gpu::Buffer::create(gpu_, r.buffer_size, usage,
+                                                   gpu::MemoryUsage::gpu_only, r.name);
+      out.bound_buffer = {out.buffer.handle(), r.buffer_size};
+      if (!r.aliased) state->bytes += out.buffer.allocation().size;
+      continue;
+    }
+    const auto desc = image_desc(r);
+    out.image = r.aliased ? gpu::Image::create_placed(gpu_, desc, state->heap, r.heap_offset)
+                          : gpu::Image::create(gpu_, desc);
+    if (!r.aliased) state->bytes += gpu::Image::memory_requirements(gpu_, desc).size;
+    out.depth = fg::is_depth_format(r.format);
+    out.bound_image = {out.image.handle(),
+                       r.layers > 1 ? out.image.array_view() : out.image.view(),
+                       desc.format,
+                       r.format,
+                       desc.extent,
+                       r.layers,
+                       VK_IMAGE_LAYOUT_UNDEFINED};
+  }
+
+  for (const auto& pass : state->plan.passes) {
+    std::vector<PassBindings::Entry> entries;
+    for (const auto& b : pass.bindings) {
+      PassBindings::Entry e{b.port};
+      if (b.resource >= 0) {
+        auto& rr = state->resources[static_cast<std::size_t>(b.resource)];
+        if (resources[static_cast<std::size_t>(b.resource)].kind == fg::ResourceKind::buffer) {
+          e.buffer = &rr.bound_buffer;
+        } else {
+          e.image = &rr.bound_image;
+        }
+      }
+      entries.push_back(std::move(e));
+    }
+    state->bindings.emplace_back(std::move(entries));
+    const PassFactory factory = registry_.factory(pass.type);
+    if (factory == nullptr) throw std::runtime_error("no runtime for pass type " + pass.type);
+    state->passes.push_back(factory(pass));
+  }
+  for (std::size_t i = 0; i < state->passes.size(); ++i) {
+    PrepareContext context{gpu_, shaders_, state->plan.passes[i], state->bindings[i], shader_root_,
+                           pipeline_cache_};
+    state->passes[i]->prepare(context);
+  }
+  // Only now, with everything created, replace the live state; the old objects go
+  // to deferred destruction and die once no frame in flight uses them.
+  state_ = std::move(state);
+}
+
+void Executor::record_barriers(VkCommandBuffer cmd, const std::vector<fg::PlanBarrier>& barriers) {
+  std::vector<VkImageMemoryBarrier2> image_barriers;
+  std::vector<VkBufferMemoryBarrier2> buffer_barriers;
+  for (const auto& b : barriers) {
+    auto& rr = state_->resources[static_cast<std::size_t>(b.resource)];
+    const auto& r = state_->plan.resources[static_cast<std::size_t>(b.resource)];
+    const SyncState target = sync_state(b.to, b.to_stage, rr.depth);
+    SyncState source = rr.state;
+    if (b.discard) {
+      // Contents are not needed. An aliased resource's memory was last used by another
+      // resource, so order against all earlier writes rather than this one's history.
+      source.layout = VK_IMAGE_LAYOUT_UNDEFINED;
+      if (r.aliased) {
+        source.stages = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
+        source.access = VK_ACCESS_2_MEMORY_WRITE_BIT;
+      }
+    }
+    if (r.kind == fg::ResourceKind::buffer) {
+      VkBufferMemoryBarrier2 bb{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER_2};
+      bb.srcStageMask = source.stages;
+      bb.srcAccessMask = source.access;
+      bb.dstStageMask = target.stages;
+      bb.dstAccessMask = target.access;
+      bb.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+      bb.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+      bb.buffer = rr.bound_buffer.buffer;
+      bb.size = VK_WHOLE_SIZE;
+      buffer_barriers.push_back(bb);
+    } else {
+      gpu::ImageBarrier ib;
+      ib.image = rr.bound_image.image;
+      ib.old_layout = source.layout;
+      ib.new_layout = target.layout;
+      ib.src_stage = source.stages;
+      ib.src_access = source.access;
+      ib.dst_stage = target.stages;
+      ib.dst_access = target.access;
+      ib.range = {aspect_of(r.format), 0, VK_REMAINING_MIP_LEVELS, 0, VK_REMAINING_ARRAY_LAYERS};
+      image_barriers.push_back(gpu::to_vk(ib));
+      rr.bound_image.layout = target.layout;
+    }
+    rr.state = target;
+  }
+  if (image_barriers.empty() && buffer_barriers.empty()) return;
+  VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+  dependency.imageMemoryBarrierCount = static_cast<std::uint32_t>(image_barriers.size());
+  dependency.pImageMemoryBarriers = image_barriers.data();
+  dependency.bufferMemoryBarrierCount = static_cast<std::uint32_t>(buffer_barriers.size());
+  dependency.pBufferMemoryBarriers = buffer_barriers.data();
+  vkCmdPipelineBarrier2(cmd, &dependency);
+}
+
+void Executor::record(VkCommandBuffer cmd, const FrameResources& frame, PassObserver* observer) {
+  if (!state_) throw std::logic_error("Executor::record() before load()");
+  for (std::size_t i = 0; i < state_->passes.size(); ++i) {
+    const auto& pass = state_->plan.passes[i];
+    gpu_.begin_label(cmd, pass.name);
+    record_barriers(cmd, pass.barriers);
+    if (observer != nullptr) observer->begin_pass(cmd, pass);
+    ExecuteContext context{gpu_, cmd, pass, state_->bindings[i], frame, samplers_};
+    state_->passes[i]->execute(context);
+    if (observer != nullptr) observer->end_pass(cmd, pass);
+    gpu_.end_label(cmd);
+  }
+  record_barriers(cmd, state_->plan.final_barriers);
+}
+
+const BoundImage* Executor::image(std::string_view resource) const {
+  if (!state_) return nullptr;
+  const int index = state_->plan.find_resource(resource);
+  if (index < 0) return nullptr;
+  const auto& rr = state_->resources[static_cast<std::size_t>(index)];
+  return rr.bound_image.image == VK_NULL_HANDLE ? nullptr : &rr.bound_image;
+}
+
+const gpu::Image* Executor::gpu_image(std::string_view resource) const {
+  if (!state_) return nullptr;
+  const int index = state_->plan.find_resource(resource);
+  if (index < 0) return nullptr;
+  const auto& rr = state_->resources[static_cast<std::size_t>(index)];
+  return rr.image ? &rr.image : nullptr;
+}
+
+std::uint64_t Executor::resource_bytes() const { return state_ ? state_->bytes : 0; }
+
+std::vector<std::string> Executor::shader_files() const {
+  std::vector<std::string> files;
+  if (!state_) return files;
+  for (const auto& pass : state_->passes) {
+    for (auto& f : pass->shader_files()) {
+      if (std::find(files.begin(), files.end(), f) == files.end()) files.push_back(std::move(f));
+    }
+  }
+  return files;
+}
+
+}  // namespace antumbra::fgvk

@@ -1,0 +1,65 @@
+#include "frame_data.hpp"
+
+#include <glm/gtc/matrix_inverse.hpp>
+
+namespace antumbra::passes {
+
+MergedGeometry merge_scene_geometry(const scene::Scene& scene) {
+  MergedGeometry merged;
+  merged.vertices.reserve(scene.vertex_count());
+  merged.indices.reserve(scene.triangle_count() * 3);
+  for (const auto& mesh : scene.meshes) {
+    const auto base = static_cast<std::uint32_t>(merged.vertices.size());
+    const glm::mat3 normal_matrix = mesh.normal_matrix();
+    const auto material = static_cast<std::uint32_t>(mesh.material);
+    for (const auto& v : mesh.vertices) {
+      const glm::vec3 world = glm::vec3(mesh.transform * glm::vec4(v.position, 1.0f));
+      glm::vec3 n = normal_matrix * v.normal;
+      const float len = glm::length(n);
+      n = len > 0.0f ? n / len : glm::vec3(0.0f, 1.0f, 0.0f);
+      merged.vertices.push_back({world, n, material});
+    }
+    for (const std::uint32_t index : mesh.indices) merged.indices.push_back(base + index);
+  }
+  return merged;
+}
+
+std::vector<GpuMaterial> build_materials(const scene::Scene& scene) {
+  std::vector<GpuMaterial> materials;
+  materials.reserve(scene.materials.size());
+  for (const auto& m : scene.materials) {
+    materials.push_back({glm::vec4(m.albedo, 1.0f),
+                         glm::vec4(m.roughness, m.metallic, m.translucent ? 1.0f : 0.0f, 0.0f),
+                         m.transmittance});
+  }
+  if (materials.empty()) materials.push_back({glm::vec4(0.8f), glm::vec4(0.5f, 0, 0, 0), glm::vec4(1.0f)});
+  return materials;
+}
+
+FrameUniforms build_frame_uniforms(const scene::Scene& scene, std::uint32_t width,
+                                   std::uint32_t height, std::uint32_t frame_index) {
+  FrameUniforms u;
+  const float aspect = static_cast<float>(width) / static_cast<float>(height);
+  u.view = scene.camera.view();
+  u.proj = scene.camera.projection(aspect);
+  u.view_proj = u.proj * u.view;
+  u.inv_proj = glm::inverse(u.proj);
+  u.viewport = glm::vec4(static_cast<float>(width), static_cast<float>(height),
+                         1.0f / static_cast<float>(width), 1.0f / static_cast<float>(height));
+  u.ambient = glm::vec4(scene.ambient, 0.0f);
+  u.counts = glm::uvec4(static_cast<std::uint32_t>(scene.lights.size()), frame_index, 0u, 0u);
+  return u;
+}
+
+std::vector<GpuLight> build_lights(const scene::Scene& scene, const glm::mat4& view) {
+  std::vector<GpuLight> lights;
+  lights.reserve(scene.lights.size());
+  for (const auto& l : scene.lights) {
+    const glm::vec3 view_pos = glm::vec3(view * glm::vec4(l.position, 1.0f));
+    lights.push_back({glm::vec4(view_pos, l.range), glm::vec4(l.color, l.intensity),
+                      glm::vec4(l.position, l.size)});
+  }
+  return lights;
+}
+
+}  // namespace antumbra::passes

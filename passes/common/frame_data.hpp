@@ -1,0 +1,63 @@
+#pragma once
+// The data every pass shares, laid out exactly as passes/common/*.glsl declare it.
+// Building it is plain CPU work (tested without a device); uploading is gpu_scene's.
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "antumbra/scene/scene.hpp"
+
+namespace antumbra::passes {
+
+// std140 `FrameUniforms` in frame.glsl.
+struct FrameUniforms {
+  glm::mat4 view{1.0f};
+  glm::mat4 proj{1.0f};
+  glm::mat4 view_proj{1.0f};
+  glm::mat4 inv_proj{1.0f};
+  glm::vec4 viewport{0.0f};  // width, height, 1/width, 1/height
+  glm::vec4 ambient{0.0f};
+  glm::uvec4 counts{0u};  // x light count, y frame index
+};
+static_assert(sizeof(FrameUniforms) == 4 * 64 + 3 * 16);
+
+// std430 `GpuLight` in lights.glsl.
+struct GpuLight {
+  glm::vec4 position_range{0.0f};   // view space, range
+  glm::vec4 color_intensity{0.0f};  // linear rgb, intensity
+  glm::vec4 world_size{0.0f};       // world position, light size
+};
+static_assert(sizeof(GpuLight) == 48);
+
+// std430 `GpuMaterial` in material.glsl.
+struct GpuMaterial {
+  glm::vec4 albedo{0.0f};
+  glm::vec4 params{0.0f};  // roughness, metallic, translucent, 0
+  glm::vec4 transmittance{1.0f};
+};
+static_assert(sizeof(GpuMaterial) == 48);
+
+// One vertex of the merged world-space scene buffer (gbuffer.vert's inputs).
+struct GpuVertex {
+  glm::vec3 position{0.0f};
+  glm::vec3 normal{0.0f};
+  std::uint32_t material = 0;
+};
+static_assert(sizeof(GpuVertex) == 28);
+
+struct MergedGeometry {
+  std::vector<GpuVertex> vertices;
+  std::vector<std::uint32_t> indices;
+};
+
+// All meshes transformed to world space in one vertex/index list, so static
+// geometry draws with a single indexed call.
+MergedGeometry merge_scene_geometry(const scene::Scene& scene);
+std::vector<GpuMaterial> build_materials(const scene::Scene& scene);
+FrameUniforms build_frame_uniforms(const scene::Scene& scene, std::uint32_t width,
+                                   std::uint32_t height, std::uint32_t frame_index);
+std::vector<GpuLight> build_lights(const scene::Scene& scene, const glm::mat4& view);
+
+}  // namespace antumbra::passes

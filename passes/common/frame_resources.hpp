@@ -1,0 +1,32 @@
+#pragma once
+// Per-frame inputs that are not graph resources: the uploaded scene and the
+// camera/light data of this frame. The executor hands it to passes untouched; its
+// contents are what the built-in passes share, so it is defined beside them.
+
+#include <cstdint>
+
+#include <vulkan/vulkan.h>
+
+namespace antumbra::scene {
+struct Scene;
+}
+
+namespace antumbra::fgvk {
+
+struct FrameResources {
+  VkBuffer frame_uniforms = VK_NULL_HANDLE;  // FrameUniforms (frame.glsl)
+  VkDeviceSize frame_uniforms_size = 0;
+  VkBuffer lights = VK_NULL_HANDLE;          // GpuLight[] (lights.glsl)
+  VkDeviceSize lights_size = 0;
+  std::uint32_t light_count = 0;
+  VkBuffer materials = VK_NULL_HANDLE;       // GpuMaterial[] (material.glsl)
+  VkDeviceSize materials_size = 0;
+  VkBuffer vertices = VK_NULL_HANDLE;        // GpuVertex[] in world space
+  VkBuffer indices = VK_NULL_HANDLE;         // uint32 triangle list
+  std::uint32_t index_count = 0;
+  VkExtent2D viewport{};
+  const scene::Scene* scene = nullptr;
+  std::uint64_t frame_index = 0;
+};
+
+}  // namespace antumbra::fgvk

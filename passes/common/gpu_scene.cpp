@@ -1,0 +1,78 @@
+#include "gpu_scene.hpp"
+
+#include <algorithm>
+#include <cstring>
+#include <stdexcept>
+
+#include "frame_data.hpp"
+
+namespace antumbra::passes {
+namespace {
+
+constexpr std::uint32_t kMaxLights = 4096;
+
+template <class T>
+gpu::Buffer upload_device_buffer(gpu::Context& gpu, const std::vector<T>& data,
+                                 VkBufferUsageFlags usage, std::string_view name) {
+  // Empty scenes still get a valid (minimal) buffer so descriptors stay valid.
+  const VkDeviceSize bytes = std::max<VkDeviceSize>(sizeof(T), data.size() * sizeof(T));
+  auto buffer = gpu::Buffer::create(gpu, bytes, usage | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                    gpu::MemoryUsage::gpu_only, name);
+  if (!data.empty()) buffer.upload(gpu, data.data(), data.size() * sizeof(T));
+  return buffer;
+}
+
+}  // namespace
+
+GpuScene::GpuScene(gpu::Context& gpu, const scene::Scene& scene, std::uint32_t frames_in_flight)
+    : gpu_(gpu) {
+  const auto geometry = merge_scene_geometry(scene);
+  vertices_ = upload_device_buffer(gpu, geometry.vertices, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT |
+                                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "scene.vertices");
+  indices_ = upload_device_buffer(gpu, geometry.indices, VK_BUFFER_USAGE_INDEX_BUFFER_BIT |
+                                  VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "scene.indices");
+  index_count_ = static_cast<std::uint32_t>(geometry.indices.size());
+  materials_ = upload_device_buffer(gpu, build_materials(scene), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                    "scene.materials");
+  for (std::uint32_t i = 0; i < frames_in_flight; ++i) {
+    Slot slot;
+    slot.uniforms = gpu::Buffer::create(gpu, sizeof(FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                                        gpu::MemoryUsage::upload, "frame.uniforms." + std::to_string(i));
+    slot.lights = gpu::Buffer::create(gpu, sizeof(GpuLight) * kMaxLights,
+                                      VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, gpu::MemoryUsage::upload,
+                                      "frame.lights." + std::to_string(i));
+    slots_.push_back(std::move(slot));
+  }
+}
+
+fgvk::FrameResources GpuScene::update(std::uint32_t slot_index, const scene::Scene& scene,
+                                      VkExtent2D viewport, std::uint64_t frame_index) {
+  if (scene.lights.size() > kMaxLights) {
+    throw std::runtime_error("the scene has " + std::to_string(scene.lights.size()) +
+                             " lights; at most " + std::to_string(kMaxLights) + " are supported");
+  }
+  auto& slot = slots_.at(slot_index);
+  const auto uniforms = build_frame_uniforms(scene, viewport.width, viewport.height,
+                                             static_cast<std::uint32_t>(frame_index));
+  std::memcpy(slot.uniforms.mapped(), &uniforms, sizeof uniforms);
+  const auto lights = build_lights(scene, uniforms.view);
+  if (!lights.empty()) std::memcpy(slot.lights.mapped(), lights.data(), lights.size() * sizeof(GpuLight));
+
+  fgvk::FrameResources frame;
+  frame.frame_uniforms = slot.uniforms;
+  frame.frame_uniforms_size = sizeof(FrameUniforms);
+  frame.lights = slot.lights;
+  frame.lights_size = slot.lights.size();
+  frame.light_count = static_cast<std::uint32_t>(lights.size());
+  frame.materials = materials_;
+  frame.materials_size = materials_.size();
+  frame.vertices = vertices_;
+  frame.indices = indices_;
+  frame.index_count = index_count_;
+  frame.viewport = viewport;
+  frame.scene = &scene;
+  frame.frame_index = frame_index;
+  return frame;
+}
+
+}  // namespace antumbra::passes

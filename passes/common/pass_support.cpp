@@ -1,0 +1,54 @@
+#include "pass_support.hpp"
+
+#include <algorithm>
+#include <filesystem>
+
+#include "antumbra/gpu/context.hpp"
+
+namespace antumbra::passes {
+
+gpu::ShaderModule load_shader(fgvk::PrepareContext& context, std::string_view relative,
+                              std::vector<std::string>& dependencies,
+                              const std::vector<gpu::ShaderDefine>& defines) {
+  gpu::ShaderRequest request;
+  request.path = std::filesystem::path(context.shader_root) / relative;
+  request.defines = defines;
+  auto result = context.shaders.compile(request);
+  if (!result.ok()) {
+    throw fgvk::PassError("shader " + request.path.string() + " failed to compile",
+                          result.diagnostics());
+  }
+  for (const auto& dep : result->dependencies) {
+    const std::string file = dep.string();
+    if (std::find(dependencies.begin(), dependencies.end(), file) == dependencies.end()) {
+      dependencies.push_back(file);
+    }
+  }
+  return gpu::create_shader_module(context.gpu, result->spirv,
+                                   context.pass.name + ":" + std::string(relative));
+}
+
+float param_float(const fg::PlanPass& pass, std::string_view name) {
+  const auto it = pass.params.find(name);
+  return it != pass.params.end() && it->is_number() ? it->get<float>() : 0.0f;
+}
+
+bool param_bool(const fg::PlanPass& pass, std::string_view name) {
+  const auto it = pass.params.find(name);
+  return it != pass.params.end() && it->is_boolean() && it->get<bool>();
+}
+
+std::string param_string(const fg::PlanPass& pass, std::string_view name) {
+  const auto it = pass.params.find(name);
+  return it != pass.params.end() && it->is_string() ? it->get<std::string>() : std::string();
+}
+
+void set_viewport(VkCommandBuffer cmd, VkExtent2D extent) {
+  const VkViewport viewport{0.0f, 0.0f, static_cast<float>(extent.width),
+                            static_cast<float>(extent.height), 0.0f, 1.0f};
+  const VkRect2D scissor{{0, 0}, extent};
+  vkCmdSetViewport(cmd, 0, 1, &viewport);
+  vkCmdSetScissor(cmd, 0, 1, &scissor);
+}
+
+}  // namespace antumbra::passes

@@ -1,0 +1,29 @@
+#pragma once
+// Small helpers every pass uses: shader loading with diagnostics, fullscreen draws.
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "antumbra/fgvk/pass.hpp"
+#include "antumbra/gpu/handle.hpp"
+#include "antumbra/gpu/shader_compiler.hpp"
+
+namespace antumbra::passes {
+
+// Compiles passes/<relative> (GLSL) and makes a shader module named after it. Adds
+// the file and its includes to `dependencies`. Throws fgvk::PassError with the
+// compiler's file:line diagnostics on failure.
+gpu::ShaderModule load_shader(fgvk::PrepareContext& context, std::string_view relative,
+                              std::vector<std::string>& dependencies,
+                              const std::vector<gpu::ShaderDefine>& defines = {});
+
+// A parameter of the pass as a number (defaults are filled in by the compiler).
+float param_float(const fg::PlanPass& pass, std::string_view name);
+bool param_bool(const fg::PlanPass& pass, std::string_view name);
+std::string param_string(const fg::PlanPass& pass, std::string_view name);
+
+// Sets a full-image viewport and scissor.
+void set_viewport(VkCommandBuffer cmd, VkExtent2D extent);
+
+}  // namespace antumbra::passes

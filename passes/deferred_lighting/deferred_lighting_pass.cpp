@@ -1,0 +1,65 @@
+#include "deferred_lighting_pass.hpp"
+
+#include <array>
+
+#include "antumbra/gpu/context.hpp"
+#include "antumbra/gpu/pipelines.hpp"
+#include "common/frame_resources.hpp"
+#include "common/fullscreen_pass.hpp"
+#include "common/pass_support.hpp"
+
+namespace antumbra::passes {
+namespace {
+
+struct PushConstants {
+  float exposure;
+  float ambient_scale;
+  float specular;
+};
+
+}  // namespace
+
+DeferredLightingPass::DeferredLightingPass(const fg::PlanPass& /*pass*/) {}
+
+void DeferredLightingPass::prepare(fgvk::PrepareContext& context) {
+  constexpr VkShaderStageFlags kFrag = VK_SHADER_STAGE_FRAGMENT_BIT;
+  set_layout_ = gpu::DescriptorSetLayoutBuilder()
+                    .uniform_buffer(0, kFrag)
+                    .storage_buffer(1, kFrag)
+                    .combined_image_sampler(2, kFrag)
+                    .combined_image_sampler(3, kFrag)
+                    .combined_image_sampler(4, kFrag)
+                    .build(context.gpu, context.pass.name + ".set");
+  const std::array<VkDescriptorSetLayout, 1> sets{set_layout_};
+  const std::array<VkPushConstantRange, 1> push{{{kFrag, 0, sizeof(PushConstants)}}};
+  layout_ = gpu::create_pipeline_layout(context.gpu, sets, push, context.pass.name + ".layout");
+  pipeline_ = build_fullscreen_pipeline(context, "deferred_lighting/deferred_lighting.frag", layout_,
+                                        context.bindings.required_image("hdr").format, shader_files_);
+}
+
+void DeferredLightingPass::execute(fgvk::ExecuteContext& context) {
+  const auto& b = context.bindings;
+  const auto& depth = b.required_image("depth");
+  const auto& normal = b.required_image("normal");
+  const auto& albedo = b.required_image("albedo");
+  const auto& hdr = b.required_image("hdr");
+  const VkSampler nearest = context.samplers.nearest_clamp;
+  const VkCommandBuffer cmd = context.cmd;
+
+  begin_fullscreen(cmd, hdr);
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_);
+  gpu::PushDescriptors()
+      .uniform_buffer(0, context.frame.frame_uniforms)
+      .storage_buffer(1, context.frame.lights)
+      .combined_image_sampler(2, depth.view, nearest, depth.layout)
+      .combined_image_sampler(3, normal.view, nearest, normal.layout)
+      .combined_image_sampler(4, albedo.view, nearest, albedo.layout)
+      .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_);
+  const PushConstants constants{param_float(context.pass, "exposure"),
+                                param_float(context.pass, "ambient"),
+                                param_float(context.pass, "specular")};
+  vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof constants, &constants);
+  end_fullscreen(cmd);
+}
+
+}  // namespace antumbra::passes

@@ -1,0 +1,91 @@
+#include "gbuffer_pass.hpp"
+
+#include <array>
+
+#include "antumbra/gpu/context.hpp"
+#include "antumbra/gpu/pipelines.hpp"
+#include "common/frame_data.hpp"
+#include "common/frame_resources.hpp"
+#include "common/pass_support.hpp"
+
+namespace antumbra::passes {
+
+GBufferPass::GBufferPass(const fg::PlanPass& /*pass*/) {}
+
+void GBufferPass::prepare(fgvk::PrepareContext& context) {
+  auto vert = load_shader(context, "gbuffer/gbuffer.vert", shader_files_);
+  auto frag = load_shader(context, "gbuffer/gbuffer.frag", shader_files_);
+  const auto& depth = context.bindings.required_image("depth");
+  const auto& normal = context.bindings.required_image("normal");
+  const auto& albedo = context.bindings.required_image("albedo");
+
+  set_layout_ = gpu::DescriptorSetLayoutBuilder()
+                    .uniform_buffer(0, VK_SHADER_STAGE_VERTEX_BIT)
+                    .storage_buffer(1, VK_SHADER_STAGE_FRAGMENT_BIT)
+                    .build(context.gpu, context.pass.name + ".set");
+  const std::array<VkDescriptorSetLayout, 1> sets{set_layout_};
+  layout_ = gpu::create_pipeline_layout(context.gpu, sets, {}, context.pass.name + ".layout");
+  const bool cull = param_bool(context.pass, "cullBackFaces");
+  pipeline_ = gpu::GraphicsPipelineBuilder()
+                  .shader(VK_SHADER_STAGE_VERTEX_BIT, vert)
+                  .shader(VK_SHADER_STAGE_FRAGMENT_BIT, frag)
+                  .vertex_binding(0, sizeof(GpuVertex))
+                  .vertex_attribute(0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(GpuVertex, position))
+                  .vertex_attribute(1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(GpuVertex, normal))
+                  .vertex_attribute(2, 0, VK_FORMAT_R32_UINT, offsetof(GpuVertex, material))
+                  .cull(cull ? VK_CULL_MODE_BACK_BIT : VK_CULL_MODE_NONE)
+                  .depth(true, true, VK_COMPARE_OP_LESS)
+                  .color_formats({normal.format, albedo.format})
+                  .depth_format(depth.format)
+                  .layout(layout_)
+                  .cache(context.pipeline_cache)
+                  .build(context.gpu, context.pass.name + ".pipeline");
+}
+
+void GBufferPass::execute(fgvk::ExecuteContext& context) {
+  const auto& depth = context.bindings.required_image("depth");
+  const auto& normal = context.bindings.required_image("normal");
+  const auto& albedo = context.bindings.required_image("albedo");
+
+  std::array<VkRenderingAttachmentInfo, 2> colors{};
+  const std::array<const fgvk::BoundImage*, 2> targets{&normal, &albedo};
+  for (std::size_t i = 0; i < colors.size(); ++i) {
+    colors[i].sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO;
+    colors[i].imageView = targets[i]->view;
+    colors[i].imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+    colors[i].loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+    colors[i].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    colors[i].clearValue.color = {{0.0f, 0.0f, 0.0f, 0.0f}};
+  }
+  VkRenderingAttachmentInfo depth_attachment{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+  depth_attachment.imageView = depth.view;
+  depth_attachment.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+  depth_attachment.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+  depth_attachment.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+  depth_attachment.clearValue.depthStencil = {1.0f, 0};
+
+  VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
+  rendering.renderArea = {{0, 0}, depth.extent};
+  rendering.layerCount = 1;
+  rendering.colorAttachmentCount = static_cast<std::uint32_t>(colors.size());
+  rendering.pColorAttachments = colors.data();
+  rendering.pDepthAttachment = &depth_attachment;
+
+  const VkCommandBuffer cmd = context.cmd;
+  vkCmdBeginRendering(cmd, &rendering);
+  if (context.frame.index_count > 0) {
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_);
+    set_viewport(cmd, depth.extent);
+    gpu::PushDescriptors()
+        .uniform_buffer(0, context.frame.frame_uniforms)
+        .storage_buffer(1, context.frame.materials)
+        .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_);
+    const VkDeviceSize offset = 0;
+    vkCmdBindVertexBuffers(cmd, 0, 1, &context.frame.vertices, &offset);
+    vkCmdBindIndexBuffer(cmd, context.frame.indices, 0, VK_INDEX_TYPE_UINT32);
+    vkCmdDrawIndexed(cmd, context.frame.index_count, 1, 0, 0, 0);
+  }
+  vkCmdEndRendering(cmd);
+}
+
+}  // namespace antumbra::passes

@@ -1,0 +1,26 @@
+#include "register_builtin_passes.hpp"
+
+#include "deferred_lighting/deferred_lighting_pass.hpp"
+#include "gbuffer/gbuffer_pass.hpp"
+#include "tonemap/tonemap_pass.hpp"
+
+namespace antumbra::passes {
+
+template <class PassT>
+std::unique_ptr<fgvk::Pass> make_pass(const fg::PlanPass& pass) {
+  return std::make_unique<PassT>(pass);
+}
+
+void register_builtin_passes(fgvk::PassRegistry& registry) {
+  registry.add(GBufferPass::describe(), &make_pass<GBufferPass>);
+  registry.add(DeferredLightingPass::describe(), &make_pass<DeferredLightingPass>);
+  registry.add(TonemapPass::describe(), &make_pass<TonemapPass>);
+}
+
+fgvk::PassRegistry builtin_pass_registry() {
+  fgvk::PassRegistry registry;
+  register_builtin_passes(registry);
+  return registry;
+}
+
+}  // namespace antumbra::passes

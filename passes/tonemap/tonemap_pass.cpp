@@ -1,0 +1,62 @@
+#include "tonemap_pass.hpp"
+
+#include <array>
+
+#include "antumbra/gpu/context.hpp"
+#include "antumbra/gpu/pipelines.hpp"
+#include "common/frame_resources.hpp"
+#include "common/fullscreen_pass.hpp"
+#include "common/pass_support.hpp"
+
+namespace antumbra::passes {
+namespace {
+
+struct PushConstants {
+  float exposure;
+  std::uint32_t tone_operator;
+  std::uint32_t encode_srgb;
+};
+
+std::uint32_t operator_index(const std::string& name) {
+  if (name == "reinhard") return 1;
+  if (name == "linear") return 2;
+  return 0;  // aces
+}
+
+bool is_srgb_format(VkFormat format) {
+  return format == VK_FORMAT_R8G8B8A8_SRGB || format == VK_FORMAT_B8G8R8A8_SRGB;
+}
+
+}  // namespace
+
+TonemapPass::TonemapPass(const fg::PlanPass& /*pass*/) {}
+
+void TonemapPass::prepare(fgvk::PrepareContext& context) {
+  constexpr VkShaderStageFlags kFrag = VK_SHADER_STAGE_FRAGMENT_BIT;
+  set_layout_ = gpu::DescriptorSetLayoutBuilder()
+                    .combined_image_sampler(0, kFrag)
+                    .build(context.gpu, context.pass.name + ".set");
+  const std::array<VkDescriptorSetLayout, 1> sets{set_layout_};
+  const std::array<VkPushConstantRange, 1> push{{{kFrag, 0, sizeof(PushConstants)}}};
+  layout_ = gpu::create_pipeline_layout(context.gpu, sets, push, context.pass.name + ".layout");
+  pipeline_ = build_fullscreen_pipeline(context, "tonemap/tonemap.frag", layout_,
+                                        context.bindings.required_image("ldr").format, shader_files_);
+}
+
+void TonemapPass::execute(fgvk::ExecuteContext& context) {
+  const auto& hdr = context.bindings.required_image("hdr");
+  const auto& ldr = context.bindings.required_image("ldr");
+  const VkCommandBuffer cmd = context.cmd;
+  begin_fullscreen(cmd, ldr);
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_);
+  gpu::PushDescriptors()
+      .combined_image_sampler(0, hdr.view, context.samplers.nearest_clamp, hdr.layout)
+      .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_);
+  const PushConstants constants{param_float(context.pass, "exposure"),
+                                operator_index(param_string(context.pass, "operator")),
+                                is_srgb_format(ldr.format) ? 0u : 1u};
+  vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof constants, &constants);
+  end_fullscreen(cmd);
+}
+
+}  // namespace antumbra::passes

@@ -1,0 +1,191 @@
+// compile() end to end on the good fixtures: order, culling, lifetimes, aliasing, barriers.
+#include <gtest/gtest.h>
+
+#include "antumbra/fg/diagnostic_codes.hpp"
+#include "test_support.hpp"
+
+namespace antumbra::fg {
+namespace {
+
+using testing::data_path;
+using testing::fake_registry;
+using testing::pass_names;
+
+Plan compile_good(const std::string& name, const CompileOptions& options = {}) {
+  auto r = compile_file(data_path("graphs/good/" + name), fake_registry(), options);
+  EXPECT_TRUE(r.ok()) << r.diagnostics().to_text();
+  return r.ok() ? r.value() : Plan{};
+}
+
+TEST(Compile, DeferredGraph) {
+  const Plan plan = compile_good("deferred.json");
+  EXPECT_EQ(pass_names(plan), (std::vector<std::string>{"gbuffer", "lighting", "tonemap"}));
+  EXPECT_TRUE(plan.culled_passes.empty());
+  ASSERT_EQ(plan.resources.size(), 5u);
+  EXPECT_EQ(plan.resources[static_cast<std::size_t>(plan.output)].name, "ldr");
+  const PlanPass* lighting = plan.find_pass("lighting");
+  ASSERT_NE(lighting, nullptr);
+  EXPECT_EQ(lighting->params["exposure"], 1.5);
+  EXPECT_EQ(lighting->params["ambient"], 0.03);  // default filled in
+  // Bindings follow the pass type's port order; the optional lights port is unbound.
+  ASSERT_EQ(lighting->bindings.size(), 5u);
+  EXPECT_EQ(lighting->bindings[3].port, "lights");
+  EXPECT_EQ(lighting->bindings[3].resource, -1);
+  const PlanResource& depth = plan.resources[static_cast<std::size_t>(plan.find_resource("depth"))];
+  EXPECT_EQ(depth.extent, (Extent2D{1280, 720}));
+  EXPECT_EQ(depth.first_use, 0);
+  EXPECT_EQ(depth.last_use, 1);
+  const PlanResource& ldr = plan.resources[static_cast<std::size_t>(plan.output)];
+  EXPECT_EQ(ldr.last_use, 2);
+  ASSERT_EQ(plan.final_barriers.size(), 1u);
+  EXPECT_EQ(plan.final_barriers[0].from, Access::color_attachment);
+  EXPECT_EQ(plan.final_barriers[0].to, Access::present);
+}
+
+TEST(Compile, ViewportScalesRelativeResources) {
+  CompileOptions options;
+  options.viewport = {800, 600};
+  const Plan plan = compile_good("after.json", options);
+  EXPECT_EQ(plan.resources[static_cast<std::size_t>(plan.find_resource("quarter"))].extent, (Extent2D{400, 150}));
+  EXPECT_EQ(plan.resources[static_cast<std::size_t>(plan.find_resource("depth"))].extent, (Extent2D{1024, 512}));
+}
+
+TEST(Compile, CullsPassesThatReachNothing) {
+  auto r = compile_file(data_path("graphs/good/culling.json"), fake_registry());
+  ASSERT_TRUE(r.ok()) << r.diagnostics().to_text();
+  const Plan& plan = r.value();
+  EXPECT_EQ(plan.culled_passes, (std::vector<std::string>{"shadows", "debug", "debug2"}));
+  EXPECT_EQ(plan.disabled_passes, (std::vector<std::string>{"off"}));
+  EXPECT_EQ(pass_names(plan), (std::vector<std::string>{"gbuffer", "lighting", "capture", "keepMe", "tonemap"}));
+  EXPECT_EQ(plan.find_resource("atlas"), -1);  // only a culled pass used it
+  const Diagnostic* note = r.diagnostics().find(codes::kPassCulled);
+  ASSERT_NE(note, nullptr);
+  EXPECT_EQ(note->severity, Severity::note);
+  EXPECT_EQ(note->pointer, "/passes/1");
+  EXPECT_EQ(note->line, 17);
+  EXPECT_NE(r.diagnostics().find(codes::kPassDisabled), nullptr);
+}
+
+TEST(Compile, ExplicitAfterReordersStably) {
+  const Plan plan = compile_good("after.json");
+  EXPECT_EQ(pass_names(plan),
+            (std::vector<std::string>{"gbuffer", "lightList", "lighting", "quarter", "mix", "tonemap"}));
+  const PlanPass* light_list = plan.find_pass("lightList");
+  EXPECT_EQ(light_list->source_index, 0);
+  EXPECT_EQ(light_list->params["label"], "point");
+}
+
+TEST(Compile, AliasingSavesMemoryWithoutOverlap) {
+  const Plan plan = compile_good("aliasing.json");
+  const auto& a = plan.aliasing;
+  EXPECT_GT(a.bytes_saved(), 0u);
+  EXPECT_LT(a.heap_bytes, a.bytes_without_aliasing);
+  for (const auto& x : plan.resources) {
+    EXPECT_EQ(x.aliased, !x.is_output && !x.persistent) << x.name;
+    for (const auto& y : plan.resources) {
+      if (&x == &y || !x.aliased || !y.aliased) continue;
+      const bool live = x.first_use <= y.last_use && y.first_use <= x.last_use;
+      const bool overlap = x.heap_offset < y.heap_offset + y.footprint.size &&
+                           y.heap_offset < x.heap_offset + x.footprint.size;
+      EXPECT_FALSE(live && overlap) << x.name << " and " << y.name;
+    }
+  }
+  // half1 dies (blurY) before half3 is born? No: half1 ends at blurX (4), half3 starts at blurY (5).
+  const auto& half1 = plan.resources[static_cast<std::size_t>(plan.find_resource("half1"))];
+  const auto& half3 = plan.resources[static_cast<std::size_t>(plan.find_resource("half3"))];
+  EXPECT_LT(half1.last_use, half3.first_use);
+  const auto& lights = plan.resources[static_cast<std::size_t>(plan.find_resource("lights"))];
+  EXPECT_EQ(lights.footprint.size, 65536u);
+  EXPECT_EQ(lights.footprint.alignment, 256u);
+}
+
+TEST(Compile, CustomFootprintCallback) {
+  CompileOptions options;
+  options.footprint = [](const PlanResource&) { return Footprint{1000, 1}; };
+  const Plan plan = compile_good("aliasing.json", options);
+  for (const auto& r : plan.resources) {
+    if (r.aliased) {
+      EXPECT_EQ(r.footprint.size, 1000u);
+    }
+  }
+}
+
+TEST(Compile, PersistentHistoryKeepsItsWriterAndStartsInLastState) {
+  const Plan plan = compile_good("persistent.json");
+  EXPECT_TRUE(plan.culled_passes.empty());  // saveHistory feeds the next frame
+  EXPECT_EQ(pass_names(plan).back(), "saveHistory");
+  const int history = plan.find_resource("history");
+  EXPECT_FALSE(plan.resources[static_cast<std::size_t>(history)].aliased);
+  const PlanPass* taa = plan.find_pass("taa");
+  bool found = false;
+  for (const auto& b : taa->barriers) {
+    if (b.resource != history) continue;
+    found = true;
+    EXPECT_EQ(b.from, Access::storage_write);  // how saveHistory left it last frame
+    EXPECT_EQ(b.to, Access::sampled);
+    EXPECT_FALSE(b.discard);
+  }
+  EXPECT_TRUE(found);
+}
+
+TEST(Compile, CycleMessageListsEdges) {
+  const std::string text = testing::read_text(data_path("graphs/bad/cycle.json"));
+  auto r = testing::compile_json(text);
+  ASSERT_FALSE(r.ok());
+  const Diagnostic* d = r.diagnostics().find(codes::kCycle);
+  ASSERT_NE(d, nullptr);
+  EXPECT_NE(d->message.find("gbuffer -> lighting (via depth)"), std::string::npos) << d->message;
+  EXPECT_NE(d->message.find("lighting -> tonemap (via hdr)"), std::string::npos) << d->message;
+  EXPECT_NE(d->message.find("tonemap -> gbuffer (after)"), std::string::npos) << d->message;
+}
+
+TEST(Compile, WarnsAboutUnusedResources) {
+  std::string text = testing::read_text(data_path("graphs/good/deferred.json"));
+  text.replace(text.find("\"ldr\": {"), 0, "\"spare\": { \"kind\": \"buffer\", \"size\": 4 },\n    ");
+  auto r = testing::compile_json(text);
+  ASSERT_TRUE(r.ok()) << r.diagnostics().to_text();
+  const Diagnostic* d = r.diagnostics().find(codes::kUnusedResource);
+  ASSERT_NE(d, nullptr);
+  EXPECT_EQ(d->severity, Severity::warning);
+  EXPECT_EQ(d->pointer, "/resources/spare");
+  EXPECT_EQ(d->line, 10);
+  EXPECT_EQ(d->column, 5);
+}
+
+TEST(Compile, SuggestionsReachTheUser) {
+  std::string text = testing::read_text(data_path("graphs/good/deferred.json"));
+  text.replace(text.find("\"tonemap\",\n      \"params\""), 9, "\"tonemop\"");
+  auto r = testing::compile_json(text);
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(format_text(r.diagnostics()[0]),
+            "test.json:27:15: error[FG030]: unknown pass type 'tonemop'; did you mean 'tonemap'? "
+            "(at /passes/2/type)");
+}
+
+TEST(Compile, GraphBuiltInCode) {
+  GraphDesc g;
+  g.name = "code";
+  for (const char* n : {"a", "b"}) {
+    ResourceDesc r;
+    r.name = n;
+    r.format = Format::rgba8;
+    g.resources.push_back(r);
+  }
+  PassInstanceDesc p1;
+  p1.name = "p1";
+  p1.type = "composite";
+  p1.outputs = {{"out", "a", ""}};
+  PassInstanceDesc p2;
+  p2.name = "p2";
+  p2.type = "blur";
+  p2.inputs = {{"src", "a", ""}};
+  p2.outputs = {{"dst", "b", ""}};
+  g.passes = {p1, p2};
+  g.output = "b";
+  auto r = compile(g, fake_registry());
+  ASSERT_TRUE(r.ok()) << r.diagnostics().to_text();
+  EXPECT_EQ(pass_names(r.value()), (std::vector<std::string>{"p1", "p2"}));
+}
+
+}  // namespace
+}  // namespace antumbra::fg

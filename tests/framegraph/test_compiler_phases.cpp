@@ -1,0 +1,303 @@
+// Each compiler phase on hand-made input.
+#include <gtest/gtest.h>
+
+#include "antumbra/fg/compiler_phases.hpp"
+#include "antumbra/fg/diagnostic_codes.hpp"
+#include "test_support.hpp"
+
+namespace antumbra::fg {
+namespace {
+
+// A graph description built in code: passes are (name, type, {port->res} in, out).
+struct Builder {
+  GraphDesc g;
+  Builder& image(const std::string& name, Format f, bool persistent = false) {
+    ResourceDesc r;
+    r.name = name;
+    r.format = f;
+    r.persistent = persistent;
+    r.pointer = "/resources/" + name;
+    g.resources.push_back(r);
+    return *this;
+  }
+  Builder& pass(const std::string& name, const std::string& type,
+                std::vector<std::pair<std::string, std::string>> in,
+                std::vector<std::pair<std::string, std::string>> out, std::vector<std::string> after = {}) {
+    PassInstanceDesc p;
+    p.name = name;
+    p.type = type;
+    p.pointer = "/passes/" + std::to_string(g.passes.size());
+    for (auto& [port, res] : in) p.inputs.push_back({port, res, p.pointer + "/in/" + port});
+    for (auto& [port, res] : out) p.outputs.push_back({port, res, p.pointer + "/out/" + port});
+    p.after = std::move(after);
+    g.passes.push_back(p);
+    return *this;
+  }
+};
+
+struct Phases {
+  std::vector<ResolvedPass> passes;
+  DependencyGraph deps;
+  Diagnostics diags;
+  explicit Phases(const GraphDesc& g) {
+    passes = resolve_passes(g, testing::fake_registry(), diags);
+    bind_ports(g, passes, diags);
+    deps = build_dependencies(g, passes, diags);
+  }
+};
+
+TEST(ResolvePhase, FillsDefaultsInDeclarationOrder) {
+  Builder b;
+  b.pass("t", "tonemap", {}, {});
+  b.g.passes[0].params = Json{{"exposure", 2}};
+  Diagnostics d;
+  auto passes = resolve_passes(b.g, testing::fake_registry(), d);
+  EXPECT_TRUE(d.empty());
+  EXPECT_EQ(passes[0].params.dump(), R"({"operator":"aces","exposure":2})");
+}
+
+TEST(ResolvePhase, UnknownTypeSuggests) {
+  Builder b;
+  b.pass("t", "gbufer", {}, {});
+  Diagnostics d;
+  resolve_passes(b.g, testing::fake_registry(), d);
+  ASSERT_EQ(d.size(), 1u);
+  EXPECT_EQ(d[0].code, codes::kUnknownPassType);
+  EXPECT_EQ(d[0].pointer, "/passes/0/type");
+  EXPECT_NE(d[0].message.find("did you mean 'gbuffer'"), std::string::npos);
+}
+
+TEST(BindPhase, ChecksDirectionKindAndUnbound) {
+  Builder b;
+  b.image("hdr", Format::rgba16f).image("ldr", Format::rgba8);
+  b.pass("t", "tonemap", {{"hdr", "hdr"}, {"ldr", "ldr"}}, {});
+  Phases p(b.g);
+  EXPECT_NE(p.diags.find(codes::kPortDirection), nullptr);
+  const Diagnostic* unbound = p.diags.find(codes::kPortUnbound);
+  ASSERT_NE(unbound, nullptr);
+  EXPECT_NE(unbound->message.find("'ldr'"), std::string::npos);
+}
+
+TEST(DependencyPhase, EdgesFollowDescriptionOrder) {
+  Builder b;
+  b.image("a", Format::rgba8).image("b", Format::rgba8).image("c", Format::rgba8);
+  b.pass("w1", "blur", {{"src", "c"}}, {{"dst", "a"}});  // reads c before anyone writes it
+  Phases p0(b.g);
+  EXPECT_NE(p0.diags.find(codes::kReadNeverWritten), nullptr);
+
+  Builder g;
+  g.image("a", Format::rgba8).image("b", Format::rgba8).image("c", Format::rgba8);
+  g.pass("makeA", "composite", {{"a", "c"}}, {{"out", "a"}});
+  g.g.resources[2].persistent = true;
+  g.pass("readA", "blur", {{"src", "a"}}, {{"dst", "b"}});
+  g.pass("rewriteA", "composite", {{"a", "b"}}, {{"out", "a"}});
+  g.pass("writeC", "blur", {{"src", "a"}}, {{"dst", "c"}});
+  Phases p(g.g);
+  ASSERT_TRUE(p.diags.empty()) << p.diags.to_text();
+  const std::vector<DepEdge> expected{
+      {0, 1, EdgeKind::read_after_write, 0},   // readA sees makeA
+      {0, 2, EdgeKind::write_after_write, 0},  // rewriteA after makeA
+      {0, 3, EdgeKind::write_after_read, 2},   // makeA read last frame's c before writeC
+      {1, 2, EdgeKind::read_after_write, 1},
+      {1, 2, EdgeKind::write_after_read, 0},   // readA must read a before rewriteA
+      {2, 3, EdgeKind::read_after_write, 0},
+  };
+  EXPECT_EQ(p.deps.edges, expected);
+  ASSERT_EQ(p.deps.previous_frame.size(), 1u);
+  EXPECT_EQ(p.deps.previous_frame[0].from, 3);
+  EXPECT_EQ(p.deps.previous_frame[0].to, 0);
+}
+
+TEST(CyclePhase, ReportsEdgesLeft) {
+  Builder b;
+  b.image("a", Format::rgba8).image("b", Format::rgba8).image("o", Format::rgba8);
+  b.pass("first", "composite", {}, {{"out", "a"}}, {"third"});
+  b.pass("second", "blur", {{"src", "a"}}, {{"dst", "b"}});
+  b.pass("third", "blur", {{"src", "b"}}, {{"dst", "o"}});
+  Phases p(b.g);
+  ASSERT_FALSE(p.diags.has_errors()) << p.diags.to_text();
+  const auto left = find_cycle_edges(p.deps, p.passes);
+  ASSERT_EQ(left.size(), 3u);
+  EXPECT_EQ(left[0], (DepEdge{0, 1, EdgeKind::read_after_write, 0}));
+  EXPECT_EQ(left[1], (DepEdge{1, 2, EdgeKind::read_after_write, 1}));
+  EXPECT_EQ(left[2], (DepEdge{2, 0, EdgeKind::after, -1}));
+}
+
+TEST(CyclePhase, AcyclicGraphLeavesNothing) {
+  Builder b;
+  b.image("a", Format::rgba8).image("o", Format::rgba8);
+  b.pass("x", "composite", {}, {{"out", "a"}});
+  b.pass("y", "blur", {{"src", "a"}}, {{"dst", "o"}});
+  Phases p(b.g);
+  EXPECT_TRUE(find_cycle_edges(p.deps, p.passes).empty());
+}
+
+TEST(CullPhase, KeepsProducersOfOutputAndSideEffects) {
+  Builder b;
+  b.image("a", Format::rgba8).image("dead", Format::rgba8).image("o", Format::rgba8).image("x", Format::rgba8);
+  b.pass("makeA", "composite", {}, {{"out", "a"}});
+  b.pass("deadEnd", "blur", {{"src", "a"}}, {{"dst", "dead"}});
+  b.pass("capture", "readback", {{"src", "x"}}, {});
+  b.pass("final", "blur", {{"src", "a"}}, {{"dst", "o"}});
+  b.g.passes[2].inputs.clear();  // readback reads nothing here, but has side effects
+  Phases p(b.g);
+  const auto keep = cull_passes(p.deps, p.passes, 2);
+  EXPECT_EQ(keep, (std::vector<bool>{true, false, true, true}));
+}
+
+TEST(OrderPhase, StableTopologicalOrder) {
+  DependencyGraph deps;
+  deps.edges = {{3, 0, EdgeKind::after, -1}, {2, 1, EdgeKind::after, -1}};
+  const auto order = order_passes(deps, {true, true, true, true, false});
+  EXPECT_EQ(order, (std::vector<int>{2, 1, 3, 0}));
+}
+
+Plan two_pass_plan() {
+  // p0 writes a (storage), p1 reads a and writes out; p2 writes b and reads out.
+  Plan plan;
+  for (const char* name : {"a", "b", "out"}) {
+    PlanResource r;
+    r.name = name;
+    r.format = Format::rgba8;
+    r.extent = {256, 256};
+    plan.resources.push_back(r);
+  }
+  plan.resources[2].is_output = true;
+  plan.output = 2;
+  plan.passes.resize(3);
+  plan.passes[0].bindings = {{"dst", 0, Access::storage_write, Stage::compute}};
+  plan.passes[1].bindings = {{"src", 0, Access::sampled, Stage::fragment},
+                             {"out", 2, Access::color_attachment, Stage::graphics}};
+  plan.passes[2].bindings = {{"src", 2, Access::sampled, Stage::compute},
+                             {"dst", 1, Access::storage_write, Stage::compute}};
+  return plan;
+}
+
+TEST(LifetimePhase, FirstAndLastUse) {
+  Plan plan = two_pass_plan();
+  compute_lifetimes(plan);
+  EXPECT_EQ(plan.resources[0].first_use, 0);
+  EXPECT_EQ(plan.resources[0].last_use, 1);
+  EXPECT_EQ(plan.resources[1].first_use, 2);
+  EXPECT_EQ(plan.resources[2].first_use, 1);
+  EXPECT_EQ(plan.resources[2].last_use, 2);
+  EXPECT_EQ(plan.resources[2].usages,
+            (std::vector<Access>{Access::sampled, Access::color_attachment, Access::present}));
+}
+
+TEST(AliasingPhase, NonOverlappingLifetimesShareMemory) {
+  Plan plan = two_pass_plan();
+  compute_lifetimes(plan);
+  plan_aliasing(plan, default_footprint);
+  // a (passes 0-1) and b (pass 2) never live together: same offset.
+  EXPECT_TRUE(plan.resources[0].aliased);
+  EXPECT_TRUE(plan.resources[1].aliased);
+  EXPECT_FALSE(plan.resources[2].aliased);  // the output is not transient
+  EXPECT_EQ(plan.resources[0].heap_offset, plan.resources[1].heap_offset);
+  EXPECT_EQ(plan.resources[0].footprint.size, 256u * 1024u);
+  EXPECT_EQ(plan.aliasing.bytes_without_aliasing, 512u * 1024u);
+  EXPECT_EQ(plan.aliasing.heap_bytes, 256u * 1024u);
+  EXPECT_EQ(plan.aliasing.bytes_saved(), 256u * 1024u);
+  // b takes over a's memory: its first barrier waits for a's last (fragment) read.
+  plan_barriers(plan);
+  ASSERT_EQ(plan.passes[2].barriers.size(), 2u);
+  const PlanBarrier& take_over = plan.passes[2].barriers[1];
+  EXPECT_EQ(take_over.resource, 1);
+  EXPECT_TRUE(take_over.discard);
+  EXPECT_EQ(take_over.previous_alias, 0);
+  EXPECT_EQ(take_over.from, Access::none);
+  EXPECT_EQ(take_over.from_stage, Stage::fragment);
+}
+
+TEST(AliasingPhase, OverlappingLifetimesNeverShareAndRespectAlignment) {
+  Plan plan;
+  // Five resources with staggered lifetimes and odd sizes.
+  const int spans[5][2] = {{0, 2}, {1, 3}, {2, 4}, {3, 3}, {4, 4}};
+  for (int i = 0; i < 5; ++i) {
+    PlanResource r;
+    r.name = "r" + std::to_string(i);
+    r.kind = ResourceKind::buffer;
+    r.buffer_size = 1000u * static_cast<unsigned>(i + 1);
+    r.first_use = spans[i][0];
+    r.last_use = spans[i][1];
+    plan.resources.push_back(r);
+  }
+  plan_aliasing(plan, [](const PlanResource& r) { return Footprint{r.buffer_size + 1, 512}; });
+  for (std::size_t i = 0; i < 5; ++i) {
+    const auto& a = plan.resources[i];
+    EXPECT_EQ(a.heap_offset % 512, 0u);
+    EXPECT_LE(a.heap_offset + a.footprint.size, plan.aliasing.heap_bytes);
+    for (std::size_t j = i + 1; j < 5; ++j) {
+      const auto& b = plan.resources[j];
+      const bool live_together = a.first_use <= b.last_use && b.first_use <= a.last_use;
+      const bool memory_overlaps =
+          a.heap_offset < b.heap_offset + b.footprint.size && b.heap_offset < a.heap_offset + a.footprint.size;
+      EXPECT_FALSE(live_together && memory_overlaps) << a.name << " vs " << b.name;
+    }
+  }
+  EXPECT_LT(plan.aliasing.heap_bytes, plan.aliasing.bytes_without_aliasing);
+}
+
+TEST(BarrierPhase, TransitionsAndHazards) {
+  Plan plan = two_pass_plan();
+  compute_lifetimes(plan);
+  plan_barriers(plan);
+  ASSERT_EQ(plan.passes[0].barriers.size(), 1u);
+  const PlanBarrier& first = plan.passes[0].barriers[0];
+  EXPECT_EQ(first.from, Access::none);
+  EXPECT_EQ(first.to, Access::storage_write);
+  EXPECT_TRUE(first.discard);
+  ASSERT_EQ(plan.passes[1].barriers.size(), 2u);
+  EXPECT_EQ(plan.passes[1].barriers[0].from, Access::storage_write);
+  EXPECT_EQ(plan.passes[1].barriers[0].from_stage, Stage::compute);
+  EXPECT_EQ(plan.passes[1].barriers[0].to, Access::sampled);
+  EXPECT_FALSE(plan.passes[1].barriers[0].discard);
+  ASSERT_EQ(plan.final_barriers.size(), 1u);
+  EXPECT_EQ(plan.final_barriers[0].from, Access::sampled);
+  EXPECT_EQ(plan.final_barriers[0].from_stage, Stage::compute);
+  EXPECT_EQ(plan.final_barriers[0].to, Access::present);
+}
+
+TEST(BarrierPhase, ReadAfterReadNeedsNothingWriteAfterWriteDoes) {
+  Plan plan;
+  PlanResource r;
+  r.name = "x";
+  plan.resources.push_back(r);
+  plan.passes.resize(4);
+  plan.passes[0].bindings = {{"o", 0, Access::color_attachment, Stage::graphics}};
+  plan.passes[1].bindings = {{"o", 0, Access::color_attachment, Stage::graphics}};
+  plan.passes[2].bindings = {{"i", 0, Access::sampled, Stage::fragment}};
+  plan.passes[3].bindings = {{"i", 0, Access::sampled, Stage::fragment}};
+  plan_barriers(plan);
+  EXPECT_EQ(plan.passes[1].barriers.size(), 1u);  // WAW on the same attachment
+  EXPECT_EQ(plan.passes[2].barriers.size(), 1u);
+  EXPECT_TRUE(plan.passes[3].barriers.empty());
+}
+
+TEST(BarrierPhase, PersistentStartsInLastFramesState) {
+  Plan plan;
+  PlanResource r;
+  r.name = "history";
+  r.persistent = true;
+  plan.resources.push_back(r);
+  plan.passes.resize(2);
+  plan.passes[0].bindings = {{"i", 0, Access::sampled, Stage::fragment}};
+  plan.passes[1].bindings = {{"o", 0, Access::storage_write, Stage::compute}};
+  plan_barriers(plan);
+  ASSERT_EQ(plan.passes[0].barriers.size(), 1u);
+  EXPECT_EQ(plan.passes[0].barriers[0].from, Access::storage_write);
+  EXPECT_EQ(plan.passes[0].barriers[0].from_stage, Stage::compute);
+  EXPECT_FALSE(plan.passes[0].barriers[0].discard);
+}
+
+TEST(Extent, RelativeSizesFloorAndClamp) {
+  SizeSpec half;
+  half.scale_x = half.scale_y = 0.5;
+  EXPECT_EQ(resolve_extent(half, {1281, 721}), (Extent2D{640, 360}));
+  SizeSpec tiny;
+  tiny.scale_x = tiny.scale_y = 1.0 / 64;
+  EXPECT_EQ(resolve_extent(tiny, {16, 16}), (Extent2D{1, 1}));
+}
+
+}  // namespace
+}  // namespace antumbra::fg
