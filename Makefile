@@ -33,7 +33,7 @@ test-asan: deps
 	@cmake -S . -B $(ASAN_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DANTUMBRA_SANITIZE=ON \
 	  -DANTUMBRA_BUILD_BENCHMARKS=OFF $(CMAKE_ARGS) > /dev/null
 	@cmake --build $(ASAN_BUILD) -j$(JOBS) --target antumbra_framegraph_tests antumbra_scene_tests
-	@ctest --test-dir $(ASAN_BUILD) --output-on-failure -j$(JOBS) -L cpu
+	@ctest --test-dir $(ASAN_BUILD) --output-on-failure -j$(JOBS) -L asan
 
 bench: build
 	$(BUILD)/bench/antumbra_bench_graph

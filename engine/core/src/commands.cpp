@@ -57,4 +57,12 @@ void memory_barrier(VkCommandBuffer cmd, VkPipelineStageFlags2 src_stage, VkAcce
   vkCmdPipelineBarrier2(cmd, &dependency);
 }
 
+void set_viewport_scissor(VkCommandBuffer cmd, VkExtent2D extent) {
+  const VkViewport viewport{
+      0.0f, 0.0f, static_cast<float>(extent.width), static_cast<float>(extent.height), 0.0f, 1.0f};
+  const VkRect2D scissor{{0, 0}, extent};
+  vkCmdSetViewport(cmd, 0, 1, &viewport);
+  vkCmdSetScissor(cmd, 0, 1, &scissor);
+}
+
 }  // namespace antumbra::gpu

@@ -50,9 +50,29 @@ Context::Context(const ContextOptions& options) {
     create_instance(options);
     select_physical_device(options);
     create_device(options);
+    allocator_ = std::make_unique<Allocator>(physical_device_, device_);
+
+    VkSemaphoreTypeCreateInfo type_info{VK_STRUCTURE_TYPE_SEMAPHORE_TYPE_CREATE_INFO};
+    type_info.semaphoreType = VK_SEMAPHORE_TYPE_TIMELINE;
+    type_info.initialValue = 0;
+    VkSemaphoreCreateInfo semaphore_info{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO, &type_info};
+    check(vkCreateSemaphore(device_, &semaphore_info, nullptr, &timeline_), "vkCreateSemaphore");
+    set_name(timeline_, VK_OBJECT_TYPE_SEMAPHORE, "context.timeline");
+
+    VkCommandPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+    pool_info.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
+    pool_info.queueFamilyIndex = queue_family_;
+    check(vkCreateCommandPool(device_, &pool_info, nullptr, &immediate_pool_),
+          "vkCreateCommandPool");
+    set_name(immediate_pool_, VK_OBJECT_TYPE_COMMAND_POOL, "context.immediate_pool");
   } catch (...) {
     // The destructor does not run for a half-built object: undo what exists.
-    if (device_) vkDestroyDevice(device_, nullptr);
+    if (device_) {
+      vkDestroyCommandPool(device_, immediate_pool_, nullptr);
+      vkDestroySemaphore(device_, timeline_, nullptr);
+      allocator_.reset();
+      vkDestroyDevice(device_, nullptr);
+    }
     if (messenger_) {
       auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
           vkGetInstanceProcAddr(instance_, "vkDestroyDebugUtilsMessengerEXT"));
@@ -61,27 +81,18 @@ Context::Context(const ContextOptions& options) {
     if (instance_) vkDestroyInstance(instance_, nullptr);
     throw;
   }
-  allocator_ = std::make_unique<Allocator>(physical_device_, device_);
-
-  VkSemaphoreTypeCreateInfo type_info{VK_STRUCTURE_TYPE_SEMAPHORE_TYPE_CREATE_INFO};
-  type_info.semaphoreType = VK_SEMAPHORE_TYPE_TIMELINE;
-  type_info.initialValue = 0;
-  VkSemaphoreCreateInfo semaphore_info{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO, &type_info};
-  check(vkCreateSemaphore(device_, &semaphore_info, nullptr, &timeline_), "vkCreateSemaphore");
-  set_name(timeline_, VK_OBJECT_TYPE_SEMAPHORE, "context.timeline");
-
-  VkCommandPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
-  pool_info.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
-  pool_info.queueFamilyIndex = queue_family_;
-  check(vkCreateCommandPool(device_, &pool_info, nullptr, &immediate_pool_), "vkCreateCommandPool");
-  set_name(immediate_pool_, VK_OBJECT_TYPE_COMMAND_POOL, "context.immediate_pool");
   spdlog::info("Vulkan device: {} ({}), validation {}", device_name_,
                device_type_name(properties_.deviceType), validation_ ? "on" : "off");
 }
 
 Context::~Context() {
   if (device_) {
-    wait_idle();
+    try {
+      wait_idle();
+    } catch (const std::exception& e) {
+      // A lost device still has to be torn down; destructors must not throw.
+      spdlog::error("Context shutdown: {}", e.what());
+    }
     vkDestroyCommandPool(device_, immediate_pool_, nullptr);
     vkDestroySemaphore(device_, timeline_, nullptr);
     allocator_.reset();
@@ -109,7 +120,7 @@ void Context::create_instance(const ContextOptions& options) {
   std::vector<const char*> layers;
   if (validation_) {
     if (!has_layer(kValidationLayer)) {
-      throw std::runtime_error(
+      throw ValidationLayerMissingError(
           "validation requested but VK_LAYER_KHRONOS_validation is not installed "
           "(Debian: apt install vulkan-validationlayers)");
     }

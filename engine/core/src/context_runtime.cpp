@@ -144,11 +144,13 @@ void Context::collect_garbage() {
 }
 
 void Context::wait_idle() {
-  check(vkDeviceWaitIdle(device_), "vkDeviceWaitIdle");
+  const VkResult result = vkDeviceWaitIdle(device_);
+  // Even on a lost device everything queued is destroyed, then the error is reported.
   while (!pending_.empty()) {
     destroy_now(pending_.front());
     pending_.pop_front();
   }
+  check(result, "vkDeviceWaitIdle");
 }
 
 void Context::destroy_now(const PendingDestroy& object) {

@@ -25,6 +25,9 @@ void image_barrier(VkCommandBuffer cmd, const ImageBarrier& barrier);
 void buffer_barrier(VkCommandBuffer cmd, VkBuffer buffer, VkPipelineStageFlags2 src_stage,
                     VkAccessFlags2 src_access, VkPipelineStageFlags2 dst_stage,
                     VkAccessFlags2 dst_access);
+// Full-extent viewport (depth 0..1) and scissor, for the pipelines' dynamic state.
+void set_viewport_scissor(VkCommandBuffer cmd, VkExtent2D extent);
+
 void memory_barrier(VkCommandBuffer cmd, VkPipelineStageFlags2 src_stage, VkAccessFlags2 src_access,
                     VkPipelineStageFlags2 dst_stage, VkAccessFlags2 dst_access);
 

@@ -88,7 +88,7 @@ class Context {
   static constexpr std::size_t kKeptValidationMessages = 64;
 
   // Throws NoVulkanDeviceError (no driver/device), DeviceSelectionError (no device
-  // matches), std::runtime_error (validation layer missing) or VulkanError.
+  // matches), ValidationLayerMissingError or VulkanError.
   explicit Context(const ContextOptions& options);
   Context(const Context&) = delete;
   Context& operator=(const Context&) = delete;

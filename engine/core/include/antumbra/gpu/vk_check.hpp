@@ -44,6 +44,11 @@ inline void check(VkResult result, const char* what,
   if (result < VK_SUCCESS) throw VulkanError(result, what, location);
 }
 
+// Validation was requested but VK_LAYER_KHRONOS_validation is not installed.
+class ValidationLayerMissingError : public std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
 // Non-dispatchable handles are pointers on 64-bit builds and uint64_t on 32-bit ones.
 template <class T>
 std::uint64_t handle_bits(T handle) {

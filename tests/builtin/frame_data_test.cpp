@@ -1,0 +1,81 @@
+#include <gtest/gtest.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "antumbra/scene/primitives.hpp"
+#include "antumbra/scene/scene_file.hpp"
+#include "common/frame_data.hpp"
+
+using namespace antumbra;
+
+namespace {
+
+scene::Scene two_boxes() {
+  scene::Scene s;
+  s.materials.push_back({"default"});
+  s.materials.push_back({"red", glm::vec3(1, 0, 0)});
+  auto a = scene::make_box(glm::vec3(1.0f));
+  a.transform = glm::translate(glm::mat4(1.0f), glm::vec3(10, 0, 0));
+  auto b = scene::make_box(glm::vec3(2.0f));
+  b.material = 1;
+  s.meshes = {a, b};
+  s.lights.push_back({"l0", scene::LightType::point, glm::vec3(0, 2, 0), glm::vec3(1), 5.0f, 4.0f, 0.2f});
+  return s;
+}
+
+}  // namespace
+
+TEST(FrameData, MergedGeometryIsInWorldSpaceWithRebasedIndices) {
+  const auto s = two_boxes();
+  const auto merged = passes::merge_scene_geometry(s);
+  ASSERT_EQ(merged.vertices.size(), s.vertex_count());
+  ASSERT_EQ(merged.indices.size(), s.triangle_count() * 3);
+  const std::size_t first = s.meshes[0].vertices.size();
+  for (std::size_t i = 0; i < first; ++i) {
+    EXPECT_NEAR(merged.vertices[i].position.x, s.meshes[0].vertices[i].position.x + 10.0f, 1e-5f);
+    EXPECT_EQ(merged.vertices[i].material, 0u);
+    EXPECT_NEAR(glm::length(merged.vertices[i].normal), 1.0f, 1e-5f);
+  }
+  EXPECT_EQ(merged.vertices[first].material, 1u);
+  const std::size_t first_indices = s.meshes[0].indices.size();
+  EXPECT_EQ(merged.indices[first_indices], s.meshes[1].indices[0] + first);
+  for (const auto index : merged.indices) EXPECT_LT(index, merged.vertices.size());
+}
+
+TEST(FrameData, UniformsMatchTheCamera) {
+  auto s = two_boxes();
+  const auto u = passes::build_frame_uniforms(s, 200, 100, 7);
+  EXPECT_EQ(u.counts.x, 1u);
+  EXPECT_EQ(u.counts.y, 7u);
+  EXPECT_FLOAT_EQ(u.viewport.x, 200.0f);
+  EXPECT_FLOAT_EQ(u.viewport.w, 0.01f);
+  const glm::mat4 identity = u.inv_proj * u.proj;
+  for (int c = 0; c < 4; ++c) {
+    for (int r = 0; r < 4; ++r) EXPECT_NEAR(identity[c][r], c == r ? 1.0f : 0.0f, 1e-4f);
+  }
+  // The camera target lands in the middle of the screen.
+  const glm::vec4 clip = u.view_proj * glm::vec4(s.camera.target, 1.0f);
+  EXPECT_NEAR(clip.x / clip.w, 0.0f, 1e-4f);
+  EXPECT_NEAR(clip.y / clip.w, 0.0f, 1e-4f);
+}
+
+TEST(FrameData, LightsAreInViewSpace) {
+  auto s = two_boxes();
+  const glm::mat4 view = s.camera.view();
+  const auto lights = passes::build_lights(s, view);
+  ASSERT_EQ(lights.size(), 1u);
+  const glm::vec3 expected = glm::vec3(view * glm::vec4(s.lights[0].position, 1.0f));
+  EXPECT_NEAR(lights[0].position_range.x, expected.x, 1e-5f);
+  EXPECT_NEAR(lights[0].position_range.z, expected.z, 1e-5f);
+  EXPECT_FLOAT_EQ(lights[0].position_range.w, 4.0f);
+  EXPECT_FLOAT_EQ(lights[0].color_intensity.w, 5.0f);
+  EXPECT_FLOAT_EQ(lights[0].world_size.w, 0.2f);
+}
+
+TEST(FrameData, MaterialsKeepTheirOrder) {
+  const auto s = two_boxes();
+  const auto materials = passes::build_materials(s);
+  ASSERT_EQ(materials.size(), 2u);
+  EXPECT_FLOAT_EQ(materials[1].albedo.r, 1.0f);
+  EXPECT_FLOAT_EQ(materials[1].albedo.g, 0.0f);
+}
