@@ -113,6 +113,10 @@ int run_render(const RenderOptions& options) {
   const double write_ms = stage.elapsed_ms();
 
   print_timings(session, session.pass_timings(), options.frames);
+  for (const auto& m : session.last_report().messages()) {
+    std::fprintf(stderr, "%s[%s]: %s (pass %s)\n", fg::to_string(m.severity), m.code.c_str(),
+                 m.message.c_str(), m.pass.c_str());
+  }
   std::printf("cpu stages: parse %.1f ms, device %.1f ms, compile+realise %.1f ms, upload %.1f ms, "
               "render %.1f ms, write %.1f ms\n",
               parse_ms, device_ms, compile_ms, upload_ms, render_ms, write_ms);

@@ -31,16 +31,16 @@ class RenderSession::Observer final : public fgvk::PassObserver {
     cpu_.restart();
   }
   void end_pass(VkCommandBuffer cmd, const fg::PlanPass& pass) override {
-    cpu_ms_[pass.name].push_back(cpu_.elapsed_ms());
+    cpu_ms[pass.name].push_back(cpu_.elapsed_ms());
     timer_.end_scope(cmd, scope_);
   }
   void gather_gpu() {
     if (timer_.completed_frames() == last_completed_) return;
     last_completed_ = timer_.completed_frames();
-    for (const auto& scope : timer_.last_results()) gpu_ms_[scope.name].push_back(scope.gpu_ms);
+    for (const auto& scope : timer_.last_results()) gpu_ms[scope.name].push_back(scope.gpu_ms);
   }
-  std::map<std::string, std::vector<double>> cpu_ms_;
-  std::map<std::string, std::vector<double>> gpu_ms_;
+  std::map<std::string, std::vector<double>> cpu_ms;
+  std::map<std::string, std::vector<double>> gpu_ms;
 
  private:
   gpu::GpuTimer& timer_;
@@ -103,7 +103,7 @@ void RenderSession::render(int frames, TraceWriter* trace) {
     timer_->begin_frame(cmd, frames_->slot());
     const auto frame = gpu_scene_->update(frames_->slot(), *scene_, options_.viewport,
                                           frames_->frame_number());
-    executor_->record(cmd, frame, observer_.get());
+    executor_->record(cmd, frame, observer_.get(), &report_);
     frames_->end_frame();
     if (trace != nullptr) {
       trace->add({"frame " + std::to_string(i), "cpu", frame_start * 1000.0,
@@ -134,10 +134,10 @@ std::vector<PassTiming> RenderSession::pass_timings() const {
   std::vector<PassTiming> timings;
   for (const auto& pass : executor_->plan().passes) {
     PassTiming t{pass.name, pass.type};
-    if (auto it = observer_->gpu_ms_.find(pass.name); it != observer_->gpu_ms_.end()) {
+    if (auto it = observer_->gpu_ms.find(pass.name); it != observer_->gpu_ms.end()) {
       t.gpu_ms = median(it->second);
     }
-    if (auto it = observer_->cpu_ms_.find(pass.name); it != observer_->cpu_ms_.end()) {
+    if (auto it = observer_->cpu_ms.find(pass.name); it != observer_->cpu_ms.end()) {
       t.cpu_ms = median(it->second);
     }
     timings.push_back(t);

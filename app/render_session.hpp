@@ -49,6 +49,8 @@ class RenderSession {
   // Renders `frames` frames; per-pass timings are gathered from every frame.
   void render(int frames, TraceWriter* trace);
   [[nodiscard]] std::vector<PassTiming> pass_timings() const;
+  // What the passes reported about the last rendered frame.
+  [[nodiscard]] const fgvk::FrameReport& last_report() const { return report_; }
 
   // Writes a graph image to PNG (or PFM when the path ends in .pfm).
   void write_image(const std::string& resource, const std::string& path);
@@ -70,6 +72,7 @@ class RenderSession {
   std::optional<scene::Scene> scene_;
   std::unique_ptr<passes::GpuScene> gpu_scene_;
   std::unique_ptr<Observer> observer_;
+  fgvk::FrameReport report_;
 };
 
 }  // namespace antumbra::app

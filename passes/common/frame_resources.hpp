@@ -27,6 +27,10 @@ struct FrameResources {
   VkExtent2D viewport{};
   const scene::Scene* scene = nullptr;
   std::uint64_t frame_index = 0;
+  // Frame-in-flight slot: passes keep per-slot host-visible buffers (staging, draw
+  // data) and may reuse slot N's once the executor records a frame with slot N again.
+  std::uint32_t slot = 0;
+  std::uint32_t frames_in_flight = 1;
 };
 
 }  // namespace antumbra::fgvk

@@ -72,6 +72,8 @@ fgvk::FrameResources GpuScene::update(std::uint32_t slot_index, const scene::Sce
   frame.viewport = viewport;
   frame.scene = &scene;
   frame.frame_index = frame_index;
+  frame.slot = slot_index;
+  frame.frames_in_flight = static_cast<std::uint32_t>(slots_.size());
   return frame;
 }
 

@@ -50,7 +50,7 @@ Context::Context(const ContextOptions& options) {
     create_instance(options);
     select_physical_device(options);
     create_device(options);
-    allocator_ = std::make_unique<Allocator>(physical_device_, device_);
+    allocator_ = std::make_unique<Allocator>(physical_device_, device_, ext_.set_object_name);
 
     VkSemaphoreTypeCreateInfo type_info{VK_STRUCTURE_TYPE_SEMAPHORE_TYPE_CREATE_INFO};
     type_info.semaphoreType = VK_SEMAPHORE_TYPE_TIMELINE;

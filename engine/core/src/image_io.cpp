@@ -67,6 +67,9 @@ bool readable_format(VkFormat format) {
     case VK_FORMAT_R32_SFLOAT:
     case VK_FORMAT_R16_SFLOAT:
     case VK_FORMAT_R8_UNORM:
+    case VK_FORMAT_D32_SFLOAT:
+    case VK_FORMAT_D16_UNORM:
+    case VK_FORMAT_R32_UINT:
       return true;
     default:
       return false;
@@ -83,7 +86,8 @@ HostImage convert_texels(VkFormat format, std::uint32_t width, std::uint32_t hei
   image.width = width;
   image.height = height;
   const bool single = format == VK_FORMAT_R32_SFLOAT || format == VK_FORMAT_R16_SFLOAT ||
-                      format == VK_FORMAT_R8_UNORM;
+                      format == VK_FORMAT_R8_UNORM || format == VK_FORMAT_D32_SFLOAT ||
+                      format == VK_FORMAT_D16_UNORM || format == VK_FORMAT_R32_UINT;
   image.channels = single ? 1 : 4;
   const std::size_t count = std::size_t{width} * height * image.channels;
   image.texels.resize(count);
@@ -111,7 +115,19 @@ HostImage convert_texels(VkFormat format, std::uint32_t width, std::uint32_t hei
         value = half_to_float(half);
         break;
       }
-      default:  // 32-bit float formats
+      case VK_FORMAT_D16_UNORM: {
+        std::uint16_t unorm = 0;
+        std::memcpy(&unorm, bytes + i * 2, 2);
+        value = static_cast<float>(unorm) / 65535.0f;
+        break;
+      }
+      case VK_FORMAT_R32_UINT: {
+        std::uint32_t bits = 0;  // bit masks: kept exact up to 2^24
+        std::memcpy(&bits, bytes + i * 4, 4);
+        value = static_cast<float>(bits);
+        break;
+      }
+      default:  // 32-bit float formats (colour and depth)
         std::memcpy(&value, bytes + i * 4, 4);
         break;
     }
@@ -130,14 +146,17 @@ HostImage read_image(Context& context, const Image& image, VkImageLayout layout,
   const VkDeviceSize size = VkDeviceSize{extent.width} * extent.height * texel_size(format);
   Buffer readback = Buffer::create(context, size, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                                    MemoryUsage::readback, "readback." + image.desc().name);
-  const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, layer, 1};
+  // Depth images copy their depth aspect; colour images their colour aspect.
+  const VkImageAspectFlags aspect =
+      is_depth_format(format) ? VkImageAspectFlags{VK_IMAGE_ASPECT_DEPTH_BIT} : VK_IMAGE_ASPECT_COLOR_BIT;
+  const VkImageSubresourceRange range{aspect, 0, 1, layer, 1};
   context.submit_immediate([&](VkCommandBuffer cmd) {
     CommandLabel label(context, cmd, "read_image");
     image_barrier(cmd, {image.handle(), layout, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
                         VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_WRITE_BIT,
                         VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT, range});
     VkBufferImageCopy region{};
-    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, layer, 1};
+    region.imageSubresource = {aspect, 0, layer, 1};
     region.imageExtent = {extent.width, extent.height, 1};
     vkCmdCopyImageToBuffer(cmd, image.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
                            readback.handle(), 1, &region);

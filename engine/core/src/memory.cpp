@@ -31,7 +31,9 @@ UsageFlags flags_for(MemoryUsage usage) {
 
 }  // namespace
 
-Allocator::Allocator(VkPhysicalDevice physical_device, VkDevice device) : device_(device) {
+Allocator::Allocator(VkPhysicalDevice physical_device, VkDevice device,
+                     PFN_vkSetDebugUtilsObjectNameEXT set_name)
+    : device_(device), set_name_(set_name) {
   vkGetPhysicalDeviceMemoryProperties(physical_device, &properties_);
   pools_.resize(std::size_t{properties_.memoryTypeCount} * 2);
 }
@@ -59,16 +61,23 @@ std::uint32_t Allocator::find_memory_type(std::uint32_t type_bits, MemoryUsage u
     }
   }
   throw VulkanError(VK_ERROR_OUT_OF_DEVICE_MEMORY, "find_memory_type (no suitable type)",
-                    std::source_location::current());
+                    SourceLocation::current());
 }
 
-VkDeviceMemory Allocator::allocate_memory(VkDeviceSize size, std::uint32_t type,
-                                          std::byte** mapped) {
+VkDeviceMemory Allocator::allocate_memory(VkDeviceSize size, std::uint32_t type, std::byte** mapped,
+                                          const char* name) {
   VkMemoryAllocateInfo info{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
   info.allocationSize = size;
   info.memoryTypeIndex = type;
   VkDeviceMemory memory = VK_NULL_HANDLE;
   check(vkAllocateMemory(device_, &info, nullptr, &memory), "vkAllocateMemory");
+  if (set_name_) {
+    VkDebugUtilsObjectNameInfoEXT name_info{VK_STRUCTURE_TYPE_DEBUG_UTILS_OBJECT_NAME_INFO_EXT};
+    name_info.objectType = VK_OBJECT_TYPE_DEVICE_MEMORY;
+    name_info.objectHandle = handle_bits(memory);
+    name_info.pObjectName = name;
+    set_name_(device_, &name_info);  // naming is best effort
+  }
   *mapped = nullptr;
   if (properties_.memoryTypes[type].propertyFlags & VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT) {
     void* pointer = nullptr;
@@ -89,7 +98,8 @@ Allocation Allocator::allocate(const VkMemoryRequirements& requirements, MemoryU
   allocation.size = requirements.size;
   if (requirements.size > kBlockSize / 2) {
     allocation.dedicated = true;
-    allocation.memory = allocate_memory(requirements.size, type, &allocation.mapped);
+    allocation.memory =
+        allocate_memory(requirements.size, type, &allocation.mapped, "allocator.dedicated");
     ++dedicated_count_;
     return allocation;
   }
@@ -108,7 +118,7 @@ Allocation Allocator::allocate(const VkMemoryRequirements& requirements, MemoryU
     }
   }
   auto block = std::make_unique<Block>(Block{VK_NULL_HANDLE, nullptr, FreeList(kBlockSize)});
-  block->memory = allocate_memory(kBlockSize, type, &block->mapped);
+  block->memory = allocate_memory(kBlockSize, type, &block->mapped, "allocator.block");
   const auto offset = block->free_list.allocate(requirements.size, requirements.alignment);
   allocation.memory = block->memory;
   allocation.offset = *offset;
@@ -123,7 +133,7 @@ Allocation Allocator::allocate_heap(VkDeviceSize size, std::uint32_t memory_type
   allocation.memory_type = find_memory_type(memory_type_bits, MemoryUsage::gpu_only);
   allocation.size = size;
   allocation.dedicated = true;
-  allocation.memory = allocate_memory(size, allocation.memory_type, &allocation.mapped);
+  allocation.memory = allocate_memory(size, allocation.memory_type, &allocation.mapped, "heap");
   ++dedicated_count_;
   return allocation;
 }

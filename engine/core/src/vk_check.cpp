@@ -61,13 +61,13 @@ const char* device_type_name(VkPhysicalDeviceType type) {
 
 namespace {
 std::string make_message(VkResult result, const std::string& what,
-                         const std::source_location& location) {
+                         const SourceLocation& location) {
   return what + " failed: " + result_name(result) + " (" + std::to_string(result) + ") at " +
          location.file_name() + ":" + std::to_string(location.line());
 }
 }  // namespace
 
-VulkanError::VulkanError(VkResult result, const std::string& what, std::source_location location)
+VulkanError::VulkanError(VkResult result, const std::string& what, SourceLocation location)
     : std::runtime_error(make_message(result, what, location)),
       result_(result),
       location_(location) {

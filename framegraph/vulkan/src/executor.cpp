@@ -223,14 +223,18 @@ void Executor::record_barriers(VkCommandBuffer cmd, const std::vector<fg::PlanBa
   vkCmdPipelineBarrier2(cmd, &dependency);
 }
 
-void Executor::record(VkCommandBuffer cmd, const FrameResources& frame, PassObserver* observer) {
+void Executor::record(VkCommandBuffer cmd, const FrameResources& frame, PassObserver* observer,
+                      FrameReport* report) {
   if (!state_) throw std::logic_error("Executor::record() before load()");
+  FrameReport discarded;
+  FrameReport& sink = report != nullptr ? *report : discarded;
+  sink.clear();
   for (std::size_t i = 0; i < state_->passes.size(); ++i) {
     const auto& pass = state_->plan.passes[i];
     gpu_.begin_label(cmd, pass.name);
     record_barriers(cmd, pass.barriers);
     if (observer != nullptr) observer->begin_pass(cmd, pass);
-    ExecuteContext context{gpu_, cmd, pass, state_->bindings[i], frame, samplers_};
+    ExecuteContext context{gpu_, cmd, pass, state_->bindings[i], frame, samplers_, sink};
     state_->passes[i]->execute(context);
     if (observer != nullptr) observer->end_pass(cmd, pass);
     gpu_.end_label(cmd);

@@ -43,7 +43,9 @@ class Allocator {
  public:
   static constexpr VkDeviceSize kBlockSize = VkDeviceSize{64} << 20;
 
-  Allocator(VkPhysicalDevice physical_device, VkDevice device);
+  // set_name (optional) names each VkDeviceMemory for debuggers.
+  Allocator(VkPhysicalDevice physical_device, VkDevice device,
+            PFN_vkSetDebugUtilsObjectNameEXT set_name = nullptr);
   Allocator(const Allocator&) = delete;
   Allocator& operator=(const Allocator&) = delete;
   ~Allocator();
@@ -72,9 +74,11 @@ class Allocator {
     std::vector<std::unique_ptr<Block>> blocks;
   };
 
-  VkDeviceMemory allocate_memory(VkDeviceSize size, std::uint32_t type, std::byte** mapped);
+  VkDeviceMemory allocate_memory(VkDeviceSize size, std::uint32_t type, std::byte** mapped,
+                                 const char* name);
 
   VkDevice device_;
+  PFN_vkSetDebugUtilsObjectNameEXT set_name_;
   VkPhysicalDeviceMemoryProperties properties_{};
   std::vector<Pool> pools_;  // index = memory_type * 2 + tiling
   std::size_t dedicated_count_ = 0;

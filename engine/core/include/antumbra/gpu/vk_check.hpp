@@ -11,19 +11,33 @@
 
 namespace antumbra::gpu {
 
+// clang 14 (clang-tidy, the fuzz build) lacks the builtin libstdc++'s
+// SourceLocation needs; a stand-in keeps those tools working.
+#if defined(__cpp_lib_source_location)
+using SourceLocation = SourceLocation;
+#else
+struct SourceLocation {
+  static constexpr SourceLocation current() noexcept { return {}; }
+  [[nodiscard]] constexpr const char* file_name() const noexcept { return "unknown"; }
+  [[nodiscard]] constexpr const char* function_name() const noexcept { return "unknown"; }
+  [[nodiscard]] constexpr std::uint_least32_t line() const noexcept { return 0; }
+  [[nodiscard]] constexpr std::uint_least32_t column() const noexcept { return 0; }
+};
+#endif
+
 // "VK_ERROR_OUT_OF_DEVICE_MEMORY", or "VkResult(<n>)" for codes this build does not know.
 const char* result_name(VkResult result);
 const char* device_type_name(VkPhysicalDeviceType type);
 
 class VulkanError : public std::runtime_error {
  public:
-  VulkanError(VkResult result, const std::string& what, std::source_location location);
+  VulkanError(VkResult result, const std::string& what, SourceLocation location);
   [[nodiscard]] VkResult result() const { return result_; }
-  [[nodiscard]] const std::source_location& location() const { return location_; }
+  [[nodiscard]] const SourceLocation& location() const { return location_; }
 
  private:
   VkResult result_;
-  std::source_location location_;
+  SourceLocation location_;
 };
 
 // No Vulkan driver, no physical device, or instance creation refused: tests skip on this.
@@ -40,7 +54,7 @@ class DeviceSelectionError : public std::runtime_error {
 // Throws VulkanError unless result is VK_SUCCESS (or another non-negative status code
 // the caller chose to accept by not calling check on it).
 inline void check(VkResult result, const char* what,
-                  std::source_location location = std::source_location::current()) {
+                  SourceLocation location = SourceLocation::current()) {
   if (result < VK_SUCCESS) throw VulkanError(result, what, location);
 }
 

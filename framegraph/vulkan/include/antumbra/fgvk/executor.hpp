@@ -48,8 +48,10 @@ class Executor {
   [[nodiscard]] bool loaded() const { return state_ != nullptr; }
   [[nodiscard]] const fg::Plan& plan() const;
 
-  // Records one frame of the plan into `cmd`.
-  void record(VkCommandBuffer cmd, const FrameResources& frame, PassObserver* observer = nullptr);
+  // Records one frame of the plan into `cmd`. Passes add their findings to `report`
+  // (cleared first) when one is given.
+  void record(VkCommandBuffer cmd, const FrameResources& frame, PassObserver* observer = nullptr,
+              FrameReport* report = nullptr);
 
   // The realised image of a resource, with its current layout; nullptr if none.
   [[nodiscard]] const BoundImage* image(std::string_view resource) const;

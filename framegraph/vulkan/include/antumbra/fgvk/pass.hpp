@@ -90,6 +90,27 @@ struct PrepareContext {
   VkPipelineCache pipeline_cache = VK_NULL_HANDLE;
 };
 
+// Structured findings a pass reports about a frame (for example: the light layout
+// needs more shadow layers than the cap allows). `render` prints them, `--format json`
+// emits them and the editor lists them; they never stop the frame.
+struct PassMessage {
+  std::string pass;  // the pass instance's name
+  std::string code;  // stable, e.g. "LY001"
+  fg::Severity severity = fg::Severity::warning;
+  std::string message;
+  fg::Json details;  // machine-readable payload
+};
+
+class FrameReport {
+ public:
+  void add(PassMessage message) { messages_.push_back(std::move(message)); }
+  void clear() { messages_.clear(); }
+  [[nodiscard]] const std::vector<PassMessage>& messages() const { return messages_; }
+
+ private:
+  std::vector<PassMessage> messages_;
+};
+
 // Handed to Pass::execute() once per frame.
 struct ExecuteContext {
   gpu::Context& gpu;
@@ -98,6 +119,7 @@ struct ExecuteContext {
   const PassBindings& bindings;
   const FrameResources& frame;
   const Samplers& samplers;
+  FrameReport& report;
 };
 
 class Pass {

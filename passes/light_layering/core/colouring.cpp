@@ -1,0 +1,218 @@
+#include "colouring.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <limits>
+
+namespace antumbra::layering {
+namespace {
+
+// DSatur heap key: saturation, then degree, then the lower index wins ties (deterministic).
+constexpr int kIndexBits = 21;
+constexpr std::uint64_t kIndexMask = (std::uint64_t{1} << kIndexBits) - 1;
+
+std::uint64_t dsatur_key(std::uint32_t saturation, std::uint32_t degree, std::uint32_t v) {
+  return (std::uint64_t{saturation} << (2 * kIndexBits)) |
+         (std::uint64_t{degree} << kIndexBits) | (kIndexMask - v);
+}
+
+bool is_reserved(const ColourLimits& limits, int c) {
+  return c < 32 && ((limits.reserved >> c) & 1u) != 0;
+}
+
+}  // namespace
+
+std::span<const std::uint32_t> Colourer::colour(const ConflictGraph& graph, Order order,
+                                                std::span<int> colours,
+                                                const ColourLimits& limits) {
+  overflow_.clear();
+  // Every first free colour is <= degree + reserved count; pre-coloured values may be larger.
+  int largest_given = -1;
+  for (int c : colours) largest_given = std::max(largest_given, c);
+  const std::size_t bound =
+      std::max<std::size_t>(graph.max_degree() + 34, static_cast<std::size_t>(largest_given) + 1);
+  colour_bound_ = bound;
+  if (stamp_.size() < bound) stamp_.assign(bound, 0);
+  if (order == Order::dsatur) {
+    colour_dsatur(graph, colours, limits);
+  } else {
+    compute_static_order(graph, order);
+    colour_greedy(graph, colours, limits);
+  }
+  return overflow_;
+}
+
+void Colourer::compute_static_order(const ConflictGraph& graph, Order order) {
+  const auto n = static_cast<std::uint32_t>(graph.vertex_count());
+  order_.resize(n);
+  if (order == Order::first_fit) {
+    for (std::uint32_t v = 0; v < n; ++v) order_[v] = v;
+    return;
+  }
+  const std::uint32_t max_degree = graph.max_degree();
+  degree_.resize(n);
+  for (std::uint32_t v = 0; v < n; ++v) degree_[v] = graph.degree(v);
+  // Counting sort by degree (stable: ties keep index order).
+  bin_.assign(max_degree + 2, 0);
+  for (std::uint32_t v = 0; v < n; ++v) ++bin_[degree_[v] + 1];
+  for (std::uint32_t d = 0; d <= max_degree; ++d) bin_[d + 1] += bin_[d];
+  position_.resize(n);
+  for (std::uint32_t v = 0; v < n; ++v) {
+    position_[v] = bin_[degree_[v]]++;
+    order_[position_[v]] = v;
+  }
+  if (order == Order::degree_ascending) return;
+  if (order == Order::largest_first) {
+    // Reverse the degree blocks but keep index order inside each block.
+    std::reverse(order_.begin(), order_.end());
+    for (std::uint32_t begin = 0; begin < n;) {
+      std::uint32_t end = begin;
+      while (end < n && degree_[order_[end]] == degree_[order_[begin]]) ++end;
+      std::reverse(order_.begin() + begin, order_.begin() + end);
+      begin = end;
+    }
+    return;
+  }
+  // Smallest-last (Matula & Beck): repeatedly remove a vertex of minimum remaining degree
+  // (Batagelj-Zaversnik bucket update, O(V + E)), then colour in reverse removal order.
+  for (std::uint32_t d = max_degree + 1; d > 0; --d) bin_[d] = bin_[d - 1];
+  bin_[0] = 0;
+  for (std::uint32_t i = 0; i < n; ++i) {
+    const std::uint32_t v = order_[i];
+    for (std::uint32_t u : graph.adjacent(v)) {
+      if (degree_[u] <= degree_[v]) continue;
+      const std::uint32_t du = degree_[u];
+      const std::uint32_t pu = position_[u];
+      const std::uint32_t pw = bin_[du];
+      const std::uint32_t w = order_[pw];
+      if (u != w) {
+        position_[u] = pw;
+        order_[pu] = w;
+        position_[w] = pu;
+        order_[pw] = u;
+      }
+      ++bin_[du];
+      --degree_[u];
+    }
+  }
+  std::reverse(order_.begin(), order_.end());
+}
+
+int Colourer::first_free_colour(const ConflictGraph& graph, std::uint32_t v,
+                                std::span<const int> colours, const ColourLimits& limits) {
+  if (++stamp_value_ == std::numeric_limits<std::uint32_t>::max()) {
+    std::fill(stamp_.begin(), stamp_.end(), 0);
+    stamp_value_ = 1;
+  }
+  for (std::uint32_t u : graph.adjacent(v)) {
+    const int c = colours[u];
+    if (c >= 0 && static_cast<std::size_t>(c) < stamp_.size()) stamp_[c] = stamp_value_;
+  }
+  int c = 0;
+  while (stamp_[c] == stamp_value_ || is_reserved(limits, c)) ++c;
+  return c;
+}
+
+int Colourer::place_overflow(const ConflictGraph& graph, std::uint32_t v,
+                             std::span<const int> colours, const ColourLimits& limits) {
+  overflow_.push_back(v);
+  if (limits.policy == CapPolicy::fallback) return kUncoloured;
+  // Least conflict: the allowed colour whose holders overlap this light the least.
+  const int layers = std::min(limits.max_colours, 32);
+  float weight[32] = {};
+  const auto nbrs = graph.adjacent(v);
+  const auto weights = graph.adjacent_weights(v);
+  for (std::size_t k = 0; k < nbrs.size(); ++k) {
+    const int c = colours[nbrs[k]];
+    if (c >= 0 && c < layers) weight[c] += weights[k];
+  }
+  int best = kUncoloured;
+  for (int c = 0; c < layers; ++c) {
+    if (is_reserved(limits, c)) continue;
+    if (best == kUncoloured || weight[c] < weight[best]) best = c;
+  }
+  return best;
+}
+
+void Colourer::colour_greedy(const ConflictGraph& graph, std::span<int> colours,
+                             const ColourLimits& limits) {
+  for (std::uint32_t v : order_) {
+    if (colours[v] != kUncoloured) continue;
+    int c = first_free_colour(graph, v, colours, limits);
+    if (c >= limits.max_colours) c = place_overflow(graph, v, colours, limits);
+    colours[v] = c;
+  }
+}
+
+void Colourer::colour_dsatur(const ConflictGraph& graph, std::span<int> colours,
+                             const ColourLimits& limits) {
+  const auto n = static_cast<std::uint32_t>(graph.vertex_count());
+  const std::size_t words = (colour_bound_ + 63) / 64;
+  seen_colours_.assign(static_cast<std::size_t>(n) * words, 0);
+  saturation_.assign(n, 0);
+  done_.assign(n, 0);
+  heap_.clear();
+  auto mark = [&](std::uint32_t u, int c) {
+    if (c < 0 || static_cast<std::size_t>(c) >= words * 64) return false;
+    std::uint64_t& word = seen_colours_[u * words + static_cast<std::size_t>(c) / 64];
+    const std::uint64_t bit = std::uint64_t{1} << (c % 64);
+    if ((word & bit) != 0) return false;
+    word |= bit;
+    ++saturation_[u];
+    return true;
+  };
+  for (std::uint32_t v = 0; v < n; ++v) {
+    if (colours[v] == kUncoloured) continue;
+    done_[v] = 1;
+    for (std::uint32_t u : graph.adjacent(v)) mark(u, colours[v]);
+  }
+  for (std::uint32_t v = 0; v < n; ++v)
+    if (!done_[v]) heap_.push_back(dsatur_key(saturation_[v], graph.degree(v), v));
+  std::make_heap(heap_.begin(), heap_.end());
+  while (!heap_.empty()) {
+    std::pop_heap(heap_.begin(), heap_.end());
+    const std::uint64_t key = heap_.back();
+    heap_.pop_back();
+    const auto v = static_cast<std::uint32_t>(kIndexMask - (key & kIndexMask));
+    // Lazy deletion: skip entries superseded by a later push with higher saturation.
+    if (done_[v] || (key >> (2 * kIndexBits)) != saturation_[v]) continue;
+    done_[v] = 1;
+    int c = kUncoloured;
+    const std::uint64_t* seen = &seen_colours_[v * words];
+    for (std::size_t w = 0; w < words && c == kUncoloured; ++w) {
+      std::uint64_t free_bits = ~seen[w];
+      if (w == 0) free_bits &= ~std::uint64_t{limits.reserved};
+      if (free_bits != 0) c = static_cast<int>(w * 64) + std::countr_zero(free_bits);
+    }
+    if (c == kUncoloured || c >= limits.max_colours) c = place_overflow(graph, v, colours, limits);
+    colours[v] = c;
+    if (c == kUncoloured) continue;
+    for (std::uint32_t u : graph.adjacent(v)) {
+      if (done_[u] || !mark(u, c)) continue;
+      heap_.push_back(dsatur_key(saturation_[u], graph.degree(u), u));
+      std::push_heap(heap_.begin(), heap_.end());
+    }
+  }
+}
+
+std::vector<int> colour(const ConflictGraph& graph, Order order) {
+  std::vector<int> colours(graph.vertex_count(), kUncoloured);
+  Colourer colourer;
+  (void)colourer.colour(graph, order, colours);
+  return colours;
+}
+
+int colour_count(std::span<const int> colours) {
+  int largest = -1;
+  for (int c : colours) largest = std::max(largest, c);
+  return largest + 1;
+}
+
+bool is_proper_colouring(const ConflictGraph& graph, std::span<const int> colours) {
+  for (std::uint32_t v = 0; v < graph.vertex_count(); ++v)
+    for (std::uint32_t u : graph.adjacent(v))
+      if (colours[v] >= 0 && colours[u] == colours[v]) return false;
+  return true;
+}
+
+}  // namespace antumbra::layering

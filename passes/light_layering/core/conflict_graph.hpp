@@ -1,0 +1,76 @@
+#pragma once
+// Conflict-graph construction. Two lights conflict when their shadows could overlap in
+// one screen-space layer; both builders are near-linear (uniform hash grid over light
+// spheres, per-tile light lists on screen), never all pairs.
+
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include <glm/mat4x4.hpp>
+
+#include "layering_types.hpp"
+
+namespace antumbra::layering {
+
+// Holds the scratch buffers of both builders so that a per-frame rebuild does not allocate
+// once the buffers have grown. One builder per thread; the returned graph stays valid until
+// the next build on the same builder.
+class GraphBuilder {
+ public:
+  // Edge when the lit spheres intersect: |p_i - p_j| < r_i + r_j (touching is no conflict).
+  const ConflictGraph& build_world_sphere(std::span<const LightSphere> lights);
+  // Edge when both dilated footprints reach a common tile. Weight = shared tiles.
+  const ConflictGraph& build_screen_tile(std::span<const ScreenRect> rects,
+                                         const TileParams& params);
+  [[nodiscard]] const ConflictGraph& graph() const { return graph_; }
+
+ private:
+  struct Edge {
+    std::uint32_t a;
+    std::uint32_t b;
+    float weight;
+  };
+  struct CellEntry {
+    std::uint32_t light;
+    glm::ivec3 cell;
+  };
+  void finish_graph(std::size_t vertex_count);
+
+  ConflictGraph graph_;
+  std::vector<Edge> edges_;
+  std::vector<glm::ivec3> cell_min_;
+  std::vector<glm::ivec3> cell_max_;
+  std::vector<std::uint32_t> big_lights_;
+  std::vector<std::uint32_t> bucket_start_;
+  std::vector<CellEntry> entries_;
+  std::vector<glm::ivec4> tile_range_;
+  std::vector<std::uint32_t> tile_lights_;
+  std::vector<std::uint32_t> scratch_offsets_;
+  std::vector<std::uint32_t> scratch_neighbours_;
+  std::vector<float> scratch_weights_;
+};
+
+// One-shot wrappers (allocate their own builder).
+[[nodiscard]] ConflictGraph build_world_sphere_graph(std::span<const LightSphere> lights);
+[[nodiscard]] ConflictGraph build_screen_tile_graph(std::span<const ScreenRect> rects,
+                                                    const TileParams& params);
+// All-pairs reference, O(n^2): only for tests and benchmarks of the accelerated builder.
+[[nodiscard]] ConflictGraph build_world_sphere_graph_brute_force(
+    std::span<const LightSphere> lights);
+
+// Volume of the intersection of two spheres (0 when disjoint): the world-sphere edge weight.
+[[nodiscard]] float sphere_overlap_volume(glm::vec3 pa, float ra, glm::vec3 pb, float rb);
+
+// Pixel bounding rectangle of a world-space sphere seen by a perspective camera (view =
+// rigid world->view transform, camera looking down -z; proj = a glm perspective matrix,
+// Vulkan y-flip allowed). Exact tangent-plane bounds per axis, clamped to the viewport.
+// nullopt when the sphere is behind the camera or off screen; the whole viewport when the
+// sphere contains or straddles the camera plane (conservative).
+[[nodiscard]] std::optional<ScreenRect> project_sphere_rect(glm::vec3 centre, float radius,
+                                                            const glm::mat4& view,
+                                                            const glm::mat4& proj,
+                                                            glm::ivec2 viewport);
+
+}  // namespace antumbra::layering

@@ -1,0 +1,161 @@
+// Reload is a transaction: a graph or shader that fails leaves the last good plan
+// running (same image), and the failure comes back as located diagnostics.
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "antumbra/fg/diagnostic_codes.hpp"
+#include "antumbra/gpu/shader_compiler.hpp"
+#include "gpu_test_support.hpp"
+#include "render_test_support.hpp"
+
+using namespace antumbra;
+using namespace antumbra::render_testing;
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string read_text(const fs::path& path) {
+  std::ifstream file(path, std::ios::binary);
+  std::ostringstream text;
+  text << file.rdbuf();
+  return text.str();
+}
+
+void write_text(const fs::path& path, const std::string& text) {
+  std::ofstream file(path, std::ios::binary | std::ios::trunc);
+  file << text;
+}
+
+// Inserts `line` after the first line containing `anchor`; returns its 1-based number.
+int insert_line_after(const fs::path& path, const std::string& anchor, const std::string& line) {
+  std::istringstream in(read_text(path));
+  std::ostringstream out;
+  std::string current;
+  int number = 0;
+  int inserted = 0;
+  while (std::getline(in, current)) {
+    ++number;
+    out << current << '\n';
+    if (inserted == 0 && current.find(anchor) != std::string::npos) {
+      out << line << '\n';
+      inserted = ++number;
+    }
+  }
+  write_text(path, out.str());
+  return inserted;
+}
+
+bool same_file(const std::string& a, const fs::path& b) {
+  std::error_code error;
+  return fs::equivalent(fs::path(a), b, error);
+}
+
+}  // namespace
+
+class ReloadTest : public RenderTest {};
+
+TEST_F(ReloadTest, BrokenGraphKeepsTheLastGoodPlan) {
+  OPEN_SESSION(session, kSmall);
+  const fg::GraphDesc good = default_graph();
+  ASSERT_NO_FATAL_FAILURE(load_graph_ok(*session, good));
+  session->set_scene(default_scene());
+  session->render(1, nullptr);
+  const auto before = read_output(*session);
+  ASSERT_FALSE(is_blank(before));
+
+  struct Broken {
+    std::string what;
+    fg::GraphDesc graph;
+    const char* code;
+  };
+  std::vector<Broken> broken;
+  {
+    fg::GraphDesc graph = good;
+    graph.passes.at(2).type = "tonemapp";
+    broken.push_back({"unknown pass type", graph, fg::codes::kUnknownPassType});
+  }
+  {
+    fg::GraphDesc graph = good;
+    graph.output = "nothing";
+    broken.push_back({"output names no resource", graph, nullptr});
+  }
+  {
+    fg::GraphDesc graph = good;
+    graph.passes.at(1).params["exposure"] = 100.0;  // range [0, 16]
+    broken.push_back({"parameter out of range", graph, nullptr});
+  }
+  for (const auto& [what, graph, code] : broken) {
+    SCOPED_TRACE(what);
+    const auto diagnostics = session->load_graph(graph);
+    EXPECT_TRUE(diagnostics.has_errors());
+    if (code != nullptr) EXPECT_NE(diagnostics.find(code), nullptr) << describe(diagnostics);
+    ASSERT_TRUE(session->executor().loaded());
+    const fg::Plan& plan = session->executor().plan();
+    EXPECT_EQ(plan.name, "deferred");
+    EXPECT_EQ(plan.passes.size(), 3u);
+    EXPECT_EQ(plan.resources.at(static_cast<std::size_t>(plan.output)).name, "ldr");
+    session->render(1, nullptr);
+    expect_no_validation_errors(*session);
+    EXPECT_TRUE(read_output(*session).texels == before.texels) << "image changed";
+  }
+}
+
+// A shader with a syntax error, in a copy of passes/: the session started from that
+// root keeps its previous plan; the diagnostic is SH001 at the edited file and line.
+// Fixing the file and reloading recovers.
+TEST_F(ReloadTest, ShaderErrorKeepsTheLastGoodPlan) {
+  gpu::testing::TempDir root;
+  copy_tree(source_dir() / "passes", root.path() / "passes");
+  const fs::path tonemap = root.path() / "passes" / "tonemap" / "tonemap.frag";
+  const std::string original = read_text(tonemap);
+
+  OPEN_SESSION(session, kSmall, app::DataPaths{root.path()});
+  const fg::GraphDesc graph = default_graph();
+  ASSERT_NO_FATAL_FAILURE(load_graph_ok(*session, graph));
+  session->set_scene(default_scene());
+  session->render(1, nullptr);
+  const auto before = read_output(*session);
+  ASSERT_FALSE(is_blank(before));
+
+  const int line = insert_line_after(tonemap, "void main() {", "  vec3 broken = ;");
+  ASSERT_GT(line, 0) << "tonemap.frag has no 'void main() {' line";
+  const auto diagnostics = session->load_graph(graph);
+  ASSERT_TRUE(diagnostics.has_errors());
+  const fg::Diagnostic* error = diagnostics.find(gpu::shader_codes::kCompile);
+  ASSERT_NE(error, nullptr) << describe(diagnostics);
+  EXPECT_TRUE(same_file(error->file, tonemap)) << error->file << " is not " << tonemap;
+  EXPECT_EQ(error->line, line) << fg::format_text(*error);
+  EXPECT_EQ(error->severity, fg::Severity::error);
+
+  ASSERT_TRUE(session->executor().loaded());
+  EXPECT_EQ(session->executor().plan().passes.size(), 3u);
+  session->render(1, nullptr);
+  expect_no_validation_errors(*session);
+  EXPECT_TRUE(read_output(*session).texels == before.texels) << "image changed";
+
+  write_text(tonemap, original);
+  ASSERT_NO_FATAL_FAILURE(load_graph_ok(*session, graph));
+  session->render(1, nullptr);
+  expect_no_validation_errors(*session);
+  EXPECT_TRUE(read_output(*session).texels == before.texels) << "image changed after the fix";
+}
+
+// With no previous plan, a shader error leaves the session without one.
+TEST_F(ReloadTest, ShaderErrorOnFirstLoadLoadsNothing) {
+  gpu::testing::TempDir root;
+  copy_tree(source_dir() / "passes", root.path() / "passes");
+  const fs::path tonemap = root.path() / "passes" / "tonemap" / "tonemap.frag";
+  const int line = insert_line_after(tonemap, "void main() {", "  vec3 broken = ;");
+  ASSERT_GT(line, 0);
+
+  OPEN_SESSION(session, kSmall, app::DataPaths{root.path()});
+  const auto diagnostics = session->load_graph(default_graph());
+  const fg::Diagnostic* error = diagnostics.find(gpu::shader_codes::kCompile);
+  ASSERT_NE(error, nullptr) << describe(diagnostics);
+  EXPECT_TRUE(same_file(error->file, tonemap)) << error->file;
+  EXPECT_EQ(error->line, line);
+  EXPECT_FALSE(session->executor().loaded());
+}
