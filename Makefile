@@ -6,7 +6,7 @@ JOBS       ?= $(shell nproc)
 CMAKE_ARGS ?=
 DEMO_ARGS  ?= --size 1280x720 --out out/atrium.png
 
-.PHONY: all deps configure build demo test test-asan bench clean
+.PHONY: all deps configure build demo test test-asan fuzz bench clean
 
 all: build
 
@@ -35,8 +35,20 @@ test-asan: deps
 	@cmake --build $(ASAN_BUILD) -j$(JOBS) --target antumbra_framegraph_tests antumbra_scene_tests
 	@ctest --test-dir $(ASAN_BUILD) --output-on-failure -j$(JOBS) -L asan
 
+# libFuzzer over graph parsing + compiling (clang). FUZZ_SECONDS bounds the run.
+FUZZ_BUILD   ?= build-fuzz
+FUZZ_SECONDS ?= 60
+fuzz: deps
+	@cmake -S . -B $(FUZZ_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=clang \
+	  -DCMAKE_CXX_COMPILER=clang++ -DANTUMBRA_FUZZ=ON -DANTUMBRA_BUILD_TESTS=OFF \
+	  -DANTUMBRA_BUILD_BENCHMARKS=OFF $(CMAKE_ARGS) > /dev/null
+	@cmake --build $(FUZZ_BUILD) -j$(JOBS) --target antumbra_fuzz_graph
+	@mkdir -p $(FUZZ_BUILD)/corpus
+	$(FUZZ_BUILD)/fuzz/antumbra_fuzz_graph -max_total_time=$(FUZZ_SECONDS) -dict=fuzz/graph.dict \
+	  $(FUZZ_BUILD)/corpus fuzz/corpus
+
 bench: build
 	$(BUILD)/bench/antumbra_bench_graph
 
 clean:
-	rm -rf $(BUILD) $(ASAN_BUILD) out
+	rm -rf $(BUILD) $(ASAN_BUILD) $(FUZZ_BUILD) out

@@ -2,6 +2,7 @@
 
 #include "deferred_lighting/deferred_lighting_pass.hpp"
 #include "gbuffer/gbuffer_pass.hpp"
+#include "light_layering/light_layering_pass.hpp"
 #include "tonemap/tonemap_pass.hpp"
 
 namespace antumbra::passes {
@@ -15,6 +16,7 @@ void register_builtin_passes(fgvk::PassRegistry& registry) {
   registry.add(GBufferPass::describe(), &make_pass<GBufferPass>);
   registry.add(DeferredLightingPass::describe(), &make_pass<DeferredLightingPass>);
   registry.add(TonemapPass::describe(), &make_pass<TonemapPass>);
+  registry.add(LightLayeringPass::describe(), &make_pass<LightLayeringPass>);
 }
 
 fgvk::PassRegistry builtin_pass_registry() {

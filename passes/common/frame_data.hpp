@@ -20,8 +20,11 @@ struct FrameUniforms {
   glm::vec4 viewport{0.0f};  // width, height, 1/width, 1/height
   glm::vec4 ambient{0.0f};
   glm::uvec4 counts{0u};  // x light count, y frame index
+  glm::mat4 inv_view{1.0f};
+  glm::vec4 camera_world{0.0f};  // xyz position, w near
+  glm::vec4 projection{0.0f};    // proj[0][0], proj[1][1], near, far
 };
-static_assert(sizeof(FrameUniforms) == 4 * 64 + 3 * 16);
+static_assert(sizeof(FrameUniforms) == 5 * 64 + 5 * 16);
 
 // std430 `GpuLight` in lights.glsl.
 struct GpuLight {

@@ -57,9 +57,11 @@ class Colourer {
   std::vector<std::uint32_t> stamp_;
   std::uint32_t stamp_value_ = 0;
   std::size_t colour_bound_ = 0;
-  std::vector<std::uint64_t> heap_;
+  std::vector<std::uint64_t> level_bits_;  // DSatur bucket queue
+  std::vector<std::uint32_t> level_count_;
   std::vector<std::uint64_t> seen_colours_;  // DSatur: per-vertex bitset of neighbour colours
   std::vector<std::uint32_t> saturation_;
+  std::vector<std::uint32_t> rank_;
   std::vector<std::uint8_t> done_;
   std::vector<std::uint32_t> overflow_;
 };

@@ -39,6 +39,13 @@ std::uint32_t hash_cell(glm::ivec3 c, std::uint32_t mask) {
   return h & mask;
 }
 
+// Cell coordinates are clamped to +-kMaxCellCoord < 2^20, so 21 bits each pack into 64.
+std::uint64_t cell_key(glm::ivec3 c) {
+  constexpr std::uint64_t kMask = (std::uint64_t{1} << 21) - 1;
+  return ((static_cast<std::uint64_t>(c.x) & kMask) << 42) |
+         ((static_cast<std::uint64_t>(c.y) & kMask) << 21) | (static_cast<std::uint64_t>(c.z) & kMask);
+}
+
 std::size_t bucket_count_for(std::size_t entries) {
   return std::bit_ceil(std::max<std::size_t>(entries * 2, 16));
 }
@@ -114,29 +121,39 @@ const ConflictGraph& GraphBuilder::build_world_sphere(std::span<const LightSpher
     for_each_cell(i, [&](glm::ivec3 c) { ++bucket_start_[hash_cell(c, mask) + 1]; });
   for (std::size_t b = 0; b < buckets; ++b) bucket_start_[b + 1] += bucket_start_[b];
   entries_.resize(entry_count);
-  for (std::uint32_t i = 0; i < n; ++i)
+  for (std::uint32_t i = 0; i < n; ++i) {
+    const LightSphere& l = lights[i];
     for_each_cell(i, [&](glm::ivec3 c) {
-      entries_[bucket_start_[hash_cell(c, mask)]++] = CellEntry{i, c};
+      // first: bit k set when this is the light's first cell along axis k. Two lights that
+      // share cell c have c as their first shared cell iff (first_a | first_b) == 7.
+      const glm::ivec3 lo = cell_min_[i];
+      const auto first = static_cast<std::uint32_t>((c.x == lo.x ? 1 : 0) | (c.y == lo.y ? 2 : 0) |
+                                                    (c.z == lo.z ? 4 : 0));
+      entries_[bucket_start_[hash_cell(c, mask)]++] =
+          CellEntry{l.position, l.range, cell_key(c), i, first};
     });
+  }
   // The fill advanced each start to the next bucket's start; shift back.
   for (std::size_t b = buckets; b > 0; --b) bucket_start_[b] = bucket_start_[b - 1];
   bucket_start_[0] = 0;
 
   for (std::size_t b = 0; b < buckets; ++b) {
-    const std::uint32_t begin = bucket_start_[b];
     const std::uint32_t end = bucket_start_[b + 1];
-    for (std::uint32_t x = begin; x < end; ++x) {
+    for (std::uint32_t x = bucket_start_[b]; x < end; ++x) {
       const CellEntry& ex = entries_[x];
       for (std::uint32_t y = x + 1; y < end; ++y) {
         const CellEntry& ey = entries_[y];
-        if (ex.cell != ey.cell) continue;  // hash collision of two different cells
-        // Report a pair only in the first cell both boxes share, so it appears once.
-        if (glm::max(cell_min_[ex.light], cell_min_[ey.light]) != ex.cell) continue;
-        const LightSphere& a = lights[ex.light];
-        const LightSphere& c = lights[ey.light];
-        if (!spheres_conflict(a, c)) continue;
+        const glm::vec3 d = ex.position - ey.position;
+        const float reach = ex.range + ey.range;
+        // Non-short-circuit: one rarely taken branch instead of three unpredictable ones.
+        // Same cell (hash collisions share buckets), pair reported only in its first shared
+        // cell (so once), spheres intersect.
+        const bool hit = (ex.key == ey.key) & ((ex.first | ey.first) == 7u) &
+                         (glm::dot(d, d) < reach * reach);
+        if (!hit) continue;
         edges_.push_back(Edge{ex.light, ey.light,
-                              sphere_overlap_volume(a.position, a.range, c.position, c.range)});
+                              sphere_overlap_volume(ex.position, ex.range, ey.position,
+                                                    ey.range)});
       }
     }
   }

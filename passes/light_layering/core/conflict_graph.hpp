@@ -32,9 +32,13 @@ class GraphBuilder {
     std::uint32_t b;
     float weight;
   };
+  // One light in one grid cell, with a copy of what the pair test needs (no indirection).
   struct CellEntry {
+    glm::vec3 position;
+    float range;
+    std::uint64_t key;  // packed cell coordinates
     std::uint32_t light;
-    glm::ivec3 cell;
+    std::uint32_t first;  // bit k: first cell of the light's span along axis k
   };
   void finish_graph(std::size_t vertex_count);
 

@@ -12,9 +12,9 @@
 namespace antumbra::gpu {
 
 // clang 14 (clang-tidy, the fuzz build) lacks the builtin libstdc++'s
-// SourceLocation needs; a stand-in keeps those tools working.
+// std::source_location needs; a stand-in keeps those tools working.
 #if defined(__cpp_lib_source_location)
-using SourceLocation = SourceLocation;
+using SourceLocation = std::source_location;
 #else
 struct SourceLocation {
   static constexpr SourceLocation current() noexcept { return {}; }

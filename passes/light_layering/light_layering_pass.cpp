@@ -1,0 +1,112 @@
+#include "light_layering_pass.hpp"
+
+#include <cstring>
+#include <functional>
+#include <stdexcept>
+
+#include <nlohmann/json.hpp>
+
+#include "antumbra/gpu/context.hpp"
+#include "antumbra/scene/scene.hpp"
+#include "common/frame_data.hpp"
+#include "common/frame_resources.hpp"
+#include "common/layer_table.hpp"
+#include "common/pass_support.hpp"
+
+namespace antumbra::passes {
+namespace {
+
+std::uint64_t light_id(const std::string& name) {
+  // Lights are identified by name (unique in a scene), so an edit that reorders the
+  // light list does not make every light change layer.
+  return std::hash<std::string>{}(name);
+}
+
+}  // namespace
+
+LightLayeringPass::LightLayeringPass(const fg::PlanPass& pass) {
+  options_.max_layers = static_cast<int>(param_float(pass, "maxLayers"));
+  options_.order = layering::parse_order(param_string(pass, "order")).value_or(layering::Order::dsatur);
+  options_.policy = layering::parse_cap_policy(param_string(pass, "policy"))
+                        .value_or(layering::CapPolicy::least_conflict);
+  criterion_ = layering::parse_criterion(param_string(pass, "criterion"))
+                   .value_or(layering::Criterion::world_sphere);
+  tiles_.tile_size = static_cast<int>(param_float(pass, "tileSize"));
+  tiles_.dilation_px = param_float(pass, "dilation");
+}
+
+void LightLayeringPass::prepare(fgvk::PrepareContext& context) {
+  const auto* table = context.bindings.buffer("layerTable");
+  if (table == nullptr || table->size < kLayerTableBytes) {
+    fg::Diagnostics diagnostics;
+    diagnostics.add({"LY010", fg::Severity::error,
+                     "the layerTable buffer of pass '" + context.pass.name + "' must hold at least " +
+                         std::to_string(kLayerTableBytes) + " bytes (" +
+                         std::to_string(kMaxShadowLights) + " lights)",
+                     "", "", 0, 0});
+    throw fgvk::PassError("layerTable too small", diagnostics);
+  }
+}
+
+void LightLayeringPass::execute(fgvk::ExecuteContext& context) {
+  const scene::Scene& scene = *context.frame.scene;
+  spheres_.clear();
+  scene_index_.clear();
+  for (std::uint32_t i = 0; i < scene.lights.size() && i < kMaxShadowLights; ++i) {
+    const auto& light = scene.lights[i];
+    if (!light.casts_shadows) continue;
+    spheres_.push_back({light_id(light.name), light.name, light.position, light.range, false});
+    scene_index_.push_back(i);
+  }
+
+  const layering::LayerAssignment* assignment = nullptr;
+  if (criterion_ == layering::Criterion::screen_tile) {
+    const VkExtent2D viewport = context.frame.viewport;
+    const float aspect = static_cast<float>(viewport.width) / static_cast<float>(viewport.height);
+    const glm::mat4 view = scene.camera.view();
+    const glm::mat4 proj = scene.camera.projection(aspect);
+    const glm::ivec2 size(static_cast<int>(viewport.width), static_cast<int>(viewport.height));
+    rects_.clear();
+    for (const auto& s : spheres_) {
+      rects_.push_back(layering::project_sphere_rect(s.position, s.range, view, proj, size)
+                           .value_or(layering::ScreenRect{}));
+    }
+    tiles_.viewport = size;
+    assignment = &layering_.update_screen_tile(spheres_, rects_, tiles_, options_);
+  } else {
+    assignment = &layering_.update_world_sphere(spheres_, options_);
+  }
+
+  // Header + table in a per-slot staging buffer, copied into the graph buffer: the
+  // copy is this pass's one declared access (transfer_dst).
+  if (staging_.size() < context.frame.frames_in_flight) staging_.resize(context.frame.frames_in_flight);
+  auto& staging = staging_[context.frame.slot];
+  if (!staging) {
+    staging = gpu::Buffer::create(context.gpu, kLayerTableBytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                                  gpu::MemoryUsage::upload,
+                                  context.pass.name + ".staging." + std::to_string(context.frame.slot));
+  }
+  LayerTableHeader header;
+  header.counts = glm::uvec4(static_cast<std::uint32_t>(scene.lights.size()),
+                             static_cast<std::uint32_t>(assignment->layers_used),
+                             static_cast<std::uint32_t>(options_.max_layers),
+                             static_cast<std::uint32_t>(assignment->layers_needed));
+  std::byte* out = staging.mapped();
+  std::memcpy(out, &header, sizeof header);
+  auto* layers = reinterpret_cast<std::uint32_t*>(out + sizeof header);
+  std::fill(layers, layers + kMaxShadowLights, kNoLayer);
+  for (std::size_t s = 0; s < spheres_.size(); ++s) {
+    const int layer = assignment->layer[s];
+    layers[scene_index_[s]] = layer < 0 ? kNoLayer : static_cast<std::uint32_t>(layer);
+  }
+  const auto* table = context.bindings.buffer("layerTable");
+  const VkBufferCopy region{0, 0, kLayerTableBytes};
+  vkCmdCopyBuffer(context.cmd, staging, table->buffer, 1, &region);
+
+  for (const auto& warning : assignment->warnings) {
+    context.report.add({context.pass.name, "LY001", fg::Severity::warning, warning.message,
+                        layering::to_json(warning)});
+  }
+}
+
+}  // namespace antumbra::passes
