@@ -36,8 +36,8 @@ std::vector<LightSphere> world_layout(std::size_t count, std::uint32_t seed = 42
 std::vector<ScreenRect> screen_layout(std::size_t count, std::uint32_t seed = 42) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<float> unit(0.0f, 1.0f);
-  const float side = std::sqrt(kMeanDegree * 1920.0f * 1080.0f / static_cast<float>(count)) /
-                         2.0f - 2.0f * 16.0f;
+  const float side =
+      std::sqrt(kMeanDegree * 1920.0f * 1080.0f / static_cast<float>(count)) / 2.0f - 2.0f * 16.0f;
   std::vector<ScreenRect> rects;
   for (std::size_t i = 0; i < count; ++i) {
     const glm::vec2 p(unit(rng) * 1920.0f, unit(rng) * 1080.0f);
@@ -52,12 +52,17 @@ const TileParams kTiles{16, 8.0f, {1920, 1080}};
 void BM_WorldSphereFrame(benchmark::State& state) {
   const auto lights = world_layout(static_cast<std::size_t>(state.range(0)));
   Layering layering;
-  const LayeringOptions options{Order::dsatur, 8, CapPolicy::least_conflict};
+  const LayeringOptions options{Order::dsatur, 16, CapPolicy::least_conflict};
   for (auto _ : state) benchmark::DoNotOptimize(layering.update_world_sphere(lights, options));
   state.counters["edges"] = static_cast<double>(layering.graph().edge_count());
   state.counters["layers"] = layering.update_world_sphere(lights, options).layers_used;
 }
-BENCHMARK(BM_WorldSphereFrame)->Arg(16)->Arg(64)->Arg(256)->Arg(1024)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_WorldSphereFrame)
+    ->Arg(16)
+    ->Arg(64)
+    ->Arg(256)
+    ->Arg(1024)
+    ->Unit(benchmark::kMicrosecond);
 
 void BM_WorldSphereFrameNoHistory(benchmark::State& state) {
   const auto lights = world_layout(static_cast<std::size_t>(state.range(0)));
@@ -65,10 +70,14 @@ void BM_WorldSphereFrameNoHistory(benchmark::State& state) {
   Layering layering;
   for (auto _ : state) {
     const ConflictGraph& graph = builder.build_world_sphere(lights);
-    benchmark::DoNotOptimize(layering.assign(graph, lights, {}, nullptr));
+    benchmark::DoNotOptimize(layering.assign(graph, lights, {Order::dsatur, 16}, nullptr));
   }
 }
-BENCHMARK(BM_WorldSphereFrameNoHistory)->Arg(16)->Arg(64)->Arg(256)->Arg(1024)
+BENCHMARK(BM_WorldSphereFrameNoHistory)
+    ->Arg(16)
+    ->Arg(64)
+    ->Arg(256)
+    ->Arg(1024)
     ->Unit(benchmark::kMicrosecond);
 
 void BM_ScreenTileFrame(benchmark::State& state) {
@@ -76,13 +85,29 @@ void BM_ScreenTileFrame(benchmark::State& state) {
   const auto lights = world_layout(n);
   const auto rects = screen_layout(n);
   Layering layering;
-  const LayeringOptions options{Order::dsatur, 8, CapPolicy::least_conflict};
+  const LayeringOptions options{Order::dsatur, 16, CapPolicy::least_conflict};
   for (auto _ : state)
     benchmark::DoNotOptimize(layering.update_screen_tile(lights, rects, kTiles, options));
   state.counters["edges"] = static_cast<double>(layering.graph().edge_count());
-  state.counters["layers"] = layering.update_screen_tile(lights, rects, kTiles, options).layers_used;
+  state.counters["layers"] =
+      layering.update_screen_tile(lights, rects, kTiles, options).layers_used;
 }
 BENCHMARK(BM_ScreenTileFrame)->Arg(16)->Arg(64)->Arg(256)->Arg(1024)->Unit(benchmark::kMicrosecond);
+
+// Over the cap (needs ~9 layers, cap 4): capped run, fresh retry, uncapped count, warnings.
+void BM_WorldSphereFrameOverCap(benchmark::State& state) {
+  const auto lights = world_layout(static_cast<std::size_t>(state.range(0)));
+  Layering layering;
+  const LayeringOptions options{Order::dsatur, 4, static_cast<CapPolicy>(state.range(1))};
+  for (auto _ : state) benchmark::DoNotOptimize(layering.update_world_sphere(lights, options));
+  state.SetLabel(std::string(to_string(options.policy)));
+  state.counters["overflow"] =
+      static_cast<double>(layering.update_world_sphere(lights, options).warnings[0].lights.size());
+}
+BENCHMARK(BM_WorldSphereFrameOverCap)
+    ->Args({1024, 0})
+    ->Args({1024, 1})
+    ->Unit(benchmark::kMicrosecond);
 
 // Stage breakdown at 1024 lights.
 void BM_WorldSphereGraphOnly(benchmark::State& state) {
@@ -122,14 +147,15 @@ BENCHMARK(BM_Colour)->DenseRange(0, 4)->Unit(benchmark::kMicrosecond);
 
 void BM_ProjectSpheres(benchmark::State& state) {
   const auto lights = world_layout(static_cast<std::size_t>(state.range(0)));
-  const glm::mat4 view = glm::lookAtRH(glm::vec3(0, 30, -20), glm::vec3(40, 0, 40),
-                                       glm::vec3(0, 1, 0));
+  const glm::mat4 view =
+      glm::lookAtRH(glm::vec3(0, 30, -20), glm::vec3(40, 0, 40), glm::vec3(0, 1, 0));
   const glm::mat4 proj = glm::perspectiveRH_ZO(glm::radians(60.0f), 16.0f / 9.0f, 0.1f, 500.0f);
   std::vector<ScreenRect> rects(lights.size());
   for (auto _ : state) {
     for (std::size_t i = 0; i < lights.size(); ++i)
-      rects[i] = project_sphere_rect(lights[i].position, lights[i].range, view, proj,
-                                     kTiles.viewport).value_or(ScreenRect{});
+      rects[i] =
+          project_sphere_rect(lights[i].position, lights[i].range, view, proj, kTiles.viewport)
+              .value_or(ScreenRect{});
     benchmark::DoNotOptimize(rects.data());
   }
 }

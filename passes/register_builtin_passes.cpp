@@ -1,8 +1,11 @@
 #include "register_builtin_passes.hpp"
 
+#include "anisotropic_blur/anisotropic_blur_pass.hpp"
 #include "deferred_lighting/deferred_lighting_pass.hpp"
 #include "gbuffer/gbuffer_pass.hpp"
+#include "layered_penumbra/layered_penumbra_pass.hpp"
 #include "light_layering/light_layering_pass.hpp"
+#include "tiled_lighting/tiled_lighting_pass.hpp"
 #include "tonemap/tonemap_pass.hpp"
 
 namespace antumbra::passes {
@@ -17,6 +20,12 @@ void register_builtin_passes(fgvk::PassRegistry& registry) {
   registry.add(DeferredLightingPass::describe(), &make_pass<DeferredLightingPass>);
   registry.add(TonemapPass::describe(), &make_pass<TonemapPass>);
   registry.add(LightLayeringPass::describe(), &make_pass<LightLayeringPass>);
+  registry.add(LayeredPenumbraPass::describe(), &make_pass<LayeredPenumbraPass>);
+  registry.add(AnisotropicBlurPass::describe(), &make_pass<AnisotropicBlurPass>);
+  registry.add(TiledLightingPass::describe(), &make_pass<TiledLightingPass>);
+  registry.add(TiledLightingPass::describe_hard(), &make_pass<TiledLightingPass>);
+  registry.add(TiledLightingPass::describe_pcf(), &make_pass<TiledLightingPass>);
+  registry.add(TiledLightingPass::describe_pcss(), &make_pass<TiledLightingPass>);
 }
 
 fgvk::PassRegistry builtin_pass_registry() {

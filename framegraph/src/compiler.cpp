@@ -172,6 +172,12 @@ Result<Plan> compile(const GraphDesc& graph, const Registry& registry, const Com
   compute_lifetimes(plan);
   plan_aliasing(plan, options.footprint ? options.footprint : FootprintFn(default_footprint));
   plan_barriers(plan);
+  // Pass-specific checks that need the whole plan (e.g. caps against storage sizes).
+  for (const PlanPass& pass : plan.passes) {
+    const PassDesc* desc = registry.find(pass.type);
+    if (desc != nullptr && desc->check != nullptr) desc->check(pass, plan, graph, diags);
+  }
+  if (diags.has_errors()) return diags;
   return Result<Plan>(std::move(plan), std::move(diags));
 }
 

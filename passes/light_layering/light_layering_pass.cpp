@@ -1,5 +1,6 @@
 #include "light_layering_pass.hpp"
 
+#include <algorithm>
 #include <cstring>
 #include <functional>
 #include <stdexcept>
@@ -89,7 +90,7 @@ void LightLayeringPass::execute(fgvk::ExecuteContext& context) {
   LayerTableHeader header;
   header.counts = glm::uvec4(static_cast<std::uint32_t>(scene.lights.size()),
                              static_cast<std::uint32_t>(assignment->layers_used),
-                             static_cast<std::uint32_t>(options_.max_layers),
+                             static_cast<std::uint32_t>(std::clamp(options_.max_layers, 1, layering::kMaxLayers)),
                              static_cast<std::uint32_t>(assignment->layers_needed));
   std::byte* out = staging.mapped();
   std::memcpy(out, &header, sizeof header);

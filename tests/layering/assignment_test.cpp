@@ -98,8 +98,8 @@ TEST(CapPolicy, WarningJsonHasTheExpectedKeys) {
   const LayerAssignment a = assign_layers(graph, lights, {Order::dsatur, 2, CapPolicy::fallback});
   ASSERT_EQ(a.warnings.size(), 1u);
   const nlohmann::json j = to_json(a.warnings[0]);
-  for (const char* key : {"code", "severity", "message", "layersNeeded", "cap", "policy",
-                          "lights", "conflictingPairs"})
+  for (const char* key : {"code", "severity", "message", "layersNeeded", "cap", "policy", "lights",
+                          "conflictingPairs"})
     EXPECT_TRUE(j.contains(key)) << key;
   EXPECT_EQ(j["code"], "layer-cap-exceeded");
   EXPECT_EQ(j["cap"], 2);
@@ -176,8 +176,8 @@ TEST(Temporal, RemovedAndAddedLightsKeepOthersByIdNotIndex) {
   const LayerAssignment first = layering.update_world_sphere(lights, {});
   std::map<std::uint64_t, int> by_id;
   for (std::size_t i = 0; i < lights.size(); ++i) by_id[lights[i].id] = first.layer[i];
-  lights.erase(lights.begin() + 3);                       // indices shift
-  std::reverse(lights.begin(), lights.end());             // and shuffle
+  lights.erase(lights.begin() + 3);                                 // indices shift
+  std::reverse(lights.begin(), lights.end());                       // and shuffle
   lights.push_back(testing::make_light(999, {15, 2.5f, 0}, 3.8f));  // new, beside the grid
   const LayerAssignment& second = layering.update_world_sphere(lights, {});
   EXPECT_TRUE(is_proper_colouring(layering.graph(), second.layer));

@@ -2,8 +2,8 @@
 // the sphere projection helper gives tight, conservative rectangles.
 #include <cmath>
 
-#include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "layering_test_support.hpp"
 
@@ -50,8 +50,8 @@ TEST(WorldSphereGraph, TouchingSpheresDoNotConflictAndWeightsAreLensVolumes) {
   EXPECT_TRUE(graph.has_edge(0, 2));
   // Two unit spheres one radius apart: lens volume 5 pi / 12.
   EXPECT_NEAR(graph.adjacent_weights(0)[0], 5.0f * 3.14159265f / 12.0f, 1e-4f);
-  EXPECT_NEAR(sphere_overlap_volume({0, 0, 0}, 3.0f, {0.5f, 0, 0}, 1.0f),
-              4.0f / 3.0f * 3.14159265f, 1e-4f);  // nested: the small sphere
+  EXPECT_NEAR(sphere_overlap_volume({0, 0, 0}, 3.0f, {0.5f, 0, 0}, 1.0f), 4.0f / 3.0f * 3.14159265f,
+              1e-4f);  // nested: the small sphere
 }
 
 TEST(ScreenTileGraph, WorldOverlapFarApartOnScreenIsNoConflict) {
@@ -74,8 +74,8 @@ TEST(ScreenTileGraph, DilationMakesNearRectsConflict) {
 }
 
 TEST(ScreenTileGraph, OffScreenAndEmptyRectsConflictWithNobody) {
-  const std::vector<ScreenRect> rects{{{0, 0}, {300, 300}}, {}, {{-500, -500}, {-400, -400}},
-                                      {{100, 100}, {120, 120}}};
+  const std::vector<ScreenRect> rects{
+      {{0, 0}, {300, 300}}, {}, {{-500, -500}, {-400, -400}}, {{100, 100}, {120, 120}}};
   const ConflictGraph graph = build_screen_tile_graph(rects, {16, 4.0f, {256, 256}});
   EXPECT_EQ(graph.degree(1), 0u);
   EXPECT_EQ(graph.degree(2), 0u);
@@ -132,9 +132,9 @@ TEST(ProjectSphereRect, TightAndConservativeAgainstSampledSilhouette) {
       for (int j = 0; j <= 100; ++j) {
         const float phi = 6.2831853f * static_cast<float>(i) / 200.0f;
         const float theta = 3.14159265f * static_cast<float>(j) / 100.0f;
-        const glm::vec3 p = centre + radius * glm::vec3(std::sin(theta) * std::cos(phi),
-                                                        std::cos(theta),
-                                                        std::sin(theta) * std::sin(phi));
+        const glm::vec3 p =
+            centre + radius * glm::vec3(std::sin(theta) * std::cos(phi), std::cos(theta),
+                                        std::sin(theta) * std::sin(phi));
         const glm::vec4 clip = proj * view * glm::vec4(p, 1.0f);
         const glm::vec2 px = (glm::vec2(clip) / clip.w * 0.5f + 0.5f) * glm::vec2(viewport);
         lo = glm::min(lo, px);

@@ -44,8 +44,7 @@ inline std::vector<LightSphere> fig6_lights() {
 // Lights spread uniformly in a box scaled so that the mean degree stays around
 // `mean_degree` whatever the count; ranges vary by `range_spread` around 1.
 inline std::vector<LightSphere> random_layout(std::uint32_t seed, std::size_t count,
-                                              float mean_degree = 8.0f,
-                                              float range_spread = 0.5f) {
+                                              float mean_degree = 8.0f, float range_spread = 0.5f) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<float> unit(0.0f, 1.0f);
   // Mean degree ~ count * (4/3 pi (2r)^3) / side^3 with r ~ 1.
@@ -60,7 +59,8 @@ inline std::vector<LightSphere> random_layout(std::uint32_t seed, std::size_t co
   return lights;
 }
 
-inline ConflictGraph graph_of(std::size_t n, std::vector<std::pair<std::uint32_t, std::uint32_t>> e) {
+inline ConflictGraph graph_of(std::size_t n,
+                              std::vector<std::pair<std::uint32_t, std::uint32_t>> e) {
   return ConflictGraph::from_edges(n, e);
 }
 
@@ -88,8 +88,7 @@ inline ConflictGraph lattice_graph(std::uint32_t w, std::uint32_t h) {
   return graph_of(w * h, e);
 }
 
-inline constexpr Order kAllOrders[] = {Order::dsatur, Order::smallest_last,
-                                       Order::largest_first, Order::first_fit,
-                                       Order::degree_ascending};
+inline constexpr Order kAllOrders[] = {Order::dsatur, Order::smallest_last, Order::largest_first,
+                                       Order::first_fit, Order::degree_ascending};
 
 }  // namespace antumbra::layering::testing

@@ -210,7 +210,8 @@ ImageView Image::make_view(VkImageViewType type, std::uint32_t base_layer, std::
 }
 
 VkImageView Image::array_view() {
-  if (!desc_.cube) return view_;
+  // Shaders that declare arrays need a 2D_ARRAY view even of a one-layer image.
+  if (!desc_.cube && desc_.layers > 1) return view_;
   if (!array_view_) {
     array_view_ = make_view(VK_IMAGE_VIEW_TYPE_2D_ARRAY, 0, desc_.layers, desc_.name + ".array");
   }

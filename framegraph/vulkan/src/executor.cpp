@@ -134,7 +134,8 @@ void Executor::load(fg::Plan plan) {
     if (!r.aliased) state->bytes += gpu::Image::memory_requirements(gpu_, desc).size;
     out.depth = fg::is_depth_format(r.format);
     out.bound_image = {out.image.handle(),
-                       r.layers > 1 ? out.image.array_view() : out.image.view(),
+                       out.image.view(),
+                       out.image.array_view(),
                        desc.format,
                        r.format,
                        desc.extent,

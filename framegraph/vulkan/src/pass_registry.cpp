@@ -4,12 +4,12 @@
 
 namespace antumbra::fgvk {
 
-void PassRegistry::add(fg::PassDesc desc, PassFactory factory) {
-  if (factory == nullptr) throw std::logic_error("pass type " + desc.type + " has no factory");
+void PassRegistry::add(fg::PassDesc desc, PassFactory make) {
+  if (make == nullptr) throw std::logic_error("pass type " + desc.type + " has no factory");
   if (reflection_.find(desc.type) != nullptr) {
     throw std::logic_error("pass type " + desc.type + " registered twice");
   }
-  factories_.emplace(desc.type, factory);
+  factories_.emplace(desc.type, make);
   reflection_.add(std::move(desc));
 }
 

@@ -19,7 +19,7 @@ inline constexpr int kUncoloured = -1;
 inline constexpr int kExcluded = -2;
 
 struct ColourLimits {
-  int max_colours = INT_MAX;  // colours available: [0, max_colours)
+  int max_colours = INT_MAX;   // colours available: [0, max_colours)
   std::uint32_t reserved = 0;  // bit c set: colour c (< 32) is taken by no vertex coloured here
   // A vertex with no free colour below max_colours: `fallback` leaves it kUncoloured;
   // `least_conflict` gives it the allowed colour with the least summed edge weight to

@@ -18,7 +18,9 @@ constexpr float kMaxCellCoord = 1.0e6f;
 
 // A light with a non-positive or NaN range lights nothing and conflicts with nobody. The
 // grid and the brute-force reference share this predicate so that they agree exactly.
-bool lights_something(const LightSphere& light) { return light.range > 0.0f; }
+bool lights_something(const LightSphere& light) {
+  return light.range > 0.0f;
+}
 
 bool spheres_conflict(const LightSphere& a, const LightSphere& b) {
   if (!lights_something(a) || !lights_something(b)) return false;
@@ -43,33 +45,41 @@ std::uint32_t hash_cell(glm::ivec3 c, std::uint32_t mask) {
 std::uint64_t cell_key(glm::ivec3 c) {
   constexpr std::uint64_t kMask = (std::uint64_t{1} << 21) - 1;
   return ((static_cast<std::uint64_t>(c.x) & kMask) << 42) |
-         ((static_cast<std::uint64_t>(c.y) & kMask) << 21) | (static_cast<std::uint64_t>(c.z) & kMask);
+         ((static_cast<std::uint64_t>(c.y) & kMask) << 21) |
+         (static_cast<std::uint64_t>(c.z) & kMask);
 }
 
 std::size_t bucket_count_for(std::size_t entries) {
   return std::bit_ceil(std::max<std::size_t>(entries * 2, 16));
 }
 
-}  // namespace
-
-float sphere_overlap_volume(glm::vec3 pa, float ra, glm::vec3 pb, float rb) {
+// Inlined into the pair loops; sphere_overlap_volume is the public name.
+inline float overlap_volume(glm::vec3 pa, float ra, glm::vec3 pb, float rb) {
   const float d = glm::length(pa - pb);
   if (!(ra > 0.0f) || !(rb > 0.0f) || d >= ra + rb) return 0.0f;
   const float r_min = std::min(ra, rb);
-  if (d <= std::abs(ra - rb)) return 4.0f / 3.0f * std::numbers::pi_v<float> * r_min * r_min * r_min;
+  if (d <= std::abs(ra - rb))
+    return 4.0f / 3.0f * std::numbers::pi_v<float> * r_min * r_min * r_min;
   // Lens volume: pi (R+r-d)^2 (d^2 + 2d(R+r) - 3(R-r)^2) / (12 d).
   const float lens = ra + rb - d;
   const float diff = ra - rb;
-  return std::numbers::pi_v<float> * lens * lens * (d * d + 2.0f * d * (ra + rb) - 3.0f * diff * diff) /
-         (12.0f * d);
+  return std::numbers::pi_v<float> * lens * lens *
+         (d * d + 2.0f * d * (ra + rb) - 3.0f * diff * diff) / (12.0f * d);
+}
+
+}  // namespace
+
+float sphere_overlap_volume(glm::vec3 pa, float ra, glm::vec3 pb, float rb) {
+  return overlap_volume(pa, ra, pb, rb);
 }
 
 const ConflictGraph& GraphBuilder::build_world_sphere(std::span<const LightSphere> lights) {
   const auto n = static_cast<std::uint32_t>(lights.size());
   edges_.clear();
   big_lights_.clear();
-  // Cell edge = mean lit diameter: a typical sphere covers 1..2 cells per axis, so a
-  // bucket holds a handful of lights and few pairs are tested per light.
+  // Cell edge = 1.5 mean lit diameters: a typical sphere covers 1..2 cells per axis. The
+  // pair test is branch-free and cheap, so fewer, fuller cells win: at 1024 lights of mean
+  // degree 8 the build took 265 / 233 / 172 / 171 us for 0.75 / 1 / 1.5 / 2 diameters.
   double range_sum = 0.0;
   std::uint32_t finite = 0;
   for (const LightSphere& l : lights) {
@@ -78,7 +88,7 @@ const ConflictGraph& GraphBuilder::build_world_sphere(std::span<const LightSpher
       ++finite;
     }
   }
-  const float cell = finite > 0 ? static_cast<float>(2.0 * range_sum / finite) : 1.0f;
+  const float cell = finite > 0 ? static_cast<float>(3.0 * range_sum / finite) : 1.0f;
   const float inv_cell = 1.0f / cell;
 
   cell_min_.resize(n);
@@ -137,23 +147,32 @@ const ConflictGraph& GraphBuilder::build_world_sphere(std::span<const LightSpher
   for (std::size_t b = buckets; b > 0; --b) bucket_start_[b] = bucket_start_[b - 1];
   bucket_start_[0] = 0;
 
+  std::uint32_t largest_bucket = 0;
+  for (std::size_t b = 0; b < buckets; ++b)
+    largest_bucket = std::max(largest_bucket, bucket_start_[b + 1] - bucket_start_[b]);
+  if (candidates_.size() < largest_bucket) candidates_.resize(largest_bucket);
   for (std::size_t b = 0; b < buckets; ++b) {
     const std::uint32_t end = bucket_start_[b + 1];
     for (std::uint32_t x = bucket_start_[b]; x < end; ++x) {
       const CellEntry& ex = entries_[x];
+      // Branch-free filter into a candidate list: the tests fail or pass unpredictably, and
+      // a mispredicted branch per pair cost more than the test itself. A pair passes when
+      // both entries are the same cell (hash collisions share buckets), that cell is the
+      // pair's first shared cell (so the pair is reported once) and the spheres intersect.
+      std::uint32_t count = 0;
       for (std::uint32_t y = x + 1; y < end; ++y) {
         const CellEntry& ey = entries_[y];
         const glm::vec3 d = ex.position - ey.position;
         const float reach = ex.range + ey.range;
-        // Non-short-circuit: one rarely taken branch instead of three unpredictable ones.
-        // Same cell (hash collisions share buckets), pair reported only in its first shared
-        // cell (so once), spheres intersect.
-        const bool hit = (ex.key == ey.key) & ((ex.first | ey.first) == 7u) &
-                         (glm::dot(d, d) < reach * reach);
-        if (!hit) continue;
-        edges_.push_back(Edge{ex.light, ey.light,
-                              sphere_overlap_volume(ex.position, ex.range, ey.position,
-                                                    ey.range)});
+        const bool hit =
+            (ex.key == ey.key) & ((ex.first | ey.first) == 7u) & (glm::dot(d, d) < reach * reach);
+        candidates_[count] = y;
+        count += hit ? 1u : 0u;
+      }
+      for (std::uint32_t k = 0; k < count; ++k) {
+        const CellEntry& ey = entries_[candidates_[k]];
+        edges_.push_back(
+            Edge{ex.light, ey.light, overlap_volume(ex.position, ex.range, ey.position, ey.range)});
       }
     }
   }
@@ -167,8 +186,8 @@ const ConflictGraph& GraphBuilder::build_world_sphere(std::span<const LightSpher
         continue;
       if (!spheres_conflict(lights[i], lights[j])) continue;
       const float w = std::isfinite(lights[i].range) && std::isfinite(lights[j].range)
-                          ? sphere_overlap_volume(lights[i].position, lights[i].range,
-                                                  lights[j].position, lights[j].range)
+                          ? overlap_volume(lights[i].position, lights[i].range, lights[j].position,
+                                           lights[j].range)
                           : 1.0f;
       edges_.push_back(Edge{i, j, w});
     }
@@ -183,8 +202,8 @@ const ConflictGraph& GraphBuilder::build_screen_tile(std::span<const ScreenRect>
   edges_.clear();
   const float tile = static_cast<float>(std::max(params.tile_size, 1));
   const bool clamp = params.viewport.x > 0 && params.viewport.y > 0;
-  const glm::ivec2 tiles_on_screen = (params.viewport + std::max(params.tile_size, 1) - 1) /
-                                     std::max(params.tile_size, 1);
+  const glm::ivec2 tiles_on_screen =
+      (params.viewport + std::max(params.tile_size, 1) - 1) / std::max(params.tile_size, 1);
   // Inclusive tile range per light (x0, y0, x1, y1); x1 < x0 means off screen.
   tile_range_.resize(n);
   glm::ivec2 lo(std::numeric_limits<int>::max());
@@ -236,7 +255,8 @@ const ConflictGraph& GraphBuilder::build_screen_tile(std::span<const ScreenRect>
     if (tile_range_[i].z < tile_range_[i].x) continue;
     const glm::ivec4 b = bin_range(tile_range_[i]);
     for (int y = b.y; y <= b.w; ++y)
-      for (int x = b.x; x <= b.z; ++x) ++bucket_start_[static_cast<std::size_t>(y * bins.x + x) + 1];
+      for (int x = b.x; x <= b.z; ++x)
+        ++bucket_start_[static_cast<std::size_t>(y * bins.x + x) + 1];
   }
   for (std::size_t b = 0; b < bin_count; ++b) bucket_start_[b + 1] += bucket_start_[b];
   tile_lights_.resize(bucket_start_[bin_count]);
@@ -244,7 +264,8 @@ const ConflictGraph& GraphBuilder::build_screen_tile(std::span<const ScreenRect>
     if (tile_range_[i].z < tile_range_[i].x) continue;
     const glm::ivec4 b = bin_range(tile_range_[i]);
     for (int y = b.y; y <= b.w; ++y)
-      for (int x = b.x; x <= b.z; ++x) tile_lights_[bucket_start_[static_cast<std::size_t>(y * bins.x + x)]++] = i;
+      for (int x = b.x; x <= b.z; ++x)
+        tile_lights_[bucket_start_[static_cast<std::size_t>(y * bins.x + x)]++] = i;
   }
   for (std::size_t b = bin_count; b > 0; --b) bucket_start_[b] = bucket_start_[b - 1];
   bucket_start_[0] = 0;
@@ -323,9 +344,8 @@ ConflictGraph build_world_sphere_graph_brute_force(std::span<const LightSphere> 
   return ConflictGraph::from_edges(n, edges);
 }
 
-std::optional<ScreenRect> project_sphere_rect(glm::vec3 centre, float radius,
-                                              const glm::mat4& view, const glm::mat4& proj,
-                                              glm::ivec2 viewport) {
+std::optional<ScreenRect> project_sphere_rect(glm::vec3 centre, float radius, const glm::mat4& view,
+                                              const glm::mat4& proj, glm::ivec2 viewport) {
   if (!(radius > 0.0f) || viewport.x <= 0 || viewport.y <= 0) return std::nullopt;
   const glm::vec4 c = view * glm::vec4(centre, 1.0f);
   const float depth = -c.z;  // distance in front of the camera plane

@@ -49,6 +49,7 @@ class GraphBuilder {
   std::vector<std::uint32_t> big_lights_;
   std::vector<std::uint32_t> bucket_start_;
   std::vector<CellEntry> entries_;
+  std::vector<std::uint32_t> candidates_;
   std::vector<glm::ivec4> tile_range_;
   std::vector<std::uint32_t> tile_lights_;
   std::vector<std::uint32_t> scratch_offsets_;

@@ -42,17 +42,25 @@ std::string names_for_message(std::span<const std::string> names) {
 void PreviousAssignment::record(std::span<const LightSphere> lights,
                                 const LayerAssignment& assignment) {
   entries_.clear();
-  for (std::size_t i = 0; i < lights.size() && i < assignment.layer.size(); ++i)
+  by_id_.clear();
+  for (std::size_t i = 0; i < lights.size() && i < assignment.layer.size(); ++i) {
     entries_.push_back(
         Entry{lights[i].id, assignment.layer[i], lights[i].position, lights[i].range});
-  std::sort(entries_.begin(), entries_.end(),
-            [](const Entry& a, const Entry& b) { return a.id < b.id; });
+    by_id_.push_back(static_cast<std::uint32_t>(i));
+  }
+  // Usually already sorted (ids rarely change order); check before sorting.
+  auto less = [&](std::uint32_t a, std::uint32_t b) { return entries_[a].id < entries_[b].id; };
+  if (!std::is_sorted(by_id_.begin(), by_id_.end(), less))
+    std::sort(by_id_.begin(), by_id_.end(), less);
 }
 
-const PreviousAssignment::Entry* PreviousAssignment::find(std::uint64_t id) const {
-  auto it = std::lower_bound(entries_.begin(), entries_.end(), id,
-                             [](const Entry& e, std::uint64_t key) { return e.id < key; });
-  return it != entries_.end() && it->id == id ? &*it : nullptr;
+const PreviousAssignment::Entry* PreviousAssignment::find(std::uint64_t id,
+                                                          std::size_t index_hint) const {
+  if (index_hint < entries_.size() && entries_[index_hint].id == id) return &entries_[index_hint];
+  auto it =
+      std::lower_bound(by_id_.begin(), by_id_.end(), id,
+                       [&](std::uint32_t e, std::uint64_t key) { return entries_[e].id < key; });
+  return it != by_id_.end() && entries_[*it].id == id ? &entries_[*it] : nullptr;
 }
 
 const LayerAssignment& Layering::assign(const ConflictGraph& graph,
@@ -77,7 +85,7 @@ const LayerAssignment& Layering::assign(const ConflictGraph& graph,
       if (!lights[i].own_layer || colours_[i] != kUncoloured) continue;
       if (pass == 0) {
         ++own_count;
-        const PreviousAssignment::Entry* e = previous ? previous->find(lights[i].id) : nullptr;
+        const PreviousAssignment::Entry* e = previous ? previous->find(lights[i].id, i) : nullptr;
         if (e && e->layer >= 0 && e->layer < cap && !((reserved >> e->layer) & 1u)) {
           colours_[i] = e->layer;
           reserved |= 1u << e->layer;
@@ -140,18 +148,18 @@ const LayerAssignment& Layering::assign(const ConflictGraph& graph,
   return result_;
 }
 
-void Layering::keep_previous_layers(const ConflictGraph& graph,
-                                    std::span<const LightSphere> lights,
+void Layering::keep_previous_layers(const ConflictGraph& graph, std::span<const LightSphere> lights,
                                     const PreviousAssignment& previous, int cap,
                                     std::uint32_t reserved) {
   const auto n = static_cast<std::uint32_t>(lights.size());
   motion_.assign(n, 0.0f);
   for (std::uint32_t i = 0; i < n; ++i) {
     if (lights[i].own_layer) continue;
-    const PreviousAssignment::Entry* e = previous.find(lights[i].id);
+    const PreviousAssignment::Entry* e = previous.find(lights[i].id, i);
     if (!e || e->layer < 0 || e->layer >= cap || ((reserved >> e->layer) & 1u)) continue;
     colours_[i] = e->layer;
-    motion_[i] = glm::length(lights[i].position - e->position) + std::abs(lights[i].range - e->range);
+    motion_[i] =
+        glm::length(lights[i].position - e->position) + std::abs(lights[i].range - e->range);
   }
   // Two neighbours that both kept one layer now conflict: the one that moved more (ties:
   // the later index) gives its layer up and is recoloured.
@@ -172,17 +180,29 @@ void Layering::add_warnings(const ConflictGraph& graph, std::span<const LightSph
                             std::span<const std::uint32_t> overflow, int cap,
                             std::uint32_t reserved, CapPolicy policy) {
   if (!own_overflow_.empty()) {
-    LayerWarning w{kOwnLayerCapExceeded, own_overflow_, {}, result_.layers_needed, cap,
-                   CapPolicy::fallback, {}, {}};
+    LayerWarning w{kOwnLayerCapExceeded,
+                   own_overflow_,
+                   {},
+                   result_.layers_needed,
+                   cap,
+                   CapPolicy::fallback,
+                   {},
+                   {}};
     for (std::uint32_t i : w.lights) w.light_names.push_back(lights[i].name);
     w.message = std::to_string(w.lights.size()) + " own-layer light(s) found no free layer (" +
-                std::to_string(cap) + " allowed) and fall back to hard shadows: " +
-                names_for_message(w.light_names);
+                std::to_string(cap) +
+                " allowed) and fall back to hard shadows: " + names_for_message(w.light_names);
     result_.warnings.push_back(std::move(w));
   }
   if (overflow.empty()) return;
-  LayerWarning w{kLayerCapExceeded, {overflow.begin(), overflow.end()}, {},
-                 result_.layers_needed, cap, policy, {}, {}};
+  LayerWarning w{kLayerCapExceeded,
+                 {overflow.begin(), overflow.end()},
+                 {},
+                 result_.layers_needed,
+                 cap,
+                 policy,
+                 {},
+                 {}};
   std::sort(w.lights.begin(), w.lights.end());
   for (std::uint32_t v : w.lights) {
     w.light_names.push_back(lights[v].name);
@@ -228,8 +248,7 @@ const LayerAssignment& Layering::update_screen_tile(std::span<const LightSphere>
 }
 
 LayerAssignment assign_layers(const ConflictGraph& graph, std::span<const LightSphere> lights,
-                              const LayeringOptions& options,
-                              const PreviousAssignment* previous) {
+                              const LayeringOptions& options, const PreviousAssignment* previous) {
   Layering layering;
   return layering.assign(graph, lights, options, previous);
 }
@@ -242,14 +261,11 @@ nlohmann::json to_json(const LayerWarning& warning) {
   }
   nlohmann::json pairs = nlohmann::json::array();
   for (auto [a, b] : warning.conflicting_pairs) pairs.push_back({a, b});
-  return nlohmann::json{{"code", warning.code},
-                        {"severity", "warning"},
-                        {"message", warning.message},
-                        {"layersNeeded", warning.layers_needed},
-                        {"cap", warning.cap},
-                        {"policy", std::string(to_string(warning.policy))},
-                        {"lights", std::move(lights)},
-                        {"conflictingPairs", std::move(pairs)}};
+  return nlohmann::json{
+      {"code", warning.code},        {"severity", "warning"},
+      {"message", warning.message},  {"layersNeeded", warning.layers_needed},
+      {"cap", warning.cap},          {"policy", std::string(to_string(warning.policy))},
+      {"lights", std::move(lights)}, {"conflictingPairs", std::move(pairs)}};
 }
 
 nlohmann::json to_json(const LayerAssignment& assignment) {

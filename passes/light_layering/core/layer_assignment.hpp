@@ -2,6 +2,7 @@
 // Light -> shadow-layer assignment under an artist cap, stable from frame to frame, with
 // structured warnings whenever the layout needs more layers than the cap allows.
 
+#include <cstddef>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -16,7 +17,7 @@
 
 namespace antumbra::layering {
 
-inline constexpr int kMaxLayers = 32;  // one R32UI bit per layer in the penumbra pass
+inline constexpr int kMaxLayers = 32;      // one R32UI bit per layer in the penumbra pass
 inline constexpr int kFallbackLayer = -1;  // shadow drawn by the hard/PCF path instead
 
 struct LayeringOptions {
@@ -31,9 +32,9 @@ inline constexpr const char* kOwnLayerCapExceeded = "own-layer-cap-exceeded";
 
 struct LayerWarning {
   std::string code;
-  std::vector<std::uint32_t> lights;  // indices into this frame's light list, ascending
+  std::vector<std::uint32_t> lights;     // indices into this frame's light list, ascending
   std::vector<std::string> light_names;  // parallel to `lights`
-  int layers_needed = 0;  // uncapped colouring's layer count (own layers included)
+  int layers_needed = 0;                 // uncapped colouring's layer count (own layers included)
   int cap = 0;
   CapPolicy policy = CapPolicy::least_conflict;
   // (overflowing light, light blocking one allowed layer): one witness per layer, so the
@@ -43,12 +44,12 @@ struct LayerWarning {
 };
 
 struct LayerAssignment {
-  std::vector<int> layer;  // per light: [0, cap) or kFallbackLayer
-  std::vector<bool> fallback;  // layer[i] == kFallbackLayer
-  int layers_used = 0;  // 1 + the highest layer assigned
-  int layers_needed = 0;  // fresh, uncapped colouring (own layers included)
+  std::vector<int> layer;                // per light: [0, cap) or kFallbackLayer
+  std::vector<bool> fallback;            // layer[i] == kFallbackLayer
+  int layers_used = 0;                   // 1 + the highest layer assigned
+  int layers_needed = 0;                 // fresh, uncapped colouring (own layers included)
   std::uint32_t kept_from_previous = 0;  // lights that kept last frame's layer
-  std::vector<LayerWarning> warnings;  // empty when the layout fits the cap
+  std::vector<LayerWarning> warnings;    // empty when the layout fits the cap
 };
 
 // Last frame's layers keyed by stable light id (not index), plus where each light was, so
@@ -68,22 +69,22 @@ class PreviousAssignment {
   }
   // Replaces the content, reusing storage.
   void record(std::span<const LightSphere> lights, const LayerAssignment& assignment);
-  [[nodiscard]] const Entry* find(std::uint64_t id) const;
+  // The entry of light `id`; `index_hint` (the light's index this frame) is checked first,
+  // since light lists rarely reorder, before a binary search by id.
+  [[nodiscard]] const Entry* find(std::uint64_t id, std::size_t index_hint = SIZE_MAX) const;
   [[nodiscard]] std::span<const Entry> entries() const { return entries_; }
   [[nodiscard]] bool empty() const { return entries_.empty(); }
 
  private:
-  std::vector<Entry> entries_;  // sorted by id
+  std::vector<Entry> entries_;        // in last frame's light order
+  std::vector<std::uint32_t> by_id_;  // indices into entries_, sorted by id
 };
 
-// Per-frame driver holding every scratch buffer (graph builder, colourer, result) and the
-// previous frame's assignment. Not thread-safe; one per view.
 class Layering {
  public:
   // Assigns layers for a graph built by the caller (graph vertex i = lights[i]).
   const LayerAssignment& assign(const ConflictGraph& graph, std::span<const LightSphere> lights,
-                                const LayeringOptions& options,
-                                const PreviousAssignment* previous);
+                                const LayeringOptions& options, const PreviousAssignment* previous);
   // One frame with the world-sphere criterion; the result becomes the next frame's previous.
   const LayerAssignment& update_world_sphere(std::span<const LightSphere> lights,
                                              const LayeringOptions& options);

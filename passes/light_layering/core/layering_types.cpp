@@ -72,10 +72,18 @@ ConflictGraph ConflictGraph::from_edges(
   return graph;
 }
 
-std::string_view to_string(Order order) { return name_of(kOrderNames, order); }
-std::string_view to_string(CapPolicy policy) { return name_of(kPolicyNames, policy); }
-std::string_view to_string(Criterion criterion) { return name_of(kCriterionNames, criterion); }
-std::optional<Order> parse_order(std::string_view name) { return parse_name(kOrderNames, name); }
+std::string_view to_string(Order order) {
+  return name_of(kOrderNames, order);
+}
+std::string_view to_string(CapPolicy policy) {
+  return name_of(kPolicyNames, policy);
+}
+std::string_view to_string(Criterion criterion) {
+  return name_of(kCriterionNames, criterion);
+}
+std::optional<Order> parse_order(std::string_view name) {
+  return parse_name(kOrderNames, name);
+}
 std::optional<CapPolicy> parse_cap_policy(std::string_view name) {
   return parse_name(kPolicyNames, name);
 }

@@ -57,9 +57,7 @@ struct ConflictGraph {
 
   [[nodiscard]] std::size_t vertex_count() const { return offsets.size() - 1; }
   [[nodiscard]] std::size_t edge_count() const { return neighbours.size() / 2; }
-  [[nodiscard]] std::uint32_t degree(std::uint32_t v) const {
-    return offsets[v + 1] - offsets[v];
-  }
+  [[nodiscard]] std::uint32_t degree(std::uint32_t v) const { return offsets[v + 1] - offsets[v]; }
   [[nodiscard]] std::span<const std::uint32_t> adjacent(std::uint32_t v) const {
     return {neighbours.data() + offsets[v], degree(v)};
   }

@@ -63,4 +63,8 @@ inline constexpr const char* kOutputNotProduced = "FG073";  // no executed pass 
 inline constexpr const char* kPassCulled = "FG074";         // note: outputs reach nothing
 inline constexpr const char* kPassDisabled = "FG075";       // note: "enabled": false
 
+// Pass-specific checks over the whole plan (PassDesc::check).
+inline constexpr const char* kLayerCapExceedsStorage = "FG090";  // cap k > layers storage holds
+inline constexpr const char* kLayerStorageMismatch = "FG091";    // layered images disagree
+
 }  // namespace antumbra::fg::codes

@@ -99,12 +99,24 @@ struct ParamDesc {
   std::string description;
 };
 
+class Diagnostics;
+struct GraphDesc;
+struct Plan;
+struct PlanPass;
+
+// A check that spans passes and so cannot be expressed by one port or parameter (for
+// example: a layer cap larger than the layer storage downstream can hold). Runs on
+// the compiled plan; reports located diagnostics through graph.document.
+using PassCheck = void (*)(const PlanPass& pass, const Plan& plan, const GraphDesc& graph,
+                           Diagnostics& diagnostics);
+
 struct PassDesc {
   std::string type;  // registry name, e.g. "gbuffer"
   std::string description;
   std::vector<PortDesc> ports;
   std::vector<ParamDesc> params;
   bool side_effects = false;  // never culled (e.g. writes to the host)
+  PassCheck check = nullptr;
 
   [[nodiscard]] const PortDesc* find_port(std::string_view name) const;
   [[nodiscard]] const ParamDesc* find_param(std::string_view name) const;

@@ -40,7 +40,8 @@ class PassError : public std::runtime_error {
 // A graph image as a pass sees it.
 struct BoundImage {
   VkImage image = VK_NULL_HANDLE;
-  VkImageView view = VK_NULL_HANDLE;  // all layers (2D, or 2D array when layers > 1)
+  VkImageView view = VK_NULL_HANDLE;        // all layers (2D, or 2D array when layers > 1)
+  VkImageView array_view = VK_NULL_HANDLE;  // all layers as a 2D array, even for one layer
   VkFormat format = VK_FORMAT_UNDEFINED;
   fg::Format graph_format = fg::Format::undefined;
   VkExtent2D extent{};

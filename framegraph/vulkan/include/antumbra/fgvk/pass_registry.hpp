@@ -13,7 +13,7 @@ namespace antumbra::fgvk {
 
 class PassRegistry {
  public:
-  void add(fg::PassDesc desc, PassFactory factory);
+  void add(fg::PassDesc desc, PassFactory make);
   [[nodiscard]] const fg::Registry& reflection() const { return reflection_; }
   // nullptr when the type is unknown.
   [[nodiscard]] PassFactory factory(std::string_view type) const;

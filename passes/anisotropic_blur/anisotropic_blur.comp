@@ -1,0 +1,111 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// One direction of the separable, depth-aware, anisotropic Gaussian blur of the layered
+// shadow (TECHNIQUE.md section 1, step 5), at the resolution of its output (half
+// resolution in the default graphs). The first direction reads the full-resolution
+// hard-shadow bits, averaging the 2x2 texels under each half-resolution texel (the
+// supersampling that hides blockiness); the second reads the first's result.
+//
+// Kernel radius in output pixels, per layer:
+//   penumbra_width * focal / view_depth * sqrt(max(n_view.z, 0.25))
+// where penumbra_width comes from layered-penumbra in world units. Taps whose linear
+// depth differs from the centre's by more than depth_threshold (relative) are skipped,
+// so shadows do not bleed across depth edges.
+
+layout(local_size_x = 8, local_size_y = 8) in;
+
+#include "../common/frame.glsl"
+
+layout(set = 0, binding = 0) uniform Frame { FrameUniforms frame; };
+layout(set = 0, binding = 1) uniform sampler2D g_depth;
+layout(set = 0, binding = 2) uniform sampler2D g_normal;
+layout(set = 0, binding = 3) uniform sampler2DArray penumbra;
+#ifdef FROM_HARD_BITS
+layout(set = 0, binding = 4) uniform usampler2D hard_bits;
+#else
+layout(set = 0, binding = 4) uniform sampler2DArray source;
+#endif
+layout(set = 0, binding = 5, rgba16f) uniform writeonly image2DArray shadow_out;
+
+layout(push_constant) uniform Params {
+  vec2 direction;         // unit step in output pixels
+  float depth_threshold;  // relative linear-depth difference that rejects a tap
+  float max_radius;       // output pixels
+  uint half_taps;         // (kernel - 1) / 2
+  uint slots;             // array layers of the output (4 shadow layers each)
+  uint layers;            // shadow layers in use
+  uint pad;
+};
+
+float linear_depth(ivec2 full_pixel) {
+  float d = texelFetch(g_depth, full_pixel, 0).r;
+  vec2 ndc = (vec2(full_pixel) + 0.5) * frame.viewport.zw * 2.0 - 1.0;
+  vec4 view = frame.inv_proj * vec4(ndc, d, 1.0);
+  return -view.z / view.w;
+}
+
+vec4 visibility(ivec2 out_pixel, uint slot, ivec2 full_size, ivec2 scale) {
+#ifdef FROM_HARD_BITS
+  // Supersample: average the full-resolution bits under this output texel.
+  vec4 sum = vec4(0.0);
+  int count = 0;
+  for (int y = 0; y < scale.y; ++y) {
+    for (int x = 0; x < scale.x; ++x) {
+      ivec2 p = min(out_pixel * scale + ivec2(x, y), full_size - 1);
+      uint bits = texelFetch(hard_bits, p, 0).r >> (4u * slot);
+      sum += vec4(uvec4(bits, bits >> 1u, bits >> 2u, bits >> 3u) & 1u);
+      ++count;
+    }
+  }
+  return vec4(1.0) - sum / float(count);
+#else
+  return texelFetch(source, ivec3(out_pixel, int(slot)), 0);
+#endif
+}
+
+void main() {
+  ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+  ivec2 out_size = imageSize(shadow_out).xy;
+  if (any(greaterThanEqual(pixel, out_size))) return;
+  ivec2 full_size = textureSize(g_depth, 0);
+  ivec2 scale = max(full_size / out_size, ivec2(1));
+  ivec2 full_pixel = min(pixel * scale, full_size - 1);
+
+  float depth01 = texelFetch(g_depth, full_pixel, 0).r;
+  if (depth01 >= 1.0) {
+    for (uint s = 0u; s < slots; ++s) imageStore(shadow_out, ivec3(pixel, int(s)), vec4(1.0));
+    return;
+  }
+  float z_centre = linear_depth(full_pixel);
+  vec3 n_view = normalize(texelFetch(g_normal, full_pixel, 0).xyz);
+  float anisotropy = sqrt(max(n_view.z, 0.25));
+  // Focal length in output pixels: world size w at depth z covers w * focal / z pixels.
+  float focal = frame.projection.y * 0.5 * float(out_size.y);
+
+  for (uint s = 0u; s < slots; ++s) {
+    vec4 width = texelFetch(penumbra, ivec3(pixel, int(s)), 0);
+    vec4 radius = clamp(width * focal / z_centre * anisotropy, vec4(0.0), vec4(max_radius));
+    vec4 centre = visibility(pixel, s, full_size, scale);
+    vec4 sum = centre;
+    vec4 weight_sum = vec4(1.0);
+    float sigma = max(float(half_taps) * 0.5, 0.5);
+    for (int t = 1; t <= int(half_taps); ++t) {
+      float w_tap = exp(-0.5 * float(t * t) / (sigma * sigma));
+      for (int side = -1; side <= 1; side += 2) {
+        // Each layer has its own radius: taps are spaced so the kernel spans it.
+        vec4 offset = radius * (float(side * t) / float(half_taps));
+        for (uint c = 0u; c < 4u; ++c) {
+          if (s * 4u + c >= layers || radius[c] < 0.5) continue;
+          ivec2 tap = ivec2(round(vec2(pixel) + direction * offset[c]));
+          tap = clamp(tap, ivec2(0), out_size - 1);
+          ivec2 tap_full = min(tap * scale, full_size - 1);
+          if (texelFetch(g_depth, tap_full, 0).r >= 1.0) continue;
+          if (abs(linear_depth(tap_full) - z_centre) > depth_threshold * z_centre) continue;
+          sum[c] += w_tap * visibility(tap, s, full_size, scale)[c];
+          weight_sum[c] += w_tap;
+        }
+      }
+    }
+    imageStore(shadow_out, ivec3(pixel, int(s)), sum / weight_sum);
+  }
+}

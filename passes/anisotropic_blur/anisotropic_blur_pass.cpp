@@ -1,0 +1,93 @@
+#include "anisotropic_blur_pass.hpp"
+
+#include <array>
+#include <cmath>
+
+#include "antumbra/gpu/context.hpp"
+#include "antumbra/gpu/pipelines.hpp"
+#include "common/frame_resources.hpp"
+#include "common/pass_support.hpp"
+
+namespace antumbra::passes {
+namespace {
+
+struct PushConstants {
+  float direction[2];
+  float depth_threshold;
+  float max_radius;
+  std::uint32_t half_taps;
+  std::uint32_t slots;
+  std::uint32_t layers;
+  std::uint32_t pad;
+};
+
+constexpr VkShaderStageFlags kCompute = VK_SHADER_STAGE_COMPUTE_BIT;
+
+}  // namespace
+
+AnisotropicBlurPass::AnisotropicBlurPass(const fg::PlanPass& /*pass*/) {}
+
+void AnisotropicBlurPass::prepare(fgvk::PrepareContext& context) {
+  from_hard_bits_ = context.bindings.image("hardShadow") != nullptr;
+  std::vector<gpu::ShaderDefine> defines;
+  if (from_hard_bits_) defines.push_back({"FROM_HARD_BITS", "1"});
+  auto shader = load_shader(context, "anisotropic_blur/anisotropic_blur.comp", shader_files_, defines);
+  set_layout_ = gpu::DescriptorSetLayoutBuilder()
+                    .uniform_buffer(0, kCompute)
+                    .combined_image_sampler(1, kCompute)
+                    .combined_image_sampler(2, kCompute)
+                    .combined_image_sampler(3, kCompute)
+                    .combined_image_sampler(4, kCompute)
+                    .storage_image(5, kCompute)
+                    .build(context.gpu, context.pass.name + ".set");
+  const std::array<VkDescriptorSetLayout, 1> sets{set_layout_};
+  const std::array<VkPushConstantRange, 1> push{{{kCompute, 0, sizeof(PushConstants)}}};
+  layout_ = gpu::create_pipeline_layout(context.gpu, sets, push, context.pass.name + ".layout");
+  pipeline_ = gpu::create_compute_pipeline(context.gpu, layout_, shader, context.pass.name + ".pipeline",
+                                           context.pipeline_cache);
+}
+
+void AnisotropicBlurPass::execute(fgvk::ExecuteContext& context) {
+  const auto& b = context.bindings;
+  const auto& depth = b.required_image("depth");
+  const auto& normal = b.required_image("normal");
+  const auto& penumbra = b.required_image("penumbra");
+  const auto& shadow = b.required_image("shadow");
+  const auto& input = b.required_image(from_hard_bits_ ? "hardShadow" : "source");
+  const VkSampler nearest = context.samplers.nearest_clamp;
+
+  const VkCommandBuffer cmd = context.cmd;
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
+  gpu::PushDescriptors()
+      .uniform_buffer(0, context.frame.frame_uniforms)
+      .combined_image_sampler(1, depth.view, nearest, depth.layout)
+      .combined_image_sampler(2, normal.view, nearest, normal.layout)
+      .combined_image_sampler(3, penumbra.array_view, nearest, penumbra.layout)
+      .combined_image_sampler(4, from_hard_bits_ ? input.view : input.array_view, nearest, input.layout)
+      .storage_image(5, shadow.array_view, shadow.layout)
+      .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
+
+  const bool vertical = param_string(context.pass, "direction") == "vertical";
+  float dx = vertical ? 0.0f : 1.0f;
+  float dy = vertical ? 1.0f : 0.0f;
+  if (param_bool(context.pass, "rotated")) {
+    // atan(1/2) = 26.565 degrees: taps no longer line up with wall edges.
+    const float angle = std::atan(0.5f);
+    const float rx = dx * std::cos(angle) - dy * std::sin(angle);
+    const float ry = dx * std::sin(angle) + dy * std::cos(angle);
+    dx = rx;
+    dy = ry;
+  }
+  const auto kernel = static_cast<std::uint32_t>(std::stoi(param_string(context.pass, "kernel")));
+  const PushConstants constants{{dx, dy},
+                                param_float(context.pass, "depthThreshold"),
+                                param_float(context.pass, "maxRadius"),
+                                (kernel - 1) / 2,
+                                shadow.layers,
+                                penumbra.layers * 4,
+                                0};
+  vkCmdPushConstants(cmd, layout_, kCompute, 0, sizeof constants, &constants);
+  vkCmdDispatch(cmd, (shadow.extent.width + 7) / 8, (shadow.extent.height + 7) / 8, 1);
+}
+
+}  // namespace antumbra::passes

@@ -1,0 +1,50 @@
+#include "layer_checks.hpp"
+
+#include "antumbra/fg/diagnostic_codes.hpp"
+
+namespace antumbra::passes {
+namespace {
+
+int bound_resource(const fg::PlanPass& pass, std::string_view port) {
+  for (const auto& b : pass.bindings) {
+    if (b.port == port) return b.resource;
+  }
+  return -1;
+}
+
+}  // namespace
+
+LayerCap find_layer_cap(const fg::PlanPass& pass, const fg::Plan& plan, std::string_view layer_port) {
+  const int table = bound_resource(pass, layer_port);
+  if (table < 0) return {};
+  for (const auto& other : plan.passes) {
+    if (other.type != "light-layering") continue;
+    for (const auto& b : other.bindings) {
+      if (b.resource == table && fg::is_write(b.access)) {
+        const auto it = other.params.find("maxLayers");
+        return {it != other.params.end() && it->is_number_integer() ? it->get<int>() : 0,
+                other.source_index};
+      }
+    }
+  }
+  return {};
+}
+
+void check_layer_storage(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& graph,
+                         const LayerCap& cap, std::string_view port, fg::Diagnostics& diagnostics) {
+  const int image = bound_resource(pass, port);
+  if (cap.source_index < 0 || image < 0) return;
+  const auto& resource = plan.resources[static_cast<std::size_t>(image)];
+  const int capacity = static_cast<int>(resource.layers) * 4;
+  if (cap.max_layers <= capacity) return;
+  const std::string pointer = "/passes/" + std::to_string(cap.source_index) + "/params/maxLayers";
+  diagnostics.add(graph.document.make(
+      fg::codes::kLayerCapExceedsStorage, fg::Severity::error,
+      "the layer cap maxLayers = " + std::to_string(cap.max_layers) + " needs " +
+          std::to_string((cap.max_layers + 3) / 4) + " array layer(s) in '" + resource.name +
+          "' (port " + std::string(port) + " of pass '" + pass.name + "'), which has " +
+          std::to_string(resource.layers) + " (4 shadow layers each)",
+      pointer));
+}
+
+}  // namespace antumbra::passes

@@ -1,0 +1,120 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// Batched layered penumbra estimation (TECHNIQUE.md section 1, step 4): one dispatch
+// reads every light's shadow faces through one sampler2DArray and writes, per pixel
+// and per screen layer, the penumbra width (4 layers per RGBA16F texel, array layers
+// beyond 4), a hard-shadow bit (32 layers in one R32UI) and the translucent shadow
+// colour (4 layers per RGBA32UI texel, r<<24|g<<16|b<<8|a).
+//
+// Lights of one layer do not overlap (light-layering guarantees it up to the cap), so
+// at most one light feeds a layer at a pixel; when an over-cap policy made two share
+// a layer, the lower light index wins, so the result is deterministic.
+
+layout(local_size_x = 16, local_size_y = 16) in;
+
+#define TILE_LIGHTS_MAX 256
+#include "../common/frame.glsl"
+#include "../common/layer_table.glsl"
+#include "../common/lights.glsl"
+#include "../common/shadow_data.glsl"
+
+layout(set = 0, binding = 0) uniform Frame { FrameUniforms frame; };
+layout(set = 0, binding = 1) readonly buffer Lights { GpuLight lights[]; };
+layout(set = 0, binding = 2) readonly buffer Shadows {
+  ShadowHeader shadow_header;
+  ShadowLight shadow_lights[ANTUMBRA_MAX_SHADOW_LIGHTS];
+  ShadowFace faces[];
+};
+layout(set = 0, binding = 3) readonly buffer Layers {
+  LayerTableHeader layer_header;
+  uint layer_of[ANTUMBRA_MAX_SHADOW_LIGHTS];
+};
+layout(set = 0, binding = 4) uniform sampler2D g_depth;
+layout(set = 0, binding = 5) uniform sampler2D g_normal;
+layout(set = 0, binding = 6) uniform sampler2DArray atlas;
+layout(set = 0, binding = 7, rgba16f) uniform writeonly image2DArray penumbra_out;
+layout(set = 0, binding = 8, r32ui) uniform writeonly uimage2D hard_out;
+#ifdef HAS_COLOUR
+layout(set = 0, binding = 9) uniform sampler2DArray colour_atlas;
+layout(set = 0, binding = 10, rgba32ui) uniform writeonly uimage2DArray translucency_out;
+#endif
+
+layout(push_constant) uniform Params {
+  uint max_layers;      // screen layers in use (<= 32)
+  uint penumbra_shift;  // 1 when the penumbra image is half resolution
+  float light_size_scale;
+  float search_scale;   // blocker-search radius as a multiple of the light's size in uv
+  float normal_offset;  // world units per unit of (1 - n.l), against acne
+  uint search_taps;     // per axis (odd), e.g. 5
+};
+
+#include "../common/tile_cull.glsl"
+#include "penumbra_common.glsl"
+
+void main() {
+  ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+  ivec2 size = textureSize(g_depth, 0);
+  bool inside = all(lessThan(pixel, size));
+  float depth = inside ? texelFetch(g_depth, pixel, 0).r : 1.0;
+  bool valid = inside && depth < 1.0;
+  tile_cull(depth, valid);
+  if (!inside) return;
+
+  vec4 penumbra[8];
+  uvec4 translucency[8];
+  for (int i = 0; i < 8; ++i) {
+    penumbra[i] = vec4(0.0);
+    translucency[i] = uvec4(0xFFFFFFFFu);
+  }
+  uint hard_bits = 0u;
+  uint owner[32];
+  for (int i = 0; i < 32; ++i) owner[i] = 0xFFFFFFFFu;
+
+  if (valid) {
+    vec3 view_pos = tile_view_position(vec2(pixel) + 0.5, depth);
+    vec3 world = (frame.inv_view * vec4(view_pos, 1.0)).xyz;
+    vec3 n_view = normalize(texelFetch(g_normal, pixel, 0).xyz);
+    vec3 n_world = normalize(mat3(frame.inv_view) * n_view);
+    uint count = tile_overflow ? frame.counts.x : min(tile_count, uint(TILE_LIGHTS_MAX));
+    for (uint k = 0u; k < count; ++k) {
+      uint li = tile_overflow ? k : tile_lights[k];
+      if (li >= ANTUMBRA_MAX_SHADOW_LIGHTS) continue;
+      uint layer = layer_of[li];
+      if (layer >= max_layers || layer >= 32u) continue;
+      if (owner[layer] < li) continue;  // a lower-index light already owns this layer here
+      ShadowLight sl = shadow_lights[li];
+      if (sl.params.z < 0.0) continue;  // no shadow map for this light this frame
+      vec3 to_light = sl.position_range.xyz - world;
+      float dist = length(to_light);
+      if (dist >= sl.position_range.w) continue;
+      PenumbraSample s = estimate_penumbra(sl, world, n_world, to_light / dist);
+      owner[layer] = li;
+      uint slot = layer >> 2u;
+      uint channel = layer & 3u;
+      penumbra[slot][channel] = s.width;
+      if (s.in_shadow) {
+        hard_bits |= 1u << layer;
+      } else {
+        hard_bits &= ~(1u << layer);
+      }
+#ifdef HAS_COLOUR
+      translucency[slot][channel] = s.colour;
+#endif
+    }
+  }
+
+  imageStore(hard_out, pixel, uvec4(hard_bits));
+  uint slots = (max_layers + 3u) / 4u;
+  bool write_penumbra = penumbra_shift == 0u || all(equal(pixel & 1, ivec2(0)));
+  if (write_penumbra) {
+    ivec2 target = pixel >> int(penumbra_shift);
+    for (uint s = 0u; s < slots; ++s) {
+      imageStore(penumbra_out, ivec3(target, int(s)), penumbra[s]);
+    }
+  }
+#ifdef HAS_COLOUR
+  for (uint s = 0u; s < slots; ++s) {
+    imageStore(translucency_out, ivec3(pixel, int(s)), translucency[s]);
+  }
+#endif
+}

@@ -1,0 +1,68 @@
+#include "common/layer_checks.hpp"
+#include "layered_penumbra_pass.hpp"
+
+namespace antumbra::passes {
+namespace {
+
+void check(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& graph,
+           fg::Diagnostics& diagnostics) {
+  const LayerCap cap = find_layer_cap(pass, plan, "layerTable");
+  check_layer_storage(pass, plan, graph, cap, "penumbra", diagnostics);
+  check_layer_storage(pass, plan, graph, cap, "translucency", diagnostics);
+}
+
+}  // namespace
+
+fg::PassDesc LayeredPenumbraPass::describe() {
+  using fg::Access;
+  using fg::Format;
+  using fg::PortDirection;
+  using fg::ResourceKind;
+  using fg::Stage;
+  fg::PassDesc desc;
+  desc.type = "layered-penumbra";
+  desc.description =
+      "Per pixel and screen layer: penumbra width from a blocker search in every light's shadow "
+      "faces (one dispatch, texture arrays), hard-shadow bits and translucent shadow colour.";
+  desc.ports = {
+      {.name = "depth", .access = Access::sampled, .stage = Stage::compute,
+       .formats = {Format::d32f, Format::d16}, .size_group = "screen", .description = "G-buffer depth."},
+      {.name = "normal", .access = Access::sampled, .stage = Stage::compute,
+       .formats = {Format::rgba16f, Format::rgba32f}, .size_group = "screen",
+       .description = "G-buffer view-space normal."},
+      {.name = "atlas", .access = Access::sampled, .stage = Stage::compute,
+       .formats = {Format::d32f, Format::d16}, .min_layers = 6, .max_layers = 0,
+       .description = "Shadow faces of every light (point-shadow-atlas)."},
+      {.name = "colour", .access = Access::sampled, .stage = Stage::compute,
+       .formats = {Format::rgba8}, .min_layers = 6, .max_layers = 0, .optional = true,
+       .description = "Translucent shadow colour beside the atlas; enables the translucency output."},
+      {.name = "shadowData", .kind = ResourceKind::buffer, .access = Access::storage_read,
+       .stage = Stage::compute, .description = "Face matrices and per-light shadow data."},
+      {.name = "layerTable", .kind = ResourceKind::buffer, .access = Access::storage_read,
+       .stage = Stage::compute, .description = "Light -> screen layer (light-layering)."},
+      {.name = "penumbra", .direction = PortDirection::output, .access = Access::storage_write,
+       .stage = Stage::compute, .formats = {Format::rgba16f}, .min_layers = 1, .max_layers = 8,
+       .description = "Penumbra width (world units) of 4 layers per texel; full or half resolution."},
+      {.name = "hardShadow", .direction = PortDirection::output, .access = Access::storage_write,
+       .stage = Stage::compute, .formats = {Format::r32ui}, .size_group = "screen",
+       .description = "One in-shadow bit per layer (up to 32)."},
+      {.name = "translucency", .direction = PortDirection::output, .access = Access::storage_write,
+       .stage = Stage::compute, .formats = {Format::rgba32ui}, .min_layers = 1, .max_layers = 8,
+       .optional = true, .size_group = "screen",
+       .description = "Shadow colour per layer packed r<<24|g<<16|b<<8|a, 4 layers per texel."},
+  };
+  desc.params = {
+      {.name = "lightSizeScale", .type = fg::ParamType::number, .default_value = 1.0, .min = 0.0,
+       .max = 16.0, .description = "Multiplies every light's size (w_light)."},
+      {.name = "searchScale", .type = fg::ParamType::number, .default_value = 1.0, .min = 0.05,
+       .max = 8.0, .description = "Blocker-search radius relative to light size over receiver distance."},
+      {.name = "searchTaps", .type = fg::ParamType::integer, .default_value = 5, .min = 1.0,
+       .max = 9.0, .description = "Blocker-search taps per axis."},
+      {.name = "normalOffset", .type = fg::ParamType::number, .default_value = 0.03, .min = 0.0,
+       .max = 1.0, .description = "World-space offset along the normal at grazing angles (anti-acne)."},
+  };
+  desc.check = &check;
+  return desc;
+}
+
+}  // namespace antumbra::passes

@@ -1,0 +1,93 @@
+#include "layered_penumbra_pass.hpp"
+
+#include <array>
+
+#include "antumbra/gpu/context.hpp"
+#include "antumbra/gpu/pipelines.hpp"
+#include "common/frame_resources.hpp"
+#include "common/pass_support.hpp"
+
+namespace antumbra::passes {
+namespace {
+
+struct PushConstants {
+  std::uint32_t max_layers;
+  std::uint32_t penumbra_shift;
+  float light_size_scale;
+  float search_scale;
+  float normal_offset;
+  std::uint32_t search_taps;
+};
+
+constexpr VkShaderStageFlags kCompute = VK_SHADER_STAGE_COMPUTE_BIT;
+
+}  // namespace
+
+LayeredPenumbraPass::LayeredPenumbraPass(const fg::PlanPass& /*pass*/) {}
+
+void LayeredPenumbraPass::prepare(fgvk::PrepareContext& context) {
+  colour_ = context.bindings.image("colour") != nullptr &&
+            context.bindings.image("translucency") != nullptr;
+  std::vector<gpu::ShaderDefine> defines;
+  if (colour_) defines.push_back({"HAS_COLOUR", "1"});
+  auto shader = load_shader(context, "layered_penumbra/layered_penumbra.comp", shader_files_, defines);
+  gpu::DescriptorSetLayoutBuilder builder;
+  builder.uniform_buffer(0, kCompute)
+      .storage_buffer(1, kCompute)
+      .storage_buffer(2, kCompute)
+      .storage_buffer(3, kCompute)
+      .combined_image_sampler(4, kCompute)
+      .combined_image_sampler(5, kCompute)
+      .combined_image_sampler(6, kCompute)
+      .storage_image(7, kCompute)
+      .storage_image(8, kCompute);
+  if (colour_) builder.combined_image_sampler(9, kCompute).storage_image(10, kCompute);
+  set_layout_ = builder.build(context.gpu, context.pass.name + ".set");
+  const std::array<VkDescriptorSetLayout, 1> sets{set_layout_};
+  const std::array<VkPushConstantRange, 1> push{{{kCompute, 0, sizeof(PushConstants)}}};
+  layout_ = gpu::create_pipeline_layout(context.gpu, sets, push, context.pass.name + ".layout");
+  pipeline_ = gpu::create_compute_pipeline(context.gpu, layout_, shader, context.pass.name + ".pipeline",
+                                           context.pipeline_cache);
+}
+
+void LayeredPenumbraPass::execute(fgvk::ExecuteContext& context) {
+  const auto& b = context.bindings;
+  const auto& depth = b.required_image("depth");
+  const auto& normal = b.required_image("normal");
+  const auto& atlas = b.required_image("atlas");
+  const auto& penumbra = b.required_image("penumbra");
+  const auto& hard = b.required_image("hardShadow");
+  const VkSampler nearest = context.samplers.nearest_clamp;
+
+  gpu::PushDescriptors descriptors;
+  descriptors.uniform_buffer(0, context.frame.frame_uniforms)
+      .storage_buffer(1, context.frame.lights)
+      .storage_buffer(2, b.buffer("shadowData")->buffer)
+      .storage_buffer(3, b.buffer("layerTable")->buffer)
+      .combined_image_sampler(4, depth.view, nearest, depth.layout)
+      .combined_image_sampler(5, normal.view, nearest, normal.layout)
+      .combined_image_sampler(6, atlas.array_view, nearest, atlas.layout)
+      .storage_image(7, penumbra.array_view, penumbra.layout)
+      .storage_image(8, hard.view, hard.layout);
+  if (colour_) {
+    const auto& colour = b.required_image("colour");
+    const auto& translucency = b.required_image("translucency");
+    descriptors.combined_image_sampler(9, colour.array_view, nearest, colour.layout)
+        .storage_image(10, translucency.array_view, translucency.layout);
+  }
+  const VkCommandBuffer cmd = context.cmd;
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
+  descriptors.push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
+  const PushConstants constants{
+      penumbra.layers * 4u,
+      penumbra.extent.width < depth.extent.width ? 1u : 0u,
+      param_float(context.pass, "lightSizeScale"),
+      param_float(context.pass, "searchScale"),
+      param_float(context.pass, "normalOffset"),
+      static_cast<std::uint32_t>(param_float(context.pass, "searchTaps")),
+  };
+  vkCmdPushConstants(cmd, layout_, kCompute, 0, sizeof constants, &constants);
+  vkCmdDispatch(cmd, (depth.extent.width + 15) / 16, (depth.extent.height + 15) / 16, 1);
+}
+
+}  // namespace antumbra::passes

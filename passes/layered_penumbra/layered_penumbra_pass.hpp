@@ -1,0 +1,31 @@
+#pragma once
+// Pass type "layered-penumbra": batched penumbra estimation for every screen layer in
+// one compute dispatch. Reflection in layered_penumbra_desc.cpp, shaders beside.
+
+#include <string>
+#include <vector>
+
+#include "antumbra/fg/reflection.hpp"
+#include "antumbra/fgvk/pass.hpp"
+#include "antumbra/gpu/handle.hpp"
+
+namespace antumbra::passes {
+
+class LayeredPenumbraPass final : public fgvk::Pass {
+ public:
+  static fg::PassDesc describe();
+  explicit LayeredPenumbraPass(const fg::PlanPass& pass);
+
+  void prepare(fgvk::PrepareContext& context) override;
+  void execute(fgvk::ExecuteContext& context) override;
+  [[nodiscard]] std::vector<std::string> shader_files() const override { return shader_files_; }
+
+ private:
+  bool colour_ = false;
+  gpu::DescriptorSetLayout set_layout_;
+  gpu::PipelineLayout layout_;
+  gpu::Pipeline pipeline_;
+  std::vector<std::string> shader_files_;
+};
+
+}  // namespace antumbra::passes

@@ -1,0 +1,47 @@
+// The per-light shading of deferred-lighting (deferred_lighting.frag), factored into a
+// function: the same Blinn-Phong lobe, windowed inverse-square attenuation and range
+// cut, so tiled lighting with shadows off matches the untiled reference.
+#ifndef ANTUMBRA_TILED_SHADING_GLSL
+#define ANTUMBRA_TILED_SHADING_GLSL
+
+#include "../common/lights.glsl"
+
+struct Surface {
+  vec3 p;          // view-space position
+  vec3 n;          // view-space normal (unit)
+  vec3 v;          // unit vector to the eye
+  vec3 albedo;
+  float shininess;
+};
+
+Surface make_surface(vec3 p, vec4 normal_rough, vec4 albedo_metal) {
+  Surface s;
+  s.p = p;
+  s.n = normalize(normal_rough.xyz);
+  s.v = normalize(-p);
+  s.albedo = albedo_metal.rgb;
+  s.shininess = mix(128.0, 4.0, clamp(normal_rough.w, 0.0, 1.0));
+  return s;
+}
+
+// Unshadowed radiance of one light; false when the light cannot reach the point (out of
+// range or behind the surface), so callers skip the shadow lookup too. `l` is the unit
+// view-space direction to the light.
+bool shade_light(GpuLight light, Surface s, float specular, out vec3 radiance, out vec3 l) {
+  vec3 to_light = light.position_range.xyz - s.p;
+  float dist = length(to_light);
+  float range = light.position_range.w;
+  radiance = vec3(0.0);
+  l = vec3(0.0);
+  if (dist >= range) return false;
+  l = to_light / dist;
+  float n_dot_l = max(dot(s.n, l), 0.0);
+  if (n_dot_l <= 0.0) return false;
+  vec3 h = normalize(l + s.v);
+  float spec = specular * pow(max(dot(s.n, h), 0.0), s.shininess) * (s.shininess + 8.0) / 25.0;
+  radiance = light.color_intensity.rgb * light.color_intensity.w * light_attenuation(dist, range) *
+             n_dot_l * (s.albedo + vec3(spec));
+  return true;
+}
+
+#endif

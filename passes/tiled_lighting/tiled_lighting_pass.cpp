@@ -1,0 +1,207 @@
+#include "tiled_lighting_pass.hpp"
+
+#include <array>
+#include <string>
+
+#include "antumbra/gpu/context.hpp"
+#include "antumbra/gpu/pipelines.hpp"
+#include "common/frame_resources.hpp"
+#include "common/layer_table.hpp"
+#include "common/pass_support.hpp"
+#include "common/shadow_data.hpp"
+
+namespace antumbra::passes {
+namespace {
+
+constexpr std::uint32_t kTileSize = 16;  // TILE_SIZE in tiled_lighting.comp
+constexpr std::uint32_t kMaxShadowTexels = 8;  // MAX_SHADOW_TEXELS in layered.glsl
+
+struct PushConstants {
+  float exposure;
+  float ambient_scale;
+  float specular;
+  float light_size_scale;
+  std::uint32_t width;
+  std::uint32_t height;
+};
+
+// Binding numbers of tiled_lighting.comp / layered.glsl.
+enum Binding : std::uint32_t {
+  kFrame = 0,
+  kLights = 1,
+  kDepth = 2,
+  kNormal = 3,
+  kAlbedo = 4,
+  kHdr = 5,
+  kAtlas = 6,
+  kShadowData = 7,
+  kLayerTable = 8,
+  kShadow = 9,
+  kColour = 10,
+};
+
+[[noreturn]] void fail(const fgvk::PrepareContext& context, const char* code,
+                       const std::string& message) {
+  fg::Diagnostics diagnostics;
+  diagnostics.add({code, fg::Severity::error,
+                   "pass '" + context.pass.name + "' (" + context.pass.type + "): " + message,
+                   "", "", 0, 0});
+  throw fgvk::PassError(message, diagnostics);
+}
+
+int kernel_of(const fg::PlanPass& pass) {
+  const std::string kernel = param_string(pass, "kernel");
+  return kernel.empty() ? 11 : std::stoi(kernel);
+}
+
+}  // namespace
+
+std::optional<ShadowMode> parse_shadow_mode(std::string_view name) {
+  if (name == "none") return ShadowMode::none;
+  if (name == "hard") return ShadowMode::hard;
+  if (name == "pcf") return ShadowMode::pcf;
+  if (name == "pcss") return ShadowMode::pcss;
+  if (name == "layered") return ShadowMode::layered;
+  return std::nullopt;
+}
+
+std::string_view to_string(ShadowMode mode) {
+  switch (mode) {
+    case ShadowMode::none: return "none";
+    case ShadowMode::hard: return "hard";
+    case ShadowMode::pcf: return "pcf";
+    case ShadowMode::pcss: return "pcss";
+    case ShadowMode::layered: return "layered";
+  }
+  return "none";
+}
+
+ShadowMode TiledLightingPass::mode_of(const fg::PlanPass& pass) {
+  if (pass.type == kHardType) return ShadowMode::hard;
+  if (pass.type == kPcfType) return ShadowMode::pcf;
+  if (pass.type == kPcssType) return ShadowMode::pcss;
+  return parse_shadow_mode(param_string(pass, "shadows")).value_or(ShadowMode::none);
+}
+
+TiledLightingPass::TiledLightingPass(const fg::PlanPass& pass) : mode_(mode_of(pass)) {}
+
+void TiledLightingPass::prepare(fgvk::PrepareContext& context) {
+  const auto& b = context.bindings;
+  const auto* atlas = b.image("atlas");
+  const auto* shadow_data = b.buffer("shadowData");
+  const bool needs_atlas = mode_ == ShadowMode::hard || mode_ == ShadowMode::pcf ||
+                           mode_ == ShadowMode::pcss;
+  if ((atlas == nullptr) != (shadow_data == nullptr)) {
+    fail(context, "TL001", "bind both `atlas` and `shadowData`, or neither");
+  }
+  if (needs_atlas && atlas == nullptr) {
+    fail(context, "TL002", "shadows = " + std::string(to_string(mode_)) +
+                               " needs the `atlas` and `shadowData` inputs");
+  }
+  // Layered mode uses the atlas only as the fallback of layer-less lights; other modes
+  // ignore an atlas bound without a use (it is still read-declared, which is harmless).
+  has_atlas_ = atlas != nullptr && mode_ != ShadowMode::none;
+  if (has_atlas_ && shadow_data->size < shadow_data_bytes(atlas->layers)) {
+    fail(context, "TL003", "`shadowData` holds " + std::to_string(shadow_data->size) +
+                               " bytes; an atlas of " + std::to_string(atlas->layers) +
+                               " layers needs " + std::to_string(shadow_data_bytes(atlas->layers)));
+  }
+  has_colour_ = false;
+  if (mode_ == ShadowMode::layered) {
+    const auto* table = b.buffer("layerTable");
+    const auto* shadow = b.image("shadow");
+    if (table == nullptr || shadow == nullptr) {
+      fail(context, "TL004", "shadows = layered needs the `layerTable` and `shadow` inputs");
+    }
+    if (table->size < kLayerTableBytes) {
+      fail(context, "TL005", "`layerTable` must hold at least " +
+                                 std::to_string(kLayerTableBytes) + " bytes");
+    }
+    if (shadow->layers > kMaxShadowTexels) {
+      fail(context, "TL006", "`shadow` has more than 8 array layers (32 shadow layers)");
+    }
+    has_colour_ = b.image("colour") != nullptr;
+  }
+
+  constexpr VkShaderStageFlags kComp = VK_SHADER_STAGE_COMPUTE_BIT;
+  gpu::DescriptorSetLayoutBuilder builder;
+  builder.uniform_buffer(kFrame, kComp)
+      .storage_buffer(kLights, kComp)
+      .combined_image_sampler(kDepth, kComp)
+      .combined_image_sampler(kNormal, kComp)
+      .combined_image_sampler(kAlbedo, kComp)
+      .storage_image(kHdr, kComp);
+  if (has_atlas_) builder.combined_image_sampler(kAtlas, kComp).storage_buffer(kShadowData, kComp);
+  if (mode_ == ShadowMode::layered) {
+    builder.storage_buffer(kLayerTable, kComp).combined_image_sampler(kShadow, kComp);
+    if (has_colour_) builder.combined_image_sampler(kColour, kComp);
+  }
+  set_layout_ = builder.build(context.gpu, context.pass.name + ".set");
+  const std::array<VkDescriptorSetLayout, 1> sets{set_layout_};
+  const std::array<VkPushConstantRange, 1> push{{{kComp, 0, sizeof(PushConstants)}}};
+  layout_ = gpu::create_pipeline_layout(context.gpu, sets, push, context.pass.name + ".layout");
+
+  const bool pcf_fallback = param_string(context.pass, "fallback") != "hard";
+  const int blocker = static_cast<int>(param_float(context.pass, "blockerSearch"));
+  const auto hdr_format = b.required_image("hdr").format;
+  const std::vector<gpu::ShaderDefine> defines{
+      {"SHADOW_MODE", std::to_string(static_cast<int>(mode_))},
+      {"HAS_ATLAS", has_atlas_ ? "1" : "0"},
+      {"HAS_COLOUR", has_colour_ ? "1" : "0"},
+      {"FALLBACK_PCF", pcf_fallback ? "1" : "0"},
+      {"KERNEL", std::to_string(kernel_of(context.pass))},
+      {"BLOCKER_SEARCH", std::to_string(blocker > 0 ? blocker : 5)},
+      {"HDR_FORMAT", hdr_format == VK_FORMAT_R32G32B32A32_SFLOAT ? "rgba32f" : "rgba16f"},
+  };
+  shader_files_.clear();
+  auto module = load_shader(context, "tiled_lighting/tiled_lighting.comp", shader_files_, defines);
+  pipeline_ = gpu::create_compute_pipeline(context.gpu, layout_, module,
+                                           context.pass.name + ".pipeline", context.pipeline_cache);
+}
+
+void TiledLightingPass::execute(fgvk::ExecuteContext& context) {
+  const auto& b = context.bindings;
+  const auto& depth = b.required_image("depth");
+  const auto& normal = b.required_image("normal");
+  const auto& albedo = b.required_image("albedo");
+  const auto& hdr = b.required_image("hdr");
+  const VkSampler nearest = context.samplers.nearest_clamp;
+  const VkCommandBuffer cmd = context.cmd;
+
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
+  gpu::PushDescriptors descriptors;
+  descriptors.uniform_buffer(kFrame, context.frame.frame_uniforms)
+      .storage_buffer(kLights, context.frame.lights)
+      .combined_image_sampler(kDepth, depth.view, nearest, depth.layout)
+      .combined_image_sampler(kNormal, normal.view, nearest, normal.layout)
+      .combined_image_sampler(kAlbedo, albedo.view, nearest, albedo.layout)
+      .storage_image(kHdr, hdr.view, hdr.layout);
+  if (has_atlas_) {
+    const auto& atlas = b.required_image("atlas");
+    descriptors.combined_image_sampler(kAtlas, atlas.view, nearest, atlas.layout)
+        .storage_buffer(kShadowData, b.buffer("shadowData")->buffer);
+  }
+  if (mode_ == ShadowMode::layered) {
+    const auto& shadow = b.required_image("shadow");
+    descriptors.storage_buffer(kLayerTable, b.buffer("layerTable")->buffer)
+        .combined_image_sampler(kShadow, shadow.view, context.samplers.linear_clamp,
+                                shadow.layout);
+    if (has_colour_) {
+      const auto& colour = b.required_image("colour");
+      descriptors.combined_image_sampler(kColour, colour.view, nearest, colour.layout);
+    }
+  }
+  descriptors.push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
+
+  const PushConstants constants{param_float(context.pass, "exposure"),
+                                param_float(context.pass, "ambient"),
+                                param_float(context.pass, "specular"),
+                                param_float(context.pass, "lightSizeScale"),
+                                hdr.extent.width,
+                                hdr.extent.height};
+  vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof constants, &constants);
+  vkCmdDispatch(cmd, (hdr.extent.width + kTileSize - 1) / kTileSize,
+                (hdr.extent.height + kTileSize - 1) / kTileSize, 1);
+}
+
+}  // namespace antumbra::passes
