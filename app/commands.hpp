@@ -37,7 +37,19 @@ struct RenderOptions {
   std::string hdr_out;  // optional .pfm of the HDR resource
 };
 
+struct BenchOptions {
+  std::vector<std::string> filters;  // substrings of scenario names; empty = all
+  int frames = 60;
+  int warmup = 10;
+  double scale = 1.0;  // resolution scale (small on lavapipe)
+  std::string out = "out/bench";
+  std::string device = "auto";
+  bool validation = false;
+  bool list = false;
+};
+
 int run_validate(const ValidateOptions& options);
+int run_bench(const BenchOptions& options);
 int run_plan(const PlanOptions& options);
 int run_schema();
 int run_render(const RenderOptions& options);

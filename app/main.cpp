@@ -47,6 +47,17 @@ int dispatch(int argc, char** argv) {
   plan_format->require_option(0, 1);
   plan_cmd->add_option("--size", plan.size, "Viewport WxH the plan is compiled for")->capture_default_str();
 
+  BenchOptions bench;
+  auto* bench_cmd = cli.add_subcommand("bench", "Run named benchmark scenarios; write CSV, JSON and a plot");
+  bench_cmd->add_option("--scenario", bench.filters, "Substring of scenario names (repeatable)");
+  bench_cmd->add_option("--frames", bench.frames, "Timed frames per scenario")->check(CLI::Range(1, 100000))->capture_default_str();
+  bench_cmd->add_option("--warmup", bench.warmup, "Warm-up frames per scenario")->check(CLI::Range(0, 100000))->capture_default_str();
+  bench_cmd->add_option("--scale", bench.scale, "Resolution scale (e.g. 0.25 on lavapipe)")->check(CLI::Range(0.01, 4.0))->capture_default_str();
+  bench_cmd->add_option("--out", bench.out, "Output folder")->capture_default_str();
+  bench_cmd->add_option("--device", bench.device, "auto|cpu|gpu|N|<name substring>")->capture_default_str();
+  bench_cmd->add_flag("--validation", bench.validation, "Khronos validation (slow)");
+  bench_cmd->add_flag("--list", bench.list, "List the scenarios and exit");
+
   cli.add_subcommand("schema", "Print the JSON Schema of graph files");
 
   std::string devices_device = "auto";
@@ -75,6 +86,7 @@ int dispatch(int argc, char** argv) {
     return run_plan(plan);
   }
   if (devices_cmd->parsed()) return run_devices(devices_device, devices_validation);
+  if (bench_cmd->parsed()) return run_bench(bench);
   return run_schema();
 }
 

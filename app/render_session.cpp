@@ -130,6 +130,13 @@ void RenderSession::render(int frames, TraceWriter* trace) {
   }
 }
 
+void RenderSession::reset_timings() {
+  frames_->wait_all();
+  observer_->gather_gpu();
+  observer_->cpu_ms.clear();
+  observer_->gpu_ms.clear();
+}
+
 std::vector<PassTiming> RenderSession::pass_timings() const {
   std::vector<PassTiming> timings;
   for (const auto& pass : executor_->plan().passes) {

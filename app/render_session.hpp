@@ -45,6 +45,11 @@ class RenderSession {
   // them and keeps the previous graph running.
   fg::Diagnostics load_graph(const fg::GraphDesc& graph);
   void set_scene(scene::Scene scene);
+  // A new viewport takes effect at the next load_graph().
+  void set_viewport(VkExtent2D viewport) { options_.viewport = viewport; }
+  [[nodiscard]] VkExtent2D viewport() const { return options_.viewport; }
+  // Forget the timings gathered so far (after warm-up frames).
+  void reset_timings();
 
   // Renders `frames` frames; per-pass timings are gathered from every frame.
   void render(int frames, TraceWriter* trace);

@@ -1,0 +1,132 @@
+#include "bench_scenarios.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace antumbra::app {
+namespace {
+
+struct Technique {
+  const char* name;
+  const char* graph;
+  const char* kernel_pass;   // pass type that takes the kernel, "" for none
+  std::vector<int> kernels;  // empty: one scenario without a kernel
+};
+
+const std::vector<Technique>& techniques() {
+  static const std::vector<Technique> kTechniques = {
+      {"lighting-only", "lighting.json", "", {}},
+      {"hard", "hard.json", "", {}},
+      {"pcf", "pcf.json", "shadow-pcf", {5, 11, 23}},
+      {"pcss", "pcss.json", "shadow-pcss", {5, 11, 23}},
+      {"ssss-blocker", "layered-ssss-blocker.json", "anisotropic-blur", {5, 11, 23}},
+      {"ssss", "layered-ssss.json", "anisotropic-blur", {5, 11, 23}},
+  };
+  return kTechniques;
+}
+
+Scenario make(const std::string& table, const Technique& t, int kernel, unsigned height, int lights) {
+  Scenario s;
+  s.table = table;
+  s.technique = t.name;
+  s.graph = t.graph;
+  s.kernel = kernel;
+  s.height = height;
+  s.width = height * 16 / 9;
+  s.lights = lights;
+  s.name = table + "/" + t.name + (kernel > 0 ? "-" + std::to_string(kernel) : "") + "/" +
+           std::to_string(height) + "p" + (table == "table1" ? "" : "/" + std::to_string(lights) + "l");
+  if (kernel > 0) s.overrides.push_back({t.kernel_pass, "kernel", std::to_string(kernel)});
+  return s;
+}
+
+const Technique& technique(const std::string& name) {
+  const auto& all = techniques();
+  return *std::find_if(all.begin(), all.end(), [&](const Technique& t) { return name == t.name; });
+}
+
+}  // namespace
+
+std::vector<Scenario> builtin_scenarios() {
+  std::vector<Scenario> out;
+  for (const unsigned height : {720u, 1080u}) {
+    for (const auto& t : techniques()) {
+      if (t.kernels.empty()) {
+        out.push_back(make("table1", t, 0, height, 16));
+      } else {
+        for (const int k : t.kernels) out.push_back(make("table1", t, k, height, 16));
+      }
+    }
+  }
+  // Table 2 compares PCSS 5x5 + 11x11 with layered SSSS 11x11 at 1080p as lights grow.
+  for (const int lights : {1, 4, 8, 12, 16, 64, 256, 1024}) {
+    const std::string table = lights <= 16 ? "table2" : "lights";
+    out.push_back(make(table, technique("pcss"), 11, 1080, lights));
+    out.push_back(make(table, technique("ssss"), 11, 1080, lights));
+  }
+  return out;
+}
+
+std::vector<Scenario> select_scenarios(const std::vector<Scenario>& all,
+                                       const std::vector<std::string>& filters) {
+  if (filters.empty()) return all;
+  std::vector<Scenario> out;
+  for (const auto& s : all) {
+    for (const auto& f : filters) {
+      if (s.name.find(f) != std::string::npos) {
+        out.push_back(s);
+        break;
+      }
+    }
+  }
+  return out;
+}
+
+std::vector<std::string> apply_overrides(fg::GraphDesc& graph, const std::vector<ParamOverride>& overrides) {
+  std::vector<std::string> unmatched;
+  for (const auto& o : overrides) {
+    bool matched = false;
+    for (auto& pass : graph.passes) {
+      if (pass.type != o.pass_type) continue;
+      pass.params[o.param] = o.value;
+      matched = true;
+    }
+    if (!matched) unmatched.push_back(o.pass_type + "." + o.param);
+  }
+  return unmatched;
+}
+
+scene::Scene with_light_count(const scene::Scene& base, int count) {
+  scene::Scene s = base;
+  if (count == static_cast<int>(base.lights.size()) || base.lights.empty()) return s;
+  // Spread the lights over the box the original lights span, on a near-square grid.
+  scene::Aabb area;
+  float range = 0.0f;
+  for (const auto& l : base.lights) {
+    area.expand(l.position);
+    range = std::max(range, l.range);
+  }
+  const glm::vec3 lo = area.min;
+  const glm::vec3 span = glm::max(area.max - area.min, glm::vec3(1e-3f));
+  const int columns = std::max(
+      1, static_cast<int>(std::ceil(std::sqrt(static_cast<float>(count) * span.x / span.z))));
+  const int rows = std::max(1, (count + columns - 1) / columns);
+  // Keep overlap per light roughly constant: spacing shrinks with sqrt(count).
+  const float scale = std::sqrt(static_cast<float>(base.lights.size()) / static_cast<float>(count));
+  s.lights.clear();
+  for (int i = 0; i < count; ++i) {
+    const auto& model = base.lights[static_cast<std::size_t>(i) % base.lights.size()];
+    scene::PointLight l = model;
+    const int c = i % columns;
+    const int r = i / columns;
+    const float fx = columns > 1 ? static_cast<float>(c) / static_cast<float>(columns - 1) : 0.5f;
+    const float fz = rows > 1 ? static_cast<float>(r) / static_cast<float>(rows - 1) : 0.5f;
+    l.position = glm::vec3(lo.x + fx * span.x, model.position.y, lo.z + fz * span.z);
+    l.range = std::max(0.5f, range * std::min(1.0f, scale * 1.2f));
+    l.name = "bench" + std::to_string(i);
+    s.lights.push_back(l);
+  }
+  return s;
+}
+
+}  // namespace antumbra::app
