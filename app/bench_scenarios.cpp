@@ -25,7 +25,8 @@ const std::vector<Technique>& techniques() {
   return kTechniques;
 }
 
-Scenario make(const std::string& table, const Technique& t, int kernel, unsigned height, int lights) {
+Scenario make(const std::string& table, const Technique& t, int kernel, unsigned height,
+              int lights) {
   Scenario s;
   s.table = table;
   s.technique = t.name;
@@ -35,7 +36,8 @@ Scenario make(const std::string& table, const Technique& t, int kernel, unsigned
   s.width = height * 16 / 9;
   s.lights = lights;
   s.name = table + "/" + t.name + (kernel > 0 ? "-" + std::to_string(kernel) : "") + "/" +
-           std::to_string(height) + "p" + (table == "table1" ? "" : "/" + std::to_string(lights) + "l");
+           std::to_string(height) + "p" +
+           (table == "table1" ? "" : "/" + std::to_string(lights) + "l");
   if (kernel > 0) s.overrides.push_back({t.kernel_pass, "kernel", std::to_string(kernel)});
   return s;
 }
@@ -82,7 +84,8 @@ std::vector<Scenario> select_scenarios(const std::vector<Scenario>& all,
   return out;
 }
 
-std::vector<std::string> apply_overrides(fg::GraphDesc& graph, const std::vector<ParamOverride>& overrides) {
+std::vector<std::string> apply_overrides(fg::GraphDesc& graph,
+                                         const std::vector<ParamOverride>& overrides) {
   std::vector<std::string> unmatched;
   for (const auto& o : overrides) {
     bool matched = false;

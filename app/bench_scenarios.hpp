@@ -39,7 +39,8 @@ std::vector<Scenario> select_scenarios(const std::vector<Scenario>& all,
 
 // Applies the overrides to a parsed graph; returns the names of overrides that matched
 // no pass (a scenario typo must not silently measure the default).
-std::vector<std::string> apply_overrides(fg::GraphDesc& graph, const std::vector<ParamOverride>& overrides);
+std::vector<std::string> apply_overrides(fg::GraphDesc& graph,
+                                         const std::vector<ParamOverride>& overrides);
 
 // The scene with its lights replaced by `count` lights in a deterministic layout that
 // covers the same area (16 keeps the scene's own lights). Ranges shrink as the count

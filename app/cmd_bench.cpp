@@ -40,28 +40,36 @@ void write_reports(const std::filesystem::path& dir, const std::string& device,
     auto pass_json = nlohmann::json::array();
     for (const auto& p : o.passes) {
       passes += (passes.empty() ? "" : ";") + p.name + "=" + std::to_string(p.gpu_ms);
-      pass_json.push_back({{"name", p.name}, {"type", p.type}, {"gpuMs", p.gpu_ms}, {"cpuMs", p.cpu_ms}});
+      pass_json.push_back(
+          {{"name", p.name}, {"type", p.type}, {"gpuMs", p.gpu_ms}, {"cpuMs", p.cpu_ms}});
     }
     csv << o.scenario.name << ',' << o.scenario.table << ',' << o.scenario.technique << ','
         << o.scenario.kernel << ',' << o.width << ',' << o.height << ',' << o.scenario.lights << ','
         << o.status << ',' << o.total_gpu_ms << ',' << passes << '\n';
-    json.push_back({{"scenario", o.scenario.name}, {"table", o.scenario.table},
-                    {"technique", o.scenario.technique}, {"kernel", o.scenario.kernel},
-                    {"width", o.width}, {"height", o.height}, {"lights", o.scenario.lights},
-                    {"status", o.status}, {"detail", o.detail}, {"totalGpuMs", o.total_gpu_ms},
+    json.push_back({{"scenario", o.scenario.name},
+                    {"table", o.scenario.table},
+                    {"technique", o.scenario.technique},
+                    {"kernel", o.scenario.kernel},
+                    {"width", o.width},
+                    {"height", o.height},
+                    {"lights", o.scenario.lights},
+                    {"status", o.status},
+                    {"detail", o.detail},
+                    {"totalGpuMs", o.total_gpu_ms},
                     {"passes", pass_json}});
     char annotation[64];
     std::snprintf(annotation, sizeof annotation, "%.3f ms", o.total_gpu_ms);
     rows.push_back({o.scenario.name, o.total_gpu_ms, o.status == "ok" ? annotation : o.status});
   }
   std::ofstream(dir / "bench.json") << nlohmann::json{{"device", device},
-                                                     {"frames", options.frames},
-                                                     {"warmup", options.warmup},
-                                                     {"scale", options.scale},
-                                                     {"scenarios", json}}
+                                                      {"frames", options.frames},
+                                                      {"warmup", options.warmup},
+                                                      {"scale", options.scale},
+                                                      {"scenarios", json}}
                                            .dump(2)
                                     << '\n';
-  write_bar_chart((dir / "bench.png").string(), "antumbra bench: total GPU ms per frame on " + device, rows);
+  write_bar_chart((dir / "bench.png").string(),
+                  "antumbra bench: total GPU ms per frame on " + device, rows);
 }
 
 Outcome run_scenario(RenderSession& session, const DataPaths& paths, const scene::Scene& base,
@@ -76,7 +84,8 @@ Outcome run_scenario(RenderSession& session, const DataPaths& paths, const scene
     return o;
   }
   auto document = fg::load_json_file(graph_path.string());
-  auto graph = document.ok() ? fg::parse_graph(document.value()) : fg::Result<fg::GraphDesc>(document.diagnostics());
+  auto graph = document.ok() ? fg::parse_graph(document.value())
+                             : fg::Result<fg::GraphDesc>(document.diagnostics());
   if (!graph.ok()) {
     o.status = "invalid";
     o.detail = graph.diagnostics().to_text();
@@ -125,7 +134,8 @@ int run_bench(const BenchOptions& options) {
   session_options.device = options.device;
   session_options.validation = options.validation;
   RenderSession session(paths, session_options);
-  std::fprintf(stderr, "bench on %s: %zu scenario(s), %d warm-up + %d timed frames each, scale %.2f\n",
+  std::fprintf(stderr,
+               "bench on %s: %zu scenario(s), %d warm-up + %d timed frames each, scale %.2f\n",
                session.gpu().device_name().c_str(), chosen.size(), options.warmup, options.frames,
                options.scale);
   std::vector<Outcome> outcomes;
@@ -144,9 +154,11 @@ int run_bench(const BenchOptions& options) {
       o.detail = e.what();
     }
     if (o.status == "ok") {
-      std::fprintf(stderr, "%9.3f ms  (%.0f s elapsed)\n", o.total_gpu_ms, clock.elapsed_ms() / 1000.0);
+      std::fprintf(stderr, "%9.3f ms  (%.0f s elapsed)\n", o.total_gpu_ms,
+                   clock.elapsed_ms() / 1000.0);
     } else {
-      std::fprintf(stderr, "%s: %s\n", o.status.c_str(), o.detail.substr(0, o.detail.find('\n')).c_str());
+      std::fprintf(stderr, "%s: %s\n", o.status.c_str(),
+                   o.detail.substr(0, o.detail.find('\n')).c_str());
       if (o.status != "missing-graph") ++failures;
     }
     outcomes.push_back(std::move(o));
@@ -154,7 +166,8 @@ int run_bench(const BenchOptions& options) {
   write_reports(options.out, session.gpu().device_name(), options, outcomes);
   std::printf("wrote %s/bench.csv, bench.json, bench.png\n", options.out.c_str());
   if (options.validation && session.gpu().validation_error_count() > 0) {
-    std::fprintf(stderr, "antumbra bench: %zu validation error(s)\n", session.gpu().validation_error_count());
+    std::fprintf(stderr, "antumbra bench: %zu validation error(s)\n",
+                 session.gpu().validation_error_count());
     return kExitRuntime;
   }
   return failures > 0 ? kExitRuntime : kExitOk;

@@ -20,12 +20,13 @@ void print_plan_text(const fg::Plan& plan) {
     std::printf("  %2zu %-20s %-20s %zu barrier(s)\n", i, pass.name.c_str(), pass.type.c_str(),
                 pass.barriers.size());
   }
-  for (const auto& culled : plan.culled_passes) std::printf("     %-20s (culled)\n", culled.c_str());
+  for (const auto& culled : plan.culled_passes)
+    std::printf("     %-20s (culled)\n", culled.c_str());
   std::printf("resources:\n");
   for (const auto& r : plan.resources) {
     std::printf("  %-20s %-8s %5ux%-5u x%-3u life [%d, %d]%s\n", r.name.c_str(),
-                std::string(fg::to_string(r.format)).c_str(), r.extent.width, r.extent.height, r.layers,
-                r.first_use, r.last_use,
+                std::string(fg::to_string(r.format)).c_str(), r.extent.width, r.extent.height,
+                r.layers, r.first_use, r.last_use,
                 r.aliased ? (" aliased @" + std::to_string(r.heap_offset)).c_str() : "");
   }
   std::printf("aliasing: %llu bytes in the transient heap instead of %llu (saved %llu)\n",
@@ -61,19 +62,20 @@ int run_validate(const ValidateOptions& options) {
   for (const auto& file : options.files) {
     const auto result = fg::compile_file(file, registry.reflection());
     const auto& diagnostics = result.diagnostics();
-    const bool file_failed =
-        !result.ok() || (options.werror && diagnostics.warning_count() > 0);
+    const bool file_failed = !result.ok() || (options.werror && diagnostics.warning_count() > 0);
     failed = failed || file_failed;
     if (options.format == "json") {
-      report.push_back({{"file", file}, {"valid", !file_failed}, {"diagnostics", diagnostics.to_json()}});
+      report.push_back(
+          {{"file", file}, {"valid", !file_failed}, {"diagnostics", diagnostics.to_json()}});
       continue;
     }
     for (const auto& d : diagnostics) {
       if (d.severity == fg::Severity::note) continue;
       std::fprintf(stderr, "%s\n", fg::format_text(d).c_str());
     }
-    std::printf("%s: %s (%zu error(s), %zu warning(s))\n", file.c_str(), file_failed ? "invalid" : "valid",
-                diagnostics.error_count(), diagnostics.warning_count());
+    std::printf("%s: %s (%zu error(s), %zu warning(s))\n", file.c_str(),
+                file_failed ? "invalid" : "valid", diagnostics.error_count(),
+                diagnostics.warning_count());
   }
   if (options.format == "json") std::cout << nlohmann::json{{"files", report}}.dump(2) << '\n';
   return failed ? kExitDiagnostics : kExitOk;
@@ -83,7 +85,8 @@ int run_plan(const PlanOptions& options) {
   unsigned width = 0;
   unsigned height = 0;
   if (!parse_size(options.size, width, height)) {
-    std::fprintf(stderr, "antumbra plan: --size must be WxH with 1..16384, got \"%s\"\n", options.size.c_str());
+    std::fprintf(stderr, "antumbra plan: --size must be WxH with 1..16384, got \"%s\"\n",
+                 options.size.c_str());
     return kExitUsage;
   }
   const auto registry = passes::builtin_pass_registry();

@@ -2,6 +2,8 @@
 #include <cstdio>
 #include <filesystem>
 
+#include <nlohmann/json.hpp>
+
 #include "antumbra/fg/graph_desc.hpp"
 #include "antumbra/fg/json_document.hpp"
 #include "antumbra/gpu/timing.hpp"
@@ -33,6 +35,35 @@ void print_timings(const RenderSession& session, const std::vector<PassTiming>& 
   for (const auto& culled : session.executor().plan().culled_passes) {
     std::printf("%-20s (culled: its outputs reach no graph output)\n", culled.c_str());
   }
+}
+
+// Everything a tool needs from one run: timings, what the passes reported (e.g.
+// layer-cap warnings with the lights and conflicting pairs) and the diagnostics.
+nlohmann::json render_report_json(const RenderSession& session, const std::string& device,
+                                  const RenderOptions& options, const std::string& resource,
+                                  const fg::Diagnostics& diagnostics) {
+  auto passes = nlohmann::json::array();
+  for (const auto& t : session.pass_timings()) {
+    passes.push_back(
+        {{"name", t.name}, {"type", t.type}, {"gpuMs", t.gpu_ms}, {"cpuMs", t.cpu_ms}});
+  }
+  auto messages = nlohmann::json::array();
+  for (const auto& m : session.last_report().messages()) {
+    messages.push_back({{"pass", m.pass},
+                        {"code", m.code},
+                        {"severity", fg::to_string(m.severity)},
+                        {"message", m.message},
+                        {"details", nlohmann::json::parse(m.details.dump())}});
+  }
+  return {{"device", device},
+          {"graph", session.executor().plan().file},
+          {"output", resource},
+          {"image", options.out},
+          {"frames", options.frames},
+          {"passes", passes},
+          {"culled", session.executor().plan().culled_passes},
+          {"messages", messages},
+          {"diagnostics", diagnostics.to_json()}};
 }
 
 }  // namespace
@@ -85,8 +116,11 @@ int run_render(const RenderOptions& options) {
   session_options.viewport = {width, height};
   RenderSession session(paths, session_options);
   const double device_ms = stage.elapsed_ms();
-  std::printf("device: %s%s\n", session.gpu().device_name().c_str(),
-              options.validation ? " (validation + synchronization validation on)" : "");
+  const bool json = options.format == "json";
+  if (!json) {
+    std::printf("device: %s%s\n", session.gpu().device_name().c_str(),
+                options.validation ? " (validation + synchronization validation on)" : "");
+  }
 
   stage.restart();
   const auto diagnostics = session.load_graph(graph.value());
@@ -104,28 +138,43 @@ int run_render(const RenderOptions& options) {
   const double render_ms = stage.elapsed_ms();
 
   stage.restart();
-  const std::string resource = session.executor().plan().resources.at(
-      static_cast<std::size_t>(session.executor().plan().output)).name;
+  const std::string resource =
+      session.executor()
+          .plan()
+          .resources.at(static_cast<std::size_t>(session.executor().plan().output))
+          .name;
   const auto out_dir = std::filesystem::path(options.out).parent_path();
   if (!out_dir.empty()) std::filesystem::create_directories(out_dir);
   session.write_image(resource, options.out);
   if (!options.hdr_out.empty()) session.write_image(resource, options.hdr_out);
   const double write_ms = stage.elapsed_ms();
 
-  print_timings(session, session.pass_timings(), options.frames);
-  for (const auto& m : session.last_report().messages()) {
-    std::fprintf(stderr, "%s[%s]: %s (pass %s)\n", fg::to_string(m.severity), m.code.c_str(),
-                 m.message.c_str(), m.pass.c_str());
+  if (json) {
+    std::printf("%s\n", render_report_json(session, session.gpu().device_name(), options, resource,
+                                           diagnostics)
+                            .dump(2)
+                            .c_str());
+  } else {
+    print_timings(session, session.pass_timings(), options.frames);
+    for (const auto& m : session.last_report().messages()) {
+      std::fprintf(stderr, "%s[%s]: %s (pass %s)\n", fg::to_string(m.severity), m.code.c_str(),
+                   m.message.c_str(), m.pass.c_str());
+    }
   }
-  std::printf("cpu stages: parse %.1f ms, device %.1f ms, compile+realise %.1f ms, upload %.1f ms, "
-              "render %.1f ms, write %.1f ms\n",
-              parse_ms, device_ms, compile_ms, upload_ms, render_ms, write_ms);
-  std::printf("wrote %s (%s, %ux%u)\n", options.out.c_str(), resource.c_str(), width, height);
+  if (!json) {
+    std::printf(
+        "cpu stages: parse %.1f ms, device %.1f ms, compile+realise %.1f ms, upload %.1f ms, "
+        "render %.1f ms, write %.1f ms\n",
+        parse_ms, device_ms, compile_ms, upload_ms, render_ms, write_ms);
+    std::printf("wrote %s (%s, %ux%u)\n", options.out.c_str(), resource.c_str(), width, height);
+  }
 
   if (!options.trace.empty()) {
     double t = 0.0;
-    for (const auto& [name, ms] : {std::pair{"parse", parse_ms}, {"device", device_ms},
-                                   {"compile", compile_ms}, {"upload", upload_ms}}) {
+    for (const auto& [name, ms] : {std::pair{"parse", parse_ms},
+                                   {"device", device_ms},
+                                   {"compile", compile_ms},
+                                   {"upload", upload_ms}}) {
       trace.add({name, "cpu", t * 1000.0, ms * 1000.0, 1});
       t += ms;
     }

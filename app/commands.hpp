@@ -34,7 +34,8 @@ struct RenderOptions {
   std::string device = "auto";
   bool validation = false;
   std::string trace;
-  std::string hdr_out;  // optional .pfm of the HDR resource
+  std::string hdr_out;          // optional .pfm of the HDR resource
+  std::string format = "text";  // text | json (timings, pass reports, diagnostics)
 };
 
 struct BenchOptions {

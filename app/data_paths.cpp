@@ -46,7 +46,8 @@ DataPaths find_data_paths() {
   if (is_root(ANTUMBRA_SOURCE_DIR)) return {ANTUMBRA_SOURCE_DIR};
   tried.emplace_back(ANTUMBRA_SOURCE_DIR);
 #endif
-  std::string message = "cannot find Antumbra's data/ and passes/ folders (set ANTUMBRA_ROOT); searched up from:";
+  std::string message =
+      "cannot find Antumbra's data/ and passes/ folders (set ANTUMBRA_ROOT); searched up from:";
   for (const auto& t : tried) message += "\n  " + t;
   throw std::runtime_error(message);
 }

@@ -4,6 +4,9 @@
 #include <exception>
 #include <iostream>
 
+#include <spdlog/sinks/stdout_color_sinks.h>
+#include <spdlog/spdlog.h>
+
 #include "commands.hpp"
 
 namespace {
@@ -16,22 +19,32 @@ int dispatch(int argc, char** argv) {
 
   RenderOptions render;
   auto* render_cmd = cli.add_subcommand("render", "Render frames and write an image");
-  render_cmd->add_option("--graph", render.graph, "Frame graph JSON (default: data/graphs/deferred.json)");
+  render_cmd->add_option("--graph", render.graph,
+                         "Frame graph JSON (default: data/graphs/deferred.json)");
   render_cmd->add_option("--scene", render.scene, "Scene JSON (default: data/scenes/atrium.json)");
   render_cmd->add_option("--size", render.size, "Viewport WxH")->capture_default_str();
-  render_cmd->add_option("--frames", render.frames, "Frames to render")->check(CLI::Range(1, 100000))->capture_default_str();
+  render_cmd->add_option("--frames", render.frames, "Frames to render")
+      ->check(CLI::Range(1, 100000))
+      ->capture_default_str();
   render_cmd->add_option("--out", render.out, "PNG to write")->capture_default_str();
-  render_cmd->add_option("--output", render.output, "Graph resource to write (default: the graph output)");
+  render_cmd->add_option("--output", render.output,
+                         "Graph resource to write (default: the graph output)");
   render_cmd->add_option("--hdr-out", render.hdr_out, "Also write this resource as PFM (float)");
-  render_cmd->add_option("--device", render.device, "auto|cpu|gpu|N|<name substring>")->capture_default_str();
-  render_cmd->add_flag("--validation", render.validation, "Khronos validation + synchronization validation");
+  render_cmd->add_option("--device", render.device, "auto|cpu|gpu|N|<name substring>")
+      ->capture_default_str();
+  render_cmd->add_flag("--validation", render.validation,
+                       "Khronos validation + synchronization validation");
   render_cmd->add_option("--trace", render.trace, "Write a Chrome/Perfetto trace JSON");
+  render_cmd->add_option("--format", render.format, "text|json report on stdout")
+      ->check(CLI::IsMember({"text", "json"}))
+      ->capture_default_str();
 
   ValidateOptions validate;
   auto* validate_cmd = cli.add_subcommand("validate", "Check frame graph files (no GPU needed)");
   validate_cmd->add_option("files", validate.files, "Graph files")->required();
   validate_cmd->add_option("--format", validate.format, "text|json")
-      ->check(CLI::IsMember({"text", "json"}))->capture_default_str();
+      ->check(CLI::IsMember({"text", "json"}))
+      ->capture_default_str();
   validate_cmd->add_flag("--werror", validate.werror, "Treat warnings as errors");
 
   PlanOptions plan;
@@ -45,16 +58,25 @@ int dispatch(int argc, char** argv) {
   plan_format->add_flag("--json", plan_json, "Canonical JSON (default)");
   plan_format->add_flag("--text", plan_text, "Readable summary");
   plan_format->require_option(0, 1);
-  plan_cmd->add_option("--size", plan.size, "Viewport WxH the plan is compiled for")->capture_default_str();
+  plan_cmd->add_option("--size", plan.size, "Viewport WxH the plan is compiled for")
+      ->capture_default_str();
 
   BenchOptions bench;
-  auto* bench_cmd = cli.add_subcommand("bench", "Run named benchmark scenarios; write CSV, JSON and a plot");
+  auto* bench_cmd =
+      cli.add_subcommand("bench", "Run named benchmark scenarios; write CSV, JSON and a plot");
   bench_cmd->add_option("--scenario", bench.filters, "Substring of scenario names (repeatable)");
-  bench_cmd->add_option("--frames", bench.frames, "Timed frames per scenario")->check(CLI::Range(1, 100000))->capture_default_str();
-  bench_cmd->add_option("--warmup", bench.warmup, "Warm-up frames per scenario")->check(CLI::Range(0, 100000))->capture_default_str();
-  bench_cmd->add_option("--scale", bench.scale, "Resolution scale (e.g. 0.25 on lavapipe)")->check(CLI::Range(0.01, 4.0))->capture_default_str();
+  bench_cmd->add_option("--frames", bench.frames, "Timed frames per scenario")
+      ->check(CLI::Range(1, 100000))
+      ->capture_default_str();
+  bench_cmd->add_option("--warmup", bench.warmup, "Warm-up frames per scenario")
+      ->check(CLI::Range(0, 100000))
+      ->capture_default_str();
+  bench_cmd->add_option("--scale", bench.scale, "Resolution scale (e.g. 0.25 on lavapipe)")
+      ->check(CLI::Range(0.01, 4.0))
+      ->capture_default_str();
   bench_cmd->add_option("--out", bench.out, "Output folder")->capture_default_str();
-  bench_cmd->add_option("--device", bench.device, "auto|cpu|gpu|N|<name substring>")->capture_default_str();
+  bench_cmd->add_option("--device", bench.device, "auto|cpu|gpu|N|<name substring>")
+      ->capture_default_str();
   bench_cmd->add_flag("--validation", bench.validation, "Khronos validation (slow)");
   bench_cmd->add_flag("--list", bench.list, "List the scenarios and exit");
 
@@ -62,8 +84,10 @@ int dispatch(int argc, char** argv) {
 
   std::string devices_device = "auto";
   bool devices_validation = false;
-  auto* devices_cmd = cli.add_subcommand("devices", "List Vulkan devices and the one --device picks");
-  devices_cmd->add_option("--device", devices_device, "Selection to explain")->capture_default_str();
+  auto* devices_cmd =
+      cli.add_subcommand("devices", "List Vulkan devices and the one --device picks");
+  devices_cmd->add_option("--device", devices_device, "Selection to explain")
+      ->capture_default_str();
   devices_cmd->add_flag("--validation", devices_validation, "Enable validation while probing");
 
   try {
@@ -93,6 +117,8 @@ int dispatch(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // Logs go to stderr: stdout carries what tools parse (plans, schemas, JSON reports).
+  spdlog::set_default_logger(spdlog::stderr_color_mt("antumbra"));
   try {
     return dispatch(argc, argv);
   } catch (const std::exception& e) {

@@ -49,7 +49,8 @@ struct Canvas {
 
 }  // namespace
 
-void write_bar_chart(const std::string& path, const std::string& title, const std::vector<BarRow>& rows) {
+void write_bar_chart(const std::string& path, const std::string& title,
+                     const std::vector<BarRow>& rows) {
   constexpr int kRow = 14;
   constexpr int kLabel = 280;
   constexpr int kBar = 640;

@@ -14,6 +14,7 @@ struct BarRow {
 };
 
 // Throws std::runtime_error when the file cannot be written.
-void write_bar_chart(const std::string& path, const std::string& title, const std::vector<BarRow>& rows);
+void write_bar_chart(const std::string& path, const std::string& title,
+                     const std::vector<BarRow>& rows);
 
 }  // namespace antumbra::app

@@ -60,8 +60,8 @@ RenderSession::RenderSession(const DataPaths& paths, const SessionOptions& optio
   shaders_ = std::make_unique<gpu::ShaderCompiler>(shader_options);
   pipeline_cache_ = std::make_unique<gpu::PipelineCache>(*gpu_);
   registry_ = std::make_unique<fgvk::PassRegistry>(passes::builtin_pass_registry());
-  executor_ = std::make_unique<fgvk::Executor>(*gpu_, *shaders_, *registry_, paths_.shaders().string(),
-                                               pipeline_cache_->handle());
+  executor_ = std::make_unique<fgvk::Executor>(
+      *gpu_, *shaders_, *registry_, paths_.shaders().string(), pipeline_cache_->handle());
   frames_ = std::make_unique<gpu::FrameLoop>(*gpu_);
   timer_ = std::make_unique<gpu::GpuTimer>(*gpu_, frames_->frames_in_flight());
   observer_ = std::make_unique<Observer>(*timer_);
@@ -101,8 +101,8 @@ void RenderSession::render(int frames, TraceWriter* trace) {
     gpu_->collect_garbage();
     observer_->gather_gpu();
     timer_->begin_frame(cmd, frames_->slot());
-    const auto frame = gpu_scene_->update(frames_->slot(), *scene_, options_.viewport,
-                                          frames_->frame_number());
+    const auto frame =
+        gpu_scene_->update(frames_->slot(), *scene_, options_.viewport, frames_->frame_number());
     executor_->record(cmd, frame, observer_.get(), &report_);
     frames_->end_frame();
     if (trace != nullptr) {

@@ -9,13 +9,18 @@ namespace antumbra::app {
 
 void TraceWriter::write(const std::string& path) const {
   auto events = nlohmann::json::array();
-  events.push_back({{"name", "thread_name"}, {"ph", "M"}, {"pid", 1}, {"tid", 1},
-                    {"args", {{"name", "CPU"}}}});
-  events.push_back({{"name", "thread_name"}, {"ph", "M"}, {"pid", 1}, {"tid", 2},
-                    {"args", {{"name", "GPU"}}}});
+  events.push_back(
+      {{"name", "thread_name"}, {"ph", "M"}, {"pid", 1}, {"tid", 1}, {"args", {{"name", "CPU"}}}});
+  events.push_back(
+      {{"name", "thread_name"}, {"ph", "M"}, {"pid", 1}, {"tid", 2}, {"args", {{"name", "GPU"}}}});
   for (const auto& e : events_) {
-    events.push_back({{"name", e.name}, {"cat", e.category}, {"ph", "X"}, {"ts", e.start_us},
-                      {"dur", e.duration_us}, {"pid", 1}, {"tid", e.thread}});
+    events.push_back({{"name", e.name},
+                      {"cat", e.category},
+                      {"ph", "X"},
+                      {"ts", e.start_us},
+                      {"dur", e.duration_us},
+                      {"pid", 1},
+                      {"tid", e.thread}});
   }
   std::ofstream out(path);
   if (!out) throw std::runtime_error("cannot write the trace file " + path);

@@ -13,30 +13,50 @@ using fg::Stage;
 // pass runs as compute).
 std::vector<fg::PortDesc> lighting_ports() {
   return {
-      {.name = "depth", .access = Access::sampled, .stage = Stage::compute,
-       .formats = {Format::d32f, Format::d16, Format::d24s8}, .size_group = "screen",
+      {.name = "depth",
+       .access = Access::sampled,
+       .stage = Stage::compute,
+       .formats = {Format::d32f, Format::d16, Format::d24s8},
+       .size_group = "screen",
        .description = "G-buffer depth."},
-      {.name = "normal", .access = Access::sampled, .stage = Stage::compute,
-       .formats = {Format::rgba16f, Format::rgba32f}, .size_group = "screen",
+      {.name = "normal",
+       .access = Access::sampled,
+       .stage = Stage::compute,
+       .formats = {Format::rgba16f, Format::rgba32f},
+       .size_group = "screen",
        .description = "G-buffer view-space normal and roughness."},
-      {.name = "albedo", .access = Access::sampled, .stage = Stage::compute,
-       .formats = {Format::rgba8, Format::rgba16f}, .size_group = "screen",
+      {.name = "albedo",
+       .access = Access::sampled,
+       .stage = Stage::compute,
+       .formats = {Format::rgba8, Format::rgba16f},
+       .size_group = "screen",
        .description = "G-buffer albedo and metallic."},
-      {.name = "hdr", .direction = PortDirection::output, .access = Access::storage_write,
-       .stage = Stage::compute, .formats = {Format::rgba16f, Format::rgba32f},
-       .size_group = "screen", .description = "Linear HDR radiance."},
+      {.name = "hdr",
+       .direction = PortDirection::output,
+       .access = Access::storage_write,
+       .stage = Stage::compute,
+       .formats = {Format::rgba16f, Format::rgba32f},
+       .size_group = "screen",
+       .description = "Linear HDR radiance."},
   };
 }
 
 std::vector<fg::PortDesc> atlas_ports(bool optional) {
   return {
-      {.name = "atlas", .access = Access::sampled, .stage = Stage::compute,
-       .formats = {Format::d32f, Format::d16}, .min_layers = 6, .max_layers = 0,
+      {.name = "atlas",
+       .access = Access::sampled,
+       .stage = Stage::compute,
+       .formats = {Format::d32f, Format::d16},
+       .min_layers = 6,
+       .max_layers = 0,
        .optional = optional,
        .description = "Point-shadow atlas: face k of light slot s at layer 6s+k "
                       "(point-shadow-atlas)."},
-      {.name = "shadowData", .kind = ResourceKind::buffer, .access = Access::storage_read,
-       .stage = Stage::compute, .optional = optional,
+      {.name = "shadowData",
+       .kind = ResourceKind::buffer,
+       .access = Access::storage_read,
+       .stage = Stage::compute,
+       .optional = optional,
        .description = "Per-light atlas slots and face matrices (shadow_data.glsl)."},
   };
 }
@@ -44,31 +64,54 @@ std::vector<fg::PortDesc> atlas_ports(bool optional) {
 // Same names, ranges and defaults as deferred-lighting, so images match with shadows off.
 std::vector<fg::ParamDesc> lighting_params() {
   return {
-      {.name = "exposure", .type = fg::ParamType::number, .default_value = 1.0, .min = 0.0,
-       .max = 16.0, .description = "Scale applied to the shaded radiance."},
-      {.name = "ambient", .type = fg::ParamType::number, .default_value = 1.0, .min = 0.0,
-       .max = 16.0, .description = "Scale of the scene's ambient term."},
-      {.name = "specular", .type = fg::ParamType::number, .default_value = 0.25, .min = 0.0,
-       .max = 4.0, .description = "Strength of the Blinn-Phong specular lobe."},
+      {.name = "exposure",
+       .type = fg::ParamType::number,
+       .default_value = 1.0,
+       .min = 0.0,
+       .max = 16.0,
+       .description = "Scale applied to the shaded radiance."},
+      {.name = "ambient",
+       .type = fg::ParamType::number,
+       .default_value = 1.0,
+       .min = 0.0,
+       .max = 16.0,
+       .description = "Scale of the scene's ambient term."},
+      {.name = "specular",
+       .type = fg::ParamType::number,
+       .default_value = 0.25,
+       .min = 0.0,
+       .max = 4.0,
+       .description = "Strength of the Blinn-Phong specular lobe."},
   };
 }
 
 fg::ParamDesc kernel_param(const char* what) {
   // An enumeration rather than an integer: the filter sizes of the technique are exactly
   // these three, and the graph compiler then rejects any other value (with suggestions).
-  return {.name = "kernel", .type = fg::ParamType::enumeration, .default_value = "11",
-          .choices = {"5", "11", "23"},
-          .description = std::string("Filter taps per side of the ") + what + " (5x5, 11x11, 23x23)."};
+  return {
+      .name = "kernel",
+      .type = fg::ParamType::enumeration,
+      .default_value = "11",
+      .choices = {"5", "11", "23"},
+      .description = std::string("Filter taps per side of the ") + what + " (5x5, 11x11, 23x23)."};
 }
 
 std::vector<fg::ParamDesc> pcss_params() {
   return {
-      {.name = "blockerSearch", .type = fg::ParamType::integer, .default_value = 5, .min = 1.0,
-       .max = 23.0, .description = "PCSS blocker-search taps per side (even values round up to "
-                                   "odd); the region they span scales with the light size."},
-      {.name = "lightSizeScale", .type = fg::ParamType::number, .default_value = 1.0, .min = 0.0,
-       .max = 16.0, .description = "Multiplies each light's size (w_light) in the PCSS penumbra "
-                                   "estimate."},
+      {.name = "blockerSearch",
+       .type = fg::ParamType::integer,
+       .default_value = 5,
+       .min = 1.0,
+       .max = 23.0,
+       .description = "PCSS blocker-search taps per side (even values round up to "
+                      "odd); the region they span scales with the light size."},
+      {.name = "lightSizeScale",
+       .type = fg::ParamType::number,
+       .default_value = 1.0,
+       .min = 0.0,
+       .max = 16.0,
+       .description = "Multiplies each light's size (w_light) in the PCSS penumbra "
+                      "estimate."},
   };
 }
 
@@ -82,25 +125,39 @@ fg::PassDesc TiledLightingPass::describe() {
       "lists) of every scene point light, with an optional shadow term per light.";
   desc.ports = lighting_ports();
   for (auto& port : atlas_ports(true)) desc.ports.push_back(std::move(port));
+  desc.ports.push_back({.name = "layerTable",
+                        .kind = ResourceKind::buffer,
+                        .access = Access::storage_read,
+                        .stage = Stage::compute,
+                        .optional = true,
+                        .description =
+                            "Light -> shadow layer table (light-layering, layer_table.glsl); "
+                            "shadows = layered."});
   desc.ports.push_back(
-      {.name = "layerTable", .kind = ResourceKind::buffer, .access = Access::storage_read,
-       .stage = Stage::compute, .optional = true,
-       .description = "Light -> shadow layer table (light-layering, layer_table.glsl); "
-                      "shadows = layered."});
-  desc.ports.push_back(
-      {.name = "shadow", .access = Access::sampled, .stage = Stage::compute,
-       .formats = {Format::rgba16f, Format::rgba8, Format::rgba32f}, .min_layers = 1,
-       .max_layers = 8, .optional = true,
+      {.name = "shadow",
+       .access = Access::sampled,
+       .stage = Stage::compute,
+       .formats = {Format::rgba16f, Format::rgba8, Format::rgba32f},
+       .min_layers = 1,
+       .max_layers = 8,
+       .optional = true,
        .description = "Blurred layered shadow (1 lit .. 0 shadowed): layer L in channel L%4 of "
                       "array layer L/4; shadows = layered."});
-  desc.ports.push_back(
-      {.name = "colour", .access = Access::sampled, .stage = Stage::compute,
-       .formats = {Format::rgba32ui}, .min_layers = 1, .max_layers = 8, .optional = true,
-       .description = "Layered shadow colour of translucent occluders, rgba8 packed "
-                      "r<<24|g<<16|b<<8|a per channel like `shadow`; shadows = layered."});
+  desc.ports.push_back({.name = "colour",
+                        .access = Access::sampled,
+                        .stage = Stage::compute,
+                        .formats = {Format::rgba32ui},
+                        .min_layers = 1,
+                        .max_layers = 8,
+                        .optional = true,
+                        .description =
+                            "Layered shadow colour of translucent occluders, rgba8 packed "
+                            "r<<24|g<<16|b<<8|a per channel like `shadow`; shadows = layered."});
   desc.params = lighting_params();
   desc.params.push_back(
-      {.name = "shadows", .type = fg::ParamType::enumeration, .default_value = "none",
+      {.name = "shadows",
+       .type = fg::ParamType::enumeration,
+       .default_value = "none",
        .choices = {"none", "hard", "pcf", "pcss", "layered"},
        .description = "Shadow term: none; hard, pcf or pcss from the atlas (atlas + shadowData "
                       "required); layered from the blurred layer buffer (layerTable + shadow "
@@ -108,7 +165,9 @@ fg::PassDesc TiledLightingPass::describe() {
   desc.params.push_back(kernel_param("PCF / PCSS filter and the layered fallback"));
   for (auto& param : pcss_params()) desc.params.push_back(std::move(param));
   desc.params.push_back(
-      {.name = "fallback", .type = fg::ParamType::enumeration, .default_value = "pcf",
+      {.name = "fallback",
+       .type = fg::ParamType::enumeration,
+       .default_value = "pcf",
        .choices = {"hard", "pcf"},
        .description = "Layered mode: atlas lookup for lights without a layer (needs the atlas)."});
   return desc;
@@ -135,8 +194,7 @@ fg::PassDesc TiledLightingPass::describe_pcf() {
 fg::PassDesc TiledLightingPass::describe_pcss() {
   fg::PassDesc desc = describe_hard();
   desc.type = kPcssType;
-  desc.description =
-      "Baseline: tiled lighting with PCSS (blocker search, penumbra estimate, PCF).";
+  desc.description = "Baseline: tiled lighting with PCSS (blocker search, penumbra estimate, PCF).";
   desc.params.push_back(kernel_param("PCF step (the largest penumbra it can draw)"));
   for (auto& param : pcss_params()) desc.params.push_back(std::move(param));
   return desc;

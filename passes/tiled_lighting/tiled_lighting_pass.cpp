@@ -13,7 +13,7 @@
 namespace antumbra::passes {
 namespace {
 
-constexpr std::uint32_t kTileSize = 16;  // TILE_SIZE in tiled_lighting.comp
+constexpr std::uint32_t kTileSize = 16;        // TILE_SIZE in tiled_lighting.comp
 constexpr std::uint32_t kMaxShadowTexels = 8;  // MAX_SHADOW_TEXELS in layered.glsl
 
 struct PushConstants {
@@ -44,8 +44,8 @@ enum Binding : std::uint32_t {
                        const std::string& message) {
   fg::Diagnostics diagnostics;
   diagnostics.add({code, fg::Severity::error,
-                   "pass '" + context.pass.name + "' (" + context.pass.type + "): " + message,
-                   "", "", 0, 0});
+                   "pass '" + context.pass.name + "' (" + context.pass.type + "): " + message, "",
+                   "", 0, 0});
   throw fgvk::PassError(message, diagnostics);
 }
 
@@ -67,11 +67,16 @@ std::optional<ShadowMode> parse_shadow_mode(std::string_view name) {
 
 std::string_view to_string(ShadowMode mode) {
   switch (mode) {
-    case ShadowMode::none: return "none";
-    case ShadowMode::hard: return "hard";
-    case ShadowMode::pcf: return "pcf";
-    case ShadowMode::pcss: return "pcss";
-    case ShadowMode::layered: return "layered";
+    case ShadowMode::none:
+      return "none";
+    case ShadowMode::hard:
+      return "hard";
+    case ShadowMode::pcf:
+      return "pcf";
+    case ShadowMode::pcss:
+      return "pcss";
+    case ShadowMode::layered:
+      return "layered";
   }
   return "none";
 }
@@ -83,28 +88,31 @@ ShadowMode TiledLightingPass::mode_of(const fg::PlanPass& pass) {
   return parse_shadow_mode(param_string(pass, "shadows")).value_or(ShadowMode::none);
 }
 
-TiledLightingPass::TiledLightingPass(const fg::PlanPass& pass) : mode_(mode_of(pass)) {}
+TiledLightingPass::TiledLightingPass(const fg::PlanPass& pass) : mode_(mode_of(pass)) {
+}
 
 void TiledLightingPass::prepare(fgvk::PrepareContext& context) {
   const auto& b = context.bindings;
   const auto* atlas = b.image("atlas");
   const auto* shadow_data = b.buffer("shadowData");
-  const bool needs_atlas = mode_ == ShadowMode::hard || mode_ == ShadowMode::pcf ||
-                           mode_ == ShadowMode::pcss;
+  const bool needs_atlas =
+      mode_ == ShadowMode::hard || mode_ == ShadowMode::pcf || mode_ == ShadowMode::pcss;
   if ((atlas == nullptr) != (shadow_data == nullptr)) {
     fail(context, "TL001", "bind both `atlas` and `shadowData`, or neither");
   }
   if (needs_atlas && atlas == nullptr) {
-    fail(context, "TL002", "shadows = " + std::string(to_string(mode_)) +
-                               " needs the `atlas` and `shadowData` inputs");
+    fail(context, "TL002",
+         "shadows = " + std::string(to_string(mode_)) +
+             " needs the `atlas` and `shadowData` inputs");
   }
   // Layered mode uses the atlas only as the fallback of layer-less lights; other modes
   // ignore an atlas bound without a use (it is still read-declared, which is harmless).
   has_atlas_ = atlas != nullptr && mode_ != ShadowMode::none;
   if (has_atlas_ && shadow_data->size < shadow_data_bytes(atlas->layers)) {
-    fail(context, "TL003", "`shadowData` holds " + std::to_string(shadow_data->size) +
-                               " bytes; an atlas of " + std::to_string(atlas->layers) +
-                               " layers needs " + std::to_string(shadow_data_bytes(atlas->layers)));
+    fail(context, "TL003",
+         "`shadowData` holds " + std::to_string(shadow_data->size) + " bytes; an atlas of " +
+             std::to_string(atlas->layers) + " layers needs " +
+             std::to_string(shadow_data_bytes(atlas->layers)));
   }
   has_colour_ = false;
   if (mode_ == ShadowMode::layered) {
@@ -114,8 +122,8 @@ void TiledLightingPass::prepare(fgvk::PrepareContext& context) {
       fail(context, "TL004", "shadows = layered needs the `layerTable` and `shadow` inputs");
     }
     if (table->size < kLayerTableBytes) {
-      fail(context, "TL005", "`layerTable` must hold at least " +
-                                 std::to_string(kLayerTableBytes) + " bytes");
+      fail(context, "TL005",
+           "`layerTable` must hold at least " + std::to_string(kLayerTableBytes) + " bytes");
     }
     if (shadow->layers > kMaxShadowTexels) {
       fail(context, "TL006", "`shadow` has more than 8 array layers (32 shadow layers)");
@@ -184,8 +192,7 @@ void TiledLightingPass::execute(fgvk::ExecuteContext& context) {
   if (mode_ == ShadowMode::layered) {
     const auto& shadow = b.required_image("shadow");
     descriptors.storage_buffer(kLayerTable, b.buffer("layerTable")->buffer)
-        .combined_image_sampler(kShadow, shadow.view, context.samplers.linear_clamp,
-                                shadow.layout);
+        .combined_image_sampler(kShadow, shadow.view, context.samplers.linear_clamp, shadow.layout);
     if (has_colour_) {
       const auto& colour = b.required_image("colour");
       descriptors.combined_image_sampler(kColour, colour.view, nearest, colour.layout);

@@ -43,11 +43,17 @@ class LayerFillPass final : public fgvk::Pass {
     fg::PassDesc desc;
     desc.type = "test-layer-fill";
     desc.ports = {
-        {.name = "shadow", .direction = fg::PortDirection::output, .access = fg::Access::transfer_dst,
-         .stage = fg::Stage::transfer, .formats = {fg::Format::rgba16f}, .min_layers = 2,
+        {.name = "shadow",
+         .direction = fg::PortDirection::output,
+         .access = fg::Access::transfer_dst,
+         .stage = fg::Stage::transfer,
+         .formats = {fg::Format::rgba16f},
+         .min_layers = 2,
          .max_layers = 2},
-        {.name = "layerTable", .direction = fg::PortDirection::output,
-         .kind = fg::ResourceKind::buffer, .access = fg::Access::transfer_dst,
+        {.name = "layerTable",
+         .direction = fg::PortDirection::output,
+         .kind = fg::ResourceKind::buffer,
+         .access = fg::Access::transfer_dst,
          .stage = fg::Stage::transfer},
     };
     desc.params = {
@@ -63,8 +69,8 @@ class LayerFillPass final : public fgvk::Pass {
     const float a = passes::param_float(context.pass, "a");
     const float b = passes::param_float(context.pass, "b");
     const auto& shadow = context.bindings.required_image("shadow");
-    const std::array<VkClearColorValue, 2> values{{{{a, kDecoy, kDecoy, kDecoy}},
-                                                   {{kDecoy, b, kDecoy, kDecoy}}}};
+    const std::array<VkClearColorValue, 2> values{
+        {{{a, kDecoy, kDecoy, kDecoy}}, {{kDecoy, b, kDecoy, kDecoy}}}};
     for (std::uint32_t layer = 0; layer < 2; ++layer) {
       const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, layer, 1};
       vkCmdClearColorImage(context.cmd, shadow.image, shadow.layout, &values[layer], 1, &range);
@@ -73,7 +79,8 @@ class LayerFillPass final : public fgvk::Pass {
     table[0] = 2;  // light count
     table[1] = 6;  // layers used
     table[4] = kLayerOfLight0;
-    table[5] = passes::param_bool(context.pass, "light1HasLayer") ? kLayerOfLight1 : passes::kNoLayer;
+    table[5] =
+        passes::param_bool(context.pass, "light1HasLayer") ? kLayerOfLight1 : passes::kNoLayer;
     vkCmdUpdateBuffer(context.cmd, context.bindings.buffer("layerTable")->buffer, 0,
                       passes::kLayerTableBytes, table.data());
   }
@@ -120,7 +127,8 @@ class LayeredModeTest : public render_testing::RenderTest {
     shaders_ = std::make_unique<gpu::ShaderCompiler>(gpu::ShaderCompilerOptions{{shader_root}});
     registry_ = std::make_unique<fgvk::PassRegistry>(passes::builtin_pass_registry());
     registry_->add(LayerFillPass::describe(), &make_fill);
-    executor_ = std::make_unique<fgvk::Executor>(*gpu_, *shaders_, *registry_, shader_root.string());
+    executor_ =
+        std::make_unique<fgvk::Executor>(*gpu_, *shaders_, *registry_, shader_root.string());
     frames_ = std::make_unique<gpu::FrameLoop>(*gpu_);
     scene_ = floor_scene();
     add_light(scene_, {-2.0f, 1.0f, 0.0f}, {1.0f, 0.8f, 0.6f}, 2.0f, 4.0f);
@@ -199,7 +207,8 @@ TEST_F(LayeredModeTest, EachLightReadsItsOwnLayer) {
   gpu::HostImage expected = h00;
   gpu::HostImage sum = h00;
   for (std::size_t i = 0; i < expected.texels.size(); ++i) {
-    expected.texels[i] += 0.25f * (h10.texels[i] - h00.texels[i]) + 0.5f * (h01.texels[i] - h00.texels[i]);
+    expected.texels[i] +=
+        0.25f * (h10.texels[i] - h00.texels[i]) + 0.5f * (h01.texels[i] - h00.texels[i]);
     sum.texels[i] += (h10.texels[i] - h00.texels[i]) + (h01.texels[i] - h00.texels[i]);
   }
   expect_close(expected, mixed, "visibility 0.25 / 0.5");

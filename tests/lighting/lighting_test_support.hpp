@@ -5,8 +5,8 @@
 #include <cstdint>
 #include <string>
 
-#include <glm/glm.hpp>
 #include <vulkan/vulkan.h>
+#include <glm/glm.hpp>
 
 #include "antumbra/gpu/image_io.hpp"
 #include "antumbra/scene/scene.hpp"

@@ -13,7 +13,9 @@ using namespace antumbra;
 
 namespace {
 
-const fg::PortDesc* port(const fg::PassDesc& desc, const char* name) { return desc.find_port(name); }
+const fg::PortDesc* port(const fg::PassDesc& desc, const char* name) {
+  return desc.find_port(name);
+}
 
 // A G-buffer and one lighting pass of `type` with `params`, no shadow inputs bound.
 std::string lighting_graph(const std::string& type, const std::string& params) {
@@ -24,7 +26,8 @@ std::string lighting_graph(const std::string& type, const std::string& params) {
     "hdr": { "kind": "image", "format": "rgba16f", "size": "viewport" } },
   "passes": [
     { "name": "gbuffer", "type": "gbuffer", "out": { "depth": "depth", "normal": "normal", "albedo": "albedo" } },
-    { "name": "lighting", "type": ")" + type + R"(", "params": )" + params + R"(,
+    { "name": "lighting", "type": ")" +
+                     type + R"(", "params": )" + params + R"(,
       "in": { "depth": "depth", "normal": "normal", "albedo": "albedo" },
       "out": { "hdr": "hdr" } } ],
   "output": "hdr" })";

@@ -24,7 +24,9 @@ namespace {
 constexpr double kRel = 2e-3;
 constexpr double kAbs = 1e-4;
 
-std::filesystem::path lighting_data() { return source_dir() / "tests" / "data" / "lighting"; }
+std::filesystem::path lighting_data() {
+  return source_dir() / "tests" / "data" / "lighting";
+}
 
 struct Comparison {
   std::size_t compared = 0;
@@ -41,7 +43,8 @@ void compare_texel(Comparison& cmp, std::uint32_t x, std::uint32_t y, const glm:
   for (int c = 0; c < 3; ++c) {
     const double d = std::abs(double(actual[c]) - expected[c]);
     cmp.worst_abs = std::max(cmp.worst_abs, d);
-    if (std::abs(expected[c]) > 1e-3) cmp.worst_rel = std::max(cmp.worst_rel, d / std::abs(expected[c]));
+    if (std::abs(expected[c]) > 1e-3)
+      cmp.worst_rel = std::max(cmp.worst_rel, d / std::abs(expected[c]));
     bad = bad || !(d <= kAbs + kRel * std::abs(expected[c]));
   }
   if (bad && cmp.over++ == 0) {
@@ -77,10 +80,10 @@ class TiledLightingTest : public RenderTest {
       for (std::uint32_t x = step / 2; x < viewport.width; x += step) {
         const float d = texel(depth, x, y).x;
         if (d >= 1.0f) continue;
-        compare_texel(cmp, x, y,
-                      reference_radiance(scene, viewport, x, y, d, texel(normal, x, y),
-                                         texel(albedo, x, y)),
-                      texel(hdr, x, y));
+        compare_texel(
+            cmp, x, y,
+            reference_radiance(scene, viewport, x, y, d, texel(normal, x, y), texel(albedo, x, y)),
+            texel(hdr, x, y));
       }
     }
     EXPECT_GT(cmp.compared, 20u) << "too few geometry pixels sampled";
@@ -92,10 +95,12 @@ class TiledLightingTest : public RenderTest {
 TEST_F(TiledLightingTest, MatchesDeferredLightingWithShadowsOff) {
   OPEN_SESSION(session, kGolden);
   session->set_scene(default_scene());
-  ASSERT_NO_FATAL_FAILURE(load_graph_ok(*session, load_graph_file(lighting_data() / "deferred_hdr.json")));
+  ASSERT_NO_FATAL_FAILURE(
+      load_graph_ok(*session, load_graph_file(lighting_data() / "deferred_hdr.json")));
   session->render(2, nullptr);
   const auto deferred = read_resource(*session, "hdr");
-  ASSERT_NO_FATAL_FAILURE(load_graph_ok(*session, load_graph_file(lighting_data() / "tiled_hdr.json")));
+  ASSERT_NO_FATAL_FAILURE(
+      load_graph_ok(*session, load_graph_file(lighting_data() / "tiled_hdr.json")));
   session->render(2, nullptr);
   const auto tiled = read_resource(*session, "hdr");
   expect_no_validation_errors(*session);
@@ -132,7 +137,8 @@ TEST_F(TiledLightingTest, ThousandLightsMatchCpuReference) {
   }
   ASSERT_EQ(scene.lights.size(), 1024u);
   session->set_scene(scene);
-  ASSERT_NO_FATAL_FAILURE(load_graph_ok(*session, load_graph_file(lighting_data() / "tiled_hdr.json")));
+  ASSERT_NO_FATAL_FAILURE(
+      load_graph_ok(*session, load_graph_file(lighting_data() / "tiled_hdr.json")));
   expect_matches_reference(*session, scene, kGolden, 5);
 }
 
@@ -149,6 +155,7 @@ TEST_F(TiledLightingTest, OverflowingTileListsDropNoLight) {
               6.0f);
   }
   session->set_scene(scene);
-  ASSERT_NO_FATAL_FAILURE(load_graph_ok(*session, load_graph_file(lighting_data() / "tiled_hdr.json")));
+  ASSERT_NO_FATAL_FAILURE(
+      load_graph_ok(*session, load_graph_file(lighting_data() / "tiled_hdr.json")));
   expect_matches_reference(*session, scene, kSmall, 4);
 }

@@ -105,6 +105,24 @@ GraphicsPipelineBuilder& GraphicsPipelineBuilder::additive_blend(std::uint32_t a
   return *this;
 }
 
+GraphicsPipelineBuilder& GraphicsPipelineBuilder::multiply_blend(std::uint32_t attachment) {
+  auto& b = blend_.at(attachment);
+  b.blendEnable = VK_TRUE;
+  b.srcColorBlendFactor = VK_BLEND_FACTOR_DST_COLOR;
+  b.dstColorBlendFactor = VK_BLEND_FACTOR_ZERO;
+  b.colorBlendOp = VK_BLEND_OP_ADD;
+  b.srcAlphaBlendFactor = VK_BLEND_FACTOR_DST_ALPHA;
+  b.dstAlphaBlendFactor = VK_BLEND_FACTOR_ZERO;
+  b.alphaBlendOp = VK_BLEND_OP_ADD;
+  return *this;
+}
+
+GraphicsPipelineBuilder& GraphicsPipelineBuilder::color_write_mask(std::uint32_t attachment,
+                                                                   VkColorComponentFlags mask) {
+  blend_.at(attachment).colorWriteMask = mask;
+  return *this;
+}
+
 GraphicsPipelineBuilder& GraphicsPipelineBuilder::layout(VkPipelineLayout layout) {
   layout_ = layout;
   return *this;

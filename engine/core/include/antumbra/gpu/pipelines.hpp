@@ -114,6 +114,9 @@ class GraphicsPipelineBuilder {
   // Standard alpha blending on one attachment (others stay opaque).
   GraphicsPipelineBuilder& alpha_blend(std::uint32_t attachment);
   GraphicsPipelineBuilder& additive_blend(std::uint32_t attachment);
+  // dst * src (transmittance maps: translucent layers compose by multiplication).
+  GraphicsPipelineBuilder& multiply_blend(std::uint32_t attachment);
+  GraphicsPipelineBuilder& color_write_mask(std::uint32_t attachment, VkColorComponentFlags mask);
   GraphicsPipelineBuilder& layout(VkPipelineLayout layout);
   GraphicsPipelineBuilder& cache(VkPipelineCache cache);
   Pipeline build(Context& context, std::string_view name) const;

@@ -1,0 +1,58 @@
+#include "point_shadow_atlas_pass.hpp"
+
+namespace antumbra::passes {
+
+fg::PassDesc PointShadowAtlasPass::describe() {
+  using fg::Access;
+  using fg::Format;
+  using fg::PortDirection;
+  using fg::ResourceKind;
+  using fg::Stage;
+  fg::PassDesc desc;
+  desc.type = "point-shadow-atlas";
+  desc.description =
+      "Renders the six 90-degree faces of every shadow-casting point light into one layered "
+      "depth atlas (face k of light slot s at layer 6s+k) with one instanced draw, culls faces "
+      "the camera cannot see, re-renders only faces whose light or geometry changed, and "
+      "writes the per-light/per-face shadowData table.";
+  desc.ports = {
+      {.name = "atlas", .direction = PortDirection::output, .access = Access::depth_attachment,
+       .stage = Stage::graphics, .formats = {Format::d32f, Format::d16}, .min_layers = 6,
+       .max_layers = 0, .size_group = "atlas",
+       .description = "Face depths (0 near .. 1 at the light's range); declare it persistent "
+                      "so that cached faces survive between frames."},
+      {.name = "colour", .direction = PortDirection::output, .access = Access::color_attachment,
+       .stage = Stage::graphics, .formats = {Format::rgba8}, .min_layers = 6, .max_layers = 0,
+       .optional = true, .size_group = "atlas",
+       .description = "Shadow colour per face: product of the transmittances of the translucent "
+                      "casters along the ray (white = clear); translucent casters then stay out "
+                      "of the depth atlas. Same size and layers as `atlas`, persistent too."},
+      {.name = "shadowData", .direction = PortDirection::output, .kind = ResourceKind::buffer,
+       .access = Access::transfer_dst, .stage = Stage::transfer,
+       .description = "Header, ShadowLight per scene light and ShadowFace per layer "
+                      "(passes/common/shadow_data.glsl); at least shadow_data_bytes(layers)."},
+  };
+  desc.params = {
+      {.name = "nearPlane", .type = fg::ParamType::number, .default_value = 0.05, .min = 0.001,
+       .max = 10.0, .description = "Near plane of every face in metres (capped at half the range)."},
+      {.name = "depthBias", .type = fg::ParamType::number, .default_value = 2.0, .min = 0.0,
+       .max = 1000.0,
+       .description = "Constant raster depth bias (depthBiasConstantFactor: units of the depth "
+                      "format's resolution)."},
+      {.name = "slopeBias", .type = fg::ParamType::number, .default_value = 1.75, .min = 0.0,
+       .max = 16.0, .description = "Slope-scaled raster depth bias (depthBiasSlopeFactor)."},
+      {.name = "cullFaces", .type = fg::ParamType::boolean, .default_value = true,
+       .description = "Skip faces whose frustum (to the light's range) misses the camera's."},
+      {.name = "cache", .type = fg::ParamType::boolean, .default_value = true,
+       .description = "Keep faces whose light and geometry did not change (static caching)."},
+      {.name = "translucentColour", .type = fg::ParamType::boolean, .default_value = true,
+       .description = "With `colour` bound: translucent casters tint the colour map instead of "
+                      "writing depth. Off (or `colour` unbound): they cast opaque shadows."},
+      {.name = "layeredDraw", .type = fg::ParamType::boolean, .default_value = true,
+       .description = "One instanced draw writing gl_Layer where the device supports it; off "
+                      "forces the fallback of one draw per face into a single-layer view."},
+  };
+  return desc;
+}
+
+}  // namespace antumbra::passes

@@ -1,0 +1,69 @@
+#pragma once
+// Pass type "point-shadow-atlas". Reflection in point_shadow_atlas_desc.cpp, runtime in
+// point_shadow_atlas_pass.cpp, the Vulkan-free face math in shadow_faces.* and the
+// per-frame culling/caching bookkeeping in atlas_planner.*; shaders beside them.
+//
+// Colour convention (optional `colour` port): opaque casters go to depth only;
+// translucent casters go to the colour map only, depth-tested against the opaque depth
+// (no depth write) and multiplied into a map cleared to white. A receiver reads
+// colour = product of the transmittances of the panes between it and the light that
+// are nearer the light than the first opaque caster; it cannot tell panes behind it
+// from panes in front of it, which is the usual one-layer approximation.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "antumbra/fg/reflection.hpp"
+#include "antumbra/fgvk/pass.hpp"
+#include "antumbra/gpu/handle.hpp"
+#include "antumbra/gpu/resources.hpp"
+#include "atlas_planner.hpp"
+
+namespace antumbra::passes {
+
+class PointShadowAtlasPass final : public fgvk::Pass {
+ public:
+  static fg::PassDesc describe();
+  explicit PointShadowAtlasPass(const fg::PlanPass& pass);
+
+  void prepare(fgvk::PrepareContext& context) override;
+  void execute(fgvk::ExecuteContext& context) override;
+  [[nodiscard]] std::vector<std::string> shader_files() const override { return shader_files_; }
+
+  [[nodiscard]] const AtlasStats& stats() const { return planner_.last().stats; }
+  [[nodiscard]] bool layered() const { return layered_; }
+
+ private:
+  struct SlotBuffers {
+    gpu::Buffer draws;    // FaceDraw per face to render (shadow_atlas.vert)
+    gpu::Buffer staging;  // shadowData contents, copied into the graph buffer
+  };
+  void upload(fgvk::ExecuteContext& context, const AtlasFrame& frame, SlotBuffers& slot);
+  void draw_layered(fgvk::ExecuteContext& context, const AtlasFrame& frame, VkBuffer draws);
+  void draw_per_face(fgvk::ExecuteContext& context, const AtlasFrame& frame, VkBuffer draws);
+  void draw_scene(fgvk::ExecuteContext& context, VkBuffer draws, std::uint32_t first,
+                  std::uint32_t count);
+
+  AtlasSettings settings_;
+  float depth_bias_ = 0.0f;
+  float slope_bias_ = 0.0f;
+  bool want_colour_ = true;
+  bool want_layered_ = true;
+  bool layered_ = false;
+  bool colour_ = false;  // colour map bound and in use
+  VkImage atlas_image_ = VK_NULL_HANDLE;
+  VkImage colour_image_ = VK_NULL_HANDLE;
+
+  AtlasPlanner planner_;
+  std::vector<SlotBuffers> slots_;
+  gpu::DescriptorSetLayout set_layout_;
+  gpu::PipelineLayout layout_;
+  gpu::Pipeline depth_pipeline_;
+  gpu::Pipeline colour_pipeline_;
+  std::vector<gpu::ImageView> depth_layer_views_;   // fallback path only
+  std::vector<gpu::ImageView> colour_layer_views_;  // fallback path only
+  std::vector<std::string> shader_files_;
+};
+
+}  // namespace antumbra::passes

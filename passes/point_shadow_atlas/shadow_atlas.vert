@@ -1,0 +1,44 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+#ifdef LAYERED
+// gl_Layer from the vertex shader (Vulkan 1.2 shaderOutputLayer).
+#extension GL_ARB_shader_viewport_layer_array : require
+#endif
+#include "../common/material.glsl"
+
+// One instance per face to render: the whole atlas update is one instanced draw of the
+// merged world-space scene (LAYERED), or one draw per face with firstInstance = face
+// entry into a single-layer view when the device cannot write gl_Layer here.
+struct FaceDraw {
+  mat4 view_proj;
+  uvec4 info;  // x atlas layer
+};
+
+layout(set = 0, binding = 0) readonly buffer Faces { FaceDraw faces[]; };
+layout(set = 0, binding = 1) readonly buffer Materials { GpuMaterial materials[]; };
+
+layout(location = 0) in vec3 in_position;
+layout(location = 2) in uint in_material;
+
+#ifdef COLOUR_PASS
+layout(location = 0) flat out uint out_material;
+#endif
+
+void main() {
+  FaceDraw face = faces[gl_InstanceIndex];
+  bool translucent = materials[in_material].params.z > 0.5;
+#if defined(COLOUR_PASS)
+  bool keep = translucent;  // the colour map holds translucent casters only
+  out_material = in_material;
+#elif defined(SKIP_TRANSLUCENT)
+  bool keep = !translucent;  // translucent casters tint through the colour map instead
+#else
+  bool keep = true;
+#endif
+  // Every vertex of a dropped triangle lands beyond the far plane, so the triangle is
+  // clipped before rasterisation (materials are per triangle, so all three agree).
+  gl_Position = keep ? face.view_proj * vec4(in_position, 1.0) : vec4(0.0, 0.0, 2.0, 1.0);
+#ifdef LAYERED
+  gl_Layer = int(face.info.x);
+#endif
+}
