@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "antumbra/fg/compiler.hpp"
+#include "antumbra/fg/diagnostic_codes.hpp"
 #include "antumbra/gpu/image_io.hpp"
 #include "antumbra/gpu/pipeline_cache.hpp"
 #include "register_builtin_passes.hpp"
@@ -82,6 +83,10 @@ fg::Diagnostics RenderSession::load_graph(const fg::GraphDesc& graph) {
     executor_->load(std::move(plan.value()));
   } catch (const fgvk::PassError& e) {
     diagnostics.append(e.diagnostics());
+  } catch (const std::runtime_error& e) {
+    // The device cannot realise this plan (memory types, a pass type with no runtime):
+    // the previous plan stays live and the reason is reported like any diagnostic.
+    diagnostics.add({fg::codes::kRealiseFailed, fg::Severity::error, e.what(), graph.document.file(), "", 0, 0});
   }
   return diagnostics;
 }

@@ -5,6 +5,7 @@
 #include "gbuffer/gbuffer_pass.hpp"
 #include "layered_penumbra/layered_penumbra_pass.hpp"
 #include "light_layering/light_layering_pass.hpp"
+#include "point_shadow_atlas/point_shadow_atlas_pass.hpp"
 #include "tiled_lighting/tiled_lighting_pass.hpp"
 #include "tonemap/tonemap_pass.hpp"
 
@@ -20,6 +21,7 @@ void register_builtin_passes(fgvk::PassRegistry& registry) {
   registry.add(DeferredLightingPass::describe(), &make_pass<DeferredLightingPass>);
   registry.add(TonemapPass::describe(), &make_pass<TonemapPass>);
   registry.add(LightLayeringPass::describe(), &make_pass<LightLayeringPass>);
+  registry.add(PointShadowAtlasPass::describe(), &make_pass<PointShadowAtlasPass>);
   registry.add(LayeredPenumbraPass::describe(), &make_pass<LayeredPenumbraPass>);
   registry.add(AnisotropicBlurPass::describe(), &make_pass<AnisotropicBlurPass>);
   registry.add(TiledLightingPass::describe(), &make_pass<TiledLightingPass>);

@@ -24,6 +24,9 @@ struct FrameResources {
   VkBuffer vertices = VK_NULL_HANDLE;        // GpuVertex[] in world space
   VkBuffer indices = VK_NULL_HANDLE;         // uint32 triangle list
   std::uint32_t index_count = 0;
+  // Changes whenever the uploaded geometry or materials change (a new GpuScene), so
+  // passes that cache results derived from them (shadow faces) know to redo them.
+  std::uint64_t geometry_version = 0;
   VkExtent2D viewport{};
   const scene::Scene* scene = nullptr;
   std::uint64_t frame_index = 0;

@@ -1,6 +1,7 @@
 #include "gpu_scene.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cstring>
 #include <stdexcept>
 
@@ -10,6 +11,9 @@ namespace antumbra::passes {
 namespace {
 
 constexpr std::uint32_t kMaxLights = 4096;
+
+// Process-wide, so two scenes uploaded one after the other never share a version.
+std::atomic<std::uint64_t> next_geometry_version{1};
 
 template <class T>
 gpu::Buffer upload_device_buffer(gpu::Context& gpu, const std::vector<T>& data,
@@ -32,6 +36,7 @@ GpuScene::GpuScene(gpu::Context& gpu, const scene::Scene& scene, std::uint32_t f
   indices_ = upload_device_buffer(gpu, geometry.indices, VK_BUFFER_USAGE_INDEX_BUFFER_BIT |
                                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "scene.indices");
   index_count_ = static_cast<std::uint32_t>(geometry.indices.size());
+  geometry_version_ = next_geometry_version.fetch_add(1);
   materials_ = upload_device_buffer(gpu, build_materials(scene), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                                     "scene.materials");
   for (std::uint32_t i = 0; i < frames_in_flight; ++i) {
@@ -69,6 +74,7 @@ fgvk::FrameResources GpuScene::update(std::uint32_t slot_index, const scene::Sce
   frame.vertices = vertices_;
   frame.indices = indices_;
   frame.index_count = index_count_;
+  frame.geometry_version = geometry_version_;
   frame.viewport = viewport;
   frame.scene = &scene;
   frame.frame_index = frame_index;

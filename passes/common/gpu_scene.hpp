@@ -33,6 +33,7 @@ class GpuScene {
   gpu::Buffer indices_;
   gpu::Buffer materials_;
   std::uint32_t index_count_ = 0;
+  std::uint64_t geometry_version_ = 0;
   std::vector<Slot> slots_;
 };
 

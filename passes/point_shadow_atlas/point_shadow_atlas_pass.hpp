@@ -51,7 +51,8 @@ class PointShadowAtlasPass final : public fgvk::Pass {
   bool want_colour_ = true;
   bool want_layered_ = true;
   bool layered_ = false;
-  bool colour_ = false;  // colour map bound and in use
+  bool colour_map_ = false;  // `colour` bound: cleared white with the depth, always
+  bool colour_ = false;      // ... and translucent casters tint it
   VkImage atlas_image_ = VK_NULL_HANDLE;
   VkImage colour_image_ = VK_NULL_HANDLE;
 

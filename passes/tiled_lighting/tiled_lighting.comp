@@ -33,6 +33,7 @@ layout(set = 0, binding = 4) uniform sampler2D g_albedo;
 layout(set = 0, binding = 5, HDR_FORMAT) uniform writeonly image2D out_hdr;
 
 #if HAS_ATLAS
+#include "../common/shadow_data.glsl"
 layout(set = 0, binding = 6) uniform sampler2DArray atlas;
 layout(set = 0, binding = 7, std430) readonly buffer ShadowData {
   ShadowHeader shadow_header;

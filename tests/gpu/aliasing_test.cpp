@@ -74,8 +74,8 @@ TEST_F(AliasingTest, AliasedTransientsRenderLikeUnaliasedOnes) {
         // The later one's first use must order against the earlier one's last use.
         const int later = a.first_use > b.first_use ? static_cast<int>(i) : static_cast<int>(j);
         const fg::PlanBarrier* barrier = first_use_barrier(plan, later);
-        ASSERT_NE(barrier, nullptr) << "no first-use barrier for "
-                                    << plan.resources[static_cast<std::size_t>(later)].name;
+        ASSERT_NE(barrier, nullptr)
+            << "no first-use barrier for " << plan.resources[static_cast<std::size_t>(later)].name;
         EXPECT_TRUE(barrier->discard);
         EXPECT_GE(barrier->previous_alias, 0)
             << plan.resources[static_cast<std::size_t>(later)].name

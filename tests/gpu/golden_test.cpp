@@ -23,9 +23,9 @@ using namespace antumbra::render_testing;
 
 namespace {
 
-constexpr int kChannelTolerance = 3;           // in 1/255 units, per channel
-constexpr double kMinFractionWithin = 0.995;   // of the pixels
-constexpr double kMaxMeanAbsDiff = 0.5;        // in 1/255 units
+constexpr int kChannelTolerance = 3;          // in 1/255 units, per channel
+constexpr double kMinFractionWithin = 0.995;  // of the pixels
+constexpr double kMaxMeanAbsDiff = 0.5;       // in 1/255 units
 
 bool update_golden() {
   const char* value = std::getenv("ANTUMBRA_UPDATE_GOLDEN");

@@ -16,7 +16,8 @@ class ShippedGraphsTest : public RenderTest {};
 TEST_F(ShippedGraphsTest, EveryGraphRendersWithoutValidationErrors) {
   std::vector<std::filesystem::path> files;
   for (const auto& entry : std::filesystem::directory_iterator(source_dir() / "data" / "graphs")) {
-    if (entry.is_regular_file() && entry.path().extension() == ".json") files.push_back(entry.path());
+    if (entry.is_regular_file() && entry.path().extension() == ".json")
+      files.push_back(entry.path());
   }
   std::sort(files.begin(), files.end());
   ASSERT_FALSE(files.empty()) << "no graphs in data/graphs";

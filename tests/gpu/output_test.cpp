@@ -124,8 +124,8 @@ TEST_F(OutputTest, DepthIsInUnitRangeWithGeometryInFront) {
   EXPECT_EQ(stats.non_finite, 0u);
   EXPECT_GE(stats.min, 0.0f);
   EXPECT_LE(stats.max, 1.0f);
-  const auto in_front = std::count_if(depth.texels.begin(), depth.texels.end(),
-                                      [](float d) { return d < 1.0f; });
+  const auto in_front =
+      std::count_if(depth.texels.begin(), depth.texels.end(), [](float d) { return d < 1.0f; });
   EXPECT_GT(in_front, 0) << "no geometry drawn";
   EXPECT_FALSE(is_blank(depth));
 }

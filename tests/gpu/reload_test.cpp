@@ -91,7 +91,9 @@ TEST_F(ReloadTest, BrokenGraphKeepsTheLastGoodPlan) {
     SCOPED_TRACE(what);
     const auto diagnostics = session->load_graph(graph);
     EXPECT_TRUE(diagnostics.has_errors());
-    if (code != nullptr) EXPECT_NE(diagnostics.find(code), nullptr) << describe(diagnostics);
+    if (code != nullptr) {
+      EXPECT_NE(diagnostics.find(code), nullptr) << describe(diagnostics);
+    }
     ASSERT_TRUE(session->executor().loaded());
     const fg::Plan& plan = session->executor().plan();
     EXPECT_EQ(plan.name, "deferred");

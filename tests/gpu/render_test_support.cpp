@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
-#include <cstring>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
@@ -11,7 +10,6 @@
 #include <stb_image.h>
 
 #include "antumbra/fg/json_document.hpp"
-#include "antumbra/gpu/commands.hpp"
 #include "antumbra/gpu/context.hpp"
 #include "antumbra/gpu/frame_loop.hpp"
 #include "antumbra/gpu/resources.hpp"
@@ -22,21 +20,26 @@
 namespace antumbra::render_testing {
 namespace fs = std::filesystem;
 
-fs::path source_dir() { return fs::path(ANTUMBRA_TEST_SOURCE_DIR); }
-fs::path gpu_data_dir() { return source_dir() / "tests" / "data" / "gpu"; }
+fs::path source_dir() {
+  return fs::path(ANTUMBRA_TEST_SOURCE_DIR);
+}
+fs::path gpu_data_dir() {
+  return source_dir() / "tests" / "data" / "gpu";
+}
 
 fs::path artifact_dir() {
   const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  std::string name = info != nullptr
-                         ? std::string(info->test_suite_name()) + "." + info->name()
-                         : std::string("unknown");
+  std::string name = info != nullptr ? std::string(info->test_suite_name()) + "." + info->name()
+                                     : std::string("unknown");
   std::replace(name.begin(), name.end(), '/', '_');
   const fs::path dir = fs::path(ANTUMBRA_TEST_BINARY_DIR) / "gpu_test_output" / name;
   fs::create_directories(dir);
   return dir;
 }
 
-app::DataPaths source_paths() { return app::DataPaths{source_dir()}; }
+app::DataPaths source_paths() {
+  return app::DataPaths{source_dir()};
+}
 
 std::string describe(const fg::Diagnostics& diagnostics) {
   std::string text;
@@ -72,66 +75,12 @@ scene::Scene default_scene() {
   return load_scene(source_dir() / "data" / "scenes" / "atrium.json");
 }
 
-namespace {
-
-// Depth images: gpu::read_image only reads colour formats. Copies the depth aspect
-// of layer 0 to a host-visible buffer and converts to one float per texel.
-gpu::HostImage read_depth(gpu::Context& context, const gpu::Image& image, VkImageLayout layout) {
-  const VkFormat format = image.format();
-  if (format != VK_FORMAT_D32_SFLOAT && format != VK_FORMAT_D16_UNORM) {
-    throw std::invalid_argument("read_depth: unsupported depth format for " + image.desc().name);
-  }
-  const VkExtent2D extent = image.extent();
-  const std::uint32_t texel = format == VK_FORMAT_D32_SFLOAT ? 4u : 2u;
-  const VkDeviceSize size = VkDeviceSize{extent.width} * extent.height * texel;
-  gpu::Buffer readback =
-      gpu::Buffer::create(context, size, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                          gpu::MemoryUsage::readback, "test.readback." + image.desc().name);
-  const VkImageSubresourceRange range{VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 1};
-  context.submit_immediate([&](VkCommandBuffer cmd) {
-    gpu::image_barrier(cmd, {image.handle(), layout, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                             VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_WRITE_BIT,
-                             VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT, range});
-    VkBufferImageCopy region{};
-    region.imageSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 0, 1};
-    region.imageExtent = {extent.width, extent.height, 1};
-    vkCmdCopyImageToBuffer(cmd, image.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                           readback.handle(), 1, &region);
-    gpu::image_barrier(cmd, {image.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, layout,
-                             VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_NONE,
-                             VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
-                             VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT, range});
-    gpu::buffer_barrier(cmd, readback.handle(), VK_PIPELINE_STAGE_2_COPY_BIT,
-                        VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT,
-                        VK_ACCESS_2_HOST_READ_BIT);
-  });
-  gpu::HostImage out;
-  out.width = extent.width;
-  out.height = extent.height;
-  out.channels = 1;
-  out.texels.resize(std::size_t{extent.width} * extent.height);
-  const auto* bytes = reinterpret_cast<const std::uint8_t*>(readback.mapped());
-  for (std::size_t i = 0; i < out.texels.size(); ++i) {
-    if (texel == 4) {
-      std::memcpy(&out.texels[i], bytes + i * 4, 4);
-    } else {
-      std::uint16_t value = 0;
-      std::memcpy(&value, bytes + i * 2, 2);
-      out.texels[i] = static_cast<float>(value) / 65535.0f;
-    }
-  }
-  return out;
-}
-
-}  // namespace
-
 gpu::HostImage read_resource(app::RenderSession& session, const std::string& resource) {
   const gpu::Image* image = session.executor().gpu_image(resource);
   const fgvk::BoundImage* bound = session.executor().image(resource);
   if (image == nullptr || bound == nullptr) {
     throw std::runtime_error("resource \"" + resource + "\" is not a realised image");
   }
-  if (gpu::is_depth_format(image->format())) return read_depth(session.gpu(), *image, bound->layout);
   return gpu::read_image(session.gpu(), *image, bound->layout);
 }
 
@@ -261,8 +210,8 @@ float max_abs_difference(const gpu::HostImage& a, const gpu::HostImage& b) {
 }
 
 std::string validation_report(const gpu::Context& context) {
-  return std::to_string(context.validation_error_count()) + " validation error(s):" +
-         gpu::testing::format_validation_messages(context);
+  return std::to_string(context.validation_error_count()) +
+         " validation error(s):" + gpu::testing::format_validation_messages(context);
 }
 
 void copy_tree(const fs::path& from, const fs::path& to) {
@@ -284,7 +233,9 @@ void use_private_shader_cache() {
 
 }  // namespace
 
-void RenderTest::SetUp() { use_private_shader_cache(); }
+void RenderTest::SetUp() {
+  use_private_shader_cache();
+}
 
 void RenderTest::TearDown() {
   for (auto& session : sessions_) {

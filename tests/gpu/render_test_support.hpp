@@ -38,8 +38,8 @@ scene::Scene default_scene();  // data/scenes/atrium.json
 // Every diagnostic, one per line, for failure messages.
 std::string describe(const fg::Diagnostics& diagnostics);
 
-// Read-back after render() (which waits for the frames). Colour formats through
-// gpu::read_image; depth (d32f/d16) through a depth-aspect copy, one channel.
+// Read-back after render() (which waits for the frames), through gpu::read_image:
+// colour formats, and depth (d32f/d16) as one channel.
 gpu::HostImage read_resource(app::RenderSession& session, const std::string& resource);
 gpu::HostImage read_output(app::RenderSession& session);  // the plan's output resource
 
@@ -56,9 +56,9 @@ bool save_png(const std::filesystem::path& path, const Image8& image);
 
 struct DiffStats {
   std::size_t pixels = 0;
-  int max_abs = 0;               // largest per-channel difference, in 1/255 units
-  double mean_abs = 0.0;         // mean per-channel difference over all pixels and channels
-  std::size_t pixels_over = 0;   // pixels with some channel differing by more than `tolerance`
+  int max_abs = 0;              // largest per-channel difference, in 1/255 units
+  double mean_abs = 0.0;        // mean per-channel difference over all pixels and channels
+  std::size_t pixels_over = 0;  // pixels with some channel differing by more than `tolerance`
   int tolerance = 0;
   [[nodiscard]] double fraction_within() const {
     return pixels == 0 ? 1.0 : 1.0 - static_cast<double>(pixels_over) / static_cast<double>(pixels);
@@ -118,6 +118,6 @@ class RenderTest : public ::testing::Test {
 }  // namespace antumbra::render_testing
 
 // Opens a session into `var`, or skips the test when no Vulkan device exists.
-#define OPEN_SESSION(var, ...)                                 \
+#define OPEN_SESSION(var, ...)                                     \
   ::antumbra::app::RenderSession* var = open_session(__VA_ARGS__); \
   if ((var) == nullptr) GTEST_SKIP() << skip_reason_

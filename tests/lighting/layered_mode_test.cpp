@@ -12,19 +12,10 @@
 #include <memory>
 #include <string>
 
-#include "antumbra/fg/compiler.hpp"
-#include "antumbra/fgvk/executor.hpp"
-#include "antumbra/gpu/context.hpp"
-#include "antumbra/gpu/frame_loop.hpp"
-#include "antumbra/gpu/image_io.hpp"
-#include "antumbra/gpu/shader_compiler.hpp"
-#include "antumbra/gpu/vk_check.hpp"
-#include "common/gpu_scene.hpp"
 #include "common/layer_table.hpp"
 #include "common/pass_support.hpp"
+#include "executor_harness.hpp"
 #include "lighting_test_support.hpp"
-#include "register_builtin_passes.hpp"
-#include "render_test_support.hpp"
 
 using namespace antumbra;
 using namespace antumbra::lighting_testing;
@@ -112,60 +103,19 @@ std::string layered_graph(float a, float b, bool light1_has_layer) {
   "output": "hdr" })";
 }
 
-class LayeredModeTest : public render_testing::RenderTest {
+class LayeredModeTest : public ExecutorTest {
  protected:
   void SetUp() override {
     RenderTest::SetUp();
-    gpu::ContextOptions options;
-    options.validation = true;
-    try {
-      gpu_ = std::make_unique<gpu::Context>(options);
-    } catch (const gpu::NoVulkanDeviceError& error) {
-      GTEST_SKIP() << "no Vulkan device: " << error.what();
-    }
-    const auto shader_root = render_testing::source_dir() / "passes";
-    shaders_ = std::make_unique<gpu::ShaderCompiler>(gpu::ShaderCompilerOptions{{shader_root}});
-    registry_ = std::make_unique<fgvk::PassRegistry>(passes::builtin_pass_registry());
-    registry_->add(LayerFillPass::describe(), &make_fill);
-    executor_ =
-        std::make_unique<fgvk::Executor>(*gpu_, *shaders_, *registry_, shader_root.string());
-    frames_ = std::make_unique<gpu::FrameLoop>(*gpu_);
-    scene_ = floor_scene();
-    add_light(scene_, {-2.0f, 1.0f, 0.0f}, {1.0f, 0.8f, 0.6f}, 2.0f, 4.0f);
-    add_light(scene_, {2.0f, 1.0f, 0.5f}, {0.6f, 0.8f, 1.0f}, 2.0f, 4.0f);
-    gpu_scene_ = std::make_unique<passes::GpuScene>(*gpu_, scene_, frames_->frames_in_flight());
+    scene::Scene scene = floor_scene();
+    add_light(scene, {-2.0f, 1.0f, 0.0f}, {1.0f, 0.8f, 0.6f}, 2.0f, 4.0f);
+    add_light(scene, {2.0f, 1.0f, 0.5f}, {0.6f, 0.8f, 1.0f}, 2.0f, 4.0f);
+    if (!open(std::move(scene), {{LayerFillPass::describe(), &make_fill}}))
+      GTEST_SKIP() << skip_reason_;
   }
-  void TearDown() override {
-    if (gpu_) {
-      gpu_->wait_idle();
-      EXPECT_EQ(gpu_->validation_error_count(), 0u) << render_testing::validation_report(*gpu_);
-    }
-    executor_.reset();
-    RenderTest::TearDown();
-  }
-
   gpu::HostImage render(const std::string& graph_text) {
-    fg::CompileOptions options;
-    options.viewport = {kSmall.width, kSmall.height};
-    options.footprint = executor_->footprint_fn();
-    auto plan = fg::compile_text(graph_text, "layered.json", registry_->reflection(), options);
-    if (!plan.ok()) throw std::runtime_error(plan.diagnostics().to_text());
-    executor_->load(std::move(plan.value()));
-    VkCommandBuffer cmd = frames_->begin_frame();
-    const auto frame = gpu_scene_->update(frames_->slot(), scene_, kSmall, frames_->frame_number());
-    executor_->record(cmd, frame);
-    frames_->end_frame();
-    frames_->wait_all();
-    return gpu::read_image(*gpu_, *executor_->gpu_image("hdr"), executor_->image("hdr")->layout);
+    return ExecutorTest::render(graph_text, kSmall);
   }
-
-  std::unique_ptr<gpu::Context> gpu_;
-  std::unique_ptr<gpu::ShaderCompiler> shaders_;
-  std::unique_ptr<fgvk::PassRegistry> registry_;
-  std::unique_ptr<fgvk::Executor> executor_;
-  std::unique_ptr<gpu::FrameLoop> frames_;
-  scene::Scene scene_;
-  std::unique_ptr<passes::GpuScene> gpu_scene_;
 };
 
 // |actual - expected| <= 4e-3 * |expected| + 2e-4 per channel: four rgba16f rounding

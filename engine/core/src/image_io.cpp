@@ -148,7 +148,8 @@ HostImage read_image(Context& context, const Image& image, VkImageLayout layout,
                                    MemoryUsage::readback, "readback." + image.desc().name);
   // Depth images copy their depth aspect; colour images their colour aspect.
   const VkImageAspectFlags aspect =
-      is_depth_format(format) ? VkImageAspectFlags{VK_IMAGE_ASPECT_DEPTH_BIT} : VK_IMAGE_ASPECT_COLOR_BIT;
+      is_depth_format(format) ? VkImageAspectFlags{VK_IMAGE_ASPECT_DEPTH_BIT}
+                              : VkImageAspectFlags{VK_IMAGE_ASPECT_COLOR_BIT};
   const VkImageSubresourceRange range{aspect, 0, 1, layer, 1};
   context.submit_immediate([&](VkCommandBuffer cmd) {
     CommandLabel label(context, cmd, "read_image");

@@ -67,4 +67,7 @@ inline constexpr const char* kPassDisabled = "FG075";       // note: "enabled": 
 inline constexpr const char* kLayerCapExceedsStorage = "FG090";  // cap k > layers storage holds
 inline constexpr const char* kLayerStorageMismatch = "FG091";    // layered images disagree
 
+// The executor could not realise a valid plan on this device.
+inline constexpr const char* kRealiseFailed = "FG100";
+
 }  // namespace antumbra::fg::codes

@@ -1,0 +1,98 @@
+// Point-light shadow lookups in the point-shadow-atlas (passes/point_shadow_atlas), for
+// compute and fragment consumers. Needs shadow_data.glsl's structs; the buffers and the
+// atlas sampler stay the includer's (declare them however the pass binds them).
+//
+// Conventions (mirrored by passes/point_shadow_atlas/shadow_faces.cpp, tested there):
+//  - face k of a light (0..5 = +X -X +Y -Y +Z -Z, the Vulkan cube-map orientation)
+//    lives at atlas layer ShadowLight.params.z + k; params.z < 0: the light has no faces;
+//  - ShadowFace.view_proj maps world -> face clip: clip.w = distance along the face's
+//    axis, depth = clip.z / clip.w (0 at near = params.y, 1 at far = position_range.w),
+//    uv = clip.xy / clip.w * 0.5 + 0.5 (v grows with texel rows);
+//  - ShadowFace.info.z = 1 when the layer holds this frame's depth for that face.
+//
+// Primitive API (no buffer access):
+//   uint  shadow_cube_face(vec3 light_to_point)
+//   int   shadow_face_layer(ShadowLight l, vec3 world_pos)          -1: no shadow faces
+//   float shadow_linearise(float depth, float near, float far)      metres along the axis
+//   vec3  shadow_offset_position(ShadowLight l, vec3 world_pos, vec3 normal, float face_size)
+//   ShadowCoord shadow_coord(mat4 face_view_proj, ShadowLight l, int layer, vec3 world_pos)
+//   float shadow_hard_coord(sampler2DArray atlas, ShadowCoord c)    1 lit, 0 shadowed
+// Convenience, when the includer defines SHADOW_FACES (the name of its ShadowFace
+// array, e.g. `#define SHADOW_FACES shadow_faces`) before including this file:
+//   float shadow_hard(sampler2DArray atlas, ShadowLight l, vec3 world_pos, vec3 normal)
+//
+// Bias: the atlas is rendered with slope-scaled raster bias; lookups add a normal offset
+// of SHADOW_NORMAL_OFFSET texels (world size of one texel at the receiver's distance)
+// along the surface normal, more at grazing angles. Define it before including to tune.
+#ifndef ANTUMBRA_SHADOW_SAMPLING_GLSL
+#define ANTUMBRA_SHADOW_SAMPLING_GLSL
+
+#ifndef SHADOW_NORMAL_OFFSET
+#define SHADOW_NORMAL_OFFSET 1.5
+#endif
+
+struct ShadowCoord {
+  vec2 uv;       // face uv (0..1)
+  float layer;   // atlas layer
+  float depth;   // receiver depth in face clip space (0..1)
+  float linear;  // receiver distance along the face axis (metres)
+  bool valid;    // false: no faces, or the point is nearer the light than its near plane
+};
+
+uint shadow_cube_face(vec3 d) {
+  vec3 a = abs(d);
+  if (a.x >= a.y && a.x >= a.z) return d.x >= 0.0 ? 0u : 1u;
+  if (a.y >= a.z) return d.y >= 0.0 ? 2u : 3u;
+  return d.z >= 0.0 ? 4u : 5u;
+}
+
+int shadow_face_layer(ShadowLight l, vec3 world_pos) {
+  if (l.params.z < 0.0) return -1;
+  return int(l.params.z) + int(shadow_cube_face(world_pos - l.position_range.xyz));
+}
+
+float shadow_linearise(float depth, float near, float far) {
+  return far * near / (far - depth * (far - near));
+}
+
+// Moves the receiver off its surface by about SHADOW_NORMAL_OFFSET texels, scaled up
+// where the surface turns away from the light (where acne starts). A 90-degree face of
+// `face_size` texels spans 2 * distance / face_size metres per texel at `distance`.
+vec3 shadow_offset_position(ShadowLight l, vec3 world_pos, vec3 normal, float face_size) {
+  vec3 to_light = l.position_range.xyz - world_pos;
+  float dist = length(to_light);
+  float n_dot_l = dist > 0.0 ? clamp(dot(normal, to_light / dist), 0.0, 1.0) : 1.0;
+  float texel = 2.0 * dist / max(face_size, 1.0);
+  return world_pos + normal * (SHADOW_NORMAL_OFFSET * texel * (2.0 - n_dot_l));
+}
+
+ShadowCoord shadow_coord(mat4 face_view_proj, ShadowLight l, int layer, vec3 world_pos) {
+  ShadowCoord c = ShadowCoord(vec2(0.0), float(max(layer, 0)), 1.0, 0.0, false);
+  if (layer < 0) return c;
+  vec4 clip = face_view_proj * vec4(world_pos, 1.0);
+  c.linear = clip.w;
+  if (clip.w <= l.params.y) return c;
+  c.uv = clip.xy / clip.w * 0.5 + 0.5;
+  c.depth = clip.z / clip.w;
+  c.valid = true;
+  return c;
+}
+
+// Invalid coordinates (no faces, nearer than the near plane) and points beyond the
+// light's range (depth > 1) read as lit.
+float shadow_hard_coord(sampler2DArray atlas, ShadowCoord c) {
+  if (!c.valid || c.depth >= 1.0) return 1.0;
+  float stored = textureLod(atlas, vec3(clamp(c.uv, 0.0, 1.0), c.layer), 0.0).r;
+  return c.depth <= stored ? 1.0 : 0.0;
+}
+
+#ifdef SHADOW_FACES
+float shadow_hard(sampler2DArray atlas, ShadowLight l, vec3 world_pos, vec3 normal) {
+  vec3 p = shadow_offset_position(l, world_pos, normal, float(textureSize(atlas, 0).x));
+  int layer = shadow_face_layer(l, p);
+  if (layer < 0) return 1.0;
+  return shadow_hard_coord(atlas, shadow_coord(SHADOW_FACES[layer].view_proj, l, layer, p));
+}
+#endif
+
+#endif

@@ -1,0 +1,345 @@
+#include "point_shadow_atlas_pass.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cstring>
+
+#include <nlohmann/json.hpp>
+
+#include "antumbra/gpu/context.hpp"
+#include "antumbra/gpu/pipelines.hpp"
+#include "antumbra/gpu/vk_check.hpp"
+#include "antumbra/scene/scene.hpp"
+#include "common/frame_data.hpp"
+#include "common/frame_resources.hpp"
+#include "common/pass_support.hpp"
+
+namespace antumbra::passes {
+namespace {
+
+// shadow_atlas.vert's FaceDraw: the same 80 bytes as a ShadowFace (info.x = layer).
+using FaceDraw = ShadowFace;
+
+constexpr VkClearColorValue kWhite{{1.0f, 1.0f, 1.0f, 1.0f}};
+
+[[noreturn]] void fail(fgvk::PrepareContext& context, const std::string& code,
+                       const std::string& message) {
+  fg::Diagnostics diagnostics;
+  diagnostics.add({code, fg::Severity::error,
+                   "pass '" + context.pass.name + "' (point-shadow-atlas): " + message, "", "", 0,
+                   0});
+  throw fgvk::PassError(message, diagnostics);
+}
+
+gpu::ImageView layer_view(gpu::Context& gpu, const fgvk::BoundImage& image, std::uint32_t layer,
+                          VkImageAspectFlags aspect, const std::string& name) {
+  VkImageViewCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+  info.image = image.image;
+  info.viewType = VK_IMAGE_VIEW_TYPE_2D;
+  info.format = image.format;
+  info.subresourceRange = {aspect, 0, 1, layer, 1};
+  VkImageView view = VK_NULL_HANDLE;
+  gpu::check(vkCreateImageView(gpu.device(), &info, nullptr, &view), "vkCreateImageView");
+  return {gpu, view, name};
+}
+
+VkRenderingAttachmentInfo attachment(VkImageView view, VkImageLayout layout, bool clear,
+                                     VkClearValue value) {
+  VkRenderingAttachmentInfo a{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+  a.imageView = view;
+  a.imageLayout = layout;
+  a.loadOp = clear ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_LOAD;
+  a.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+  a.clearValue = value;
+  return a;
+}
+
+}  // namespace
+
+PointShadowAtlasPass::PointShadowAtlasPass(const fg::PlanPass& pass) {
+  settings_.near_plane = param_float(pass, "nearPlane");
+  settings_.cull_faces = param_bool(pass, "cullFaces");
+  settings_.cache = param_bool(pass, "cache");
+  depth_bias_ = param_float(pass, "depthBias");
+  slope_bias_ = param_float(pass, "slopeBias");
+  want_colour_ = param_bool(pass, "translucentColour");
+  want_layered_ = param_bool(pass, "layeredDraw");
+}
+
+void PointShadowAtlasPass::prepare(fgvk::PrepareContext& context) {
+  const auto& atlas = context.bindings.required_image("atlas");
+  const auto* colour = context.bindings.image("colour");
+  const auto* data = context.bindings.buffer("shadowData");
+  const std::size_t needed = shadow_data_bytes(atlas.layers);
+  if (data == nullptr || data->size < needed) {
+    fail(context, "SHD001",
+         "the shadowData buffer holds " + std::to_string(data == nullptr ? 0 : data->size) +
+             " bytes; " + std::to_string(atlas.layers) + " atlas layers need " +
+             std::to_string(needed) + " (shadow_data_bytes(layers))");
+  }
+  if (colour != nullptr && colour->layers < atlas.layers) {
+    fail(context, "SHD003",
+         "the colour map has " + std::to_string(colour->layers) + " layers, the atlas " +
+             std::to_string(atlas.layers) + "; give both the same layer count");
+  }
+  settings_.layers = atlas.layers;
+  settings_.face_size = atlas.extent.width;
+  colour_map_ = colour != nullptr;
+  colour_ = colour_map_ && want_colour_;
+  layered_ = want_layered_ && context.gpu.features().shader_output_layer;
+
+  std::vector<gpu::ShaderDefine> depth_defines;
+  std::vector<gpu::ShaderDefine> colour_defines{{"COLOUR_PASS", ""}};
+  if (layered_) {
+    depth_defines.push_back({"LAYERED", ""});
+    colour_defines.push_back({"LAYERED", ""});
+  }
+  if (colour_) depth_defines.push_back({"SKIP_TRANSLUCENT", ""});
+  shader_files_.clear();
+  auto depth_vert =
+      load_shader(context, "point_shadow_atlas/shadow_atlas.vert", shader_files_, depth_defines);
+
+  set_layout_ = gpu::DescriptorSetLayoutBuilder()
+                    .storage_buffer(0, VK_SHADER_STAGE_VERTEX_BIT)
+                    .storage_buffer(1, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT)
+                    .build(context.gpu, context.pass.name + ".set");
+  const std::array<VkDescriptorSetLayout, 1> sets{set_layout_};
+  layout_ = gpu::create_pipeline_layout(context.gpu, sets, {}, context.pass.name + ".layout");
+
+  auto base = [&]() {
+    gpu::GraphicsPipelineBuilder b;
+    b.vertex_binding(0, sizeof(GpuVertex))
+        .vertex_attribute(0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(GpuVertex, position))
+        .vertex_attribute(2, 0, VK_FORMAT_R32_UINT, offsetof(GpuVertex, material))
+        .cull(VK_CULL_MODE_NONE)  // thin panes and open meshes cast from both sides
+        .depth_format(atlas.format)
+        .layout(layout_)
+        .cache(context.pipeline_cache);
+    if (colour_map_) b.color_formats({colour->format});
+    return b;
+  };
+  // Depth only: no fragment shader; with a colour map bound it is declared (the
+  // rendering has it) but masked off.
+  auto depth = base();
+  depth.shader(VK_SHADER_STAGE_VERTEX_BIT, depth_vert)
+      .depth(true, true, VK_COMPARE_OP_LESS)
+      .depth_bias(depth_bias_, slope_bias_);
+  if (colour_map_) depth.color_write_mask(0, 0);
+  depth_pipeline_ = depth.build(context.gpu, context.pass.name + ".depth");
+  colour_pipeline_ = {};
+  if (colour_) {
+    auto colour_vert =
+        load_shader(context, "point_shadow_atlas/shadow_atlas.vert", shader_files_, colour_defines);
+    auto colour_frag = load_shader(context, "point_shadow_atlas/shadow_colour.frag", shader_files_);
+    colour_pipeline_ = base()
+                           .shader(VK_SHADER_STAGE_VERTEX_BIT, colour_vert)
+                           .shader(VK_SHADER_STAGE_FRAGMENT_BIT, colour_frag)
+                           .depth(true, false, VK_COMPARE_OP_LESS_OR_EQUAL)
+                           .multiply_blend(0)
+                           .build(context.gpu, context.pass.name + ".colour");
+  }
+
+  depth_layer_views_.clear();
+  colour_layer_views_.clear();
+  if (!layered_) {
+    for (std::uint32_t layer = 0; layer < atlas.layers; ++layer) {
+      const std::string suffix = ".layer" + std::to_string(layer);
+      depth_layer_views_.push_back(layer_view(context.gpu, atlas, layer, VK_IMAGE_ASPECT_DEPTH_BIT,
+                                              context.pass.name + ".atlas" + suffix));
+      if (colour_map_) {
+        colour_layer_views_.push_back(layer_view(context.gpu, *colour, layer,
+                                                 VK_IMAGE_ASPECT_COLOR_BIT,
+                                                 context.pass.name + ".colour" + suffix));
+      }
+    }
+  }
+  planner_.invalidate();
+  atlas_image_ = atlas.image;
+  colour_image_ = colour != nullptr ? colour->image : VK_NULL_HANDLE;
+}
+
+void PointShadowAtlasPass::execute(fgvk::ExecuteContext& context) {
+  const auto& atlas = context.bindings.required_image("atlas");
+  const auto* colour = context.bindings.image("colour");
+  const scene::Scene& scene = *context.frame.scene;
+  if (atlas.image != atlas_image_ ||
+      (colour != nullptr ? colour->image : VK_NULL_HANDLE) != colour_image_) {
+    planner_.invalidate();  // new images: nothing cached survives
+    atlas_image_ = atlas.image;
+    colour_image_ = colour != nullptr ? colour->image : VK_NULL_HANDLE;
+  }
+  const VkExtent2D viewport = context.frame.viewport;
+  const float aspect =
+      viewport.height > 0 ? static_cast<float>(viewport.width) / static_cast<float>(viewport.height)
+                          : 1.0f;
+  const AtlasFrame& frame =
+      planner_.plan(scene, scene.camera.view_projection(aspect), context.frame.geometry_version,
+                    static_cast<std::uint32_t>(context.frame.frame_index), settings_);
+
+  if (slots_.size() < context.frame.frames_in_flight) slots_.resize(context.frame.frames_in_flight);
+  SlotBuffers& slot = slots_[context.frame.slot];
+  upload(context, frame, slot);
+
+  if (!frame.unshadowed.empty()) {
+    std::string names;
+    for (const auto& name : frame.unshadowed) names += (names.empty() ? "" : ", ") + name;
+    context.report.add({context.pass.name, "SHD002", fg::Severity::warning,
+                        std::to_string(frame.unshadowed.size()) +
+                            " shadow-casting light(s) do not fit the atlas (" +
+                            std::to_string(settings_.layers) + " layers = " +
+                            std::to_string(settings_.layers / 6) +
+                            " lights) and cast no shadows: " + names,
+                        fg::Json{{"lights", frame.unshadowed}, {"layers", settings_.layers}}});
+  }
+  const AtlasStats& s = frame.stats;
+  context.report.add({context.pass.name, "SHD010", fg::Severity::note,
+                      "shadow faces: " + std::to_string(s.total) + " total, " +
+                          std::to_string(s.culled) + " culled, " + std::to_string(s.rendered) +
+                          " rendered, " + std::to_string(s.cached) + " cached",
+                      fg::Json{{"total", s.total},
+                               {"culled", s.culled},
+                               {"rendered", s.rendered},
+                               {"cached", s.cached},
+                               {"layered", layered_}}});
+
+  if (frame.render_layers.empty() && !frame.clear_all) return;
+  if (layered_) {
+    draw_layered(context, frame, slot.draws);
+  } else {
+    draw_per_face(context, frame, slot.draws);
+  }
+}
+
+void PointShadowAtlasPass::upload(fgvk::ExecuteContext& context, const AtlasFrame& frame,
+                                  SlotBuffers& slot) {
+  const std::size_t bytes = shadow_data_bytes(settings_.layers);
+  if (!slot.staging) {
+    const std::string suffix = "." + std::to_string(context.frame.slot);
+    slot.staging = gpu::Buffer::create(context.gpu, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                                       gpu::MemoryUsage::upload,
+                                       context.pass.name + ".shadowData.staging" + suffix);
+    slot.draws = gpu::Buffer::create(
+        context.gpu, sizeof(FaceDraw) * std::max<std::uint32_t>(settings_.layers, 1),
+        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, gpu::MemoryUsage::upload,
+        context.pass.name + ".faceDraws" + suffix);
+  }
+  std::byte* out = slot.staging.mapped();
+  std::memcpy(out, &frame.header, sizeof frame.header);
+  auto* lights = reinterpret_cast<ShadowLight*>(out + kShadowLightsOffset);
+  std::fill(lights, lights + kMaxShadowLights, ShadowLight{});
+  std::copy(frame.lights.begin(), frame.lights.end(), lights);
+  std::memcpy(out + kShadowFacesOffset, frame.faces.data(), frame.faces.size() * sizeof(ShadowFace));
+  const VkBufferCopy region{0, 0, bytes};
+  vkCmdCopyBuffer(context.cmd, slot.staging, context.bindings.buffer("shadowData")->buffer, 1,
+                  &region);
+
+  auto* draws = reinterpret_cast<FaceDraw*>(slot.draws.mapped());
+  for (std::size_t i = 0; i < frame.render_layers.size(); ++i) {
+    const std::uint32_t layer = frame.render_layers[i];
+    draws[i].view_proj = frame.faces[layer].view_proj;
+    draws[i].info = {layer, frame.faces[layer].info.y, 0u, 0u};
+  }
+}
+
+void PointShadowAtlasPass::draw_scene(fgvk::ExecuteContext& context, VkBuffer draws,
+                                      std::uint32_t first, std::uint32_t count) {
+  if (context.frame.index_count == 0 || count == 0) return;
+  const VkCommandBuffer cmd = context.cmd;
+  const VkDeviceSize offset = 0;
+  vkCmdBindVertexBuffers(cmd, 0, 1, &context.frame.vertices, &offset);
+  vkCmdBindIndexBuffer(cmd, context.frame.indices, 0, VK_INDEX_TYPE_UINT32);
+  std::array<VkPipeline, 2> pipelines{depth_pipeline_, colour_pipeline_};
+  for (VkPipeline pipeline : pipelines) {
+    if (pipeline == VK_NULL_HANDLE) continue;
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
+    gpu::PushDescriptors()
+        .storage_buffer(0, draws)
+        .storage_buffer(1, context.frame.materials)
+        .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_);
+    // Instance = face entry (firstInstance offsets gl_InstanceIndex in the fallback).
+    vkCmdDrawIndexed(cmd, context.frame.index_count, count, 0, 0, first);
+  }
+}
+
+void PointShadowAtlasPass::draw_layered(fgvk::ExecuteContext& context, const AtlasFrame& frame,
+                                        VkBuffer draws) {
+  const auto& atlas = context.bindings.required_image("atlas");
+  const auto* colour = context.bindings.image("colour");
+  VkClearValue depth_clear{};
+  depth_clear.depthStencil = {1.0f, 0};
+  VkClearValue colour_clear{};
+  colour_clear.color = kWhite;
+  // Clean faces keep their contents (LOAD); dirty layers are cleared below.
+  const VkRenderingAttachmentInfo depth_attachment =
+      attachment(atlas.view, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, frame.clear_all, depth_clear);
+  VkRenderingAttachmentInfo colour_attachment{};
+  VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
+  rendering.renderArea = {{0, 0}, atlas.extent};
+  rendering.layerCount = atlas.layers;
+  rendering.pDepthAttachment = &depth_attachment;
+  if (colour != nullptr) {
+    // A bound colour map is kept white (cleared with the depth) even when translucent
+    // casters go to depth, so consumers can always sample it.
+    colour_attachment = attachment(colour->view, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                                   frame.clear_all, colour_clear);
+    rendering.colorAttachmentCount = 1;
+    rendering.pColorAttachments = &colour_attachment;
+  }
+  const VkCommandBuffer cmd = context.cmd;
+  vkCmdBeginRendering(cmd, &rendering);
+  set_viewport(cmd, atlas.extent);
+  if (!frame.clear_all) {
+    // One rect per run of consecutive dirty layers.
+    std::vector<VkClearRect> rects;
+    for (std::uint32_t layer : frame.render_layers) {
+      if (!rects.empty() && rects.back().baseArrayLayer + rects.back().layerCount == layer) {
+        ++rects.back().layerCount;
+      } else {
+        rects.push_back({{{0, 0}, atlas.extent}, layer, 1});
+      }
+    }
+    std::array<VkClearAttachment, 2> clears{};
+    clears[0] = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, depth_clear};
+    clears[1] = {VK_IMAGE_ASPECT_COLOR_BIT, 0, colour_clear};
+    vkCmdClearAttachments(cmd, colour_map_ ? 2u : 1u, clears.data(),
+                          static_cast<std::uint32_t>(rects.size()), rects.data());
+  }
+  draw_scene(context, draws, 0, static_cast<std::uint32_t>(frame.render_layers.size()));
+  vkCmdEndRendering(cmd);
+}
+
+void PointShadowAtlasPass::draw_per_face(fgvk::ExecuteContext& context, const AtlasFrame& frame,
+                                         VkBuffer draws) {
+  const auto& atlas = context.bindings.required_image("atlas");
+  VkClearValue depth_clear{};
+  depth_clear.depthStencil = {1.0f, 0};
+  VkClearValue colour_clear{};
+  colour_clear.color = kWhite;
+  // Every layer drawn is dirty, so each rendering clears its one layer.
+  std::vector<std::int64_t> entry(settings_.layers, -1);
+  for (std::size_t i = 0; i < frame.render_layers.size(); ++i) {
+    entry[frame.render_layers[i]] = static_cast<std::int64_t>(i);
+  }
+  for (std::uint32_t layer = 0; layer < settings_.layers; ++layer) {
+    if (entry[layer] < 0 && !frame.clear_all) continue;
+    const VkRenderingAttachmentInfo depth_attachment = attachment(
+        depth_layer_views_[layer], VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, true, depth_clear);
+    VkRenderingAttachmentInfo colour_attachment{};
+    VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
+    rendering.renderArea = {{0, 0}, atlas.extent};
+    rendering.layerCount = 1;
+    rendering.pDepthAttachment = &depth_attachment;
+    if (colour_map_) {
+      colour_attachment = attachment(colour_layer_views_[layer],
+                                     VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, true, colour_clear);
+      rendering.colorAttachmentCount = 1;
+      rendering.pColorAttachments = &colour_attachment;
+    }
+    vkCmdBeginRendering(context.cmd, &rendering);
+    set_viewport(context.cmd, atlas.extent);
+    if (entry[layer] >= 0) draw_scene(context, draws, static_cast<std::uint32_t>(entry[layer]), 1);
+    vkCmdEndRendering(context.cmd);
+  }
+}
+
+}  // namespace antumbra::passes

@@ -1,0 +1,311 @@
+// point-shadow-atlas on a device (lavapipe in CI): the atrium atlas with validation and
+// synchronization validation on, an analytic depth check, static caching, per-light
+// invalidation, the per-face fallback and CPU/GLSL agreement of the sampling include.
+// The executor is driven directly (not through RenderSession) so that a test can move a
+// light without re-uploading the geometry.
+
+#include <array>
+#include <cstring>
+#include <filesystem>
+#include <memory>
+#include <optional>
+
+#include <glm/glm.hpp>
+#include <gtest/gtest.h>
+
+#include "antumbra/fg/compiler.hpp"
+#include "antumbra/fg/json_document.hpp"
+#include "antumbra/fgvk/executor.hpp"
+#include "antumbra/gpu/commands.hpp"
+#include "antumbra/gpu/frame_loop.hpp"
+#include "antumbra/gpu/pipelines.hpp"
+#include "antumbra/gpu/resources.hpp"
+#include "antumbra/gpu/shader_compiler.hpp"
+#include "antumbra/scene/scene_file.hpp"
+#include "common/gpu_scene.hpp"
+#include "common/shadow_data.hpp"
+#include "gpu_test_support.hpp"
+#include "point_shadow_atlas/shadow_faces.hpp"
+#include "register_builtin_passes.hpp"
+
+using namespace antumbra;
+namespace fs = std::filesystem;
+namespace sf = passes::shadow_faces;
+
+namespace {
+
+fs::path source_dir() { return fs::path(ANTUMBRA_TEST_SOURCE_DIR); }
+
+constexpr VkExtent2D kViewport{160, 90};
+constexpr std::uint32_t kFace = 256;
+
+scene::Scene atrium() {
+  auto loaded = scene::load_scene_file((source_dir() / "data/scenes/atrium.json").string());
+  if (!loaded.ok()) throw std::runtime_error("cannot load atrium.json");
+  return std::move(loaded.value());
+}
+
+struct Counts {
+  std::uint32_t total = 0, culled = 0, rendered = 0, cached = 0;
+  bool layered = false;
+};
+
+class AtlasGpuTest : public gpu::testing::GpuTest {
+ protected:
+  void SetUp() override {
+    GpuTest::SetUp();
+    if (!context_) return;
+    gpu::ShaderCompilerOptions options;
+    options.include_dirs = {source_dir() / "passes"};
+    options.cache_dir = fs::temp_directory_path() / "antumbra-shadows-spirv";
+    shaders_ = std::make_unique<gpu::ShaderCompiler>(options);
+    registry_ = std::make_unique<fgvk::PassRegistry>(passes::builtin_pass_registry());
+    executor_ = std::make_unique<fgvk::Executor>(ctx(), *shaders_, *registry_,
+                                                 (source_dir() / "passes").string());
+    frames_ = std::make_unique<gpu::FrameLoop>(ctx());
+    scene_ = atrium();
+  }
+  void TearDown() override {
+    if (frames_) frames_->wait_all();
+    gpu_scene_.reset();
+    executor_.reset();
+    frames_.reset();
+    GpuTest::TearDown();
+  }
+
+  // tests/data/shadows/atlas.json with 256 x 256 faces and the given atlas params.
+  void load(const fg::Json& params = fg::Json::object()) {
+    auto document = fg::load_json_file((source_dir() / "tests/data/shadows/atlas.json").string());
+    ASSERT_TRUE(document.ok());
+    auto graph = fg::parse_graph(document.value());
+    ASSERT_TRUE(graph.ok());
+    for (auto& r : graph.value().resources) {
+      if (r.name == "atlas" || r.name == "shadowColour") r.size = {false, 1.0, 1.0, kFace, kFace};
+    }
+    for (auto& p : graph.value().passes) {
+      if (p.name == "shadows") p.params.update(params);
+    }
+    fg::CompileOptions compile_options;
+    compile_options.viewport = {kViewport.width, kViewport.height};
+    compile_options.footprint = executor_->footprint_fn();
+    auto plan = fg::compile(graph.value(), registry_->reflection(), compile_options);
+    ASSERT_TRUE(plan.ok());
+    executor_->load(std::move(plan.value()));
+    gpu_scene_ = std::make_unique<passes::GpuScene>(ctx(), scene_, frames_->frames_in_flight());
+  }
+
+  Counts frame() {
+    VkCommandBuffer cmd = frames_->begin_frame();
+    const auto resources =
+        gpu_scene_->update(frames_->slot(), scene_, kViewport, frames_->frame_number());
+    executor_->record(cmd, resources, nullptr, &report_);
+    frames_->end_frame();
+    Counts c;
+    for (const auto& m : report_.messages()) {
+      if (m.code != "SHD010") continue;
+      c = {m.details["total"].get<std::uint32_t>(), m.details["culled"].get<std::uint32_t>(),
+           m.details["rendered"].get<std::uint32_t>(), m.details["cached"].get<std::uint32_t>(),
+           m.details["layered"].get<bool>()};
+    }
+    return c;
+  }
+
+  // Depth of one atlas layer, one float per texel.
+  std::vector<float> read_layer(std::uint32_t layer) {
+    frames_->wait_all();
+    const gpu::Image* image = executor_->gpu_image("atlas");
+    const VkImageLayout layout = executor_->image("atlas")->layout;
+    const VkDeviceSize bytes = VkDeviceSize{kFace} * kFace * 4;
+    auto readback = gpu::Buffer::create(ctx(), bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                        gpu::MemoryUsage::readback, "test.atlas.readback");
+    const VkImageSubresourceRange range{VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, layer, 1};
+    ctx().submit_immediate([&](VkCommandBuffer cmd) {
+      gpu::image_barrier(cmd, {image->handle(), layout, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                               VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_WRITE_BIT,
+                               VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT, range});
+      VkBufferImageCopy region{};
+      region.imageSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, layer, 1};
+      region.imageExtent = {kFace, kFace, 1};
+      vkCmdCopyImageToBuffer(cmd, image->handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                             readback.handle(), 1, &region);
+      gpu::image_barrier(cmd, {image->handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, layout,
+                               VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_NONE,
+                               VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+                               VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT, range});
+      gpu::buffer_barrier(cmd, readback.handle(), VK_PIPELINE_STAGE_2_COPY_BIT,
+                          VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT,
+                          VK_ACCESS_2_HOST_READ_BIT);
+    });
+    std::vector<float> texels(std::size_t{kFace} * kFace);
+    std::memcpy(texels.data(), readback.mapped(), bytes);
+    return texels;
+  }
+
+  std::unique_ptr<gpu::ShaderCompiler> shaders_;
+  std::unique_ptr<fgvk::PassRegistry> registry_;
+  std::unique_ptr<fgvk::Executor> executor_;
+  std::unique_ptr<gpu::FrameLoop> frames_;
+  std::unique_ptr<passes::GpuScene> gpu_scene_;
+  fgvk::FrameReport report_;
+  scene::Scene scene_;
+};
+
+// l05 hangs 2.6 m above open floor (top at y = 0) in view of the atrium camera.
+constexpr std::uint32_t kLight = 5;
+constexpr float kLightHeight = 2.6f;
+
+float centre_linear_depth(const std::vector<float>& texels, const scene::PointLight& light) {
+  const float depth = texels[std::size_t{kFace / 2} * kFace + kFace / 2];
+  return sf::linearise(depth, 0.05f, light.range);
+}
+
+}  // namespace
+
+TEST_F(AtlasGpuTest, RendersAtriumAndFloorDepthIsAnalytic) {
+  load();
+  const Counts c = frame();
+  EXPECT_TRUE(c.layered) << "lavapipe supports shaderOutputLayer";
+  EXPECT_EQ(c.total, 96u);
+  EXPECT_GT(c.culled, 0u);
+  EXPECT_EQ(c.rendered, c.total - c.culled);
+  const auto texels = read_layer(6 * kLight + 3);  // -Y face
+  ASSERT_FLOAT_EQ(scene_.lights[kLight].position.y, kLightHeight);
+  // The floor is perpendicular to the -Y axis, so every floor texel linearises to h.
+  EXPECT_NEAR(centre_linear_depth(texels, scene_.lights[kLight]), kLightHeight, 0.02f);
+  EXPECT_NEAR(sf::linearise(texels[std::size_t{40} * kFace + 200], 0.05f, 3.8f), kLightHeight,
+              0.02f);
+  std::printf("atrium faces: %u total, %u culled, %u rendered, %u cached\n", c.total, c.culled,
+              c.rendered, c.cached);
+}
+
+TEST_F(AtlasGpuTest, CachedSecondFrameRendersNothingAndKeepsContents) {
+  load();
+  const Counts first = frame();
+  const auto before = read_layer(6 * kLight + 3);
+  const Counts second = frame();
+  EXPECT_EQ(second.rendered, 0u);
+  EXPECT_EQ(second.cached, first.rendered);
+  const Counts third = frame();  // the other frame-in-flight slot as well
+  EXPECT_EQ(third.rendered, 0u);
+  EXPECT_EQ(read_layer(6 * kLight + 3), before);
+}
+
+TEST_F(AtlasGpuTest, MovingOneLightRerendersExactlyItsVisibleFaces) {
+  load();
+  frame();
+  const auto other_before = read_layer(6 * 1 + 3);
+  scene_.lights[kLight].position.y -= 0.5f;
+  const auto frustum = sf::camera_frustum(scene_.camera.view_projection(160.0f / 90.0f));
+  const auto mask = sf::visible_faces(frustum, scene_.lights[kLight].position,
+                                      scene_.lights[kLight].range);
+  const Counts c = frame();
+  EXPECT_EQ(c.rendered, static_cast<std::uint32_t>(__builtin_popcount(mask)));
+  EXPECT_NEAR(centre_linear_depth(read_layer(6 * kLight + 3), scene_.lights[kLight]),
+              kLightHeight - 0.5f, 0.02f);
+  EXPECT_EQ(read_layer(6 * 1 + 3), other_before);
+}
+
+TEST_F(AtlasGpuTest, PerFaceFallbackMatchesLayeredDraw) {
+  load(fg::Json{{"layeredDraw", false}});
+  const Counts c = frame();
+  EXPECT_FALSE(c.layered);
+  EXPECT_GT(c.rendered, 0u);
+  const auto fallback = read_layer(6 * kLight + 3);
+  EXPECT_NEAR(centre_linear_depth(fallback, scene_.lights[kLight]), kLightHeight, 0.02f);
+  load();
+  frame();
+  const auto layered = read_layer(6 * kLight + 3);
+  EXPECT_EQ(layered, fallback);
+}
+
+TEST_F(AtlasGpuTest, TooSmallShadowDataIsAPassError) {
+  auto document = fg::load_json_file((source_dir() / "tests/data/shadows/atlas.json").string());
+  ASSERT_TRUE(document.ok());
+  auto graph = fg::parse_graph(document.value());
+  ASSERT_TRUE(graph.ok());
+  for (auto& r : graph.value().resources) {
+    if (r.name == "shadowData") r.buffer_size = 1024;
+  }
+  fg::CompileOptions options;
+  options.viewport = {kViewport.width, kViewport.height};
+  options.footprint = executor_->footprint_fn();
+  auto plan = fg::compile(graph.value(), registry_->reflection(), options);
+  ASSERT_TRUE(plan.ok());
+  try {
+    executor_->load(std::move(plan.value()));
+    FAIL() << "expected a PassError";
+  } catch (const fgvk::PassError& e) {
+    ASSERT_FALSE(e.diagnostics().empty());
+    const auto& d = *e.diagnostics().begin();
+    EXPECT_EQ(d.code, "SHD001");
+    EXPECT_NE(d.message.find("40464"), std::string::npos) << d.message;
+  }
+}
+
+TEST_F(AtlasGpuTest, SamplingIncludeAgreesWithCpuFaceMath) {
+  // One light, its six faces, and points all round it.
+  const glm::vec3 light(1.0f, 2.0f, -1.5f);
+  const float range = 4.0f;
+  const std::size_t data_bytes = passes::shadow_data_bytes(6);
+  std::vector<std::byte> data(data_bytes);
+  passes::ShadowLight l;
+  l.position_range = glm::vec4(light, range);
+  l.params = glm::vec4(0.1f, 0.05f, 0.0f, 0.0f);
+  std::memcpy(data.data() + passes::kShadowLightsOffset, &l, sizeof l);
+  for (std::uint32_t f = 0; f < 6; ++f) {
+    passes::ShadowFace face;
+    face.view_proj = sf::face_view_proj(light, f, 0.05f, range);
+    face.info = {0u, f, 1u, 0u};
+    std::memcpy(data.data() + passes::kShadowFacesOffset + f * sizeof face, &face, sizeof face);
+  }
+  std::vector<glm::vec4> points;
+  for (int i = 0; i < 512; ++i) {
+    const float a = 0.37f * static_cast<float>(i);
+    const float b = 0.11f * static_cast<float>(i);
+    const glm::vec3 d(std::cos(a) * std::cos(b), std::sin(b * 1.7f), std::sin(a) * std::cos(b));
+    points.emplace_back(light + d * (0.2f + 3.5f * static_cast<float>(i % 17) / 17.0f), 1.0f);
+  }
+  const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+  auto data_buffer = gpu::Buffer::create(ctx(), data_bytes, storage, gpu::MemoryUsage::upload, "t.data");
+  std::memcpy(data_buffer.mapped(), data.data(), data_bytes);
+  const VkDeviceSize point_bytes = points.size() * sizeof(glm::vec4);
+  auto point_buffer = gpu::Buffer::create(ctx(), point_bytes, storage, gpu::MemoryUsage::upload, "t.points");
+  std::memcpy(point_buffer.mapped(), points.data(), point_bytes);
+  auto results = gpu::Buffer::create(ctx(), point_bytes, storage, gpu::MemoryUsage::readback, "t.results");
+
+  gpu::ShaderRequest request;
+  request.path = source_dir() / "tests/shadows/sampling_check.comp";
+  auto binary = shaders_->compile(request);
+  ASSERT_TRUE(binary.ok());
+  auto module = gpu::create_shader_module(ctx(), binary->spirv, "sampling_check");
+  auto set_layout = gpu::DescriptorSetLayoutBuilder()
+                        .storage_buffer(0, VK_SHADER_STAGE_COMPUTE_BIT)
+                        .storage_buffer(1, VK_SHADER_STAGE_COMPUTE_BIT)
+                        .storage_buffer(2, VK_SHADER_STAGE_COMPUTE_BIT)
+                        .build(ctx(), "sampling_check.set");
+  const std::array<VkDescriptorSetLayout, 1> sets{set_layout};
+  auto layout = gpu::create_pipeline_layout(ctx(), sets, {}, "sampling_check.layout");
+  auto pipeline = gpu::create_compute_pipeline(ctx(), layout, module, "sampling_check");
+  ctx().submit_immediate([&](VkCommandBuffer cmd) {
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
+    gpu::PushDescriptors()
+        .storage_buffer(0, data_buffer)
+        .storage_buffer(1, point_buffer)
+        .storage_buffer(2, results)
+        .push(ctx(), cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout);
+    vkCmdDispatch(cmd, static_cast<std::uint32_t>((points.size() + 63) / 64), 1, 1);
+    gpu::buffer_barrier(cmd, results.handle(), VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                        VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT,
+                        VK_ACCESS_2_HOST_READ_BIT);
+  });
+  const auto* out = reinterpret_cast<const glm::vec4*>(results.mapped());
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const glm::vec3 p(points[i]);
+    const std::uint32_t face = sf::cube_face(p - light);
+    const auto s = sf::project(sf::face_view_proj(light, face, 0.05f, range), p);
+    ASSERT_EQ(static_cast<std::uint32_t>(out[i].x), face) << i;
+    EXPECT_NEAR(out[i].y, s.uv.x, 1e-4f) << i;
+    EXPECT_NEAR(out[i].z, s.uv.y, 1e-4f) << i;
+    EXPECT_NEAR(out[i].w, s.depth, 1e-4f) << i;
+  }
+}

@@ -1,0 +1,197 @@
+// Slot assignment, culling counts and cache-invalidation rules of the point-shadow
+// atlas (passes/point_shadow_atlas/atlas_planner.*), plus the pass's reflection. CPU only.
+
+#include "point_shadow_atlas/atlas_planner.hpp"
+
+#include <algorithm>
+#include <filesystem>
+
+#include <gtest/gtest.h>
+
+#include "antumbra/scene/scene_file.hpp"
+#include "point_shadow_atlas/point_shadow_atlas_pass.hpp"
+#include "point_shadow_atlas/shadow_faces.hpp"
+
+using namespace antumbra;
+using passes::AtlasPlanner;
+using passes::AtlasSettings;
+
+namespace {
+
+scene::Scene atrium() {
+  auto loaded = scene::load_scene_file(
+      (std::filesystem::path(ANTUMBRA_TEST_SOURCE_DIR) / "data" / "scenes" / "atrium.json").string());
+  if (!loaded.ok()) throw std::runtime_error("cannot load atrium.json");
+  return std::move(loaded.value());
+}
+
+glm::mat4 camera_of(const scene::Scene& s) { return s.camera.view_projection(16.0f / 9.0f); }
+
+AtlasSettings settings(std::uint32_t layers = 96) {
+  AtlasSettings s;
+  s.layers = layers;
+  s.face_size = 256;
+  return s;
+}
+
+std::uint32_t visible_count(const scene::Scene& s, std::size_t light) {
+  const auto frustum = passes::shadow_faces::camera_frustum(camera_of(s));
+  const auto mask = passes::shadow_faces::visible_faces(frustum, s.lights[light].position,
+                                                        s.lights[light].range);
+  return static_cast<std::uint32_t>(__builtin_popcount(mask));
+}
+
+}  // namespace
+
+TEST(AtlasPlanner, FirstFrameRendersEveryVisibleFaceOfAtrium) {
+  const auto scene = atrium();
+  AtlasPlanner planner;
+  const auto& f = planner.plan(scene, camera_of(scene), 1, 0, settings());
+  EXPECT_TRUE(f.clear_all);
+  EXPECT_EQ(f.stats.total, 96u);
+  EXPECT_GT(f.stats.culled, 0u) << "the atrium camera cannot see behind itself";
+  EXPECT_LT(f.stats.culled, 96u);
+  EXPECT_EQ(f.stats.rendered + f.stats.culled, 96u);
+  EXPECT_EQ(f.stats.cached, 0u);
+  EXPECT_EQ(f.render_layers.size(), f.stats.rendered);
+  EXPECT_TRUE(std::is_sorted(f.render_layers.begin(), f.render_layers.end()));
+  ASSERT_EQ(f.lights.size(), 16u);
+  for (std::uint32_t i = 0; i < 16; ++i) {
+    EXPECT_EQ(f.lights[i].params.z, static_cast<float>(6 * i));
+    EXPECT_EQ(f.faces[6 * i + 3].info.x, i);
+    EXPECT_EQ(f.faces[6 * i + 3].info.y, 3u);
+  }
+  EXPECT_EQ(f.header.counts.x, 16u);
+  EXPECT_EQ(f.header.counts.y, 96u);
+  EXPECT_EQ(f.header.counts.z, 256u);
+}
+
+TEST(AtlasPlanner, UnchangedSecondFrameRendersNothing) {
+  const auto scene = atrium();
+  AtlasPlanner planner;
+  const auto rendered = planner.plan(scene, camera_of(scene), 1, 0, settings()).stats.rendered;
+  const auto& f = planner.plan(scene, camera_of(scene), 1, 1, settings());
+  EXPECT_FALSE(f.clear_all);
+  EXPECT_EQ(f.stats.rendered, 0u);
+  EXPECT_EQ(f.stats.cached, rendered);
+  EXPECT_TRUE(f.render_layers.empty());
+}
+
+TEST(AtlasPlanner, MovingOneLightRerendersOnlyItsVisibleFaces) {
+  auto scene = atrium();
+  AtlasPlanner planner;
+  planner.plan(scene, camera_of(scene), 1, 0, settings());
+  scene.lights[5].position.x += 0.25f;
+  const auto& f = planner.plan(scene, camera_of(scene), 1, 1, settings());
+  EXPECT_EQ(f.stats.rendered, visible_count(scene, 5));
+  for (std::uint32_t layer : f.render_layers) {
+    EXPECT_GE(layer, 30u);
+    EXPECT_LT(layer, 36u);
+  }
+  scene.lights[5].range += 0.5f;  // the range is the far plane: new depths
+  EXPECT_EQ(planner.plan(scene, camera_of(scene), 1, 2, settings()).stats.rendered,
+            visible_count(scene, 5));
+}
+
+TEST(AtlasPlanner, GeometryChangeOrInvalidateRerendersEverything) {
+  const auto scene = atrium();
+  AtlasPlanner planner;
+  const auto first = planner.plan(scene, camera_of(scene), 1, 0, settings()).stats.rendered;
+  EXPECT_EQ(planner.plan(scene, camera_of(scene), 2, 1, settings()).stats.rendered, first);
+  EXPECT_EQ(planner.plan(scene, camera_of(scene), 2, 2, settings()).stats.rendered, 0u);
+  planner.invalidate();
+  const auto& f = planner.plan(scene, camera_of(scene), 2, 3, settings());
+  EXPECT_TRUE(f.clear_all);
+  EXPECT_EQ(f.stats.rendered, first);
+}
+
+TEST(AtlasPlanner, CacheOffRendersEveryVisibleFaceEachFrame) {
+  const auto scene = atrium();
+  AtlasPlanner planner;
+  auto s = settings();
+  s.cache = false;
+  const auto first = planner.plan(scene, camera_of(scene), 1, 0, s).stats.rendered;
+  const auto& f = planner.plan(scene, camera_of(scene), 1, 1, s);
+  EXPECT_EQ(f.stats.rendered, first);
+  EXPECT_EQ(f.stats.cached, 0u);
+}
+
+TEST(AtlasPlanner, CulledFaceIsRenderedWhenItComesIntoView) {
+  auto scene = atrium();
+  AtlasPlanner planner;
+  const auto& first = planner.plan(scene, camera_of(scene), 1, 0, settings());
+  const auto culled = first.stats.culled;
+  ASSERT_GT(culled, 0u);
+  // Turn the camera round: faces culled before are needed now and were never drawn.
+  auto turned = scene;
+  turned.camera.target = turned.camera.position * 2.0f - turned.camera.target;
+  const auto& second = planner.plan(turned, camera_of(turned), 1, 1, settings());
+  EXPECT_GT(second.stats.rendered, 0u);
+  // Faces seen from both views were drawn once and are cached now.
+  EXPECT_GT(second.stats.cached + second.stats.rendered, 0u);
+  // Back to the first view: everything it needs is still valid.
+  const auto& third = planner.plan(scene, camera_of(scene), 1, 2, settings());
+  EXPECT_EQ(third.stats.rendered, 0u);
+  EXPECT_EQ(third.stats.culled, culled);
+}
+
+TEST(AtlasPlanner, CullingOffKeepsEveryFace) {
+  const auto scene = atrium();
+  AtlasPlanner planner;
+  auto s = settings();
+  s.cull_faces = false;
+  const auto& f = planner.plan(scene, camera_of(scene), 1, 0, s);
+  EXPECT_EQ(f.stats.culled, 0u);
+  EXPECT_EQ(f.stats.rendered, 96u);
+}
+
+TEST(AtlasPlanner, LightsThatDoNotFitAreNamedAndGetNoLayers) {
+  auto scene = atrium();
+  scene.lights[1].casts_shadows = false;
+  AtlasPlanner planner;
+  const auto& f = planner.plan(scene, camera_of(scene), 1, 0, settings(18));  // 3 slots
+  EXPECT_EQ(f.lights[0].params.z, 0.0f);
+  EXPECT_EQ(f.lights[1].params.z, -1.0f);  // casts no shadows: skipped, takes no slot
+  EXPECT_EQ(f.lights[2].params.z, 6.0f);
+  EXPECT_EQ(f.lights[3].params.z, 12.0f);
+  ASSERT_EQ(f.unshadowed.size(), 12u);
+  EXPECT_EQ(f.unshadowed.front(), "l04");
+  EXPECT_EQ(f.unshadowed.back(), "l15");
+  for (std::size_t i = 4; i < 16; ++i) EXPECT_EQ(f.lights[i].params.z, -1.0f);
+  EXPECT_EQ(f.stats.total, 18u);
+}
+
+TEST(AtlasPlanner, ReassignedSlotIsRerendered) {
+  auto scene = atrium();
+  AtlasPlanner planner;
+  planner.plan(scene, camera_of(scene), 1, 0, settings());
+  scene.lights[0].casts_shadows = false;  // every later light moves down one slot
+  const auto& f = planner.plan(scene, camera_of(scene), 1, 1, settings());
+  EXPECT_EQ(f.stats.total, 90u);
+  EXPECT_EQ(f.stats.cached, 0u);
+  EXPECT_EQ(f.faces[90].info.x, 0xFFFFFFFFu);  // the freed last slot holds no light
+}
+
+TEST(PointShadowAtlasReflection, PortsAndParams) {
+  const auto desc = passes::PointShadowAtlasPass::describe();
+  EXPECT_EQ(desc.type, "point-shadow-atlas");
+  const auto* atlas = desc.find_port("atlas");
+  ASSERT_NE(atlas, nullptr);
+  EXPECT_EQ(atlas->access, fg::Access::depth_attachment);
+  EXPECT_EQ(atlas->min_layers, 6u);
+  EXPECT_EQ(atlas->max_layers, 0u);
+  const auto* colour = desc.find_port("colour");
+  ASSERT_NE(colour, nullptr);
+  EXPECT_TRUE(colour->optional);
+  const auto* data = desc.find_port("shadowData");
+  ASSERT_NE(data, nullptr);
+  EXPECT_EQ(data->kind, fg::ResourceKind::buffer);
+  EXPECT_EQ(data->access, fg::Access::transfer_dst);
+  for (const char* name : {"nearPlane", "depthBias", "slopeBias", "cullFaces", "cache",
+                           "translucentColour", "layeredDraw"}) {
+    const auto* p = desc.find_param(name);
+    ASSERT_NE(p, nullptr) << name;
+    EXPECT_FALSE(p->description.empty()) << name;
+  }
+  EXPECT_EQ(passes::shadow_data_bytes(96), 40464u);
+}

@@ -1,0 +1,28 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// Runs shadow_sampling.glsl's face selection and projection on test points so that the
+// CPU mirror (shadow_faces.cpp) can be compared with it.
+layout(local_size_x = 64) in;
+
+#include "common/shadow_data.glsl"
+
+layout(set = 0, binding = 0) readonly buffer Shadows {
+  ShadowHeader shadow_header;
+  ShadowLight shadow_lights[ANTUMBRA_MAX_SHADOW_LIGHTS];
+  ShadowFace shadow_faces[];
+};
+layout(set = 0, binding = 1) readonly buffer Points { vec4 points[]; };
+layout(set = 0, binding = 2) writeonly buffer Results { vec4 results[]; };  // layer, u, v, depth
+
+#define SHADOW_FACES shadow_faces
+#include "common/shadow_sampling.glsl"
+
+void main() {
+  uint i = gl_GlobalInvocationID.x;
+  if (i >= points.length()) return;
+  ShadowLight l = shadow_lights[0];
+  vec3 p = points[i].xyz;
+  int layer = shadow_face_layer(l, p);
+  ShadowCoord c = shadow_coord(shadow_faces[max(layer, 0)].view_proj, l, layer, p);
+  results[i] = vec4(float(layer), c.uv, c.valid ? c.depth : -1.0);
+}
