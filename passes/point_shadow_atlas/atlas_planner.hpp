@@ -41,8 +41,8 @@ struct FaceKey {
 
 struct AtlasFrame {
   ShadowHeader header;
-  std::vector<ShadowLight> lights;  // per scene light index (at most kMaxShadowLights)
-  std::vector<ShadowFace> faces;    // per atlas layer
+  std::vector<ShadowLight> lights;           // per scene light index (at most kMaxShadowLights)
+  std::vector<ShadowFace> faces;             // per atlas layer
   std::vector<std::uint32_t> render_layers;  // layers to clear and draw, ascending
   std::vector<std::string> unshadowed;       // casters left without a slot (atlas full)
   bool clear_all = false;  // the whole atlas has undefined contents (first frame, reload)

@@ -186,8 +186,8 @@ void PointShadowAtlasPass::execute(fgvk::ExecuteContext& context) {
     context.report.add({context.pass.name, "SHD002", fg::Severity::warning,
                         std::to_string(frame.unshadowed.size()) +
                             " shadow-casting light(s) do not fit the atlas (" +
-                            std::to_string(settings_.layers) + " layers = " +
-                            std::to_string(settings_.layers / 6) +
+                            std::to_string(settings_.layers) +
+                            " layers = " + std::to_string(settings_.layers / 6) +
                             " lights) and cast no shadows: " + names,
                         fg::Json{{"lights", frame.unshadowed}, {"layers", settings_.layers}}});
   }
@@ -228,7 +228,8 @@ void PointShadowAtlasPass::upload(fgvk::ExecuteContext& context, const AtlasFram
   auto* lights = reinterpret_cast<ShadowLight*>(out + kShadowLightsOffset);
   std::fill(lights, lights + kMaxShadowLights, ShadowLight{});
   std::copy(frame.lights.begin(), frame.lights.end(), lights);
-  std::memcpy(out + kShadowFacesOffset, frame.faces.data(), frame.faces.size() * sizeof(ShadowFace));
+  std::memcpy(out + kShadowFacesOffset, frame.faces.data(),
+              frame.faces.size() * sizeof(ShadowFace));
   const VkBufferCopy region{0, 0, bytes};
   vkCmdCopyBuffer(context.cmd, slot.staging, context.bindings.buffer("shadowData")->buffer, 1,
                   &region);
@@ -270,8 +271,8 @@ void PointShadowAtlasPass::draw_layered(fgvk::ExecuteContext& context, const Atl
   VkClearValue colour_clear{};
   colour_clear.color = kWhite;
   // Clean faces keep their contents (LOAD); dirty layers are cleared below.
-  const VkRenderingAttachmentInfo depth_attachment =
-      attachment(atlas.view, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, frame.clear_all, depth_clear);
+  const VkRenderingAttachmentInfo depth_attachment = attachment(
+      atlas.view, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, frame.clear_all, depth_clear);
   VkRenderingAttachmentInfo colour_attachment{};
   VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
   rendering.renderArea = {{0, 0}, atlas.extent};

@@ -11,19 +11,27 @@ Plane normalised(const glm::vec4& p) {
   return {glm::vec3(p) / length, p.w / length};
 }
 
-glm::vec4 row(const glm::mat4& m, int i) { return {m[0][i], m[1][i], m[2][i], m[3][i]}; }
+glm::vec4 row(const glm::mat4& m, int i) {
+  return {m[0][i], m[1][i], m[2][i], m[3][i]};
+}
 
 }  // namespace
 
 FaceBasis face_basis(std::uint32_t face) {
   // (forward, s, t) from the Vulkan cube-map selection table.
   switch (face) {
-    case 0: return {{1, 0, 0}, {0, 0, -1}, {0, -1, 0}};
-    case 1: return {{-1, 0, 0}, {0, 0, 1}, {0, -1, 0}};
-    case 2: return {{0, 1, 0}, {1, 0, 0}, {0, 0, 1}};
-    case 3: return {{0, -1, 0}, {1, 0, 0}, {0, 0, -1}};
-    case 4: return {{0, 0, 1}, {1, 0, 0}, {0, -1, 0}};
-    default: return {{0, 0, -1}, {-1, 0, 0}, {0, -1, 0}};
+    case 0:
+      return {{1, 0, 0}, {0, 0, -1}, {0, -1, 0}};
+    case 1:
+      return {{-1, 0, 0}, {0, 0, 1}, {0, -1, 0}};
+    case 2:
+      return {{0, 1, 0}, {1, 0, 0}, {0, 0, 1}};
+    case 3:
+      return {{0, -1, 0}, {1, 0, 0}, {0, 0, -1}};
+    case 4:
+      return {{0, 0, 1}, {1, 0, 0}, {0, -1, 0}};
+    default:
+      return {{0, 0, -1}, {-1, 0, 0}, {0, -1, 0}};
   }
 }
 
@@ -93,8 +101,7 @@ FacePyramid face_pyramid(const glm::vec3& light, float range, std::uint32_t face
   const FaceBasis b = face_basis(face);
   FacePyramid p;
   // Inside the face: forward.d >= |s.d| and forward.d >= |t.d|; cap: forward.d <= range.
-  const glm::vec3 normals[4] = {b.forward - b.s, b.forward + b.s, b.forward - b.t,
-                                b.forward + b.t};
+  const glm::vec3 normals[4] = {b.forward - b.s, b.forward + b.s, b.forward - b.t, b.forward + b.t};
   for (int i = 0; i < 4; ++i) {
     p.planes[static_cast<std::size_t>(i)] =
         normalised(glm::vec4(normals[i], -glm::dot(normals[i], light)));
@@ -122,12 +129,14 @@ bool pyramid_may_intersect(const Frustum& frustum, const FacePyramid& pyramid) {
   // skipped), which only ever keeps a face that could have been culled.
   for (const Plane& plane : frustum.planes) {
     bool all_outside = true;
-    for (const glm::vec3& v : pyramid.vertices) all_outside = all_outside && plane.distance(v) < 0.0f;
+    for (const glm::vec3& v : pyramid.vertices)
+      all_outside = all_outside && plane.distance(v) < 0.0f;
     if (all_outside) return false;
   }
   for (const Plane& plane : pyramid.planes) {
     bool all_outside = true;
-    for (const glm::vec3& c : frustum.corners) all_outside = all_outside && plane.distance(c) < 0.0f;
+    for (const glm::vec3& c : frustum.corners)
+      all_outside = all_outside && plane.distance(c) < 0.0f;
     if (all_outside) return false;
   }
   return true;

@@ -57,7 +57,7 @@ struct Plane {
 
 // A convex volume as its bounding planes (normalised) and corner points.
 struct Frustum {
-  std::array<Plane, 6> planes;     // left, right, top, bottom, near, far
+  std::array<Plane, 6> planes;  // left, right, top, bottom, near, far
   std::array<glm::vec3, 8> corners;
 };
 // From a Vulkan view-projection matrix (clip -w <= x, y <= w, 0 <= z <= w).
@@ -66,7 +66,7 @@ Frustum camera_frustum(const glm::mat4& view_proj);
 // The region a face can light: the 90-degree pyramid from the light, cut at `range`
 // along its axis (that contains the lit sphere's part inside the face).
 struct FacePyramid {
-  std::array<Plane, 5> planes;      // four sides through the apex, then the far cap
+  std::array<Plane, 5> planes;        // four sides through the apex, then the far cap
   std::array<glm::vec3, 5> vertices;  // apex, then the far cap's corners
 };
 FacePyramid face_pyramid(const glm::vec3& light, float range, std::uint32_t face);

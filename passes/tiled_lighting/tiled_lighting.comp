@@ -14,7 +14,8 @@
 // ever dropped, and any light count works.
 //
 // Defines (set by tiled_lighting_pass.cpp): SHADOW_MODE (0 none, 1 hard, 2 pcf, 3 pcss,
-// 4 layered), HAS_ATLAS, HAS_COLOUR, FALLBACK_PCF, KERNEL, BLOCKER_SEARCH, HDR_FORMAT.
+// 4 layered), HAS_ATLAS, ATLAS_D16, HAS_COLOUR, FALLBACK_PCF, KERNEL, BLOCKER_SEARCH,
+// HDR_FORMAT.
 #include "../common/frame.glsl"
 #include "../common/lights.glsl"
 #include "shading.glsl"
@@ -69,12 +70,12 @@ vec3 view_ray(vec2 pixel) {
 // Shadow term of one light at a shaded point, by mode. World-space inputs.
 #if HAS_ATLAS
 float atlas_shadow(uint index, vec3 p_world, vec3 n_world, int mode) {
-  ShadowCoord c;
-  if (!shadow_coord(index, p_world, n_world, c)) return 1.0;
-  if (mode == 1) return shadow_hard(c);
-  if (mode == 2) return shadow_pcf(c, KERNEL, 1.0);
+  FilterCoord c;
+  if (!filter_coord(index, p_world, n_world, c)) return 1.0;
+  if (mode == 1) return filter_hard(c);
+  if (mode == 2) return filter_pcf(c, KERNEL, 1.0);
   float size = shadow_lights[index].params.x * light_size_scale;
-  return shadow_pcss(c, size);
+  return filter_pcss(c, size);
 }
 #endif
 

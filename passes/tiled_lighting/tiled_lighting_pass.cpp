@@ -155,6 +155,7 @@ void TiledLightingPass::prepare(fgvk::PrepareContext& context) {
   const std::vector<gpu::ShaderDefine> defines{
       {"SHADOW_MODE", std::to_string(static_cast<int>(mode_))},
       {"HAS_ATLAS", has_atlas_ ? "1" : "0"},
+      {"ATLAS_D16", has_atlas_ && b.required_image("atlas").format == VK_FORMAT_D16_UNORM ? "1" : "0"},
       {"HAS_COLOUR", has_colour_ ? "1" : "0"},
       {"FALLBACK_PCF", pcf_fallback ? "1" : "0"},
       {"KERNEL", std::to_string(kernel_of(context.pass))},

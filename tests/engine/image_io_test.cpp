@@ -38,7 +38,18 @@ TEST(ConvertTexels, SwizzlesBgraAndDecodesHalf) {
   const HostImage r16 = convert_texels(VK_FORMAT_R16_SFLOAT, 1, 1, half);
   EXPECT_EQ(r16.channels, 1u);
   EXPECT_FLOAT_EQ(r16.at(0, 0, 0), 0.25f);
-  EXPECT_THROW(convert_texels(VK_FORMAT_D32_SFLOAT, 1, 1, half), std::invalid_argument);
+  EXPECT_THROW(convert_texels(VK_FORMAT_BC1_RGB_UNORM_BLOCK, 1, 1, half), std::invalid_argument);
+}
+
+TEST(ConvertTexels, DepthAndUintAreSingleChannel) {
+  const float depth[2] = {0.25f, 1.0f};
+  const HostImage d32 = convert_texels(VK_FORMAT_D32_SFLOAT, 2, 1, depth);
+  EXPECT_EQ(d32.channels, 1u);
+  EXPECT_FLOAT_EQ(d32.at(1, 0, 0), 1.0f);
+  const std::uint16_t d16[1] = {32768};
+  EXPECT_NEAR(convert_texels(VK_FORMAT_D16_UNORM, 1, 1, d16).at(0, 0, 0), 0.5f, 1e-4f);
+  const std::uint32_t bits[1] = {0b1011u};
+  EXPECT_FLOAT_EQ(convert_texels(VK_FORMAT_R32_UINT, 1, 1, bits).at(0, 0, 0), 11.0f);
 }
 
 TEST(WriteImage, PngAndPfmFiles) {

@@ -99,4 +99,22 @@ glm::ivec2 project_to_pixel(const scene::Scene& scene, VkExtent2D viewport, cons
   return glm::ivec2(glm::floor(uv * glm::vec2(viewport.width, viewport.height)));
 }
 
+std::vector<std::pair<float, float>> floor_light_fraction(const scene::Scene& scene,
+                                                          VkExtent2D viewport,
+                                                          const gpu::HostImage& hdr,
+                                                          const gpu::HostImage& unshadowed,
+                                                          float x_max) {
+  const float ambient = scene.ambient.r * std::round(scene.materials[0].albedo.r * 255.0f) / 255.0f;
+  std::vector<std::pair<float, float>> out;
+  glm::ivec2 last(-1);
+  for (float x = 0.0f; x <= x_max; x += 0.02f) {
+    const glm::ivec2 p = project_to_pixel(scene, viewport, {x, 0.0f, 0.0f});
+    if (p == last) continue;
+    last = p;
+    const float lit = texel(unshadowed, p.x, p.y).r - ambient;
+    out.emplace_back(x, (texel(hdr, p.x, p.y).r - ambient) / lit);
+  }
+  return out;
+}
+
 }  // namespace antumbra::lighting_testing

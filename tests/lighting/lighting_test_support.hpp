@@ -4,6 +4,8 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <vulkan/vulkan.h>
 #include <glm/glm.hpp>
@@ -36,5 +38,14 @@ glm::dvec3 reference_radiance(const scene::Scene& scene, VkExtent2D viewport, st
 
 // The pixel where a world point lands (rounded down), for the scene's camera.
 glm::ivec2 project_to_pixel(const scene::Scene& scene, VkExtent2D viewport, const glm::vec3& p);
+
+// Fraction of one light's radiance (0 umbra .. 1 lit) along the floor line z = 0 from
+// x = 0 to x_max, one sample per pixel: (hdr - ambient) / (unshadowed - ambient) in red,
+// the ambient term from the scene's ambient and the floor's (8-bit) albedo.
+std::vector<std::pair<float, float>> floor_light_fraction(const scene::Scene& scene,
+                                                          VkExtent2D viewport,
+                                                          const gpu::HostImage& hdr,
+                                                          const gpu::HostImage& unshadowed,
+                                                          float x_max = 3.5f);
 
 }  // namespace antumbra::lighting_testing

@@ -203,20 +203,8 @@ class SyntheticAtlasTest : public ExecutorTest {
     unshadowed_ = render(shadow_graph("tiled-lighting", "{}"), kGolden);
   }
 
-  // Light fraction (0 umbra .. 1 lit) along the floor line z = 0, x = 0 .. 3.5.
   std::vector<std::pair<float, float>> profile(const gpu::HostImage& hdr) const {
-    const float ambient =
-        scene_.ambient.r * std::round(scene_.materials[0].albedo.r * 255.0f) / 255.0f;
-    std::vector<std::pair<float, float>> out;
-    glm::ivec2 last(-1);
-    for (float x = 0.0f; x <= 3.5f; x += 0.02f) {
-      const glm::ivec2 p = project_to_pixel(scene_, kGolden, {x, 0.0f, 0.0f});
-      if (p == last) continue;
-      last = p;
-      const float lit = texel(unshadowed_, p.x, p.y).r - ambient;
-      out.emplace_back(x, (texel(hdr, p.x, p.y).r - ambient) / lit);
-    }
-    return out;
+    return floor_light_fraction(scene_, kGolden, hdr, unshadowed_);
   }
 
   // Checks shared by every mode; returns the number of penumbra samples.

@@ -20,12 +20,15 @@ namespace {
 
 scene::Scene atrium() {
   auto loaded = scene::load_scene_file(
-      (std::filesystem::path(ANTUMBRA_TEST_SOURCE_DIR) / "data" / "scenes" / "atrium.json").string());
+      (std::filesystem::path(ANTUMBRA_TEST_SOURCE_DIR) / "data" / "scenes" / "atrium.json")
+          .string());
   if (!loaded.ok()) throw std::runtime_error("cannot load atrium.json");
   return std::move(loaded.value());
 }
 
-glm::mat4 camera_of(const scene::Scene& s) { return s.camera.view_projection(16.0f / 9.0f); }
+glm::mat4 camera_of(const scene::Scene& s) {
+  return s.camera.view_projection(16.0f / 9.0f);
+}
 
 AtlasSettings settings(std::uint32_t layers = 96) {
   AtlasSettings s;
@@ -36,8 +39,8 @@ AtlasSettings settings(std::uint32_t layers = 96) {
 
 std::uint32_t visible_count(const scene::Scene& s, std::size_t light) {
   const auto frustum = passes::shadow_faces::camera_frustum(camera_of(s));
-  const auto mask = passes::shadow_faces::visible_faces(frustum, s.lights[light].position,
-                                                        s.lights[light].range);
+  const auto mask =
+      passes::shadow_faces::visible_faces(frustum, s.lights[light].position, s.lights[light].range);
   return static_cast<std::uint32_t>(__builtin_popcount(mask));
 }
 
@@ -122,13 +125,15 @@ TEST(AtlasPlanner, CulledFaceIsRenderedWhenItComesIntoView) {
   const auto& first = planner.plan(scene, camera_of(scene), 1, 0, settings());
   const auto culled = first.stats.culled;
   ASSERT_GT(culled, 0u);
-  // Turn the camera round: faces culled before are needed now and were never drawn.
+  // Look from the other end of the nave: faces culled before are needed now and were
+  // never drawn.
   auto turned = scene;
-  turned.camera.target = turned.camera.position * 2.0f - turned.camera.target;
+  turned.camera.position = {14.2f, 1.7f, 0.0f};
+  turned.camera.target = {0.0f, 2.2f, 0.0f};
   const auto& second = planner.plan(turned, camera_of(turned), 1, 1, settings());
   EXPECT_GT(second.stats.rendered, 0u);
   // Faces seen from both views were drawn once and are cached now.
-  EXPECT_GT(second.stats.cached + second.stats.rendered, 0u);
+  EXPECT_GT(second.stats.cached, 0u);
   // Back to the first view: everything it needs is still valid.
   const auto& third = planner.plan(scene, camera_of(scene), 1, 2, settings());
   EXPECT_EQ(third.stats.rendered, 0u);

@@ -5,8 +5,8 @@
 
 #include <random>
 
-#include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "antumbra/scene/camera.hpp"
 
@@ -53,12 +53,9 @@ TEST(ShadowFaces, FollowsVulkanCubeMapOrientation) {
     glm::vec2 uv;
   };
   const Case cases[] = {
-      {{1.0f, 0.5f, 0.2f}, 0, {0.4f, 0.25f}},
-      {{-1.0f, 0.5f, 0.2f}, 1, {0.6f, 0.25f}},
-      {{0.3f, 1.0f, 0.4f}, 2, {0.65f, 0.7f}},
-      {{0.3f, -1.0f, 0.4f}, 3, {0.65f, 0.3f}},
-      {{0.3f, -0.6f, 1.0f}, 4, {0.65f, 0.8f}},
-      {{0.3f, -0.6f, -1.0f}, 5, {0.35f, 0.8f}},
+      {{1.0f, 0.5f, 0.2f}, 0, {0.4f, 0.25f}},  {{-1.0f, 0.5f, 0.2f}, 1, {0.6f, 0.25f}},
+      {{0.3f, 1.0f, 0.4f}, 2, {0.65f, 0.7f}},  {{0.3f, -1.0f, 0.4f}, 3, {0.65f, 0.3f}},
+      {{0.3f, -0.6f, 1.0f}, 4, {0.65f, 0.8f}}, {{0.3f, -0.6f, -1.0f}, 5, {0.35f, 0.8f}},
   };
   const glm::vec3 light(0.0f);
   for (const Case& c : cases) {
@@ -127,7 +124,8 @@ RandomView random_view(std::mt19937& rng) {
   camera.near = 0.1f;
   camera.far = 10.0f + 10.0f * (u(rng) + 1.0f);
   const float aspect = 0.5f + (u(rng) + 1.0f);
-  RandomView v{camera.view_projection(aspect), {8.0f * u(rng), 3.0f * u(rng), 8.0f * u(rng)},
+  RandomView v{camera.view_projection(aspect),
+               {8.0f * u(rng), 3.0f * u(rng), 8.0f * u(rng)},
                1.0f + 3.0f * (u(rng) + 1.0f)};
   return v;
 }
@@ -168,8 +166,8 @@ TEST(ShadowFaceCulling, NeverCullsAFaceThatSeesAVisiblePoint) {
       }
       ++checked_points;
       const std::uint32_t face = sf::cube_face(p - v.light);
-      ASSERT_NE(mask >> face & 1u, 0u) << "trial " << trial << ": face " << face
-                                       << " culled but sees a visible point";
+      ASSERT_NE(mask >> face & 1u, 0u)
+          << "trial " << trial << ": face " << face << " culled but sees a visible point";
     }
   }
   EXPECT_GT(checked_points, 10000);
