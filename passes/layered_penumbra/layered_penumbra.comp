@@ -44,10 +44,10 @@ layout(push_constant) uniform Params {
   uint penumbra_shift;  // 1 when the penumbra image is half resolution
   float light_size_scale;
   float search_scale;   // blocker-search radius as a multiple of the light's size in uv
-  float normal_offset;  // world units per unit of (1 - n.l), against acne
   uint search_taps;     // per axis (odd), e.g. 5
 };
 
+#include "../common/shadow_sampling.glsl"
 #include "../common/tile_cull.glsl"
 #include "penumbra_common.glsl"
 
@@ -87,7 +87,7 @@ void main() {
       vec3 to_light = sl.position_range.xyz - world;
       float dist = length(to_light);
       if (dist >= sl.position_range.w) continue;
-      PenumbraSample s = estimate_penumbra(sl, world, n_world, to_light / dist);
+      PenumbraSample s = estimate_penumbra(sl, world, n_world);
       owner[layer] = li;
       uint slot = layer >> 2u;
       uint channel = layer & 3u;

@@ -58,8 +58,6 @@ fg::PassDesc LayeredPenumbraPass::describe() {
        .max = 8.0, .description = "Blocker-search radius relative to light size over receiver distance."},
       {.name = "searchTaps", .type = fg::ParamType::integer, .default_value = 5, .min = 1.0,
        .max = 9.0, .description = "Blocker-search taps per axis."},
-      {.name = "normalOffset", .type = fg::ParamType::number, .default_value = 0.03, .min = 0.0,
-       .max = 1.0, .description = "World-space offset along the normal at grazing angles (anti-acne)."},
   };
   desc.check = &check;
   return desc;

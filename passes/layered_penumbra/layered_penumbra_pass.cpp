@@ -15,7 +15,6 @@ struct PushConstants {
   std::uint32_t penumbra_shift;
   float light_size_scale;
   float search_scale;
-  float normal_offset;
   std::uint32_t search_taps;
 };
 
@@ -83,7 +82,6 @@ void LayeredPenumbraPass::execute(fgvk::ExecuteContext& context) {
       penumbra.extent.width < depth.extent.width ? 1u : 0u,
       param_float(context.pass, "lightSizeScale"),
       param_float(context.pass, "searchScale"),
-      param_float(context.pass, "normalOffset"),
       static_cast<std::uint32_t>(param_float(context.pass, "searchTaps")),
   };
   vkCmdPushConstants(cmd, layout_, kCompute, 0, sizeof constants, &constants);

@@ -1,6 +1,5 @@
-// Shadow-face lookups and the blocker search of the layered penumbra pass. Faces follow
-// shadow_data.glsl: face k of a light (0..5 = +X -X +Y -Y +Z -Z) sits at atlas layer
-// first_layer + k; its view_proj is a 90-degree perspective with Vulkan depth 0..1.
+// The blocker search of the layered penumbra pass, on top of the shared face lookups of
+// shadow_sampling.glsl (face selection, normal offset, coordinates, hard test).
 #ifndef ANTUMBRA_PENUMBRA_COMMON_GLSL
 #define ANTUMBRA_PENUMBRA_COMMON_GLSL
 
@@ -10,24 +9,12 @@ struct PenumbraSample {
   uint colour;     // translucent shadow colour, r<<24|g<<16|b<<8|a (white = clear)
 };
 
-uint cube_face(vec3 d) {
-  vec3 a = abs(d);
-  if (a.x >= a.y && a.x >= a.z) return d.x >= 0.0 ? 0u : 1u;
-  if (a.y >= a.z) return d.y >= 0.0 ? 2u : 3u;
-  return d.z >= 0.0 ? 4u : 5u;
-}
-
-// Distance along the face's axis from the stored 0..1 depth (perspective, near n, far f).
-float linear_face_depth(float depth, float n, float f) {
-  return n * f / (f - depth * (f - n));
-}
-
 uint pack_colour(vec4 c) {
   uvec4 b = uvec4(clamp(c, 0.0, 1.0) * 255.0 + 0.5);
   return (b.r << 24u) | (b.g << 16u) | (b.b << 8u) | b.a;
 }
 
-PenumbraSample estimate_penumbra(ShadowLight sl, vec3 world, vec3 n_world, vec3 l) {
+PenumbraSample estimate_penumbra(ShadowLight sl, vec3 world, vec3 n_world) {
   PenumbraSample result;
   result.width = 0.0;
   result.in_shadow = false;
@@ -36,24 +23,18 @@ PenumbraSample estimate_penumbra(ShadowLight sl, vec3 world, vec3 n_world, vec3 
   float n = sl.params.y;
   float f = sl.position_range.w;
   float light_size = sl.params.x * light_size_scale;
-  // Normal offset grows at grazing angles, where acne appears first.
-  float n_dot_l = clamp(dot(n_world, l), 0.0, 1.0);
-  vec3 p = world + n_world * normal_offset * (1.0 - n_dot_l);
-  vec3 from_light = p - sl.position_range.xyz;
-  uint face = cube_face(from_light);
-  int layer = int(sl.params.z) + int(face);
-  vec4 clip = faces[layer].view_proj * vec4(p, 1.0);
-  vec3 ndc = clip.xyz / clip.w;
-  vec2 uv = ndc.xy * 0.5 + 0.5;
-  float z_receiver = linear_face_depth(ndc.z, n, f);
-  float z_centre = linear_face_depth(texture(atlas, vec3(uv, float(layer))).r, n, f);
-  // A small depth-proportional tolerance on top of the raster slope bias.
-  float tolerance = 0.01 * z_receiver;
-  result.in_shadow = z_centre < z_receiver - tolerance;
+  float face_size = float(shadow_header.counts.z);
+  vec3 p = shadow_offset_position(sl, world, n_world, face_size);
+  int layer = shadow_face_layer(sl, p);
+  if (layer < 0) return result;
+  ShadowCoord c = shadow_coord(faces[layer].view_proj, sl, layer, p);
+  if (!c.valid || c.depth >= 1.0) return result;
+  result.in_shadow = shadow_hard_coord(atlas, c) < 0.5;
 
   // Blocker search (PCSS step 1) over a square region that grows with the light's size
   // and shrinks with distance: blockers near the receiver matter most.
-  float texel = 1.0 / float(shadow_header.counts.z);
+  float z_receiver = c.linear;
+  float texel = 1.0 / face_size;
   float radius = clamp(search_scale * light_size / z_receiver, texel, 0.25);
   int taps = int(search_taps);
   float step_uv = taps > 1 ? 2.0 * radius / float(taps - 1) : 0.0;
@@ -62,21 +43,21 @@ PenumbraSample estimate_penumbra(ShadowLight sl, vec3 world, vec3 n_world, vec3 
   for (int y = 0; y < taps; ++y) {
     for (int x = 0; x < taps; ++x) {
       vec2 offset = (vec2(x, y) - 0.5 * float(taps - 1)) * step_uv;
-      vec2 tap = clamp(uv + offset, vec2(0.5 * texel), vec2(1.0 - 0.5 * texel));
-      float z = linear_face_depth(texture(atlas, vec3(tap, float(layer))).r, n, f);
-      if (z < z_receiver - tolerance) {
-        blocker_sum += z;
+      vec2 tap = clamp(c.uv + offset, vec2(0.5 * texel), vec2(1.0 - 0.5 * texel));
+      float stored = textureLod(atlas, vec3(tap, c.layer), 0.0).r;
+      if (stored < c.depth) {
+        blocker_sum += shadow_linearise(stored, n, f);
         ++blockers;
       }
     }
   }
   if (blockers > 0) {
     float z_blocker = blocker_sum / float(blockers);
-    // w_penumbra = (d_receiver - d_blocker) * w_light / d_blocker  (seed 000, eq. for PCSS)
+    // w_penumbra = (d_receiver - d_blocker) * w_light / d_blocker (seed 000, PCSS step 2)
     result.width = max((z_receiver - z_blocker) * light_size / z_blocker, 1e-4);
   }
 #ifdef HAS_COLOUR
-  result.colour = pack_colour(texture(colour_atlas, vec3(uv, float(layer))));
+  result.colour = pack_colour(textureLod(colour_atlas, vec3(c.uv, c.layer), 0.0));
 #endif
   return result;
 }

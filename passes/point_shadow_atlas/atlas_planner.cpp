@@ -62,8 +62,8 @@ const AtlasFrame& AtlasPlanner::plan(const scene::Scene& scene, const glm::mat4&
       if ((visible & (1u << face)) == 0u) {
         // Not drawn: the layer keeps whatever it held, valid only if it still matches.
         ++frame_.stats.culled;
-        if (!(state.valid && state.key == key)) state.valid = false;
-        out_face.info.z = state.valid && state.key == key ? 1u : 0u;
+        state.valid = state.valid && state.key == key;
+        out_face.info.z = state.valid ? 1u : 0u;
         continue;
       }
       out_face.info.z = 1u;

@@ -182,7 +182,10 @@ void PointShadowAtlasPass::execute(fgvk::ExecuteContext& context) {
 
   if (!frame.unshadowed.empty()) {
     std::string names;
-    for (const auto& name : frame.unshadowed) names += (names.empty() ? "" : ", ") + name;
+    for (const auto& name : frame.unshadowed) {
+      if (!names.empty()) names += ", ";
+      names += name;
+    }
     context.report.add({context.pass.name, "SHD002", fg::Severity::warning,
                         std::to_string(frame.unshadowed.size()) +
                             " shadow-casting light(s) do not fit the atlas (" +
@@ -214,7 +217,9 @@ void PointShadowAtlasPass::upload(fgvk::ExecuteContext& context, const AtlasFram
                                   SlotBuffers& slot) {
   const std::size_t bytes = shadow_data_bytes(settings_.layers);
   if (!slot.staging) {
-    const std::string suffix = "." + std::to_string(context.frame.slot);
+    // Appended, not operator+(const char*, string&&): GCC 12 warns falsely (-Wrestrict).
+    std::string suffix = ".";
+    suffix += std::to_string(context.frame.slot);
     slot.staging = gpu::Buffer::create(context.gpu, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                                        gpu::MemoryUsage::upload,
                                        context.pass.name + ".shadowData.staging" + suffix);

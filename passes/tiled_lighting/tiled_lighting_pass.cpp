@@ -155,7 +155,8 @@ void TiledLightingPass::prepare(fgvk::PrepareContext& context) {
   const std::vector<gpu::ShaderDefine> defines{
       {"SHADOW_MODE", std::to_string(static_cast<int>(mode_))},
       {"HAS_ATLAS", has_atlas_ ? "1" : "0"},
-      {"ATLAS_D16", has_atlas_ && b.required_image("atlas").format == VK_FORMAT_D16_UNORM ? "1" : "0"},
+      {"ATLAS_D16",
+       has_atlas_ && b.required_image("atlas").format == VK_FORMAT_D16_UNORM ? "1" : "0"},
       {"HAS_COLOUR", has_colour_ ? "1" : "0"},
       {"FALLBACK_PCF", pcf_fallback ? "1" : "0"},
       {"KERNEL", std::to_string(kernel_of(context.pass))},
@@ -187,16 +188,16 @@ void TiledLightingPass::execute(fgvk::ExecuteContext& context) {
       .storage_image(kHdr, hdr.view, hdr.layout);
   if (has_atlas_) {
     const auto& atlas = b.required_image("atlas");
-    descriptors.combined_image_sampler(kAtlas, atlas.view, nearest, atlas.layout)
+    descriptors.combined_image_sampler(kAtlas, atlas.array_view, nearest, atlas.layout)
         .storage_buffer(kShadowData, b.buffer("shadowData")->buffer);
   }
   if (mode_ == ShadowMode::layered) {
     const auto& shadow = b.required_image("shadow");
     descriptors.storage_buffer(kLayerTable, b.buffer("layerTable")->buffer)
-        .combined_image_sampler(kShadow, shadow.view, context.samplers.linear_clamp, shadow.layout);
+        .combined_image_sampler(kShadow, shadow.array_view, context.samplers.linear_clamp, shadow.layout);
     if (has_colour_) {
       const auto& colour = b.required_image("colour");
-      descriptors.combined_image_sampler(kColour, colour.view, nearest, colour.layout);
+      descriptors.combined_image_sampler(kColour, colour.array_view, nearest, colour.layout);
     }
   }
   descriptors.push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
