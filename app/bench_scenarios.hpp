@@ -28,6 +28,7 @@ struct Scenario {
   unsigned height = 0;
   int lights = 16;
   std::vector<ParamOverride> overrides;
+  bool shadow_cache = false;  // static shadow caching (off: every face re-rendered each frame)
 };
 
 // Every built-in scenario, in a stable order.
@@ -41,6 +42,11 @@ std::vector<Scenario> select_scenarios(const std::vector<Scenario>& all,
 // no pass (a scenario typo must not silently measure the default).
 std::vector<std::string> apply_overrides(fg::GraphDesc& graph,
                                          const std::vector<ParamOverride>& overrides);
+
+// Sizes the shadow atlas (and its colour twin and shadowData buffer) of a graph for
+// `lights` shadow-casting lights: 6 layers per light up to the device-independent
+// limit of 2046 layers, faces of 1024 texels up to 64 lights and 512 beyond.
+void fit_shadow_resources(fg::GraphDesc& graph, int lights);
 
 // The scene with its lights replaced by `count` lights in a deterministic layout that
 // covers the same area (16 keeps the scene's own lights). Ranges shrink as the count

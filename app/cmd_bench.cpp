@@ -96,6 +96,7 @@ Outcome run_scenario(RenderSession& session, const DataPaths& paths, const scene
     o.detail = "override matches no pass: " + unmatched.front();
     return o;
   }
+  fit_shadow_resources(graph.value(), scenario.lights);
   session.set_viewport({o.width, o.height});
   if (auto diagnostics = session.load_graph(graph.value()); diagnostics.has_errors()) {
     o.status = "invalid";
