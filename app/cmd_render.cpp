@@ -78,7 +78,7 @@ int run_render(const RenderOptions& options) {
   }
   const DataPaths paths = find_data_paths();
   const std::string graph_path =
-      options.graph.empty() ? (paths.graphs() / "deferred.json").string() : options.graph;
+      options.graph.empty() ? (paths.graphs() / "layered-ssss.json").string() : options.graph;
   const std::string scene_path =
       options.scene.empty() ? (paths.scenes() / "atrium.json").string() : options.scene;
   gpu::CpuTimer stage;

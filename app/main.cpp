@@ -20,7 +20,7 @@ int dispatch(int argc, char** argv) {
   RenderOptions render;
   auto* render_cmd = cli.add_subcommand("render", "Render frames and write an image");
   render_cmd->add_option("--graph", render.graph,
-                         "Frame graph JSON (default: data/graphs/deferred.json)");
+                         "Frame graph JSON (default: data/graphs/layered-ssss.json)");
   render_cmd->add_option("--scene", render.scene, "Scene JSON (default: data/scenes/atrium.json)");
   render_cmd->add_option("--size", render.size, "Viewport WxH")->capture_default_str();
   render_cmd->add_option("--frames", render.frames, "Frames to render")

@@ -6,6 +6,7 @@
 #include "layered_penumbra/layered_penumbra_pass.hpp"
 #include "light_layering/light_layering_pass.hpp"
 #include "point_shadow_atlas/point_shadow_atlas_pass.hpp"
+#include "shadow_reference/shadow_reference_pass.hpp"
 #include "tiled_lighting/tiled_lighting_pass.hpp"
 #include "tonemap/tonemap_pass.hpp"
 
@@ -28,6 +29,7 @@ void register_builtin_passes(fgvk::PassRegistry& registry) {
   registry.add(TiledLightingPass::describe_hard(), &make_pass<TiledLightingPass>);
   registry.add(TiledLightingPass::describe_pcf(), &make_pass<TiledLightingPass>);
   registry.add(TiledLightingPass::describe_pcss(), &make_pass<TiledLightingPass>);
+  registry.add(ShadowReferencePass::describe(), &make_pass<ShadowReferencePass>);
 }
 
 fgvk::PassRegistry builtin_pass_registry() {

@@ -1,0 +1,41 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// Writes the reference's outputs from the accumulator: ambient + shadowed lights, times
+// exposure (background as tiled-lighting draws it), and the penumbra light count.
+// Defines: HDR_FORMAT, HAS_PENUMBRA.
+#include "../common/frame.glsl"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+
+layout(set = 0, binding = 0) uniform Frame { FrameUniforms frame; };
+layout(set = 0, binding = 1) uniform sampler2D g_depth;
+layout(set = 0, binding = 2) uniform sampler2D g_albedo;
+layout(set = 0, binding = 3, std430) readonly buffer Accum { vec4 accum[]; };
+layout(set = 0, binding = 4, HDR_FORMAT) uniform writeonly image2D out_hdr;
+#if HAS_PENUMBRA
+layout(set = 0, binding = 5, r32f) uniform writeonly image2D out_penumbra;
+#endif
+
+layout(push_constant) uniform Params {
+  uvec2 image_size;
+  float exposure;
+  float ambient_scale;
+};
+
+void main() {
+  uvec2 pixel = gl_GlobalInvocationID.xy;
+  if (any(greaterThanEqual(pixel, image_size))) return;
+  float depth = texelFetch(g_depth, ivec2(pixel), 0).r;
+  vec4 sum = accum[pixel.y * image_size.x + pixel.x];
+  vec3 color = frame.ambient.rgb * 0.5;  // background
+  float penumbra = 0.0;
+  if (depth < 1.0) {
+    vec3 albedo = texelFetch(g_albedo, ivec2(pixel), 0).rgb;
+    color = (frame.ambient.rgb * ambient_scale * albedo + sum.rgb) * exposure;
+    penumbra = sum.a;
+  }
+  imageStore(out_hdr, ivec2(pixel), vec4(color, 1.0));
+#if HAS_PENUMBRA
+  imageStore(out_penumbra, ivec2(pixel), vec4(penumbra));
+#endif
+}

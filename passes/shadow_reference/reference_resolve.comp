@@ -1,0 +1,53 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// End of a light batch: each light's averaged visibility multiplies the same shading as
+// deferred-lighting / tiled-lighting (tiled_lighting/shading.glsl), summed into the
+// per-pixel accumulator (rgb radiance, a = lights in penumbra).
+#include "../common/frame.glsl"
+#include "../common/lights.glsl"
+#include "../tiled_lighting/shading.glsl"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+
+layout(set = 0, binding = 0) uniform Frame { FrameUniforms frame; };
+layout(set = 0, binding = 1, std430) readonly buffer Lights { GpuLight lights[]; };
+layout(set = 0, binding = 2) uniform sampler2D g_depth;
+layout(set = 0, binding = 3) uniform sampler2D g_normal;
+layout(set = 0, binding = 4) uniform sampler2D g_albedo;
+layout(set = 0, binding = 5, std430) readonly buffer Visibility { vec2 visibility[]; };
+layout(set = 0, binding = 6, std430) buffer Accum { vec4 accum[]; };
+
+layout(push_constant) uniform Params {
+  uvec2 image_size;
+  uint first_light;
+  uint light_count;
+  float specular;
+  float penumbra_low;   // visibility strictly between these two counts as penumbra
+  float penumbra_high;
+};
+
+void main() {
+  uvec2 pixel = gl_GlobalInvocationID.xy;
+  if (any(greaterThanEqual(pixel, image_size))) return;
+  float depth = texelFetch(g_depth, ivec2(pixel), 0).r;
+  if (depth >= 1.0) return;
+  vec2 uv = (vec2(pixel) + 0.5) / vec2(image_size);
+  vec4 view = frame.inv_proj * vec4(uv * 2.0 - 1.0, depth, 1.0);
+  Surface surface = make_surface(view.xyz / view.w, texelFetch(g_normal, ivec2(pixel), 0),
+                                 texelFetch(g_albedo, ivec2(pixel), 0));
+  uint pixels = image_size.x * image_size.y;
+  uint pixel_index = pixel.y * image_size.x + pixel.x;
+  vec4 sum = accum[pixel_index];
+  for (uint slot = 0u; slot < light_count; ++slot) {
+    uint light = first_light + slot;
+    if (light >= frame.counts.x) break;
+    vec3 radiance;
+    vec3 l;
+    if (!shade_light(lights[light], surface, specular, radiance, l)) continue;
+    vec2 v = visibility[slot * pixels + pixel_index];
+    float lit = v.y > 0.0 ? v.x / v.y : 1.0;
+    sum.rgb += radiance * lit;
+    if (lit > penumbra_low && lit < penumbra_high) sum.a += 1.0;
+  }
+  accum[pixel_index] = sum;
+}

@@ -1,0 +1,72 @@
+#include "shadow_reference_pass.hpp"
+
+namespace antumbra::passes {
+
+fg::PassDesc ShadowReferencePass::describe() {
+  using fg::Access;
+  using fg::Format;
+  using fg::PortDirection;
+  using fg::Stage;
+  fg::PassDesc desc;
+  desc.type = "shadow-reference";
+  desc.description =
+      "Ground truth for the quality tests: the lighting of deferred-lighting / tiled-lighting "
+      "with each point light a sphere of radius `size` whose visibility is averaged over "
+      "`samples` hard shadow-map tests from points spread over the sphere (spherical "
+      "Fibonacci set). Slow, offline, deterministic. Translucent casters are opaque, like "
+      "the baselines without a colour map.";
+  desc.ports = {
+      {.name = "depth", .access = Access::sampled, .stage = Stage::compute,
+       .formats = {Format::d32f, Format::d16, Format::d24s8}, .size_group = "screen",
+       .description = "G-buffer depth."},
+      {.name = "normal", .access = Access::sampled, .stage = Stage::compute,
+       .formats = {Format::rgba16f, Format::rgba32f}, .size_group = "screen",
+       .description = "G-buffer view-space normal and roughness."},
+      {.name = "albedo", .access = Access::sampled, .stage = Stage::compute,
+       .formats = {Format::rgba8, Format::rgba16f}, .size_group = "screen",
+       .description = "G-buffer albedo and metallic."},
+      {.name = "hdr", .direction = PortDirection::output, .access = Access::storage_write,
+       .stage = Stage::compute, .formats = {Format::rgba16f, Format::rgba32f},
+       .size_group = "screen", .description = "Linear HDR radiance with reference soft shadows."},
+      {.name = "penumbraCount", .direction = PortDirection::output,
+       .access = Access::storage_write, .stage = Stage::compute, .formats = {Format::r32f},
+       .optional = true, .size_group = "screen",
+       .description = "Per pixel, the number of lights whose visibility is strictly between "
+                      "0.02 and 0.98 (>= 1: penumbra, >= 2: overlapping penumbrae)."},
+  };
+  desc.params = {
+      {.name = "samples", .type = fg::ParamType::integer, .default_value = 256, .min = 16.0,
+       .max = 4096.0, .description = "Shadow-map samples per light (points on its sphere)."},
+      {.name = "faceSize", .type = fg::ParamType::integer, .default_value = 512, .min = 32.0,
+       .max = 4096.0, .description = "Texels per side of each sample's cube faces."},
+      {.name = "lightsPerBatch", .type = fg::ParamType::integer, .default_value = 16, .min = 1.0,
+       .max = 64.0,
+       .description = "Lights whose faces are rendered together (6 depth layers each)."},
+      {.name = "weighting", .type = fg::ParamType::enumeration, .default_value = "projected",
+       .choices = {"projected", "uniform"},
+       .description = "projected: samples weighted by the cosine towards the receiver (the "
+                      "visible fraction of a uniformly bright disk); uniform: plain average of "
+                      "the sphere samples."},
+      {.name = "nearPlane", .type = fg::ParamType::number, .default_value = 0.02, .min = 0.001,
+       .max = 1.0, .description = "Near plane of every sample's faces in metres."},
+      {.name = "normalOffset", .type = fg::ParamType::number, .default_value = 1.0, .min = 0.0,
+       .max = 8.0, .description = "Receiver offset along its normal, in face texels."},
+      {.name = "depthBias", .type = fg::ParamType::number, .default_value = 0.0, .min = 0.0,
+       .max = 0.1, .description = "Constant bias of the depth comparison (face depth units)."},
+      {.name = "rasterBias", .type = fg::ParamType::number, .default_value = 1.0, .min = 0.0,
+       .max = 1000.0, .description = "Constant raster depth bias of the face rendering."},
+      {.name = "slopeBias", .type = fg::ParamType::number, .default_value = 1.0, .min = 0.0,
+       .max = 16.0, .description = "Slope-scaled raster depth bias of the face rendering."},
+      {.name = "cullFaces", .type = fg::ParamType::boolean, .default_value = true,
+       .description = "Skip faces whose frustum misses the camera's (never changes the image)."},
+      {.name = "exposure", .type = fg::ParamType::number, .default_value = 1.0, .min = 0.0,
+       .max = 16.0, .description = "Scale applied to the shaded radiance."},
+      {.name = "ambient", .type = fg::ParamType::number, .default_value = 1.0, .min = 0.0,
+       .max = 16.0, .description = "Scale of the scene's ambient term."},
+      {.name = "specular", .type = fg::ParamType::number, .default_value = 0.25, .min = 0.0,
+       .max = 4.0, .description = "Strength of the Blinn-Phong specular lobe."},
+  };
+  return desc;
+}
+
+}  // namespace antumbra::passes

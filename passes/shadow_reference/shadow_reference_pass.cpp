@@ -1,0 +1,209 @@
+#include "shadow_reference_pass.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cstring>
+
+#include "antumbra/gpu/context.hpp"
+#include "antumbra/gpu/pipelines.hpp"
+#include "antumbra/scene/scene.hpp"
+#include "common/frame_data.hpp"
+#include "common/frame_resources.hpp"
+#include "common/pass_support.hpp"
+#include "reference_shared.hpp"
+
+namespace antumbra::passes {
+namespace {
+
+constexpr VkShaderStageFlags kComp = VK_SHADER_STAGE_COMPUTE_BIT;
+
+gpu::Buffer host_buffer(gpu::Context& gpu, const void* data, std::size_t bytes,
+                        VkBufferUsageFlags usage, const std::string& name) {
+  // Host-visible and written once per rebuild: a new buffer each time, so frames still
+  // in flight keep reading the old one until the Context retires it.
+  auto buffer = gpu::Buffer::create(gpu, std::max<std::size_t>(bytes, 16), usage,
+                                    gpu::MemoryUsage::upload, name);
+  if (bytes > 0) std::memcpy(buffer.mapped(), data, bytes);
+  return buffer;
+}
+
+}  // namespace
+
+bool ShadowReferencePass::Key::operator==(const Key& other) const {
+  return geometry_version == other.geometry_version && extent.width == other.extent.width &&
+         extent.height == other.extent.height && view_proj == other.view_proj &&
+         lights == other.lights;
+}
+
+ShadowReferencePass::ShadowReferencePass(const fg::PlanPass& pass) {
+  settings_.samples = static_cast<std::uint32_t>(param_float(pass, "samples"));
+  settings_.lights_per_batch = static_cast<std::uint32_t>(param_float(pass, "lightsPerBatch"));
+  settings_.cull_faces = param_bool(pass, "cullFaces");
+  face_size_ = static_cast<std::uint32_t>(param_float(pass, "faceSize"));
+  near_ = param_float(pass, "nearPlane");
+  normal_offset_ = param_float(pass, "normalOffset");
+  depth_bias_ = param_float(pass, "depthBias");
+  raster_bias_ = param_float(pass, "rasterBias");
+  slope_bias_ = param_float(pass, "slopeBias");
+  weighting_ = param_string(pass, "weighting") == "uniform" ? 1u : 0u;
+}
+
+void ShadowReferencePass::prepare(fgvk::PrepareContext& context) {
+  const auto& b = context.bindings;
+  const auto& hdr = b.required_image("hdr");
+  has_penumbra_ = b.image("penumbraCount") != nullptr;
+  layered_ = context.gpu.features().shader_output_layer;
+  shader_files_.clear();
+  const std::string& name = context.pass.name;
+
+  std::vector<gpu::ShaderDefine> depth_defines;
+  if (layered_) depth_defines.push_back({"LAYERED", ""});
+  auto vert = load_shader(context, "shadow_reference/reference_depth.vert", shader_files_,
+                          depth_defines);
+  depth_set_ = gpu::DescriptorSetLayoutBuilder()
+                   .storage_buffer(0, VK_SHADER_STAGE_VERTEX_BIT)
+                   .build(context.gpu, name + ".depth.set");
+  const std::array<VkDescriptorSetLayout, 1> depth_sets{depth_set_};
+  const std::array<VkPushConstantRange, 1> depth_push{
+      {{VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(reference::DepthPush)}}};
+  depth_layout_ = gpu::create_pipeline_layout(context.gpu, depth_sets, depth_push,
+                                              name + ".depth.layout");
+  depth_pipeline_ =
+      gpu::GraphicsPipelineBuilder()
+          .shader(VK_SHADER_STAGE_VERTEX_BIT, vert)
+          .vertex_binding(0, sizeof(GpuVertex))
+          .vertex_attribute(0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(GpuVertex, position))
+          .cull(VK_CULL_MODE_NONE)  // open meshes and thin panes cast from both sides
+          .depth(true, true, VK_COMPARE_OP_LESS)
+          .depth_bias(raster_bias_, slope_bias_)
+          .depth_format(reference::kFaceFormat)
+          .layout(depth_layout_)
+          .cache(context.pipeline_cache)
+          .build(context.gpu, name + ".depth");
+
+  auto compute = [&](const char* file, const gpu::DescriptorSetLayoutBuilder& builder,
+                     std::uint32_t push_bytes, const std::vector<gpu::ShaderDefine>& defines,
+                     gpu::DescriptorSetLayout& set, gpu::PipelineLayout& layout,
+                     gpu::Pipeline& pipeline) {
+    auto module = load_shader(context, std::string("shadow_reference/") + file, shader_files_,
+                              defines);
+    set = builder.build(context.gpu, name + "." + file + ".set");
+    const std::array<VkDescriptorSetLayout, 1> sets{set};
+    const std::array<VkPushConstantRange, 1> push{{{kComp, 0, push_bytes}}};
+    layout = gpu::create_pipeline_layout(context.gpu, sets, push, name + "." + file + ".layout");
+    pipeline = gpu::create_compute_pipeline(context.gpu, layout, module, name + "." + file,
+                                            context.pipeline_cache);
+  };
+  compute("reference_accumulate.comp",
+          gpu::DescriptorSetLayoutBuilder()
+              .uniform_buffer(0, kComp)
+              .storage_buffer(1, kComp)
+              .combined_image_sampler(2, kComp)
+              .combined_image_sampler(3, kComp)
+              .combined_image_sampler(4, kComp)
+              .storage_buffer(5, kComp)
+              .storage_buffer(6, kComp),
+          sizeof(reference::AccumulatePush), {}, accumulate_set_, accumulate_layout_,
+          accumulate_pipeline_);
+  compute("reference_resolve.comp",
+          gpu::DescriptorSetLayoutBuilder()
+              .uniform_buffer(0, kComp)
+              .storage_buffer(1, kComp)
+              .combined_image_sampler(2, kComp)
+              .combined_image_sampler(3, kComp)
+              .combined_image_sampler(4, kComp)
+              .storage_buffer(5, kComp)
+              .storage_buffer(6, kComp),
+          sizeof(reference::ResolvePush), {}, resolve_set_, resolve_layout_, resolve_pipeline_);
+  gpu::DescriptorSetLayoutBuilder final_builder;
+  final_builder.uniform_buffer(0, kComp)
+      .combined_image_sampler(1, kComp)
+      .combined_image_sampler(2, kComp)
+      .storage_buffer(3, kComp)
+      .storage_image(4, kComp);
+  if (has_penumbra_) final_builder.storage_image(5, kComp);
+  compute("reference_final.comp", final_builder, sizeof(reference::FinalPush),
+          {{"HDR_FORMAT", hdr.format == VK_FORMAT_R32G32B32A32_SFLOAT ? "rgba32f" : "rgba16f"},
+           {"HAS_PENUMBRA", has_penumbra_ ? "1" : "0"}},
+          final_set_, final_layout_, final_pipeline_);
+  key_.reset();  // new pipelines or bindings: accumulate again
+}
+
+ShadowReferencePass::Key ShadowReferencePass::make_key(
+    const fgvk::ExecuteContext& context) const {
+  Key key;
+  key.geometry_version = context.frame.geometry_version;
+  key.extent = context.bindings.required_image("hdr").extent;
+  const scene::Scene& scene = *context.frame.scene;
+  const VkExtent2D viewport = context.frame.viewport;
+  const float aspect = viewport.height > 0 ? static_cast<float>(viewport.width) /
+                                                 static_cast<float>(viewport.height)
+                                           : 1.0f;
+  key.view_proj = scene.camera.view_projection(aspect);
+  for (const auto& l : scene.lights) {
+    key.lights.insert(key.lights.end(),
+                      {l.position.x, l.position.y, l.position.z, l.color.r, l.color.g, l.color.b,
+                       l.intensity, l.range, l.size, l.casts_shadows ? 1.0f : 0.0f});
+  }
+  return key;
+}
+
+void ShadowReferencePass::rebuild(fgvk::ExecuteContext& context, const Key& key) {
+  const scene::Scene& scene = *context.frame.scene;
+  if (merged_version_ != context.frame.geometry_version || positions_.empty()) {
+    // The same merge GpuScene uploads, so indices address context.frame.vertices.
+    const MergedGeometry merged = merge_scene_geometry(scene);
+    positions_.clear();
+    positions_.reserve(merged.vertices.size());
+    for (const auto& v : merged.vertices) positions_.push_back(v.position);
+    indices_ = merged.indices;
+    merged_version_ = context.frame.geometry_version;
+  }
+  plan_ = reference::build_plan(scene, positions_, indices_, key.view_proj, settings_);
+  gpu::Context& gpu = context.gpu;
+  const std::string& name = context.pass.name;
+  points_ = host_buffer(gpu, plan_.points.data(), plan_.points.size() * sizeof(glm::vec4),
+                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, name + ".points");
+  index_list_ = host_buffer(gpu, plan_.indices.data(),
+                            plan_.indices.size() * sizeof(std::uint32_t),
+                            VK_BUFFER_USAGE_INDEX_BUFFER_BIT, name + ".indices");
+
+  const VkDeviceSize pixels = VkDeviceSize{key.extent.width} * key.extent.height;
+  const std::uint32_t slots =
+      std::max<std::uint32_t>(1, std::min<std::uint32_t>(
+                                     plan_.lights_per_batch,
+                                     static_cast<std::uint32_t>(scene.lights.size())));
+  const VkDeviceSize vis_bytes = pixels * slots * sizeof(glm::vec2);
+  const VkBufferUsageFlags storage =
+      VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+  if (!visibility_ || visibility_.size() < vis_bytes) {
+    visibility_ = gpu::Buffer::create(gpu, vis_bytes, storage, gpu::MemoryUsage::gpu_only,
+                                      name + ".visibility");
+  }
+  if (!accum_ || accum_.size() < pixels * sizeof(glm::vec4)) {
+    accum_ = gpu::Buffer::create(gpu, pixels * sizeof(glm::vec4), storage,
+                                 gpu::MemoryUsage::gpu_only, name + ".accum");
+  }
+  const std::uint32_t layers = slots * reference::kFacesPerLight;
+  if (!faces_ || faces_.layers() != layers || faces_.extent().width != face_size_) {
+    gpu::ImageDesc desc;
+    desc.format = reference::kFaceFormat;
+    desc.extent = {face_size_, face_size_};
+    desc.layers = layers;
+    desc.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
+    desc.name = name + ".faces";
+    faces_ = gpu::Image::create(gpu, desc);
+  }
+}
+
+void ShadowReferencePass::execute(fgvk::ExecuteContext& context) {
+  Key key = make_key(context);
+  if (!key_ || !(*key_ == key)) {
+    rebuild(context, key);
+    record_samples(context);
+    key_ = std::move(key);
+  }
+  record_final(context);
+}
+
+}  // namespace antumbra::passes

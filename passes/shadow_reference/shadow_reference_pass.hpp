@@ -1,0 +1,81 @@
+#pragma once
+// Pass type "shadow-reference": ground-truth soft shadows for the quality comparisons.
+// Each point light is a sphere of radius `size`; its visibility is averaged over
+// `samples` hard shadow tests from a deterministic set of points on that sphere, every
+// sample rendering its own cube faces. Offline speed (seconds per frame on lavapipe at
+// small sizes). Reflection in shadow_reference_desc.cpp, runtime here and in
+// shadow_reference_pass.cpp, CPU planning in reference_plan.*, shaders beside them.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "antumbra/fg/reflection.hpp"
+#include "antumbra/fgvk/pass.hpp"
+#include "antumbra/gpu/handle.hpp"
+#include "antumbra/gpu/resources.hpp"
+#include "reference_plan.hpp"
+
+namespace antumbra::passes {
+
+class ShadowReferencePass final : public fgvk::Pass {
+ public:
+  static fg::PassDesc describe();
+  explicit ShadowReferencePass(const fg::PlanPass& pass);
+
+  void prepare(fgvk::PrepareContext& context) override;
+  void execute(fgvk::ExecuteContext& context) override;
+  [[nodiscard]] std::vector<std::string> shader_files() const override { return shader_files_; }
+
+ private:
+  // Everything the accumulated result depends on besides the fixed parameters.
+  struct Key {
+    std::uint64_t geometry_version = 0;
+    VkExtent2D extent{};
+    glm::mat4 view_proj{0.0f};
+    std::vector<float> lights;
+    bool operator==(const Key& other) const;
+  };
+  Key make_key(const fgvk::ExecuteContext& context) const;
+  void rebuild(fgvk::ExecuteContext& context, const Key& key);
+  void record_samples(fgvk::ExecuteContext& context);
+  void record_batch(fgvk::ExecuteContext& context, const reference::Batch& batch);
+  void render_faces(fgvk::ExecuteContext& context, const reference::Batch& batch,
+                    std::uint32_t sample, std::size_t& run);
+  void record_final(fgvk::ExecuteContext& context);
+
+  // Parameters.
+  reference::PlanSettings settings_;
+  std::uint32_t face_size_ = 512;
+  float near_ = 0.02f;
+  float normal_offset_ = 1.0f;
+  float depth_bias_ = 0.0f;
+  float raster_bias_ = 0.0f;
+  float slope_bias_ = 0.0f;
+  std::uint32_t weighting_ = 0;
+
+  // Pipelines.
+  bool layered_ = false;
+  bool has_penumbra_ = false;
+  gpu::DescriptorSetLayout depth_set_, accumulate_set_, resolve_set_, final_set_;
+  gpu::PipelineLayout depth_layout_, accumulate_layout_, resolve_layout_, final_layout_;
+  gpu::Pipeline depth_pipeline_, accumulate_pipeline_, resolve_pipeline_, final_pipeline_;
+  std::vector<std::string> shader_files_;
+
+  // Pass-internal resources (synchronised inside the pass).
+  std::optional<Key> key_;  // what accum_ holds; empty: nothing valid yet
+  reference::ReferencePlan plan_;
+  std::uint64_t merged_version_ = 0;
+  std::vector<glm::vec3> positions_;
+  std::vector<std::uint32_t> indices_;
+  gpu::Buffer points_;      // vec4 per (light, sample)
+  gpu::Buffer index_list_;  // per-light triangle lists (uint32)
+  gpu::Buffer visibility_;  // vec2 per (slot, pixel)
+  gpu::Buffer accum_;       // vec4 per pixel
+  gpu::Image faces_;        // D32, 6 layers per batch slot
+};
+
+}  // namespace antumbra::passes

@@ -1,0 +1,225 @@
+// Command recording of the shadow-reference pass. Its internal images and buffers
+// (faces_, visibility_, accum_) are synchronised here; graph resources are not (the
+// executor placed their barriers before the pass).
+#include <algorithm>
+
+#include "antumbra/gpu/commands.hpp"
+#include "antumbra/gpu/context.hpp"
+#include "antumbra/gpu/pipelines.hpp"
+#include "common/frame_resources.hpp"
+#include "common/pass_support.hpp"
+#include "reference_shared.hpp"
+#include "shadow_reference_pass.hpp"
+
+namespace antumbra::passes {
+namespace {
+
+constexpr VkPipelineStageFlags2 kCompute = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+constexpr VkPipelineStageFlags2 kTransfer = VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT;
+constexpr VkPipelineStageFlags2 kDepthTests =
+    VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT;
+constexpr VkAccessFlags2 kStorageRW =
+    VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
+
+void dispatch_pixels(VkCommandBuffer cmd, VkExtent2D extent) {
+  vkCmdDispatch(cmd, (extent.width + reference::kGroupSize - 1) / reference::kGroupSize,
+                (extent.height + reference::kGroupSize - 1) / reference::kGroupSize, 1);
+}
+
+gpu::ImageBarrier faces_barrier(VkImage image, VkImageLayout from, VkImageLayout to) {
+  gpu::ImageBarrier b;
+  b.image = image;
+  b.old_layout = from;
+  b.new_layout = to;
+  b.range = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, VK_REMAINING_ARRAY_LAYERS};
+  return b;
+}
+
+}  // namespace
+
+void ShadowReferencePass::record_samples(fgvk::ExecuteContext& context) {
+  const VkCommandBuffer cmd = context.cmd;
+  // Earlier frames' reads and writes of the internal buffers (queue submission order
+  // puts them in this barrier's first scope) finish before they are cleared.
+  gpu::memory_barrier(cmd, kCompute | kTransfer, kStorageRW | VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                      kTransfer, VK_ACCESS_2_TRANSFER_WRITE_BIT);
+  vkCmdFillBuffer(cmd, accum_, 0, VK_WHOLE_SIZE, 0);
+  for (const auto& batch : plan_.batches) record_batch(context, batch);
+}
+
+void ShadowReferencePass::record_batch(fgvk::ExecuteContext& context,
+                                       const reference::Batch& batch) {
+  const VkCommandBuffer cmd = context.cmd;
+  const auto& b = context.bindings;
+  const auto& depth = b.required_image("depth");
+  const auto& normal = b.required_image("normal");
+  const auto& albedo = b.required_image("albedo");
+  const VkExtent2D extent = b.required_image("hdr").extent;
+  const VkSampler nearest = context.samplers.nearest_clamp;
+
+  // The previous batch's resolve has read the visibility sums before they are cleared.
+  gpu::memory_barrier(cmd, kCompute | kTransfer, kStorageRW | VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                      kTransfer, VK_ACCESS_2_TRANSFER_WRITE_BIT);
+  vkCmdFillBuffer(cmd, visibility_, 0, VK_WHOLE_SIZE, 0);
+  gpu::memory_barrier(cmd, kTransfer, VK_ACCESS_2_TRANSFER_WRITE_BIT, kCompute, kStorageRW);
+
+  std::size_t run = 0;
+  for (std::uint32_t k = 0; k < plan_.samples; ++k) {
+    // Contents of the previous sample are discarded; its sampling reads must be done.
+    auto to_attachment = faces_barrier(faces_, VK_IMAGE_LAYOUT_UNDEFINED,
+                                       VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL);
+    to_attachment.src_stage = kCompute;
+    to_attachment.dst_stage = kDepthTests;
+    to_attachment.dst_access = VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT |
+                               VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+    gpu::image_barrier(cmd, to_attachment);
+    render_faces(context, batch, k, run);
+    auto to_sampled = faces_barrier(faces_, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
+                                    VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+    to_sampled.src_stage = kDepthTests;
+    to_sampled.src_access = VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+    to_sampled.dst_stage = kCompute;
+    to_sampled.dst_access = VK_ACCESS_2_SHADER_SAMPLED_READ_BIT;
+    gpu::image_barrier(cmd, to_sampled);
+    // The previous sample's read-modify-write of the sums comes first.
+    gpu::memory_barrier(cmd, kCompute, kStorageRW, kCompute, kStorageRW);
+
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, accumulate_pipeline_);
+    gpu::PushDescriptors()
+        .uniform_buffer(0, context.frame.frame_uniforms)
+        .storage_buffer(1, context.frame.lights)
+        .combined_image_sampler(2, depth.view, nearest, depth.layout)
+        .combined_image_sampler(3, normal.view, nearest, normal.layout)
+        .combined_image_sampler(4, faces_.array_view(), nearest,
+                                VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
+        .storage_buffer(5, points_)
+        .storage_buffer(6, visibility_)
+        .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, accumulate_layout_);
+    const reference::AccumulatePush push{extent.width,         extent.height,
+                                         k,                    plan_.samples,
+                                         batch.first_light,    batch.light_count,
+                                         near_,                normal_offset_,
+                                         float(face_size_),    weighting_,
+                                         depth_bias_};
+    vkCmdPushConstants(cmd, accumulate_layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push,
+                       &push);
+    dispatch_pixels(cmd, extent);
+  }
+
+  gpu::memory_barrier(cmd, kCompute, kStorageRW, kCompute, kStorageRW);
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, resolve_pipeline_);
+  gpu::PushDescriptors()
+      .uniform_buffer(0, context.frame.frame_uniforms)
+      .storage_buffer(1, context.frame.lights)
+      .combined_image_sampler(2, depth.view, nearest, depth.layout)
+      .combined_image_sampler(3, normal.view, nearest, normal.layout)
+      .combined_image_sampler(4, albedo.view, nearest, albedo.layout)
+      .storage_buffer(5, visibility_)
+      .storage_buffer(6, accum_)
+      .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, resolve_layout_);
+  const reference::ResolvePush push{extent.width,
+                                    extent.height,
+                                    batch.first_light,
+                                    batch.light_count,
+                                    param_float(context.pass, "specular"),
+                                    reference::kPenumbraLow,
+                                    reference::kPenumbraHigh};
+  vkCmdPushConstants(cmd, resolve_layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
+  dispatch_pixels(cmd, extent);
+}
+
+void ShadowReferencePass::render_faces(fgvk::ExecuteContext& context,
+                                       const reference::Batch& batch, std::uint32_t sample,
+                                       std::size_t& run) {
+  const VkCommandBuffer cmd = context.cmd;
+  const VkExtent2D face_extent{face_size_, face_size_};
+  VkRenderingAttachmentInfo attachment{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+  attachment.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+  attachment.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+  attachment.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+  attachment.clearValue.depthStencil = {1.0f, 0};
+  VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
+  rendering.renderArea = {{0, 0}, face_extent};
+  rendering.pDepthAttachment = &attachment;
+
+  auto bind = [&]() {
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, depth_pipeline_);
+    set_viewport(cmd, face_extent);
+    gpu::PushDescriptors().storage_buffer(0, points_).push(
+        context.gpu, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, depth_layout_);
+    const VkDeviceSize offset = 0;
+    vkCmdBindVertexBuffers(cmd, 0, 1, &context.frame.vertices, &offset);
+    vkCmdBindIndexBuffer(cmd, index_list_, 0, VK_INDEX_TYPE_UINT32);
+  };
+  auto draw = [&](const reference::FaceRun& r, std::uint32_t first_face, std::uint32_t count) {
+    const std::uint32_t light = batch.first_light + r.slot;
+    const reference::DepthPush push{light * plan_.samples + sample,
+                                    r.slot * reference::kFacesPerLight, near_};
+    vkCmdPushConstants(cmd, depth_layout_, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof push, &push);
+    vkCmdDrawIndexed(cmd, plan_.index_count[light], count, plan_.index_first[light], 0,
+                     first_face);
+  };
+
+  const std::size_t begin = run;
+  while (run < batch.runs.size() && batch.runs[run].sample == sample) ++run;
+  if (layered_) {
+    // One rendering clears every layer and draws each run as instanced faces.
+    attachment.imageView = faces_.view();
+    rendering.layerCount = faces_.layers();
+    vkCmdBeginRendering(cmd, &rendering);
+    bind();
+    for (std::size_t i = begin; i < run; ++i) {
+      draw(batch.runs[i], batch.runs[i].first_face, batch.runs[i].face_count);
+    }
+    vkCmdEndRendering(cmd);
+    return;
+  }
+  // Without gl_Layer from the vertex stage: one rendering per layer (every layer is
+  // cleared, drawn ones get their face).
+  rendering.layerCount = 1;
+  for (std::uint32_t layer = 0; layer < faces_.layers(); ++layer) {
+    attachment.imageView = faces_.layer_view(layer);
+    vkCmdBeginRendering(cmd, &rendering);
+    bind();
+    const std::uint32_t slot = layer / reference::kFacesPerLight;
+    const std::uint32_t face = layer % reference::kFacesPerLight;
+    for (std::size_t i = begin; i < run; ++i) {
+      const auto& r = batch.runs[i];
+      if (r.slot == slot && face >= r.first_face && face < r.first_face + r.face_count) {
+        draw(r, face, 1);
+      }
+    }
+    vkCmdEndRendering(cmd);
+  }
+}
+
+void ShadowReferencePass::record_final(fgvk::ExecuteContext& context) {
+  const VkCommandBuffer cmd = context.cmd;
+  const auto& b = context.bindings;
+  const auto& depth = b.required_image("depth");
+  const auto& albedo = b.required_image("albedo");
+  const auto& hdr = b.required_image("hdr");
+  const VkSampler nearest = context.samplers.nearest_clamp;
+  // The accumulator was written by this frame's resolves or an earlier frame's.
+  gpu::memory_barrier(cmd, kCompute | kTransfer, kStorageRW | VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                      kCompute, VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, final_pipeline_);
+  gpu::PushDescriptors descriptors;
+  descriptors.uniform_buffer(0, context.frame.frame_uniforms)
+      .combined_image_sampler(1, depth.view, nearest, depth.layout)
+      .combined_image_sampler(2, albedo.view, nearest, albedo.layout)
+      .storage_buffer(3, accum_)
+      .storage_image(4, hdr.view, hdr.layout);
+  if (has_penumbra_) {
+    const auto& penumbra = b.required_image("penumbraCount");
+    descriptors.storage_image(5, penumbra.view, penumbra.layout);
+  }
+  descriptors.push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, final_layout_);
+  const reference::FinalPush push{hdr.extent.width, hdr.extent.height,
+                                  param_float(context.pass, "exposure"),
+                                  param_float(context.pass, "ambient")};
+  vkCmdPushConstants(cmd, final_layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
+  dispatch_pixels(cmd, hdr.extent);
+}
+
+}  // namespace antumbra::passes
