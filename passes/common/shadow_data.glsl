@@ -17,7 +17,8 @@ struct ShadowHeader {
 
 struct ShadowLight {
   vec4 position_range;  // world-space position, range (= far plane of its faces)
-  vec4 params;          // x light size (radius), y near plane, z first atlas layer or -1, w 0
+  vec4 params;          // x light size (radius), y near plane, z first atlas layer or -1,
+                        // w 1 when the light's colour layers hold translucent tints
 };
 
 struct ShadowFace {

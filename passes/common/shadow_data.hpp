@@ -19,7 +19,7 @@ static_assert(sizeof(ShadowHeader) == 16);
 
 struct ShadowLight {
   glm::vec4 position_range{0.0f};
-  glm::vec4 params{0.0f, 0.0f, -1.0f, 0.0f};  // size, near, first atlas layer (-1 none), 0
+  glm::vec4 params{0.0f, 0.0f, -1.0f, 0.0f};  // size, near, first layer (-1 none), tinted (0/1)
 };
 static_assert(sizeof(ShadowLight) == 32);
 

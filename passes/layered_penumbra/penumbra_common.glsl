@@ -57,7 +57,10 @@ PenumbraSample estimate_penumbra(ShadowLight sl, vec3 world, vec3 n_world) {
     result.width = max((z_receiver - z_blocker) * light_size / z_blocker, 1e-4);
   }
 #ifdef HAS_COLOUR
-  result.colour = pack_colour(textureLod(colour_atlas, vec3(c.uv, c.layer), 0.0));
+  // Only lights with a translucent caster in range have valid colour layers (w = 1).
+  if (sl.params.w > 0.5) {
+    result.colour = pack_colour(textureLod(colour_atlas, vec3(c.uv, c.layer), 0.0));
+  }
 #endif
   return result;
 }

@@ -18,6 +18,7 @@
 #include "antumbra/fgvk/pass.hpp"
 #include "antumbra/gpu/handle.hpp"
 #include "antumbra/gpu/resources.hpp"
+#include "antumbra/scene/scene.hpp"
 #include "atlas_planner.hpp"
 
 namespace antumbra::passes {
@@ -40,6 +41,10 @@ class PointShadowAtlasPass final : public fgvk::Pass {
     gpu::Buffer staging;  // shadowData contents, copied into the graph buffer
   };
   void upload(fgvk::ExecuteContext& context, const AtlasFrame& frame, SlotBuffers& slot);
+  // Which shadowed lights have a translucent caster within range (their colour layers
+  // are kept; the others are never cleared nor read).
+  void find_tinted_lights(const scene::Scene& scene, std::uint64_t geometry_version);
+  [[nodiscard]] bool layer_tinted(const AtlasFrame& frame, std::uint32_t layer) const;
   void draw_layered(fgvk::ExecuteContext& context, const AtlasFrame& frame, VkBuffer draws);
   void draw_per_face(fgvk::ExecuteContext& context, const AtlasFrame& frame, VkBuffer draws);
   void draw_scene(fgvk::ExecuteContext& context, VkBuffer draws, std::uint32_t first,
@@ -51,8 +56,11 @@ class PointShadowAtlasPass final : public fgvk::Pass {
   bool want_colour_ = true;
   bool want_layered_ = true;
   bool layered_ = false;
-  bool colour_map_ = false;  // `colour` bound: cleared white with the depth, always
+  bool colour_map_ = false;  // `colour` bound
   bool colour_ = false;      // ... and translucent casters tint it
+  std::vector<bool> tinted_;  // per scene light: its colour layers are valid (params.w = 1)
+  std::vector<scene::Aabb> translucent_bounds_;
+  std::uint64_t translucent_version_ = ~0ull;
   VkImage atlas_image_ = VK_NULL_HANDLE;
   VkImage colour_image_ = VK_NULL_HANDLE;
 
