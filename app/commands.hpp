@@ -49,12 +49,33 @@ struct BenchOptions {
   bool list = false;
 };
 
+struct CompareOptions {
+  std::string a;
+  std::string b;
+  std::string mask_image;       // PFM whose channel 0 selects pixels (e.g. penumbraCount)
+  std::string mask;             // all | penumbra | overlap; empty: every region available
+  std::string format = "text";  // text | json
+};
+
+struct QualityOptions {
+  std::vector<std::string> graphs;  // technique graphs compared with the reference
+  std::string reference;            // empty: data/graphs/reference.json
+  std::string scene;                // empty: data/scenes/atrium.json
+  std::string size = "160x90";
+  std::string resource = "hdr";  // the HDR resource of every graph
+  std::string device = "auto";
+  bool validation = false;
+  std::string format = "text";
+};
+
 int run_validate(const ValidateOptions& options);
 int run_bench(const BenchOptions& options);
 int run_plan(const PlanOptions& options);
 int run_schema();
 int run_render(const RenderOptions& options);
 int run_devices(const std::string& device, bool validation);
+int run_compare(const CompareOptions& options);
+int run_quality(const QualityOptions& options);
 
 // "1280x720" -> width, height; false when malformed or out of 1..16384.
 bool parse_size(const std::string& text, unsigned& width, unsigned& height);

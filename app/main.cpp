@@ -90,6 +90,36 @@ int dispatch(int argc, char** argv) {
       ->capture_default_str();
   devices_cmd->add_flag("--validation", devices_validation, "Enable validation while probing");
 
+  CompareOptions compare;
+  auto* compare_cmd = cli.add_subcommand(
+      "compare", "Quality metrics (RMSE, PSNR, SSIM) of two HDR frames (PFM)");
+  compare_cmd->add_option("a", compare.a, "Reference PFM")->required();
+  compare_cmd->add_option("b", compare.b, "PFM to compare")->required();
+  compare_cmd->add_option("--mask-image", compare.mask_image,
+                          "PFM mask (e.g. penumbraCount): penumbra >= 1, overlap >= 2");
+  compare_cmd->add_option("--mask", compare.mask, "all|penumbra|overlap (default: all available)")
+      ->check(CLI::IsMember({"all", "penumbra", "overlap"}));
+  compare_cmd->add_option("--format", compare.format, "text|json")
+      ->check(CLI::IsMember({"text", "json"}))
+      ->capture_default_str();
+
+  QualityOptions quality;
+  auto* quality_cmd = cli.add_subcommand(
+      "quality", "Render the reference and technique graphs; print their errors against it");
+  quality_cmd->add_option("--graph", quality.graphs, "Technique graph (repeatable)")->required();
+  quality_cmd->add_option("--reference", quality.reference,
+                          "Reference graph (default: data/graphs/reference.json)");
+  quality_cmd->add_option("--scene", quality.scene, "Scene JSON (default: data/scenes/atrium.json)");
+  quality_cmd->add_option("--size", quality.size, "Viewport WxH")->capture_default_str();
+  quality_cmd->add_option("--resource", quality.resource, "HDR resource of every graph")
+      ->capture_default_str();
+  quality_cmd->add_option("--device", quality.device, "auto|cpu|gpu|N|<name substring>")
+      ->capture_default_str();
+  quality_cmd->add_flag("--validation", quality.validation, "Khronos validation (slow)");
+  quality_cmd->add_option("--format", quality.format, "text|json")
+      ->check(CLI::IsMember({"text", "json"}))
+      ->capture_default_str();
+
   try {
     cli.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -111,6 +141,8 @@ int dispatch(int argc, char** argv) {
   }
   if (devices_cmd->parsed()) return run_devices(devices_device, devices_validation);
   if (bench_cmd->parsed()) return run_bench(bench);
+  if (compare_cmd->parsed()) return run_compare(compare);
+  if (quality_cmd->parsed()) return run_quality(quality);
   return run_schema();
 }
 

@@ -58,16 +58,16 @@ void ShadowReferencePass::prepare(fgvk::PrepareContext& context) {
 
   std::vector<gpu::ShaderDefine> depth_defines;
   if (layered_) depth_defines.push_back({"LAYERED", ""});
-  auto vert = load_shader(context, "shadow_reference/reference_depth.vert", shader_files_,
-                          depth_defines);
+  auto vert =
+      load_shader(context, "shadow_reference/reference_depth.vert", shader_files_, depth_defines);
   depth_set_ = gpu::DescriptorSetLayoutBuilder()
                    .storage_buffer(0, VK_SHADER_STAGE_VERTEX_BIT)
                    .build(context.gpu, name + ".depth.set");
   const std::array<VkDescriptorSetLayout, 1> depth_sets{depth_set_};
   const std::array<VkPushConstantRange, 1> depth_push{
       {{VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(reference::DepthPush)}}};
-  depth_layout_ = gpu::create_pipeline_layout(context.gpu, depth_sets, depth_push,
-                                              name + ".depth.layout");
+  depth_layout_ =
+      gpu::create_pipeline_layout(context.gpu, depth_sets, depth_push, name + ".depth.layout");
   depth_pipeline_ =
       gpu::GraphicsPipelineBuilder()
           .shader(VK_SHADER_STAGE_VERTEX_BIT, vert)
@@ -85,8 +85,8 @@ void ShadowReferencePass::prepare(fgvk::PrepareContext& context) {
                      std::uint32_t push_bytes, const std::vector<gpu::ShaderDefine>& defines,
                      gpu::DescriptorSetLayout& set, gpu::PipelineLayout& layout,
                      gpu::Pipeline& pipeline) {
-    auto module = load_shader(context, std::string("shadow_reference/") + file, shader_files_,
-                              defines);
+    auto module =
+        load_shader(context, std::string("shadow_reference/") + file, shader_files_, defines);
     set = builder.build(context.gpu, name + "." + file + ".set");
     const std::array<VkDescriptorSetLayout, 1> sets{set};
     const std::array<VkPushConstantRange, 1> push{{{kComp, 0, push_bytes}}};
@@ -129,16 +129,15 @@ void ShadowReferencePass::prepare(fgvk::PrepareContext& context) {
   key_.reset();  // new pipelines or bindings: accumulate again
 }
 
-ShadowReferencePass::Key ShadowReferencePass::make_key(
-    const fgvk::ExecuteContext& context) const {
+ShadowReferencePass::Key ShadowReferencePass::make_key(const fgvk::ExecuteContext& context) const {
   Key key;
   key.geometry_version = context.frame.geometry_version;
   key.extent = context.bindings.required_image("hdr").extent;
   const scene::Scene& scene = *context.frame.scene;
   const VkExtent2D viewport = context.frame.viewport;
-  const float aspect = viewport.height > 0 ? static_cast<float>(viewport.width) /
-                                                 static_cast<float>(viewport.height)
-                                           : 1.0f;
+  const float aspect =
+      viewport.height > 0 ? static_cast<float>(viewport.width) / static_cast<float>(viewport.height)
+                          : 1.0f;
   key.view_proj = scene.camera.view_projection(aspect);
   for (const auto& l : scene.lights) {
     key.lights.insert(key.lights.end(),
@@ -164,15 +163,13 @@ void ShadowReferencePass::rebuild(fgvk::ExecuteContext& context, const Key& key)
   const std::string& name = context.pass.name;
   points_ = host_buffer(gpu, plan_.points.data(), plan_.points.size() * sizeof(glm::vec4),
                         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, name + ".points");
-  index_list_ = host_buffer(gpu, plan_.indices.data(),
-                            plan_.indices.size() * sizeof(std::uint32_t),
+  index_list_ = host_buffer(gpu, plan_.indices.data(), plan_.indices.size() * sizeof(std::uint32_t),
                             VK_BUFFER_USAGE_INDEX_BUFFER_BIT, name + ".indices");
 
   const VkDeviceSize pixels = VkDeviceSize{key.extent.width} * key.extent.height;
-  const std::uint32_t slots =
-      std::max<std::uint32_t>(1, std::min<std::uint32_t>(
-                                     plan_.lights_per_batch,
-                                     static_cast<std::uint32_t>(scene.lights.size())));
+  const std::uint32_t slots = std::max<std::uint32_t>(
+      1, std::min<std::uint32_t>(plan_.lights_per_batch,
+                                 static_cast<std::uint32_t>(scene.lights.size())));
   const VkDeviceSize vis_bytes = pixels * slots * sizeof(glm::vec2);
   const VkBufferUsageFlags storage =
       VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;

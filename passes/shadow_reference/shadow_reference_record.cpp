@@ -66,8 +66,8 @@ void ShadowReferencePass::record_batch(fgvk::ExecuteContext& context,
   std::size_t run = 0;
   for (std::uint32_t k = 0; k < plan_.samples; ++k) {
     // Contents of the previous sample are discarded; its sampling reads must be done.
-    auto to_attachment = faces_barrier(faces_, VK_IMAGE_LAYOUT_UNDEFINED,
-                                       VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL);
+    auto to_attachment =
+        faces_barrier(faces_, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL);
     to_attachment.src_stage = kCompute;
     to_attachment.dst_stage = kDepthTests;
     to_attachment.dst_access = VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT |
@@ -95,14 +95,11 @@ void ShadowReferencePass::record_batch(fgvk::ExecuteContext& context,
         .storage_buffer(5, points_)
         .storage_buffer(6, visibility_)
         .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, accumulate_layout_);
-    const reference::AccumulatePush push{extent.width,         extent.height,
-                                         k,                    plan_.samples,
-                                         batch.first_light,    batch.light_count,
-                                         near_,                normal_offset_,
-                                         float(face_size_),    weighting_,
-                                         depth_bias_};
-    vkCmdPushConstants(cmd, accumulate_layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push,
-                       &push);
+    const reference::AccumulatePush push{extent.width,  extent.height,     k,
+                                         plan_.samples, batch.first_light, batch.light_count,
+                                         near_,         normal_offset_,    float(face_size_),
+                                         weighting_,    depth_bias_};
+    vkCmdPushConstants(cmd, accumulate_layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
     dispatch_pixels(cmd, extent);
   }
 
@@ -128,9 +125,8 @@ void ShadowReferencePass::record_batch(fgvk::ExecuteContext& context,
   dispatch_pixels(cmd, extent);
 }
 
-void ShadowReferencePass::render_faces(fgvk::ExecuteContext& context,
-                                       const reference::Batch& batch, std::uint32_t sample,
-                                       std::size_t& run) {
+void ShadowReferencePass::render_faces(fgvk::ExecuteContext& context, const reference::Batch& batch,
+                                       std::uint32_t sample, std::size_t& run) {
   const VkCommandBuffer cmd = context.cmd;
   const VkExtent2D face_extent{face_size_, face_size_};
   VkRenderingAttachmentInfo attachment{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
@@ -145,8 +141,9 @@ void ShadowReferencePass::render_faces(fgvk::ExecuteContext& context,
   auto bind = [&]() {
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, depth_pipeline_);
     set_viewport(cmd, face_extent);
-    gpu::PushDescriptors().storage_buffer(0, points_).push(
-        context.gpu, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, depth_layout_);
+    gpu::PushDescriptors()
+        .storage_buffer(0, points_)
+        .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, depth_layout_);
     const VkDeviceSize offset = 0;
     vkCmdBindVertexBuffers(cmd, 0, 1, &context.frame.vertices, &offset);
     vkCmdBindIndexBuffer(cmd, index_list_, 0, VK_INDEX_TYPE_UINT32);
@@ -156,8 +153,7 @@ void ShadowReferencePass::render_faces(fgvk::ExecuteContext& context,
     const reference::DepthPush push{light * plan_.samples + sample,
                                     r.slot * reference::kFacesPerLight, near_};
     vkCmdPushConstants(cmd, depth_layout_, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof push, &push);
-    vkCmdDrawIndexed(cmd, plan_.index_count[light], count, plan_.index_first[light], 0,
-                     first_face);
+    vkCmdDrawIndexed(cmd, plan_.index_count[light], count, plan_.index_first[light], 0, first_face);
   };
 
   const std::size_t begin = run;

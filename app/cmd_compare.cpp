@@ -1,0 +1,271 @@
+// antumbra compare: image-quality metrics of two HDR frames (PFM), optionally over
+// penumbra / overlap masks. antumbra quality: renders the reference and one or more
+// technique graphs in one session and prints the same metrics for each.
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include <nlohmann/json.hpp>
+
+#include "antumbra/fg/graph_desc.hpp"
+#include "antumbra/fg/json_document.hpp"
+#include "antumbra/gpu/image_io.hpp"
+#include "antumbra/gpu/timing.hpp"
+#include "antumbra/scene/scene_file.hpp"
+#include "commands.hpp"
+#include "image_metrics.hpp"
+#include "render_session.hpp"
+
+namespace antumbra::app {
+namespace {
+
+nlohmann::json number_or_null(double value) {
+  return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr);
+}
+
+nlohmann::json metrics_json(const std::vector<Comparison>& comparisons) {
+  nlohmann::json regions = nlohmann::json::object();
+  for (const auto& c : comparisons) {
+    regions[std::string(to_string(c.region))] = {{"pixels", c.metrics.pixels},
+                                                 {"rmse", number_or_null(c.metrics.rmse)},
+                                                 {"psnr", number_or_null(c.metrics.psnr)},
+                                                 {"ssim", number_or_null(c.metrics.ssim)}};
+  }
+  return regions;
+}
+
+void print_row(const std::string& label, const Comparison& c) {
+  if (c.metrics.pixels == 0) {
+    std::printf("%-24s %-9s %8zu %10s %9s %8s\n", label.c_str(),
+                std::string(to_string(c.region)).c_str(), c.metrics.pixels, "-", "-", "-");
+    return;
+  }
+  std::printf("%-24s %-9s %8zu %10.6f %9.3f %8.5f\n", label.c_str(),
+              std::string(to_string(c.region)).c_str(), c.metrics.pixels, c.metrics.rmse,
+              c.metrics.psnr, c.metrics.ssim);
+}
+
+void print_header() {
+  std::printf("%-24s %-9s %8s %10s %9s %8s\n", "image", "region", "pixels", "rmse", "psnr dB",
+              "ssim");
+}
+
+const char* kMetricNote =
+    "metrics on Rec.709 luminance clamped to [0,1]; PSNR peak 1.0 (capped at 100 dB); SSIM "
+    "11x11 Gaussian (sigma 1.5), C1=0.01^2, C2=0.03^2";
+
+// Regions to report: the one asked for, else all those the inputs allow.
+std::optional<std::vector<MaskRegion>> regions_for(const std::string& mask, bool has_mask_image) {
+  if (mask.empty()) {
+    if (!has_mask_image) return std::vector<MaskRegion>{MaskRegion::all};
+    return std::vector<MaskRegion>{MaskRegion::all, MaskRegion::penumbra, MaskRegion::overlap};
+  }
+  const auto region = parse_mask_region(mask);
+  if (!region || (*region != MaskRegion::all && !has_mask_image)) return std::nullopt;
+  return std::vector<MaskRegion>{*region};
+}
+
+FloatImage to_float_image(const gpu::HostImage& host) {
+  FloatImage image{host.width, host.height, host.channels == 1 ? 1u : 3u, {}};
+  image.texels.reserve(std::size_t{host.width} * host.height * image.channels);
+  for (std::uint32_t y = 0; y < host.height; ++y) {
+    for (std::uint32_t x = 0; x < host.width; ++x) {
+      for (std::uint32_t c = 0; c < image.channels; ++c) image.texels.push_back(host.at(x, y, c));
+    }
+  }
+  return image;
+}
+
+}  // namespace
+
+int run_compare(const CompareOptions& options) {
+  const auto regions = regions_for(options.mask, !options.mask_image.empty());
+  if (!regions) {
+    std::fprintf(stderr,
+                 "antumbra compare: --mask %s needs --mask-image (penumbra/overlap pick pixels "
+                 "by its values)\n",
+                 options.mask.c_str());
+    return kExitUsage;
+  }
+  std::string error;
+  const auto a = read_pfm(options.a, error);
+  if (!a) {
+    std::fprintf(stderr, "antumbra compare: error: %s\n", error.c_str());
+    return kExitDiagnostics;
+  }
+  const auto b = read_pfm(options.b, error);
+  if (!b) {
+    std::fprintf(stderr, "antumbra compare: error: %s\n", error.c_str());
+    return kExitDiagnostics;
+  }
+  std::optional<FloatImage> mask;
+  if (!options.mask_image.empty()) {
+    mask = read_pfm(options.mask_image, error);
+    if (!mask) {
+      std::fprintf(stderr, "antumbra compare: error: %s\n", error.c_str());
+      return kExitDiagnostics;
+    }
+  }
+  std::vector<Comparison> comparisons;
+  try {
+    comparisons = compare_images(*a, *b, mask ? &*mask : nullptr, *regions);
+  } catch (const std::invalid_argument& e) {
+    std::fprintf(stderr, "antumbra compare: error: %s (%s, %s)\n", e.what(), options.a.c_str(),
+                 options.b.c_str());
+    return kExitDiagnostics;
+  }
+  if (options.format == "json") {
+    const nlohmann::json report{{"a", options.a},
+                                {"b", options.b},
+                                {"mask", options.mask_image},
+                                {"width", a->width},
+                                {"height", a->height},
+                                {"signal", kMetricNote},
+                                {"regions", metrics_json(comparisons)}};
+    std::printf("%s\n", report.dump(2).c_str());
+    return kExitOk;
+  }
+  print_header();
+  for (const auto& c : comparisons) print_row(std::filesystem::path(options.b).filename(), c);
+  std::printf("(%s)\n", kMetricNote);
+  return kExitOk;
+}
+
+namespace {
+
+// Parses a graph and makes `resource` its output (kept alive, never aliased); the
+// extra resources named in `keep` are marked persistent so they stay readable too.
+std::optional<fg::GraphDesc> load_for_quality(const std::string& path, const std::string& resource,
+                                              const std::vector<std::string>& keep) {
+  auto document = fg::load_json_file(path);
+  if (!document.ok()) {
+    for (const auto& d : document.diagnostics())
+      std::fprintf(stderr, "%s\n", fg::format_text(d).c_str());
+    return std::nullopt;
+  }
+  auto graph = fg::parse_graph(document.value());
+  if (!graph.ok()) {
+    for (const auto& d : graph.diagnostics())
+      std::fprintf(stderr, "%s\n", fg::format_text(d).c_str());
+    return std::nullopt;
+  }
+  if (graph->find_resource(resource) < 0) {
+    std::fprintf(stderr, "antumbra quality: %s has no resource \"%s\"\n", path.c_str(),
+                 resource.c_str());
+    return std::nullopt;
+  }
+  graph->output = resource;
+  for (const auto& name : keep) {
+    const int index = graph->find_resource(name);
+    if (index >= 0) graph->resources[static_cast<std::size_t>(index)].persistent = true;
+  }
+  return std::move(graph.value());
+}
+
+}  // namespace
+
+int run_quality(const QualityOptions& options) {
+  unsigned width = 0;
+  unsigned height = 0;
+  if (!parse_size(options.size, width, height)) {
+    std::fprintf(stderr, "antumbra quality: --size must be WxH with 1..16384, got \"%s\"\n",
+                 options.size.c_str());
+    return kExitUsage;
+  }
+  const DataPaths paths = find_data_paths();
+  const std::string reference_path =
+      options.reference.empty() ? (paths.graphs() / "reference.json").string() : options.reference;
+  const std::string scene_path =
+      options.scene.empty() ? (paths.scenes() / "atrium.json").string() : options.scene;
+  auto reference = load_for_quality(reference_path, options.resource, {"penumbraCount"});
+  if (!reference) return kExitDiagnostics;
+  std::vector<fg::GraphDesc> graphs;
+  for (const auto& path : options.graphs) {
+    auto graph = load_for_quality(path, options.resource, {});
+    if (!graph) return kExitDiagnostics;
+    graphs.push_back(std::move(*graph));
+  }
+  auto scene = scene::load_scene_file(scene_path);
+  for (const auto& d : scene.diagnostics())
+    std::fprintf(stderr, "%s\n", fg::format_text(d).c_str());
+  if (!scene.ok()) return kExitDiagnostics;
+
+  SessionOptions session_options;
+  session_options.device = options.device;
+  session_options.validation = options.validation;
+  session_options.viewport = {width, height};
+  RenderSession session(paths, session_options);
+  session.set_scene(std::move(scene.value()));
+
+  auto render = [&](const fg::GraphDesc& graph, const std::string& path,
+                    double& ms) -> std::optional<FloatImage> {
+    const auto diagnostics = session.load_graph(graph);
+    for (const auto& d : diagnostics) {
+      if (d.severity != fg::Severity::note)
+        std::fprintf(stderr, "%s\n", fg::format_text(d).c_str());
+    }
+    if (diagnostics.has_errors()) {
+      std::fprintf(stderr, "antumbra quality: %s does not load\n", path.c_str());
+      return std::nullopt;
+    }
+    gpu::CpuTimer clock;
+    session.render(1, nullptr);
+    ms = clock.elapsed_ms();
+    const auto* image = session.executor().gpu_image(options.resource);
+    const auto* bound = session.executor().image(options.resource);
+    return to_float_image(gpu::read_image(session.gpu(), *image, bound->layout));
+  };
+
+  double reference_ms = 0.0;
+  const auto reference_hdr = render(*reference, reference_path, reference_ms);
+  if (!reference_hdr) return kExitDiagnostics;
+  std::optional<FloatImage> mask;
+  if (const auto* image = session.executor().gpu_image("penumbraCount"); image != nullptr) {
+    mask = to_float_image(
+        gpu::read_image(session.gpu(), *image, session.executor().image("penumbraCount")->layout));
+  }
+  const auto regions = regions_for("", mask.has_value()).value();
+
+  const bool json = options.format == "json";
+  nlohmann::json results = nlohmann::json::array();
+  if (!json) {
+    std::printf("device: %s; reference %s rendered in %.0f ms at %ux%u\n",
+                session.gpu().device_name().c_str(), reference_path.c_str(), reference_ms, width,
+                height);
+    print_header();
+  }
+  for (std::size_t i = 0; i < graphs.size(); ++i) {
+    double ms = 0.0;
+    const auto hdr = render(graphs[i], options.graphs[i], ms);
+    if (!hdr) return kExitDiagnostics;
+    const auto comparisons = compare_images(*reference_hdr, *hdr, mask ? &*mask : nullptr, regions);
+    const std::string label = std::filesystem::path(options.graphs[i]).stem().string();
+    if (json) {
+      results.push_back(
+          {{"graph", options.graphs[i]}, {"renderMs", ms}, {"regions", metrics_json(comparisons)}});
+    } else {
+      for (const auto& c : comparisons) print_row(label, c);
+    }
+  }
+  if (json) {
+    const nlohmann::json report{{"device", session.gpu().device_name()},
+                                {"reference", reference_path},
+                                {"referenceMs", reference_ms},
+                                {"scene", scene_path},
+                                {"width", width},
+                                {"height", height},
+                                {"signal", kMetricNote},
+                                {"graphs", results}};
+    std::printf("%s\n", report.dump(2).c_str());
+  } else {
+    std::printf("(%s)\n", kMetricNote);
+  }
+  if (options.validation && session.gpu().validation_error_count() > 0) {
+    std::fprintf(stderr, "antumbra quality: %zu validation error(s)\n",
+                 session.gpu().validation_error_count());
+    return kExitRuntime;
+  }
+  return kExitOk;
+}
+
+}  // namespace antumbra::app
