@@ -18,10 +18,6 @@ layout(set = 0, binding = 9) uniform sampler2DArray shadow_layers;
 #if HAS_COLOUR
 layout(set = 0, binding = 10) uniform usampler2DArray colour_layers;
 #endif
-#if HAS_HARD
-layout(set = 0, binding = 11) uniform usampler2D hard_bits;
-layout(set = 0, binding = 12) uniform sampler2DArray penumbra_layers;
-#endif
 
 vec4 g_shadow[MAX_SHADOW_TEXELS];
 #if HAS_COLOUR
@@ -29,35 +25,13 @@ uvec4 g_colour[MAX_SHADOW_TEXELS];
 #endif
 int g_shadow_texels = 0;
 
-void layered_fetch(ivec2 pixel, float view_depth) {
+void layered_fetch(ivec2 pixel) {
   g_shadow_texels = min(textureSize(shadow_layers, 0).z, MAX_SHADOW_TEXELS);
   // The buffer may be at a lower resolution (half-res blur): bilinear at the pixel centre.
   vec2 uv = (vec2(pixel) + 0.5) / vec2(image_size);
   for (int i = 0; i < g_shadow_texels; ++i) {
     g_shadow[i] = textureLod(shadow_layers, vec3(uv, float(i)), 0.0);
   }
-#if HAS_HARD
-  // Where a layer's penumbra is narrower than about a pixel, the blur has nothing to
-  // soften and the upsampled half-resolution result would only smear the edge: use the
-  // full-resolution hard shadow, supersampled with a 4-tap (2x2) gather, instead.
-  ivec2 last = ivec2(image_size) - 1;
-  uint taps[4] = uint[4](texelFetch(hard_bits, pixel, 0).r,
-                         texelFetch(hard_bits, min(pixel + ivec2(1, 0), last), 0).r,
-                         texelFetch(hard_bits, min(pixel + ivec2(0, 1), last), 0).r,
-                         texelFetch(hard_bits, min(pixel + ivec2(1, 1), last), 0).r);
-  float focal = frame.projection.y * 0.5 * float(image_size.y);
-  for (int i = 0; i < g_shadow_texels; ++i) {
-    vec4 radius_px = textureLod(penumbra_layers, vec3(uv, float(i)), 0.0) * focal /
-                     max(view_depth, 1e-3);
-    for (int c = 0; c < 4; ++c) {
-      if (radius_px[c] >= 1.0) continue;
-      uint bit = uint(i * 4 + c);
-      float lit = 0.0;
-      for (int t = 0; t < 4; ++t) lit += ((taps[t] >> bit) & 1u) == 0u ? 0.25 : 0.0;
-      g_shadow[i][c] = lit;
-    }
-  }
-#endif
 #if HAS_COLOUR
   ivec3 size = textureSize(colour_layers, 0);
   ivec2 texel = min(ivec2(uv * vec2(size.xy)), size.xy - 1);

@@ -133,7 +133,7 @@ void main() {
     p_world = (frame.inv_view * vec4(p, 1.0)).xyz;
     n_world = normalize(mat3(frame.inv_view) * surface.n);
 #if SHADOW_MODE == 4
-    layered_fetch(pixel, -p.z);
+    layered_fetch(pixel);
 #endif
   }
 

@@ -153,24 +153,6 @@ fg::PassDesc TiledLightingPass::describe() {
                         .description =
                             "Layered shadow colour of translucent occluders, rgba8 packed "
                             "r<<24|g<<16|b<<8|a per channel like `shadow`; shadows = layered."});
-  desc.ports.push_back(
-      {.name = "hardShadow",
-       .access = Access::sampled,
-       .stage = Stage::compute,
-       .formats = {Format::r32ui},
-       .optional = true,
-       .description = "Full-resolution hard-shadow bits (layered-penumbra): where a layer's "
-                      "penumbra spans under a pixel, a 2x2 gather of these replaces the "
-                      "upsampled blur, keeping contact edges crisp; shadows = layered."});
-  desc.ports.push_back(
-      {.name = "penumbra",
-       .access = Access::sampled,
-       .stage = Stage::compute,
-       .formats = {Format::rgba16f},
-       .min_layers = 1,
-       .max_layers = 8,
-       .optional = true,
-       .description = "Penumbra widths (layered-penumbra), needed with hardShadow."});
   desc.params = lighting_params();
   desc.params.push_back(
       {.name = "shadows",

@@ -38,8 +38,6 @@ enum Binding : std::uint32_t {
   kLayerTable = 8,
   kShadow = 9,
   kColour = 10,
-  kHard = 11,
-  kPenumbra = 12,
 };
 
 [[noreturn]] void fail(const fgvk::PrepareContext& context, const char* code,
@@ -117,7 +115,6 @@ void TiledLightingPass::prepare(fgvk::PrepareContext& context) {
              std::to_string(shadow_data_bytes(atlas->layers)));
   }
   has_colour_ = false;
-  has_hard_ = false;
   if (mode_ == ShadowMode::layered) {
     const auto* table = b.buffer("layerTable");
     const auto* shadow = b.image("shadow");
@@ -132,7 +129,6 @@ void TiledLightingPass::prepare(fgvk::PrepareContext& context) {
       fail(context, "TL006", "`shadow` has more than 8 array layers (32 shadow layers)");
     }
     has_colour_ = b.image("colour") != nullptr;
-    has_hard_ = b.image("hardShadow") != nullptr && b.image("penumbra") != nullptr;
   }
 
   constexpr VkShaderStageFlags kComp = VK_SHADER_STAGE_COMPUTE_BIT;
@@ -147,7 +143,6 @@ void TiledLightingPass::prepare(fgvk::PrepareContext& context) {
   if (mode_ == ShadowMode::layered) {
     builder.storage_buffer(kLayerTable, kComp).combined_image_sampler(kShadow, kComp);
     if (has_colour_) builder.combined_image_sampler(kColour, kComp);
-    if (has_hard_) builder.combined_image_sampler(kHard, kComp).combined_image_sampler(kPenumbra, kComp);
   }
   set_layout_ = builder.build(context.gpu, context.pass.name + ".set");
   const std::array<VkDescriptorSetLayout, 1> sets{set_layout_};
@@ -163,7 +158,6 @@ void TiledLightingPass::prepare(fgvk::PrepareContext& context) {
       {"ATLAS_D16",
        has_atlas_ && b.required_image("atlas").format == VK_FORMAT_D16_UNORM ? "1" : "0"},
       {"HAS_COLOUR", has_colour_ ? "1" : "0"},
-      {"HAS_HARD", has_hard_ ? "1" : "0"},
       {"FALLBACK_PCF", pcf_fallback ? "1" : "0"},
       {"KERNEL", std::to_string(kernel_of(context.pass))},
       {"BLOCKER_SEARCH", std::to_string(blocker > 0 ? blocker : 5)},
@@ -204,13 +198,6 @@ void TiledLightingPass::execute(fgvk::ExecuteContext& context) {
     if (has_colour_) {
       const auto& colour = b.required_image("colour");
       descriptors.combined_image_sampler(kColour, colour.array_view, nearest, colour.layout);
-    }
-    if (has_hard_) {
-      const auto& hard = b.required_image("hardShadow");
-      const auto& penumbra = b.required_image("penumbra");
-      descriptors.combined_image_sampler(kHard, hard.view, nearest, hard.layout)
-          .combined_image_sampler(kPenumbra, penumbra.array_view, context.samplers.linear_clamp,
-                                  penumbra.layout);
     }
   }
   descriptors.push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);

@@ -47,7 +47,6 @@ class TiledLightingPass final : public fgvk::Pass {
   ShadowMode mode_;
   bool has_atlas_ = false;
   bool has_colour_ = false;
-  bool has_hard_ = false;  // hardShadow + penumbra bound: crisp refinement
   gpu::DescriptorSetLayout set_layout_;
   gpu::PipelineLayout layout_;
   gpu::Pipeline pipeline_;
