@@ -110,7 +110,8 @@ void fit_shadow_resources(fg::GraphDesc& graph, int lights) {
   const int layers = std::clamp(6 * lights, 6, kMaxLayers);
   const std::uint32_t face = lights <= 64 ? 1024u : 512u;
   for (auto& r : graph.resources) {
-    if (r.kind == fg::ResourceKind::image && r.layers >= 6 && (r.name == "atlas" || r.name == "shadowColour")) {
+    if (r.kind == fg::ResourceKind::image && r.layers >= 6 &&
+        (r.name == "atlas" || r.name == "shadowColour")) {
       r.layers = static_cast<std::uint32_t>(layers);
       r.size.relative = false;
       r.size.width = face;

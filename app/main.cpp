@@ -91,8 +91,8 @@ int dispatch(int argc, char** argv) {
   devices_cmd->add_flag("--validation", devices_validation, "Enable validation while probing");
 
   CompareOptions compare;
-  auto* compare_cmd = cli.add_subcommand(
-      "compare", "Quality metrics (RMSE, PSNR, SSIM) of two HDR frames (PFM)");
+  auto* compare_cmd =
+      cli.add_subcommand("compare", "Quality metrics (RMSE, PSNR, SSIM) of two HDR frames (PFM)");
   compare_cmd->add_option("a", compare.a, "Reference PFM")->required();
   compare_cmd->add_option("b", compare.b, "PFM to compare")->required();
   compare_cmd->add_option("--mask-image", compare.mask_image,
@@ -109,7 +109,8 @@ int dispatch(int argc, char** argv) {
   quality_cmd->add_option("--graph", quality.graphs, "Technique graph (repeatable)")->required();
   quality_cmd->add_option("--reference", quality.reference,
                           "Reference graph (default: data/graphs/reference.json)");
-  quality_cmd->add_option("--scene", quality.scene, "Scene JSON (default: data/scenes/atrium.json)");
+  quality_cmd->add_option("--scene", quality.scene,
+                          "Scene JSON (default: data/scenes/atrium.json)");
   quality_cmd->add_option("--size", quality.size, "Viewport WxH")->capture_default_str();
   quality_cmd->add_option("--resource", quality.resource, "HDR resource of every graph")
       ->capture_default_str();

@@ -86,7 +86,8 @@ fg::Diagnostics RenderSession::load_graph(const fg::GraphDesc& graph) {
   } catch (const std::runtime_error& e) {
     // The device cannot realise this plan (memory types, a pass type with no runtime):
     // the previous plan stays live and the reason is reported like any diagnostic.
-    diagnostics.add({fg::codes::kRealiseFailed, fg::Severity::error, e.what(), graph.document.file(), "", 0, 0});
+    diagnostics.add({fg::codes::kRealiseFailed, fg::Severity::error, e.what(),
+                     graph.document.file(), "", 0, 0});
   }
   return diagnostics;
 }

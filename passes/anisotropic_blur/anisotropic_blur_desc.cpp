@@ -20,11 +20,12 @@ void check(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& 
   const int hard = bound(pass, "hardShadow");
   const int source = bound(pass, "source");
   if ((hard >= 0) == (source >= 0)) {
-    diagnostics.add(graph.document.make(
-        fg::codes::kPortUnbound, fg::Severity::error,
-        "pass '" + pass.name + "' needs exactly one of the inputs 'hardShadow' (first direction) "
-        "or 'source' (second direction)",
-        source_desc.pointer + "/in"));
+    diagnostics.add(
+        graph.document.make(fg::codes::kPortUnbound, fg::Severity::error,
+                            "pass '" + pass.name +
+                                "' needs exactly one of the inputs 'hardShadow' (first direction) "
+                                "or 'source' (second direction)",
+                            source_desc.pointer + "/in"));
   }
   const int penumbra = bound(pass, "penumbra");
   const int shadow = bound(pass, "shadow");
@@ -33,7 +34,8 @@ void check(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& 
           plan.resources[static_cast<std::size_t>(penumbra)].layers) {
     diagnostics.add(graph.document.make(
         fg::codes::kLayerStorageMismatch, fg::Severity::error,
-        "'" + plan.resources[static_cast<std::size_t>(shadow)].name + "' has fewer array layers than the penumbra image '" +
+        "'" + plan.resources[static_cast<std::size_t>(shadow)].name +
+            "' has fewer array layers than the penumbra image '" +
             plan.resources[static_cast<std::size_t>(penumbra)].name + "' it blurs",
         source_desc.pointer + "/out/shadow"));
   }
@@ -53,33 +55,73 @@ fg::PassDesc AnisotropicBlurPass::describe() {
       "layer, sized by its penumbra (run it twice: horizontal from the hard-shadow bits, then "
       "vertical from the first result).";
   desc.ports = {
-      {.name = "depth", .access = Access::sampled, .stage = Stage::compute,
-       .formats = {Format::d32f, Format::d16}, .description = "G-buffer depth (full resolution)."},
-      {.name = "normal", .access = Access::sampled, .stage = Stage::compute,
-       .formats = {Format::rgba16f, Format::rgba32f}, .description = "G-buffer view-space normal."},
-      {.name = "penumbra", .access = Access::sampled, .stage = Stage::compute,
-       .formats = {Format::rgba16f}, .min_layers = 1, .max_layers = 8,
+      {.name = "depth",
+       .access = Access::sampled,
+       .stage = Stage::compute,
+       .formats = {Format::d32f, Format::d16},
+       .description = "G-buffer depth (full resolution)."},
+      {.name = "normal",
+       .access = Access::sampled,
+       .stage = Stage::compute,
+       .formats = {Format::rgba16f, Format::rgba32f},
+       .description = "G-buffer view-space normal."},
+      {.name = "penumbra",
+       .access = Access::sampled,
+       .stage = Stage::compute,
+       .formats = {Format::rgba16f},
+       .min_layers = 1,
+       .max_layers = 8,
        .description = "Penumbra widths from layered-penumbra (same resolution as the output)."},
-      {.name = "hardShadow", .access = Access::sampled, .stage = Stage::compute,
-       .formats = {Format::r32ui}, .optional = true,
+      {.name = "hardShadow",
+       .access = Access::sampled,
+       .stage = Stage::compute,
+       .formats = {Format::r32ui},
+       .optional = true,
        .description = "Full-resolution hard-shadow bits: the first direction's input."},
-      {.name = "source", .access = Access::sampled, .stage = Stage::compute,
-       .formats = {Format::rgba16f}, .min_layers = 1, .max_layers = 8, .optional = true,
+      {.name = "source",
+       .access = Access::sampled,
+       .stage = Stage::compute,
+       .formats = {Format::rgba16f},
+       .min_layers = 1,
+       .max_layers = 8,
+       .optional = true,
        .description = "The first direction's result: the second direction's input."},
-      {.name = "shadow", .direction = PortDirection::output, .access = Access::storage_write,
-       .stage = Stage::compute, .formats = {Format::rgba16f}, .min_layers = 1, .max_layers = 8,
+      {.name = "shadow",
+       .direction = PortDirection::output,
+       .access = Access::storage_write,
+       .stage = Stage::compute,
+       .formats = {Format::rgba16f},
+       .min_layers = 1,
+       .max_layers = 8,
        .description = "Blurred visibility, 4 layers per texel."},
   };
   desc.params = {
-      {.name = "direction", .type = fg::ParamType::enumeration, .default_value = "horizontal",
-       .choices = {"horizontal", "vertical"}, .description = "Blur direction."},
-      {.name = "kernel", .type = fg::ParamType::enumeration, .default_value = "11",
-       .choices = {"5", "11", "23"}, .description = "Taps across the kernel (5 cheap, 11 default, 23 huge)."},
-      {.name = "depthThreshold", .type = fg::ParamType::number, .default_value = 0.03, .min = 0.0,
-       .max = 1.0, .description = "Relative depth difference that rejects a tap (stops bleeding across edges)."},
-      {.name = "maxRadius", .type = fg::ParamType::number, .default_value = 24.0, .min = 1.0,
-       .max = 128.0, .description = "Largest kernel radius in output pixels."},
-      {.name = "rotated", .type = fg::ParamType::boolean, .default_value = false,
+      {.name = "direction",
+       .type = fg::ParamType::enumeration,
+       .default_value = "horizontal",
+       .choices = {"horizontal", "vertical"},
+       .description = "Blur direction."},
+      {.name = "kernel",
+       .type = fg::ParamType::enumeration,
+       .default_value = "11",
+       .choices = {"5", "11", "23"},
+       .description = "Taps across the kernel (5 cheap, 11 default, 23 huge)."},
+      {.name = "depthThreshold",
+       .type = fg::ParamType::number,
+       .default_value = 0.03,
+       .min = 0.0,
+       .max = 1.0,
+       .description =
+           "Relative depth difference that rejects a tap (stops bleeding across edges)."},
+      {.name = "maxRadius",
+       .type = fg::ParamType::number,
+       .default_value = 24.0,
+       .min = 1.0,
+       .max = 128.0,
+       .description = "Largest kernel radius in output pixels."},
+      {.name = "rotated",
+       .type = fg::ParamType::boolean,
+       .default_value = false,
        .description = "Rotate the direction by 26.6 degrees (against banding on vertical walls)."},
   };
   desc.check = &check;

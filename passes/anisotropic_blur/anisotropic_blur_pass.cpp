@@ -25,26 +25,23 @@ constexpr VkShaderStageFlags kCompute = VK_SHADER_STAGE_COMPUTE_BIT;
 
 }  // namespace
 
-AnisotropicBlurPass::AnisotropicBlurPass(const fg::PlanPass& /*pass*/) {}
+AnisotropicBlurPass::AnisotropicBlurPass(const fg::PlanPass& /*pass*/) {
+}
 
 void AnisotropicBlurPass::prepare(fgvk::PrepareContext& context) {
   from_hard_bits_ = context.bindings.image("hardShadow") != nullptr;
   std::vector<gpu::ShaderDefine> defines;
   if (from_hard_bits_) defines.push_back({"FROM_HARD_BITS", "1"});
-  auto shader = load_shader(context, "anisotropic_blur/anisotropic_blur.comp", shader_files_, defines);
-  set_layout_ = gpu::DescriptorSetLayoutBuilder()
-                    .uniform_buffer(0, kCompute)
-                    .combined_image_sampler(1, kCompute)
-                    .combined_image_sampler(2, kCompute)
-                    .combined_image_sampler(3, kCompute)
-                    .combined_image_sampler(4, kCompute)
-                    .storage_image(5, kCompute)
-                    .build(context.gpu, context.pass.name + ".set");
-  const std::array<VkDescriptorSetLayout, 1> sets{set_layout_};
-  const std::array<VkPushConstantRange, 1> push{{{kCompute, 0, sizeof(PushConstants)}}};
-  layout_ = gpu::create_pipeline_layout(context.gpu, sets, push, context.pass.name + ".layout");
-  pipeline_ = gpu::create_compute_pipeline(context.gpu, layout_, shader, context.pass.name + ".pipeline",
-                                           context.pipeline_cache);
+  auto shader =
+      load_shader(context, "anisotropic_blur/anisotropic_blur.comp", shader_files_, defines);
+  gpu::DescriptorSetLayoutBuilder builder;
+  builder.uniform_buffer(0, kCompute)
+      .combined_image_sampler(1, kCompute)
+      .combined_image_sampler(2, kCompute)
+      .combined_image_sampler(3, kCompute)
+      .combined_image_sampler(4, kCompute)
+      .storage_image(5, kCompute);
+  compute_ = build_compute_pipeline(context, shader, builder, sizeof(PushConstants));
 }
 
 void AnisotropicBlurPass::execute(fgvk::ExecuteContext& context) {
@@ -57,15 +54,16 @@ void AnisotropicBlurPass::execute(fgvk::ExecuteContext& context) {
   const VkSampler nearest = context.samplers.nearest_clamp;
 
   const VkCommandBuffer cmd = context.cmd;
-  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, compute_.pipeline);
   gpu::PushDescriptors()
       .uniform_buffer(0, context.frame.frame_uniforms)
       .combined_image_sampler(1, depth.view, nearest, depth.layout)
       .combined_image_sampler(2, normal.view, nearest, normal.layout)
       .combined_image_sampler(3, penumbra.array_view, nearest, penumbra.layout)
-      .combined_image_sampler(4, from_hard_bits_ ? input.view : input.array_view, nearest, input.layout)
+      .combined_image_sampler(4, from_hard_bits_ ? input.view : input.array_view, nearest,
+                              input.layout)
       .storage_image(5, shadow.array_view, shadow.layout)
-      .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
+      .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, compute_.layout);
 
   const bool vertical = param_string(context.pass, "direction") == "vertical";
   float dx = vertical ? 0.0f : 1.0f;
@@ -86,7 +84,7 @@ void AnisotropicBlurPass::execute(fgvk::ExecuteContext& context) {
                                 shadow.layers,
                                 penumbra.layers * 4,
                                 0};
-  vkCmdPushConstants(cmd, layout_, kCompute, 0, sizeof constants, &constants);
+  vkCmdPushConstants(cmd, compute_.layout, kCompute, 0, sizeof constants, &constants);
   vkCmdDispatch(cmd, (shadow.extent.width + 7) / 8, (shadow.extent.height + 7) / 8, 1);
 }
 

@@ -9,6 +9,7 @@
 #include "antumbra/fg/reflection.hpp"
 #include "antumbra/fgvk/pass.hpp"
 #include "antumbra/gpu/handle.hpp"
+#include "common/pass_support.hpp"
 
 namespace antumbra::passes {
 
@@ -23,9 +24,7 @@ class AnisotropicBlurPass final : public fgvk::Pass {
 
  private:
   bool from_hard_bits_ = true;
-  gpu::DescriptorSetLayout set_layout_;
-  gpu::PipelineLayout layout_;
-  gpu::Pipeline pipeline_;
+  ComputePipeline compute_;
   std::vector<std::string> shader_files_;
 };
 

@@ -32,7 +32,8 @@ std::vector<GpuMaterial> build_materials(const scene::Scene& scene) {
                          glm::vec4(m.roughness, m.metallic, m.translucent ? 1.0f : 0.0f, 0.0f),
                          m.transmittance});
   }
-  if (materials.empty()) materials.push_back({glm::vec4(0.8f), glm::vec4(0.5f, 0, 0, 0), glm::vec4(1.0f)});
+  if (materials.empty())
+    materials.push_back({glm::vec4(0.8f), glm::vec4(0.5f, 0, 0, 0), glm::vec4(1.0f)});
   return materials;
 }
 

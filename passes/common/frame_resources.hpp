@@ -16,13 +16,13 @@ namespace antumbra::fgvk {
 struct FrameResources {
   VkBuffer frame_uniforms = VK_NULL_HANDLE;  // FrameUniforms (frame.glsl)
   VkDeviceSize frame_uniforms_size = 0;
-  VkBuffer lights = VK_NULL_HANDLE;          // GpuLight[] (lights.glsl)
+  VkBuffer lights = VK_NULL_HANDLE;  // GpuLight[] (lights.glsl)
   VkDeviceSize lights_size = 0;
   std::uint32_t light_count = 0;
-  VkBuffer materials = VK_NULL_HANDLE;       // GpuMaterial[] (material.glsl)
+  VkBuffer materials = VK_NULL_HANDLE;  // GpuMaterial[] (material.glsl)
   VkDeviceSize materials_size = 0;
-  VkBuffer vertices = VK_NULL_HANDLE;        // GpuVertex[] in world space
-  VkBuffer indices = VK_NULL_HANDLE;         // uint32 triangle list
+  VkBuffer vertices = VK_NULL_HANDLE;  // GpuVertex[] in world space
+  VkBuffer indices = VK_NULL_HANDLE;   // uint32 triangle list
   std::uint32_t index_count = 0;
   // Changes whenever the uploaded geometry or materials change (a new GpuScene), so
   // passes that cache results derived from them (shadow faces) know to redo them.

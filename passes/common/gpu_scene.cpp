@@ -31,21 +31,24 @@ gpu::Buffer upload_device_buffer(gpu::Context& gpu, const std::vector<T>& data,
 GpuScene::GpuScene(gpu::Context& gpu, const scene::Scene& scene, std::uint32_t frames_in_flight)
     : gpu_(gpu) {
   const auto geometry = merge_scene_geometry(scene);
-  vertices_ = upload_device_buffer(gpu, geometry.vertices, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT |
-                                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "scene.vertices");
-  indices_ = upload_device_buffer(gpu, geometry.indices, VK_BUFFER_USAGE_INDEX_BUFFER_BIT |
-                                  VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "scene.indices");
+  vertices_ = upload_device_buffer(
+      gpu, geometry.vertices,
+      VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "scene.vertices");
+  indices_ = upload_device_buffer(
+      gpu, geometry.indices, VK_BUFFER_USAGE_INDEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+      "scene.indices");
   index_count_ = static_cast<std::uint32_t>(geometry.indices.size());
   geometry_version_ = next_geometry_version.fetch_add(1);
   materials_ = upload_device_buffer(gpu, build_materials(scene), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                                     "scene.materials");
   for (std::uint32_t i = 0; i < frames_in_flight; ++i) {
     Slot slot;
-    slot.uniforms = gpu::Buffer::create(gpu, sizeof(FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
-                                        gpu::MemoryUsage::upload, "frame.uniforms." + std::to_string(i));
-    slot.lights = gpu::Buffer::create(gpu, sizeof(GpuLight) * kMaxLights,
-                                      VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, gpu::MemoryUsage::upload,
-                                      "frame.lights." + std::to_string(i));
+    slot.uniforms =
+        gpu::Buffer::create(gpu, sizeof(FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                            gpu::MemoryUsage::upload, "frame.uniforms." + std::to_string(i));
+    slot.lights =
+        gpu::Buffer::create(gpu, sizeof(GpuLight) * kMaxLights, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                            gpu::MemoryUsage::upload, "frame.lights." + std::to_string(i));
     slots_.push_back(std::move(slot));
   }
 }
@@ -61,7 +64,8 @@ fgvk::FrameResources GpuScene::update(std::uint32_t slot_index, const scene::Sce
                                              static_cast<std::uint32_t>(frame_index));
   std::memcpy(slot.uniforms.mapped(), &uniforms, sizeof uniforms);
   const auto lights = build_lights(scene, uniforms.view);
-  if (!lights.empty()) std::memcpy(slot.lights.mapped(), lights.data(), lights.size() * sizeof(GpuLight));
+  if (!lights.empty())
+    std::memcpy(slot.lights.mapped(), lights.data(), lights.size() * sizeof(GpuLight));
 
   fgvk::FrameResources frame;
   frame.frame_uniforms = slot.uniforms;

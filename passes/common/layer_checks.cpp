@@ -14,7 +14,8 @@ int bound_resource(const fg::PlanPass& pass, std::string_view port) {
 
 }  // namespace
 
-LayerCap find_layer_cap(const fg::PlanPass& pass, const fg::Plan& plan, std::string_view layer_port) {
+LayerCap find_layer_cap(const fg::PlanPass& pass, const fg::Plan& plan,
+                        std::string_view layer_port) {
   const int table = bound_resource(pass, layer_port);
   if (table < 0) return {};
   for (const auto& other : plan.passes) {

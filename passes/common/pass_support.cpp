@@ -1,6 +1,7 @@
 #include "pass_support.hpp"
 
 #include <algorithm>
+#include <array>
 #include <filesystem>
 
 #include "antumbra/gpu/context.hpp"
@@ -28,6 +29,20 @@ gpu::ShaderModule load_shader(fgvk::PrepareContext& context, std::string_view re
                                    context.pass.name + ":" + std::string(relative));
 }
 
+ComputePipeline build_compute_pipeline(fgvk::PrepareContext& context, VkShaderModule shader,
+                                       const gpu::DescriptorSetLayoutBuilder& bindings,
+                                       std::uint32_t push_constant_bytes) {
+  ComputePipeline out;
+  out.set_layout = bindings.build(context.gpu, context.pass.name + ".set");
+  const std::array<VkDescriptorSetLayout, 1> sets{out.set_layout};
+  const std::array<VkPushConstantRange, 1> push{
+      {{VK_SHADER_STAGE_COMPUTE_BIT, 0, push_constant_bytes}}};
+  out.layout = gpu::create_pipeline_layout(context.gpu, sets, push, context.pass.name + ".layout");
+  out.pipeline = gpu::create_compute_pipeline(
+      context.gpu, out.layout, shader, context.pass.name + ".pipeline", context.pipeline_cache);
+  return out;
+}
+
 float param_float(const fg::PlanPass& pass, std::string_view name) {
   const auto it = pass.params.find(name);
   return it != pass.params.end() && it->is_number() ? it->get<float>() : 0.0f;
@@ -44,8 +59,8 @@ std::string param_string(const fg::PlanPass& pass, std::string_view name) {
 }
 
 void set_viewport(VkCommandBuffer cmd, VkExtent2D extent) {
-  const VkViewport viewport{0.0f, 0.0f, static_cast<float>(extent.width),
-                            static_cast<float>(extent.height), 0.0f, 1.0f};
+  const VkViewport viewport{
+      0.0f, 0.0f, static_cast<float>(extent.width), static_cast<float>(extent.height), 0.0f, 1.0f};
   const VkRect2D scissor{{0, 0}, extent};
   vkCmdSetViewport(cmd, 0, 1, &viewport);
   vkCmdSetScissor(cmd, 0, 1, &scissor);

@@ -7,6 +7,7 @@
 
 #include "antumbra/fgvk/pass.hpp"
 #include "antumbra/gpu/handle.hpp"
+#include "antumbra/gpu/pipelines.hpp"
 #include "antumbra/gpu/shader_compiler.hpp"
 
 namespace antumbra::passes {
@@ -17,6 +18,16 @@ namespace antumbra::passes {
 gpu::ShaderModule load_shader(fgvk::PrepareContext& context, std::string_view relative,
                               std::vector<std::string>& dependencies,
                               const std::vector<gpu::ShaderDefine>& defines = {});
+
+// A compute pipeline with one push-descriptor set and a push-constant block.
+struct ComputePipeline {
+  gpu::DescriptorSetLayout set_layout;
+  gpu::PipelineLayout layout;
+  gpu::Pipeline pipeline;
+};
+ComputePipeline build_compute_pipeline(fgvk::PrepareContext& context, VkShaderModule shader,
+                                       const gpu::DescriptorSetLayoutBuilder& bindings,
+                                       std::uint32_t push_constant_bytes);
 
 // A parameter of the pass as a number (defaults are filled in by the compiler).
 float param_float(const fg::PlanPass& pass, std::string_view name);

@@ -22,14 +22,16 @@ constexpr VkShaderStageFlags kCompute = VK_SHADER_STAGE_COMPUTE_BIT;
 
 }  // namespace
 
-LayeredPenumbraPass::LayeredPenumbraPass(const fg::PlanPass& /*pass*/) {}
+LayeredPenumbraPass::LayeredPenumbraPass(const fg::PlanPass& /*pass*/) {
+}
 
 void LayeredPenumbraPass::prepare(fgvk::PrepareContext& context) {
   colour_ = context.bindings.image("colour") != nullptr &&
             context.bindings.image("translucency") != nullptr;
   std::vector<gpu::ShaderDefine> defines;
   if (colour_) defines.push_back({"HAS_COLOUR", "1"});
-  auto shader = load_shader(context, "layered_penumbra/layered_penumbra.comp", shader_files_, defines);
+  auto shader =
+      load_shader(context, "layered_penumbra/layered_penumbra.comp", shader_files_, defines);
   gpu::DescriptorSetLayoutBuilder builder;
   builder.uniform_buffer(0, kCompute)
       .storage_buffer(1, kCompute)
@@ -41,12 +43,7 @@ void LayeredPenumbraPass::prepare(fgvk::PrepareContext& context) {
       .storage_image(7, kCompute)
       .storage_image(8, kCompute);
   if (colour_) builder.combined_image_sampler(9, kCompute).storage_image(10, kCompute);
-  set_layout_ = builder.build(context.gpu, context.pass.name + ".set");
-  const std::array<VkDescriptorSetLayout, 1> sets{set_layout_};
-  const std::array<VkPushConstantRange, 1> push{{{kCompute, 0, sizeof(PushConstants)}}};
-  layout_ = gpu::create_pipeline_layout(context.gpu, sets, push, context.pass.name + ".layout");
-  pipeline_ = gpu::create_compute_pipeline(context.gpu, layout_, shader, context.pass.name + ".pipeline",
-                                           context.pipeline_cache);
+  compute_ = build_compute_pipeline(context, shader, builder, sizeof(PushConstants));
 }
 
 void LayeredPenumbraPass::execute(fgvk::ExecuteContext& context) {
@@ -75,8 +72,8 @@ void LayeredPenumbraPass::execute(fgvk::ExecuteContext& context) {
         .storage_image(10, translucency.array_view, translucency.layout);
   }
   const VkCommandBuffer cmd = context.cmd;
-  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
-  descriptors.push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, compute_.pipeline);
+  descriptors.push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, compute_.layout);
   const PushConstants constants{
       penumbra.layers * 4u,
       penumbra.extent.width < depth.extent.width ? 1u : 0u,
@@ -84,7 +81,7 @@ void LayeredPenumbraPass::execute(fgvk::ExecuteContext& context) {
       param_float(context.pass, "searchScale"),
       static_cast<std::uint32_t>(param_float(context.pass, "searchTaps")),
   };
-  vkCmdPushConstants(cmd, layout_, kCompute, 0, sizeof constants, &constants);
+  vkCmdPushConstants(cmd, compute_.layout, kCompute, 0, sizeof constants, &constants);
   vkCmdDispatch(cmd, (depth.extent.width + 15) / 16, (depth.extent.height + 15) / 16, 1);
 }
 

@@ -8,6 +8,7 @@
 #include "antumbra/fg/reflection.hpp"
 #include "antumbra/fgvk/pass.hpp"
 #include "antumbra/gpu/handle.hpp"
+#include "common/pass_support.hpp"
 
 namespace antumbra::passes {
 
@@ -22,9 +23,7 @@ class LayeredPenumbraPass final : public fgvk::Pass {
 
  private:
   bool colour_ = false;
-  gpu::DescriptorSetLayout set_layout_;
-  gpu::PipelineLayout layout_;
-  gpu::Pipeline pipeline_;
+  ComputePipeline compute_;
   std::vector<std::string> shader_files_;
 };
 

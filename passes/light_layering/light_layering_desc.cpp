@@ -9,29 +9,50 @@ fg::PassDesc LightLayeringPass::describe() {
       "Colours the shadow-casting lights into at most maxLayers screen-space shadow layers "
       "(lights of one layer never overlap) and uploads the light -> layer table.";
   desc.ports = {
-      {.name = "layerTable", .direction = fg::PortDirection::output, .kind = fg::ResourceKind::buffer,
-       .access = fg::Access::transfer_dst, .stage = fg::Stage::transfer,
+      {.name = "layerTable",
+       .direction = fg::PortDirection::output,
+       .kind = fg::ResourceKind::buffer,
+       .access = fg::Access::transfer_dst,
+       .stage = fg::Stage::transfer,
        .description = "LayerTableHeader + one uint per scene light (layer_table.glsl)."},
   };
   desc.params = {
-      {.name = "maxLayers", .type = fg::ParamType::integer, .default_value = 4, .min = 1.0,
-       .max = 32.0, .description = "Artist cap k on the number of shadow layers."},
-      {.name = "order", .type = fg::ParamType::enumeration, .default_value = "dsatur",
+      {.name = "maxLayers",
+       .type = fg::ParamType::integer,
+       .default_value = 4,
+       .min = 1.0,
+       .max = 32.0,
+       .description = "Artist cap k on the number of shadow layers."},
+      {.name = "order",
+       .type = fg::ParamType::enumeration,
+       .default_value = "dsatur",
        .choices = {"dsatur", "smallest-last", "largest-first", "first-fit", "degree-ascending"},
        .description = "Vertex order of the greedy colouring."},
-      {.name = "criterion", .type = fg::ParamType::enumeration, .default_value = "world-sphere",
+      {.name = "criterion",
+       .type = fg::ParamType::enumeration,
+       .default_value = "world-sphere",
        .choices = {"world-sphere", "screen-tile"},
        .description = "When two lights conflict: their lit spheres intersect, or they reach a "
                       "common screen tile after dilation by the blur radius."},
-      {.name = "policy", .type = fg::ParamType::enumeration, .default_value = "least-conflict",
+      {.name = "policy",
+       .type = fg::ParamType::enumeration,
+       .default_value = "least-conflict",
        .choices = {"least-conflict", "fallback"},
        .description = "Over the cap: share the least-overlapping layer, or draw that light's "
                       "shadow with the hard/PCF path."},
-      {.name = "tileSize", .type = fg::ParamType::integer, .default_value = 16, .min = 4.0,
-       .max = 256.0, .description = "Screen tile size in pixels (screen-tile criterion)."},
-      {.name = "dilation", .type = fg::ParamType::number, .default_value = 12.0, .min = 0.0,
-       .max = 256.0, .description = "Maximum blur radius in pixels added around each light's "
-                                     "screen footprint (screen-tile criterion)."},
+      {.name = "tileSize",
+       .type = fg::ParamType::integer,
+       .default_value = 16,
+       .min = 4.0,
+       .max = 256.0,
+       .description = "Screen tile size in pixels (screen-tile criterion)."},
+      {.name = "dilation",
+       .type = fg::ParamType::number,
+       .default_value = 12.0,
+       .min = 0.0,
+       .max = 256.0,
+       .description = "Maximum blur radius in pixels added around each light's "
+                      "screen footprint (screen-tile criterion)."},
   };
   return desc;
 }

@@ -27,7 +27,8 @@ std::uint64_t light_id(const std::string& name) {
 
 LightLayeringPass::LightLayeringPass(const fg::PlanPass& pass) {
   options_.max_layers = static_cast<int>(param_float(pass, "maxLayers"));
-  options_.order = layering::parse_order(param_string(pass, "order")).value_or(layering::Order::dsatur);
+  options_.order =
+      layering::parse_order(param_string(pass, "order")).value_or(layering::Order::dsatur);
   options_.policy = layering::parse_cap_policy(param_string(pass, "policy"))
                         .value_or(layering::CapPolicy::least_conflict);
   criterion_ = layering::parse_criterion(param_string(pass, "criterion"))
@@ -41,8 +42,8 @@ void LightLayeringPass::prepare(fgvk::PrepareContext& context) {
   if (table == nullptr || table->size < kLayerTableBytes) {
     fg::Diagnostics diagnostics;
     diagnostics.add({"LY010", fg::Severity::error,
-                     "the layerTable buffer of pass '" + context.pass.name + "' must hold at least " +
-                         std::to_string(kLayerTableBytes) + " bytes (" +
+                     "the layerTable buffer of pass '" + context.pass.name +
+                         "' must hold at least " + std::to_string(kLayerTableBytes) + " bytes (" +
                          std::to_string(kMaxShadowLights) + " lights)",
                      "", "", 0, 0});
     throw fgvk::PassError("layerTable too small", diagnostics);
@@ -80,18 +81,20 @@ void LightLayeringPass::execute(fgvk::ExecuteContext& context) {
 
   // Header + table in a per-slot staging buffer, copied into the graph buffer: the
   // copy is this pass's one declared access (transfer_dst).
-  if (staging_.size() < context.frame.frames_in_flight) staging_.resize(context.frame.frames_in_flight);
+  if (staging_.size() < context.frame.frames_in_flight)
+    staging_.resize(context.frame.frames_in_flight);
   auto& staging = staging_[context.frame.slot];
   if (!staging) {
-    staging = gpu::Buffer::create(context.gpu, kLayerTableBytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-                                  gpu::MemoryUsage::upload,
-                                  context.pass.name + ".staging." + std::to_string(context.frame.slot));
+    staging = gpu::Buffer::create(
+        context.gpu, kLayerTableBytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, gpu::MemoryUsage::upload,
+        context.pass.name + ".staging." + std::to_string(context.frame.slot));
   }
   LayerTableHeader header;
-  header.counts = glm::uvec4(static_cast<std::uint32_t>(scene.lights.size()),
-                             static_cast<std::uint32_t>(assignment->layers_used),
-                             static_cast<std::uint32_t>(std::clamp(options_.max_layers, 1, layering::kMaxLayers)),
-                             static_cast<std::uint32_t>(assignment->layers_needed));
+  header.counts = glm::uvec4(
+      static_cast<std::uint32_t>(scene.lights.size()),
+      static_cast<std::uint32_t>(assignment->layers_used),
+      static_cast<std::uint32_t>(std::clamp(options_.max_layers, 1, layering::kMaxLayers)),
+      static_cast<std::uint32_t>(assignment->layers_needed));
   std::byte* out = staging.mapped();
   std::memcpy(out, &header, sizeof header);
   auto* layers = reinterpret_cast<std::uint32_t*>(out + sizeof header);

@@ -1,3 +1,4 @@
+#include "common/lighting_reflection.hpp"
 #include "shadow_reference_pass.hpp"
 
 namespace antumbra::passes {
@@ -15,32 +16,9 @@ fg::PassDesc ShadowReferencePass::describe() {
       "`samples` hard shadow-map tests from points spread over the sphere (spherical "
       "Fibonacci set). Slow, offline, deterministic. Translucent casters are opaque, like "
       "the baselines without a colour map.";
-  desc.ports = {
-      {.name = "depth",
-       .access = Access::sampled,
-       .stage = Stage::compute,
-       .formats = {Format::d32f, Format::d16, Format::d24s8},
-       .size_group = "screen",
-       .description = "G-buffer depth."},
-      {.name = "normal",
-       .access = Access::sampled,
-       .stage = Stage::compute,
-       .formats = {Format::rgba16f, Format::rgba32f},
-       .size_group = "screen",
-       .description = "G-buffer view-space normal and roughness."},
-      {.name = "albedo",
-       .access = Access::sampled,
-       .stage = Stage::compute,
-       .formats = {Format::rgba8, Format::rgba16f},
-       .size_group = "screen",
-       .description = "G-buffer albedo and metallic."},
-      {.name = "hdr",
-       .direction = PortDirection::output,
-       .access = Access::storage_write,
-       .stage = Stage::compute,
-       .formats = {Format::rgba16f, Format::rgba32f},
-       .size_group = "screen",
-       .description = "Linear HDR radiance with reference soft shadows."},
+  desc.ports = lighting_ports();
+  desc.ports.back().description = "Linear HDR radiance with reference soft shadows.";
+  desc.ports.push_back(
       {.name = "penumbraCount",
        .direction = PortDirection::output,
        .access = Access::storage_write,
@@ -49,8 +27,7 @@ fg::PassDesc ShadowReferencePass::describe() {
        .optional = true,
        .size_group = "screen",
        .description = "Per pixel, the number of lights whose visibility is strictly between "
-                      "0.02 and 0.98 (>= 1: penumbra, >= 2: overlapping penumbrae)."},
-  };
+                      "0.02 and 0.98 (>= 1: penumbra, >= 2: overlapping penumbrae)."});
   desc.params = {
       {.name = "samples",
        .type = fg::ParamType::integer,
@@ -111,25 +88,8 @@ fg::PassDesc ShadowReferencePass::describe() {
        .type = fg::ParamType::boolean,
        .default_value = true,
        .description = "Skip faces whose frustum misses the camera's (never changes the image)."},
-      {.name = "exposure",
-       .type = fg::ParamType::number,
-       .default_value = 1.0,
-       .min = 0.0,
-       .max = 16.0,
-       .description = "Scale applied to the shaded radiance."},
-      {.name = "ambient",
-       .type = fg::ParamType::number,
-       .default_value = 1.0,
-       .min = 0.0,
-       .max = 16.0,
-       .description = "Scale of the scene's ambient term."},
-      {.name = "specular",
-       .type = fg::ParamType::number,
-       .default_value = 0.25,
-       .min = 0.0,
-       .max = 4.0,
-       .description = "Strength of the Blinn-Phong specular lobe."},
   };
+  for (auto& p : lighting_params()) desc.params.push_back(std::move(p));
   return desc;
 }
 

@@ -1,3 +1,4 @@
+#include "common/lighting_reflection.hpp"
 #include "tiled_lighting_pass.hpp"
 
 namespace antumbra::passes {
@@ -9,37 +10,6 @@ using fg::PortDirection;
 using fg::ResourceKind;
 using fg::Stage;
 
-// Ports every variant has: the G-buffer in, HDR radiance out (storage image, so the
-// pass runs as compute).
-std::vector<fg::PortDesc> lighting_ports() {
-  return {
-      {.name = "depth",
-       .access = Access::sampled,
-       .stage = Stage::compute,
-       .formats = {Format::d32f, Format::d16, Format::d24s8},
-       .size_group = "screen",
-       .description = "G-buffer depth."},
-      {.name = "normal",
-       .access = Access::sampled,
-       .stage = Stage::compute,
-       .formats = {Format::rgba16f, Format::rgba32f},
-       .size_group = "screen",
-       .description = "G-buffer view-space normal and roughness."},
-      {.name = "albedo",
-       .access = Access::sampled,
-       .stage = Stage::compute,
-       .formats = {Format::rgba8, Format::rgba16f},
-       .size_group = "screen",
-       .description = "G-buffer albedo and metallic."},
-      {.name = "hdr",
-       .direction = PortDirection::output,
-       .access = Access::storage_write,
-       .stage = Stage::compute,
-       .formats = {Format::rgba16f, Format::rgba32f},
-       .size_group = "screen",
-       .description = "Linear HDR radiance."},
-  };
-}
 
 std::vector<fg::PortDesc> atlas_ports(bool optional) {
   return {
@@ -62,28 +32,6 @@ std::vector<fg::PortDesc> atlas_ports(bool optional) {
 }
 
 // Same names, ranges and defaults as deferred-lighting, so images match with shadows off.
-std::vector<fg::ParamDesc> lighting_params() {
-  return {
-      {.name = "exposure",
-       .type = fg::ParamType::number,
-       .default_value = 1.0,
-       .min = 0.0,
-       .max = 16.0,
-       .description = "Scale applied to the shaded radiance."},
-      {.name = "ambient",
-       .type = fg::ParamType::number,
-       .default_value = 1.0,
-       .min = 0.0,
-       .max = 16.0,
-       .description = "Scale of the scene's ambient term."},
-      {.name = "specular",
-       .type = fg::ParamType::number,
-       .default_value = 0.25,
-       .min = 0.0,
-       .max = 4.0,
-       .description = "Strength of the Blinn-Phong specular lobe."},
-  };
-}
 
 fg::ParamDesc kernel_param(const char* what) {
   // An enumeration rather than an integer: the filter sizes of the technique are exactly

@@ -108,8 +108,9 @@ void Executor::load(fg::Plan plan) {
   }
   if (heap_end > 0) {
     if (type_bits == 0) throw std::runtime_error("aliased resources share no memory type");
-    state->heap = gpu::create_heap(gpu_, std::max<std::uint64_t>(heap_end, state->plan.aliasing.heap_bytes),
-                                   type_bits, state->plan.name + ".transient_heap");
+    state->heap =
+        gpu::create_heap(gpu_, std::max<std::uint64_t>(heap_end, state->plan.aliasing.heap_bytes),
+                         type_bits, state->plan.name + ".transient_heap");
     state->bytes += state->heap.size();
   }
 
@@ -133,14 +134,9 @@ void Executor::load(fg::Plan plan) {
                           : gpu::Image::create(gpu_, desc);
     if (!r.aliased) state->bytes += gpu::Image::memory_requirements(gpu_, desc).size;
     out.depth = fg::is_depth_format(r.format);
-    out.bound_image = {out.image.handle(),
-                       out.image.view(),
-                       out.image.array_view(),
-                       desc.format,
-                       r.format,
-                       desc.extent,
-                       r.layers,
-                       VK_IMAGE_LAYOUT_UNDEFINED};
+    out.bound_image = {
+        out.image.handle(), out.image.view(), out.image.array_view(),   desc.format, r.format,
+        desc.extent,        r.layers,         VK_IMAGE_LAYOUT_UNDEFINED};
   }
 
   for (const auto& pass : state->plan.passes) {
@@ -163,8 +159,8 @@ void Executor::load(fg::Plan plan) {
     state->passes.push_back(factory(pass));
   }
   for (std::size_t i = 0; i < state->passes.size(); ++i) {
-    PrepareContext context{gpu_, shaders_, state->plan.passes[i], state->bindings[i], shader_root_,
-                           pipeline_cache_};
+    PrepareContext context{gpu_,         shaders_,       state->plan.passes[i], state->bindings[i],
+                           shader_root_, pipeline_cache_};
     state->passes[i]->prepare(context);
   }
   // Only now, with everything created, replace the live state; the old objects go
@@ -259,7 +255,9 @@ const gpu::Image* Executor::gpu_image(std::string_view resource) const {
   return rr.image ? &rr.image : nullptr;
 }
 
-std::uint64_t Executor::resource_bytes() const { return state_ ? state_->bytes : 0; }
+std::uint64_t Executor::resource_bytes() const {
+  return state_ ? state_->bytes : 0;
+}
 
 std::vector<std::string> Executor::shader_files() const {
   std::vector<std::string> files;

@@ -34,7 +34,8 @@ const BoundBuffer* PassBindings::buffer(std::string_view port) const {
 
 const BoundImage& PassBindings::required_image(std::string_view port) const {
   const BoundImage* found = image(port);
-  if (found == nullptr) throw std::logic_error("port " + std::string(port) + " is not bound to an image");
+  if (found == nullptr)
+    throw std::logic_error("port " + std::string(port) + " is not bound to an image");
   return *found;
 }
 

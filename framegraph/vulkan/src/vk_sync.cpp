@@ -47,13 +47,16 @@ SyncState sync_state(fg::Access access, fg::Stage stage, bool depth) {
               VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
               VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
     case Access::depth_attachment:
-      return {VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
+      return {VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT |
+                  VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
               VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT |
                   VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
               VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL};
     case Access::depth_read:
-      return {VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
-              VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT, VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL};
+      return {VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT |
+                  VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
+              VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT,
+              VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL};
     case Access::uniform_read:
       return {shader_stages(stage), VK_ACCESS_2_UNIFORM_READ_BIT, VK_IMAGE_LAYOUT_UNDEFINED};
     case Access::transfer_src:
@@ -73,26 +76,46 @@ SyncState sync_state(fg::Access access, fg::Stage stage, bool depth) {
 VkFormat to_vk_format(fg::Format format) {
   using fg::Format;
   switch (format) {
-    case Format::undefined: return VK_FORMAT_UNDEFINED;
-    case Format::r8: return VK_FORMAT_R8_UNORM;
-    case Format::rg8: return VK_FORMAT_R8G8_UNORM;
-    case Format::rgba8: return VK_FORMAT_R8G8B8A8_UNORM;
-    case Format::rgba8_srgb: return VK_FORMAT_R8G8B8A8_SRGB;
-    case Format::bgra8: return VK_FORMAT_B8G8R8A8_UNORM;
-    case Format::bgra8_srgb: return VK_FORMAT_B8G8R8A8_SRGB;
-    case Format::r16f: return VK_FORMAT_R16_SFLOAT;
-    case Format::rg16f: return VK_FORMAT_R16G16_SFLOAT;
-    case Format::rgba16f: return VK_FORMAT_R16G16B16A16_SFLOAT;
-    case Format::r32f: return VK_FORMAT_R32_SFLOAT;
-    case Format::rg32f: return VK_FORMAT_R32G32_SFLOAT;
-    case Format::rgba32f: return VK_FORMAT_R32G32B32A32_SFLOAT;
-    case Format::r32ui: return VK_FORMAT_R32_UINT;
-    case Format::rg32ui: return VK_FORMAT_R32G32_UINT;
-    case Format::rgba32ui: return VK_FORMAT_R32G32B32A32_UINT;
-    case Format::r11g11b10f: return VK_FORMAT_B10G11R11_UFLOAT_PACK32;
-    case Format::d16: return VK_FORMAT_D16_UNORM;
-    case Format::d32f: return VK_FORMAT_D32_SFLOAT;
-    case Format::d24s8: return VK_FORMAT_D24_UNORM_S8_UINT;
+    case Format::undefined:
+      return VK_FORMAT_UNDEFINED;
+    case Format::r8:
+      return VK_FORMAT_R8_UNORM;
+    case Format::rg8:
+      return VK_FORMAT_R8G8_UNORM;
+    case Format::rgba8:
+      return VK_FORMAT_R8G8B8A8_UNORM;
+    case Format::rgba8_srgb:
+      return VK_FORMAT_R8G8B8A8_SRGB;
+    case Format::bgra8:
+      return VK_FORMAT_B8G8R8A8_UNORM;
+    case Format::bgra8_srgb:
+      return VK_FORMAT_B8G8R8A8_SRGB;
+    case Format::r16f:
+      return VK_FORMAT_R16_SFLOAT;
+    case Format::rg16f:
+      return VK_FORMAT_R16G16_SFLOAT;
+    case Format::rgba16f:
+      return VK_FORMAT_R16G16B16A16_SFLOAT;
+    case Format::r32f:
+      return VK_FORMAT_R32_SFLOAT;
+    case Format::rg32f:
+      return VK_FORMAT_R32G32_SFLOAT;
+    case Format::rgba32f:
+      return VK_FORMAT_R32G32B32A32_SFLOAT;
+    case Format::r32ui:
+      return VK_FORMAT_R32_UINT;
+    case Format::rg32ui:
+      return VK_FORMAT_R32G32_UINT;
+    case Format::rgba32ui:
+      return VK_FORMAT_R32G32B32A32_UINT;
+    case Format::r11g11b10f:
+      return VK_FORMAT_B10G11R11_UFLOAT_PACK32;
+    case Format::d16:
+      return VK_FORMAT_D16_UNORM;
+    case Format::d32f:
+      return VK_FORMAT_D32_SFLOAT;
+    case Format::d24s8:
+      return VK_FORMAT_D24_UNORM_S8_UINT;
   }
   return VK_FORMAT_UNDEFINED;
 }
@@ -107,15 +130,26 @@ VkImageUsageFlags image_usage(const fg::PlanResource& resource) {
   VkImageUsageFlags usage = VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
   for (const fg::Access access : resource.usages) {
     switch (access) {
-      case fg::Access::sampled: usage |= VK_IMAGE_USAGE_SAMPLED_BIT; break;
+      case fg::Access::sampled:
+        usage |= VK_IMAGE_USAGE_SAMPLED_BIT;
+        break;
       case fg::Access::storage_read:
       case fg::Access::storage_write:
-      case fg::Access::storage_read_write: usage |= VK_IMAGE_USAGE_STORAGE_BIT; break;
-      case fg::Access::color_attachment: usage |= VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT; break;
+      case fg::Access::storage_read_write:
+        usage |= VK_IMAGE_USAGE_STORAGE_BIT;
+        break;
+      case fg::Access::color_attachment:
+        usage |= VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
+        break;
       case fg::Access::depth_attachment:
-      case fg::Access::depth_read: usage |= VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT; break;
-      case fg::Access::transfer_dst: usage |= VK_IMAGE_USAGE_TRANSFER_DST_BIT; break;
-      default: break;
+      case fg::Access::depth_read:
+        usage |= VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT;
+        break;
+      case fg::Access::transfer_dst:
+        usage |= VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+        break;
+      default:
+        break;
     }
   }
   return usage;
@@ -125,12 +159,17 @@ VkBufferUsageFlags buffer_usage(const fg::PlanResource& resource) {
   VkBufferUsageFlags usage = VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
   for (const fg::Access access : resource.usages) {
     switch (access) {
-      case fg::Access::uniform_read: usage |= VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT; break;
+      case fg::Access::uniform_read:
+        usage |= VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT;
+        break;
       case fg::Access::storage_read:
       case fg::Access::storage_write:
       case fg::Access::storage_read_write:
-      case fg::Access::sampled: usage |= VK_BUFFER_USAGE_STORAGE_BUFFER_BIT; break;
-      default: break;
+      case fg::Access::sampled:
+        usage |= VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+        break;
+      default:
+        break;
     }
   }
   return usage;
