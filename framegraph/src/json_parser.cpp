@@ -1,6 +1,7 @@
 // A strict recursive-descent JSON parser that records the position of every value.
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -418,6 +419,13 @@ Result<JsonDocument> parse_json(std::string_view text, const std::string& file,
 }
 
 Result<JsonDocument> load_json_file(const std::string& path, const JsonParseOptions& options) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) {
+    Diagnostics diagnostics;
+    diagnostics.add(Diagnostic{codes::kFileUnreadable, Severity::error,
+                               "is a directory; expected a JSON file", path, "", 0, 0});
+    return diagnostics;
+  }
   std::ifstream in(path, std::ios::binary);
   if (!in) {
     Diagnostics diagnostics;

@@ -102,6 +102,13 @@ TEST(JsonParser, MissingFile) {
   EXPECT_EQ(r.diagnostics()[0].code, codes::kFileUnreadable);
 }
 
+TEST(JsonParser, DirectoryIsNotReadAsAnEmptyFile) {
+  auto r = load_json_file(ANTUMBRA_FG_TEST_DATA);
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.diagnostics()[0].code, codes::kFileUnreadable);
+  EXPECT_NE(r.diagnostics()[0].message.find("directory"), std::string::npos);
+}
+
 TEST(Diagnostics, FormatsLikeACompiler) {
   Diagnostic d{"FG033", Severity::error, "too big", "g.json", "/passes/1/params/x", 4, 7};
   EXPECT_EQ(format_text(d), "g.json:4:7: error[FG033]: too big (at /passes/1/params/x)");
