@@ -119,7 +119,7 @@ void fit_shadow_resources(fg::GraphDesc& graph, int lights) {
     }
     if (r.kind == fg::ResourceKind::buffer && r.name == "shadowData") {
       // shadow_data.hpp: header + 1024 lights + one face record per layer.
-      const std::uint64_t bytes = 16 + 32 * 1024 + 80 * static_cast<std::uint64_t>(layers);
+      const std::uint64_t bytes = 16 + 64 * 1024 + 80 * static_cast<std::uint64_t>(layers);
       r.buffer_size = (bytes + 255) / 256 * 256;
     }
   }

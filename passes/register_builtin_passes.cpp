@@ -1,6 +1,7 @@
 #include "register_builtin_passes.hpp"
 
 #include "anisotropic_blur/anisotropic_blur_pass.hpp"
+#include "debug_views/debug_views_pass.hpp"
 #include "deferred_lighting/deferred_lighting_pass.hpp"
 #include "gbuffer/gbuffer_pass.hpp"
 #include "layered_penumbra/layered_penumbra_pass.hpp"
@@ -30,6 +31,9 @@ void register_builtin_passes(fgvk::PassRegistry& registry) {
   registry.add(TiledLightingPass::describe_pcf(), &make_pass<TiledLightingPass>);
   registry.add(TiledLightingPass::describe_pcss(), &make_pass<TiledLightingPass>);
   registry.add(ShadowReferencePass::describe(), &make_pass<ShadowReferencePass>);
+  registry.add(LayerViewPass::describe(), &make_pass<LayerViewPass>);
+  registry.add(PenumbraViewPass::describe(), &make_pass<PenumbraViewPass>);
+  registry.add(AtlasViewPass::describe(), &make_pass<AtlasViewPass>);
 }
 
 fgvk::PassRegistry builtin_pass_registry() {

@@ -1,5 +1,7 @@
 #include "frame_data.hpp"
 
+#include <cmath>
+
 #include <glm/gtc/matrix_inverse.hpp>
 
 namespace antumbra::passes {
@@ -60,8 +62,23 @@ std::vector<GpuLight> build_lights(const scene::Scene& scene, const glm::mat4& v
   lights.reserve(scene.lights.size());
   for (const auto& l : scene.lights) {
     const glm::vec3 view_pos = glm::vec3(view * glm::vec4(l.position, 1.0f));
-    lights.push_back({glm::vec4(view_pos, l.range), glm::vec4(l.color, l.intensity),
-                      glm::vec4(l.position, l.size)});
+    const glm::vec3 view_dir = glm::normalize(glm::mat3(view) * l.direction);
+    GpuLight g{glm::vec4(view_pos, l.range), glm::vec4(l.color, l.intensity),
+               glm::vec4(l.position, l.size)};
+    switch (l.type) {
+      case scene::LightType::point:
+        break;
+      case scene::LightType::spot:
+        g.direction_type = glm::vec4(view_dir, 1.0f);
+        g.cone = glm::vec4(std::cos(glm::radians(l.spot_outer)),
+                           std::cos(glm::radians(l.spot_inner)), 0.0f, 0.0f);
+        break;
+      case scene::LightType::directional:
+        g.position_range.w = kDirectionalRange;
+        g.direction_type = glm::vec4(view_dir, 2.0f);
+        break;
+    }
+    lights.push_back(g);
   }
   return lights;
 }

@@ -26,13 +26,19 @@ struct FrameUniforms {
 };
 static_assert(sizeof(FrameUniforms) == 5 * 64 + 5 * 16);
 
-// std430 `GpuLight` in lights.glsl.
+// std430 `GpuLight` in lights.glsl (see there for the per-type meaning of the fields).
 struct GpuLight {
-  glm::vec4 position_range{0.0f};   // view space, range
+  glm::vec4 position_range{0.0f};   // view space, range (directional: kDirectionalRange)
   glm::vec4 color_intensity{0.0f};  // linear rgb, intensity
   glm::vec4 world_size{0.0f};       // world position, light size
+  glm::vec4 direction_type{0.0f};   // view-space unit direction, type (0 point/1 spot/2 sun)
+  glm::vec4 cone{0.0f};             // spot: cos(outer), cos(inner) half-angles; else 0
 };
-static_assert(sizeof(GpuLight) == 48);
+static_assert(sizeof(GpuLight) == 80);
+
+// Range written for directional lights: finite (no infinities in GPU buffers) and larger
+// than any scene, so sphere tests that forget the type still keep the sun.
+inline constexpr float kDirectionalRange = 1.0e30f;
 
 // std430 `GpuMaterial` in material.glsl.
 struct GpuMaterial {

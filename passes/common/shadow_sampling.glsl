@@ -1,10 +1,15 @@
-// Point-light shadow lookups in the point-shadow-atlas (passes/point_shadow_atlas), for
-// compute and fragment consumers. Needs shadow_data.glsl's structs; the buffers and the
-// atlas sampler stay the includer's (declare them however the pass binds them).
+// Shadow lookups in the point-shadow-atlas (passes/point_shadow_atlas) for point, spot
+// and directional lights, for compute and fragment consumers. Needs shadow_data.glsl's
+// structs; the buffers and the atlas sampler stay the includer's (declare them however
+// the pass binds them).
 //
 // Conventions (mirrored by passes/point_shadow_atlas/shadow_faces.cpp, tested there):
-//  - face k of a light (0..5 = +X -X +Y -Y +Z -Z, the Vulkan cube-map orientation)
+//  - face k of a point light (0..5 = +X -X +Y -Y +Z -Z, the Vulkan cube-map orientation)
 //    lives at atlas layer ShadowLight.params.z + k; params.z < 0: the light has no faces;
+//    a spot or directional light has its one face at params.z (light_faces.hpp);
+//  - directional maps are orthographic: clip.w = 1, depth linear from the box's near
+//    plane (0) to its far plane (1, position_range.w metres away); `linear` is then the
+//    distance below the near plane in metres;
 //  - ShadowFace.view_proj maps world -> face clip: clip.w = distance along the face's
 //    axis, depth = clip.z / clip.w (0 at near = params.y, 1 at far = position_range.w),
 //    uv = clip.xy / clip.w * 0.5 + 0.5 (v grows with texel rows);
@@ -14,6 +19,8 @@
 //   uint  shadow_cube_face(vec3 light_to_point)
 //   int   shadow_face_layer(ShadowLight l, vec3 world_pos)          -1: no shadow faces
 //   float shadow_linearise(float depth, float near, float far)      metres along the axis
+//   float shadow_linearise_light(ShadowLight l, float depth)         same, any light type
+//   bool  shadow_is_ortho(ShadowLight l)                             directional light
 //   vec3  shadow_offset_position(ShadowLight l, vec3 world_pos, vec3 normal, float face_size)
 //   ShadowCoord shadow_coord(mat4 face_view_proj, ShadowLight l, int layer, vec3 world_pos)
 //   float shadow_hard_coord(sampler2DArray atlas, ShadowCoord c)    1 lit, 0 shadowed
@@ -46,8 +53,11 @@ uint shadow_cube_face(vec3 d) {
   return d.z >= 0.0 ? 4u : 5u;
 }
 
+bool shadow_is_ortho(ShadowLight l) { return l.direction_type.w > 1.5; }
+
 int shadow_face_layer(ShadowLight l, vec3 world_pos) {
   if (l.params.z < 0.0) return -1;
+  if (l.direction_type.w > 0.5) return int(l.params.z);  // spot, directional: one face
   return int(l.params.z) + int(shadow_cube_face(world_pos - l.position_range.xyz));
 }
 
@@ -55,21 +65,43 @@ float shadow_linearise(float depth, float near, float far) {
   return far * near / (far - depth * (far - near));
 }
 
+float shadow_linearise_light(ShadowLight l, float depth) {
+  if (shadow_is_ortho(l)) return depth * l.position_range.w;
+  return shadow_linearise(depth, l.params.y, l.position_range.w);
+}
+
 // Moves the receiver off its surface by about SHADOW_NORMAL_OFFSET texels, scaled up
 // where the surface turns away from the light (where acne starts). A 90-degree face of
-// `face_size` texels spans 2 * distance / face_size metres per texel at `distance`.
+// `face_size` texels spans 2 * distance / face_size metres per texel at `distance`; a
+// spot face 2 * tan(half fov) * distance / face_size; an orthographic map
+// 2 * half_width / face_size everywhere.
 vec3 shadow_offset_position(ShadowLight l, vec3 world_pos, vec3 normal, float face_size) {
+  if (shadow_is_ortho(l)) {
+    float n_dot_l = clamp(dot(normal, -l.direction_type.xyz), 0.0, 1.0);
+    float texel = 2.0 * l.projection.x / max(face_size, 1.0);
+    return world_pos + normal * (SHADOW_NORMAL_OFFSET * texel * (2.0 - n_dot_l));
+  }
   vec3 to_light = l.position_range.xyz - world_pos;
   float dist = length(to_light);
   float n_dot_l = dist > 0.0 ? clamp(dot(normal, to_light / dist), 0.0, 1.0) : 1.0;
-  float texel = 2.0 * dist / max(face_size, 1.0);
+  float texel = 2.0 * dist * l.projection.x / max(face_size, 1.0);  // projection.x: 1 point
   return world_pos + normal * (SHADOW_NORMAL_OFFSET * texel * (2.0 - n_dot_l));
 }
 
+// Orthographic maps: points outside the box's xy square or above its near plane are
+// invalid (lit); below the far plane, depth > 1 reads as lit like a light's range.
 ShadowCoord shadow_coord(mat4 face_view_proj, ShadowLight l, int layer, vec3 world_pos) {
   ShadowCoord c = ShadowCoord(vec2(0.0), float(max(layer, 0)), 1.0, 0.0, false);
   if (layer < 0) return c;
   vec4 clip = face_view_proj * vec4(world_pos, 1.0);
+  if (shadow_is_ortho(l)) {
+    c.uv = clip.xy * 0.5 + 0.5;
+    c.depth = clip.z;
+    c.linear = clip.z * l.position_range.w;
+    c.valid = clip.z > 0.0 && all(greaterThanEqual(c.uv, vec2(0.0))) &&
+              all(lessThanEqual(c.uv, vec2(1.0)));
+    return c;
+  }
   c.linear = clip.w;
   if (clip.w <= l.params.y) return c;
   c.uv = clip.xy / clip.w * 0.5 + 0.5;

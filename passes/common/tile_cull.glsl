@@ -1,7 +1,7 @@
 // Per-tile light culling for 16x16 compute workgroups: the tile's depth bounds give a
-// view-space box; every light sphere touching it is appended to a shared list. A
-// tile with more lights than the list holds sets `tile_overflow`, and its pixels then
-// loop over every light: slower, never wrong.
+// view-space box; every light sphere touching it (and every directional light) is
+// appended to a shared list. A tile with more lights than the list holds sets
+// `tile_overflow`, and its pixels then loop over every light: slower, never wrong.
 //
 // The including shader defines TILE_LIGHTS_MAX, declares `Frame frame` (frame.glsl)
 // and `GpuLight lights[]` (lights.glsl), and calls tile_cull(depth, valid) with every
@@ -57,7 +57,8 @@ void tile_cull(float depth, bool valid) {
     vec4 pr = lights[i].position_range;
     vec3 closest = clamp(pr.xyz, box_min, box_max);
     vec3 d = closest - pr.xyz;
-    if (dot(d, d) <= pr.w * pr.w) {
+    // Directional lights cover every tile; spot lights are culled by their sphere.
+    if (light_is_directional(lights[i]) || dot(d, d) <= pr.w * pr.w) {
       uint slot = atomicAdd(tile_count, 1u);
       if (slot < TILE_LIGHTS_MAX) {
         tile_lights[slot] = i;

@@ -3,8 +3,8 @@
 #include "../common/frame.glsl"
 #include "../common/lights.glsl"
 
-// Untiled deferred shading of every scene point light, no shadows: the reference
-// lighting that shadow techniques multiply into.
+// Untiled deferred shading of every scene light (point, spot, directional), no shadows:
+// the reference lighting that shadow techniques multiply into.
 layout(set = 0, binding = 0) uniform Frame { FrameUniforms frame; };
 layout(set = 0, binding = 1) readonly buffer Lights { GpuLight lights[]; };
 layout(set = 0, binding = 2) uniform sampler2D g_depth;
@@ -44,17 +44,26 @@ void main() {
   uint count = frame.counts.x;
   for (uint i = 0u; i < count; ++i) {
     GpuLight light = lights[i];
-    vec3 to_light = light.position_range.xyz - p;
-    float dist = length(to_light);
-    float range = light.position_range.w;
-    if (dist >= range) continue;
-    vec3 l = to_light / dist;
+    // Same per-type rules as tiled_lighting/shading.glsl; point lights unchanged.
+    vec3 l;
+    float attenuation;
+    if (light_is_directional(light)) {
+      l = -light.direction_type.xyz;
+      attenuation = 1.0;
+    } else {
+      vec3 to_light = light.position_range.xyz - p;
+      float dist = length(to_light);
+      float range = light.position_range.w;
+      if (dist >= range) continue;
+      l = to_light / dist;
+      attenuation = light_attenuation(dist, range);
+      if (light_is_spot(light)) attenuation *= spot_falloff(light, l);
+    }
     float n_dot_l = max(dot(n, l), 0.0);
     if (n_dot_l <= 0.0) continue;
     vec3 h = normalize(l + v);
     float spec = specular * pow(max(dot(n, h), 0.0), shininess) * (shininess + 8.0) / 25.0;
-    vec3 radiance = light.color_intensity.rgb * light.color_intensity.w *
-                    light_attenuation(dist, range);
+    vec3 radiance = light.color_intensity.rgb * light.color_intensity.w * attenuation;
     color += radiance * n_dot_l * (albedo_metal.rgb + vec3(spec));
   }
   out_color = vec4(color * exposure, 1.0);

@@ -84,9 +84,10 @@ void main() {
       if (owner[layer] < li) continue;  // a lower-index light already owns this layer here
       ShadowLight sl = shadow_lights[li];
       if (sl.params.z < 0.0) continue;  // no shadow map for this light this frame
-      vec3 to_light = sl.position_range.xyz - world;
-      float dist = length(to_light);
-      if (dist >= sl.position_range.w) continue;
+      // The sun (orthographic map, own layer) reaches everything; others end at range.
+      if (!shadow_is_ortho(sl) && length(sl.position_range.xyz - world) >= sl.position_range.w) {
+        continue;
+      }
       PenumbraSample s = estimate_penumbra(sl, world, n_world);
       owner[layer] = li;
       uint slot = layer >> 2u;

@@ -20,8 +20,6 @@ PenumbraSample estimate_penumbra(ShadowLight sl, vec3 world, vec3 n_world) {
   result.in_shadow = false;
   result.colour = 0xFFFFFFFFu;
 
-  float n = sl.params.y;
-  float f = sl.position_range.w;
   float light_size = sl.params.x * light_size_scale;
   float face_size = float(shadow_header.counts.z);
   vec3 p = shadow_offset_position(sl, world, n_world, face_size);
@@ -32,10 +30,16 @@ PenumbraSample estimate_penumbra(ShadowLight sl, vec3 world, vec3 n_world) {
   result.in_shadow = shadow_hard_coord(atlas, c) < 0.5;
 
   // Blocker search (PCSS step 1) over a square region that grows with the light's size
-  // and shrinks with distance: blockers near the receiver matter most.
+  // and shrinks with distance: blockers near the receiver matter most. Orthographic
+  // (sun) maps: the region is the widest penumbra a blocker at the near plane could
+  // cast, tan(angular radius) * depth below it, in uv of the 2 * half_width square.
+  bool ortho = shadow_is_ortho(sl);
   float z_receiver = c.linear;
   float texel = 1.0 / face_size;
-  float radius = clamp(search_scale * light_size / z_receiver, texel, 0.25);
+  float radius = ortho ? clamp(search_scale * light_size * z_receiver / (2.0 * sl.projection.x),
+                               texel, 0.25)
+                       : clamp(search_scale * light_size / (z_receiver * sl.projection.x),
+                               texel, 0.25);
   int taps = int(search_taps);
   float step_uv = taps > 1 ? 2.0 * radius / float(taps - 1) : 0.0;
   float blocker_sum = 0.0;
@@ -46,15 +50,17 @@ PenumbraSample estimate_penumbra(ShadowLight sl, vec3 world, vec3 n_world) {
       vec2 tap = clamp(c.uv + offset, vec2(0.5 * texel), vec2(1.0 - 0.5 * texel));
       float stored = textureLod(atlas, vec3(tap, c.layer), 0.0).r;
       if (stored < c.depth) {
-        blocker_sum += shadow_linearise(stored, n, f);
+        blocker_sum += shadow_linearise_light(sl, stored);
         ++blockers;
       }
     }
   }
   if (blockers > 0) {
     float z_blocker = blocker_sum / float(blockers);
-    // w_penumbra = (d_receiver - d_blocker) * w_light / d_blocker (seed 000, PCSS step 2)
-    result.width = max((z_receiver - z_blocker) * light_size / z_blocker, 1e-4);
+    // w_penumbra = (d_receiver - d_blocker) * w_light / d_blocker (seed 000, PCSS step 2);
+    // for the sun, w_light / d_blocker is the constant tan(angular radius) = light_size.
+    result.width = ortho ? max((z_receiver - z_blocker) * light_size, 1e-4)
+                         : max((z_receiver - z_blocker) * light_size / z_blocker, 1e-4);
   }
 #ifdef HAS_COLOUR
   // Only lights with a translucent caster in range have valid colour layers (w = 1).

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstring>
 #include <functional>
+#include <limits>
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
@@ -57,7 +58,11 @@ void LightLayeringPass::execute(fgvk::ExecuteContext& context) {
   for (std::uint32_t i = 0; i < scene.lights.size() && i < kMaxShadowLights; ++i) {
     const auto& light = scene.lights[i];
     if (!light.casts_shadows) continue;
-    spheres_.push_back({light_id(light.name), light.name, light.position, light.range, false});
+    // The sun lights everything: an infinite sphere (the core handles it) on a layer of
+    // its own (TECHNIQUE.md 1, step 3). Spot lights keep their conservative sphere.
+    const bool sun = light.type == scene::LightType::directional;
+    spheres_.push_back({light_id(light.name), light.name, light.position,
+                        sun ? std::numeric_limits<float>::infinity() : light.range, sun});
     scene_index_.push_back(i);
   }
 

@@ -1,7 +1,9 @@
 #include "atlas_planner.hpp"
 
 #include <algorithm>
+#include <cmath>
 
+#include "light_faces.hpp"
 #include "shadow_faces.hpp"
 
 namespace antumbra::passes {
@@ -15,6 +17,7 @@ const AtlasFrame& AtlasPlanner::plan(const scene::Scene& scene, const glm::mat4&
                                      std::uint64_t geometry_version, std::uint32_t frame_index,
                                      const AtlasSettings& settings) {
   namespace sf = shadow_faces;
+  namespace lf = light_faces;
   const std::uint32_t layer_count = settings.layers;
   if (layers_.size() != layer_count) {
     layers_.assign(layer_count, LayerState{});
@@ -31,33 +34,62 @@ const AtlasFrame& AtlasPlanner::plan(const scene::Scene& scene, const glm::mat4&
   for (auto& face : frame_.faces) face.info = {0xFFFFFFFFu, 0u, 0u, 0u};  // unused layer
 
   const sf::Frustum camera = sf::camera_frustum(camera_view_proj);
-  const std::uint32_t max_slots = layer_count / sf::kFaceCount;
-  std::uint32_t slot = 0;
+  std::uint32_t next_layer = 0;
   for (std::uint32_t i = 0; i < light_count; ++i) {
     const scene::PointLight& light = scene.lights[i];
     ShadowLight& out = frame_.lights[i];
-    const float near = std::min(settings.near_plane, 0.5f * light.range);
-    out.position_range = glm::vec4(light.position, light.range);
+    const bool directional = light.type == scene::LightType::directional;
+    const float range = directional ? 0.0f : light.range;
+    const float near = std::min(settings.near_plane, 0.5f * range);
+    out.position_range = glm::vec4(light.position, range);
     out.params = glm::vec4(light.size, near, -1.0f, 0.0f);
+    out.direction_type = glm::vec4(light.direction, kLightTypePoint);
+    if (light.type == scene::LightType::spot) {
+      out.direction_type.w = kLightTypeSpot;
+      out.projection.x = lf::spot_tan_half_fov(light.spot_outer);
+    } else if (directional) {
+      // Sun size is an angular radius in degrees; penumbrae use its tangent.
+      out.direction_type.w = kLightTypeDirectional;
+      out.params = glm::vec4(std::tan(glm::radians(light.size)), 0.0f, -1.0f, 0.0f);
+    }
     if (!light.casts_shadows) continue;
-    if (slot >= max_slots) {
+    const std::uint32_t face_count = light.type == scene::LightType::point ? sf::kFaceCount : 1u;
+    if (next_layer + face_count > layer_count) {
       frame_.unshadowed.push_back(light.name);
       continue;
     }
-    const std::uint32_t first = slot * sf::kFaceCount;
+    const std::uint32_t first = next_layer;
+    next_layer += face_count;
     out.params.z = static_cast<float>(first);
-    ++slot;
-    const std::uint32_t visible = settings.cull_faces
-                                      ? sf::visible_faces(camera, light.position, light.range)
-                                      : (1u << sf::kFaceCount) - 1u;
-    const FaceKey key{light.position, light.range, near, geometry_version};
-    for (std::uint32_t face = 0; face < sf::kFaceCount; ++face) {
+    std::uint32_t visible = (1u << face_count) - 1u;
+    if (light.type == scene::LightType::point) {
+      if (settings.cull_faces) visible = sf::visible_faces(camera, light.position, light.range);
+    } else if (light.type == scene::LightType::spot) {
+      if (settings.cull_faces && !sf::sphere_may_intersect(camera, light.position, light.range)) {
+        visible = 0u;
+      }
+    } else {
+      // The sun's box follows the camera: fitted anew every frame.
+      const lf::DirectionalFit fit = lf::fit_directional(
+          light.direction, camera_view_proj, settings.camera_near, settings.camera_far,
+          settings.sun_max_distance, scene.bounds, static_cast<float>(settings.face_size));
+      out.position_range = glm::vec4(fit.near_point, fit.depth);
+      out.projection.x = fit.half_width;
+      frame_.faces[first].view_proj = fit.view_proj;
+    }
+    for (std::uint32_t face = 0; face < face_count; ++face) {
       const std::uint32_t layer = first + face;
       LayerState& state = layers_[layer];
       ShadowFace& out_face = frame_.faces[layer];
-      out_face.view_proj = sf::face_view_proj(light.position, face, near, light.range);
+      if (light.type == scene::LightType::point) {
+        out_face.view_proj = sf::face_view_proj(light.position, face, near, light.range);
+      } else if (light.type == scene::LightType::spot) {
+        out_face.view_proj =
+            lf::spot_view_proj(light.position, light.direction, out.projection.x, near, range);
+      }
       out_face.info = {i, face, 0u, 0u};
       ++frame_.stats.total;
+      const FaceKey key{out_face.view_proj, geometry_version};
       const bool current = settings.cache && state.valid && state.key == key;
       if ((visible & (1u << face)) == 0u) {
         // Not drawn: the layer keeps whatever it held, valid only if it still matches.
@@ -78,7 +110,7 @@ const AtlasFrame& AtlasPlanner::plan(const scene::Scene& scene, const glm::mat4&
     }
   }
   // Layers no light owns this frame hold nothing useful any more.
-  for (std::uint32_t layer = slot * sf::kFaceCount; layer < layer_count; ++layer) {
+  for (std::uint32_t layer = next_layer; layer < layer_count; ++layer) {
     layers_[layer].valid = false;
   }
   return frame_;

@@ -1,7 +1,8 @@
 #pragma once
 // Vulkan-free per-frame bookkeeping of the point-shadow atlas: which light owns which
-// layers, which faces the camera may need (culling), which layers still hold valid
-// depth from an earlier frame (static caching) and so which faces to draw. Also fills
+// layers (allocated in light order: 6 per point light, 1 per spot or directional light;
+// ShadowLight.params.z = the first), which faces the camera may need (culling), which layers still
+// hold valid depth from an earlier frame (static caching) and so which faces to draw. Also fills
 // the shadowData contents (shadow_data.hpp). The pass uploads and draws what it says.
 
 #include <cstdint>
@@ -21,20 +22,23 @@ struct AtlasSettings {
   float near_plane = 0.05f;
   bool cull_faces = true;
   bool cache = true;
+  // The directional light's map covers the camera frustum up to this distance (metres).
+  float sun_max_distance = 40.0f;
+  float camera_near = 0.1f;  // the scene camera's planes, for the sun's fit
+  float camera_far = 200.0f;
 };
 
 struct AtlasStats {
-  std::uint32_t total = 0;     // faces of shadowed lights (6 per light slot)
+  std::uint32_t total = 0;     // faces of shadowed lights (6 point, 1 spot, 1 sun)
   std::uint32_t culled = 0;    // not needed for the visible image
   std::uint32_t rendered = 0;  // drawn this frame
   std::uint32_t cached = 0;    // needed and still valid from an earlier frame
 };
 
 // What one layer's contents were rendered for; a face is re-rendered when this changes.
+// The face's matrix says everything about the view (position, direction, planes, fit).
 struct FaceKey {
-  glm::vec3 position{0.0f};
-  float range = 0.0f;
-  float near = 0.0f;
+  glm::mat4 view_proj{0.0f};
   std::uint64_t geometry_version = 0;
   bool operator==(const FaceKey&) const = default;
 };

@@ -53,6 +53,13 @@ fg::PassDesc PointShadowAtlasPass::describe() {
        .min = 0.001,
        .max = 10.0,
        .description = "Near plane of every face in metres (capped at half the range)."},
+      {.name = "sunDistance",
+       .type = fg::ParamType::number,
+       .default_value = 40.0,
+       .min = 1.0,
+       .max = 10000.0,
+       .description = "The directional light's orthographic map covers the camera frustum up "
+                      "to this distance in metres (one cascade; beyond it the sun is unshadowed)."},
       {.name = "depthBias",
        .type = fg::ParamType::number,
        .default_value = 2.0,

@@ -58,6 +58,7 @@ VkRenderingAttachmentInfo attachment(VkImageView view, VkImageLayout layout, boo
 
 PointShadowAtlasPass::PointShadowAtlasPass(const fg::PlanPass& pass) {
   settings_.near_plane = param_float(pass, "nearPlane");
+  settings_.sun_max_distance = param_float(pass, "sunDistance");
   settings_.cull_faces = param_bool(pass, "cullFaces");
   settings_.cache = param_bool(pass, "cache");
   depth_bias_ = param_float(pass, "depthBias");
@@ -172,6 +173,8 @@ void PointShadowAtlasPass::execute(fgvk::ExecuteContext& context) {
   const float aspect =
       viewport.height > 0 ? static_cast<float>(viewport.width) / static_cast<float>(viewport.height)
                           : 1.0f;
+  settings_.camera_near = scene.camera.near;
+  settings_.camera_far = scene.camera.far;
   const AtlasFrame& frame =
       planner_.plan(scene, scene.camera.view_projection(aspect), context.frame.geometry_version,
                     static_cast<std::uint32_t>(context.frame.frame_index), settings_);
@@ -191,8 +194,9 @@ void PointShadowAtlasPass::execute(fgvk::ExecuteContext& context) {
                         std::to_string(frame.unshadowed.size()) +
                             " shadow-casting light(s) do not fit the atlas (" +
                             std::to_string(settings_.layers) +
-                            " layers = " + std::to_string(settings_.layers / 6) +
-                            " lights) and cast no shadows: " + names,
+                            " layers: 6 per point light, 1 per spot or sun) and cast no "
+                            "shadows: " +
+                            names,
                         fg::Json{{"lights", frame.unshadowed}, {"layers", settings_.layers}}});
   }
   const AtlasStats& s = frame.stats;

@@ -56,7 +56,9 @@ ReferencePlan build_plan(const scene::Scene& scene, const std::vector<glm::vec3>
     const auto& light = scene.lights[l];
     // Faces reach the receivers' whole lit sphere from any point of the light.
     const float far = light.range + light.size;
-    const bool shadows = light.casts_shadows && light.range > 0.0f;
+    // Directional lights have no sphere to sample: unshadowed (the pass reports it).
+    const bool shadows =
+        light.casts_shadows && light.range > 0.0f && light.type != scene::LightType::directional;
     for (std::uint32_t k = 0; k < plan.samples; ++k) {
       const glm::vec3 p = light.position + directions[k] * light.size;
       plan.points[std::size_t{l} * plan.samples + k].position_far = {p, shadows ? far : -1.0f};

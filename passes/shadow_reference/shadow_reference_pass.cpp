@@ -4,6 +4,8 @@
 #include <array>
 #include <cstring>
 
+#include <nlohmann/json.hpp>
+
 #include "antumbra/gpu/context.hpp"
 #include "antumbra/gpu/pipelines.hpp"
 #include "antumbra/scene/scene.hpp"
@@ -140,9 +142,11 @@ ShadowReferencePass::Key ShadowReferencePass::make_key(const fgvk::ExecuteContex
                           : 1.0f;
   key.view_proj = scene.camera.view_projection(aspect);
   for (const auto& l : scene.lights) {
-    key.lights.insert(key.lights.end(),
-                      {l.position.x, l.position.y, l.position.z, l.color.r, l.color.g, l.color.b,
-                       l.intensity, l.range, l.size, l.casts_shadows ? 1.0f : 0.0f});
+    key.lights.insert(
+        key.lights.end(),
+        {l.position.x, l.position.y, l.position.z, l.color.r, l.color.g, l.color.b, l.intensity,
+         l.range, l.size, l.casts_shadows ? 1.0f : 0.0f, static_cast<float>(l.type), l.direction.x,
+         l.direction.y, l.direction.z, l.spot_inner, l.spot_outer});
   }
   return key;
 }
@@ -201,6 +205,16 @@ void ShadowReferencePass::execute(fgvk::ExecuteContext& context) {
     key_ = std::move(key);
   }
   record_final(context);
+  // Spot lights are sampled like point lights (the cone is the shading's); the sun has
+  // no sphere to sample, so it stays unshadowed here, and the report says so.
+  for (const auto& l : context.frame.scene->lights) {
+    if (l.type == scene::LightType::directional && l.casts_shadows) {
+      context.report.add({context.pass.name, "SHR001", fg::Severity::error,
+                          "shadow-reference does not shadow directional light '" + l.name +
+                              "' (it is drawn unshadowed)",
+                          nlohmann::json::object()});
+    }
+  }
 }
 
 }  // namespace antumbra::passes

@@ -27,20 +27,34 @@ Surface make_surface(vec3 p, vec4 normal_rough, vec4 albedo_metal) {
 // Unshadowed radiance of one light; false when the light cannot reach the point (out of
 // range or behind the surface), so callers skip the shadow lookup too. `l` is the unit
 // view-space direction to the light.
+// Point lights take exactly the arithmetic they always had (goldens stay bit-identical);
+// spot lights multiply the cone falloff into the attenuation; directional lights have a
+// constant direction and no attenuation or range.
 bool shade_light(GpuLight light, Surface s, float specular, out vec3 radiance, out vec3 l) {
-  vec3 to_light = light.position_range.xyz - s.p;
-  float dist = length(to_light);
-  float range = light.position_range.w;
   radiance = vec3(0.0);
   l = vec3(0.0);
-  if (dist >= range) return false;
-  l = to_light / dist;
+  float attenuation;
+  if (light_is_directional(light)) {
+    l = -light.direction_type.xyz;
+    attenuation = 1.0;
+  } else {
+    vec3 to_light = light.position_range.xyz - s.p;
+    float dist = length(to_light);
+    float range = light.position_range.w;
+    if (dist >= range) return false;
+    l = to_light / dist;
+    attenuation = light_attenuation(dist, range);
+    if (light_is_spot(light)) {
+      attenuation *= spot_falloff(light, l);
+      if (attenuation <= 0.0) return false;
+    }
+  }
   float n_dot_l = max(dot(s.n, l), 0.0);
   if (n_dot_l <= 0.0) return false;
   vec3 h = normalize(l + s.v);
   float spec = specular * pow(max(dot(s.n, h), 0.0), s.shininess) * (s.shininess + 8.0) / 25.0;
-  radiance = light.color_intensity.rgb * light.color_intensity.w * light_attenuation(dist, range) *
-             n_dot_l * (s.albedo + vec3(spec));
+  radiance = light.color_intensity.rgb * light.color_intensity.w * attenuation * n_dot_l *
+             (s.albedo + vec3(spec));
   return true;
 }
 

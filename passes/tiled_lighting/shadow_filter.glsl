@@ -28,6 +28,8 @@ struct FilterCoord {
   float near;
   float far;
   float texel;      // one texel in uv
+  float scale;      // ShadowLight.projection.x: 1 point, tan(half fov) spot, half width sun
+  bool ortho;       // directional light: depth linear in metres (0 at near, far at 1)
 };
 
 vec3 filter_project(mat4 view_proj, vec3 p) {
@@ -38,7 +40,7 @@ vec3 filter_project(mat4 view_proj, vec3 p) {
 // False when the light has no atlas faces or the point lies in front of the near plane:
 // the caller treats the point as lit. Face choice and projection are shadow_sampling.glsl's.
 bool filter_coord(uint light_index, vec3 p_world, vec3 n_world, out FilterCoord c) {
-  c = FilterCoord(vec2(0.0), 0.0, 0.0, vec2(0.0), 0.0, 0.0, 0.0, 0.0, 0.0);
+  c = FilterCoord(vec2(0.0), 0.0, 0.0, vec2(0.0), 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, false);
   if (light_index >= ANTUMBRA_MAX_SHADOW_LIGHTS) return false;
   ShadowLight sl = shadow_lights[light_index];
   int layer = shadow_face_layer(sl, p_world);
@@ -53,13 +55,16 @@ bool filter_coord(uint light_index, vec3 p_world, vec3 n_world, out FilterCoord 
   c.near = sl.params.y;
   c.far = sl.position_range.w;
   c.texel = 1.0 / float(textureSize(atlas, 0).x);
+  c.scale = sl.projection.x;
+  c.ortho = shadow_is_ortho(sl);
 
   // Receiver plane from two tangent points about a texel away (well inside float range).
-  float step = 2.0 * c.linear * c.texel;
+  // A texel spans 2 * linear * scale * texel metres (perspective) or 2 * scale * texel.
+  float step = c.ortho ? 2.0 * c.scale * c.texel : 2.0 * c.linear * c.texel * c.scale;
   vec3 t1 = normalize(abs(n_world.y) < 0.9 ? cross(n_world, vec3(0.0, 1.0, 0.0))
                                            : cross(n_world, vec3(1.0, 0.0, 0.0)));
   vec3 t2 = cross(n_world, t1);
-  vec3 a = filter_project(view_proj, p_world + t1 * step) - vec3(c.uv, c.depth);
+  vec3 a = filter_project(view_proj, p_world + t1 * step) - vec3(c.uv, c.depth);  // w = 1 ortho
   vec3 b = filter_project(view_proj, p_world + t2 * step) - vec3(c.uv, c.depth);
   float det = a.x * b.y - a.y * b.x;
   // Grazing planes (det ~ 0) give unbounded slopes: fall back to a flat plane and let
@@ -69,8 +74,9 @@ bool filter_coord(uint light_index, vec3 p_world, vec3 n_world, out FilterCoord 
   }
   c.slope = clamp(c.slope, vec2(-1e3), vec2(1e3));
   // Half a texel of depth at this distance (d depth/d linear = f n / (t^2 (f - n))).
-  float half_texel_linear = c.linear * c.texel;
-  float ddepth = c.far * c.near / (c.linear * c.linear * max(c.far - c.near, 1e-6));
+  float half_texel_linear = c.ortho ? c.scale * c.texel : c.linear * c.texel * c.scale;
+  float ddepth = c.ortho ? 1.0 / max(c.far, 1e-6)
+                         : c.far * c.near / (c.linear * c.linear * max(c.far - c.near, 1e-6));
   c.bias = (abs(c.slope.x) + abs(c.slope.y)) * c.texel + ddepth * half_texel_linear;
 #if ATLAS_D16
   c.bias += 2.0 / 65535.0;  // two quantisation steps of a d16 atlas
@@ -114,7 +120,10 @@ float filter_pcss(FilterCoord c, float light_size) {
   float max_radius = float(KERNEL / 2);  // texels
   if (light_size <= 0.0) return filter_hard(c);
   float face = 1.0 / c.texel;
-  float search = light_size * 0.5 * face * (c.linear - c.near) / c.linear;
+  // Sun: light_size = tan(angular radius); the widest penumbra is that times the depth
+  // below the map's near plane, over 2 * half_width / face metres per texel.
+  float search = c.ortho ? light_size * c.linear * face / (2.0 * c.scale)
+                         : light_size * 0.5 * face / c.scale * (c.linear - c.near) / c.linear;
   search = clamp(search, 1.0, max_radius);
   int half_search = BLOCKER_SEARCH / 2;
   float spacing = half_search > 0 ? search / float(half_search) : 0.0;
@@ -125,16 +134,19 @@ float filter_pcss(FilterCoord c, float light_size) {
       vec2 offset = vec2(x, y) * spacing * c.texel;
       float stored = filter_fetch(c, offset);
       if (stored < c.depth + dot(c.slope, offset) - c.bias) {
-        blocker_sum += shadow_linearise(stored, c.near, c.far);
+        blocker_sum += c.ortho ? stored * c.far : shadow_linearise(stored, c.near, c.far);
         blockers += 1.0;
       }
     }
   }
   if (blockers == 0.0) return 1.0;
   float blocker = blocker_sum / blockers;
-  float penumbra = max(c.linear - blocker, 0.0) * light_size / blocker;  // metres
-  // World width at the receiver -> texels: a texel spans 2 * linear / face metres there.
-  float radius = clamp(0.5 * penumbra * face / (2.0 * c.linear), 0.0, max_radius);
+  float penumbra = c.ortho ? max(c.linear - blocker, 0.0) * light_size
+                           : max(c.linear - blocker, 0.0) * light_size / blocker;  // metres
+  // World width at the receiver -> texels: a texel spans 2 * linear * scale / face
+  // metres there (2 * scale / face for the sun).
+  float texel_span = c.ortho ? 2.0 * c.scale : 2.0 * c.linear * c.scale;
+  float radius = clamp(0.5 * penumbra * face / texel_span, 0.0, max_radius);
   return filter_pcf(c, KERNEL, radius / max(max_radius, 1.0));
 }
 

@@ -154,6 +154,7 @@ void main() {
         float d = -light.z;
         bool hit = d + r >= z_min && d - r <= z_max;
         for (int i = 0; i < 4; ++i) hit = hit && dot(planes[i], light.xyz) >= -r;
+        hit = hit || light_is_directional(lights[index]);  // the sun lights every tile
         if (hit) s_list[atomicAdd(s_count, 1u)] = index;
       }
       barrier();

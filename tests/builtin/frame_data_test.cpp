@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "antumbra/scene/primitives.hpp"
@@ -70,6 +72,28 @@ TEST(FrameData, LightsAreInViewSpace) {
   EXPECT_FLOAT_EQ(lights[0].position_range.w, 4.0f);
   EXPECT_FLOAT_EQ(lights[0].color_intensity.w, 5.0f);
   EXPECT_FLOAT_EQ(lights[0].world_size.w, 0.2f);
+}
+
+TEST(FrameData, SpotAndDirectionalLightsCarryTypeAndDirection) {
+  auto s = two_boxes();
+  s.lights.push_back(s.lights[0]);
+  s.lights[0].type = scene::LightType::spot;
+  s.lights[0].direction = {0.0f, -1.0f, 0.0f};
+  s.lights[0].spot_inner = 20.0f;
+  s.lights[0].spot_outer = 30.0f;
+  s.lights[1].type = scene::LightType::directional;
+  s.lights[1].direction = glm::normalize(glm::vec3(1.0f, -1.0f, 0.0f));
+  const glm::mat4 view = s.camera.view();
+  const auto lights = passes::build_lights(s, view);
+  ASSERT_EQ(lights.size(), 2u);
+  const glm::vec3 down = glm::mat3(view) * glm::vec3(0.0f, -1.0f, 0.0f);
+  EXPECT_NEAR(lights[0].direction_type.y, down.y, 1e-5f);
+  EXPECT_EQ(lights[0].direction_type.w, 1.0f);
+  EXPECT_NEAR(lights[0].cone.x, std::cos(glm::radians(30.0f)), 1e-6f);
+  EXPECT_NEAR(lights[0].cone.y, std::cos(glm::radians(20.0f)), 1e-6f);
+  EXPECT_EQ(lights[1].direction_type.w, 2.0f);
+  EXPECT_EQ(lights[1].position_range.w, passes::kDirectionalRange);
+  EXPECT_NEAR(glm::length(glm::vec3(lights[1].direction_type)), 1.0f, 1e-5f);
 }
 
 TEST(FrameData, MaterialsKeepTheirOrder) {

@@ -72,19 +72,32 @@ glm::dvec3 reference_radiance(const scene::Scene& scene, VkExtent2D viewport, st
   const double shininess = 128.0 + (4.0 - 128.0) * std::clamp<double>(normal_rough.w, 0.0, 1.0);
   glm::dvec3 color = glm::dvec3(frame.ambient) * double(params.ambient) * albedo;
   for (const auto& light : lights) {
-    const glm::dvec3 to_light = glm::dvec3(light.position_range) - p;
-    const double dist = glm::length(to_light);
-    const double range = light.position_range.w;
-    if (dist >= range) continue;
-    const glm::dvec3 l = to_light / dist;
+    glm::dvec3 l;
+    double attenuation = 1.0;
+    if (light.direction_type.w > 1.5) {  // directional: constant direction, no falloff
+      l = -glm::normalize(glm::dvec3(light.direction_type));
+    } else {
+      const glm::dvec3 to_light = glm::dvec3(light.position_range) - p;
+      const double dist = glm::length(to_light);
+      const double range = light.position_range.w;
+      if (dist >= range) continue;
+      l = to_light / dist;
+      const double ratio = dist / range;
+      const double window = std::clamp(1.0 - ratio * ratio * ratio * ratio, 0.0, 1.0);
+      attenuation = window * window / (dist * dist + 1.0);
+      if (light.direction_type.w > 0.5) {  // spot: smoothstep(cos outer, cos inner, cos)
+        const double lo = light.cone.x;
+        const double hi = std::max(double(light.cone.y), lo + 1e-4);
+        const double t =
+            std::clamp((glm::dot(-l, glm::dvec3(light.direction_type)) - lo) / (hi - lo), 0.0, 1.0);
+        attenuation *= t * t * (3.0 - 2.0 * t);
+      }
+    }
     const double n_dot_l = std::max(glm::dot(n, l), 0.0);
     if (n_dot_l <= 0.0) continue;
     const glm::dvec3 h = glm::normalize(l + v);
     const double spec = params.specular * std::pow(std::max(glm::dot(n, h), 0.0), shininess) *
                         (shininess + 8.0) / 25.0;
-    const double ratio = dist / range;
-    const double window = std::clamp(1.0 - ratio * ratio * ratio * ratio, 0.0, 1.0);
-    const double attenuation = window * window / (dist * dist + 1.0);
     const glm::dvec3 radiance =
         glm::dvec3(light.color_intensity) * double(light.color_intensity.w) * attenuation;
     color += radiance * n_dot_l * (albedo + glm::dvec3(spec));

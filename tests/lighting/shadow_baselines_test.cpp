@@ -68,8 +68,12 @@ class ShadowBaselinesTest : public RenderTest {
     int penumbra = 0;
     std::string line;
     for (const auto& [x, f] : profile) {
-      if (x < 0.3f) EXPECT_LT(f, 0.02f) << what << ": umbra at x = " << x;
-      if (x > 2.2f) EXPECT_GT(f, 0.98f) << what << ": open floor at x = " << x;
+      if (x < 0.3f) {
+        EXPECT_LT(f, 0.02f) << what << ": umbra at x = " << x;
+      }
+      if (x > 2.2f) {
+        EXPECT_GT(f, 0.98f) << what << ": open floor at x = " << x;
+      }
       if (f > 0.05f && f < 0.95f) ++penumbra;
       char buf[32];
       std::snprintf(buf, sizeof buf, " %.2f:%.2f", x, f);

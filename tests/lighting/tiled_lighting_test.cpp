@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <string>
 
 #include "lighting_test_support.hpp"
@@ -158,4 +159,32 @@ TEST_F(TiledLightingTest, OverflowingTileListsDropNoLight) {
   ASSERT_NO_FATAL_FAILURE(
       load_graph_ok(*session, load_graph_file(lighting_data() / "tiled_hdr.json")));
   expect_matches_reference(*session, scene, kSmall, 4);
+}
+
+TEST_F(TiledLightingTest, SpotAndDirectionalLightsMatchCpuReference) {
+  // Spot cones (falloff between inner and outer), the sun (no attenuation, every tile)
+  // and point lights together; both tiled-lighting and deferred-lighting.
+  OPEN_SESSION(session, kGolden);
+  scene::Scene scene = floor_scene();
+  add_light(scene, {1.0f, 0.5f, 0.0f}, {1.0f, 0.5f, 0.2f}, 2.0f, 4.0f);
+  for (int i = 0; i < 3; ++i) {
+    add_light(scene, {-2.0f + 2.0f * float(i), 3.0f, -1.0f}, {0.3f, 0.6f, 1.0f}, 6.0f, 8.0f);
+    scene.lights.back().type = scene::LightType::spot;
+    scene.lights.back().direction = glm::normalize(glm::vec3(0.2f * float(i - 1), -1.0f, 0.3f));
+    scene.lights.back().spot_outer = 25.0f + 10.0f * float(i);
+    scene.lights.back().spot_inner = 15.0f + 5.0f * float(i);
+  }
+  scene::PointLight sun;
+  sun.name = "sun";
+  sun.type = scene::LightType::directional;
+  sun.direction = glm::normalize(glm::vec3(0.4f, -1.0f, -0.2f));
+  sun.intensity = 0.3f;
+  sun.range = std::numeric_limits<float>::infinity();
+  scene.lights.push_back(sun);
+  session->set_scene(scene);
+  for (const char* graph : {"tiled_hdr.json", "deferred_hdr.json"}) {
+    SCOPED_TRACE(graph);
+    ASSERT_NO_FATAL_FAILURE(load_graph_ok(*session, load_graph_file(lighting_data() / graph)));
+    expect_matches_reference(*session, scene, kGolden, 5);
+  }
 }

@@ -63,7 +63,10 @@ INSTANTIATE_TEST_SUITE_P(
         BadScene{"duplicate_light_name.json", "SC021", "/lights/2/name", 7, "/lights/0"},
         BadScene{"empty_light_name.json", "SC020", "/lights/0/name", 5},
         BadScene{"missing_light_position.json", "SC005", "/lights/0", 5, "'position'"},
-        BadScene{"spot_light.json", "SC022", "/lights/0/type", 5},
+        BadScene{"unknown_light_type.json", "SC022", "/lights/0/type", 5, "'area'"},
+        BadScene{"second_directional.json", "SC024", "/lights/1/type", 6, "/lights/0"},
+        BadScene{"zero_light_direction.json", "SC025", "/lights/0/direction", 5},
+        BadScene{"spot_inner_angle.json", "SC026", "/lights/0/innerAngle", 6},
         BadScene{"camera_degenerate.json", "SC023", "/camera/target", 4},
         BadScene{"far_before_near.json", "SC006", "/camera/far", 4},
         BadScene{"arch_too_wide.json", "SC014", "/objects/0", 5},
@@ -79,7 +82,7 @@ TEST(BadScenesDirectory, EveryFixtureIsInTheTable) {
   for (const auto& entry : std::filesystem::directory_iterator(kBadDir)) {
     count += entry.path().extension() == ".json" ? 1 : 0;
   }
-  EXPECT_EQ(count, 24u);
+  EXPECT_EQ(count, 27u);
 }
 
 TEST(BadScenesDirectory, MissingSceneFileIsReported) {

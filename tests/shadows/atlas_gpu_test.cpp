@@ -240,7 +240,7 @@ TEST_F(AtlasGpuTest, TooSmallShadowDataIsAPassError) {
     ASSERT_FALSE(e.diagnostics().empty());
     const auto& d = *e.diagnostics().begin();
     EXPECT_EQ(d.code, "SHD001");
-    EXPECT_NE(d.message.find("40464"), std::string::npos) << d.message;
+    EXPECT_NE(d.message.find("73232"), std::string::npos) << d.message;
   }
 }
 

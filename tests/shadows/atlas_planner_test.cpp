@@ -4,6 +4,7 @@
 #include "point_shadow_atlas/atlas_planner.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 
 #include <gtest/gtest.h>
@@ -198,5 +199,53 @@ TEST(PointShadowAtlasReflection, PortsAndParams) {
     ASSERT_NE(p, nullptr) << name;
     EXPECT_FALSE(p->description.empty()) << name;
   }
-  EXPECT_EQ(passes::shadow_data_bytes(96), 40464u);
+  EXPECT_EQ(passes::shadow_data_bytes(96), 73232u);
+}
+
+TEST(AtlasPlanner, LayersAreAllocatedByLightType) {
+  // Point 6 layers, spot 1, the sun 1, in light order; the type is passed to consumers.
+  scene::Scene s = atrium();
+  s.lights.resize(3);
+  s.lights[1].type = scene::LightType::spot;
+  s.lights[1].direction = {0.0f, -1.0f, 0.0f};
+  s.lights[1].spot_outer = 30.0f;
+  s.lights[2].type = scene::LightType::directional;
+  s.lights[2].direction = glm::normalize(glm::vec3(0.3f, -1.0f, 0.2f));
+  s.lights[2].size = 0.5f;
+  s.lights.push_back(s.lights[0]);
+  s.lights[3].name = "last point";
+  AtlasPlanner planner;
+  AtlasSettings st = settings(14);
+  st.cull_faces = false;
+  const auto& f = planner.plan(s, camera_of(s), 1, 0, st);
+  EXPECT_EQ(f.lights[0].params.z, 0.0f);
+  EXPECT_EQ(f.lights[1].params.z, 6.0f);
+  EXPECT_EQ(f.lights[2].params.z, 7.0f);
+  EXPECT_EQ(f.lights[3].params.z, 8.0f);
+  EXPECT_EQ(f.stats.total, 14u);
+  EXPECT_EQ(f.lights[0].direction_type.w, passes::kLightTypePoint);
+  EXPECT_EQ(f.lights[1].direction_type.w, passes::kLightTypeSpot);
+  EXPECT_EQ(f.lights[2].direction_type.w, passes::kLightTypeDirectional);
+  EXPECT_NEAR(f.lights[1].projection.x, std::tan(glm::radians(30.0f)), 1e-6f);
+  EXPECT_NEAR(f.lights[2].params.x, std::tan(glm::radians(0.5f)), 1e-7f);  // tan(angle)
+  EXPECT_GT(f.lights[2].projection.x, 0.0f);                               // half width
+  EXPECT_EQ(f.faces[7].info.x, 2u);
+  // One layer short: the last point light goes unshadowed, the others keep theirs.
+  const auto& g = planner.plan(s, camera_of(s), 1, 1, settings(13));
+  EXPECT_EQ(g.lights[3].params.z, -1.0f);
+  ASSERT_EQ(g.unshadowed.size(), 1u);
+  EXPECT_EQ(g.unshadowed[0], "last point");
+}
+
+TEST(AtlasPlanner, SunIsRefittedWhenTheCameraMoves) {
+  scene::Scene s = atrium();
+  s.lights.resize(1);
+  s.lights[0].type = scene::LightType::directional;
+  s.lights[0].direction = {0.0f, -1.0f, 0.0f};
+  AtlasPlanner planner;
+  planner.plan(s, camera_of(s), 1, 0, settings(6));
+  EXPECT_EQ(planner.plan(s, camera_of(s), 1, 1, settings(6)).stats.cached, 1u);
+  s.camera.position += glm::vec3(3.0f, 0.0f, 0.0f);
+  s.camera.target += glm::vec3(3.0f, 0.0f, 0.0f);
+  EXPECT_EQ(planner.plan(s, camera_of(s), 1, 2, settings(6)).stats.rendered, 1u);
 }

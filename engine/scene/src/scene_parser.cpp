@@ -1,6 +1,7 @@
 // Top level of the scene format: version, camera, materials, lights. Objects are in
 // object_parser.cpp.
 #include <cmath>
+#include <limits>
 #include <unordered_map>
 
 #include "antumbra/scene/scene_codes.hpp"
@@ -114,27 +115,82 @@ void parse_materials(JsonReader& r, const Json& root, Scene& scene) {
   }
 }
 
+// Light keys by type: "position" (point, spot), "direction" (spot, directional),
+// "angle" / "innerAngle" (spot cone half-angles, degrees), "range" (point, spot);
+// "size" is a radius in metres for point/spot and the sun's angular radius in degrees
+// for directional lights.
 void parse_light(JsonReader& r, const Json& l, const std::string& p, PointLight& out) {
-  if (!r.check_object(
-          l, p, "a light",
-          {"name", "type", "position", "color", "intensity", "range", "size", "castsShadows"})) {
+  if (!r.check_object(l, p, "a light",
+                      {"name", "type", "position", "direction", "angle", "innerAngle", "color",
+                       "intensity", "range", "size", "castsShadows"})) {
     return;
   }
   if (auto v = r.get_string(l, p, "name", std::nullopt)) out.name = *v;
-  if (auto v = r.get_string(l, p, "type", "point"); v && *v != "point") {
-    const bool later = *v == "spot" || *v == "directional";
-    r.error(codes::kLightTypeUnsupported,
-            "light type '" + *v + (later ? "' is not supported yet" : "' is unknown") +
-                "; scene format 1 supports 'point'",
-            p + "/type");
+  if (auto v = r.get_string(l, p, "type", "point")) {
+    if (*v == "spot") {
+      out.type = LightType::spot;
+    } else if (*v == "directional") {
+      out.type = LightType::directional;
+    } else if (*v != "point") {
+      r.error(codes::kLightTypeUnsupported,
+              "light type '" + *v + "' is unknown; expected 'point', 'spot' or 'directional'",
+              p + "/type");
+    }
   }
-  if (auto v = r.get_vec3(l, p, "position", std::nullopt)) out.position = *v;
+  const bool directional = out.type == LightType::directional;
+  if (directional) {
+    // The sun has no position and reaches everything: no attenuation, no range.
+    out.range = std::numeric_limits<float>::infinity();
+    out.size = 0.27f;
+    for (const char* key : {"position", "range"}) {
+      if (l.contains(key)) {
+        r.warning(codes::kLightKeyIgnored,
+                  std::string("'") + key + "' has no effect on a directional light", p + "/" + key,
+                  true);
+      }
+    }
+  } else {
+    if (auto v = r.get_vec3(l, p, "position", std::nullopt)) out.position = *v;
+    if (auto v = r.get_float(l, p, "range", out.range, Range::positive())) out.range = *v;
+  }
+  if (out.type != LightType::point) {
+    if (auto v = r.get_vec3(l, p, "direction", std::nullopt)) {
+      if (glm::length(*v) < 1e-6f) {
+        r.error(codes::kLightDirectionZero, "light 'direction' must not be zero", p + "/direction");
+      } else {
+        out.direction = glm::normalize(*v);
+      }
+    }
+  } else if (l.contains("direction")) {
+    r.warning(codes::kLightKeyIgnored, "'direction' has no effect on a point light",
+              p + "/direction", true);
+  }
+  if (out.type == LightType::spot) {
+    if (auto v = r.get_float(l, p, "angle", out.spot_outer, {0.0, 90.0, true, false})) {
+      out.spot_outer = *v;
+    }
+    out.spot_inner = 0.8f * out.spot_outer;
+    if (auto v = r.get_float(l, p, "innerAngle", out.spot_inner, {0.0, 90.0, false, false})) {
+      out.spot_inner = *v;
+      if (*v > out.spot_outer) {
+        r.error(codes::kSpotAngles, "'innerAngle' must not exceed 'angle' (the outer cone)",
+                p + "/innerAngle");
+      }
+    }
+  } else {
+    for (const char* key : {"angle", "innerAngle"}) {
+      if (l.contains(key)) {
+        r.warning(codes::kLightKeyIgnored, std::string("'") + key + "' applies to spot lights only",
+                  p + "/" + key, true);
+      }
+    }
+  }
   if (auto v = r.get_vec3(l, p, "color", out.color, Range::non_negative())) out.color = *v;
   if (auto v = r.get_float(l, p, "intensity", out.intensity, Range::non_negative())) {
     out.intensity = *v;
   }
-  if (auto v = r.get_float(l, p, "range", out.range, Range::positive())) out.range = *v;
-  if (auto v = r.get_float(l, p, "size", out.size, Range::non_negative())) out.size = *v;
+  const Range size_range = directional ? Range{0.0, 10.0, false, false} : Range::non_negative();
+  if (auto v = r.get_float(l, p, "size", out.size, size_range)) out.size = *v;
   if (auto v = r.get_bool(l, p, "castsShadows", true)) out.casts_shadows = *v;
 }
 
@@ -142,6 +198,7 @@ void parse_lights(JsonReader& r, const Json& root, Scene& scene) {
   const auto it = root.find("lights");
   if (it == root.end() || !r.check_type(*it, "/lights", Json::value_t::array)) return;
   std::unordered_map<std::string, std::size_t> seen;  // name -> first index
+  int directional = -1;  // the sun gets its own shadow layer: one per scene
   for (std::size_t i = 0; i < it->size(); ++i) {
     const std::string p = fg::pointer_append("/lights", i);
     PointLight light;
@@ -155,6 +212,16 @@ void parse_lights(JsonReader& r, const Json& root, Scene& scene) {
                 "duplicate light name '" + light.name + "' (first used by /lights/" +
                     std::to_string(first->second) + ")",
                 p + "/name");
+      }
+    }
+    if (light.type == LightType::directional) {
+      if (directional >= 0) {
+        r.error(codes::kSecondDirectional,
+                "a scene has at most one directional light (the first is /lights/" +
+                    std::to_string(directional) + ")",
+                p + "/type");
+      } else {
+        directional = static_cast<int>(i);
       }
     }
     scene.lights.push_back(std::move(light));

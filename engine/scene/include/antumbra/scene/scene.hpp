@@ -49,19 +49,32 @@ struct Vertex {
 };
 static_assert(sizeof(Vertex) == 32, "Vertex is uploaded as raw bytes");
 
-// Version 1 implements point lights only; the enum keeps room for spot and directional
-// lights (the scene format already reserves the "type" key for them).
-enum class LightType { point };
+// Light types (scene key "type"). A point light shadows through six cube faces, a spot
+// light through one perspective face along its cone, the directional sun through one
+// orthographic map fitted around the camera frustum (at most one per scene).
+enum class LightType { point, spot, directional };
 
+// Historical name: holds every light type. Fields a type does not use keep defaults.
 struct PointLight {
   std::string name;  // unique and non-empty within a scene (the editor selects by it)
   LightType type = LightType::point;
-  glm::vec3 position{0.0f};
-  glm::vec3 color{1.0f};   // linear RGB, >= 0
-  float intensity = 1.0f;  // scales color, >= 0
-  float range = 10.0f;     // radius of the lit sphere (light reaches zero there), > 0
-  float size = 0.2f;       // light radius in metres, drives penumbra width (w_light), >= 0
+  glm::vec3 position{0.0f};  // point and spot (ignored by directional)
+  glm::vec3 color{1.0f};     // linear RGB, >= 0
+  float intensity = 1.0f;    // scales color, >= 0
+  float range = 10.0f;       // radius of the lit sphere (light reaches zero there), > 0;
+                             // infinite for directional lights (no attenuation)
+  // Point/spot: light radius in metres, drives penumbra width (w_light), >= 0.
+  // Directional: angular radius of the sun disk in DEGREES (the real sun: ~0.27).
+  float size = 0.2f;
   bool casts_shadows = true;
+  // (After the original fields, so that aggregate initialisers of point lights still work.)
+  // Unit world-space direction the light shines along (spot: cone axis, directional:
+  // from the sun towards the scene). Unused by point lights.
+  glm::vec3 direction{0.0f, -1.0f, 0.0f};
+  // Spot cone half-angles in degrees: full intensity inside `spot_inner`, smooth falloff
+  // to zero at `spot_outer` (0 < inner <= outer <= 90). Spot lights only.
+  float spot_inner = 30.0f;
+  float spot_outer = 40.0f;
 };
 
 struct Material {

@@ -26,8 +26,12 @@ inline constexpr const char* kTooManyCopies = "SC015";  // "repeat" expands past
 // Lights and camera (SC020-SC029).
 inline constexpr const char* kLightNameEmpty = "SC020";
 inline constexpr const char* kLightNameDuplicate = "SC021";
-inline constexpr const char* kLightTypeUnsupported = "SC022";  // spot/directional: later
+inline constexpr const char* kLightTypeUnsupported = "SC022";  // not point/spot/directional
 inline constexpr const char* kCameraDegenerate = "SC023";      // target == position, up || view
+inline constexpr const char* kSecondDirectional = "SC024";     // more than one directional light
+inline constexpr const char* kLightDirectionZero = "SC025";    // spot/directional direction ~ 0
+inline constexpr const char* kSpotAngles = "SC026";            // inner > outer
+inline constexpr const char* kLightKeyIgnored = "SC027";       // warning: key unused by this type
 
 // glTF import (SC030-SC049). Reported at the scene object's "gltf" key; the message names
 // the glTF file and the JSON Pointer inside it.

@@ -1,0 +1,60 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// Debug view "atlas-view": shadow faces of the atlas (one per array layer) tiled into a
+// grid of square cells, nearest sampled. With shadowData bound, depth is linearised with
+// the owning light's near plane and range (bright = near the light, black = cleared /
+// nothing within range); without it, raw depth is shown as 1 - depth.
+
+layout(local_size_x = 8, local_size_y = 8) in;
+
+#include "../common/shadow_data.glsl"
+#include "../common/shadow_sampling.glsl"
+
+layout(set = 0, binding = 0) uniform sampler2DArray atlas;
+#ifdef HAS_SHADOW_DATA
+layout(set = 0, binding = 1) readonly buffer Shadows {
+  ShadowHeader shadow_header;
+  ShadowLight shadow_lights[ANTUMBRA_MAX_SHADOW_LIGHTS];
+  ShadowFace faces[];
+};
+#endif
+layout(set = 0, binding = 2, rgba8) uniform writeonly image2D view_out;
+
+layout(push_constant) uniform Params {
+  uint first_face;
+  uint face_count;
+  uint columns;
+  uint cell;        // cell size in output pixels
+  uint layers;      // array layers of the atlas
+};
+
+void main() {
+  ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+  ivec2 size = imageSize(view_out);
+  if (any(greaterThanEqual(pixel, size))) return;
+  uvec2 grid = uvec2(pixel) / cell;
+  uvec2 local = uvec2(pixel) % cell;
+  uint index = grid.y * columns + grid.x;
+  uint face = first_face + index;
+  vec3 colour = vec3(0.08, 0.0, 0.12);  // outside the grid, or past the atlas
+  if (grid.x < columns && index < face_count && face < layers) {
+    vec2 uv = (vec2(local) + 0.5) / float(cell);
+    ivec2 texel = ivec2(uv * vec2(textureSize(atlas, 0).xy));
+    float depth = texelFetch(atlas, ivec3(texel, int(face)), 0).r;
+    float value = 1.0 - depth;
+#ifdef HAS_SHADOW_DATA
+    {
+      ShadowLight light = shadow_lights[min(faces[face].info.x, ANTUMBRA_MAX_SHADOW_LIGHTS - 1u)];
+      float far = light.position_range.w;
+      float near = light.params.y;
+      // Directional maps store linear depth already (near plane 0).
+      float metres = near > 0.0 ? shadow_linearise(depth, near, far) : depth * far;
+      value = depth >= 1.0 ? 0.0 : 1.0 - clamp(metres / max(far, 1e-4), 0.0, 1.0);
+    }
+#endif
+    colour = vec3(value);
+    // One-pixel grid lines so neighbouring faces stay apart.
+    if (local.x == 0u || local.y == 0u) colour = vec3(0.2, 0.2, 0.5);
+  }
+  imageStore(view_out, pixel, vec4(colour, 1.0));
+}

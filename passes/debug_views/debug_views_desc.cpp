@@ -1,0 +1,153 @@
+#include "debug_views_pass.hpp"
+
+namespace antumbra::passes {
+namespace {
+
+using fg::Access;
+using fg::Format;
+using fg::PortDirection;
+using fg::ResourceKind;
+using fg::Stage;
+
+// Every view writes an rgba8 storage image (any size: `render --output` saves it).
+fg::PortDesc view_port(std::string description) {
+  return {.name = "view",
+          .direction = PortDirection::output,
+          .access = Access::storage_write,
+          .stage = Stage::compute,
+          .formats = {Format::rgba8},
+          .description = std::move(description)};
+}
+
+}  // namespace
+
+fg::PassDesc LayerViewPass::describe() {
+  fg::PassDesc desc;
+  desc.type = "layer-view";
+  desc.description =
+      "Debug view: lights coloured by their shadow layer (32-colour palette) where their sphere "
+      "reaches, mixed by attenuation; red/white stripes where two lights share a layer (over "
+      "the cap); a dimmed grey-scale of the surface elsewhere.";
+  desc.ports = {
+      {.name = "depth",
+       .access = Access::sampled,
+       .stage = Stage::compute,
+       .formats = {Format::d32f, Format::d16},
+       .size_group = "screen",
+       .description = "G-buffer depth."},
+      {.name = "normal",
+       .access = Access::sampled,
+       .stage = Stage::compute,
+       .formats = {Format::rgba16f, Format::rgba32f},
+       .size_group = "screen",
+       .description = "G-buffer view-space normal (shades the grey-scale surface)."},
+      {.name = "layerTable",
+       .kind = ResourceKind::buffer,
+       .access = Access::storage_read,
+       .stage = Stage::compute,
+       .description = "Light -> screen layer (light-layering)."},
+      view_port("Layer colours over the dimmed surface (same size as depth)."),
+  };
+  desc.ports.back().size_group = "screen";
+  desc.params = {
+      {.name = "weighting",
+       .type = fg::ParamType::enumeration,
+       .default_value = "attenuation",
+       .choices = {"attenuation", "dominant"},
+       .description = "Mix the colours of every light reaching a pixel by attenuation, or show "
+                      "the strongest light's layer colour flat (exact palette colours)."},
+      {.name = "dim",
+       .type = fg::ParamType::number,
+       .default_value = 0.35,
+       .min = 0.0,
+       .max = 1.0,
+       .description = "Brightness of the grey-scale surface outside every light's sphere."},
+      {.name = "stripeWidth",
+       .type = fg::ParamType::number,
+       .default_value = 4.0,
+       .min = 1.0,
+       .max = 64.0,
+       .description = "Width in pixels of the red/white stripes that mark a shared layer."},
+      {.name = "noLayerGrey",
+       .type = fg::ParamType::number,
+       .default_value = 0.5,
+       .min = 0.0,
+       .max = 1.0,
+       .description = "Grey level of lights without a layer (no shadow, or over the cap)."},
+  };
+  return desc;
+}
+
+fg::PassDesc PenumbraViewPass::describe() {
+  fg::PassDesc desc;
+  desc.type = "penumbra-view";
+  desc.description =
+      "Debug view: the widest penumbra over every screen layer of a pixel in false colour "
+      "(black where the width is zero, a colour ramp up to maxWidth).";
+  desc.ports = {
+      {.name = "penumbra",
+       .access = Access::sampled,
+       .stage = Stage::compute,
+       .formats = {Format::rgba16f},
+       .min_layers = 1,
+       .max_layers = 8,
+       .description = "Penumbra widths from layered-penumbra (4 layers per texel)."},
+      view_port("False-colour widths (nearest-scaled to its own size)."),
+  };
+  desc.params = {
+      {.name = "maxWidth",
+       .type = fg::ParamType::number,
+       .default_value = 0.25,
+       .min = 0.001,
+       .max = 100.0,
+       .description = "Penumbra width (world units) shown at the top of the ramp."},
+  };
+  return desc;
+}
+
+fg::PassDesc AtlasViewPass::describe() {
+  fg::PassDesc desc;
+  desc.type = "atlas-view";
+  desc.description =
+      "Debug view: shadow-atlas faces tiled into a grid, depth linearised with each light's "
+      "near plane and range when shadowData is bound (bright = near the light), raw otherwise.";
+  desc.ports = {
+      {.name = "atlas",
+       .access = Access::sampled,
+       .stage = Stage::compute,
+       .formats = {Format::d32f, Format::d16},
+       .min_layers = 1,
+       .max_layers = 0,
+       .description = "Shadow faces, one per array layer (point-shadow-atlas)."},
+      {.name = "shadowData",
+       .kind = ResourceKind::buffer,
+       .access = Access::storage_read,
+       .stage = Stage::compute,
+       .optional = true,
+       .description = "Face -> light and each light's near/far, for linear depth."},
+      view_port("The grid of faces."),
+  };
+  desc.params = {
+      {.name = "firstFace",
+       .type = fg::ParamType::integer,
+       .default_value = 0,
+       .min = 0.0,
+       .max = 4095.0,
+       .description = "Atlas layer shown in the first cell."},
+      {.name = "faces",
+       .type = fg::ParamType::integer,
+       .default_value = 24,
+       .min = 1.0,
+       .max = 1024.0,
+       .description = "Number of faces shown (clamped to the atlas)."},
+      {.name = "columns",
+       .type = fg::ParamType::integer,
+       .default_value = 0,
+       .min = 0.0,
+       .max = 64.0,
+       .description = "Grid columns; 0 picks the count that gives the largest cells."},
+  };
+  return desc;
+}
+
+}  // namespace antumbra::passes

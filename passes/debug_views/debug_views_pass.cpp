@@ -1,0 +1,157 @@
+#include "debug_views_pass.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "antumbra/gpu/context.hpp"
+#include "antumbra/gpu/pipelines.hpp"
+#include "common/frame_resources.hpp"
+
+namespace antumbra::passes {
+namespace {
+
+constexpr VkShaderStageFlags kCompute = VK_SHADER_STAGE_COMPUTE_BIT;
+
+struct LayerViewConstants {
+  std::uint32_t dominant;
+  float dim;
+  float stripe_px;
+  float no_layer;
+};
+
+struct PenumbraViewConstants {
+  float max_width;
+  std::uint32_t layers;
+};
+
+struct AtlasViewConstants {
+  std::uint32_t first_face;
+  std::uint32_t face_count;
+  std::uint32_t columns;
+  std::uint32_t cell;
+  std::uint32_t layers;
+};
+
+std::uint32_t groups(std::uint32_t size, std::uint32_t local) {
+  return (size + local - 1) / local;
+}
+
+// Square cells, as large as fit: `columns` fixed, or the column count that gives the
+// largest cells for this many faces in this image.
+void grid_layout(VkExtent2D extent, std::uint32_t faces, std::uint32_t fixed_columns,
+                 std::uint32_t& columns, std::uint32_t& cell) {
+  columns = 1;
+  cell = 0;
+  const std::uint32_t first = fixed_columns > 0 ? fixed_columns : 1;
+  const std::uint32_t last = fixed_columns > 0 ? fixed_columns : faces;
+  for (std::uint32_t c = first; c <= last; ++c) {
+    const std::uint32_t rows = (faces + c - 1) / c;
+    const std::uint32_t size = std::min(extent.width / c, extent.height / rows);
+    if (size > cell) {
+      cell = size;
+      columns = c;
+    }
+  }
+  cell = std::max(cell, 1u);
+}
+
+}  // namespace
+
+void LayerViewPass::prepare(fgvk::PrepareContext& context) {
+  auto shader = load_shader(context, "debug_views/layer_view.comp", shader_files_);
+  gpu::DescriptorSetLayoutBuilder builder;
+  builder.uniform_buffer(0, kCompute)
+      .storage_buffer(1, kCompute)
+      .storage_buffer(2, kCompute)
+      .combined_image_sampler(3, kCompute)
+      .combined_image_sampler(4, kCompute)
+      .storage_image(5, kCompute);
+  compute_ = build_compute_pipeline(context, shader, builder, sizeof(LayerViewConstants));
+}
+
+void LayerViewPass::execute(fgvk::ExecuteContext& context) {
+  const auto& b = context.bindings;
+  const auto& depth = b.required_image("depth");
+  const auto& normal = b.required_image("normal");
+  const auto& view = b.required_image("view");
+  const VkSampler nearest = context.samplers.nearest_clamp;
+  const VkCommandBuffer cmd = context.cmd;
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, compute_.pipeline);
+  gpu::PushDescriptors()
+      .uniform_buffer(0, context.frame.frame_uniforms)
+      .storage_buffer(1, context.frame.lights)
+      .storage_buffer(2, b.buffer("layerTable")->buffer)
+      .combined_image_sampler(3, depth.view, nearest, depth.layout)
+      .combined_image_sampler(4, normal.view, nearest, normal.layout)
+      .storage_image(5, view.view, view.layout)
+      .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, compute_.layout);
+  const LayerViewConstants constants{
+      param_string(context.pass, "weighting") == "dominant" ? 1u : 0u,
+      param_float(context.pass, "dim"), param_float(context.pass, "stripeWidth"),
+      param_float(context.pass, "noLayerGrey")};
+  vkCmdPushConstants(cmd, compute_.layout, kCompute, 0, sizeof constants, &constants);
+  // 16x16 groups: the shader culls lights per tile against the tile's depth bounds.
+  vkCmdDispatch(cmd, groups(view.extent.width, 16), groups(view.extent.height, 16), 1);
+}
+
+void PenumbraViewPass::prepare(fgvk::PrepareContext& context) {
+  auto shader = load_shader(context, "debug_views/penumbra_view.comp", shader_files_);
+  gpu::DescriptorSetLayoutBuilder builder;
+  builder.combined_image_sampler(0, kCompute).storage_image(1, kCompute);
+  compute_ = build_compute_pipeline(context, shader, builder, sizeof(PenumbraViewConstants));
+}
+
+void PenumbraViewPass::execute(fgvk::ExecuteContext& context) {
+  const auto& penumbra = context.bindings.required_image("penumbra");
+  const auto& view = context.bindings.required_image("view");
+  const VkCommandBuffer cmd = context.cmd;
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, compute_.pipeline);
+  gpu::PushDescriptors()
+      .combined_image_sampler(0, penumbra.array_view, context.samplers.nearest_clamp,
+                              penumbra.layout)
+      .storage_image(1, view.view, view.layout)
+      .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, compute_.layout);
+  const PenumbraViewConstants constants{param_float(context.pass, "maxWidth"), penumbra.layers};
+  vkCmdPushConstants(cmd, compute_.layout, kCompute, 0, sizeof constants, &constants);
+  vkCmdDispatch(cmd, groups(view.extent.width, 8), groups(view.extent.height, 8), 1);
+}
+
+void AtlasViewPass::prepare(fgvk::PrepareContext& context) {
+  linearise_ = context.bindings.buffer("shadowData") != nullptr;
+  std::vector<gpu::ShaderDefine> defines;
+  if (linearise_) defines.push_back({"HAS_SHADOW_DATA", "1"});
+  auto shader = load_shader(context, "debug_views/atlas_view.comp", shader_files_, defines);
+  gpu::DescriptorSetLayoutBuilder builder;
+  builder.combined_image_sampler(0, kCompute);
+  if (linearise_) builder.storage_buffer(1, kCompute);
+  builder.storage_image(2, kCompute);
+  compute_ = build_compute_pipeline(context, shader, builder, sizeof(AtlasViewConstants));
+}
+
+void AtlasViewPass::execute(fgvk::ExecuteContext& context) {
+  const auto& b = context.bindings;
+  const auto& atlas = b.required_image("atlas");
+  const auto& view = b.required_image("view");
+  const auto first = static_cast<std::uint32_t>(param_float(context.pass, "firstFace"));
+  const std::uint32_t available = atlas.layers > first ? atlas.layers - first : 1u;
+  const std::uint32_t faces =
+      std::min(static_cast<std::uint32_t>(param_float(context.pass, "faces")), available);
+  std::uint32_t columns = 1;
+  std::uint32_t cell = 1;
+  grid_layout(view.extent, faces, static_cast<std::uint32_t>(param_float(context.pass, "columns")),
+              columns, cell);
+
+  const VkCommandBuffer cmd = context.cmd;
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, compute_.pipeline);
+  gpu::PushDescriptors descriptors;
+  descriptors.combined_image_sampler(0, atlas.array_view, context.samplers.nearest_clamp,
+                                     atlas.layout);
+  if (linearise_) descriptors.storage_buffer(1, b.buffer("shadowData")->buffer);
+  descriptors.storage_image(2, view.view, view.layout)
+      .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, compute_.layout);
+  const AtlasViewConstants constants{first, faces, columns, cell, atlas.layers};
+  vkCmdPushConstants(cmd, compute_.layout, kCompute, 0, sizeof constants, &constants);
+  vkCmdDispatch(cmd, groups(view.extent.width, 8), groups(view.extent.height, 8), 1);
+}
+
+}  // namespace antumbra::passes
