@@ -1,5 +1,6 @@
-// Golden image of the default frame: data/graphs/deferred.json + data/scenes/atrium.json
-// at 256x144, 2 frames, compared with tests/data/gpu/golden/deferred_256x144.png.
+// Golden images of the shipped graphs on data/scenes/atrium.json at 256x144, 2 frames:
+// deferred.json (the foundation frame), layered-ssss.json (the default), pcss.json and
+// hard.json, each compared with tests/data/gpu/golden/<graph>_256x144.png.
 //
 // Tolerance: a pixel matches when every channel is within 3/255; at least 99.5% of
 // the pixels must match, and the mean absolute difference over all channels of all
@@ -10,7 +11,7 @@
 // by more than 3/255 or shifts the mean, and fails.
 //
 // Regenerate: ANTUMBRA_UPDATE_GOLDEN=1 ./build/tests/gpu/antumbra_gpu_tests
-//             --gtest_filter='Golden*'  (then review and commit the PNG).
+//             --gtest_filter='*GoldenTest*'  (then review and commit the PNGs).
 
 #include <cstdio>
 #include <cstdlib>
@@ -34,11 +35,13 @@ bool update_golden() {
 
 }  // namespace
 
-class GoldenTest : public RenderTest {};
+class GoldenTest : public RenderTest, public ::testing::WithParamInterface<std::string> {};
 
-TEST_F(GoldenTest, DefaultFrameMatchesGolden) {
+TEST_P(GoldenTest, FrameMatchesGolden) {
+  const std::string name = GetParam();
   OPEN_SESSION(session, kGolden);
-  ASSERT_NO_FATAL_FAILURE(load_graph_ok(*session, default_graph()));
+  ASSERT_NO_FATAL_FAILURE(load_graph_ok(
+      *session, load_graph_file(source_dir() / "data" / "graphs" / (name + ".json"))));
   session->set_scene(default_scene());
   session->render(2, nullptr);
   expect_no_validation_errors(*session);
@@ -48,7 +51,7 @@ TEST_F(GoldenTest, DefaultFrameMatchesGolden) {
   ASSERT_EQ(actual.height, kGolden.height);
   ASSERT_EQ(actual.channels, 4u);
 
-  const auto golden = gpu_data_dir() / "golden" / "deferred_256x144.png";
+  const auto golden = gpu_data_dir() / "golden" / (name + "_256x144.png");
   if (update_golden()) {
     std::filesystem::create_directories(golden.parent_path());
     ASSERT_TRUE(save_png(golden, actual)) << "cannot write " << golden;
@@ -73,3 +76,13 @@ TEST_F(GoldenTest, DefaultFrameMatchesGolden) {
     std::printf("golden within tolerance: %s\n", describe(stats).c_str());
   }
 }
+
+INSTANTIATE_TEST_SUITE_P(Graphs, GoldenTest,
+                         ::testing::Values("deferred", "layered-ssss", "pcss", "hard"),
+                         [](const ::testing::TestParamInfo<std::string>& param) {
+                           std::string name = param.param;
+                           for (char& c : name) {
+                             if (c == '-') c = '_';
+                           }
+                           return name;
+                         });
