@@ -32,7 +32,7 @@ test: build
 test-asan: deps
 	@cmake -S . -B $(ASAN_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DANTUMBRA_SANITIZE=ON \
 	  -DANTUMBRA_BUILD_BENCHMARKS=OFF $(CMAKE_ARGS) > /dev/null
-	@cmake --build $(ASAN_BUILD) -j$(JOBS) --target antumbra_framegraph_tests antumbra_scene_tests antumbra_layering_tests
+	@cmake --build $(ASAN_BUILD) -j$(JOBS) --target antumbra_framegraph_tests antumbra_scene_tests antumbra_layering_tests antumbra_watch_tests
 	@ctest --test-dir $(ASAN_BUILD) --output-on-failure --no-tests=error -j$(JOBS) -L asan
 
 # libFuzzer over graph parsing + compiling (clang). FUZZ_SECONDS bounds the run.

@@ -10,6 +10,7 @@
 #include "antumbra/scene/scene_file.hpp"
 #include "commands.hpp"
 #include "render_session.hpp"
+#include "watch_loop.hpp"
 
 namespace antumbra::app {
 namespace {
@@ -179,6 +180,12 @@ int run_render(const RenderOptions& options) {
       t += ms;
     }
     trace.write(options.trace);
+  }
+  if (options.watch) {
+    std::fflush(stdout);
+    WatchOptions watch{graph_path, scene_path, options.output, options.out, options.watch_seconds};
+    const int code = run_watch_loop(session, watch);
+    if (code != kExitOk) return code;
   }
   if (options.validation && session.gpu().validation_error_count() > 0) {
     std::fprintf(stderr, "antumbra render: %zu validation error(s)\n",

@@ -36,6 +36,8 @@ struct RenderOptions {
   std::string trace;
   std::string hdr_out;          // optional .pfm of the HDR resource
   std::string format = "text";  // text | json (timings, pass reports, diagnostics)
+  bool watch = false;           // keep running; reload on file changes
+  double watch_seconds = 0;     // with watch: stop after this long (0 = until interrupted)
 };
 
 struct BenchOptions {

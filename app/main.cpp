@@ -35,6 +35,11 @@ int dispatch(int argc, char** argv) {
   render_cmd->add_flag("--validation", render.validation,
                        "Khronos validation + synchronization validation");
   render_cmd->add_option("--trace", render.trace, "Write a Chrome/Perfetto trace JSON");
+  render_cmd->add_flag("--watch", render.watch,
+                       "Keep running: reload the graph, scene and shaders when they change");
+  render_cmd->add_option("--watch-seconds", render.watch_seconds,
+                         "With --watch: stop after this many seconds (0 = until interrupted)")
+      ->check(CLI::Range(0.0, 1e9));
   render_cmd->add_option("--format", render.format, "text|json report on stdout")
       ->check(CLI::IsMember({"text", "json"}))
       ->capture_default_str();

@@ -1,0 +1,90 @@
+#include "watch_loop.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <thread>
+
+#include "antumbra/fg/graph_desc.hpp"
+#include "antumbra/fg/json_document.hpp"
+#include "antumbra/gpu/timing.hpp"
+#include "antumbra/scene/scene_file.hpp"
+#include "antumbra/watch/file_watcher.hpp"
+#include "commands.hpp"
+
+namespace antumbra::app {
+namespace {
+
+void print(const fg::Diagnostics& diagnostics) {
+  for (const auto& d : diagnostics) {
+    if (d.severity != fg::Severity::note) std::fprintf(stderr, "%s\n", fg::format_text(d).c_str());
+  }
+}
+
+// Parses and loads the graph beside the running one; diagnostics when it is refused.
+fg::Diagnostics reload_graph(RenderSession& session, const WatchOptions& options) {
+  auto document = fg::load_json_file(options.graph_path);
+  if (!document.ok()) return document.diagnostics();
+  auto graph = fg::parse_graph(document.value());
+  if (!graph.ok()) return graph.diagnostics();
+  if (!options.output.empty()) graph->output = options.output;
+  return session.load_graph(graph.value());
+}
+
+std::vector<std::filesystem::path> watched_files(const RenderSession& session,
+                                                 const WatchOptions& options) {
+  std::vector<std::filesystem::path> files{options.graph_path, options.scene_path};
+  for (const auto& f : session.executor().shader_files()) files.emplace_back(f);
+  return files;
+}
+
+}  // namespace
+
+int run_watch_loop(RenderSession& session, const WatchOptions& options) {
+  watch::FileWatcher watcher;
+  watcher.set(watched_files(session, options));
+  std::printf("watching %zu file(s); edit the graph, the scene or a shader\n", watcher.size());
+  std::fflush(stdout);
+  gpu::CpuTimer clock;
+  int reloads = 0;
+  while (options.seconds <= 0 || clock.elapsed_ms() < options.seconds * 1000.0) {
+    std::this_thread::sleep_for(std::chrono::duration<double, std::milli>(options.poll_ms));
+    const auto changed = watcher.poll();
+    if (changed.empty()) continue;
+    gpu::CpuTimer latency;
+    const bool scene_changed =
+        std::find(changed.begin(), changed.end(), std::filesystem::path(options.scene_path)) !=
+        changed.end();
+    const bool graph_changed = scene_changed ? changed.size() > 1 : true;
+    fg::Diagnostics diagnostics;
+    if (scene_changed) {
+      auto scene = scene::load_scene_file(options.scene_path);
+      diagnostics.append(scene.diagnostics());
+      if (scene.ok()) session.set_scene(std::move(scene.value()));
+    }
+    // A shader edit re-prepares every pass: pipelines are rebuilt beside the live ones.
+    if (graph_changed) diagnostics.append(reload_graph(session, options));
+    print(diagnostics);
+    if (diagnostics.has_errors()) {
+      std::printf("reload failed (%s); the last good frame keeps running\n",
+                  changed.front().string().c_str());
+      std::fflush(stdout);
+      continue;
+    }
+    session.render(1, nullptr);
+    const std::string resource =
+        session.executor()
+            .plan()
+            .resources.at(static_cast<std::size_t>(session.executor().plan().output))
+            .name;
+    session.write_image(resource, options.out);
+    ++reloads;
+    watcher.set(watched_files(session, options));  // shaders may have changed
+    std::printf("reloaded %s in %.1f ms (change seen -> new frame written to %s)\n",
+                changed.front().string().c_str(), latency.elapsed_ms(), options.out.c_str());
+    std::fflush(stdout);
+  }
+  std::printf("watch ended after %d reload(s)\n", reloads);
+  return kExitOk;
+}
+
+}  // namespace antumbra::app
