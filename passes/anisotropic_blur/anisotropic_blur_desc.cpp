@@ -1,5 +1,6 @@
 #include "anisotropic_blur_pass.hpp"
 #include "common/layer_checks.hpp"
+#include "common/lighting_reflection.hpp"
 
 #include "antumbra/fg/diagnostic_codes.hpp"
 
@@ -55,16 +56,8 @@ fg::PassDesc AnisotropicBlurPass::describe() {
       "layer, sized by its penumbra (run it twice: horizontal from the hard-shadow bits, then "
       "vertical from the first result).";
   desc.ports = {
-      {.name = "depth",
-       .access = Access::sampled,
-       .stage = Stage::compute,
-       .formats = {Format::d32f, Format::d16},
-       .description = "G-buffer depth (full resolution)."},
-      {.name = "normal",
-       .access = Access::sampled,
-       .stage = Stage::compute,
-       .formats = {Format::rgba16f, Format::rgba32f},
-       .description = "G-buffer view-space normal."},
+      compute_input("depth", {Format::d32f, Format::d16}, "G-buffer depth (full resolution)."),
+      compute_input("normal", {Format::rgba16f, Format::rgba32f}, "G-buffer view-space normal."),
       {.name = "penumbra",
        .access = Access::sampled,
        .stage = Stage::compute,

@@ -7,26 +7,24 @@ using fg::Format;
 using fg::PortDirection;
 using fg::Stage;
 
+fg::PortDesc compute_input(std::string name, std::vector<fg::Format> formats,
+                           std::string description, std::string size_group) {
+  return {.name = std::move(name),
+          .access = Access::sampled,
+          .stage = Stage::compute,
+          .formats = std::move(formats),
+          .size_group = std::move(size_group),
+          .description = std::move(description)};
+}
+
 std::vector<fg::PortDesc> lighting_ports() {
   return {
-      {.name = "depth",
-       .access = Access::sampled,
-       .stage = Stage::compute,
-       .formats = {Format::d32f, Format::d16, Format::d24s8},
-       .size_group = "screen",
-       .description = "G-buffer depth."},
-      {.name = "normal",
-       .access = Access::sampled,
-       .stage = Stage::compute,
-       .formats = {Format::rgba16f, Format::rgba32f},
-       .size_group = "screen",
-       .description = "G-buffer view-space normal and roughness."},
-      {.name = "albedo",
-       .access = Access::sampled,
-       .stage = Stage::compute,
-       .formats = {Format::rgba8, Format::rgba16f},
-       .size_group = "screen",
-       .description = "G-buffer albedo and metallic."},
+      compute_input("depth", {Format::d32f, Format::d16, Format::d24s8}, "G-buffer depth.",
+                    "screen"),
+      compute_input("normal", {Format::rgba16f, Format::rgba32f},
+                    "G-buffer view-space normal and roughness.", "screen"),
+      compute_input("albedo", {Format::rgba8, Format::rgba16f}, "G-buffer albedo and metallic.",
+                    "screen"),
       {.name = "hdr",
        .direction = PortDirection::output,
        .access = Access::storage_write,

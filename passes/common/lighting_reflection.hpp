@@ -3,11 +3,17 @@
 // baselines, shadow-reference): the same G-buffer inputs, HDR output and lighting
 // parameters, so the variants stay comparable and a graph can swap one for another.
 
+#include <string>
 #include <vector>
 
 #include "antumbra/fg/reflection.hpp"
 
 namespace antumbra::passes {
+
+// An image input read through a sampler by a compute shader: the most common port of
+// the screen-space passes (G-buffer depth and normals above all).
+fg::PortDesc compute_input(std::string name, std::vector<fg::Format> formats,
+                           std::string description, std::string size_group = {});
 
 // depth, normal, albedo sampled in compute; hdr written as a storage image.
 std::vector<fg::PortDesc> lighting_ports();

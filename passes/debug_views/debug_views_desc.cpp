@@ -1,3 +1,4 @@
+#include "common/lighting_reflection.hpp"
 #include "debug_views_pass.hpp"
 
 namespace antumbra::passes {
@@ -29,18 +30,9 @@ fg::PassDesc LayerViewPass::describe() {
       "reaches, mixed by attenuation; red/white stripes where two lights share a layer (over "
       "the cap); a dimmed grey-scale of the surface elsewhere.";
   desc.ports = {
-      {.name = "depth",
-       .access = Access::sampled,
-       .stage = Stage::compute,
-       .formats = {Format::d32f, Format::d16},
-       .size_group = "screen",
-       .description = "G-buffer depth."},
-      {.name = "normal",
-       .access = Access::sampled,
-       .stage = Stage::compute,
-       .formats = {Format::rgba16f, Format::rgba32f},
-       .size_group = "screen",
-       .description = "G-buffer view-space normal (shades the grey-scale surface)."},
+      compute_input("depth", {Format::d32f, Format::d16}, "G-buffer depth.", "screen"),
+      compute_input("normal", {Format::rgba16f, Format::rgba32f},
+                    "G-buffer view-space normal (shades the grey-scale surface).", "screen"),
       {.name = "layerTable",
        .kind = ResourceKind::buffer,
        .access = Access::storage_read,

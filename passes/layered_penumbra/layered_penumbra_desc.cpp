@@ -1,4 +1,5 @@
 #include "common/layer_checks.hpp"
+#include "common/lighting_reflection.hpp"
 #include "layered_penumbra_pass.hpp"
 
 namespace antumbra::passes {
@@ -25,18 +26,9 @@ fg::PassDesc LayeredPenumbraPass::describe() {
       "Per pixel and screen layer: penumbra width from a blocker search in every light's shadow "
       "faces (one dispatch, texture arrays), hard-shadow bits and translucent shadow colour.";
   desc.ports = {
-      {.name = "depth",
-       .access = Access::sampled,
-       .stage = Stage::compute,
-       .formats = {Format::d32f, Format::d16},
-       .size_group = "screen",
-       .description = "G-buffer depth."},
-      {.name = "normal",
-       .access = Access::sampled,
-       .stage = Stage::compute,
-       .formats = {Format::rgba16f, Format::rgba32f},
-       .size_group = "screen",
-       .description = "G-buffer view-space normal."},
+      compute_input("depth", {Format::d32f, Format::d16}, "G-buffer depth.", "screen"),
+      compute_input("normal", {Format::rgba16f, Format::rgba32f}, "G-buffer view-space normal.",
+                    "screen"),
       {.name = "atlas",
        .access = Access::sampled,
        .stage = Stage::compute,
