@@ -81,39 +81,39 @@ GraphicsPipelineBuilder& GraphicsPipelineBuilder::view_mask(std::uint32_t mask) 
   return *this;
 }
 
-GraphicsPipelineBuilder& GraphicsPipelineBuilder::alpha_blend(std::uint32_t attachment) {
-  auto& b = blend_.at(attachment);
+namespace {
+
+// One additive-op blend equation for colour and alpha: the three presets differ only
+// in their factors.
+void enable_blend(VkPipelineColorBlendAttachmentState& b, VkBlendFactor src_color,
+                  VkBlendFactor dst_color, VkBlendFactor src_alpha, VkBlendFactor dst_alpha) {
   b.blendEnable = VK_TRUE;
-  b.srcColorBlendFactor = VK_BLEND_FACTOR_SRC_ALPHA;
-  b.dstColorBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
+  b.srcColorBlendFactor = src_color;
+  b.dstColorBlendFactor = dst_color;
   b.colorBlendOp = VK_BLEND_OP_ADD;
-  b.srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
-  b.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
+  b.srcAlphaBlendFactor = src_alpha;
+  b.dstAlphaBlendFactor = dst_alpha;
   b.alphaBlendOp = VK_BLEND_OP_ADD;
+}
+
+}  // namespace
+
+GraphicsPipelineBuilder& GraphicsPipelineBuilder::alpha_blend(std::uint32_t attachment) {
+  enable_blend(blend_.at(attachment), VK_BLEND_FACTOR_SRC_ALPHA,
+               VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA, VK_BLEND_FACTOR_ONE,
+               VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA);
   return *this;
 }
 
 GraphicsPipelineBuilder& GraphicsPipelineBuilder::additive_blend(std::uint32_t attachment) {
-  auto& b = blend_.at(attachment);
-  b.blendEnable = VK_TRUE;
-  b.srcColorBlendFactor = VK_BLEND_FACTOR_ONE;
-  b.dstColorBlendFactor = VK_BLEND_FACTOR_ONE;
-  b.colorBlendOp = VK_BLEND_OP_ADD;
-  b.srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
-  b.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
-  b.alphaBlendOp = VK_BLEND_OP_ADD;
+  enable_blend(blend_.at(attachment), VK_BLEND_FACTOR_ONE, VK_BLEND_FACTOR_ONE, VK_BLEND_FACTOR_ONE,
+               VK_BLEND_FACTOR_ONE);
   return *this;
 }
 
 GraphicsPipelineBuilder& GraphicsPipelineBuilder::multiply_blend(std::uint32_t attachment) {
-  auto& b = blend_.at(attachment);
-  b.blendEnable = VK_TRUE;
-  b.srcColorBlendFactor = VK_BLEND_FACTOR_DST_COLOR;
-  b.dstColorBlendFactor = VK_BLEND_FACTOR_ZERO;
-  b.colorBlendOp = VK_BLEND_OP_ADD;
-  b.srcAlphaBlendFactor = VK_BLEND_FACTOR_DST_ALPHA;
-  b.dstAlphaBlendFactor = VK_BLEND_FACTOR_ZERO;
-  b.alphaBlendOp = VK_BLEND_OP_ADD;
+  enable_blend(blend_.at(attachment), VK_BLEND_FACTOR_DST_COLOR, VK_BLEND_FACTOR_ZERO,
+               VK_BLEND_FACTOR_DST_ALPHA, VK_BLEND_FACTOR_ZERO);
   return *this;
 }
 
