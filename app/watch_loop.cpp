@@ -6,6 +6,7 @@
 
 #include "antumbra/fg/graph_desc.hpp"
 #include "antumbra/fg/json_document.hpp"
+#include "antumbra/fg/plan_diff.hpp"
 #include "antumbra/gpu/timing.hpp"
 #include "antumbra/scene/scene_file.hpp"
 #include "antumbra/watch/file_watcher.hpp"
@@ -56,6 +57,7 @@ int run_watch_loop(RenderSession& session, const WatchOptions& options) {
         changed.end();
     const bool graph_changed = scene_changed ? changed.size() > 1 : true;
     fg::Diagnostics diagnostics;
+    const fg::Plan before = session.executor().plan();
     if (scene_changed) {
       auto scene = scene::load_scene_file(options.scene_path);
       diagnostics.append(scene.diagnostics());
@@ -81,6 +83,9 @@ int run_watch_loop(RenderSession& session, const WatchOptions& options) {
     watcher.set(watched_files(session, options));  // shaders may have changed
     std::printf("reloaded %s in %.1f ms (change seen -> new frame written to %s)\n",
                 changed.front().string().c_str(), latency.elapsed_ms(), options.out.c_str());
+    if (graph_changed) {
+      std::printf("  %s\n", fg::to_text(fg::diff_plans(before, session.executor().plan())).c_str());
+    }
     std::fflush(stdout);
   }
   std::printf("watch ended after %d reload(s)\n", reloads);

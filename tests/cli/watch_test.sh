@@ -40,6 +40,10 @@ grep -q "deferred.json:2:[0-9]*: error\[FG001\]" "$log" || fail "no located synt
 sed 's/"aces"/"reinhard"/' "$tmp/good.json" > "$tmp/reinhard.json"
 edit "$tmp/reinhard.json" "$graph"
 wait_for "reloaded" 1
+# The diff names the one changed pass and keeps every resource (same descriptions).
+grep -q "passes +0 -0 ~1, culled 0 unculled 0, resources +0 -0 realloc 0 kept [1-9]" "$log" \
+  || fail "no reload diff with one changed pass and kept resources"
+grep -q "passes changed: tonemap" "$log" || fail "the diff does not name the changed pass"
 
 cp "$shader" "$tmp/good.frag"
 sed 's/void main() {/void main() { this is not glsl/' "$tmp/good.frag" > "$tmp/bad.frag"

@@ -161,3 +161,40 @@ TEST_F(ReloadTest, ShaderErrorOnFirstLoadLoadsNothing) {
   EXPECT_EQ(error->line, line);
   EXPECT_FALSE(session->executor().loaded());
 }
+
+// Resources whose description did not change move to the new plan with their contents:
+// the same VkImage, the cached shadow atlas still valid (nothing flashes); a resource
+// whose size changed is reallocated. A failed load hands nothing over.
+TEST_F(ReloadTest, UnchangedResourcesKeepTheirImagesAcrossAReload) {
+  OPEN_SESSION(session, kSmall);
+  session->set_scene(default_scene());
+  auto graph = load_graph_file(source_dir() / "data" / "graphs" / "layered-ssss.json");
+  load_graph_ok(*session, graph);
+  session->render(2, nullptr);
+  const VkImage atlas = session->executor().image("atlas")->image;
+  const VkImage penumbra = session->executor().image("penumbra")->image;
+  const auto atlas_texels = read_resource(*session, "atlas", 30).texels;
+
+  for (auto& p : graph.passes) {
+    if (p.type == "anisotropic-blur") p.params["kernel"] = "5";
+  }
+  for (auto& r : graph.resources) {
+    // 8 layers of storage: new images
+    if (r.name == "penumbra" || r.name == "shadowH" || r.name == "shadow") r.layers = 2;
+  }
+  load_graph_ok(*session, graph);
+  EXPECT_GE(session->executor().kept_resources(), 3u) << "atlas, shadowColour and the output";
+  EXPECT_EQ(session->executor().image("atlas")->image, atlas) << "the atlas was reallocated";
+  EXPECT_NE(session->executor().image("penumbra")->image, penumbra);
+  EXPECT_EQ(read_resource(*session, "atlas", 30).texels, atlas_texels)
+      << "the kept atlas lost its contents";
+  session->render(2, nullptr);
+  EXPECT_EQ(session->executor().image("atlas")->image, atlas);
+
+  auto broken = graph;
+  broken.passes.front().type = "no-such-pass";
+  EXPECT_TRUE(session->load_graph(broken).has_errors());
+  EXPECT_EQ(session->executor().image("atlas")->image, atlas);
+  session->render(1, nullptr);
+  expect_no_validation_errors(*session);
+}

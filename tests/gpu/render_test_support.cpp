@@ -75,13 +75,14 @@ scene::Scene default_scene() {
   return load_scene(source_dir() / "data" / "scenes" / "atrium.json");
 }
 
-gpu::HostImage read_resource(app::RenderSession& session, const std::string& resource) {
+gpu::HostImage read_resource(app::RenderSession& session, const std::string& resource,
+                             std::uint32_t layer) {
   const gpu::Image* image = session.executor().gpu_image(resource);
   const fgvk::BoundImage* bound = session.executor().image(resource);
   if (image == nullptr || bound == nullptr) {
     throw std::runtime_error("resource \"" + resource + "\" is not a realised image");
   }
-  return gpu::read_image(session.gpu(), *image, bound->layout);
+  return gpu::read_image(session.gpu(), *image, bound->layout, layer);
 }
 
 gpu::HostImage read_output(app::RenderSession& session) {

@@ -40,7 +40,9 @@ std::string describe(const fg::Diagnostics& diagnostics);
 
 // Read-back after render() (which waits for the frames), through gpu::read_image:
 // colour formats, and depth (d32f/d16) as one channel.
-gpu::HostImage read_resource(app::RenderSession& session, const std::string& resource);
+// `layer`: the array layer of layered images.
+gpu::HostImage read_resource(app::RenderSession& session, const std::string& resource,
+                             std::uint32_t layer = 0);
 gpu::HostImage read_output(app::RenderSession& session);  // the plan's output resource
 
 // 8-bit image, as written to PNG: the texels quantised like gpu::write_png does.

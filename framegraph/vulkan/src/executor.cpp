@@ -1,5 +1,7 @@
 #include "antumbra/fgvk/executor.hpp"
 
+#include "antumbra/fg/plan_diff.hpp"
+
 #include <algorithm>
 #include <stdexcept>
 
@@ -24,6 +26,7 @@ struct RealisedResource {
   BoundBuffer bound_buffer;
   SyncState state;  // as the GPU will see it after everything recorded so far
   bool depth = false;
+  VkDeviceSize image_bytes = 0;  // individually allocated image memory
 };
 
 gpu::ImageDesc image_desc(const fg::PlanResource& r) {
@@ -45,6 +48,7 @@ struct Executor::State {
   std::vector<std::unique_ptr<Pass>> passes;
   std::vector<PassBindings> bindings;
   std::uint64_t bytes = 0;  // heap + individually allocated resources
+  std::size_t kept = 0;     // resources handed over from the previous plan
 };
 
 Executor::Executor(gpu::Context& gpu, gpu::ShaderCompiler& shaders, const PassRegistry& registry,
@@ -115,10 +119,25 @@ void Executor::load(fg::Plan plan) {
   }
 
   state->resources.resize(resources.size());
+  // Resources the live plan realised with the same description are handed over at the
+  // swap, contents included (no reallocation, persistent images keep what they hold);
+  // until then the new state only borrows their handles, so a failed load leaves the
+  // live state untouched.
+  std::vector<int> kept(resources.size(), -1);
   for (std::size_t i = 0; i < resources.size(); ++i) {
     const auto& r = resources[i];
     auto& out = state->resources[i];
     if (r.first_use < 0 && !r.is_output) continue;  // declared but unused: nothing to realise
+    if (const int old = live_match(r); old >= 0) {
+      const auto& live = state_->resources[static_cast<std::size_t>(old)];
+      kept[i] = old;
+      out.bound_buffer = live.bound_buffer;
+      out.bound_image = live.bound_image;
+      out.depth = live.depth;
+      state->bytes +=
+          r.kind == fg::ResourceKind::buffer ? live.buffer.allocation().size : live.image_bytes;
+      continue;
+    }
     if (r.kind == fg::ResourceKind::buffer) {
       const auto usage = buffer_usage(r);
       out.buffer = r.aliased ? gpu::Buffer::create_placed(gpu_, r.buffer_size, usage, state->heap,
@@ -132,7 +151,8 @@ void Executor::load(fg::Plan plan) {
     const auto desc = image_desc(r);
     out.image = r.aliased ? gpu::Image::create_placed(gpu_, desc, state->heap, r.heap_offset)
                           : gpu::Image::create(gpu_, desc);
-    if (!r.aliased) state->bytes += gpu::Image::memory_requirements(gpu_, desc).size;
+    out.image_bytes = r.aliased ? 0 : gpu::Image::memory_requirements(gpu_, desc).size;
+    state->bytes += out.image_bytes;
     out.depth = fg::is_depth_format(r.format);
     out.bound_image = {
         out.image.handle(), out.image.view(), out.image.array_view(),   desc.format, r.format,
@@ -165,7 +185,34 @@ void Executor::load(fg::Plan plan) {
   }
   // Only now, with everything created, replace the live state; the old objects go
   // to deferred destruction and die once no frame in flight uses them.
+  state->kept = 0;
+  for (std::size_t i = 0; i < kept.size(); ++i) {
+    if (kept[i] < 0) continue;
+    auto& live = state_->resources[static_cast<std::size_t>(kept[i])];
+    auto& out = state->resources[i];
+    out.image = std::move(live.image);
+    out.buffer = std::move(live.buffer);
+    out.image_bytes = live.image_bytes;
+    out.state = live.state;
+    out.bound_image.layout = live.bound_image.layout;
+    ++state->kept;
+  }
   state_ = std::move(state);
+}
+
+int Executor::live_match(const fg::PlanResource& resource) const {
+  if (!state_) return -1;
+  const int index = state_->plan.find_resource(resource.name);
+  if (index < 0) return -1;
+  const auto& live = state_->resources[static_cast<std::size_t>(index)];
+  if (!live.image && !live.buffer) return -1;
+  return fg::same_realisation(state_->plan.resources[static_cast<std::size_t>(index)], resource)
+             ? index
+             : -1;
+}
+
+std::size_t Executor::kept_resources() const {
+  return state_ ? state_->kept : 0;
 }
 
 void Executor::record_barriers(VkCommandBuffer cmd, const std::vector<fg::PlanBarrier>& barriers) {

@@ -43,8 +43,11 @@ class Executor {
   [[nodiscard]] fg::FootprintFn footprint_fn() const;
 
   // Realises `plan`. All-or-nothing: on an exception the previous plan stays live
-  // and its objects untouched.
+  // and its objects untouched. Resources of the live plan whose description did not
+  // change (fg::same_realisation) move to the new plan with their contents.
   void load(fg::Plan plan);
+  // How many resources the last load() took over from the plan before it.
+  [[nodiscard]] std::size_t kept_resources() const;
   [[nodiscard]] bool loaded() const { return state_ != nullptr; }
   [[nodiscard]] const fg::Plan& plan() const;
 
@@ -64,6 +67,8 @@ class Executor {
 
  private:
   struct State;
+  // Index of the live resource `resource` may take over, or -1.
+  [[nodiscard]] int live_match(const fg::PlanResource& resource) const;
   void record_barriers(VkCommandBuffer cmd, const std::vector<fg::PlanBarrier>& barriers);
 
   gpu::Context& gpu_;
