@@ -1,6 +1,7 @@
 // Per-tile light culling for 16x16 compute workgroups: the tile's depth bounds give a
-// view-space box; every light sphere touching it (and every directional light) is
-// appended to a shared list. A tile with more lights than the list holds sets
+// view-space box; every light whose bounding sphere (lights.glsl light_bounding_sphere:
+// point lights' range sphere, spot lights' cone bound) touches it, and every directional
+// light, is appended to a shared list. A tile with more lights than the list holds sets
 // `tile_overflow`, and its pixels then loop over every light: slower, never wrong.
 //
 // The including shader defines TILE_LIGHTS_MAX, declares `Frame frame` (frame.glsl)
@@ -54,11 +55,12 @@ void tile_cull(float depth, bool valid) {
   uint count = frame.counts.x;
   uint threads = gl_WorkGroupSize.x * gl_WorkGroupSize.y;
   for (uint i = local; i < count; i += threads) {
-    vec4 pr = lights[i].position_range;
-    vec3 closest = clamp(pr.xyz, box_min, box_max);
-    vec3 d = closest - pr.xyz;
-    // Directional lights cover every tile; spot lights are culled by their sphere.
-    if (light_is_directional(lights[i]) || dot(d, d) <= pr.w * pr.w) {
+    // Directional lights cover every tile; point lights are culled by their range
+    // sphere, spot lights by their cone's bounding sphere (light_bounding_sphere).
+    vec4 sphere = light_bounding_sphere(lights[i]);
+    vec3 closest = clamp(sphere.xyz, box_min, box_max);
+    vec3 d = closest - sphere.xyz;
+    if (light_is_directional(lights[i]) || dot(d, d) <= sphere.w * sphere.w) {
       uint slot = atomicAdd(tile_count, 1u);
       if (slot < TILE_LIGHTS_MAX) {
         tile_lights[slot] = i;

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "common/light_bounds.hpp"
+
 namespace antumbra::passes::light_faces {
 namespace {
 
@@ -45,6 +47,40 @@ glm::mat4 spot_view_proj(const glm::vec3& position, const glm::vec3& direction, 
   const glm::vec4 ry(t / tan_half_fov, -glm::dot(t, position) / tan_half_fov);
   const glm::vec4 rw(f, -glm::dot(f, position));
   return from_rows(rx, ry, a * rw + glm::vec4(0.0f, 0.0f, 0.0f, c), rw);
+}
+
+shadow_faces::FacePyramid spot_pyramid(const glm::vec3& position, const glm::vec3& direction,
+                                       float range, float outer_degrees) {
+  const glm::vec3 f = glm::normalize(direction);
+  glm::vec3 s;
+  glm::vec3 t;
+  perpendicular_basis(f, s, t);
+  const float k = std::tan(glm::radians(std::clamp(outer_degrees, 0.0f, kMaxSpotPyramidDegrees)));
+  shadow_faces::FacePyramid p;
+  // Inside: k (f.d) >= |s.d| and k (f.d) >= |t.d| (d = point - apex); cap: f.d <= range.
+  const glm::vec3 normals[4] = {k * f - s, k * f + s, k * f - t, k * f + t};
+  for (std::size_t i = 0; i < 4; ++i) {
+    const glm::vec3 n = glm::normalize(normals[i]);
+    p.planes[i] = {n, -glm::dot(n, position)};
+  }
+  p.planes[4] = {-f, glm::dot(f, position) + range};
+  p.vertices[0] = position;
+  std::size_t i = 1;
+  for (float su : {-1.0f, 1.0f}) {
+    for (float tv : {-1.0f, 1.0f}) p.vertices[i++] = position + range * (f + k * (su * s + tv * t));
+  }
+  return p;
+}
+
+bool spot_may_be_visible(const shadow_faces::Frustum& camera, const scene::PointLight& light) {
+  const LightBound bound =
+      spot_bounding_sphere(light.position, light.direction, light.range, light.spot_outer);
+  if (!shadow_faces::sphere_may_intersect(camera, bound.centre, bound.radius)) return false;
+  if (light.spot_outer > kMaxSpotPyramidDegrees || glm::length(light.direction) <= 0.0f) {
+    return true;
+  }
+  return shadow_faces::pyramid_may_intersect(
+      camera, spot_pyramid(light.position, light.direction, light.range, light.spot_outer));
 }
 
 DirectionalFit fit_directional(const glm::vec3& direction, const glm::mat4& camera_view_proj,

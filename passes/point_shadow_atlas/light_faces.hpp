@@ -15,6 +15,7 @@
 #include <glm/glm.hpp>
 
 #include "antumbra/scene/scene.hpp"
+#include "shadow_faces.hpp"
 
 namespace antumbra::passes::light_faces {
 
@@ -28,6 +29,20 @@ float spot_tan_half_fov(float outer_degrees);
 
 glm::mat4 spot_view_proj(const glm::vec3& position, const glm::vec3& direction, float tan_half_fov,
                          float near, float far);
+
+// The region a spot light can light, as a convex volume for the culling tests: the square
+// pyramid circumscribing its outer cone (side planes at the outer half-angle), cut at
+// `range` along the axis. It holds the lit spherical sector (common/light_bounds.hpp).
+// Only for outer half-angles below kMaxSpotPyramidDegrees (wider cones: the sphere).
+inline constexpr float kMaxSpotPyramidDegrees = 75.0f;
+shadow_faces::FacePyramid spot_pyramid(const glm::vec3& position, const glm::vec3& direction,
+                                       float range, float outer_degrees);
+
+// Whether a spot light's one face can affect the camera's image: its cone's bounding
+// sphere (light_bounds.hpp) and, for cones up to kMaxSpotPyramidDegrees, the pyramid
+// above must both reach the camera frustum. Conservative (false only when disjoint);
+// the range sphere alone used to keep faces whose cone points away from the view.
+bool spot_may_be_visible(const shadow_faces::Frustum& camera, const scene::PointLight& light);
 
 struct DirectionalFit {
   glm::mat4 view_proj{1.0f};

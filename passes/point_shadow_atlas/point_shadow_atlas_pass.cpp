@@ -132,12 +132,14 @@ void PointShadowAtlasPass::prepare(fgvk::PrepareContext& context) {
     auto colour_vert =
         load_shader(context, "point_shadow_atlas/shadow_atlas.vert", shader_files_, colour_defines);
     auto colour_frag = load_shader(context, "point_shadow_atlas/shadow_colour.frag", shader_files_);
-    colour_pipeline_ = base()
-                           .shader(VK_SHADER_STAGE_VERTEX_BIT, colour_vert)
-                           .shader(VK_SHADER_STAGE_FRAGMENT_BIT, colour_frag)
-                           .depth(true, false, VK_COMPARE_OP_LESS_OR_EQUAL)
-                           .multiply_blend(0)
-                           .build(context.gpu, context.pass.name + ".colour");
+    colour_pipeline_ =
+        base()
+            .vertex_attribute(1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(GpuVertex, normal))
+            .shader(VK_SHADER_STAGE_VERTEX_BIT, colour_vert)
+            .shader(VK_SHADER_STAGE_FRAGMENT_BIT, colour_frag)
+            .depth(true, false, VK_COMPARE_OP_LESS_OR_EQUAL)
+            .multiply_blend(0)
+            .build(context.gpu, context.pass.name + ".colour");
   }
 
   depth_layer_views_.clear();

@@ -5,10 +5,11 @@
 //
 // Colour convention (optional `colour` port): opaque casters go to depth only;
 // translucent casters go to the colour map only, depth-tested against the opaque depth
-// (no depth write) and multiplied into a map cleared to white. A receiver reads
-// colour = product of the transmittances of the panes between it and the light that
-// are nearer the light than the first opaque caster; it cannot tell panes behind it
-// from panes in front of it, which is the usual one-layer approximation.
+// (no depth write) and multiplied into a map cleared to white; only their surfaces that
+// face the light write (the entry of a ray into a closed pane), so each pane counts once.
+// A receiver reads colour = product of the transmittances of the panes between it and
+// the light that are nearer the light than the first opaque caster; it cannot tell panes
+// behind it from panes in front of it, which is the usual one-layer approximation.
 
 #include <cstdint>
 #include <string>

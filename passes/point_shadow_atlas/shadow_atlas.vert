@@ -21,7 +21,11 @@ layout(location = 0) in vec3 in_position;
 layout(location = 2) in uint in_material;
 
 #ifdef COLOUR_PASS
+layout(location = 1) in vec3 in_normal;
 layout(location = 0) flat out uint out_material;
+// dot(normal, point - light) (the sun: dot(normal, its direction)), up to a positive
+// scale: < 0 where the surface faces the light. Constant over a flat triangle.
+layout(location = 1) out float out_away;
 #endif
 
 void main() {
@@ -30,6 +34,20 @@ void main() {
 #if defined(COLOUR_PASS)
   bool keep = translucent;  // the colour map holds translucent casters only
   out_material = in_material;
+  // From the face's rows: a perspective face has clip = (s.d / k, t.d / k, ., f.d) for
+  // d = point - light in the orthonormal frame (s, t, f) (k = tan(half fov), 1 for cube
+  // faces), so n.d = ((rx.n) clip.x + (ry.n) clip.y) / |rx|^2 + (rw.n) clip.w; an
+  // orthographic face has rw = 0 and its depth row along f, the sun's direction.
+  mat4 m = face.view_proj;
+  vec3 rx = vec3(m[0][0], m[1][0], m[2][0]);
+  vec3 ry = vec3(m[0][1], m[1][1], m[2][1]);
+  vec3 rz = vec3(m[0][2], m[1][2], m[2][2]);
+  vec3 rw = vec3(m[0][3], m[1][3], m[2][3]);
+  vec4 clip = m * vec4(in_position, 1.0);
+  out_away = dot(rw, rw) > 0.0 ? (dot(rx, in_normal) * clip.x + dot(ry, in_normal) * clip.y) /
+                                         max(dot(rx, rx), 1e-12) +
+                                     dot(rw, in_normal) * clip.w
+                               : dot(rz, in_normal);
 #elif defined(SKIP_TRANSLUCENT)
   bool keep = !translucent;  // translucent casters tint through the colour map instead
 #else

@@ -1,15 +1,20 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 // One sample of the shadow reference: every pixel tests each light of the batch against
-// the depth faces rendered from that light's sample point k (hard test, small bias) and
-// adds (weight * lit, weight) to its per-pixel, per-light visibility sums.
+// the depth faces rendered from that light's sample k (hard test, small bias) and adds
+// its coloured visibility to the per-pixel, per-light sums: 0 when an opaque caster
+// blocks, else the product of the tints of the translucent panes in between (the
+// colour layers, white where no pane is; reference_colour.frag), all weighted.
 //
-// Weight ("projected", the default): the cosine between the sphere's normal at the
-// sample and the direction to the receiver, zero on the far hemisphere. A uniformly
+// Point and spot lights: sample k is a point of the light's sphere, seen through cube
+// faces. Weight ("projected", the default): the cosine between the sphere's normal at
+// the sample and the direction to the receiver, zero on the far hemisphere. A uniformly
 // radiant sphere seen from the receiver is a uniformly bright disk; cosine-weighted
 // uniform sphere samples project to a uniform density on that disk, so the average is
 // the visible fraction of the light. "uniform" weighs every sample 1 (the projection of
 // a uniform sphere: more weight near the disk's rim, a linear penumbra profile).
+// Directional light: sample k is a direction spread uniformly over the sun's disc, seen
+// through its own orthographic map (matrices[]); every sample weighs 1 in both modes.
 #include "../common/frame.glsl"
 #include "../common/lights.glsl"
 #include "reference_faces.glsl"
@@ -22,7 +27,11 @@ layout(set = 0, binding = 2) uniform sampler2D g_depth;
 layout(set = 0, binding = 3) uniform sampler2D g_normal;
 layout(set = 0, binding = 4) uniform sampler2DArray faces;
 layout(set = 0, binding = 5, std430) readonly buffer Points { vec4 points[]; };
-layout(set = 0, binding = 6, std430) buffer Visibility { vec2 visibility[]; };
+// Per (slot, pixel) two vec4: (weight * rgb visibility, weight) and
+// (weight * opaque visibility, weight * untinted visibility, 0, 0).
+layout(set = 0, binding = 6, std430) buffer Visibility { vec4 visibility[]; };
+layout(set = 0, binding = 7) uniform sampler2DArray tints;
+layout(set = 0, binding = 8, std430) readonly buffer Matrices { mat4 matrices[]; };
 
 layout(push_constant) uniform Params {
   uvec2 image_size;
@@ -35,7 +44,11 @@ layout(push_constant) uniform Params {
   float face_size;
   uint weighting;  // 0 projected, 1 uniform
   float depth_bias;
+  uint tinted;  // 1: the batch's colour layers hold this sample's tints
 };
+
+// A tint this close to white is no tint (8-bit colour layers).
+const float kUntinted = 0.998;
 
 void main() {
   uvec2 pixel = gl_GlobalInvocationID.xy;
@@ -52,37 +65,65 @@ void main() {
   for (uint slot = 0u; slot < light_count; ++slot) {
     uint light = first_light + slot;
     if (light >= frame.counts.x) break;
-    vec4 centre_size = lights[light].world_size;
-    vec3 to_centre = centre_size.xyz - p;
-    float dist = length(to_centre);
-    // The resolve skips these pixels too (no light reaches them).
-    if (dist >= lights[light].position_range.w || dot(n, to_centre) <= 0.0) continue;
-    vec4 pf = points[light * samples + sample_index];
+    uint point = light * samples + sample_index;
+    vec4 pf = points[point];
     if (pf.w < 0.0) continue;  // no shadows: visibility stays 1
 
-    vec3 s = pf.xyz;
-    vec3 to_receiver = p - s;
-    float len = length(to_receiver);
     float weight = 1.0;
-    if (weighting == 0u && centre_size.w > 0.0 && len > 0.0) {
-      weight = max(dot((s - centre_size.xyz) / centre_size.w, to_receiver / len), 0.0);
-    }
-    if (weight <= 0.0) continue;
-
-    // Normal offset of about `normal_offset` texels at the receiver's distance, more at
-    // grazing angles (where a texel covers more depth), so faces do not self-shadow.
-    float n_dot_l = len > 0.0 ? clamp(dot(n, -to_receiver / len), 0.0, 1.0) : 1.0;
-    float texel = 2.0 * len / face_size;
-    vec3 d = p + n * (normal_offset * texel * (2.0 - n_dot_l)) - s;
-    uint face = reference_cube_face(d);
-    vec4 clip = reference_face_clip(d, face, near, pf.w);
     float lit = 1.0;
-    if (clip.w > near) {
-      float z = clip.z / clip.w;
-      vec2 fuv = clamp(clip.xy / clip.w * 0.5 + 0.5, 0.0, 1.0);
-      float stored = textureLod(faces, vec3(fuv, float(slot * 6u + face)), 0.0).r;
-      lit = (z < 1.0 && z > stored + depth_bias) ? 0.0 : 1.0;
+    vec3 fuv = vec3(0.0);  // face uv and layer of the lookup
+    bool inside = false;
+    if (light_is_directional(lights[light])) {
+      // The resolve skips surfaces facing away from the sun's centre too.
+      vec3 to_sun = -normalize(mat3(frame.inv_view) * lights[light].direction_type.xyz);
+      if (dot(n, to_sun) <= 0.0) continue;
+      // Normal offset of `normal_offset` map texels, more at grazing angles.
+      float n_dot_l = clamp(dot(n, -pf.xyz), 0.0, 1.0);
+      float texel = 2.0 * pf.w / face_size;
+      vec3 q = p + n * (normal_offset * texel * (2.0 - n_dot_l));
+      vec4 clip = matrices[point] * vec4(q, 1.0);
+      fuv = vec3(clip.xy * 0.5 + 0.5, float(slot * 6u));
+      // Outside the map (never, for receivers the fit holds) or its depth range: lit.
+      inside = clip.z > 0.0 && clip.z < 1.0 && all(greaterThanEqual(fuv.xy, vec2(0.0))) &&
+               all(lessThanEqual(fuv.xy, vec2(1.0)));
+      if (inside) {
+        float stored = textureLod(faces, fuv, 0.0).r;
+        lit = clip.z > stored + depth_bias ? 0.0 : 1.0;
+      }
+    } else {
+      vec4 centre_size = lights[light].world_size;
+      vec3 to_centre = centre_size.xyz - p;
+      float dist = length(to_centre);
+      // The resolve skips these pixels too (no light reaches them).
+      if (dist >= lights[light].position_range.w || dot(n, to_centre) <= 0.0) continue;
+      vec3 s = pf.xyz;
+      vec3 to_receiver = p - s;
+      float len = length(to_receiver);
+      if (weighting == 0u && centre_size.w > 0.0 && len > 0.0) {
+        weight = max(dot((s - centre_size.xyz) / centre_size.w, to_receiver / len), 0.0);
+      }
+      if (weight <= 0.0) continue;
+
+      // Normal offset of about `normal_offset` texels at the receiver's distance, more at
+      // grazing angles (where a texel covers more depth), so faces do not self-shadow.
+      float n_dot_l = len > 0.0 ? clamp(dot(n, -to_receiver / len), 0.0, 1.0) : 1.0;
+      float texel = 2.0 * len / face_size;
+      vec3 d = p + n * (normal_offset * texel * (2.0 - n_dot_l)) - s;
+      uint face = reference_cube_face(d);
+      vec4 clip = reference_face_clip(d, face, near, pf.w);
+      if (clip.w > near) {
+        float z = clip.z / clip.w;
+        fuv = vec3(clamp(clip.xy / clip.w * 0.5 + 0.5, 0.0, 1.0), float(slot * 6u + face));
+        float stored = textureLod(faces, fuv, 0.0).r;
+        lit = (z < 1.0 && z > stored + depth_bias) ? 0.0 : 1.0;
+        inside = z < 1.0;
+      }
     }
-    visibility[slot * pixels + pixel_index] += vec2(weight * lit, weight);
+    vec3 tint = vec3(1.0);
+    if (tinted != 0u && inside && lit > 0.0) tint = textureLod(tints, fuv, 0.0).rgb;
+    float untinted = (lit > 0.0 && all(greaterThanEqual(tint, vec3(kUntinted)))) ? 1.0 : 0.0;
+    uint index = 2u * (slot * pixels + pixel_index);
+    visibility[index] += vec4(weight * lit * tint, weight);
+    visibility[index + 1u] += vec4(weight * lit, weight * untinted, 0.0, 0.0);
   }
 }

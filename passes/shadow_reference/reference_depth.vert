@@ -6,22 +6,45 @@
 #endif
 #include "reference_faces.glsl"
 
-// Depth of one light's triangle list seen from one sample point of its sphere, one
-// instance per cube face (gl_InstanceIndex = face, firstInstance = the run's first face).
+// One light's triangle list seen from one sample: a point of its sphere (one instance per
+// cube face: gl_InstanceIndex = face, firstInstance = the run's first face), or one of
+// the sun's directions (`ortho`: its orthographic map, face 0). Depth of the opaque
+// casters, or with COLOUR the translucent casters for reference_colour.frag.
 layout(set = 0, binding = 0, std430) readonly buffer Points { vec4 points[]; };
+layout(set = 0, binding = 1, std430) readonly buffer Matrices { mat4 matrices[]; };
 
 layout(push_constant) uniform Params {
-  uint point;       // index into points: xyz sample position, w far plane
+  uint point;       // index into points (and matrices): xyz sample position, w far plane;
+                    // ortho: xyz the sun direction, w its map's half width
   uint layer_base;  // first layer of the light's six faces
   float near;
+  uint ortho;  // 1: the sun's orthographic map in matrices[point]
 };
 
 layout(location = 0) in vec3 in_position;
+#ifdef COLOUR
+layout(location = 1) in vec3 in_normal;
+layout(location = 2) in uint in_material;
+layout(location = 0) out vec3 out_world;
+layout(location = 1) out vec3 out_normal;
+layout(location = 2) flat out uint out_material;
+layout(location = 3) flat out vec4 out_sample;  // xyz point or direction, w 1 ortho
+#endif
 
 void main() {
   vec4 pf = points[point];
   uint face = uint(gl_InstanceIndex);
-  gl_Position = reference_face_clip(in_position - pf.xyz, face, near, pf.w);
+  if (ortho != 0u) {
+    gl_Position = matrices[point] * vec4(in_position, 1.0);
+  } else {
+    gl_Position = reference_face_clip(in_position - pf.xyz, face, near, pf.w);
+  }
+#ifdef COLOUR
+  out_world = in_position;
+  out_normal = in_normal;
+  out_material = in_material;
+  out_sample = vec4(pf.xyz, ortho != 0u ? 1.0 : 0.0);
+#endif
 #ifdef LAYERED
   gl_Layer = int(layer_base + face);
 #endif

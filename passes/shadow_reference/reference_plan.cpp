@@ -1,8 +1,11 @@
 #include "reference_plan.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
 
+#include "point_shadow_atlas/light_faces.hpp"
 #include "point_shadow_atlas/shadow_faces.hpp"
 
 namespace antumbra::passes::reference {
@@ -22,6 +25,34 @@ std::vector<glm::vec3> fibonacci_sphere(std::uint32_t count) {
   return points;
 }
 
+std::vector<glm::vec2> fibonacci_disc(std::uint32_t count) {
+  std::vector<glm::vec2> points;
+  points.reserve(count);
+  const double golden = 3.14159265358979323846 * (3.0 - std::sqrt(5.0));
+  for (std::uint32_t i = 0; i < count; ++i) {
+    const double r = std::sqrt((static_cast<double>(i) + 0.5) / static_cast<double>(count));
+    const double phi = golden * static_cast<double>(i);
+    points.emplace_back(static_cast<float>(r * std::cos(phi)),
+                        static_cast<float>(r * std::sin(phi)));
+  }
+  return points;
+}
+
+std::vector<glm::vec3> sun_directions(const glm::vec3& direction, float angular_radius_degrees,
+                                      std::uint32_t count) {
+  const glm::vec3 f = glm::normalize(direction);
+  glm::vec3 s;
+  glm::vec3 t;
+  light_faces::perpendicular_basis(f, s, t);
+  const float spread = std::tan(glm::radians(std::clamp(angular_radius_degrees, 0.0f, 45.0f)));
+  std::vector<glm::vec3> out;
+  out.reserve(count);
+  for (const glm::vec2& d : fibonacci_disc(count)) {
+    out.push_back(glm::normalize(f + spread * (d.x * s + d.y * t)));
+  }
+  return out;
+}
+
 std::vector<std::uint32_t> triangles_near(const std::vector<glm::vec3>& positions,
                                           const std::vector<std::uint32_t>& indices,
                                           const glm::vec3& centre, float radius) {
@@ -39,9 +70,109 @@ std::vector<std::uint32_t> triangles_near(const std::vector<glm::vec3>& position
   return out;
 }
 
+namespace {
+
+using Polygon = std::vector<glm::vec3>;
+
+// Sutherland-Hodgman: the part of `polygon` where dot(n, p) + d >= 0.
+Polygon clip(const Polygon& polygon, const glm::vec3& n, float d) {
+  Polygon out;
+  for (std::size_t i = 0; i < polygon.size(); ++i) {
+    const glm::vec3& a = polygon[i];
+    const glm::vec3& b = polygon[(i + 1) % polygon.size()];
+    const float da = glm::dot(n, a) + d;
+    const float db = glm::dot(n, b) + d;
+    if (da >= 0.0f) out.push_back(a);
+    if ((da >= 0.0f) != (db >= 0.0f)) out.push_back(a + (b - a) * (da / (da - db)));
+  }
+  return out;
+}
+
+std::array<glm::vec3, 8> box_corners(const scene::Aabb& box) {
+  std::array<glm::vec3, 8> corners;
+  for (std::size_t k = 0; k < 8; ++k) {
+    corners[k] = {(k & 1) ? box.max.x : box.min.x, (k & 2) ? box.max.y : box.min.y,
+                  (k & 4) ? box.max.z : box.min.z};
+  }
+  return corners;
+}
+
+}  // namespace
+
+std::vector<glm::vec3> visible_region(const glm::mat4& camera_view_proj,
+                                      const scene::Aabb& bounds) {
+  std::vector<glm::vec3> out;
+  if (bounds.empty()) return out;
+  const auto frustum = shadow_faces::camera_frustum(camera_view_proj);
+  const auto& c = frustum.corners;  // index = 4 z + 2 y + x (near/far, bottom/top, left/right)
+  const std::array<std::array<int, 4>, 6> faces{
+      {{0, 1, 3, 2}, {4, 5, 7, 6}, {0, 2, 6, 4}, {1, 3, 7, 5}, {0, 1, 5, 4}, {2, 3, 7, 6}}};
+  for (const auto& face : faces) {
+    Polygon polygon{c[face[0]], c[face[1]], c[face[2]], c[face[3]]};
+    for (int axis = 0; axis < 3 && !polygon.empty(); ++axis) {
+      glm::vec3 n(0.0f);
+      n[axis] = 1.0f;
+      polygon = clip(polygon, n, -bounds.min[axis]);
+      if (!polygon.empty()) polygon = clip(polygon, -n, bounds.max[axis]);
+    }
+    out.insert(out.end(), polygon.begin(), polygon.end());
+  }
+  for (const glm::vec3& corner : box_corners(bounds)) {
+    bool inside = true;
+    for (const auto& plane : frustum.planes) inside = inside && plane.distance(corner) >= 0.0f;
+    if (inside) out.push_back(corner);
+  }
+  return out;
+}
+
+SunFit fit_sun(const glm::vec3& direction, std::span<const glm::vec3> receivers,
+               const scene::Aabb& caster_bounds, float face_size, float margin_texels) {
+  const glm::vec3 f = glm::normalize(direction);
+  glm::vec3 s;
+  glm::vec3 t;
+  light_faces::perpendicular_basis(f, s, t);
+  glm::vec2 lo(std::numeric_limits<float>::max());
+  glm::vec2 hi(std::numeric_limits<float>::lowest());
+  float far = std::numeric_limits<float>::lowest();
+  float near = std::numeric_limits<float>::max();
+  auto add_receiver = [&](const glm::vec3& p) {
+    const glm::vec2 st(glm::dot(s, p), glm::dot(t, p));
+    lo = glm::min(lo, st);
+    hi = glm::max(hi, st);
+    far = std::max(far, glm::dot(f, p));
+    near = std::min(near, glm::dot(f, p));
+  };
+  for (const glm::vec3& p : receivers) add_receiver(p);
+  if (receivers.empty()) {
+    if (caster_bounds.empty()) return {};
+    for (const glm::vec3& p : box_corners(caster_bounds)) add_receiver(p);
+  }
+  if (!caster_bounds.empty()) {
+    for (const glm::vec3& p : box_corners(caster_bounds)) near = std::min(near, glm::dot(f, p));
+  }
+  const glm::vec2 centre = 0.5f * (lo + hi);
+  float half = 0.5f * std::max(hi.x - lo.x, hi.y - lo.y);
+  half = std::max(half * (1.0f + 2.0f * margin_texels / std::max(face_size, 1.0f)), 0.0f) + 1e-3f;
+  const float pad = 0.05f + 0.01f * (far - near);  // casters on the bound stay inside
+  near -= pad;
+  far += pad;
+  SunFit fit;
+  fit.half_width = half;
+  fit.depth = far - near;
+  const glm::vec4 rx(s / half, -centre.x / half);
+  const glm::vec4 ry(t / half, -centre.y / half);
+  const glm::vec4 rz(f / fit.depth, -near / fit.depth);
+  const glm::vec4 rw(0.0f, 0.0f, 0.0f, 1.0f);
+  for (int col = 0; col < 4; ++col) {
+    fit.view_proj[col] = glm::vec4(rx[col], ry[col], rz[col], rw[col]);
+  }
+  return fit;
+}
+
 ReferencePlan build_plan(const scene::Scene& scene, const std::vector<glm::vec3>& positions,
                          const std::vector<std::uint32_t>& indices,
-                         const glm::mat4& camera_view_proj, const PlanSettings& settings) {
+                         const glm::mat4& camera_view_proj, const PlanSettings& settings,
+                         std::span<const std::uint32_t> vertex_materials) {
   ReferencePlan plan;
   plan.samples = std::max<std::uint32_t>(settings.samples, 1);
   plan.lights_per_batch = std::max<std::uint32_t>(settings.lights_per_batch, 1);
@@ -49,35 +180,94 @@ ReferencePlan build_plan(const scene::Scene& scene, const std::vector<glm::vec3>
   const auto frustum = shadow_faces::camera_frustum(camera_view_proj);
   const auto light_count = static_cast<std::uint32_t>(scene.lights.size());
 
+  // Opaque casters block (depth); translucent ones tint (colour), per triangle.
+  std::vector<std::uint32_t> opaque;
+  std::vector<std::uint32_t> translucent;
+  scene::Aabb geometry_bounds;
+  for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
+    const std::uint32_t v = indices[t];
+    bool tints = false;
+    if (v < vertex_materials.size() && vertex_materials[v] < scene.materials.size()) {
+      tints = scene.materials[vertex_materials[v]].translucent;
+    }
+    auto& list = tints ? translucent : opaque;
+    list.insert(list.end(), {indices[t], indices[t + 1], indices[t + 2]});
+    for (std::size_t k = 0; k < 3; ++k) geometry_bounds.expand(positions[indices[t + k]]);
+  }
+  std::vector<glm::vec3> receivers;  // the sun's, computed once when needed
+  bool receivers_known = false;
+
   plan.points.resize(std::size_t{light_count} * plan.samples);
   plan.index_first.resize(light_count, 0);
   plan.index_count.resize(light_count, 0);
+  plan.tint_first.resize(light_count, 0);
+  plan.tint_count.resize(light_count, 0);
+  auto add_list = [&](const std::vector<std::uint32_t>& tris, std::uint32_t& first,
+                      std::uint32_t& count) {
+    first = static_cast<std::uint32_t>(plan.indices.size());
+    count = static_cast<std::uint32_t>(tris.size());
+    plan.indices.insert(plan.indices.end(), tris.begin(), tris.end());
+  };
   for (std::uint32_t l = 0; l < light_count; ++l) {
     const auto& light = scene.lights[l];
+    const std::size_t base = std::size_t{l} * plan.samples;
+    if (light.type == scene::LightType::directional) {
+      // The sun: a disc of angular radius `size` degrees; every sample direction gets its
+      // own orthographic map around the visible receivers, and every caster may block.
+      const bool shadows = light.casts_shadows && !geometry_bounds.empty();
+      const auto sun = sun_directions(light.direction, light.size, plan.samples);
+      if (shadows && !receivers_known) {
+        receivers = visible_region(camera_view_proj, geometry_bounds);
+        receivers_known = true;
+      }
+      if (shadows && plan.matrices.empty()) {
+        plan.matrices.assign(plan.points.size(), glm::mat4(1.0f));
+      }
+      for (std::uint32_t k = 0; k < plan.samples; ++k) {
+        float half_width = -1.0f;
+        if (shadows) {
+          const SunFit fit =
+              fit_sun(sun[k], receivers, geometry_bounds, static_cast<float>(settings.face_size));
+          plan.matrices[base + k] = fit.view_proj;
+          half_width = fit.half_width;
+        }
+        plan.points[base + k].position_far = {sun[k], half_width};
+      }
+      if (!shadows) continue;
+      add_list(opaque, plan.index_first[l], plan.index_count[l]);
+      add_list(translucent, plan.tint_first[l], plan.tint_count[l]);
+      continue;
+    }
     // Faces reach the receivers' whole lit sphere from any point of the light.
     const float far = light.range + light.size;
-    // Directional lights have no sphere to sample: unshadowed (the pass reports it).
-    const bool shadows =
-        light.casts_shadows && light.range > 0.0f && light.type != scene::LightType::directional;
+    const bool shadows = light.casts_shadows && light.range > 0.0f;
     for (std::uint32_t k = 0; k < plan.samples; ++k) {
       const glm::vec3 p = light.position + directions[k] * light.size;
-      plan.points[std::size_t{l} * plan.samples + k].position_far = {p, shadows ? far : -1.0f};
+      plan.points[base + k].position_far = {p, shadows ? far : -1.0f};
     }
     if (!shadows) continue;
-    const auto tris = triangles_near(positions, indices, light.position, far);
-    plan.index_first[l] = static_cast<std::uint32_t>(plan.indices.size());
-    plan.index_count[l] = static_cast<std::uint32_t>(tris.size());
-    plan.indices.insert(plan.indices.end(), tris.begin(), tris.end());
+    add_list(triangles_near(positions, opaque, light.position, far), plan.index_first[l],
+             plan.index_count[l]);
+    add_list(triangles_near(positions, translucent, light.position, far), plan.tint_first[l],
+             plan.tint_count[l]);
   }
 
   for (std::uint32_t first = 0; first < light_count; first += plan.lights_per_batch) {
     Batch batch;
     batch.first_light = first;
     batch.light_count = std::min(plan.lights_per_batch, light_count - first);
+    for (std::uint32_t slot = 0; slot < batch.light_count; ++slot) {
+      batch.tinted = batch.tinted || plan.tint_count[first + slot] > 0;
+    }
+    plan.any_tinted = plan.any_tinted || batch.tinted;
     for (std::uint32_t k = 0; k < plan.samples; ++k) {
       for (std::uint32_t slot = 0; slot < batch.light_count; ++slot) {
         const std::uint32_t l = first + slot;
-        if (plan.index_count[l] == 0) continue;
+        if (plan.index_count[l] == 0 && plan.tint_count[l] == 0) continue;
+        if (scene.lights[l].type == scene::LightType::directional) {
+          batch.runs.push_back({k, slot, 0, 1});  // one map, fitted to the view
+          continue;
+        }
         const glm::vec4 pf = plan.points[std::size_t{l} * plan.samples + k].position_far;
         const std::uint32_t mask =
             settings.cull_faces ? shadow_faces::visible_faces(frustum, glm::vec3(pf), pf.w) : 0x3Fu;

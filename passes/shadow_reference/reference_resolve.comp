@@ -1,8 +1,13 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// End of a light batch: each light's averaged visibility multiplies the same shading as
-// deferred-lighting / tiled-lighting (tiled_lighting/shading.glsl), summed into the
-// per-pixel accumulator (rgb radiance, a = lights in penumbra).
+// End of a light batch: each light's averaged coloured visibility multiplies the same
+// shading as deferred-lighting / tiled-lighting (tiled_lighting/shading.glsl), per
+// channel, summed into the per-pixel accumulator (rgb radiance, a = lights in penumbra).
+// A light counts as in penumbra where its sample set is split: the fraction of samples
+// no opaque caster blocks, or the fraction neither blocked nor tinted, is strictly
+// between penumbra_low and penumbra_high. Without translucent casters both are the old
+// scalar visibility; under a uniform pane (all samples tinted alike) neither is, so the
+// pane's flat coloured shadow is not a penumbra but its edges are.
 #include "../common/frame.glsl"
 #include "../common/lights.glsl"
 #include "../tiled_lighting/shading.glsl"
@@ -14,7 +19,7 @@ layout(set = 0, binding = 1, std430) readonly buffer Lights { GpuLight lights[];
 layout(set = 0, binding = 2) uniform sampler2D g_depth;
 layout(set = 0, binding = 3) uniform sampler2D g_normal;
 layout(set = 0, binding = 4) uniform sampler2D g_albedo;
-layout(set = 0, binding = 5, std430) readonly buffer Visibility { vec2 visibility[]; };
+layout(set = 0, binding = 5, std430) readonly buffer Visibility { vec4 visibility[]; };
 layout(set = 0, binding = 6, std430) buffer Accum { vec4 accum[]; };
 
 layout(push_constant) uniform Params {
@@ -44,10 +49,17 @@ void main() {
     vec3 radiance;
     vec3 l;
     if (!shade_light(lights[light], surface, specular, radiance, l)) continue;
-    vec2 v = visibility[slot * pixels + pixel_index];
-    float lit = v.y > 0.0 ? v.x / v.y : 1.0;
+    uint index = 2u * (slot * pixels + pixel_index);
+    vec4 v = visibility[index];  // (weighted rgb visibility, weight)
+    vec2 f = visibility[index + 1u].xy;  // weighted opaque-lit and untinted fractions
+    vec3 lit = v.w > 0.0 ? v.rgb / v.w : vec3(1.0);
+    float opaque = v.w > 0.0 ? f.x / v.w : 1.0;
+    float clear = v.w > 0.0 ? f.y / v.w : 1.0;
     sum.rgb += radiance * lit;
-    if (lit > penumbra_low && lit < penumbra_high) sum.a += 1.0;
+    if ((opaque > penumbra_low && opaque < penumbra_high) ||
+        (clear > penumbra_low && clear < penumbra_high)) {
+      sum.a += 1.0;
+    }
   }
   accum[pixel_index] = sum;
 }

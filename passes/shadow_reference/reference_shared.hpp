@@ -9,6 +9,8 @@
 namespace antumbra::passes::reference {
 
 inline constexpr VkFormat kFaceFormat = VK_FORMAT_D32_SFLOAT;
+// Tints of translucent casters (reference_colour.frag), beside the depth faces.
+inline constexpr VkFormat kTintFormat = VK_FORMAT_R8G8B8A8_UNORM;
 inline constexpr std::uint32_t kFacesPerLight = 6;
 inline constexpr std::uint32_t kGroupSize = 8;  // local_size_x/y of the compute shaders
 // Visibility strictly inside (kPenumbraLow, kPenumbraHigh) counts as penumbra.
@@ -19,6 +21,7 @@ struct DepthPush {  // reference_depth.vert
   std::uint32_t point;
   std::uint32_t layer_base;
   float near;
+  std::uint32_t ortho;
 };
 
 struct AccumulatePush {  // reference_accumulate.comp
@@ -33,6 +36,7 @@ struct AccumulatePush {  // reference_accumulate.comp
   float face_size;
   std::uint32_t weighting;
   float depth_bias;
+  std::uint32_t tinted;
 };
 
 struct ResolvePush {  // reference_resolve.comp

@@ -12,10 +12,13 @@ fg::PassDesc ShadowReferencePass::describe() {
   desc.type = "shadow-reference";
   desc.description =
       "Ground truth for the quality tests: the lighting of deferred-lighting / tiled-lighting "
-      "with each point light a sphere of radius `size` whose visibility is averaged over "
-      "`samples` hard shadow-map tests from points spread over the sphere (spherical "
-      "Fibonacci set). Slow, offline, deterministic. Translucent casters are opaque, like "
-      "the baselines without a colour map.";
+      "with each point or spot light a sphere of radius `size` whose visibility is averaged "
+      "over `samples` hard shadow-map tests from points spread over the sphere (spherical "
+      "Fibonacci set), and the directional sun a disc of angular radius `size` degrees "
+      "averaged over `samples` directions (Fibonacci disc), each with its own orthographic "
+      "map around the visible receivers. Translucent casters tint instead of blocking: each "
+      "sample's visibility is 0 behind an opaque caster, else the product of the tints of "
+      "the panes in between, so shadows are coloured. Slow, offline, deterministic.";
   desc.ports = lighting_ports();
   desc.ports.back().description = "Linear HDR radiance with reference soft shadows.";
   desc.ports.push_back(
@@ -26,15 +29,18 @@ fg::PassDesc ShadowReferencePass::describe() {
        .formats = {Format::r32f},
        .optional = true,
        .size_group = "screen",
-       .description = "Per pixel, the number of lights whose visibility is strictly between "
-                      "0.02 and 0.98 (>= 1: penumbra, >= 2: overlapping penumbrae)."});
+       .description = "Per pixel, the number of lights whose samples disagree: the fraction "
+                      "no opaque caster blocks, or the fraction nothing blocks or tints, is "
+                      "strictly between 0.02 and 0.98 (>= 1: penumbra, >= 2: overlapping "
+                      "penumbrae; a pane's uniform coloured shadow is no penumbra)."});
   desc.params = {
       {.name = "samples",
        .type = fg::ParamType::integer,
        .default_value = 256,
        .min = 16.0,
        .max = 4096.0,
-       .description = "Shadow-map samples per light (points on its sphere)."},
+       .description = "Shadow-map samples per light (points on its sphere; the sun: "
+                      "directions over its disc)."},
       {.name = "faceSize",
        .type = fg::ParamType::integer,
        .default_value = 512,

@@ -4,8 +4,6 @@
 #include <array>
 #include <cstring>
 
-#include <nlohmann/json.hpp>
-
 #include "antumbra/gpu/context.hpp"
 #include "antumbra/gpu/pipelines.hpp"
 #include "antumbra/scene/scene.hpp"
@@ -42,6 +40,7 @@ ShadowReferencePass::ShadowReferencePass(const fg::PlanPass& pass) {
   settings_.lights_per_batch = static_cast<std::uint32_t>(param_float(pass, "lightsPerBatch"));
   settings_.cull_faces = param_bool(pass, "cullFaces");
   face_size_ = static_cast<std::uint32_t>(param_float(pass, "faceSize"));
+  settings_.face_size = face_size_;
   near_ = param_float(pass, "nearPlane");
   normal_offset_ = param_float(pass, "normalOffset");
   depth_bias_ = param_float(pass, "depthBias");
@@ -60,28 +59,57 @@ void ShadowReferencePass::prepare(fgvk::PrepareContext& context) {
 
   std::vector<gpu::ShaderDefine> depth_defines;
   if (layered_) depth_defines.push_back({"LAYERED", ""});
+  std::vector<gpu::ShaderDefine> colour_defines = depth_defines;
+  colour_defines.push_back({"COLOUR", ""});
   auto vert =
       load_shader(context, "shadow_reference/reference_depth.vert", shader_files_, depth_defines);
+  auto colour_vert =
+      load_shader(context, "shadow_reference/reference_depth.vert", shader_files_, colour_defines);
+  auto colour_frag = load_shader(context, "shadow_reference/reference_colour.frag", shader_files_);
   depth_set_ = gpu::DescriptorSetLayoutBuilder()
                    .storage_buffer(0, VK_SHADER_STAGE_VERTEX_BIT)
+                   .storage_buffer(1, VK_SHADER_STAGE_VERTEX_BIT)
+                   .storage_buffer(2, VK_SHADER_STAGE_FRAGMENT_BIT)
                    .build(context.gpu, name + ".depth.set");
   const std::array<VkDescriptorSetLayout, 1> depth_sets{depth_set_};
   const std::array<VkPushConstantRange, 1> depth_push{
       {{VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(reference::DepthPush)}}};
   depth_layout_ =
       gpu::create_pipeline_layout(context.gpu, depth_sets, depth_push, name + ".depth.layout");
-  depth_pipeline_ =
-      gpu::GraphicsPipelineBuilder()
-          .shader(VK_SHADER_STAGE_VERTEX_BIT, vert)
-          .vertex_binding(0, sizeof(GpuVertex))
-          .vertex_attribute(0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(GpuVertex, position))
-          .cull(VK_CULL_MODE_NONE)  // open meshes and thin panes cast from both sides
-          .depth(true, true, VK_COMPARE_OP_LESS)
-          .depth_bias(raster_bias_, slope_bias_)
-          .depth_format(reference::kFaceFormat)
-          .layout(depth_layout_)
-          .cache(context.pipeline_cache)
-          .build(context.gpu, name + ".depth");
+  auto raster = [&]() {
+    gpu::GraphicsPipelineBuilder builder;
+    builder.vertex_binding(0, sizeof(GpuVertex))
+        .vertex_attribute(0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(GpuVertex, position))
+        .cull(VK_CULL_MODE_NONE)  // open meshes and thin panes cast from both sides
+        .depth_format(reference::kFaceFormat)
+        .layout(depth_layout_)
+        .cache(context.pipeline_cache);
+    return builder;
+  };
+  // Opaque casters: depth only, or beside colour layers with colour writes masked off.
+  auto depth = [&]() {
+    auto builder = raster();
+    builder.shader(VK_SHADER_STAGE_VERTEX_BIT, vert)
+        .depth(true, true, VK_COMPARE_OP_LESS)
+        .depth_bias(raster_bias_, slope_bias_);
+    return builder;
+  };
+  depth_pipeline_ = depth().build(context.gpu, name + ".depth");
+  depth_tint_pipeline_ = depth()
+                             .color_formats({reference::kTintFormat})
+                             .color_write_mask(0, 0)
+                             .build(context.gpu, name + ".depth.tinted");
+  // Translucent casters: tested against the opaque depth, multiplied into white.
+  colour_pipeline_ =
+      raster()
+          .shader(VK_SHADER_STAGE_VERTEX_BIT, colour_vert)
+          .shader(VK_SHADER_STAGE_FRAGMENT_BIT, colour_frag)
+          .vertex_attribute(1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(GpuVertex, normal))
+          .vertex_attribute(2, 0, VK_FORMAT_R32_UINT, offsetof(GpuVertex, material))
+          .depth(true, false, VK_COMPARE_OP_LESS_OR_EQUAL)
+          .color_formats({reference::kTintFormat})
+          .multiply_blend(0)
+          .build(context.gpu, name + ".colour");
 
   auto compute = [&](const char* file, const gpu::DescriptorSetLayoutBuilder& builder,
                      std::uint32_t push_bytes, const std::vector<gpu::ShaderDefine>& defines,
@@ -104,7 +132,9 @@ void ShadowReferencePass::prepare(fgvk::PrepareContext& context) {
               .combined_image_sampler(3, kComp)
               .combined_image_sampler(4, kComp)
               .storage_buffer(5, kComp)
-              .storage_buffer(6, kComp),
+              .storage_buffer(6, kComp)
+              .combined_image_sampler(7, kComp)
+              .storage_buffer(8, kComp),
           sizeof(reference::AccumulatePush), {}, accumulate_set_, accumulate_layout_,
           accumulate_pipeline_);
   compute("reference_resolve.comp",
@@ -157,16 +187,29 @@ void ShadowReferencePass::rebuild(fgvk::ExecuteContext& context, const Key& key)
     // The same merge GpuScene uploads, so indices address context.frame.vertices.
     const MergedGeometry merged = merge_scene_geometry(scene);
     positions_.clear();
+    vertex_materials_.clear();
     positions_.reserve(merged.vertices.size());
-    for (const auto& v : merged.vertices) positions_.push_back(v.position);
+    vertex_materials_.reserve(merged.vertices.size());
+    for (const auto& v : merged.vertices) {
+      positions_.push_back(v.position);
+      vertex_materials_.push_back(v.material);
+    }
     indices_ = merged.indices;
     merged_version_ = context.frame.geometry_version;
   }
-  plan_ = reference::build_plan(scene, positions_, indices_, key.view_proj, settings_);
+  plan_ = reference::build_plan(scene, positions_, indices_, key.view_proj, settings_,
+                                vertex_materials_);
   gpu::Context& gpu = context.gpu;
   const std::string& name = context.pass.name;
   points_ = host_buffer(gpu, plan_.points.data(), plan_.points.size() * sizeof(glm::vec4),
                         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, name + ".points");
+  const glm::mat4 identity(1.0f);
+  matrices_ =
+      plan_.matrices.empty()
+          ? host_buffer(gpu, &identity, sizeof identity, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                        name + ".matrices")
+          : host_buffer(gpu, plan_.matrices.data(), plan_.matrices.size() * sizeof(glm::mat4),
+                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, name + ".matrices");
   index_list_ = host_buffer(gpu, plan_.indices.data(), plan_.indices.size() * sizeof(std::uint32_t),
                             VK_BUFFER_USAGE_INDEX_BUFFER_BIT, name + ".indices");
 
@@ -174,7 +217,7 @@ void ShadowReferencePass::rebuild(fgvk::ExecuteContext& context, const Key& key)
   const std::uint32_t slots = std::max<std::uint32_t>(
       1, std::min<std::uint32_t>(plan_.lights_per_batch,
                                  static_cast<std::uint32_t>(scene.lights.size())));
-  const VkDeviceSize vis_bytes = pixels * slots * sizeof(glm::vec2);
+  const VkDeviceSize vis_bytes = pixels * slots * 2 * sizeof(glm::vec4);
   const VkBufferUsageFlags storage =
       VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
   if (!visibility_ || visibility_.size() < vis_bytes) {
@@ -195,6 +238,21 @@ void ShadowReferencePass::rebuild(fgvk::ExecuteContext& context, const Key& key)
     desc.name = name + ".faces";
     faces_ = gpu::Image::create(gpu, desc);
   }
+  // Colour layers like the faces only when some light has translucent casters; else a
+  // 1x1 stand-in that is bound but never read.
+  const VkExtent2D tint_extent =
+      plan_.any_tinted ? VkExtent2D{face_size_, face_size_} : VkExtent2D{1, 1};
+  const std::uint32_t tint_layers = plan_.any_tinted ? layers : 1;
+  if (!tints_ || tints_.layers() != tint_layers || tints_.extent().width != tint_extent.width) {
+    gpu::ImageDesc desc;
+    desc.format = reference::kTintFormat;
+    desc.extent = tint_extent;
+    desc.layers = tint_layers;
+    desc.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
+    desc.name = name + ".tints";
+    tints_ = gpu::Image::create(gpu, desc);
+    tints_layout_ = VK_IMAGE_LAYOUT_UNDEFINED;
+  }
 }
 
 void ShadowReferencePass::execute(fgvk::ExecuteContext& context) {
@@ -205,16 +263,9 @@ void ShadowReferencePass::execute(fgvk::ExecuteContext& context) {
     key_ = std::move(key);
   }
   record_final(context);
-  // Spot lights are sampled like point lights (the cone is the shading's); the sun has
-  // no sphere to sample, so it stays unshadowed here, and the report says so.
-  for (const auto& l : context.frame.scene->lights) {
-    if (l.type == scene::LightType::directional && l.casts_shadows) {
-      context.report.add({context.pass.name, "SHR001", fg::Severity::error,
-                          "shadow-reference does not shadow directional light '" + l.name +
-                              "' (it is drawn unshadowed)",
-                          nlohmann::json::object()});
-    }
-  }
+  // Spot lights are sampled like point lights (the cone is the shading's) and the sun
+  // over its disc, so every light type is shadowed. (SHR001, "directional light drawn
+  // unshadowed", is no longer reported; the code stays retired, never reused.)
 }
 
 }  // namespace antumbra::passes

@@ -1,10 +1,16 @@
 #pragma once
 // Pass type "shadow-reference": ground-truth soft shadows for the quality comparisons.
-// Each point light is a sphere of radius `size`; its visibility is averaged over
-// `samples` hard shadow tests from a deterministic set of points on that sphere, every
-// sample rendering its own cube faces. Offline speed (seconds per frame on lavapipe at
-// small sizes). Reflection in shadow_reference_desc.cpp, runtime here and in
-// shadow_reference_pass.cpp, CPU planning in reference_plan.*, shaders beside them.
+// Each point (and spot) light is a sphere of radius `size`; its visibility is averaged
+// over `samples` hard shadow tests from a deterministic set of points on that sphere,
+// every sample rendering its own cube faces. The directional sun is a disc of angular
+// radius `size` degrees: `samples` directions spread over it, each with its own
+// orthographic map fitted around the visible receivers. Translucent casters tint
+// instead of blocking: per sample, visibility is 0 when an opaque caster blocks, else
+// the product of the tints of the panes in between (colour layers beside the depth
+// faces), so the output holds coloured shadows. Offline speed (seconds per frame on
+// lavapipe at small sizes). Reflection in shadow_reference_desc.cpp, runtime here and in
+// shadow_reference_pass.cpp / shadow_reference_record.cpp, CPU planning in
+// reference_plan.*, shaders beside them.
 
 #include <cstdint>
 #include <optional>
@@ -45,6 +51,7 @@ class ShadowReferencePass final : public fgvk::Pass {
   void record_batch(fgvk::ExecuteContext& context, const reference::Batch& batch);
   void render_faces(fgvk::ExecuteContext& context, const reference::Batch& batch,
                     std::uint32_t sample, std::size_t& run);
+  void tints_to_sampled(VkCommandBuffer cmd);
   void record_final(fgvk::ExecuteContext& context);
 
   // Parameters.
@@ -63,6 +70,8 @@ class ShadowReferencePass final : public fgvk::Pass {
   gpu::DescriptorSetLayout depth_set_, accumulate_set_, resolve_set_, final_set_;
   gpu::PipelineLayout depth_layout_, accumulate_layout_, resolve_layout_, final_layout_;
   gpu::Pipeline depth_pipeline_, accumulate_pipeline_, resolve_pipeline_, final_pipeline_;
+  // With colour layers bound: opaque depth (colour masked off), then translucent tints.
+  gpu::Pipeline depth_tint_pipeline_, colour_pipeline_;
   std::vector<std::string> shader_files_;
 
   // Pass-internal resources (synchronised inside the pass).
@@ -71,11 +80,15 @@ class ShadowReferencePass final : public fgvk::Pass {
   std::uint64_t merged_version_ = 0;
   std::vector<glm::vec3> positions_;
   std::vector<std::uint32_t> indices_;
+  std::vector<std::uint32_t> vertex_materials_;
   gpu::Buffer points_;      // vec4 per (light, sample)
+  gpu::Buffer matrices_;    // mat4 per (light, sample): the sun's maps
   gpu::Buffer index_list_;  // per-light triangle lists (uint32)
-  gpu::Buffer visibility_;  // vec2 per (slot, pixel)
+  gpu::Buffer visibility_;  // 2 vec4 per (slot, pixel)
   gpu::Buffer accum_;       // vec4 per pixel
   gpu::Image faces_;        // D32, 6 layers per batch slot
+  gpu::Image tints_;        // RGBA8 like faces_ when a light has translucent casters, else 1x1
+  VkImageLayout tints_layout_ = VK_IMAGE_LAYOUT_UNDEFINED;  // as recorded so far
 };
 
 }  // namespace antumbra::passes

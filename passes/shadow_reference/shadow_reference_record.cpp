@@ -1,5 +1,5 @@
 // Command recording of the shadow-reference pass. Its internal images and buffers
-// (faces_, visibility_, accum_) are synchronised here; graph resources are not (the
+// (faces_, tints_, visibility_, accum_) are synchronised here; graph resources are not (the
 // executor placed their barriers before the pass).
 #include <algorithm>
 
@@ -18,6 +18,7 @@ constexpr VkPipelineStageFlags2 kCompute = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BI
 constexpr VkPipelineStageFlags2 kTransfer = VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT;
 constexpr VkPipelineStageFlags2 kDepthTests =
     VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT;
+constexpr VkPipelineStageFlags2 kColourOutput = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT;
 constexpr VkAccessFlags2 kStorageRW =
     VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
 
@@ -35,10 +36,37 @@ gpu::ImageBarrier faces_barrier(VkImage image, VkImageLayout from, VkImageLayout
   return b;
 }
 
+gpu::ImageBarrier tints_barrier(VkImage image, VkImageLayout from, VkImageLayout to) {
+  gpu::ImageBarrier b;
+  b.image = image;
+  b.old_layout = from;
+  b.new_layout = to;
+  b.range = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, VK_REMAINING_ARRAY_LAYERS};
+  return b;
+}
+
 }  // namespace
+
+void ShadowReferencePass::tints_to_sampled(VkCommandBuffer cmd) {
+  // From the colour rendering of this sample, or (stand-in, first use) from nothing.
+  auto b = tints_barrier(tints_, tints_layout_, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+  if (tints_layout_ == VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL) {
+    b.src_stage = kColourOutput;
+    b.src_access = VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT;
+  }
+  b.dst_stage = kCompute;
+  b.dst_access = VK_ACCESS_2_SHADER_SAMPLED_READ_BIT;
+  gpu::image_barrier(cmd, b);
+  tints_layout_ = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+}
 
 void ShadowReferencePass::record_samples(fgvk::ExecuteContext& context) {
   const VkCommandBuffer cmd = context.cmd;
+  // The accumulation binds the colour layers whether or not a batch reads them.
+  if (tints_layout_ != VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL) {
+    tints_layout_ = VK_IMAGE_LAYOUT_UNDEFINED;
+    tints_to_sampled(cmd);
+  }
   // Earlier frames' reads and writes of the internal buffers (queue submission order
   // puts them in this barrier's first scope) finish before they are cleared.
   gpu::memory_barrier(cmd, kCompute | kTransfer, kStorageRW | VK_ACCESS_2_TRANSFER_WRITE_BIT,
@@ -73,7 +101,18 @@ void ShadowReferencePass::record_batch(fgvk::ExecuteContext& context,
     to_attachment.dst_access = VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT |
                                VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
     gpu::image_barrier(cmd, to_attachment);
+    if (batch.tinted) {
+      auto tints = tints_barrier(tints_, VK_IMAGE_LAYOUT_UNDEFINED,
+                                 VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
+      tints.src_stage = kCompute;
+      tints.dst_stage = kColourOutput;
+      tints.dst_access =
+          VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT;
+      gpu::image_barrier(cmd, tints);
+      tints_layout_ = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+    }
     render_faces(context, batch, k, run);
+    if (batch.tinted) tints_to_sampled(cmd);
     auto to_sampled = faces_barrier(faces_, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
                                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
     to_sampled.src_stage = kDepthTests;
@@ -94,11 +133,14 @@ void ShadowReferencePass::record_batch(fgvk::ExecuteContext& context,
                                 VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
         .storage_buffer(5, points_)
         .storage_buffer(6, visibility_)
+        .combined_image_sampler(7, tints_.array_view(), nearest,
+                                VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
+        .storage_buffer(8, matrices_)
         .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, accumulate_layout_);
     const reference::AccumulatePush push{extent.width,  extent.height,     k,
                                          plan_.samples, batch.first_light, batch.light_count,
                                          near_,         normal_offset_,    float(face_size_),
-                                         weighting_,    depth_bias_};
+                                         weighting_,    depth_bias_,       batch.tinted ? 1u : 0u};
     vkCmdPushConstants(cmd, accumulate_layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
     dispatch_pixels(cmd, extent);
   }
@@ -134,38 +176,65 @@ void ShadowReferencePass::render_faces(fgvk::ExecuteContext& context, const refe
   attachment.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
   attachment.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
   attachment.clearValue.depthStencil = {1.0f, 0};
+  // Colour layers (tinted batches): cleared to white, panes multiply into them.
+  VkRenderingAttachmentInfo colour{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+  colour.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+  colour.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+  colour.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+  colour.clearValue.color = {{1.0f, 1.0f, 1.0f, 1.0f}};
   VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
   rendering.renderArea = {{0, 0}, face_extent};
   rendering.pDepthAttachment = &attachment;
+  if (batch.tinted) {
+    rendering.colorAttachmentCount = 1;
+    rendering.pColorAttachments = &colour;
+  }
 
-  auto bind = [&]() {
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, depth_pipeline_);
+  auto bind = [&](VkPipeline pipeline) {
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
     set_viewport(cmd, face_extent);
     gpu::PushDescriptors()
         .storage_buffer(0, points_)
+        .storage_buffer(1, matrices_)
+        .storage_buffer(2, context.frame.materials)
         .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, depth_layout_);
     const VkDeviceSize offset = 0;
     vkCmdBindVertexBuffers(cmd, 0, 1, &context.frame.vertices, &offset);
     vkCmdBindIndexBuffer(cmd, index_list_, 0, VK_INDEX_TYPE_UINT32);
   };
-  auto draw = [&](const reference::FaceRun& r, std::uint32_t first_face, std::uint32_t count) {
+  // Opaque casters (depth) or translucent ones (tint) of one run.
+  auto draw = [&](const reference::FaceRun& r, std::uint32_t first_face, std::uint32_t count,
+                  bool tint) {
     const std::uint32_t light = batch.first_light + r.slot;
+    const std::uint32_t index_count = tint ? plan_.tint_count[light] : plan_.index_count[light];
+    if (index_count == 0) return;
+    const bool ortho = context.frame.scene->lights[light].type == scene::LightType::directional;
     const reference::DepthPush push{light * plan_.samples + sample,
-                                    r.slot * reference::kFacesPerLight, near_};
+                                    r.slot * reference::kFacesPerLight, near_, ortho ? 1u : 0u};
     vkCmdPushConstants(cmd, depth_layout_, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof push, &push);
-    vkCmdDrawIndexed(cmd, plan_.index_count[light], count, plan_.index_first[light], 0, first_face);
+    vkCmdDrawIndexed(cmd, index_count, count,
+                     tint ? plan_.tint_first[light] : plan_.index_first[light], 0, first_face);
   };
+  const VkPipeline opaque = batch.tinted ? depth_tint_pipeline_ : depth_pipeline_;
 
   const std::size_t begin = run;
   while (run < batch.runs.size() && batch.runs[run].sample == sample) ++run;
   if (layered_) {
-    // One rendering clears every layer and draws each run as instanced faces.
+    // One rendering clears every layer and draws each run as instanced faces: opaque
+    // casters first, then (tinted batches) the panes against their depth.
     attachment.imageView = faces_.view();
+    colour.imageView = tints_.view();
     rendering.layerCount = faces_.layers();
     vkCmdBeginRendering(cmd, &rendering);
-    bind();
+    bind(opaque);
     for (std::size_t i = begin; i < run; ++i) {
-      draw(batch.runs[i], batch.runs[i].first_face, batch.runs[i].face_count);
+      draw(batch.runs[i], batch.runs[i].first_face, batch.runs[i].face_count, false);
+    }
+    if (batch.tinted) {
+      bind(colour_pipeline_);
+      for (std::size_t i = begin; i < run; ++i) {
+        draw(batch.runs[i], batch.runs[i].first_face, batch.runs[i].face_count, true);
+      }
     }
     vkCmdEndRendering(cmd);
     return;
@@ -175,14 +244,18 @@ void ShadowReferencePass::render_faces(fgvk::ExecuteContext& context, const refe
   rendering.layerCount = 1;
   for (std::uint32_t layer = 0; layer < faces_.layers(); ++layer) {
     attachment.imageView = faces_.layer_view(layer);
+    if (batch.tinted) colour.imageView = tints_.layer_view(layer);
     vkCmdBeginRendering(cmd, &rendering);
-    bind();
     const std::uint32_t slot = layer / reference::kFacesPerLight;
     const std::uint32_t face = layer % reference::kFacesPerLight;
-    for (std::size_t i = begin; i < run; ++i) {
-      const auto& r = batch.runs[i];
-      if (r.slot == slot && face >= r.first_face && face < r.first_face + r.face_count) {
-        draw(r, face, 1);
+    for (const bool tint : {false, true}) {
+      if (tint && !batch.tinted) break;
+      bind(tint ? VkPipeline(colour_pipeline_) : opaque);
+      for (std::size_t i = begin; i < run; ++i) {
+        const auto& r = batch.runs[i];
+        if (r.slot == slot && face >= r.first_face && face < r.first_face + r.face_count) {
+          draw(r, face, 1, tint);
+        }
       }
     }
     vkCmdEndRendering(cmd);

@@ -3,7 +3,8 @@
 // Tiled deferred shading (TECHNIQUE.md 1, step 6). One 16x16 workgroup per tile:
 //  1. the tile's linear depth bounds, min/max through shared-memory atomics on the
 //     float bits (positive floats order like their bit patterns);
-//  2. a per-tile light list in shared memory: every light's sphere is tested against
+//  2. a per-tile light list in shared memory: every light's bounding sphere (a spot
+//     light's cone bound, lights.glsl light_bounding_sphere) is tested against
 //     the tile's sub-frustum (four side planes through the eye + the depth bounds),
 //     256 lights per step, one per thread;
 //  3. each pixel shades the listed lights with deferred-lighting's BRDF, multiplied by
@@ -148,7 +149,8 @@ void main() {
       if (used + TILE_THREADS > TILE_LIST_CAPACITY) break;
       uint index = next + local;
       if (index < count) {
-        vec4 light = lights[index].position_range;
+        // Range sphere (point) or the cone's bounding sphere (spot; lights.glsl).
+        vec4 light = light_bounding_sphere(lights[index]);
         // Slightly inflated so float error at a plane never drops a reaching light.
         float r = light.w * 1.0001 + 1e-4;
         float d = -light.z;

@@ -110,4 +110,16 @@ double transition_width(const std::vector<double>& profile, double low, double h
   return std::abs(xb - xa);
 }
 
+std::vector<double> visibility_row(const app::FloatImage& shadowed,
+                                   const app::FloatImage& unshadowed) {
+  std::vector<double> row;
+  const std::uint32_t y = shadowed.height / 2;
+  for (std::uint32_t x = 0; x < shadowed.width; ++x) {
+    const double lit = unshadowed.at(x, y, 0) + unshadowed.at(x, y, 1) + unshadowed.at(x, y, 2);
+    const double got = shadowed.at(x, y, 0) + shadowed.at(x, y, 1) + shadowed.at(x, y, 2);
+    row.push_back(lit > 0.0 ? got / lit : 0.0);
+  }
+  return row;
+}
+
 }  // namespace antumbra::quality_testing

@@ -53,4 +53,8 @@ scene::Scene analytic_scene(const AnalyticSetup& setup);
 // `profile` between its low and high plateaus; negative when none is found.
 double transition_width(const std::vector<double>& profile, double low, double high);
 
+// Visibility along the image's middle row: shadowed radiance / unshadowed radiance.
+std::vector<double> visibility_row(const app::FloatImage& shadowed,
+                                   const app::FloatImage& unshadowed);
+
 }  // namespace antumbra::quality_testing

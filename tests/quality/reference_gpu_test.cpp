@@ -53,19 +53,6 @@ TEST_F(ReferenceGpu, AtriumIsCleanDeterministicAndHasPenumbrae) {
   EXPECT_EQ(read_float_image(*session, "penumbraCount").texels, penumbra.texels);
 }
 
-// Visibility along the image's middle row: reference radiance / unshadowed radiance.
-std::vector<double> visibility_row(const app::FloatImage& shadowed,
-                                   const app::FloatImage& unshadowed) {
-  std::vector<double> row;
-  const std::uint32_t y = shadowed.height / 2;
-  for (std::uint32_t x = 0; x < shadowed.width; ++x) {
-    const double lit = unshadowed.at(x, y, 0) + unshadowed.at(x, y, 1) + unshadowed.at(x, y, 2);
-    const double got = shadowed.at(x, y, 0) + shadowed.at(x, y, 1) + shadowed.at(x, y, 2);
-    row.push_back(lit > 0.0 ? got / lit : 0.0);
-  }
-  return row;
-}
-
 // 10%-90% width of the transition as a fraction of the full penumbra width, for a
 // straight edge: a uniformly bright disk ("projected") covers 10% when the edge is
 // 0.687 radii from its centre; the uniform sphere average is linear (0.8).
