@@ -24,7 +24,7 @@ demo: build
 	$(BUILD)/app/antumbra render $(DEMO_ARGS)
 
 # Release tests (CPU-only suites and lavapipe GPU suites with validation), then the
-# Vulkan-free suites (label asan: framegraph, scene, layering) under ASan + UBSan.
+# Vulkan-free suites (label asan: framegraph, scene, layering, watch, editor) under ASan + UBSan.
 test: build
 	@ctest --test-dir $(BUILD) --output-on-failure --no-tests=error -j$(JOBS)
 	@$(MAKE) --no-print-directory test-asan
@@ -32,7 +32,8 @@ test: build
 test-asan: deps
 	@cmake -S . -B $(ASAN_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DANTUMBRA_SANITIZE=ON \
 	  -DANTUMBRA_BUILD_BENCHMARKS=OFF $(CMAKE_ARGS) > /dev/null
-	@cmake --build $(ASAN_BUILD) -j$(JOBS) --target antumbra_framegraph_tests antumbra_scene_tests antumbra_layering_tests antumbra_watch_tests
+	@cmake --build $(ASAN_BUILD) -j$(JOBS) --target antumbra_framegraph_tests antumbra_scene_tests antumbra_layering_tests antumbra_watch_tests \
+	  antumbra_editor_model_tests
 	@ctest --test-dir $(ASAN_BUILD) --output-on-failure --no-tests=error -j$(JOBS) -L asan
 
 # libFuzzer over graph parsing + compiling (clang). FUZZ_SECONDS bounds the run.

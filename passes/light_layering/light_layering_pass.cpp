@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <cstring>
-#include <functional>
-#include <limits>
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
@@ -14,17 +12,9 @@
 #include "common/frame_resources.hpp"
 #include "common/layer_table.hpp"
 #include "common/pass_support.hpp"
+#include "light_layering/core/scene_spheres.hpp"
 
 namespace antumbra::passes {
-namespace {
-
-std::uint64_t light_id(const std::string& name) {
-  // Lights are identified by name (unique in a scene), so an edit that reorders the
-  // light list does not make every light change layer.
-  return std::hash<std::string>{}(name);
-}
-
-}  // namespace
 
 LightLayeringPass::LightLayeringPass(const fg::PlanPass& pass) {
   options_.max_layers = static_cast<int>(param_float(pass, "maxLayers"));
@@ -53,18 +43,7 @@ void LightLayeringPass::prepare(fgvk::PrepareContext& context) {
 
 void LightLayeringPass::execute(fgvk::ExecuteContext& context) {
   const scene::Scene& scene = *context.frame.scene;
-  spheres_.clear();
-  scene_index_.clear();
-  for (std::uint32_t i = 0; i < scene.lights.size() && i < kMaxShadowLights; ++i) {
-    const auto& light = scene.lights[i];
-    if (!light.casts_shadows) continue;
-    // The sun lights everything: an infinite sphere (the core handles it) on a layer of
-    // its own (TECHNIQUE.md 1, step 3). Spot lights keep their conservative sphere.
-    const bool sun = light.type == scene::LightType::directional;
-    spheres_.push_back({light_id(light.name), light.name, light.position,
-                        sun ? std::numeric_limits<float>::infinity() : light.range, sun});
-    scene_index_.push_back(i);
-  }
+  layering::gather_light_spheres(scene.lights, kMaxShadowLights, spheres_, scene_index_);
 
   const layering::LayerAssignment* assignment = nullptr;
   if (criterion_ == layering::Criterion::screen_tile) {

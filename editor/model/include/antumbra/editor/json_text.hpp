@@ -1,0 +1,24 @@
+#pragma once
+// Writing documents back without reformatting them. Hand-formatted files (one light per
+// line, compact arrays) stay as they were: when an edit changed only values, each changed
+// value is replaced in place in the loaded text and nothing else moves, so a diff shows
+// exactly the edit. Structural edits (a light added or removed, a key added) fall back to
+// a canonical 2-space layout of the whole document.
+
+#include <string>
+#include <string_view>
+
+#include "antumbra/fg/json_document.hpp"
+
+namespace antumbra::editor {
+
+// Canonical layout: 2-space indent, key order kept, a final newline.
+[[nodiscard]] std::string format_json(const fg::Json& value);
+
+// The text of `current`, reusing `original_text` (parsed as `original`) wherever the two
+// documents agree. The result always parses back to `current` with its key order; when
+// that cannot be had by replacing values in place, it is format_json(current).
+[[nodiscard]] std::string preserve_format(const fg::JsonDocument& original,
+                                          std::string_view original_text, const fg::Json& current);
+
+}  // namespace antumbra::editor

@@ -1,0 +1,302 @@
+// The suggested-fix search. The conflict graph only changes where a light's sphere starts
+// or stops touching another, so instead of bisecting over the colouring the search lists
+// those breakpoints and tests them in order. Candidates are changes to the scene light
+// itself (its range or position); every one is verified by gathering the spheres exactly
+// as the pass does (gather_light_spheres: a spot's sphere depends on its range and cone)
+// and re-running the same colouring. Greedy colourings are not monotone in the edges, so
+// a value is only offered when it has been tested.
+#include "antumbra/editor/fix_suggestion.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include <glm/geometric.hpp>
+
+#include "antumbra/editor/scene_document.hpp"
+#include "common/shadow_data.hpp"
+#include "light_layering/core/scene_spheres.hpp"
+
+namespace antumbra::editor {
+namespace {
+
+using layering::LightSphere;
+
+// Keeps a tested value off the exact touching distance, where rounding decides.
+constexpr double kMargin = 1e-4;
+
+class FitCheck {
+ public:
+  explicit FitCheck(const layering::LayeringOptions& options) : options_(options) {}
+  [[nodiscard]] int cap() const { return std::clamp(options_.max_layers, 1, layering::kMaxLayers); }
+  // A fresh frame's colouring (no history) of these lights fits the cap: nothing
+  // overflows and the uncapped colouring needs no more than the cap.
+  bool fits(std::span<const scene::PointLight> lights, int& needed) {
+    layering::gather_light_spheres(lights, passes::kMaxShadowLights, spheres_, scene_index_);
+    const auto& a =
+        layering_.assign(builder_.build_world_sphere(spheres_), spheres_, options_, nullptr);
+    needed = a.layers_needed;
+    return a.warnings.empty() && a.layers_needed <= cap();
+  }
+
+ private:
+  layering::LayeringOptions options_;
+  layering::GraphBuilder builder_;
+  layering::Layering layering_;
+  std::vector<LightSphere> spheres_;
+  std::vector<std::uint32_t> scene_index_;
+};
+
+// Values an artist would type: rounded to `decimals`, as the parser will read them back.
+float round_down(double v, int decimals) {
+  const double scale = std::pow(10.0, decimals);
+  return static_cast<float>(std::floor(v * scale) / scale);
+}
+float round_nearest(double v, int decimals) {
+  const double scale = std::pow(10.0, decimals);
+  return static_cast<float>(std::round(v * scale) / scale);
+}
+
+// "4.2", "4.23", "6.0": two decimals at most, one at least.
+std::string metres(float v) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.2f", static_cast<double>(v));
+  std::string text = buffer;
+  while (text.size() > 1 && text.back() == '0' && text[text.size() - 2] != '.') text.pop_back();
+  return text;
+}
+
+std::string in_quotes(const std::string& name) {
+  std::string out;
+  out.reserve(name.size() + 2);
+  out += '\'';
+  out += name;
+  out += '\'';
+  return out;
+}
+
+// The sphere the pass colours for `light` (the conflict test of the world-sphere graph).
+LightSphere sphere_of(const scene::PointLight& light) {
+  std::vector<LightSphere> one;
+  std::vector<std::uint32_t> index;
+  scene::PointLight copy = light;
+  copy.casts_shadows = true;
+  layering::gather_light_spheres({&copy, 1}, 1, one, index);
+  return one.front();
+}
+
+bool overlap(const LightSphere& a, const LightSphere& b) {
+  return glm::distance(a.position, b.position) < a.range + b.range;
+}
+
+struct Search {
+  FitCheck& check;
+  std::vector<scene::PointLight>& lights;  // varied one light at a time, then restored
+  std::span<const LightSphere> spheres;    // of the layout as it is
+  std::span<const std::uint32_t> scene_index;
+  const layering::ConflictGraph& graph;
+  const FixSearchOptions& options;
+  [[nodiscard]] float step() const { return static_cast<float>(std::pow(10.0, -options.decimals)); }
+};
+
+// The range below which light v stops conflicting with sphere u. A light's sphere only
+// grows with its range (a spot's cone sphere grows from its apex), so the conflict is
+// monotone in the range and bisection finds where it starts.
+double conflict_threshold(scene::PointLight light, const LightSphere& u) {
+  double lo = 0.0;
+  double hi = light.range;
+  for (int i = 0; i < 48; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    light.range = static_cast<float>(mid);
+    (overlap(sphere_of(light), u) ? hi : lo) = mid;
+  }
+  return lo;
+}
+
+// The largest range of light v that fits: the graph changes only at the thresholds of
+// v's neighbours, so those (rounded down) are the only values worth testing.
+std::optional<LayerFix> range_fix(Search& s, std::uint32_t v) {
+  scene::PointLight& light = s.lights[s.scene_index[v]];
+  const float old_range = light.range;
+  std::vector<float> values{s.step()};
+  for (std::uint32_t u : s.graph.adjacent(v)) {
+    if (s.spheres[u].own_layer) continue;
+    values.push_back(
+        round_down(conflict_threshold(light, s.spheres[u]) - kMargin, s.options.decimals));
+  }
+  std::sort(values.begin(), values.end(), std::greater<>());
+  values.erase(std::unique(values.begin(), values.end()), values.end());
+  std::optional<LayerFix> fix;
+  for (float value : values) {
+    if (value >= old_range || value < s.step()) continue;
+    light.range = value;
+    int needed = 0;
+    if (s.check.fits(s.lights, needed)) {
+      fix = LayerFix{FixKind::reduce_range,
+                     s.scene_index[v],
+                     light.name,
+                     old_range,
+                     value,
+                     light.position,
+                     light.position,
+                     (old_range - value) / old_range,
+                     needed,
+                     "reduce range of " + in_quotes(light.name) + " from " + metres(old_range) +
+                         " to " + metres(value) + " m"};
+      break;
+    }
+  }
+  light.range = old_range;
+  return fix;
+}
+
+// Directions on the ground plane away from each neighbour, and away from all of them.
+std::vector<glm::vec3> away_directions(const Search& s, std::uint32_t v) {
+  std::vector<glm::vec3> directions;
+  glm::vec3 sum(0.0f);
+  for (std::uint32_t u : s.graph.adjacent(v)) {
+    if (s.spheres[u].own_layer) continue;
+    glm::vec3 d = s.spheres[v].position - s.spheres[u].position;
+    d.y = 0.0f;
+    if (glm::length(d) < 1e-6f) continue;
+    directions.push_back(glm::normalize(d));
+    sum += directions.back();
+  }
+  if (glm::length(sum) > 1e-6f) directions.push_back(glm::normalize(sum));
+  return directions;
+}
+
+// The smallest move of light v along `direction` that fits. Moving a light moves its
+// sphere by the same amount, and the graph changes only where that sphere leaves
+// another's reach, so test just past each such distance.
+std::optional<LayerFix> move_fix(Search& s, std::uint32_t v, glm::vec3 direction, float limit) {
+  const LightSphere& sphere = s.spheres[v];
+  scene::PointLight& light = s.lights[s.scene_index[v]];
+  const glm::vec3 old_position = light.position;
+  std::vector<double> distances;
+  for (std::uint32_t k = 0; k < s.spheres.size(); ++k) {
+    if (k == v || s.spheres[k].own_layer) continue;
+    const glm::vec3 w = sphere.position - s.spheres[k].position;
+    const double reach = static_cast<double>(sphere.range) + s.spheres[k].range;
+    const double b = glm::dot(w, direction);
+    const double disc = b * b - (glm::dot(w, w) - reach * reach);
+    if (disc <= 0.0) continue;
+    // One rounding step beyond the exit: the rounded position stays outside.
+    const double exit = -b + std::sqrt(disc) + kMargin + s.step();
+    if (exit > 0.0 && exit <= limit) distances.push_back(exit);
+  }
+  std::sort(distances.begin(), distances.end());
+  std::optional<LayerFix> fix;
+  for (double d : distances) {
+    const glm::vec3 moved = old_position + static_cast<float>(d) * direction;
+    light.position = {round_nearest(moved.x, s.options.decimals), old_position.y,
+                      round_nearest(moved.z, s.options.decimals)};
+    int needed = 0;
+    if (s.check.fits(s.lights, needed)) {
+      const float moved_by = glm::distance(light.position, old_position);
+      const glm::vec3 p = light.position;
+      fix = LayerFix{FixKind::move_light,
+                     s.scene_index[v],
+                     light.name,
+                     light.range,
+                     light.range,
+                     old_position,
+                     p,
+                     moved_by,
+                     needed,
+                     "move " + in_quotes(light.name) + " by " + metres(moved_by) + " m to (" +
+                         metres(p.x) + ", " + metres(p.y) + ", " + metres(p.z) + ")"};
+      break;
+    }
+  }
+  light.position = old_position;
+  return fix;
+}
+
+// Lights whose change could help: those the warnings name and their neighbours.
+std::vector<std::uint32_t> candidates(std::span<const LightSphere> spheres,
+                                      const layering::ConflictGraph& graph,
+                                      const layering::LayerAssignment& assignment) {
+  std::vector<bool> pick(spheres.size(), false);
+  for (const layering::LayerWarning& w : assignment.warnings) {
+    for (std::uint32_t v : w.lights) {
+      pick[v] = true;
+      for (std::uint32_t u : graph.adjacent(v)) pick[u] = true;
+    }
+  }
+  if (assignment.warnings.empty()) {  // over the cap without an overflow: any conflict
+    for (std::uint32_t v = 0; v < spheres.size(); ++v) pick[v] = graph.degree(v) > 0;
+  }
+  std::vector<std::uint32_t> out;
+  for (std::uint32_t v = 0; v < spheres.size(); ++v) {
+    if (pick[v] && !spheres[v].own_layer) out.push_back(v);
+  }
+  return out;
+}
+
+}  // namespace
+
+const LayerFix* FixSuggestion::best() const {
+  if (range_fix) return &*range_fix;
+  return move_fix ? &*move_fix : nullptr;
+}
+
+FixSuggestion suggest_fix(std::span<const scene::PointLight> lights,
+                          const layering::LayeringOptions& options,
+                          const FixSearchOptions& search) {
+  std::vector<scene::PointLight> work(lights.begin(), lights.end());
+  FitCheck check(options);
+  FixSuggestion out;
+  int needed = 0;
+  if (check.fits(work, needed)) {
+    out.message = "the layout fits the cap of " + std::to_string(check.cap()) + " layers";
+    return out;
+  }
+  out.needed = true;
+  std::vector<LightSphere> spheres;
+  std::vector<std::uint32_t> scene_index;
+  layering::gather_light_spheres(lights, passes::kMaxShadowLights, spheres, scene_index);
+  const layering::ConflictGraph graph = layering::build_world_sphere_graph(spheres);
+  const layering::LayerAssignment assignment = layering::assign_layers(graph, spheres, options);
+  Search s{check, work, spheres, scene_index, graph, search};
+
+  for (std::uint32_t v : candidates(spheres, graph, assignment)) {
+    if (auto fix = range_fix(s, v); fix && (!out.range_fix || fix->cost < out.range_fix->cost))
+      out.range_fix = std::move(fix);
+    if (!search.search_moves) continue;
+    for (const glm::vec3& direction : away_directions(s, v)) {
+      const float limit =
+          out.move_fix ? std::min(search.max_move, out.move_fix->cost) : search.max_move;
+      if (auto fix = move_fix(s, v, direction, limit);
+          fix && (!out.move_fix || fix->cost < out.move_fix->cost))
+        out.move_fix = std::move(fix);
+    }
+  }
+
+  const std::string needs = "the layout needs " + std::to_string(assignment.layers_needed) +
+                            " layers, the cap is " + std::to_string(check.cap());
+  if (const LayerFix* best = out.best()) {
+    out.message = needs + ": " + best->description;
+    if (out.range_fix && out.move_fix) out.message += ", or " + out.move_fix->description;
+  } else {
+    out.message = needs +
+                  "; no change to one light's range or position brings it under the "
+                  "cap: raise the cap or edit several lights";
+  }
+  return out;
+}
+
+EditResult apply_fix(SceneDocument& document, const LayerFix& fix) {
+  if (fix.light >= document.lights().size() || document.lights()[fix.light].name != fix.name)
+    return EditResult::refused("the scene changed since the fix was computed");
+  LightChanges changes;
+  if (fix.kind == FixKind::reduce_range) {
+    changes.range = fix.new_range;
+  } else {
+    changes.position = fix.new_position;
+  }
+  return document.apply(fix.light, changes, "Suggested fix: " + fix.description);
+}
+
+}  // namespace antumbra::editor

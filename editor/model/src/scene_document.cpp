@@ -1,0 +1,113 @@
+// Loading, undo/redo and recovery of the scene document. The edits themselves are in
+// scene_edits.cpp, saving and the recovery file in json_file.cpp.
+#include "antumbra/editor/scene_document.hpp"
+
+#include "antumbra/editor/editor_codes.hpp"
+#include "antumbra/scene/scene_file.hpp"
+#include "light_json.hpp"
+
+namespace antumbra::editor {
+namespace {
+
+// What the editor needs before it can edit a scene safely; the lights come back read.
+std::vector<scene::PointLight> check_scene(const fg::JsonDocument& document,
+                                           fg::Diagnostics& diagnostics) {
+  const fg::Json& root = document.root();
+  if (!root.is_object()) {
+    diagnostics.add(document.make(codes::kNotAnObject, fg::Severity::error,
+                                  "a scene file must hold a JSON object", ""));
+    return {};
+  }
+  // A newer format may give known keys new meanings: editing it could corrupt it.
+  if (const auto it = root.find("version");
+      it != root.end() && it->is_number() && it->get<double>() > scene::kSceneFormatVersion) {
+    diagnostics.add(document.make(codes::kNewerVersion, fg::Severity::error,
+                                  "scene format version " + it->dump() +
+                                      " is newer than this editor supports (" +
+                                      std::to_string(scene::kSceneFormatVersion) + ")",
+                                  "/version"));
+    return {};
+  }
+  return detail::read_lights(root, &document, diagnostics);
+}
+
+}  // namespace
+
+fg::Result<SceneDocument> SceneDocument::load(const std::filesystem::path& file) {
+  auto text = read_text_file(file);
+  if (!text.ok()) return text.diagnostics();
+  return parse(text.value(), file);
+}
+
+fg::Result<SceneDocument> SceneDocument::parse(std::string_view text,
+                                               const std::filesystem::path& file) {
+  auto document = fg::parse_json(text, file.string());
+  if (!document.ok()) return document.diagnostics();
+  fg::Diagnostics diagnostics;
+  std::vector<scene::PointLight> lights = check_scene(document.value(), diagnostics);
+  if (diagnostics.has_errors()) return diagnostics;
+  SceneDocument doc;
+  doc.file_ = JsonFile(file, std::move(document.value()), std::string(text));
+  doc.lights_ = std::move(lights);
+  return fg::Result<SceneDocument>(std::move(doc), std::move(diagnostics));
+}
+
+int SceneDocument::find_light(std::string_view name) const {
+  for (std::size_t i = 0; i < lights_.size(); ++i) {
+    if (lights_[i].name == name) return static_cast<int>(i);
+  }
+  return -1;
+}
+
+void SceneDocument::select(int index) {
+  selected_ = index >= 0 && static_cast<std::size_t>(index) < lights_.size() ? index : -1;
+}
+
+void SceneDocument::refresh() {
+  fg::Diagnostics ignored;  // edits are validated before they are made
+  lights_ = detail::read_lights(file_.root(), nullptr, ignored);
+  select(selected_);
+}
+
+EditResult SceneDocument::run(Command command) {
+  const int focus = command.focus_after;
+  file_.apply(std::move(command));
+  refresh();
+  select(focus);
+  return {true, true, {}};
+}
+
+void SceneDocument::after_history(const Command* command, bool undone) {
+  refresh();
+  if (command != nullptr) select(undone ? command->focus_before : command->focus_after);
+}
+
+bool SceneDocument::undo() {
+  const Command* command = file_.undo();
+  after_history(command, true);
+  return command != nullptr;
+}
+
+bool SceneDocument::redo() {
+  const Command* command = file_.redo();
+  after_history(command, false);
+  return command != nullptr;
+}
+
+fg::Diagnostics SceneDocument::validate() const {
+  return scene::parse_scene_text(to_text(), file().string()).diagnostics();
+}
+
+fg::Diagnostics SceneDocument::recover() {
+  auto document = file_.read_recovery();
+  if (!document.ok()) return document.diagnostics();
+  fg::Diagnostics diagnostics;
+  (void)check_scene(document.value(), diagnostics);
+  if (diagnostics.has_errors()) return diagnostics;
+  file_.replace_content(document->root());
+  selected_ = -1;
+  refresh();
+  return diagnostics;
+}
+
+}  // namespace antumbra::editor

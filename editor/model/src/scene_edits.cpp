@@ -1,0 +1,256 @@
+// The scene document's edits: each builds one Command of JSON edits after checking the
+// values the way the engine's scene parser will, so a saved file always loads.
+#include <cmath>
+#include <utility>
+
+#include "antumbra/editor/scene_document.hpp"
+#include "light_json.hpp"
+
+namespace antumbra::editor {
+namespace {
+
+using detail::tidy;
+
+bool finite(glm::vec3 v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+// Built by appending: GCC 12 warns (-Wrestrict, a false positive) on "'" + s + "'".
+std::string in_quotes(std::string_view name) {
+  std::string out;
+  out.reserve(name.size() + 2);
+  out += '\'';
+  out.append(name);
+  out += '\'';
+  return out;
+}
+
+// Collects the new value of each key (nullopt: remove) so that a key touched twice, e.g.
+// by a type change and by the position, ends up as one edit with the right `before`.
+class PendingChanges {
+ public:
+  void set(const char* key, std::optional<Json> value) {
+    for (auto& [k, v] : changes_) {
+      if (k == key) {
+        v = std::move(value);
+        return;
+      }
+    }
+    changes_.emplace_back(key, std::move(value));
+  }
+  // Edits for the keys whose value really changes.
+  [[nodiscard]] std::vector<JsonEdit> edits(const Json& light, const std::string& pointer) const {
+    std::vector<JsonEdit> out;
+    for (const auto& [key, value] : changes_) {
+      std::optional<Json> before;
+      if (const auto it = light.find(key); it != light.end()) before = *it;
+      if (before == value) continue;
+      out.push_back(JsonEdit::set(pointer, key, std::move(before), value));
+    }
+    return out;
+  }
+
+ private:
+  std::vector<std::pair<std::string, std::optional<Json>>> changes_;
+};
+
+bool has_sun(const std::vector<scene::PointLight>& lights, std::size_t except = SIZE_MAX) {
+  for (std::size_t i = 0; i < lights.size(); ++i) {
+    if (i != except && lights[i].type == scene::LightType::directional) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+EditResult SceneDocument::check_light(std::size_t light) const {
+  if (light >= lights_.size()) {
+    return EditResult::refused("there is no light " + std::to_string(light) + " (the scene has " +
+                               std::to_string(lights_.size()) + ")");
+  }
+  return {};
+}
+
+EditResult SceneDocument::apply(std::size_t light, const LightChanges& c, std::string description) {
+  if (auto checked = check_light(light); !checked) return checked;
+  const scene::PointLight& now = lights_[light];
+  const scene::LightType type = c.type.value_or(now.type);
+  const bool sun = type == scene::LightType::directional;
+  PendingChanges pending;
+
+  if (c.name && *c.name != now.name) {
+    if (c.name->empty()) return EditResult::refused("a light name must not be empty");
+    if (find_light(*c.name) >= 0)
+      return EditResult::refused("another light is already named " + in_quotes(*c.name));
+    pending.set(detail::kName, Json(*c.name));
+  }
+  if (c.type && *c.type != now.type) {
+    if (sun && has_sun(lights_, light))
+      return EditResult::refused("a scene has at most one directional light");
+    pending.set(detail::kType, Json(std::string(detail::type_name(type))));
+    // Keys the new type does not read would only draw "no effect" warnings.
+    if (sun) {
+      pending.set(detail::kPosition, std::nullopt);
+      pending.set(detail::kRange, std::nullopt);
+    }
+    if (type != scene::LightType::spot) {
+      pending.set(detail::kAngle, std::nullopt);
+      pending.set(detail::kInnerAngle, std::nullopt);
+    }
+    // Spot and sun need a direction (the engine requires it), a point light ignores it.
+    const fg::Json& object = file_.root()["lights"][light];
+    if (type == scene::LightType::point) {
+      pending.set(detail::kDirection, std::nullopt);
+    } else if (!object.contains(detail::kDirection)) {
+      pending.set(detail::kDirection, tidy(kNewLightDirection));
+    }
+    if (now.type == scene::LightType::directional)
+      pending.set(detail::kPosition, tidy(kNewLightPosition));
+    // The sun's size is an angle in degrees, the others' a radius in metres: start over.
+    if ((now.type == scene::LightType::directional) != sun)
+      pending.set(detail::kSize, std::nullopt);
+  }
+  if (c.position && (*c.position != now.position || c.type)) {
+    if (sun) return EditResult::refused("a directional light has no position");
+    if (!finite(*c.position)) return EditResult::refused("the position must be finite");
+    pending.set(detail::kPosition, tidy(*c.position));
+  }
+  if (c.color && *c.color != now.color) {
+    if (!finite(*c.color) || c.color->x < 0 || c.color->y < 0 || c.color->z < 0)
+      return EditResult::refused("colour components must be finite and >= 0");
+    pending.set(detail::kColor, tidy(*c.color));
+  }
+  if (c.intensity && *c.intensity != now.intensity) {
+    if (!std::isfinite(*c.intensity) || *c.intensity < 0)
+      return EditResult::refused("the intensity must be finite and >= 0");
+    pending.set(detail::kIntensity, tidy(*c.intensity));
+  }
+  if (c.range && (*c.range != now.range || c.type)) {
+    if (sun) return EditResult::refused("a directional light has no range (it reaches everything)");
+    if (!std::isfinite(*c.range) || *c.range <= 0)
+      return EditResult::refused("the range must be finite and > 0");
+    pending.set(detail::kRange, tidy(*c.range));
+  }
+  if (c.size && (*c.size != now.size || c.type)) {
+    if (!std::isfinite(*c.size) || *c.size < 0 || (sun && *c.size > 10.0f)) {
+      return EditResult::refused(sun ? "the sun's size is an angle in [0, 10] degrees"
+                                     : "the light size must be finite and >= 0");
+    }
+    pending.set(detail::kSize, tidy(*c.size));
+  }
+  if (c.casts_shadows && *c.casts_shadows != now.casts_shadows)
+    pending.set(detail::kCastsShadows, Json(*c.casts_shadows));
+
+  const std::string pointer = fg::pointer_append("/lights", light);
+  Command command{description.empty() ? "Edit " + in_quotes(now.name) : std::move(description),
+                  pending.edits(file_.root()["lights"][light], pointer), static_cast<int>(light),
+                  static_cast<int>(light)};
+  if (command.edits.empty()) return {};  // nothing changes: no undo step, not dirty
+  return run(std::move(command));
+}
+
+EditResult SceneDocument::set_name(std::size_t light, std::string name) {
+  std::string description = label("Rename", light) + " to " + in_quotes(name);
+  return apply(light, {.name = std::move(name)}, std::move(description));
+}
+
+EditResult SceneDocument::set_type(std::size_t light, scene::LightType type) {
+  return apply(light, {.type = type},
+               label("Make", light) + " a " + std::string(detail::type_name(type)) + " light");
+}
+
+std::string SceneDocument::label(std::string_view verb, std::size_t light) const {
+  return std::string(verb) + " " + in_quotes(light < lights_.size() ? lights_[light].name : "?");
+}
+
+EditResult SceneDocument::set_position(std::size_t light, glm::vec3 position) {
+  return apply(light, {.position = position}, label("Move", light));
+}
+
+EditResult SceneDocument::set_color(std::size_t light, glm::vec3 color) {
+  return apply(light, {.color = color}, label("Set colour of", light));
+}
+
+EditResult SceneDocument::set_intensity(std::size_t light, float intensity) {
+  return apply(light, {.intensity = intensity}, label("Set intensity of", light));
+}
+
+EditResult SceneDocument::set_range(std::size_t light, float range) {
+  return apply(light, {.range = range}, label("Set range of", light));
+}
+
+EditResult SceneDocument::set_size(std::size_t light, float size) {
+  return apply(light, {.size = size}, label("Set size of", light));
+}
+
+EditResult SceneDocument::set_casts_shadows(std::size_t light, bool casts) {
+  return apply(light, {.casts_shadows = casts},
+               label(casts ? "Enable shadows of" : "Disable shadows of", light));
+}
+
+std::string SceneDocument::unique_name(std::string_view base) const {
+  std::string name(base);
+  for (int n = 2; find_light(name) >= 0; ++n) name = std::string(base) + " " + std::to_string(n);
+  return name;
+}
+
+EditResult SceneDocument::add_light(scene::LightType type, glm::vec3 position) {
+  const bool sun = type == scene::LightType::directional;
+  if (sun && has_sun(lights_))
+    return EditResult::refused("a scene has at most one directional light");
+  if (!finite(position)) return EditResult::refused("the position must be finite");
+  std::string name;
+  for (std::size_t n = lights_.size() + 1; name.empty() || find_light(name) >= 0; ++n)
+    name = "light" + std::to_string(n);
+  Json light = Json::object();
+  light[detail::kName] = name;
+  if (type != scene::LightType::point) light[detail::kType] = std::string(detail::type_name(type));
+  if (!sun) light[detail::kPosition] = tidy(position);
+  if (type != scene::LightType::point) light[detail::kDirection] = tidy(kNewLightDirection);
+  light[detail::kColor] = Json::array({1.0, 1.0, 1.0});
+  light[detail::kIntensity] = sun ? 1.0 : static_cast<double>(kNewLightIntensity);
+  if (!sun) {
+    light[detail::kRange] = tidy(kNewLightRange);
+    light[detail::kSize] = tidy(kNewLightSize);
+  }
+  light[detail::kCastsShadows] = true;
+
+  const auto index = static_cast<int>(lights_.size());
+  Command command{"Add " + in_quotes(name), {}, selected_, index};
+  if (file_.root().contains("lights")) {
+    command.edits.push_back(JsonEdit::insert("/lights", lights_.size(), std::move(light)));
+  } else {
+    command.edits.push_back(JsonEdit::set("", "lights", std::nullopt, Json::array({light})));
+  }
+  return run(std::move(command));
+}
+
+EditResult SceneDocument::duplicate_light(std::size_t light) {
+  if (auto checked = check_light(light); !checked) return checked;
+  if (lights_[light].type == scene::LightType::directional)
+    return EditResult::refused("a scene has at most one directional light");
+  Json copy = file_.root()["lights"][light];
+  const std::string name = unique_name(lights_[light].name + " copy");
+  copy[detail::kName] = name;
+  const auto index = static_cast<int>(light + 1);
+  return run({"Duplicate " + in_quotes(lights_[light].name) + " as " + in_quotes(name),
+              {JsonEdit::insert("/lights", light + 1, std::move(copy))},
+              static_cast<int>(light),
+              index});
+}
+
+EditResult SceneDocument::delete_light(std::size_t light) {
+  if (auto checked = check_light(light); !checked) return checked;
+  int after = selected_;
+  if (after == static_cast<int>(light)) {
+    after = -1;
+  } else if (after > static_cast<int>(light)) {
+    --after;
+  }
+  return run({"Delete " + in_quotes(lights_[light].name),
+              {JsonEdit::erase("/lights", light, file_.root()["lights"][light])},
+              static_cast<int>(light),
+              after});
+}
+
+}  // namespace antumbra::editor

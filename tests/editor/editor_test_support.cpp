@@ -1,0 +1,119 @@
+#include "editor_test_support.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace antumbra::editor::testing {
+
+std::filesystem::path fixture(const std::string& name) {
+  return std::filesystem::path(ANTUMBRA_EDITOR_TEST_DATA) / name;
+}
+
+std::filesystem::path source_file(const std::string& relative) {
+  return std::filesystem::path(ANTUMBRA_SOURCE_DIR) / relative;
+}
+
+std::string read(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw std::runtime_error("cannot read " + file.string());
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  return buffer.str();
+}
+
+void write(const std::filesystem::path& file, const std::string& text) {
+  std::ofstream out(file, std::ios::binary);
+  out << text;
+  if (!out) throw std::runtime_error("cannot write " + file.string());
+}
+
+ScratchDir::ScratchDir() {
+  static std::atomic<int> counter{0};
+  path_ = std::filesystem::temp_directory_path() /
+          ("antumbra-editor-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
+  std::filesystem::remove_all(path_);
+  std::filesystem::create_directories(path_);
+}
+
+ScratchDir::~ScratchDir() {
+  std::error_code ignored;
+  std::filesystem::remove_all(path_, ignored);
+}
+
+std::filesystem::path ScratchDir::copy(const std::filesystem::path& from,
+                                       const std::string& as) const {
+  std::filesystem::path to = path_ / (as.empty() ? from.filename().string() : as);
+  std::filesystem::copy_file(from, to, std::filesystem::copy_options::overwrite_existing);
+  return to;
+}
+
+std::vector<std::string> ScratchDir::files() const {
+  std::vector<std::string> names;
+  for (const auto& entry : std::filesystem::directory_iterator(path_))
+    names.push_back(entry.path().filename().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+namespace {
+
+fg::ParamDesc number(std::string name, double def, double lo, double hi) {
+  fg::ParamDesc p;
+  p.name = std::move(name);
+  p.type = fg::ParamType::number;
+  p.default_value = def;
+  p.min = lo;
+  p.max = hi;
+  return p;
+}
+
+fg::ParamDesc integer(std::string name, int def, int lo, int hi) {
+  fg::ParamDesc p = number(std::move(name), def, lo, hi);
+  p.type = fg::ParamType::integer;
+  p.default_value = def;
+  return p;
+}
+
+fg::ParamDesc choice(std::string name, std::string def, std::vector<std::string> choices) {
+  fg::ParamDesc p;
+  p.name = std::move(name);
+  p.type = fg::ParamType::enumeration;
+  p.default_value = std::move(def);
+  p.choices = std::move(choices);
+  return p;
+}
+
+fg::PassDesc pass(std::string type, std::vector<fg::ParamDesc> params) {
+  fg::PassDesc desc;
+  desc.type = std::move(type);
+  desc.params = std::move(params);
+  return desc;
+}
+
+}  // namespace
+
+fg::Registry make_fake_registry() {
+  fg::Registry registry;
+  registry.add(pass("light-layering",
+                    {integer("maxLayers", 4, 1, 32),
+                     choice("order", "dsatur", {"dsatur", "smallest-last", "largest-first"})}));
+  registry.add(pass("lighting", {number("ambient", 1.0, 0.0, 4.0)}));
+  fg::ParamDesc enabled;
+  enabled.name = "enabled";
+  enabled.type = fg::ParamType::boolean;
+  enabled.default_value = true;
+  registry.add(
+      pass("tonemap", {number("exposure", 1.0, 0.0, 16.0),
+                       choice("operator", "aces", {"aces", "reinhard", "none"}), enabled}));
+  registry.add(pass("shadow-pcss",
+                    {integer("blockerSearch", 5, 1, 16), choice("kernel", "11", {"5", "11", "21"}),
+                     number("lightSizeScale", 1.0, 0.0, 8.0)}));
+  return registry;
+}
+
+}  // namespace antumbra::editor::testing
