@@ -21,6 +21,7 @@ const std::vector<Technique>& techniques() {
       {"pcss", "pcss.json", "shadow-pcss", {5, 11, 23}},
       {"ssss-blocker", "layered-ssss-blocker.json", "anisotropic-blur", {5, 11, 23}},
       {"ssss", "layered-ssss.json", "anisotropic-blur", {5, 11, 23}},
+      {"ssss-min", "layered-ssss-min.json", "anisotropic-blur", {5, 11, 23}},
   };
   return kTechniques;
 }
@@ -66,11 +67,13 @@ std::vector<Scenario> builtin_scenarios() {
       }
     }
   }
-  // Table 2 compares PCSS 5x5 + 11x11 with layered SSSS 11x11 at 1080p as lights grow.
+  // Table 2 compares PCSS 5x5 + 11x11 with layered SSSS 11x11 (blocker search and min
+  // filter) at 1080p as lights grow.
   for (const int lights : {1, 4, 8, 12, 16, 64, 256, 1024}) {
     const std::string table = lights <= 16 ? "table2" : "lights";
-    out.push_back(make(table, technique("pcss"), 11, 1080, lights));
-    out.push_back(make(table, technique("ssss"), 11, 1080, lights));
+    for (const char* name : {"pcss", "ssss", "ssss-min"}) {
+      out.push_back(make(table, technique(name), 11, 1080, lights));
+    }
   }
   return out;
 }
@@ -109,13 +112,22 @@ void fit_shadow_resources(fg::GraphDesc& graph, int lights) {
   constexpr int kMaxLayers = 2046;  // 341 lights x 6 faces; Vulkan guarantees 2048 layers
   const int layers = std::clamp(6 * lights, 6, kMaxLayers);
   const std::uint32_t face = lights <= 64 ? 1024u : 512u;
+  // A map derived from the atlas (shadow-min-filter) keeps its factor of the face size.
+  std::uint32_t atlas_width = 0;
+  for (const auto& r : graph.resources) {
+    if (r.name == "atlas" && !r.size.relative) atlas_width = r.size.width;
+  }
   for (auto& r : graph.resources) {
     if (r.kind == fg::ResourceKind::image && r.layers >= 6 &&
-        (r.name == "atlas" || r.name == "shadowColour")) {
+        (r.name == "atlas" || r.name == "shadowColour" || r.name == "minDepth")) {
+      const std::uint32_t factor = r.name == "minDepth" && atlas_width > 0 && r.size.width > 0
+                                       ? std::max(atlas_width / r.size.width, 1u)
+                                       : 1u;
+      const std::uint32_t size = face / factor;
       r.layers = static_cast<std::uint32_t>(layers);
       r.size.relative = false;
-      r.size.width = face;
-      r.size.height = face;
+      r.size.width = size;
+      r.size.height = size;
     }
     if (r.kind == fg::ResourceKind::buffer && r.name == "shadowData") {
       // shadow_data.hpp: header + 1024 lights + one face record per layer.

@@ -7,6 +7,7 @@
 #include "layered_penumbra/layered_penumbra_pass.hpp"
 #include "light_layering/light_layering_pass.hpp"
 #include "point_shadow_atlas/point_shadow_atlas_pass.hpp"
+#include "shadow_min_filter/shadow_min_filter_pass.hpp"
 #include "shadow_reference/shadow_reference_pass.hpp"
 #include "tiled_lighting/tiled_lighting_pass.hpp"
 #include "tonemap/tonemap_pass.hpp"
@@ -24,6 +25,7 @@ void register_builtin_passes(fgvk::PassRegistry& registry) {
   registry.add(TonemapPass::describe(), &make_pass<TonemapPass>);
   registry.add(LightLayeringPass::describe(), &make_pass<LightLayeringPass>);
   registry.add(PointShadowAtlasPass::describe(), &make_pass<PointShadowAtlasPass>);
+  registry.add(ShadowMinFilterPass::describe(), &make_pass<ShadowMinFilterPass>);
   registry.add(LayeredPenumbraPass::describe(), &make_pass<LayeredPenumbraPass>);
   registry.add(AnisotropicBlurPass::describe(), &make_pass<AnisotropicBlurPass>);
   registry.add(TiledLightingPass::describe(), &make_pass<TiledLightingPass>);

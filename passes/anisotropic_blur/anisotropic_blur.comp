@@ -4,7 +4,8 @@
 // shadow (TECHNIQUE.md section 1, step 5), at the resolution of its output (half
 // resolution in the default graphs). The first direction reads the full-resolution
 // hard-shadow bits, averaging the 2x2 texels under each half-resolution texel (the
-// supersampling that hides blockiness); the second reads the first's result.
+// supersampling that hides blockiness), or the ESM values the same way; the second reads
+// the first's result.
 //
 // Kernel radius in output pixels, per layer:
 //   penumbra_width * focal / view_depth * sqrt(max(n_view.z, 0.25))
@@ -20,8 +21,10 @@ layout(set = 0, binding = 0) uniform Frame { FrameUniforms frame; };
 layout(set = 0, binding = 1) uniform sampler2D g_depth;
 layout(set = 0, binding = 2) uniform sampler2D g_normal;
 layout(set = 0, binding = 3) uniform sampler2DArray penumbra;
-#ifdef FROM_HARD_BITS
+#if defined(FROM_HARD_BITS)
 layout(set = 0, binding = 4) uniform usampler2D hard_bits;
+#elif defined(FROM_ESM)
+layout(set = 0, binding = 4) uniform sampler2DArray esm;  // full resolution, 4 layers per texel
 #else
 layout(set = 0, binding = 4) uniform sampler2DArray source;
 #endif
@@ -44,20 +47,38 @@ float linear_depth(ivec2 full_pixel) {
   return -view.z / view.w;
 }
 
+// Supersampled first-direction input: the full-resolution texels under an output
+// texel, keeping only those on the same surface as its top-left pixel (the one whose
+// depth and normal represent it everywhere else), so a half-resolution texel on a
+// depth edge does not mix the shadow of the near surface into the far one.
+#if defined(FROM_ESM) || defined(FROM_HARD_BITS)
+vec4 full_resolution_input(ivec2 p, uint slot) {
+#if defined(FROM_ESM)
+  return texelFetch(esm, ivec3(p, int(slot)), 0);
+#else
+  uint bits = texelFetch(hard_bits, p, 0).r >> (4u * slot);
+  return vec4(1.0) - vec4(uvec4(bits, bits >> 1u, bits >> 2u, bits >> 3u) & 1u);
+#endif
+}
+#endif
+
 vec4 visibility(ivec2 out_pixel, uint slot, ivec2 full_size, ivec2 scale) {
-#ifdef FROM_HARD_BITS
-  // Supersample: average the full-resolution bits under this output texel.
-  vec4 sum = vec4(0.0);
-  int count = 0;
+#if defined(FROM_ESM) || defined(FROM_HARD_BITS)
+  ivec2 first = min(out_pixel * scale, full_size - 1);
+  vec4 sum = full_resolution_input(first, slot);
+  if (scale == ivec2(1)) return sum;
+  float z_ref = linear_depth(first);
+  float count = 1.0;
   for (int y = 0; y < scale.y; ++y) {
     for (int x = 0; x < scale.x; ++x) {
+      if (x == 0 && y == 0) continue;
       ivec2 p = min(out_pixel * scale + ivec2(x, y), full_size - 1);
-      uint bits = texelFetch(hard_bits, p, 0).r >> (4u * slot);
-      sum += vec4(uvec4(bits, bits >> 1u, bits >> 2u, bits >> 3u) & 1u);
-      ++count;
+      if (abs(linear_depth(p) - z_ref) > depth_threshold * z_ref) continue;
+      sum += full_resolution_input(p, slot);
+      count += 1.0;
     }
   }
-  return vec4(1.0) - sum / float(count);
+  return sum / count;
 #else
   return texelFetch(source, ivec3(out_pixel, int(slot)), 0);
 #endif
@@ -80,7 +101,9 @@ void main() {
   vec3 n_view = normalize(texelFetch(g_normal, full_pixel, 0).xyz);
   float anisotropy = sqrt(max(n_view.z, 0.25));
   // Focal length in output pixels: world size w at depth z covers w * focal / z pixels.
-  float focal = frame.projection.y * 0.5 * float(out_size.y);
+  // abs: proj[1][1] is negative (Vulkan's y points down); a negative focal length
+  // would clamp every radius to 0 and silently turn the blur off.
+  float focal = abs(frame.projection.y) * 0.5 * float(out_size.y);
 
   for (uint s = 0u; s < slots; ++s) {
     vec4 width = texelFetch(penumbra, ivec3(pixel, int(s)), 0);

@@ -18,15 +18,15 @@ int bound(const fg::PlanPass& pass, std::string_view port) {
 void check(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& graph,
            fg::Diagnostics& diagnostics) {
   const auto& source_desc = graph.passes[static_cast<std::size_t>(pass.source_index)];
-  const int hard = bound(pass, "hardShadow");
-  const int source = bound(pass, "source");
-  if ((hard >= 0) == (source >= 0)) {
-    diagnostics.add(
-        graph.document.make(fg::codes::kPortUnbound, fg::Severity::error,
-                            "pass '" + pass.name +
-                                "' needs exactly one of the inputs 'hardShadow' (first direction) "
-                                "or 'source' (second direction)",
-                            source_desc.pointer + "/in"));
+  const int inputs = (bound(pass, "hardShadow") >= 0 ? 1 : 0) + (bound(pass, "esm") >= 0 ? 1 : 0) +
+                     (bound(pass, "source") >= 0 ? 1 : 0);
+  if (inputs != 1) {
+    diagnostics.add(graph.document.make(
+        fg::codes::kPortUnbound, fg::Severity::error,
+        "pass '" + pass.name +
+            "' needs exactly one of the inputs 'hardShadow' or 'esm' (first direction) or "
+            "'source' (second direction)",
+        source_desc.pointer + "/in"));
   }
   const int penumbra = bound(pass, "penumbra");
   const int shadow = bound(pass, "shadow");
@@ -58,27 +58,20 @@ fg::PassDesc AnisotropicBlurPass::describe() {
   desc.ports = {
       compute_input("depth", {Format::d32f, Format::d16}, "G-buffer depth (full resolution)."),
       compute_input("normal", {Format::rgba16f, Format::rgba32f}, "G-buffer view-space normal."),
-      {.name = "penumbra",
-       .access = Access::sampled,
-       .stage = Stage::compute,
-       .formats = {Format::rgba16f},
-       .min_layers = 1,
-       .max_layers = 8,
-       .description = "Penumbra widths from layered-penumbra (same resolution as the output)."},
+      compute_array_input("penumbra", {Format::rgba16f}, 1, 8,
+                          "Penumbra widths from layered-penumbra (same resolution as the output)."),
       {.name = "hardShadow",
        .access = Access::sampled,
        .stage = Stage::compute,
        .formats = {Format::r32ui},
        .optional = true,
        .description = "Full-resolution hard-shadow bits: the first direction's input."},
-      {.name = "source",
-       .access = Access::sampled,
-       .stage = Stage::compute,
-       .formats = {Format::rgba16f},
-       .min_layers = 1,
-       .max_layers = 8,
-       .optional = true,
-       .description = "The first direction's result: the second direction's input."},
+      compute_array_input("esm", {Format::rgba8}, 1, 8,
+                          "Full-resolution ESM visibility (layered-penumbra's `esm`): the first "
+                          "direction's input instead of the hard-shadow bits.",
+                          true),
+      compute_array_input("source", {Format::rgba16f}, 1, 8,
+                          "The first direction's result: the second direction's input.", true),
       {.name = "shadow",
        .direction = PortDirection::output,
        .access = Access::storage_write,

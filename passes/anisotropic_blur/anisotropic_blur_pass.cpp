@@ -30,8 +30,10 @@ AnisotropicBlurPass::AnisotropicBlurPass(const fg::PlanPass& /*pass*/) {
 
 void AnisotropicBlurPass::prepare(fgvk::PrepareContext& context) {
   from_hard_bits_ = context.bindings.image("hardShadow") != nullptr;
+  from_esm_ = context.bindings.image("esm") != nullptr;
   std::vector<gpu::ShaderDefine> defines;
   if (from_hard_bits_) defines.push_back({"FROM_HARD_BITS", "1"});
+  if (from_esm_) defines.push_back({"FROM_ESM", "1"});
   auto shader =
       load_shader(context, "anisotropic_blur/anisotropic_blur.comp", shader_files_, defines);
   gpu::DescriptorSetLayoutBuilder builder;
@@ -50,7 +52,8 @@ void AnisotropicBlurPass::execute(fgvk::ExecuteContext& context) {
   const auto& normal = b.required_image("normal");
   const auto& penumbra = b.required_image("penumbra");
   const auto& shadow = b.required_image("shadow");
-  const auto& input = b.required_image(from_hard_bits_ ? "hardShadow" : "source");
+  const auto& input =
+      b.required_image(from_hard_bits_ ? "hardShadow" : (from_esm_ ? "esm" : "source"));
   const VkSampler nearest = context.samplers.nearest_clamp;
 
   const VkCommandBuffer cmd = context.cmd;

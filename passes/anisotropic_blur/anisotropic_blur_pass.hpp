@@ -24,6 +24,7 @@ class AnisotropicBlurPass final : public fgvk::Pass {
 
  private:
   bool from_hard_bits_ = true;
+  bool from_esm_ = false;  // first direction from ESM values instead of the bits
   ComputePipeline compute_;
   std::vector<std::string> shader_files_;
 };

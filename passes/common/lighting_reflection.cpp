@@ -17,6 +17,27 @@ fg::PortDesc compute_input(std::string name, std::vector<fg::Format> formats,
           .description = std::move(description)};
 }
 
+fg::PortDesc compute_array_input(std::string name, std::vector<fg::Format> formats,
+                                 std::uint32_t min_layers, std::uint32_t max_layers,
+                                 std::string description, bool optional) {
+  return {.name = std::move(name),
+          .access = Access::sampled,
+          .stage = Stage::compute,
+          .formats = std::move(formats),
+          .min_layers = min_layers,
+          .max_layers = max_layers,
+          .optional = optional,
+          .description = std::move(description)};
+}
+
+fg::PortDesc compute_buffer_input(std::string name, std::string description) {
+  return {.name = std::move(name),
+          .kind = fg::ResourceKind::buffer,
+          .access = Access::storage_read,
+          .stage = Stage::compute,
+          .description = std::move(description)};
+}
+
 std::vector<fg::PortDesc> lighting_ports() {
   return {
       compute_input("depth", {Format::d32f, Format::d16, Format::d24s8}, "G-buffer depth.",

@@ -37,7 +37,7 @@ struct ShadowLight {
 struct ShadowFace {
   mat4 view_proj;  // world -> face clip space (Vulkan depth 0..1)
   uvec4 info;      // x light index, y face (0..5: +X -X +Y -Y +Z -Z; 0 for spot/sun),
-                   // z rendered (0/1), w unused
+                   // z valid (0/1), w drawn this frame (0/1; derived data must be redone)
 };
 
 #endif

@@ -35,7 +35,7 @@ static_assert(sizeof(ShadowLight) == 64);
 
 struct ShadowFace {
   glm::mat4 view_proj{1.0f};
-  glm::uvec4 info{0u};  // light index, face, rendered, 0
+  glm::uvec4 info{0u};  // light index, face, valid, drawn this frame
 };
 static_assert(sizeof(ShadowFace) == 80);
 

@@ -33,11 +33,7 @@ fg::PassDesc LayerViewPass::describe() {
       compute_input("depth", {Format::d32f, Format::d16}, "G-buffer depth.", "screen"),
       compute_input("normal", {Format::rgba16f, Format::rgba32f},
                     "G-buffer view-space normal (shades the grey-scale surface).", "screen"),
-      {.name = "layerTable",
-       .kind = ResourceKind::buffer,
-       .access = Access::storage_read,
-       .stage = Stage::compute,
-       .description = "Light -> screen layer (light-layering)."},
+      compute_buffer_input("layerTable", "Light -> screen layer (light-layering)."),
       view_port("Layer colours over the dimmed surface (same size as depth)."),
   };
   desc.ports.back().size_group = "screen";
@@ -77,13 +73,8 @@ fg::PassDesc PenumbraViewPass::describe() {
       "Debug view: the widest penumbra over every screen layer of a pixel in false colour "
       "(black where the width is zero, a colour ramp up to maxWidth).";
   desc.ports = {
-      {.name = "penumbra",
-       .access = Access::sampled,
-       .stage = Stage::compute,
-       .formats = {Format::rgba16f},
-       .min_layers = 1,
-       .max_layers = 8,
-       .description = "Penumbra widths from layered-penumbra (4 layers per texel)."},
+      compute_array_input("penumbra", {Format::rgba16f}, 1, 8,
+                          "Penumbra widths from layered-penumbra (4 layers per texel)."),
       view_port("False-colour widths (nearest-scaled to its own size)."),
   };
   desc.params = {
@@ -104,13 +95,8 @@ fg::PassDesc AtlasViewPass::describe() {
       "Debug view: shadow-atlas faces tiled into a grid, depth linearised with each light's "
       "near plane and range when shadowData is bound (bright = near the light), raw otherwise.";
   desc.ports = {
-      {.name = "atlas",
-       .access = Access::sampled,
-       .stage = Stage::compute,
-       .formats = {Format::d32f, Format::d16},
-       .min_layers = 1,
-       .max_layers = 0,
-       .description = "Shadow faces, one per array layer (point-shadow-atlas)."},
+      compute_array_input("atlas", {Format::d32f, Format::d16}, 1, 0,
+                          "Shadow faces, one per array layer (point-shadow-atlas)."),
       {.name = "shadowData",
        .kind = ResourceKind::buffer,
        .access = Access::storage_read,

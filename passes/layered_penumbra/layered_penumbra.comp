@@ -38,6 +38,12 @@ layout(set = 0, binding = 8, r32ui) uniform writeonly uimage2D hard_out;
 layout(set = 0, binding = 9) uniform sampler2DArray colour_atlas;
 layout(set = 0, binding = 10, rgba32ui) uniform writeonly uimage2DArray translucency_out;
 #endif
+#ifdef MIN_FILTER
+layout(set = 0, binding = 11) uniform sampler2DArray min_depth;
+#endif
+#ifdef HAS_ESM
+layout(set = 0, binding = 12, rgba8) uniform writeonly image2DArray esm_out;
+#endif
 
 layout(push_constant) uniform Params {
   uint max_layers;      // screen layers in use (<= 32)
@@ -45,6 +51,7 @@ layout(push_constant) uniform Params {
   float light_size_scale;
   float search_scale;   // blocker-search radius as a multiple of the light's size in uv
   uint search_taps;     // per axis (odd), e.g. 5
+  float esm_constant;   // c of exp(-c (d_receiver - d_occluder)), depths over the range
 };
 
 #include "../common/shadow_sampling.glsl"
@@ -62,9 +69,11 @@ void main() {
 
   vec4 penumbra[8];
   uvec4 translucency[8];
+  vec4 esm[8];
   for (int i = 0; i < 8; ++i) {
     penumbra[i] = vec4(0.0);
     translucency[i] = uvec4(0xFFFFFFFFu);
+    esm[i] = vec4(1.0);
   }
   uint hard_bits = 0u;
   uint owner[32];
@@ -101,6 +110,7 @@ void main() {
 #ifdef HAS_COLOUR
       translucency[slot][channel] = s.colour;
 #endif
+      esm[slot][channel] = s.esm;
     }
   }
 
@@ -117,5 +127,8 @@ void main() {
   for (uint s = 0u; s < slots; ++s) {
     imageStore(translucency_out, ivec3(pixel, int(s)), translucency[s]);
   }
+#endif
+#ifdef HAS_ESM
+  for (uint s = 0u; s < slots; ++s) imageStore(esm_out, ivec3(pixel, int(s)), esm[s]);
 #endif
 }

@@ -10,6 +10,7 @@ void check(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& 
   const LayerCap cap = find_layer_cap(pass, plan, "layerTable");
   check_layer_storage(pass, plan, graph, cap, "penumbra", diagnostics);
   check_layer_storage(pass, plan, graph, cap, "translucency", diagnostics);
+  check_layer_storage(pass, plan, graph, cap, "esm", diagnostics);
 }
 
 }  // namespace
@@ -23,38 +24,25 @@ fg::PassDesc LayeredPenumbraPass::describe() {
   fg::PassDesc desc;
   desc.type = "layered-penumbra";
   desc.description =
-      "Per pixel and screen layer: penumbra width from a blocker search in every light's shadow "
-      "faces (one dispatch, texture arrays), hard-shadow bits and translucent shadow colour.";
+      "Per pixel and screen layer: penumbra width from a blocker search (or one min-filtered "
+      "fetch) in every light's shadow faces (one dispatch, texture arrays), hard-shadow bits and "
+      "translucent shadow colour.";
   desc.ports = {
       compute_input("depth", {Format::d32f, Format::d16}, "G-buffer depth.", "screen"),
       compute_input("normal", {Format::rgba16f, Format::rgba32f}, "G-buffer view-space normal.",
                     "screen"),
-      {.name = "atlas",
-       .access = Access::sampled,
-       .stage = Stage::compute,
-       .formats = {Format::d32f, Format::d16},
-       .min_layers = 6,
-       .max_layers = 0,
-       .description = "Shadow faces of every light (point-shadow-atlas)."},
-      {.name = "colour",
-       .access = Access::sampled,
-       .stage = Stage::compute,
-       .formats = {Format::rgba8},
-       .min_layers = 6,
-       .max_layers = 0,
-       .optional = true,
-       .description =
-           "Translucent shadow colour beside the atlas; enables the translucency output."},
-      {.name = "shadowData",
-       .kind = ResourceKind::buffer,
-       .access = Access::storage_read,
-       .stage = Stage::compute,
-       .description = "Face matrices and per-light shadow data."},
-      {.name = "layerTable",
-       .kind = ResourceKind::buffer,
-       .access = Access::storage_read,
-       .stage = Stage::compute,
-       .description = "Light -> screen layer (light-layering)."},
+      compute_array_input("atlas", {Format::d32f, Format::d16}, 6, 0,
+                          "Shadow faces of every light (point-shadow-atlas)."),
+      compute_array_input(
+          "colour", {Format::rgba8}, 6, 0,
+          "Translucent shadow colour beside the atlas; enables the translucency output.", true),
+      compute_array_input(
+          "minDepth", {Format::r32f}, 1, 0,
+          "Min-filtered faces (shadow-min-filter): when bound, one fetch gives the "
+          "blocker depth and the blocker search (searchScale, searchTaps) is skipped.",
+          true),
+      compute_buffer_input("shadowData", "Face matrices and per-light shadow data."),
+      compute_buffer_input("layerTable", "Light -> screen layer (light-layering)."),
       {.name = "penumbra",
        .direction = PortDirection::output,
        .access = Access::storage_write,
@@ -82,6 +70,19 @@ fg::PassDesc LayeredPenumbraPass::describe() {
        .size_group = "screen",
        .description = "Shadow colour per layer packed r<<24|g<<16|b<<8|a, 4 layers per texel."},
   };
+  desc.ports.push_back(
+      {.name = "esm",
+       .direction = PortDirection::output,
+       .access = Access::storage_write,
+       .stage = Stage::compute,
+       .formats = {Format::rgba8},
+       .min_layers = 1,
+       .max_layers = 8,
+       .optional = true,
+       .size_group = "screen",
+       .description = "Exponential-shadow-map visibility exp(-c (d_receiver - d_occluder)) per "
+                      "layer, 8 bits, 4 layers per texel: a soft alternative to the hard bits "
+                      "that avoids self-shadowing (anisotropic-blur's `esm` input)."});
   desc.params = {
       {.name = "lightSizeScale",
        .type = fg::ParamType::number,
@@ -101,6 +102,12 @@ fg::PassDesc LayeredPenumbraPass::describe() {
        .min = 1.0,
        .max = 9.0,
        .description = "Blocker-search taps per axis."},
+      {.name = "esmConstant",
+       .type = fg::ParamType::number,
+       .default_value = 80.0,
+       .min = 1.0,
+       .max = 400.0,
+       .description = "ESM sharpness c (depth difference in units of the light's range)."},
   };
   desc.check = &check;
   return desc;

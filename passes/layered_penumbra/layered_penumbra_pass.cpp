@@ -16,6 +16,7 @@ struct PushConstants {
   float light_size_scale;
   float search_scale;
   std::uint32_t search_taps;
+  float esm_constant;
 };
 
 constexpr VkShaderStageFlags kCompute = VK_SHADER_STAGE_COMPUTE_BIT;
@@ -28,8 +29,12 @@ LayeredPenumbraPass::LayeredPenumbraPass(const fg::PlanPass& /*pass*/) {
 void LayeredPenumbraPass::prepare(fgvk::PrepareContext& context) {
   colour_ = context.bindings.image("colour") != nullptr &&
             context.bindings.image("translucency") != nullptr;
+  min_filter_ = context.bindings.image("minDepth") != nullptr;
   std::vector<gpu::ShaderDefine> defines;
   if (colour_) defines.push_back({"HAS_COLOUR", "1"});
+  if (min_filter_) defines.push_back({"MIN_FILTER", "1"});
+  esm_ = context.bindings.image("esm") != nullptr;
+  if (esm_) defines.push_back({"HAS_ESM", "1"});
   auto shader =
       load_shader(context, "layered_penumbra/layered_penumbra.comp", shader_files_, defines);
   gpu::DescriptorSetLayoutBuilder builder;
@@ -43,6 +48,8 @@ void LayeredPenumbraPass::prepare(fgvk::PrepareContext& context) {
       .storage_image(7, kCompute)
       .storage_image(8, kCompute);
   if (colour_) builder.combined_image_sampler(9, kCompute).storage_image(10, kCompute);
+  if (min_filter_) builder.combined_image_sampler(11, kCompute);
+  if (esm_) builder.storage_image(12, kCompute);
   compute_ = build_compute_pipeline(context, shader, builder, sizeof(PushConstants));
 }
 
@@ -71,6 +78,14 @@ void LayeredPenumbraPass::execute(fgvk::ExecuteContext& context) {
     descriptors.combined_image_sampler(9, colour.array_view, nearest, colour.layout)
         .storage_image(10, translucency.array_view, translucency.layout);
   }
+  if (min_filter_) {
+    const auto& min_depth = b.required_image("minDepth");
+    descriptors.combined_image_sampler(11, min_depth.array_view, nearest, min_depth.layout);
+  }
+  if (esm_) {
+    const auto& esm = b.required_image("esm");
+    descriptors.storage_image(12, esm.array_view, esm.layout);
+  }
   const VkCommandBuffer cmd = context.cmd;
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, compute_.pipeline);
   descriptors.push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, compute_.layout);
@@ -80,6 +95,7 @@ void LayeredPenumbraPass::execute(fgvk::ExecuteContext& context) {
       param_float(context.pass, "lightSizeScale"),
       param_float(context.pass, "searchScale"),
       static_cast<std::uint32_t>(param_float(context.pass, "searchTaps")),
+      param_float(context.pass, "esmConstant"),
   };
   vkCmdPushConstants(cmd, compute_.layout, kCompute, 0, sizeof constants, &constants);
   vkCmdDispatch(cmd, (depth.extent.width + 15) / 16, (depth.extent.height + 15) / 16, 1);

@@ -23,6 +23,8 @@ class LayeredPenumbraPass final : public fgvk::Pass {
 
  private:
   bool colour_ = false;
+  bool min_filter_ = false;  // `minDepth` bound: one fetch instead of the blocker search
+  bool esm_ = false;         // `esm` bound
   ComputePipeline compute_;
   std::vector<std::string> shader_files_;
 };

@@ -65,7 +65,7 @@ const AtlasFrame& AtlasPlanner::plan(const scene::Scene& scene, const glm::mat4&
     if (light.type == scene::LightType::point) {
       if (settings.cull_faces) visible = sf::visible_faces(camera, light.position, light.range);
     } else if (light.type == scene::LightType::spot) {
-      if (settings.cull_faces && !sf::sphere_may_intersect(camera, light.position, light.range)) {
+      if (settings.cull_faces && !lf::spot_may_be_visible(camera, light)) {
         visible = 0u;
       }
     } else {
@@ -105,6 +105,7 @@ const AtlasFrame& AtlasPlanner::plan(const scene::Scene& scene, const glm::mat4&
       }
       ++frame_.stats.rendered;
       frame_.render_layers.push_back(layer);
+      out_face.info.w = 1u;  // consumers that cache derived data redo this layer
       state.valid = true;
       state.key = key;
     }

@@ -10,7 +10,6 @@ using fg::PortDirection;
 using fg::ResourceKind;
 using fg::Stage;
 
-
 std::vector<fg::PortDesc> atlas_ports(bool optional) {
   return {
       {.name = "atlas",
@@ -82,25 +81,15 @@ fg::PassDesc TiledLightingPass::describe() {
                             "Light -> shadow layer table (light-layering, layer_table.glsl); "
                             "shadows = layered."});
   desc.ports.push_back(
-      {.name = "shadow",
-       .access = Access::sampled,
-       .stage = Stage::compute,
-       .formats = {Format::rgba16f, Format::rgba8, Format::rgba32f},
-       .min_layers = 1,
-       .max_layers = 8,
-       .optional = true,
-       .description = "Blurred layered shadow (1 lit .. 0 shadowed): layer L in channel L%4 of "
-                      "array layer L/4; shadows = layered."});
-  desc.ports.push_back({.name = "colour",
-                        .access = Access::sampled,
-                        .stage = Stage::compute,
-                        .formats = {Format::rgba32ui},
-                        .min_layers = 1,
-                        .max_layers = 8,
-                        .optional = true,
-                        .description =
-                            "Layered shadow colour of translucent occluders, rgba8 packed "
-                            "r<<24|g<<16|b<<8|a per channel like `shadow`; shadows = layered."});
+      compute_array_input("shadow", {Format::rgba16f, Format::rgba8, Format::rgba32f}, 1, 8,
+                          "Blurred layered shadow (1 lit .. 0 shadowed): layer L in channel L%4 of "
+                          "array layer L/4; shadows = layered.",
+                          true));
+  desc.ports.push_back(
+      compute_array_input("colour", {Format::rgba32ui}, 1, 8,
+                          "Layered shadow colour of translucent occluders, rgba8 packed "
+                          "r<<24|g<<16|b<<8|a per channel like `shadow`; shadows = layered.",
+                          true));
   desc.params = lighting_params();
   desc.params.push_back(
       {.name = "shadows",

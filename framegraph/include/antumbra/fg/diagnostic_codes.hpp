@@ -9,6 +9,7 @@
 //   FG070-FG089  dependency graph               (cycles, writers, outputs)
 //   SC000-SC099  scene files                     (engine/scene)
 //   SH000-SH099  shaders                         (engine/shader)
+//   ED000-ED099  documents the editor opens      (editor/model, editor_codes.hpp)
 
 namespace antumbra::fg::codes {
 
@@ -66,6 +67,7 @@ inline constexpr const char* kPassDisabled = "FG075";       // note: "enabled": 
 // Pass-specific checks over the whole plan (PassDesc::check).
 inline constexpr const char* kLayerCapExceedsStorage = "FG090";  // cap k > layers storage holds
 inline constexpr const char* kLayerStorageMismatch = "FG091";    // layered images disagree
+inline constexpr const char* kDerivedMapMismatch = "FG092";  // map derived from the atlas misfits
 
 // The executor could not realise a valid plan on this device.
 inline constexpr const char* kRealiseFailed = "FG100";

@@ -1,0 +1,33 @@
+// Shared by the two dispatches of shadow-min-filter: which atlas layers to (re)filter.
+#ifndef ANTUMBRA_MIN_COMMON_GLSL
+#define ANTUMBRA_MIN_COMMON_GLSL
+
+#include "../common/shadow_data.glsl"
+
+// Each workgroup loops over a span x span region, so a layer takes a few workgroups:
+// skipped (cached) layers then cost almost nothing, even on CPU implementations where
+// every launched workgroup has a fixed cost.
+#define GROUP 16
+
+layout(set = 0, binding = 0) readonly buffer Shadows {
+  ShadowHeader shadow_header;
+  ShadowLight shadow_lights[ANTUMBRA_MAX_SHADOW_LIGHTS];
+  ShadowFace faces[];
+};
+
+layout(push_constant) uniform Params {
+  uint factor;     // atlas texels per output texel, per axis (1 or even)
+  uint radius;     // separable min radius in output texels
+  uint force_all;  // 1: every owned layer (first frame, new images); 0: drawn ones only
+  uint span;       // output texels per workgroup side (a multiple of GROUP)
+};
+
+// A statically cached face keeps its filtered result; only faces the atlas drew this
+// frame (info.w) are redone, so the filter costs nothing once the shadows settle.
+bool layer_needs_filter(uint layer) {
+  uvec4 info = faces[layer].info;
+  if (info.x == 0xFFFFFFFFu) return false;  // no light owns this layer
+  return force_all != 0u || info.w != 0u;
+}
+
+#endif

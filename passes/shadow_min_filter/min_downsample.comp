@@ -1,0 +1,44 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// Step 1 of the separable min filter (TECHNIQUE.md section 1, step 4, the cheaper
+// alternative to the blocker search): each output texel takes the nearest depth of the
+// factor x factor atlas texels under it, read four at a time with gathers, so every
+// atlas texel is read once.
+
+#include "min_common.glsl"
+
+layout(local_size_x = GROUP, local_size_y = GROUP) in;
+
+layout(set = 0, binding = 1) uniform sampler2DArray atlas;
+layout(set = 0, binding = 2, r32f) uniform writeonly image2DArray coarse;
+
+float nearest_under(ivec2 p, uint layer) {
+  ivec2 base = p * int(factor);
+  if (factor == 1u) return texelFetch(atlas, ivec3(base, int(layer)), 0).r;
+  vec2 texel = 1.0 / vec2(textureSize(atlas, 0).xy);
+  float nearest = 1.0;
+  for (int y = 0; y < int(factor); y += 2) {
+    for (int x = 0; x < int(factor); x += 2) {
+      // The shared corner of the 2x2 quad at (x, y) selects exactly those four texels.
+      vec2 uv = vec2(base + ivec2(x, y) + 1) * texel;
+      vec4 g = textureGather(atlas, vec3(uv, float(layer)), 0);
+      nearest = min(nearest, min(min(g.x, g.y), min(g.z, g.w)));
+    }
+  }
+  return nearest;
+}
+
+void main() {
+  uint layer = gl_WorkGroupID.z;
+  if (!layer_needs_filter(layer)) return;
+  ivec2 size = imageSize(coarse).xy;
+  ivec2 origin = ivec2(gl_WorkGroupID.xy) * int(span) + ivec2(gl_LocalInvocationID.xy);
+  for (int y = 0; y < int(span); y += GROUP) {
+    for (int x = 0; x < int(span); x += GROUP) {
+      ivec2 p = origin + ivec2(x, y);
+      if (all(lessThan(p, size))) {
+        imageStore(coarse, ivec3(p, int(layer)), vec4(nearest_under(p, layer)));
+      }
+    }
+  }
+}

@@ -1,0 +1,40 @@
+#pragma once
+// Pass type "shadow-min-filter": the seed's cheaper alternative to the blocker search.
+// A low-resolution, separably min-filtered copy of every shadow face, so the penumbra
+// pass finds the nearest blocker around a lookup with one fetch. Reflection in
+// shadow_min_filter_desc.cpp, shaders beside.
+//
+// Faces the atlas serves from its static cache keep their filtered result: only faces
+// drawn this frame (ShadowFace.info.w) are refiltered, except on the first frame.
+
+#include <string>
+#include <vector>
+
+#include "antumbra/fg/reflection.hpp"
+#include "antumbra/fgvk/pass.hpp"
+#include "antumbra/gpu/resources.hpp"
+#include "common/pass_support.hpp"
+
+namespace antumbra::passes {
+
+class ShadowMinFilterPass final : public fgvk::Pass {
+ public:
+  static fg::PassDesc describe();
+  explicit ShadowMinFilterPass(const fg::PlanPass& pass);
+
+  void prepare(fgvk::PrepareContext& context) override;
+  void execute(fgvk::ExecuteContext& context) override;
+  [[nodiscard]] std::vector<std::string> shader_files() const override { return shader_files_; }
+
+ private:
+  // The downsampled depths between the two dispatches: internal to the pass, so its
+  // barriers are the pass's own (graph resources get theirs from the plan).
+  gpu::Image coarse_;
+  bool coarse_ready_ = false;              // transitioned to GENERAL
+  VkImage filtered_for_ = VK_NULL_HANDLE;  // output image all faces were filtered into
+  ComputePipeline downsample_;
+  ComputePipeline separable_;
+  std::vector<std::string> shader_files_;
+};
+
+}  // namespace antumbra::passes
