@@ -8,6 +8,7 @@
 #include <spdlog/spdlog.h>
 
 #include "commands.hpp"
+#include "edit_script.hpp"
 
 namespace {
 
@@ -37,8 +38,9 @@ int dispatch(int argc, char** argv) {
   render_cmd->add_option("--trace", render.trace, "Write a Chrome/Perfetto trace JSON");
   render_cmd->add_flag("--watch", render.watch,
                        "Keep running: reload the graph, scene and shaders when they change");
-  render_cmd->add_option("--watch-seconds", render.watch_seconds,
-                         "With --watch: stop after this many seconds (0 = until interrupted)")
+  render_cmd
+      ->add_option("--watch-seconds", render.watch_seconds,
+                   "With --watch: stop after this many seconds (0 = until interrupted)")
       ->check(CLI::Range(0.0, 1e9));
   render_cmd->add_option("--format", render.format, "text|json report on stdout")
       ->check(CLI::IsMember({"text", "json"}))
@@ -65,6 +67,22 @@ int dispatch(int argc, char** argv) {
   plan_format->require_option(0, 1);
   plan_cmd->add_option("--size", plan.size, "Viewport WxH the plan is compiled for")
       ->capture_default_str();
+
+  EditOptions edit;
+  auto* edit_cmd = cli.add_subcommand(
+      "edit", "Edit lights and graph parameters with live layer-cap warnings (headless: scripted)");
+  edit_cmd->add_option("--graph", edit.graph, "Frame graph JSON (default: layered-ssss.json)");
+  edit_cmd->add_option("--scene", edit.scene, "Scene JSON (default: data/scenes/atrium.json)");
+  edit_cmd->add_option("--device", edit.device, "auto|cpu|gpu|N|<name substring>")
+      ->capture_default_str();
+  edit_cmd->add_flag("--validation", edit.validation,
+                     "Khronos validation + synchronization validation");
+  edit_cmd->add_option("--frames", edit.frames, "Render N more frames, then close")
+      ->check(CLI::Range(0, 1000000));
+  edit_cmd->add_option("--script", edit.script, "JSON script of edits and expectations");
+  edit_cmd->add_flag("--headless", edit.headless, "No window: run the script offscreen");
+  edit_cmd->add_option("--size", edit.size, "Viewport WxH")->capture_default_str();
+  edit_cmd->add_option("--out", edit.out, "PNG of the last frame");
 
   BenchOptions bench;
   auto* bench_cmd =
@@ -139,6 +157,7 @@ int dispatch(int argc, char** argv) {
     return kExitUsage;
   }
 
+  if (edit_cmd->parsed()) return run_edit(edit);
   if (render_cmd->parsed()) return run_render(render);
   if (validate_cmd->parsed()) return run_validate(validate);
   if (plan_cmd->parsed()) {

@@ -98,6 +98,12 @@ void RenderSession::set_scene(scene::Scene scene) {
   gpu_scene_ = std::make_unique<passes::GpuScene>(*gpu_, *scene_, frames_->frames_in_flight());
 }
 
+void RenderSession::set_lights(std::vector<scene::PointLight> lights) {
+  if (!scene_) throw std::logic_error("set_lights() before set_scene()");
+  // Light buffers are per frame slot and written when a frame starts: no wait needed.
+  scene_->lights = std::move(lights);
+}
+
 void RenderSession::render(int frames, TraceWriter* trace) {
   if (!scene_ || !executor_->loaded()) throw std::logic_error("render() needs a scene and a graph");
   gpu::CpuTimer clock;

@@ -45,6 +45,9 @@ class RenderSession {
   // them and keeps the previous graph running.
   fg::Diagnostics load_graph(const fg::GraphDesc& graph);
   void set_scene(scene::Scene scene);
+  // Lights only (the editor's edits): geometry stays uploaded, so the static shadow
+  // cache keeps every face a changed light does not reach.
+  void set_lights(std::vector<scene::PointLight> lights);
   // A new viewport takes effect at the next load_graph().
   void set_viewport(VkExtent2D viewport) { options_.viewport = viewport; }
   [[nodiscard]] VkExtent2D viewport() const { return options_.viewport; }

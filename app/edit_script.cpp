@@ -1,0 +1,408 @@
+#include "edit_script.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <sstream>
+#include <vector>
+
+#include "antumbra/editor/fix_suggestion.hpp"
+#include "antumbra/editor/graph_document.hpp"
+#include "antumbra/editor/layer_status.hpp"
+#include "antumbra/editor/scene_document.hpp"
+#include "antumbra/fg/graph_desc.hpp"
+#include "antumbra/fg/json_document.hpp"
+#include "antumbra/fg/plan_diff.hpp"
+#include "antumbra/gpu/timing.hpp"
+#include "antumbra/scene/scene_file.hpp"
+#include "commands.hpp"
+#include "register_builtin_passes.hpp"
+#include "render_session.hpp"
+
+namespace antumbra::app {
+namespace {
+
+namespace fs = std::filesystem;
+using fg::Json;
+
+void print(const fg::Diagnostics& diagnostics) {
+  for (const auto& d : diagnostics) {
+    if (d.severity != fg::Severity::note) std::printf("  %s\n", fg::format_text(d).c_str());
+  }
+}
+
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// A script step failed: which one, where in the script, and why.
+struct StepError {
+  std::string message;
+};
+
+class EditRun {
+ public:
+  EditRun(RenderSession& session, editor::SceneDocument scene, editor::GraphDocument graph,
+          editor::PassDescLookup lookup, fs::path script_dir)
+      : session_(session),
+        scene_(std::move(scene)),
+        graph_(std::move(graph)),
+        lookup_(std::move(lookup)),
+        script_dir_(std::move(script_dir)) {}
+
+  // The first frame: the documents as loaded.
+  bool start() {
+    const auto diagnostics = load_graph_text(graph_.to_text());
+    print(diagnostics);
+    if (diagnostics.has_errors()) return false;
+    sync_scene(true);
+    render(1);
+    return true;
+  }
+
+  void run_step(const Json& step) {
+    if (step.contains("do")) {
+      act(step.at("do").get<std::string>(), step);
+    } else if (step.contains("expect")) {
+      check(step.at("expect").get<std::string>(), step);
+    } else {
+      throw StepError{"a step needs \"do\" or \"expect\""};
+    }
+  }
+
+  void render(int frames) {
+    gpu::CpuTimer wall;
+    session_.render(frames, nullptr);
+    frame_ms_.push_back(wall.elapsed_ms() / std::max(frames, 1));
+  }
+
+  [[nodiscard]] double median_frame_ms() const {
+    if (frame_ms_.empty()) return 0.0;
+    auto sorted = frame_ms_;
+    std::sort(sorted.begin(), sorted.end());
+    return sorted[sorted.size() / 2];
+  }
+
+ private:
+  fs::path resolve(const std::string& name) const {
+    if (name == "$graph") return graph_.file();
+    if (name == "$scene") return scene_.file();
+    const fs::path p(name);
+    return p.is_absolute() ? p : script_dir_ / p;
+  }
+
+  std::size_t light_index(const Json& step) const {
+    const auto name = step.at("light").get<std::string>();
+    const int index = scene_.find_light(name);
+    if (index < 0) throw StepError{"no light named '" + name + "'"};
+    return static_cast<std::size_t>(index);
+  }
+
+  static glm::vec3 vec3_of(const Json& v) {
+    if (!v.is_array() || v.size() != 3) throw StepError{"expected [x, y, z]"};
+    return {v[0].get<float>(), v[1].get<float>(), v[2].get<float>()};
+  }
+
+  // The layer cap of the graph being edited: its light-layering pass's maxLayers.
+  int graph_cap() const {
+    for (const auto& pass : graph_.passes()) {
+      if (pass.type != "light-layering") continue;
+      for (const auto& p : pass.params) {
+        if (p.name == "maxLayers" && p.value.is_number_integer()) return p.value.get<int>();
+      }
+    }
+    return layering::LayeringOptions{}.max_layers;
+  }
+
+  // Scene edits reach the GPU and the layer status in the same step: the next frame
+  // (and the warnings it reports) already shows them.
+  // The editor edits lights only, so after the first upload only they are replaced.
+  void sync_scene(bool upload_geometry = false) {
+    auto parsed = scene::parse_scene_text(scene_.to_text(), scene_.file().string());
+    if (!parsed.ok()) {
+      print(parsed.diagnostics());
+      throw StepError{"the edited scene no longer parses"};
+    }
+    if (upload_geometry) {
+      session_.set_scene(std::move(parsed.value()));
+    } else {
+      session_.set_lights(std::move(parsed.value().lights));
+    }
+    status_.set_cap(graph_cap());
+    status_.update(scene_);
+  }
+
+  fg::Diagnostics load_graph_text(const std::string& text) {
+    auto document = fg::parse_json(text, graph_.file().string());
+    if (!document.ok()) return document.diagnostics();
+    auto graph = fg::parse_graph(document.value());
+    if (!graph.ok()) return graph.diagnostics();
+    return session_.load_graph(graph.value());
+  }
+
+  // A reload as render --watch does it: a transaction that keeps the last good plan.
+  void reload() {
+    gpu::CpuTimer latency;
+    const fg::Plan before = session_.executor().plan();
+    last_reload_ = load_graph_text(read_text(graph_.file()));
+    reload_ok_ = !last_reload_.has_errors();
+    if (reload_ok_) {
+      if (auto doc = editor::GraphDocument::load(graph_.file(), lookup_); doc.ok()) {
+        graph_ = std::move(doc.value());
+      }
+      render(1);
+      std::printf("  reloaded in %.1f ms: %s\n", latency.elapsed_ms(),
+                  fg::to_text(fg::diff_plans(before, session_.executor().plan())).c_str());
+    } else {
+      print(last_reload_);
+      render(1);  // the last good plan keeps running
+      std::printf("  reload refused; the last good frame keeps running\n");
+    }
+    sync_scene();
+  }
+
+  void act(const std::string& what, const Json& step) {
+    editor::EditResult result;
+    bool scene_edit = true;
+    if (what == "frames") {
+      render(step.value("count", 1));
+      return;
+    }
+    if (what == "set-light") {
+      editor::LightChanges c;
+      if (step.contains("position")) c.position = vec3_of(step["position"]);
+      if (step.contains("color")) c.color = vec3_of(step["color"]);
+      if (step.contains("intensity")) c.intensity = step["intensity"].get<float>();
+      if (step.contains("range")) c.range = step["range"].get<float>();
+      if (step.contains("size")) c.size = step["size"].get<float>();
+      if (step.contains("castsShadows")) c.casts_shadows = step["castsShadows"].get<bool>();
+      result = scene_.apply(light_index(step), c);
+    } else if (what == "add-light") {
+      result =
+          scene_.add_light(scene::LightType::point, step.contains("position")
+                                                        ? vec3_of(step["position"])
+                                                        : editor::SceneDocument::kNewLightPosition);
+    } else if (what == "duplicate-light") {
+      result = scene_.duplicate_light(light_index(step));
+    } else if (what == "delete-light") {
+      result = scene_.delete_light(light_index(step));
+    } else if (what == "undo" || what == "redo") {
+      if (!(what == "undo" ? scene_.undo() : scene_.redo())) throw StepError{"nothing to " + what};
+    } else if (what == "apply-fix") {
+      const editor::FixSuggestion fix = status_.suggestion(scene_);
+      if (fix.best() == nullptr) throw StepError{"no fix to apply: " + fix.message};
+      std::printf("  fix: %s\n", fix.best()->description.c_str());
+      result = editor::apply_fix(scene_, *fix.best());
+    } else if (what == "save") {
+      scene_.save();
+      return;
+    } else if (what == "set-param") {
+      scene_edit = false;
+      result = graph_.set_param(step.at("pass").get<std::string>(),
+                                step.at("name").get<std::string>(), step.at("value"));
+      if (result) {
+        const auto diagnostics = load_graph_text(graph_.to_text());
+        print(diagnostics);
+        if (diagnostics.has_errors()) throw StepError{"the edited graph was refused"};
+      }
+    } else if (what == "save-graph") {
+      graph_.save();
+      return;
+    } else if (what == "write-file") {
+      // Another tool (an editor, a script) replaces a file on disk.
+      const fs::path target = resolve(step.at("path").get<std::string>());
+      const std::string text = step.contains("text")
+                                   ? step["text"].get<std::string>()
+                                   : read_text(resolve(step.at("from").get<std::string>()));
+      std::ofstream(target, std::ios::binary | std::ios::trunc) << text;
+      return;
+    } else if (what == "reload") {
+      reload();
+      return;
+    } else {
+      throw StepError{"unknown action '" + what + "'"};
+    }
+    if (!result) throw StepError{"edit refused: " + result.message};
+    if (scene_edit) sync_scene();
+    status_.set_cap(graph_cap());  // a graph edit may have changed the cap
+    status_.update(scene_);
+    render(1);
+  }
+
+  [[nodiscard]] bool frame_reports_layer_warning() const {
+    const auto& messages = session_.last_report().messages();
+    return std::any_of(messages.begin(), messages.end(),
+                       [](const auto& m) { return m.code == "LY001"; });
+  }
+
+  void check(const std::string& what, const Json& step) {
+    const auto& report = status_.report();
+    if (what == "warning" || what == "no-warning") {
+      const bool want = what == "warning";
+      if (report.over_cap() != want || frame_reports_layer_warning() != want) {
+        throw StepError{std::string("expected ") + (want ? "a" : "no") +
+                        " layer-cap warning; the model says " + (report.over_cap() ? "yes" : "no") +
+                        " (" + std::to_string(report.layers_needed) + " layers needed, cap " +
+                        std::to_string(report.cap) + "), this frame's report says " +
+                        (frame_reports_layer_warning() ? "yes" : "no")};
+      }
+      for (const auto& w : report.warnings) std::printf("  warning: %s\n", w.message.c_str());
+    } else if (what == "layers-needed") {
+      const int want = step.at("value").get<int>();
+      if (report.layers_needed != want) {
+        throw StepError{"expected " + std::to_string(want) + " layers needed, got " +
+                        std::to_string(report.layers_needed)};
+      }
+    } else if (what == "reload-ok") {
+      if (!reload_ok_) throw StepError{"the last reload was refused"};
+    } else if (what == "reload-failed") {
+      if (reload_ok_) throw StepError{"the last reload succeeded"};
+      const auto code = step.value("code", std::string());
+      const int line = step.value("line", 0);
+      const bool found = std::any_of(last_reload_.begin(), last_reload_.end(), [&](const auto& d) {
+        return (code.empty() || d.code == code) && (line == 0 || d.line == line);
+      });
+      if (!found) {
+        throw StepError{"no diagnostic with code '" + code + "' at line " + std::to_string(line)};
+      }
+    } else if (what == "file-contains" || what == "file-lacks") {
+      const auto text = read_text(resolve(step.at("path").get<std::string>()));
+      const bool has = text.find(step.at("text").get<std::string>()) != std::string::npos;
+      if (has != (what == "file-contains")) {
+        throw StepError{"the file " + std::string(has ? "contains" : "lacks") + " \"" +
+                        step["text"].get<std::string>() + "\""};
+      }
+    } else if (what == "dirty") {
+      if (scene_.dirty() != step.at("value").get<bool>()) {
+        throw StepError{std::string("the scene is ") + (scene_.dirty() ? "" : "not ") + "dirty"};
+      }
+    } else {
+      throw StepError{"unknown expectation '" + what + "'"};
+    }
+  }
+
+  RenderSession& session_;
+  editor::SceneDocument scene_;
+  editor::GraphDocument graph_;
+  editor::PassDescLookup lookup_;
+  editor::LayerStatus status_;
+  fs::path script_dir_;
+  fg::Diagnostics last_reload_;
+  bool reload_ok_ = true;
+  std::vector<double> frame_ms_;
+};
+
+std::string describe_step(const Json& step) {
+  std::string s = step.contains("do") ? "do " + step["do"].get<std::string>()
+                                      : "expect " + step.value("expect", std::string("?"));
+  return s;
+}
+
+}  // namespace
+
+int run_edit(const EditOptions& options) {
+  if (!options.headless) {
+    std::fprintf(stderr,
+                 "antumbra edit: the windowed editor (GLFW + Dear ImGui) is not built yet; run "
+                 "it with --headless --script FILE\n");
+    return kExitUsage;
+  }
+  if (options.script.empty() && options.frames <= 0) {
+    std::fprintf(stderr, "antumbra edit --headless needs --script FILE or --frames N\n");
+    return kExitUsage;
+  }
+  unsigned width = 0;
+  unsigned height = 0;
+  if (!parse_size(options.size, width, height)) {
+    std::fprintf(stderr, "antumbra edit: --size must be WxH, got \"%s\"\n", options.size.c_str());
+    return kExitUsage;
+  }
+  const DataPaths paths = find_data_paths();
+  const fs::path graph_path =
+      options.graph.empty() ? paths.graphs() / "layered-ssss.json" : fs::path(options.graph);
+  const fs::path scene_path =
+      options.scene.empty() ? paths.scenes() / "atrium.json" : fs::path(options.scene);
+
+  // User input first: a bad script, scene or graph fails before the device starts.
+  std::optional<fg::JsonDocument> script;
+  if (!options.script.empty()) {
+    auto loaded = fg::load_json_file(options.script);
+    if (!loaded.ok()) {
+      print(loaded.diagnostics());
+      return kExitDiagnostics;
+    }
+    if (!loaded->root().contains("steps") || !loaded->root()["steps"].is_array()) {
+      std::fprintf(stderr, "%s: error: expected {\"steps\": [...]}\n", options.script.c_str());
+      return kExitDiagnostics;
+    }
+    script = std::move(loaded.value());
+  }
+  const fgvk::PassRegistry registry = passes::builtin_pass_registry();
+  auto lookup = editor::lookup_in(registry.reflection());
+  auto scene = editor::SceneDocument::load(scene_path);
+  auto graph = editor::GraphDocument::load(graph_path, lookup);
+  print(scene.diagnostics());
+  print(graph.diagnostics());
+  if (!scene.ok() || !graph.ok()) return kExitDiagnostics;
+
+  SessionOptions session_options;
+  session_options.device = options.device;
+  session_options.validation = options.validation;
+  session_options.viewport = {width, height};
+  RenderSession session(paths, session_options);
+  std::printf("device: %s%s\n", session.gpu().device_name().c_str(),
+              options.validation ? " (validation + synchronization validation on)" : "");
+
+  EditRun run(
+      session, std::move(scene.value()), std::move(graph.value()), lookup,
+      options.script.empty() ? fs::current_path() : fs::absolute(options.script).parent_path());
+  if (!run.start()) return kExitDiagnostics;
+  int failures = 0;
+  if (script) {
+    const auto& steps = script->root()["steps"];
+    for (std::size_t i = 0; i < steps.size(); ++i) {
+      const std::string pointer = "/steps/" + std::to_string(i);
+      const auto location = script->position(pointer);
+      std::printf("step %zu (%s:%d): %s\n", i, options.script.c_str(), location.line,
+                  describe_step(steps[i]).c_str());
+      try {
+        run.run_step(steps[i]);
+      } catch (const StepError& e) {
+        ++failures;
+        std::printf("%s:%d:%d: error[ED100]: step %zu failed: %s (at %s)\n", options.script.c_str(),
+                    location.line, location.column, i, e.message.c_str(), pointer.c_str());
+      } catch (const Json::exception& e) {
+        ++failures;
+        std::printf("%s:%d:%d: error[ED101]: step %zu is malformed: %s (at %s)\n",
+                    options.script.c_str(), location.line, location.column, i, e.what(),
+                    pointer.c_str());
+      }
+      std::fflush(stdout);
+    }
+  }
+  if (options.frames > 0) run.render(options.frames);
+  if (!options.out.empty()) {
+    session.write_image(
+        session.executor()
+            .plan()
+            .resources.at(static_cast<std::size_t>(session.executor().plan().output))
+            .name,
+        options.out);
+  }
+  const auto timings = session.pass_timings();
+  double gpu_ms = 0.0;
+  for (const auto& t : timings) gpu_ms += t.gpu_ms;
+  std::printf(
+      "editor frame (%ux%u): %.2f ms wall median (edit + layer status + render + wait), "
+      "%.3f ms GPU (sum of pass medians)\n",
+      width, height, run.median_frame_ms(), gpu_ms);
+  std::printf("%d step(s) failed\n", failures);
+  return failures == 0 ? kExitOk : kExitDiagnostics;
+}
+
+}  // namespace antumbra::app

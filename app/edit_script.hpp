@@ -1,0 +1,31 @@
+#pragma once
+// `antumbra edit --headless --script FILE`: the editor's model driven by a JSON script
+// instead of a window, rendering every frame through the same RenderSession. What an
+// artist does (move a light, undo, apply the suggested fix, save) and what a tool does
+// (replace the graph or a shader on disk, reload) are steps; what must then hold
+// (a layer warning this frame, a kept frame after a broken file, a saved file's
+// content) are expectations. Used by CI and to measure editor frame times headless.
+//
+// Script: {"steps": [ {"do": "..."} | {"expect": "..."} , ... ]}, paths relative to the
+// script's folder, "$graph" and "$scene" naming the files being edited. See
+// docs/edit-script.md for every step.
+
+#include <string>
+
+namespace antumbra::app {
+
+struct EditOptions {
+  std::string graph;  // empty: the default graph
+  std::string scene;  // empty: the default scene
+  std::string device = "auto";
+  bool validation = false;
+  int frames = 0;  // > 0: render this many frames after the script, then close
+  std::string script;
+  bool headless = false;
+  std::string size = "1280x720";
+  std::string out;  // optional PNG of the last frame
+};
+
+int run_edit(const EditOptions& options);
+
+}  // namespace antumbra::app
