@@ -12,6 +12,7 @@
 #include "antumbra/editor/graph_document.hpp"
 #include "antumbra/editor/layer_status.hpp"
 #include "antumbra/editor/scene_document.hpp"
+#include "antumbra/editor_app/windowed_editor.hpp"
 #include "antumbra/fg/graph_desc.hpp"
 #include "antumbra/fg/json_document.hpp"
 #include "antumbra/fg/plan_diff.hpp"
@@ -307,10 +308,18 @@ std::string describe_step(const Json& step) {
 
 int run_edit(const EditOptions& options) {
   if (!options.headless) {
-    std::fprintf(stderr,
-                 "antumbra edit: the windowed editor (GLFW + Dear ImGui) is not built yet; run "
-                 "it with --headless --script FILE\n");
-    return kExitUsage;
+    if (!options.script.empty()) {
+      std::fprintf(stderr, "antumbra edit: --script runs headless; add --headless\n");
+      return kExitUsage;
+    }
+    editor_app::WindowedOptions windowed{options.graph, options.scene, options.device,
+                                         options.validation, options.frames};
+    windowed.screenshot = options.out;
+    if (!parse_size(options.size, windowed.width, windowed.height)) {
+      std::fprintf(stderr, "antumbra edit: --size must be WxH, got \"%s\"\n", options.size.c_str());
+      return kExitUsage;
+    }
+    return editor_app::run_windowed_editor(windowed);
   }
   if (options.script.empty() && options.frames <= 0) {
     std::fprintf(stderr, "antumbra edit --headless needs --script FILE or --frames N\n");

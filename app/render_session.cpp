@@ -55,6 +55,8 @@ RenderSession::RenderSession(const DataPaths& paths, const SessionOptions& optio
   gpu::ContextOptions context_options;
   context_options.validation = options.validation;
   context_options.device = options.device;
+  context_options.instance_extensions = options.instance_extensions;
+  context_options.headless = !options.present;
   gpu_ = std::make_unique<gpu::Context>(context_options);
   gpu::ShaderCompilerOptions shader_options;
   shader_options.include_dirs = {paths_.shaders()};

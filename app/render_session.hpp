@@ -27,6 +27,9 @@ struct SessionOptions {
   std::string device = "auto";
   bool validation = false;
   VkExtent2D viewport{1280, 720};
+  // The windowed editor: surface extensions (GLFW's) and VK_KHR_swapchain on the device.
+  std::vector<std::string> instance_extensions;
+  bool present = false;
 };
 
 struct PassTiming {

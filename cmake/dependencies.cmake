@@ -15,3 +15,13 @@ endif()
 if(ANTUMBRA_BUILD_BENCHMARKS)
   find_package(benchmark REQUIRED)
 endif()
+# The windowed editor: GLFW, and Debian's Dear ImGui (libimgui-dev ships the core as a
+# static library; its GLFW and Vulkan backends only as sources under the examples).
+find_package(glfw3 3.3 REQUIRED)
+pkg_check_modules(IMGUI REQUIRED IMPORTED_TARGET imgui)
+find_path(ANTUMBRA_IMGUI_BACKENDS_DIR imgui_impl_vulkan.cpp
+  PATHS /usr/share/doc/libimgui-dev/examples/backends
+  DOC "Folder with Dear ImGui's imgui_impl_glfw.cpp and imgui_impl_vulkan.cpp")
+if(NOT ANTUMBRA_IMGUI_BACKENDS_DIR)
+  message(FATAL_ERROR "Dear ImGui backend sources not found (Debian: apt install libimgui-dev)")
+endif()

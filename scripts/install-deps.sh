@@ -7,7 +7,8 @@ packages=(
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools
   glslang-dev glslang-tools spirv-tools
   libglm-dev libtinygltf-dev nlohmann-json3-dev libspdlog-dev libstb-dev libcli11-dev
-  libgtest-dev libgmock-dev libbenchmark-dev libglfw3-dev
+  libgtest-dev libgmock-dev libbenchmark-dev libglfw3-dev libimgui-dev
+  xvfb xauth
   assimp-testmodels
 )
 missing=()

@@ -45,7 +45,7 @@ printf '{"steps": [\n  {"expect": "warning"}\n]}\n' > "$tmp/wrong.json"
 rc=$?
 [ $rc -eq 1 ] || fail "a failing expectation gave exit $rc, not 1"
 grep -q "wrong.json:2:[0-9]*: error\[ED100\]" "$log" || fail "the failure is not located"
-# Windowed mode is not built yet: it says so instead of pretending.
-"$antumbra" edit --frames 1 >"$log" 2>&1
-[ $? -eq 2 ] || fail "edit without --headless should be a usage error for now"
+# A script runs headless only (the windowed editor has its own test, editor_window_test.sh).
+"$antumbra" edit --script "$tmp/edit.json" >"$log" 2>&1
+[ $? -eq 2 ] || fail "edit --script without --headless should be a usage error"
 echo "edit script: all steps held; a wrong expectation fails located"

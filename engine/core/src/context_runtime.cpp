@@ -194,6 +194,15 @@ void Context::destroy_now(const PendingDestroy& object) {
     case VK_OBJECT_TYPE_FENCE:
       vkDestroyFence(device_, reinterpret_cast<VkFence>(h), nullptr);
       break;
+    case VK_OBJECT_TYPE_RENDER_PASS:
+      vkDestroyRenderPass(device_, reinterpret_cast<VkRenderPass>(h), nullptr);
+      break;
+    case VK_OBJECT_TYPE_FRAMEBUFFER:
+      vkDestroyFramebuffer(device_, reinterpret_cast<VkFramebuffer>(h), nullptr);
+      break;
+    case VK_OBJECT_TYPE_SWAPCHAIN_KHR:
+      vkDestroySwapchainKHR(device_, reinterpret_cast<VkSwapchainKHR>(h), nullptr);
+      break;
     case VK_OBJECT_TYPE_QUERY_POOL:
       vkDestroyQueryPool(device_, reinterpret_cast<VkQueryPool>(h), nullptr);
       break;

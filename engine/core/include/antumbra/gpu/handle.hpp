@@ -61,6 +61,11 @@ using CommandPool = Handle<VkCommandPool, VK_OBJECT_TYPE_COMMAND_POOL>;
 using Semaphore = Handle<VkSemaphore, VK_OBJECT_TYPE_SEMAPHORE>;
 using Fence = Handle<VkFence, VK_OBJECT_TYPE_FENCE>;
 using QueryPool = Handle<VkQueryPool, VK_OBJECT_TYPE_QUERY_POOL>;
+// The windowed editor's presentation objects (its swapchain outlives no surface: the
+// owner drains the queue with Context::wait_idle() before the surface goes).
+using RenderPass = Handle<VkRenderPass, VK_OBJECT_TYPE_RENDER_PASS>;
+using Framebuffer = Handle<VkFramebuffer, VK_OBJECT_TYPE_FRAMEBUFFER>;
+using Swapchain = Handle<VkSwapchainKHR, VK_OBJECT_TYPE_SWAPCHAIN_KHR>;
 
 // Factories for the simple objects (each names what it creates).
 Semaphore create_binary_semaphore(Context& context, std::string_view name);

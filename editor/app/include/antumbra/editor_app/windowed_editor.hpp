@@ -1,0 +1,24 @@
+#pragma once
+// `antumbra edit` with a window: GLFW + Vulkan swapchain + Dear ImGui over the running
+// frame graph (Lights, Layers and Frame graph panels over the editor model).
+
+#include <string>
+
+namespace antumbra::editor_app {
+
+struct WindowedOptions {
+  std::string graph;  // empty: the default graph
+  std::string scene;  // empty: the default scene
+  std::string device = "auto";
+  bool validation = false;
+  int frames = 0;  // > 0: close after this many presented frames (tests)
+  unsigned width = 1280;
+  unsigned height = 720;
+  std::string screenshot;  // PNG of the last presented window image (UI included)
+};
+
+// Exit codes as the rest of the command line: 0 ok, 1 diagnostics (bad files, or
+// validation errors with --validation), 3 runtime failures (no display, no device).
+int run_windowed_editor(const WindowedOptions& options);
+
+}  // namespace antumbra::editor_app

@@ -1,0 +1,311 @@
+#include "editor_state.hpp"
+
+#include <cstdio>
+
+#include <imgui.h>
+
+#include "antumbra/editor/atomic_file.hpp"
+#include "antumbra/fg/json_document.hpp"
+#include "antumbra/fg/plan_diff.hpp"
+#include "antumbra/gpu/timing.hpp"
+#include "antumbra/scene/scene_file.hpp"
+
+namespace antumbra::editor_app {
+
+EditorState::EditorState(app::RenderSession& session, editor::SceneDocument scene,
+                         editor::GraphDocument graph, editor::PassDescLookup lookup)
+    : session_(session),
+      scene_(std::move(scene)),
+      graph_(std::move(graph)),
+      lookup_(std::move(lookup)) {
+}
+
+bool EditorState::start() {
+  reload_graph();
+  for (const auto& d : diagnostics_) {
+    if (d.severity != fg::Severity::note) std::printf("  %s\n", fg::format_text(d).c_str());
+  }
+  if (diagnostics_.has_errors()) return false;
+  auto parsed = scene::parse_scene_text(scene_.to_text(), scene_.file().string());
+  if (!parsed.ok()) {
+    for (const auto& d : parsed.diagnostics()) std::printf("  %s\n", fg::format_text(d).c_str());
+    return false;
+  }
+  session_.set_scene(std::move(parsed.value()));
+  status_.set_cap(graph_cap());
+  status_.update(scene_);
+  watch_files();
+  return true;
+}
+
+void EditorState::watch_files() {
+  std::vector<std::filesystem::path> files{scene_.file(), graph_.file()};
+  for (const auto& f : session_.executor().shader_files()) files.emplace_back(f);
+  watcher_ = watch::FileWatcher();
+  watcher_.set(files);
+}
+
+void EditorState::poll_files() {
+  constexpr double kPollMs = 250.0;
+  if (since_poll_.elapsed_ms() < kPollMs) return;
+  since_poll_.restart();
+  const auto changed = watcher_.poll();
+  if (changed.empty()) return;
+  bool shaders = false;
+  for (const auto& path : changed) {
+    if (path == scene_.file()) {
+      reload_scene_file();
+    } else if (path == graph_.file()) {
+      reload_graph_file();
+    } else {
+      shaders = true;
+    }
+  }
+  if (shaders) {
+    reload_graph();  // pipelines rebuilt beside the live ones
+    message_ = diagnostics_.has_errors()
+                   ? "shader change refused: the last good frame keeps running"
+                   : "shader change reloaded";
+  }
+  watch_files();  // the graph's shader set may have changed
+}
+
+void EditorState::reload_scene_file() {
+  if (scene_.dirty()) {
+    message_ = "the scene changed on disk; your unsaved edits are kept";
+    return;
+  }
+  auto loaded = editor::SceneDocument::load(scene_.file());
+  if (!loaded.ok()) {
+    diagnostics_ = loaded.diagnostics();
+    message_ = "the scene on disk does not load; the last good scene keeps running";
+    return;
+  }
+  auto parsed = scene::parse_scene_text(loaded->to_text(), scene_.file().string());
+  if (!parsed.ok()) {
+    diagnostics_ = parsed.diagnostics();
+    message_ = "the scene on disk does not parse; the last good scene keeps running";
+    return;
+  }
+  scene_ = std::move(loaded.value());
+  std::erase(undo_order_, DocKind::scene);  // the new document has a fresh history
+  std::erase(redo_order_, DocKind::scene);
+  gesture_open_ = false;
+  session_.set_scene(std::move(parsed.value()));
+  status_.update(scene_);
+  message_ = "scene reloaded from disk";
+}
+
+void EditorState::reload_graph_file() {
+  if (graph_.dirty()) {
+    message_ = "the graph changed on disk; your unsaved edits are kept";
+    return;
+  }
+  auto loaded = editor::GraphDocument::load(graph_.file(), lookup_);
+  if (!loaded.ok()) {
+    diagnostics_ = loaded.diagnostics();
+    reload_summary_ = "refused: the last good graph keeps running";
+    message_ = "the graph on disk does not load; the last good graph keeps running";
+    return;
+  }
+  graph_ = std::move(loaded.value());
+  std::erase(undo_order_, DocKind::graph);
+  std::erase(redo_order_, DocKind::graph);
+  gesture_open_ = false;
+  reload_graph();
+  message_ = "graph reloaded from disk";
+}
+
+int EditorState::graph_cap() const {
+  const std::string pass = layering_pass();
+  if (!pass.empty()) {
+    if (auto p = graph_.param(pass, "maxLayers"); p && p->value.is_number_integer()) {
+      return p->value.get<int>();
+    }
+  }
+  return layering::LayeringOptions{}.max_layers;
+}
+
+std::string EditorState::layering_pass() const {
+  for (const auto& pass : graph_.passes()) {
+    if (pass.type == "light-layering") return pass.name;
+  }
+  return {};
+}
+
+void EditorState::track_gesture(DocKind kind) {
+  if (!ImGui::IsItemActivated()) return;
+  end_frame();
+  if (kind == DocKind::scene) {
+    scene_.begin_gesture();
+  } else {
+    graph_.begin_gesture();
+  }
+  gesture_open_ = true;
+  gesture_noted_ = false;
+  gesture_kind_ = kind;
+}
+
+void EditorState::end_frame() {
+  if (!gesture_open_ || ImGui::IsAnyItemActive()) return;
+  if (gesture_kind_ == DocKind::scene) {
+    scene_.end_gesture();
+  } else {
+    graph_.end_gesture();
+  }
+  gesture_open_ = false;
+}
+
+void EditorState::note_edit(DocKind kind) {
+  const bool in_gesture = gesture_open_ && gesture_kind_ == kind;
+  if (in_gesture && gesture_noted_) return;  // the drag's step is already counted
+  undo_order_.push_back(kind);
+  redo_order_.clear();
+  if (in_gesture) gesture_noted_ = true;
+}
+
+void EditorState::scene_edited(const editor::EditResult& result) {
+  if (!result) {
+    message_ = "edit refused: " + result.message;
+    return;
+  }
+  if (!result.changed) return;
+  note_edit(DocKind::scene);
+  sync_lights();
+}
+
+void EditorState::set_param(const std::string& pass, const std::string& name,
+                            const fg::Json& value) {
+  const auto result = graph_.set_param(pass, name, value);
+  if (!result) {
+    message_ = "edit refused: " + result.message;
+    return;
+  }
+  if (!result.message.empty()) message_ = result.message;  // e.g. "clamped to 32"
+  if (!result.changed) return;
+  note_edit(DocKind::graph);
+  reload_graph();
+}
+
+void EditorState::undo() {
+  if (undo_order_.empty()) return;
+  gesture_open_ = false;  // the documents close an open gesture themselves
+  const DocKind kind = undo_order_.back();
+  undo_order_.pop_back();
+  redo_order_.push_back(kind);
+  if (kind == DocKind::scene) {
+    scene_.undo();
+    sync_lights();
+  } else {
+    graph_.undo();
+    reload_graph();
+  }
+}
+
+void EditorState::redo() {
+  if (redo_order_.empty()) return;
+  gesture_open_ = false;
+  const DocKind kind = redo_order_.back();
+  redo_order_.pop_back();
+  undo_order_.push_back(kind);
+  if (kind == DocKind::scene) {
+    scene_.redo();
+    sync_lights();
+  } else {
+    graph_.redo();
+    reload_graph();
+  }
+}
+
+// The editor edits lights only, so after the first upload only they are replaced.
+void EditorState::sync_lights() {
+  auto parsed = scene::parse_scene_text(scene_.to_text(), scene_.file().string());
+  if (!parsed.ok()) {
+    message_ = "the edited scene no longer parses; the last good lights keep rendering";
+    return;
+  }
+  session_.set_lights(std::move(parsed.value().lights));
+  status_.update(scene_);
+}
+
+// A transaction: only a fully valid graph replaces the running one.
+void EditorState::reload_graph() {
+  gpu::CpuTimer clock;
+  const bool had_plan = session_.executor().loaded();
+  fg::Plan before;
+  if (had_plan) before = session_.executor().plan();
+  auto document = fg::parse_json(graph_.to_text(), graph_.file().string());
+  if (!document.ok()) {
+    diagnostics_ = document.diagnostics();
+  } else if (auto graph = fg::parse_graph(document.value()); !graph.ok()) {
+    diagnostics_ = graph.diagnostics();
+  } else {
+    if (!view_resource_.empty()) graph->output = view_resource_;  // like render --output
+    diagnostics_ = session_.load_graph(graph.value());
+  }
+  if (diagnostics_.has_errors()) {
+    reload_summary_ = "refused: the last good graph keeps running";
+  } else {
+    char ms[32];
+    std::snprintf(ms, sizeof ms, "%.1f ms", clock.elapsed_ms());
+    reload_summary_ =
+        std::string("reloaded in ") + ms +
+        (had_plan ? ": " + fg::to_text(fg::diff_plans(before, session_.executor().plan()))
+                  : std::string());
+  }
+  status_.set_cap(graph_cap());
+}
+
+void EditorState::set_view_resource(const std::string& resource) {
+  if (resource == view_resource_) return;
+  const std::string previous = view_resource_;
+  view_resource_ = resource;
+  reload_graph();
+  if (diagnostics_.has_errors()) {
+    view_resource_ = previous;
+    message_ = "cannot show '" + resource + "'";
+    reload_graph();
+  }
+}
+
+std::string EditorState::shown_resource() const {
+  const auto& plan = session_.executor().plan();
+  return plan.output < 0 ? std::string()
+                         : plan.resources.at(static_cast<std::size_t>(plan.output)).name;
+}
+
+bool EditorState::save() {
+  try {
+    if (scene_.dirty()) scene_.save();
+    if (graph_.dirty()) graph_.save();
+    watch_files();  // our own writes are not changes to reload
+    message_ =
+        "saved " + scene_.file().filename().string() + " and " + graph_.file().filename().string();
+    return true;
+  } catch (const editor::SaveError& e) {
+    message_ = std::string("save failed: ") + e.what();
+    return false;
+  }
+}
+
+void EditorState::autosave() {
+  const auto now = editor::RecoveryFile::Clock::now();
+  try {
+    scene_.autosave_if_due(now);
+    graph_.autosave_if_due(now);
+  } catch (const editor::SaveError& e) {
+    message_ = std::string("recovery file: ") + e.what();
+  }
+}
+
+void EditorState::refresh_timings() {
+  timings_ = session_.pass_timings();
+  session_.reset_timings();  // medians over the next window of frames, not since start
+}
+
+void EditorState::close() {
+  scene_.close();
+  graph_.close();
+}
+
+}  // namespace antumbra::editor_app

@@ -1,0 +1,105 @@
+#pragma once
+// What the windowed editor's panels share: the two documents, the running session, the
+// live layer status, one undo order across both documents, gestures (a drag is one undo
+// step), saving and recovery. Panels draw from it and forward their edits to it; every
+// edit reaches the GPU and the layer report before the next frame is rendered.
+
+#include <chrono>
+#include <string>
+#include <vector>
+
+#include "antumbra/editor/graph_document.hpp"
+#include "antumbra/editor/layer_status.hpp"
+#include "antumbra/editor/scene_document.hpp"
+#include "antumbra/fg/diagnostics.hpp"
+#include "antumbra/gpu/timing.hpp"
+#include "antumbra/watch/file_watcher.hpp"
+#include "render_session.hpp"
+
+namespace antumbra::editor_app {
+
+enum class DocKind { scene, graph };
+
+class EditorState {
+ public:
+  // `lookup` (the pass reflection) must outlive the state: reloaded graphs use it.
+  EditorState(app::RenderSession& session, editor::SceneDocument scene, editor::GraphDocument graph,
+              editor::PassDescLookup lookup);
+
+  // The first load of the graph and the scene; false (diagnostics printed) on errors.
+  bool start();
+
+  [[nodiscard]] app::RenderSession& session() { return session_; }
+  [[nodiscard]] editor::SceneDocument& scene() { return scene_; }
+  [[nodiscard]] const editor::GraphDocument& graph() const { return graph_; }
+  [[nodiscard]] editor::LayerStatus& status() { return status_; }
+  [[nodiscard]] const editor::LayerReport& report() { return status_.update(scene_); }
+
+  // Edits. Call track_gesture() right after the widget that produced the edit, before
+  // forwarding it: a widget that just became active opens a gesture.
+  void track_gesture(DocKind kind);
+  void end_frame();  // closes a gesture once no widget is active any more
+  void scene_edited(const editor::EditResult& result);
+  void set_param(const std::string& pass, const std::string& name, const fg::Json& value);
+  void undo();
+  void redo();
+  [[nodiscard]] bool can_undo() const { return !undo_order_.empty(); }
+  [[nodiscard]] bool can_redo() const { return !redo_order_.empty(); }
+
+  // The layer cap: the graph's light-layering maxLayers.
+  [[nodiscard]] int graph_cap() const;
+  [[nodiscard]] std::string layering_pass() const;  // its name, empty without one
+
+  // Which graph image the window shows: empty for the graph's own output.
+  [[nodiscard]] const std::string& view_resource() const { return view_resource_; }
+  void set_view_resource(const std::string& resource);
+  [[nodiscard]] std::string shown_resource() const;  // the resource being shown now
+
+  // Live reload: the graph, the scene and every shader on disk, polled a few times a
+  // second. A changed shader reloads the graph (the last good pipelines stay on error);
+  // a changed graph or scene file replaces its document unless it has unsaved edits,
+  // which win (the file is not lost: a save overwrites it only when asked).
+  void poll_files();
+
+  [[nodiscard]] bool dirty() const { return scene_.dirty() || graph_.dirty(); }
+  bool save();  // atomic, both documents; false (and message()) when it failed
+  void autosave();
+  void close();  // a clean end: recovery files go
+
+  [[nodiscard]] const fg::Diagnostics& diagnostics() const { return diagnostics_; }
+  [[nodiscard]] const std::string& reload_summary() const { return reload_summary_; }
+  [[nodiscard]] const std::string& message() const { return message_; }
+  // Per-pass GPU times, refreshed every few frames (medians over those frames).
+  [[nodiscard]] const std::vector<app::PassTiming>& timings() const { return timings_; }
+  void refresh_timings();
+  void set_message(std::string message) { message_ = std::move(message); }
+
+ private:
+  void note_edit(DocKind kind);
+  void watch_files();  // (re)baselines the watched set: after loads and our own saves
+  void reload_scene_file();
+  void reload_graph_file();
+  void sync_lights();
+  void reload_graph();
+
+  app::RenderSession& session_;
+  editor::SceneDocument scene_;
+  editor::GraphDocument graph_;
+  editor::PassDescLookup lookup_;
+  editor::LayerStatus status_;
+  // Which document each undo/redo step belongs to, most recent last.
+  std::vector<DocKind> undo_order_;
+  std::vector<DocKind> redo_order_;
+  bool gesture_open_ = false;
+  bool gesture_noted_ = false;
+  DocKind gesture_kind_ = DocKind::scene;
+  std::string view_resource_;
+  fg::Diagnostics diagnostics_;
+  std::string reload_summary_;
+  std::string message_;
+  std::vector<app::PassTiming> timings_;
+  watch::FileWatcher watcher_;
+  gpu::CpuTimer since_poll_;
+};
+
+}  // namespace antumbra::editor_app

@@ -1,0 +1,79 @@
+#include "imgui_layer.hpp"
+
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_vulkan.h>
+
+#include "swapchain.hpp"
+#include "window.hpp"
+
+namespace antumbra::editor_app {
+namespace {
+
+// The backend reports every VkResult here: fail like the rest of the engine does.
+void check_imgui_result(VkResult result) {
+  gpu::check(result, "Dear ImGui Vulkan backend");
+}
+
+}  // namespace
+
+ImguiLayer::ImguiLayer(gpu::Context& gpu, Window& window, const Swapchain& swapchain) : gpu_(gpu) {
+  // One combined image sampler: the font atlas (the only texture the UI uses).
+  VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1};
+  VkDescriptorPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+  pool_info.flags = VK_DESCRIPTOR_POOL_CREATE_FREE_DESCRIPTOR_SET_BIT;
+  pool_info.maxSets = 1;
+  pool_info.poolSizeCount = 1;
+  pool_info.pPoolSizes = &size;
+  VkDescriptorPool pool = VK_NULL_HANDLE;
+  gpu::check(vkCreateDescriptorPool(gpu.device(), &pool_info, nullptr, &pool),
+             "vkCreateDescriptorPool");
+  pool_ = gpu::DescriptorPool(gpu, pool, "editor.imgui_pool");
+
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGuiIO& io = ImGui::GetIO();
+  io.IniFilename = nullptr;  // layout is code's: no imgui.ini left in the working folder
+  ImGui::StyleColorsDark();
+  ImGui_ImplGlfw_InitForVulkan(window.handle(), true);
+
+  ImGui_ImplVulkan_InitInfo info{};
+  info.Instance = gpu.instance();
+  info.PhysicalDevice = gpu.physical_device();
+  info.Device = gpu.device();
+  info.QueueFamily = gpu.queue_family();
+  info.Queue = gpu.queue();
+  info.DescriptorPool = pool_;
+  info.MinImageCount = kBufferedFrames;
+  info.ImageCount = kBufferedFrames;
+  info.MSAASamples = VK_SAMPLE_COUNT_1_BIT;
+  info.CheckVkResultFn = &check_imgui_result;
+  ImGui_ImplVulkan_Init(&info, swapchain.render_pass());
+  gpu.submit_immediate([](VkCommandBuffer cmd) { ImGui_ImplVulkan_CreateFontsTexture(cmd); });
+  ImGui_ImplVulkan_DestroyFontUploadObjects();
+}
+
+ImguiLayer::~ImguiLayer() {
+  // The backend destroys its buffers and pipeline at once: the GPU must be done (a lost
+  // device cannot be reported from a destructor; teardown goes on regardless).
+  (void)vkDeviceWaitIdle(gpu_.device());
+  ImGui_ImplVulkan_Shutdown();
+  ImGui_ImplGlfw_Shutdown();
+  ImGui::DestroyContext();
+}
+
+void ImguiLayer::begin_frame() {
+  ImGui_ImplVulkan_NewFrame();
+  ImGui_ImplGlfw_NewFrame();
+  ImGui::NewFrame();
+}
+
+void ImguiLayer::end_frame() {
+  ImGui::Render();
+}
+
+void ImguiLayer::draw(VkCommandBuffer cmd) {
+  ImGui_ImplVulkan_RenderDrawData(ImGui::GetDrawData(), cmd);
+}
+
+}  // namespace antumbra::editor_app

@@ -1,0 +1,95 @@
+#include <algorithm>
+#include <string>
+
+#include <imgui.h>
+
+#include "panels.hpp"
+
+namespace antumbra::editor_app {
+namespace {
+
+void draw_light_fields(EditorState& state, std::size_t index) {
+  auto& scene = state.scene();
+  const scene::PointLight light = scene.lights()[index];  // a copy: edits replace the list
+  ImGui::Text("%s", light.name.c_str());
+  glm::vec3 position = light.position;
+  const bool moved = ImGui::DragFloat3("position", &position.x, 0.05f);
+  state.track_gesture(DocKind::scene);
+  if (moved) state.scene_edited(scene.set_position(index, position));
+  glm::vec3 color = light.color;
+  const bool recoloured = ImGui::ColorEdit3("colour", &color.x, ImGuiColorEditFlags_Float);
+  state.track_gesture(DocKind::scene);
+  if (recoloured) state.scene_edited(scene.set_color(index, color));
+  float intensity = light.intensity;
+  const bool brighter = ImGui::DragFloat("intensity", &intensity, 0.1f, 0.0f, 1000.0f);
+  state.track_gesture(DocKind::scene);
+  if (brighter) state.scene_edited(scene.set_intensity(index, intensity));
+  if (light.type != scene::LightType::directional) {
+    float range = light.range;
+    const bool ranged = ImGui::DragFloat("range", &range, 0.05f, 0.01f, 100.0f);
+    state.track_gesture(DocKind::scene);
+    if (ranged) state.scene_edited(scene.set_range(index, range));
+  }
+  float size = light.size;
+  const bool sized = ImGui::DragFloat("size", &size, 0.01f, 0.0f, 10.0f);
+  state.track_gesture(DocKind::scene);
+  if (sized) state.scene_edited(scene.set_size(index, size));
+  bool casts = light.casts_shadows;
+  if (ImGui::Checkbox("casts shadows", &casts)) {
+    state.scene_edited(scene.set_casts_shadows(index, casts));
+  }
+}
+
+}  // namespace
+
+void place_panel(int column, float height) {
+  const ImVec2 size = ImGui::GetMainViewport()->Size;
+  const float width = size.x / 3.0f - 10.0f;
+  ImGui::SetNextWindowPos({8.0f + static_cast<float>(column) * (width + 6.0f), 8.0f},
+                          ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize({width, std::min(height, size.y - 44.0f)}, ImGuiCond_FirstUseEver);
+}
+
+void draw_lights_panel(EditorState& state) {
+  place_panel(0, 330.0f);
+  if (!ImGui::Begin("Lights")) {
+    ImGui::End();
+    return;
+  }
+  auto& scene = state.scene();
+  const auto& report = state.report();
+  const int selected = scene.selected();
+  const bool has_selection = selected >= 0 && selected < static_cast<int>(scene.lights().size());
+  if (ImGui::Button("Add")) state.scene_edited(scene.add_light());
+  ImGui::SameLine();
+  ImGui::BeginDisabled(!has_selection);
+  if (ImGui::Button("Duplicate")) {
+    state.scene_edited(scene.duplicate_light(static_cast<std::size_t>(selected)));
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("Delete")) {
+    state.scene_edited(scene.delete_light(static_cast<std::size_t>(selected)));
+  }
+  ImGui::EndDisabled();
+
+  if (ImGui::BeginListBox("##lights", {-1.0f, 110.0f})) {
+    for (std::size_t i = 0; i < scene.lights().size(); ++i) {
+      const bool over = i < report.circles.size() && report.circles[i].over_cap;
+      std::string label = scene.lights()[i].name + (over ? "  (over cap)" : "");
+      label += "##" + std::to_string(i);
+      if (over) ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(255, 120, 90, 255));
+      if (ImGui::Selectable(label.c_str(), static_cast<int>(i) == selected)) {
+        scene.select(static_cast<int>(i));
+      }
+      if (over) ImGui::PopStyleColor();
+    }
+    ImGui::EndListBox();
+  }
+  const int now_selected = scene.selected();
+  if (now_selected >= 0 && now_selected < static_cast<int>(scene.lights().size())) {
+    draw_light_fields(state, static_cast<std::size_t>(now_selected));
+  }
+  ImGui::End();
+}
+
+}  // namespace antumbra::editor_app

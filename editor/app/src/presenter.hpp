@@ -1,0 +1,67 @@
+#pragma once
+// Puts one frame on the window: acquire a swapchain image, blit the graph's output into
+// it (letterboxed, any format and size; the output's layout is restored afterwards),
+// draw the UI over it, present. Runs on the context's queue after the graph's frame and
+// signals the context's timeline, so a frame slot is reused only once the GPU has passed
+// it. Handles out-of-date and suboptimal swapchains and 0x0 (minimised) windows.
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <string>
+
+#include <vulkan/vulkan.h>
+
+#include "antumbra/fgvk/pass.hpp"
+#include "antumbra/gpu/context.hpp"
+#include "antumbra/gpu/handle.hpp"
+#include "swapchain.hpp"
+#include "window.hpp"
+
+namespace antumbra::editor_app {
+
+class Presenter {
+ public:
+  static constexpr std::uint32_t kFramesInFlight = 2;
+
+  Presenter(gpu::Context& gpu, Window& window, VkSurfaceKHR surface);
+  Presenter(const Presenter&) = delete;
+  Presenter& operator=(const Presenter&) = delete;
+  ~Presenter();
+
+  [[nodiscard]] const Swapchain& swapchain() const { return swapchain_; }
+
+  // False when the window is minimised: nothing can be drawn, wait for events.
+  bool ready();
+  // Draws one frame: `source` (may be null: the window is cleared) under the UI that
+  // `draw_ui` records in the UI render pass. With a screenshot path, the presented
+  // image is read back and written as PNG. Returns false when the frame was skipped
+  // (the swapchain went out of date and was rebuilt).
+  bool present(const fgvk::BoundImage* source, const std::function<void(VkCommandBuffer)>& draw_ui,
+               const std::string& screenshot = {});
+  [[nodiscard]] std::uint64_t presented() const { return presented_; }
+  [[nodiscard]] std::uint32_t recreations() const { return recreations_; }
+
+ private:
+  struct Slot {
+    gpu::CommandPool pool;
+    VkCommandBuffer cmd = VK_NULL_HANDLE;
+    gpu::Semaphore acquired;
+    std::uint64_t timeline_value = 0;
+  };
+
+  void rebuild(VkExtent2D extent);
+  void record_blit(VkCommandBuffer cmd, const fgvk::BoundImage* source, VkImage target);
+  void write_screenshot(VkCommandBuffer cmd, VkImage image, const std::string& path);
+
+  gpu::Context& gpu_;
+  Window& window_;
+  Swapchain swapchain_;
+  std::array<Slot, kFramesInFlight> slots_;
+  std::uint32_t slot_ = 0;
+  bool stale_ = false;  // the swapchain no longer matches the window: rebuild first
+  std::uint64_t presented_ = 0;
+  std::uint32_t recreations_ = 0;
+};
+
+}  // namespace antumbra::editor_app

@@ -1,0 +1,96 @@
+#include "window.hpp"
+
+#include <stdexcept>
+
+#define GLFW_INCLUDE_VULKAN
+#include <GLFW/glfw3.h>
+
+#include "antumbra/gpu/vk_check.hpp"
+
+namespace antumbra::editor_app {
+namespace {
+
+// GLFW reports errors through a callback; keep the last one for the exception text.
+std::string& last_glfw_error() {
+  static std::string error;
+  return error;
+}
+
+void on_glfw_error(int code, const char* description) {
+  last_glfw_error() = std::to_string(code) + ": " + (description ? description : "");
+}
+
+void init_glfw() {
+  glfwSetErrorCallback(&on_glfw_error);
+  if (glfwInit() != GLFW_TRUE) {
+    throw std::runtime_error("cannot start GLFW (is there a display? " + last_glfw_error() + ")");
+  }
+  if (glfwVulkanSupported() != GLFW_TRUE) {
+    glfwTerminate();
+    throw std::runtime_error("GLFW finds no Vulkan loader");
+  }
+}
+
+}  // namespace
+
+std::vector<std::string> Window::required_instance_extensions() const {
+  std::uint32_t count = 0;
+  const char** names = glfwGetRequiredInstanceExtensions(&count);
+  if (names == nullptr) throw std::runtime_error("GLFW cannot present with Vulkan here");
+  return {names, names + count};
+}
+
+Window::Window(int width, int height, const std::string& title) {
+  init_glfw();
+  glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
+  glfwWindowHint(GLFW_RESIZABLE, GLFW_TRUE);
+  window_ = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
+  if (window_ == nullptr) {
+    glfwTerminate();
+    throw std::runtime_error("cannot open a window: " + last_glfw_error());
+  }
+}
+
+Window::~Window() {
+  glfwDestroyWindow(window_);
+  glfwTerminate();
+}
+
+VkExtent2D Window::framebuffer_size() const {
+  int width = 0;
+  int height = 0;
+  glfwGetFramebufferSize(window_, &width, &height);
+  return {static_cast<std::uint32_t>(width), static_cast<std::uint32_t>(height)};
+}
+
+bool Window::minimised() const {
+  const VkExtent2D size = framebuffer_size();
+  return size.width == 0 || size.height == 0 || glfwGetWindowAttrib(window_, GLFW_ICONIFIED) != 0;
+}
+
+bool Window::should_close() const {
+  return glfwWindowShouldClose(window_) == GLFW_TRUE;
+}
+void Window::set_should_close(bool close) {
+  glfwSetWindowShouldClose(window_, close ? GLFW_TRUE : GLFW_FALSE);
+}
+void Window::set_title(const std::string& title) {
+  glfwSetWindowTitle(window_, title.c_str());
+}
+void Window::poll_events() {
+  glfwPollEvents();
+}
+void Window::wait_events() {
+  glfwWaitEventsTimeout(0.1);
+}
+
+Surface::Surface(VkInstance instance, const Window& window) : instance_(instance) {
+  gpu::check(glfwCreateWindowSurface(instance, window.handle(), nullptr, &surface_),
+             "glfwCreateWindowSurface");
+}
+
+Surface::~Surface() {
+  vkDestroySurfaceKHR(instance_, surface_, nullptr);
+}
+
+}  // namespace antumbra::editor_app

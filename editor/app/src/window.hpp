@@ -1,0 +1,54 @@
+#pragma once
+// The editor's GLFW window (no client API: Vulkan draws into it) and its Vulkan surface.
+// GLFW is initialised once per Window; the surface belongs to the instance, so it must
+// be destroyed before the gpu::Context that owns the instance.
+
+#include <string>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+struct GLFWwindow;
+
+namespace antumbra::editor_app {
+
+class Window {
+ public:
+  // Throws std::runtime_error when GLFW cannot start (no display) or has no Vulkan.
+  Window(int width, int height, const std::string& title);
+  Window(const Window&) = delete;
+  Window& operator=(const Window&) = delete;
+  ~Window();
+
+  // What vkCreateInstance must enable for this window's surface (GLFW decides).
+  [[nodiscard]] std::vector<std::string> required_instance_extensions() const;
+
+  [[nodiscard]] GLFWwindow* handle() const { return window_; }
+  [[nodiscard]] VkExtent2D framebuffer_size() const;
+  // Iconified, or a 0x0 framebuffer (how some platforms report it): nothing to draw.
+  [[nodiscard]] bool minimised() const;
+  [[nodiscard]] bool should_close() const;
+  void set_should_close(bool close);
+  void set_title(const std::string& title);
+  void poll_events();
+  void wait_events();  // blocks: while minimised there is nothing to draw
+
+ private:
+  GLFWwindow* window_ = nullptr;
+};
+
+// The window's VkSurfaceKHR, destroyed with the object (before the instance goes).
+class Surface {
+ public:
+  Surface(VkInstance instance, const Window& window);
+  Surface(const Surface&) = delete;
+  Surface& operator=(const Surface&) = delete;
+  ~Surface();
+  [[nodiscard]] VkSurfaceKHR handle() const { return surface_; }
+
+ private:
+  VkInstance instance_;
+  VkSurfaceKHR surface_ = VK_NULL_HANDLE;
+};
+
+}  // namespace antumbra::editor_app

@@ -1,0 +1,41 @@
+#!/usr/bin/env bash
+# The windowed editor in a real window: Xvfb + lavapipe, validation (synchronization
+# validation included) on. Opens, presents 30 frames, reads the last presented swapchain
+# image back as a screenshot (UI included), closes. The screenshot must have the window's
+# size and not be blank, and the log must hold no validation error.
+# Skips (exit 77) only when there is no xvfb-run to give it a display.
+set -u
+antumbra=$1
+png_stats=$2
+source_root=$3
+command -v xvfb-run >/dev/null 2>&1 || { echo "SKIP: xvfb-run is not installed"; exit 77; }
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+export ANTUMBRA_CACHE_DIR="$tmp/cache"
+# Copies: the editor writes recovery files beside what it edits, never into the tree.
+cp "$source_root/data/scenes/atrium.json" "$tmp/scene.json"
+sed 's|"../schema/|"'"$source_root"'/data/schema/|' "$source_root/data/graphs/layered-ssss.json" \
+  > "$tmp/graph.json"
+
+log="$tmp/log.txt"
+start=$(date +%s.%N)
+xvfb-run -a -s "-screen 0 640x480x24" "$antumbra" edit --validation --frames 30 --size 320x180 \
+  --scene "$tmp/scene.json" --graph "$tmp/graph.json" --screenshot "$tmp/shot.png" >"$log" 2>&1
+rc=$?
+end=$(date +%s.%N)
+fail() { echo "FAIL: $*"; echo "--- log:"; cat "$log"; exit 1; }
+[ $rc -eq 0 ] || fail "edit exited with $rc"
+grep -q "Validation Error" "$log" && fail "validation errors in the log"
+grep -q "validation: 0 error(s)" "$log" || fail "no clean validation summary"
+grep -q "editor: 30 frame(s) presented" "$log" || fail "did not present 30 frames"
+[ -s "$tmp/shot.png" ] || fail "no screenshot written"
+stats=$("$png_stats" "$tmp/shot.png") || fail "cannot read the screenshot"
+echo "screenshot: $stats"
+case "$stats" in
+  320x180\ *) ;;
+  *) fail "screenshot is not 320x180: $stats" ;;
+esac
+colours=${stats##*colours=}
+[ "$colours" -ge 16 ] || fail "screenshot looks blank ($colours colours)"
+ls "$tmp"/*.recovery >/dev/null 2>&1 && fail "a recovery file was left behind"
+echo "PASS: editor window smoke test in $(awk "BEGIN { printf \"%.1f\", $end - $start }") s"
