@@ -12,6 +12,7 @@
 #include "antumbra/editor/graph_document.hpp"
 #include "antumbra/editor/layer_status.hpp"
 #include "antumbra/editor/scene_document.hpp"
+#include "antumbra/editor/viewport.hpp"
 #include "antumbra/editor_app/windowed_editor.hpp"
 #include "antumbra/fg/graph_desc.hpp"
 #include "antumbra/fg/json_document.hpp"
@@ -104,6 +105,11 @@ class EditRun {
     return static_cast<std::size_t>(index);
   }
 
+  static glm::vec2 vec2_of(const Json& v) {
+    if (!v.is_array() || v.size() != 2) throw StepError{"expected [dx, dy]"};
+    return {v[0].get<float>(), v[1].get<float>()};
+  }
+
   static glm::vec3 vec3_of(const Json& v) {
     if (!v.is_array() || v.size() != 3) throw StepError{"expected [x, y, z]"};
     return {v[0].get<float>(), v[1].get<float>(), v[2].get<float>()};
@@ -130,6 +136,8 @@ class EditRun {
       throw StepError{"the edited scene no longer parses"};
     }
     if (upload_geometry) {
+      scene_camera_ = parsed->camera;
+      camera_.reset(scene_camera_);
       session_.set_scene(std::move(parsed.value()));
     } else {
       session_.set_lights(std::move(parsed.value().lights));
@@ -225,6 +233,16 @@ class EditRun {
     } else if (what == "reload") {
       reload();
       return;
+    } else if (what == "camera") {
+      navigate(step);
+      return;
+    } else if (what == "click") {
+      scene_.select(pick(step.at("at")));
+      std::printf("  selected %s\n", selected_name().c_str());
+      return;
+    } else if (what == "viewport-drag") {
+      viewport_drag(step);
+      return;
     } else {
       throw StepError{"unknown action '" + what + "'"};
     }
@@ -233,6 +251,92 @@ class EditRun {
     status_.set_cap(graph_cap());  // a graph edit may have changed the cap
     status_.update(scene_);
     render(1);
+  }
+
+  // The viewport as the window drives it: image pixels of the graph's viewport.
+  [[nodiscard]] glm::ivec2 view_size() const {
+    return {static_cast<int>(session_.viewport().width),
+            static_cast<int>(session_.viewport().height)};
+  }
+
+  // A pixel [x, y]; a light's name: where its centre is on screen; {"over": [x, y, z]}:
+  // where that world point is on screen.
+  [[nodiscard]] glm::vec2 pixel_of(const Json& at) const {
+    if (at.is_object() && at.contains("over")) {
+      const auto p = editor::project(camera_.camera(), view_size(), vec3_of(at["over"]));
+      if (!p) throw StepError{"that point is behind the camera"};
+      return *p;
+    }
+    if (at.is_string()) {
+      const auto index = light_index(Json{{"light", at}});
+      const auto p =
+          editor::project(camera_.camera(), view_size(), scene_.lights()[index].position);
+      if (!p) throw StepError{"'" + at.get<std::string>() + "' is behind the camera"};
+      return *p;
+    }
+    if (!at.is_array() || at.size() != 2)
+      throw StepError{"expected [x, y], a light's name or {\"over\": [x, y, z]}"};
+    return {at[0].get<float>(), at[1].get<float>()};
+  }
+
+  [[nodiscard]] int pick(const Json& at) const {
+    return editor::pick_light(scene_.lights(), camera_.camera(), view_size(), pixel_of(at));
+  }
+
+  [[nodiscard]] std::string selected_name() const {
+    const int s = scene_.selected();
+    return s >= 0 && s < static_cast<int>(scene_.lights().size())
+               ? "'" + scene_.lights()[static_cast<std::size_t>(s)].name + "'"
+               : std::string("nothing");
+  }
+
+  void navigate(const Json& step) {
+    if (step.value("reset", false)) camera_.reset(scene_camera_);
+    if (step.contains("pivot")) {
+      camera_.set_pivot(scene_.lights()[light_index(Json{{"light", step["pivot"]}})].position);
+    }
+    if (step.contains("orbit")) camera_.orbit(vec2_of(step["orbit"]));
+    if (step.contains("look")) camera_.look(vec2_of(step["look"]));
+    if (step.contains("dolly")) camera_.dolly(step["dolly"].get<float>());
+    if (step.contains("move")) camera_.move(vec3_of(step["move"]), step.value("metres", 1.0f));
+    session_.set_camera(camera_.camera());
+    const auto& c = camera_.camera();
+    std::printf("  camera at (%.2f, %.2f, %.2f) looking at (%.2f, %.2f, %.2f)\n", c.position.x,
+                c.position.y, c.position.z, c.target.x, c.target.y, c.target.z);
+    render(1);
+  }
+
+  // Press on a light, move in `steps` increments, release: one undoable gesture.
+  void viewport_drag(const Json& step) {
+    const int hit = pick(step.at("from"));
+    if (hit < 0) throw StepError{"no light under the cursor where the drag starts"};
+    const auto index = static_cast<std::size_t>(hit);
+    scene_.select(hit);
+    const glm::vec2 from = pixel_of(step["from"]);
+    const glm::vec2 to = pixel_of(step.at("to"));
+    const std::string plane = step.value("plane", std::string("horizontal"));
+    if (plane != "horizontal" && plane != "vertical") {
+      throw StepError{"plane must be \"horizontal\" or \"vertical\""};
+    }
+    const editor::LightDrag drag(
+        scene_.lights()[index].position, camera_.camera(), view_size(), from,
+        plane == "vertical" ? editor::DragPlane::vertical : editor::DragPlane::horizontal);
+    const int steps = std::max(1, step.value("steps", 4));
+    scene_.begin_gesture();
+    for (int i = 1; i <= steps; ++i) {
+      const glm::vec2 cursor =
+          from + (to - from) * (static_cast<float>(i) / static_cast<float>(steps));
+      const auto position = drag.update(cursor);
+      if (!position) continue;  // off the plane: the light stays where it was last put
+      const auto result = scene_.set_position(index, *position);
+      if (!result) throw StepError{"edit refused: " + result.message};
+      sync_scene();
+      render(1);
+    }
+    scene_.end_gesture();
+    const glm::vec3 p = scene_.lights()[index].position;
+    std::printf("  dragged '%s' to (%.3f, %.3f, %.3f)\n", scene_.lights()[index].name.c_str(), p.x,
+                p.y, p.z);
   }
 
   [[nodiscard]] bool frame_reports_layer_warning() const {
@@ -278,6 +382,19 @@ class EditRun {
         throw StepError{"the file " + std::string(has ? "contains" : "lacks") + " \"" +
                         step["text"].get<std::string>() + "\""};
       }
+    } else if (what == "selected") {
+      const auto want = step.at("light");
+      const std::string name = want.is_null() ? "nothing" : "'" + want.get<std::string>() + "'";
+      if (selected_name() != name) throw StepError{"selected " + selected_name() + ", not " + name};
+    } else if (what == "light-at") {
+      const glm::vec3 want = vec3_of(step.at("position"));
+      const glm::vec3 have = scene_.lights()[light_index(step)].position;
+      if (glm::distance(want, have) > step.value("tolerance", 1e-3f)) {
+        char text[160];
+        std::snprintf(text, sizeof text, "the light is at (%.4f, %.4f, %.4f)", have.x, have.y,
+                      have.z);
+        throw StepError{text};
+      }
     } else if (what == "dirty") {
       if (scene_.dirty() != step.at("value").get<bool>()) {
         throw StepError{std::string("the scene is ") + (scene_.dirty() ? "" : "not ") + "dirty"};
@@ -293,6 +410,8 @@ class EditRun {
   editor::PassDescLookup lookup_;
   editor::LayerStatus status_;
   fs::path script_dir_;
+  editor::ViewportCamera camera_{scene::Camera{}};
+  scene::Camera scene_camera_;
   fg::Diagnostics last_reload_;
   bool reload_ok_ = true;
   std::vector<double> frame_ms_;
@@ -315,6 +434,7 @@ int run_edit(const EditOptions& options) {
     editor_app::WindowedOptions windowed{options.graph, options.scene, options.device,
                                          options.validation, options.frames};
     windowed.screenshot = options.out;
+    windowed.select = options.select;
     if (!parse_size(options.size, windowed.width, windowed.height)) {
       std::fprintf(stderr, "antumbra edit: --size must be WxH, got \"%s\"\n", options.size.c_str());
       return kExitUsage;

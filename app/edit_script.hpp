@@ -23,7 +23,8 @@ struct EditOptions {
   std::string script;
   bool headless = false;
   std::string size = "1280x720";
-  std::string out;  // optional PNG of the last frame
+  std::string out;     // optional PNG of the last frame
+  std::string select;  // window: the light selected at start
 };
 
 int run_edit(const EditOptions& options);

@@ -106,6 +106,11 @@ void RenderSession::set_lights(std::vector<scene::PointLight> lights) {
   scene_->lights = std::move(lights);
 }
 
+void RenderSession::set_camera(const scene::Camera& camera) {
+  if (!scene_) throw std::logic_error("set_camera() before set_scene()");
+  scene_->camera = camera;  // written into the frame slot's buffer when a frame starts
+}
+
 void RenderSession::render(int frames, TraceWriter* trace) {
   if (!scene_ || !executor_->loaded()) throw std::logic_error("render() needs a scene and a graph");
   gpu::CpuTimer clock;

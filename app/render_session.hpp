@@ -51,6 +51,8 @@ class RenderSession {
   // Lights only (the editor's edits): geometry stays uploaded, so the static shadow
   // cache keeps every face a changed light does not reach.
   void set_lights(std::vector<scene::PointLight> lights);
+  // The camera (the editor's navigation): per-frame data, takes effect next frame.
+  void set_camera(const scene::Camera& camera);
   // A new viewport takes effect at the next load_graph().
   void set_viewport(VkExtent2D viewport) { options_.viewport = viewport; }
   [[nodiscard]] VkExtent2D viewport() const { return options_.viewport; }

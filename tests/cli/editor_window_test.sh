@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The windowed editor in a real window: Xvfb + lavapipe, validation (synchronization
 # validation included) on. Opens, presents 30 frames, reads the last presented swapchain
-# image back as a screenshot (UI included), closes. The screenshot must have the window's
+# image back as a screenshot (UI included, a light selected: its range sphere drawn),
+# closes. The screenshot must have the window's
 # size and not be blank, and the log must hold no validation error.
 # Skips (exit 77) only when there is no xvfb-run to give it a display.
 set -u
@@ -20,7 +21,7 @@ sed 's|"../schema/|"'"$source_root"'/data/schema/|' "$source_root/data/graphs/la
 log="$tmp/log.txt"
 start=$(date +%s.%N)
 xvfb-run -a -s "-screen 0 640x480x24" "$antumbra" edit --validation --frames 30 --size 320x180 \
-  --scene "$tmp/scene.json" --graph "$tmp/graph.json" --screenshot "$tmp/shot.png" >"$log" 2>&1
+  --select l05 --scene "$tmp/scene.json" --graph "$tmp/graph.json" --screenshot "$tmp/shot.png" >"$log" 2>&1
 rc=$?
 end=$(date +%s.%N)
 fail() { echo "FAIL: $*"; echo "--- log:"; cat "$log"; exit 1; }
@@ -38,4 +39,9 @@ esac
 colours=${stats##*colours=}
 [ "$colours" -ge 16 ] || fail "screenshot looks blank ($colours colours)"
 ls "$tmp"/*.recovery >/dev/null 2>&1 && fail "a recovery file was left behind"
+# A light that is not in the scene is a usage error, not a crash.
+xvfb-run -a -s "-screen 0 640x480x24" "$antumbra" edit --frames 2 --size 64x36 --select nosuch \
+  --scene "$tmp/scene.json" --graph "$tmp/graph.json" >"$log" 2>&1
+[ $? -eq 2 ] || fail "--select of a missing light should exit 2"
+grep -q "no light named 'nosuch'" "$log" || fail "no message for the missing light"
 echo "PASS: editor window smoke test in $(awk "BEGIN { printf \"%.1f\", $end - $start }") s"

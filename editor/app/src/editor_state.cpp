@@ -2,8 +2,6 @@
 
 #include <cstdio>
 
-#include <imgui.h>
-
 #include "antumbra/editor/atomic_file.hpp"
 #include "antumbra/fg/json_document.hpp"
 #include "antumbra/fg/plan_diff.hpp"
@@ -31,6 +29,8 @@ bool EditorState::start() {
     for (const auto& d : parsed.diagnostics()) std::printf("  %s\n", fg::format_text(d).c_str());
     return false;
   }
+  scene_camera_ = parsed->camera;
+  camera_.reset(scene_camera_);
   session_.set_scene(std::move(parsed.value()));
   status_.set_cap(graph_cap());
   status_.update(scene_);
@@ -91,7 +91,9 @@ void EditorState::reload_scene_file() {
   std::erase(undo_order_, DocKind::scene);  // the new document has a fresh history
   std::erase(redo_order_, DocKind::scene);
   gesture_open_ = false;
+  scene_camera_ = parsed->camera;
   session_.set_scene(std::move(parsed.value()));
+  session_.set_camera(camera_.camera());  // the artist's view stays where it was
   status_.update(scene_);
   message_ = "scene reloaded from disk";
 }
@@ -133,9 +135,8 @@ std::string EditorState::layering_pass() const {
   return {};
 }
 
-void EditorState::track_gesture(DocKind kind) {
-  if (!ImGui::IsItemActivated()) return;
-  end_frame();
+void EditorState::open_gesture(DocKind kind) {
+  end_frame(false);
   if (kind == DocKind::scene) {
     scene_.begin_gesture();
   } else {
@@ -146,8 +147,8 @@ void EditorState::track_gesture(DocKind kind) {
   gesture_kind_ = kind;
 }
 
-void EditorState::end_frame() {
-  if (!gesture_open_ || ImGui::IsAnyItemActive()) return;
+void EditorState::end_frame(bool held) {
+  if (!gesture_open_ || held) return;
   if (gesture_kind_ == DocKind::scene) {
     scene_.end_gesture();
   } else {
@@ -256,6 +257,19 @@ void EditorState::reload_graph() {
   status_.set_cap(graph_cap());
 }
 
+void EditorState::resize(VkExtent2D extent) {
+  if (extent.width == 0 || extent.height == 0) return;
+  const VkExtent2D previous = session_.viewport();
+  session_.set_viewport(extent);
+  reload_graph();
+  if (diagnostics_.has_errors()) {  // e.g. too large for the device: keep the old size
+    message_ = "cannot render at " + std::to_string(extent.width) + "x" +
+               std::to_string(extent.height) + "; the graph stays at its size";
+    session_.set_viewport(previous);
+    reload_graph();
+  }
+}
+
 void EditorState::set_view_resource(const std::string& resource) {
   if (resource == view_resource_) return;
   const std::string previous = view_resource_;
@@ -272,6 +286,16 @@ std::string EditorState::shown_resource() const {
   const auto& plan = session_.executor().plan();
   return plan.output < 0 ? std::string()
                          : plan.resources.at(static_cast<std::size_t>(plan.output)).name;
+}
+
+void EditorState::set_camera(const editor::ViewportCamera& camera) {
+  camera_ = camera;
+  session_.set_camera(camera_.camera());
+}
+
+void EditorState::reset_camera() {
+  camera_.reset(scene_camera_);
+  session_.set_camera(camera_.camera());
 }
 
 bool EditorState::save() {

@@ -11,6 +11,7 @@
 #include "antumbra/editor/graph_document.hpp"
 #include "antumbra/editor/layer_status.hpp"
 #include "antumbra/editor/scene_document.hpp"
+#include "antumbra/editor/viewport.hpp"
 #include "antumbra/fg/diagnostics.hpp"
 #include "antumbra/gpu/timing.hpp"
 #include "antumbra/watch/file_watcher.hpp"
@@ -35,10 +36,19 @@ class EditorState {
   [[nodiscard]] editor::LayerStatus& status() { return status_; }
   [[nodiscard]] const editor::LayerReport& report() { return status_.update(scene_); }
 
-  // Edits. Call track_gesture() right after the widget that produced the edit, before
-  // forwarding it: a widget that just became active opens a gesture.
-  void track_gesture(DocKind kind);
-  void end_frame();  // closes a gesture once no widget is active any more
+  // The viewport's navigation camera. Not part of the scene document (looking around is
+  // not an edit); it survives scene reloads. reset_camera() returns to the scene's.
+  [[nodiscard]] const editor::ViewportCamera& camera() const { return camera_; }
+  void set_camera(const editor::ViewportCamera& camera);
+  void reset_camera();
+
+  // Edits. A gesture (a drag, typing into a field) is one undo step however many edits
+  // it forwards: open_gesture() when a widget becomes active or a viewport drag starts;
+  // end_frame() closes it once nothing holds it any more (no active widget, no drag).
+  // No ImGui here: the views pass what they saw, so tests drive it without a window.
+  void open_gesture(DocKind kind);
+  void end_frame(bool held);
+  [[nodiscard]] bool gesture_open() const { return gesture_open_; }
   void scene_edited(const editor::EditResult& result);
   void set_param(const std::string& pass, const std::string& name, const fg::Json& value);
   void undo();
@@ -54,6 +64,9 @@ class EditorState {
   [[nodiscard]] const std::string& view_resource() const { return view_resource_; }
   void set_view_resource(const std::string& resource);
   [[nodiscard]] std::string shown_resource() const;  // the resource being shown now
+
+  // The graph renders at the window's size: a new size reallocates its images (a reload).
+  void resize(VkExtent2D extent);
 
   // Live reload: the graph, the scene and every shader on disk, polled a few times a
   // second. A changed shader reloads the graph (the last good pipelines stay on error);
@@ -94,6 +107,8 @@ class EditorState {
   bool gesture_noted_ = false;
   DocKind gesture_kind_ = DocKind::scene;
   std::string view_resource_;
+  editor::ViewportCamera camera_{scene::Camera{}};
+  scene::Camera scene_camera_;  // as the scene file has it
   fg::Diagnostics diagnostics_;
   std::string reload_summary_;
   std::string message_;

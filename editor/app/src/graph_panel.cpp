@@ -84,7 +84,7 @@ void draw_param(EditorState& state, const editor::PassView& pass, const editor::
     }
   }
   if (p.type != fg::ParamType::enumeration && p.type != fg::ParamType::boolean) {
-    state.track_gesture(DocKind::graph);
+    track_gesture(state, DocKind::graph);
   }
   if (!p.description.empty() && ImGui::IsItemHovered()) {
     ImGui::SetTooltip("%s", p.description.c_str());

@@ -1,5 +1,4 @@
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -7,27 +6,11 @@
 #include <imgui.h>
 
 #include "antumbra/editor/fix_suggestion.hpp"
+#include "layer_colours.hpp"
 #include "panels.hpp"
 
 namespace antumbra::editor_app {
 namespace {
-
-constexpr std::array<ImU32, 8> kLayerColours = {
-    IM_COL32(66, 135, 245, 255),  IM_COL32(245, 166, 35, 255), IM_COL32(80, 200, 120, 255),
-    IM_COL32(200, 90, 220, 255),  IM_COL32(240, 220, 70, 255), IM_COL32(60, 210, 210, 255),
-    IM_COL32(240, 110, 160, 255), IM_COL32(150, 150, 255, 255)};
-constexpr ImU32 kFallbackColour = IM_COL32(230, 40, 40, 255);
-constexpr ImU32 kNoShadowColour = IM_COL32(120, 120, 120, 255);
-constexpr ImU32 kWarningColour = IM_COL32(255, 60, 40, 255);
-
-ImU32 layer_colour(int layer) {
-  if (layer >= 0) return kLayerColours[static_cast<std::size_t>(layer) % kLayerColours.size()];
-  return layer == editor::kNoShadowLayer ? kNoShadowColour : kFallbackColour;
-}
-
-ImU32 with_alpha(ImU32 colour, int alpha) {
-  return (colour & ~IM_COL32_A_MASK) | (static_cast<ImU32>(alpha) << IM_COL32_A_SHIFT);
-}
 
 void draw_cap_control(EditorState& state) {
   const std::string pass = state.layering_pass();
@@ -37,10 +20,12 @@ void draw_cap_control(EditorState& state) {
   }
   const auto param = state.graph().param(pass, "maxLayers");
   int cap = state.graph_cap();
-  if (ImGui::InputInt("cap k", &cap)) {
+  // Typed digits commit on Enter (one undo step and one graph reload per value, not per
+  // keystroke); the +/- buttons commit at once.
+  if (ImGui::InputInt("cap k", &cap, 1, 1, ImGuiInputTextFlags_EnterReturnsTrue)) {
     if (param && param->min) cap = std::max(cap, static_cast<int>(*param->min));
     if (param && param->max) cap = std::min(cap, static_cast<int>(*param->max));
-    state.set_param(pass, "maxLayers", cap);  // one step each; reloads the graph
+    state.set_param(pass, "maxLayers", cap);  // reloads the graph
   }
 }
 

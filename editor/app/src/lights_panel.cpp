@@ -14,25 +14,25 @@ void draw_light_fields(EditorState& state, std::size_t index) {
   ImGui::Text("%s", light.name.c_str());
   glm::vec3 position = light.position;
   const bool moved = ImGui::DragFloat3("position", &position.x, 0.05f);
-  state.track_gesture(DocKind::scene);
+  track_gesture(state, DocKind::scene);
   if (moved) state.scene_edited(scene.set_position(index, position));
   glm::vec3 color = light.color;
   const bool recoloured = ImGui::ColorEdit3("colour", &color.x, ImGuiColorEditFlags_Float);
-  state.track_gesture(DocKind::scene);
+  track_gesture(state, DocKind::scene);
   if (recoloured) state.scene_edited(scene.set_color(index, color));
   float intensity = light.intensity;
   const bool brighter = ImGui::DragFloat("intensity", &intensity, 0.1f, 0.0f, 1000.0f);
-  state.track_gesture(DocKind::scene);
+  track_gesture(state, DocKind::scene);
   if (brighter) state.scene_edited(scene.set_intensity(index, intensity));
   if (light.type != scene::LightType::directional) {
     float range = light.range;
     const bool ranged = ImGui::DragFloat("range", &range, 0.05f, 0.01f, 100.0f);
-    state.track_gesture(DocKind::scene);
+    track_gesture(state, DocKind::scene);
     if (ranged) state.scene_edited(scene.set_range(index, range));
   }
   float size = light.size;
   const bool sized = ImGui::DragFloat("size", &size, 0.01f, 0.0f, 10.0f);
-  state.track_gesture(DocKind::scene);
+  track_gesture(state, DocKind::scene);
   if (sized) state.scene_edited(scene.set_size(index, size));
   bool casts = light.casts_shadows;
   if (ImGui::Checkbox("casts shadows", &casts)) {

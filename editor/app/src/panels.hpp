@@ -2,9 +2,17 @@
 // The editor's ImGui panels. Each draws from the EditorState and forwards edits to it;
 // none keeps document state of its own.
 
+#include <imgui.h>
+
 #include "editor_state.hpp"
 
 namespace antumbra::editor_app {
+
+// Call right after the widget that produced an edit, before forwarding it: a widget
+// that just became active opens a gesture (one undo step for the whole drag).
+inline void track_gesture(EditorState& state, DocKind kind) {
+  if (ImGui::IsItemActivated()) state.open_gesture(kind);
+}
 
 // First-use placement: three columns over the top of the window, whatever its size.
 void place_panel(int column, float height);

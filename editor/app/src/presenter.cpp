@@ -7,6 +7,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include "antumbra/editor/viewport.hpp"
 #include "antumbra/gpu/commands.hpp"
 #include "antumbra/gpu/image_io.hpp"
 #include "antumbra/gpu/resources.hpp"
@@ -17,15 +18,13 @@ namespace {
 constexpr VkClearColorValue kBackground{{0.08f, 0.08f, 0.09f, 1.0f}};
 constexpr VkImageSubresourceRange kColorLayer0{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
 
-// The largest rectangle with the source's aspect ratio, centred in the target.
+// The largest rectangle with the source's aspect ratio, centred in the target (the same
+// rectangle the viewport maps the mouse through).
 std::array<VkOffset3D, 2> letterbox(VkExtent2D source, VkExtent2D target) {
-  const double scale = std::min(static_cast<double>(target.width) / source.width,
-                                static_cast<double>(target.height) / source.height);
-  const auto w = std::max(1, static_cast<int>(source.width * scale));
-  const auto h = std::max(1, static_cast<int>(source.height * scale));
-  const int x = (static_cast<int>(target.width) - w) / 2;
-  const int y = (static_cast<int>(target.height) - h) / 2;
-  return {VkOffset3D{x, y, 0}, VkOffset3D{x + w, y + h, 1}};
+  const editor::PixelRect r =
+      editor::letterbox({static_cast<int>(source.width), static_cast<int>(source.height)},
+                        {static_cast<int>(target.width), static_cast<int>(target.height)});
+  return {VkOffset3D{r.x, r.y, 0}, VkOffset3D{r.x + r.width, r.y + r.height, 1}};
 }
 
 }  // namespace

@@ -49,6 +49,20 @@ Window::Window(int width, int height, const std::string& title) {
     glfwTerminate();
     throw std::runtime_error("cannot open a window: " + last_glfw_error());
   }
+  glfwSetWindowUserPointer(window_, this);
+  glfwSetKeyCallback(window_, &Window::on_key);
+}
+
+void Window::on_key(GLFWwindow* window, int key, int /*scancode*/, int action, int mods) {
+  if (action != GLFW_PRESS) return;
+  auto* self = static_cast<Window*>(glfwGetWindowUserPointer(window));
+  if (self != nullptr) self->presses_.push_back({key, mods});
+}
+
+std::vector<KeyPress> Window::take_key_presses() {
+  std::vector<KeyPress> presses;
+  presses.swap(presses_);
+  return presses;
 }
 
 Window::~Window() {

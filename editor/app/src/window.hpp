@@ -12,6 +12,12 @@ struct GLFWwindow;
 
 namespace antumbra::editor_app {
 
+// A key going down, with the modifiers held (GLFW's key and mod codes).
+struct KeyPress {
+  int key = 0;
+  int mods = 0;
+};
+
 class Window {
  public:
   // Throws std::runtime_error when GLFW cannot start (no display) or has no Vulkan.
@@ -32,9 +38,16 @@ class Window {
   void set_title(const std::string& title);
   void poll_events();
   void wait_events();  // blocks: while minimised there is nothing to draw
+  // Key presses since the last call. A tap that goes down and up between two frames
+  // (easy at a few frames per second on lavapipe) is still here, where a per-frame
+  // "is it down" test misses it. Registered before ImGui's backend, which chains to it.
+  [[nodiscard]] std::vector<KeyPress> take_key_presses();
 
  private:
+  static void on_key(GLFWwindow* window, int key, int scancode, int action, int mods);
+
   GLFWwindow* window_ = nullptr;
+  std::vector<KeyPress> presses_;
 };
 
 // The window's VkSurfaceKHR, destroyed with the object (before the instance goes).

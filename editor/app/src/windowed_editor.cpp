@@ -20,6 +20,7 @@
 #include "panels.hpp"
 #include "presenter.hpp"
 #include "register_builtin_passes.hpp"
+#include "viewport_view.hpp"
 #include "window.hpp"
 
 namespace antumbra::editor_app {
@@ -40,18 +41,25 @@ std::string window_title(const EditorState& state, const fs::path& scene, const 
          ", " + graph.filename().string();
 }
 
-// Ctrl+Z, Ctrl+Shift+Z, Ctrl+S (the GLFW backend of ImGui 1.86 indexes keys by GLFW code).
-void handle_shortcuts(EditorState& state) {
-  const ImGuiIO& io = ImGui::GetIO();
-  if (!io.KeyCtrl || io.WantTextInput) return;
-  if (ImGui::IsKeyPressed(GLFW_KEY_Z, false)) {
-    if (io.KeyShift) {
-      state.redo();
-    } else {
-      state.undo();
+// Ctrl+Z, Ctrl+Shift+Z, Ctrl+S; Ctrl+Q closes like the window's close button (with the
+// prompt when there are unsaved changes). A text field that has the keyboard keeps its
+// own undo.
+void handle_shortcuts(EditorState& state, const std::vector<KeyPress>& presses, Window& window) {
+  if (ImGui::GetIO().WantTextInput) return;
+  for (const KeyPress& press : presses) {
+    if ((press.mods & GLFW_MOD_CONTROL) == 0) continue;
+    if (press.key == GLFW_KEY_Z) {
+      if ((press.mods & GLFW_MOD_SHIFT) != 0) {
+        state.redo();
+      } else {
+        state.undo();
+      }
+    } else if (press.key == GLFW_KEY_S) {
+      state.save();
+    } else if (press.key == GLFW_KEY_Q) {
+      window.set_should_close(true);  // seen at the top of the next frame
     }
   }
-  if (ImGui::IsKeyPressed(GLFW_KEY_S, false)) state.save();
 }
 
 void draw_status_bar(EditorState& state) {
@@ -73,6 +81,32 @@ void draw_status_bar(EditorState& state) {
   ImGui::SameLine();
   ImGui::Text("%s %s", state.dirty() ? "unsaved changes." : "", state.message().c_str());
   ImGui::End();
+}
+
+glm::ivec2 size_of(VkExtent2D extent) {
+  return {static_cast<int>(extent.width), static_cast<int>(extent.height)};
+}
+
+// The graph follows the window's size once it has stopped changing for a moment, so a
+// drag of the window's border reallocates the graph's images once, not every frame.
+struct PendingResize {
+  VkExtent2D extent{0, 0};
+  gpu::CpuTimer since;
+};
+
+void follow_window_size(EditorState& state, VkExtent2D window, PendingResize& pending) {
+  constexpr double kSettleMs = 250.0;
+  const VkExtent2D graph = state.session().viewport();
+  if (window.width == graph.width && window.height == graph.height) return;
+  if (window.width != pending.extent.width || window.height != pending.extent.height) {
+    pending.extent = window;
+    pending.since.restart();
+    return;
+  }
+  if (pending.since.elapsed_ms() < kSettleMs) return;
+  state.resize(window);
+  std::printf("editor: graph resized to %ux%u (%s)\n", window.width, window.height,
+              state.reload_summary().c_str());
 }
 
 enum class CloseChoice { none, close, cancel };
@@ -155,7 +189,18 @@ int run_windowed_editor(const WindowedOptions& options) {
   EditorState state(session, std::move(documents->scene), std::move(documents->graph),
                     editor::lookup_in(registry.reflection()));
   if (!state.start()) return app::kExitDiagnostics;
+  if (!options.select.empty()) {
+    const int light = state.scene().find_light(options.select);
+    if (light < 0) {
+      std::fprintf(stderr, "antumbra edit: --select: the scene has no light named '%s'\n",
+                   options.select.c_str());
+      return app::kExitUsage;
+    }
+    state.scene().select(light);
+  }
 
+  ViewportView viewport;
+  PendingResize resize;
   std::string title;
   int presented = 0;
   bool prompt = false;
@@ -178,9 +223,18 @@ int run_windowed_editor(const WindowedOptions& options) {
     }
     if (paused) std::printf("editor: window restored, rendering resumed\n");
     paused = false;
+    follow_window_size(state, presenter.swapchain().extent(), resize);
     gpu::CpuTimer frame_clock;
     ui.begin_frame();
-    handle_shortcuts(state);
+    const std::vector<KeyPress> presses = window->take_key_presses();
+    handle_shortcuts(state, presses, *window);
+    {
+      const fgvk::BoundImage* shown = session.executor().image(state.shown_resource());
+      const VkExtent2D view = session.viewport();
+      const VkExtent2D window_extent = presenter.swapchain().extent();
+      const VkExtent2D shown_extent = shown != nullptr ? shown->extent : view;
+      viewport.update(state, presses, size_of(view), size_of(shown_extent), size_of(window_extent));
+    }
     draw_lights_panel(state);
     draw_layers_panel(state);
     draw_graph_panel(state);
@@ -195,7 +249,7 @@ int run_windowed_editor(const WindowedOptions& options) {
       case CloseChoice::none:
         break;
     }
-    state.end_frame();
+    state.end_frame(ImGui::IsAnyItemActive() || viewport.dragging());
     ui.end_frame();
 
     session.render(1, nullptr);
@@ -211,6 +265,10 @@ int run_windowed_editor(const WindowedOptions& options) {
       }
       ++presented;
       frame_ms.push_back(frame_clock.elapsed_ms());
+      if (presented == 1) {
+        std::printf("editor: first frame presented\n");
+        std::fflush(stdout);  // scripts that drive the window wait for this line
+      }
     }
     state.autosave();
     state.poll_files();
@@ -228,7 +286,7 @@ int run_windowed_editor(const WindowedOptions& options) {
   if (!frame_ms.empty()) {
     std::sort(frame_ms.begin(), frame_ms.end());
     std::printf("editor frame (%ux%u graph): %.2f ms wall median (UI + render + present)\n",
-                options.width, options.height, frame_ms[frame_ms.size() / 2]);
+                session.viewport().width, session.viewport().height, frame_ms[frame_ms.size() / 2]);
   }
   if (!options.screenshot.empty() && options.frames > 0 && presented >= options.frames) {
     std::printf("screenshot: %s\n", options.screenshot.c_str());
