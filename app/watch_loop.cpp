@@ -72,7 +72,9 @@ int run_watch_loop(RenderSession& session, const WatchOptions& options) {
       std::fflush(stdout);
       continue;
     }
-    session.render(1, nullptr);
+    const double compiled_ms = latency.elapsed_ms();
+    session.render(1, nullptr);  // waits for the GPU: the new frame is done
+    const double frame_ms = latency.elapsed_ms();
     const std::string resource =
         session.executor()
             .plan()
@@ -81,8 +83,11 @@ int run_watch_loop(RenderSession& session, const WatchOptions& options) {
     session.write_image(resource, options.out);
     ++reloads;
     watcher.set(watched_files(session, options));  // shaders may have changed
-    std::printf("reloaded %s in %.1f ms (change seen -> new frame written to %s)\n",
-                changed.front().string().c_str(), latency.elapsed_ms(), options.out.c_str());
+    std::printf(
+        "reloaded %s in %.1f ms (change seen -> new frame written to %s; new frame rendered "
+        "at %.1f ms, of which reload %.1f ms)\n",
+        changed.front().string().c_str(), latency.elapsed_ms(), options.out.c_str(), frame_ms,
+        compiled_ms);
     if (graph_changed) {
       std::printf("  %s\n", fg::to_text(fg::diff_plans(before, session.executor().plan())).c_str());
     }

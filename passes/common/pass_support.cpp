@@ -10,7 +10,7 @@ namespace antumbra::passes {
 
 gpu::ShaderModule load_shader(fgvk::PrepareContext& context, std::string_view relative,
                               std::vector<std::string>& dependencies,
-                              const std::vector<gpu::ShaderDefine>& defines) {
+                              const std::vector<gpu::ShaderDefine>& defines, gpu::Fnv1a64* code) {
   gpu::ShaderRequest request;
   request.path = std::filesystem::path(context.shader_root) / relative;
   request.defines = defines;
@@ -24,6 +24,9 @@ gpu::ShaderModule load_shader(fgvk::PrepareContext& context, std::string_view re
     if (std::find(dependencies.begin(), dependencies.end(), file) == dependencies.end()) {
       dependencies.push_back(file);
     }
+  }
+  if (code != nullptr) {
+    code->update(result->spirv.data(), result->spirv.size() * sizeof(std::uint32_t));
   }
   return gpu::create_shader_module(context.gpu, result->spirv,
                                    context.pass.name + ":" + std::string(relative));

@@ -7,6 +7,7 @@
 
 #include "antumbra/fgvk/pass.hpp"
 #include "antumbra/gpu/handle.hpp"
+#include "antumbra/gpu/hash.hpp"
 #include "antumbra/gpu/pipelines.hpp"
 #include "antumbra/gpu/shader_compiler.hpp"
 
@@ -14,10 +15,12 @@ namespace antumbra::passes {
 
 // Compiles passes/<relative> (GLSL) and makes a shader module named after it. Adds
 // the file and its includes to `dependencies`. Throws fgvk::PassError with the
-// compiler's file:line diagnostics on failure.
+// compiler's file:line diagnostics on failure. `code`, when given, is fed the SPIR-V
+// (passes that keep caches across reloads tell by it whether they draw the same way).
 gpu::ShaderModule load_shader(fgvk::PrepareContext& context, std::string_view relative,
                               std::vector<std::string>& dependencies,
-                              const std::vector<gpu::ShaderDefine>& defines = {});
+                              const std::vector<gpu::ShaderDefine>& defines = {},
+                              gpu::Fnv1a64* code = nullptr);
 
 // A compute pipeline with one push-descriptor set and a push-constant block.
 struct ComputePipeline {

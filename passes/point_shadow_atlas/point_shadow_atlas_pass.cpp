@@ -97,8 +97,15 @@ void PointShadowAtlasPass::prepare(fgvk::PrepareContext& context) {
   }
   if (colour_) depth_defines.push_back({"SKIP_TRANSLUCENT", ""});
   shader_files_.clear();
-  auto depth_vert =
-      load_shader(context, "point_shadow_atlas/shadow_atlas.vert", shader_files_, depth_defines);
+  gpu::Fnv1a64 key;
+  const float shape[] = {depth_bias_, slope_bias_, settings_.near_plane,
+                         settings_.sun_max_distance};
+  const std::uint32_t flags[] = {
+      settings_.layers, settings_.face_size, settings_.cull_faces, settings_.cache, layered_,
+      colour_,          colour_map_};
+  key.update(shape, sizeof shape).update(flags, sizeof flags);
+  auto depth_vert = load_shader(context, "point_shadow_atlas/shadow_atlas.vert", shader_files_,
+                                depth_defines, &key);
 
   set_layout_ = gpu::DescriptorSetLayoutBuilder()
                     .storage_buffer(0, VK_SHADER_STAGE_VERTEX_BIT)
@@ -129,9 +136,10 @@ void PointShadowAtlasPass::prepare(fgvk::PrepareContext& context) {
   depth_pipeline_ = depth.build(context.gpu, context.pass.name + ".depth");
   colour_pipeline_ = {};
   if (colour_) {
-    auto colour_vert =
-        load_shader(context, "point_shadow_atlas/shadow_atlas.vert", shader_files_, colour_defines);
-    auto colour_frag = load_shader(context, "point_shadow_atlas/shadow_colour.frag", shader_files_);
+    auto colour_vert = load_shader(context, "point_shadow_atlas/shadow_atlas.vert", shader_files_,
+                                   colour_defines, &key);
+    auto colour_frag =
+        load_shader(context, "point_shadow_atlas/shadow_colour.frag", shader_files_, {}, &key);
     colour_pipeline_ =
         base()
             .vertex_attribute(1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(GpuVertex, normal))
@@ -157,8 +165,21 @@ void PointShadowAtlasPass::prepare(fgvk::PrepareContext& context) {
     }
   }
   planner_.invalidate();
+  drawing_key_ = key.value();
   atlas_image_ = atlas.image;
   colour_image_ = colour != nullptr ? colour->image : VK_NULL_HANDLE;
+}
+
+void PointShadowAtlasPass::adopt(fgvk::Pass& previous) {
+  const auto* old = dynamic_cast<const PointShadowAtlasPass*>(&previous);
+  if (old == nullptr || old->drawing_key_ != drawing_key_ || old->atlas_image_ != atlas_image_ ||
+      old->colour_image_ != colour_image_) {
+    return;  // other images or other drawing: everything is drawn again
+  }
+  planner_ = old->planner_;
+  tinted_ = old->tinted_;
+  translucent_bounds_ = old->translucent_bounds_;
+  translucent_version_ = old->translucent_version_;
 }
 
 void PointShadowAtlasPass::execute(fgvk::ExecuteContext& context) {
@@ -330,8 +351,8 @@ void PointShadowAtlasPass::draw_layered(fgvk::ExecuteContext& context, const Atl
   rendering.pDepthAttachment = &depth_attachment;
   if (colour != nullptr) {
     // Only tinted lights' colour layers are cleared (below) and read; see upload().
-    colour_attachment = attachment(colour->view, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                                   false, colour_clear);
+    colour_attachment =
+        attachment(colour->view, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, false, colour_clear);
     rendering.colorAttachmentCount = 1;
     rendering.pColorAttachments = &colour_attachment;
   }
@@ -391,10 +412,9 @@ void PointShadowAtlasPass::draw_per_face(fgvk::ExecuteContext& context, const At
     rendering.layerCount = 1;
     rendering.pDepthAttachment = &depth_attachment;
     if (colour_map_) {
-      colour_attachment = attachment(colour_layer_views_[layer],
-                                     VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                                     layer < frame.faces.size() && layer_tinted(frame, layer),
-                                     colour_clear);
+      colour_attachment =
+          attachment(colour_layer_views_[layer], VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                     layer < frame.faces.size() && layer_tinted(frame, layer), colour_clear);
       rendering.colorAttachmentCount = 1;
       rendering.pColorAttachments = &colour_attachment;
     }

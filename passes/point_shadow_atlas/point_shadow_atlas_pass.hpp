@@ -32,6 +32,9 @@ class PointShadowAtlasPass final : public fgvk::Pass {
   void prepare(fgvk::PrepareContext& context) override;
   void execute(fgvk::ExecuteContext& context) override;
   [[nodiscard]] std::vector<std::string> shader_files() const override { return shader_files_; }
+  // Takes over the cache (which faces hold what) when the images were handed over and
+  // the faces would be drawn the same way: same settings, biases and SPIR-V.
+  void adopt(fgvk::Pass& previous) override;
 
   [[nodiscard]] const AtlasStats& stats() const { return planner_.last().stats; }
   [[nodiscard]] bool layered() const { return layered_; }
@@ -57,11 +60,12 @@ class PointShadowAtlasPass final : public fgvk::Pass {
   bool want_colour_ = true;
   bool want_layered_ = true;
   bool layered_ = false;
-  bool colour_map_ = false;  // `colour` bound
-  bool colour_ = false;      // ... and translucent casters tint it
+  bool colour_map_ = false;   // `colour` bound
+  bool colour_ = false;       // ... and translucent casters tint it
   std::vector<bool> tinted_;  // per scene light: its colour layers are valid (params.w = 1)
   std::vector<scene::Aabb> translucent_bounds_;
   std::uint64_t translucent_version_ = ~0ull;
+  std::uint64_t drawing_key_ = 0;  // settings, biases and shader code that shape the faces
   VkImage atlas_image_ = VK_NULL_HANDLE;
   VkImage colour_image_ = VK_NULL_HANDLE;
 

@@ -2,8 +2,9 @@
 # The editor window driven by real input events (Xvfb + xdotool, lavapipe, validation
 # on): a mouse drag on a light in the viewport moves it on its horizontal plane and
 # Ctrl+S saves it; one Ctrl+Z takes the whole drag back (one undo step) and Ctrl+S saves
-# that; Ctrl+Q closes. Checked in the saved scene file, so the whole path counts: GLFW
-# events, ImGui's capture rules, the letterbox mapping, picking, the drag, undo, saving.
+# that; a resized window re-renders the graph at its size; Ctrl+Q closes. Checked in the
+# saved scene file and the log, so the whole path counts: GLFW events, ImGui's capture
+# rules, the letterbox mapping, picking, the drag, undo, saving, resizing.
 # Skips (exit 77) only without xvfb-run or xdotool.
 set -u
 antumbra=$1
@@ -44,6 +45,9 @@ cp "$2/scene.json" "$2/after-drag.json"
 step key ctrl+z
 step key ctrl+s
 cp "$2/scene.json" "$2/after-undo.json"
+# Resizing (no window manager under Xvfb: X resizes directly): the graph follows.
+xdotool search --name "antumbra edit" windowsize 800 450
+sleep 4
 step key ctrl+q
 for _ in $(seq 1 60); do kill -0 $editor 2>/dev/null || break; sleep 0.5; done
 kill $editor 2>/dev/null && echo "the editor did not close on Ctrl+Q"
@@ -58,6 +62,7 @@ log="$tmp/log.txt"
 fail() { echo "FAIL: $*"; echo "--- driver:"; cat "$tmp/driver.txt"; echo "--- log:"; cat "$log"; exit 1; }
 grep -q "editor exit 0" "$tmp/driver.txt" || fail "the editor did not exit 0 on Ctrl+Q"
 grep -q "validation: 0 error(s)" "$log" || fail "no clean validation summary"
+grep -q "graph resized to 800x450" "$log" || fail "the graph did not follow the window's new size"
 cp "$tmp/after-drag.json" "$tmp/scene.json"
 read -r x y z <<<"$(low_position)"
 echo "after the drag: $x $y $z"

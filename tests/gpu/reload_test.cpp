@@ -203,6 +203,56 @@ TEST_F(ReloadTest, UnchangedResourcesKeepTheirImagesAcrossAReload) {
 
 namespace {
 
+// The point-shadow-atlas report of the last frame: faces drawn.
+std::uint32_t faces_rendered(const app::RenderSession& session) {
+  for (const auto& m : session.last_report().messages()) {
+    if (m.code == "SHD010") return m.details["rendered"].get<std::uint32_t>();
+  }
+  ADD_FAILURE() << "no SHD010 note from the atlas pass";
+  return 0;
+}
+
+}  // namespace
+
+// A reload that leaves the atlas as it was (the blur changes) keeps its static cache:
+// the first frame after the swap draws no face and matches a fresh session's frame of
+// the new graph exactly. A change to how faces are drawn (the depth bias) draws them all.
+TEST_F(ReloadTest, TheShadowCacheSurvivesAReloadThatLeavesTheAtlasAlone) {
+  OPEN_SESSION(session, kSmall);
+  session->set_scene(default_scene());
+  auto graph = load_graph_file(source_dir() / "data" / "graphs" / "layered-ssss.json");
+  load_graph_ok(*session, graph);
+  session->render(2, nullptr);
+  EXPECT_EQ(faces_rendered(*session), 0u) << "a still scene should be all cached";
+  for (auto& p : graph.passes) {
+    if (p.type == "anisotropic-blur") p.params["kernel"] = "23";
+  }
+  load_graph_ok(*session, graph);
+  session->render(1, nullptr);
+  EXPECT_EQ(faces_rendered(*session), 0u) << "the reload threw the shadow cache away";
+  const auto after_reload = read_output(*session);
+
+  OPEN_SESSION(fresh, kSmall);
+  fresh->set_scene(default_scene());
+  load_graph_ok(*fresh, graph);
+  fresh->render(1, nullptr);
+  EXPECT_GT(faces_rendered(*fresh), 0u);
+  EXPECT_EQ(max_abs_difference(read_output(*fresh), after_reload), 0.0f)
+      << "the adopted cache differs from drawing every face";
+
+  for (auto& p : graph.passes) {
+    if (p.type == "point-shadow-atlas") p.params["depthBias"] = 2.5;
+  }
+  load_graph_ok(*session, graph);
+  EXPECT_GE(session->executor().kept_resources(), 3u);
+  session->render(1, nullptr);
+  EXPECT_GT(faces_rendered(*session), 0u) << "other biases must draw the faces again";
+  expect_no_validation_errors(*session);
+  expect_no_validation_errors(*fresh);
+}
+
+namespace {
+
 // Resident set size of this process in bytes (Linux), 0 when unknown.
 std::size_t resident_bytes() {
   std::ifstream statm("/proc/self/statm");

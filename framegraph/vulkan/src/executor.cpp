@@ -183,6 +183,17 @@ void Executor::load(fg::Plan plan) {
                            shader_root_, pipeline_cache_};
     state->passes[i]->prepare(context);
   }
+  // Everything is created: the load cannot fail any more. Offer each pass its
+  // predecessor (same name and type) so caches over kept images survive the swap.
+  if (state_) {
+    for (std::size_t i = 0; i < state->passes.size(); ++i) {
+      const auto& pass = state->plan.passes[i];
+      const auto* old = state_->plan.find_pass(pass.name);
+      if (old == nullptr || old->type != pass.type) continue;
+      const auto index = static_cast<std::size_t>(old - state_->plan.passes.data());
+      if (index < state_->passes.size()) state->passes[i]->adopt(*state_->passes[index]);
+    }
+  }
   // Only now, with everything created, replace the live state; the old objects go
   // to deferred destruction and die once no frame in flight uses them.
   state->kept = 0;

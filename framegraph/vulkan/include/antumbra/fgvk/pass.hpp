@@ -136,6 +136,12 @@ class Pass {
   virtual void execute(ExecuteContext& context) = 0;
   // Shader files the pass depends on (with includes), for file watching.
   [[nodiscard]] virtual std::vector<std::string> shader_files() const { return {}; }
+  // A reload: after every pass of the new graph is prepared, each is offered the live
+  // graph's pass of the same name and type. Resources whose description did not change
+  // are handed over with their contents, so a pass that caches work in its images (the
+  // shadow atlas) may take over the bookkeeping of what they hold, when it would draw
+  // them the same way (parameters and shaders). Never called for a failed load.
+  virtual void adopt(Pass& previous) { static_cast<void>(previous); }
 };
 
 using PassFactory = std::unique_ptr<Pass> (*)(const fg::PlanPass& pass);
