@@ -139,6 +139,7 @@ class EditRun {
       scene_camera_ = parsed->camera;
       camera_.reset(scene_camera_);
       session_.set_scene(std::move(parsed.value()));
+      session_.set_camera(camera_.camera());  // what picking assumes
     } else {
       session_.set_lights(std::move(parsed.value().lights));
     }
@@ -435,6 +436,7 @@ int run_edit(const EditOptions& options) {
                                          options.validation, options.frames};
     windowed.screenshot = options.out;
     windowed.select = options.select;
+    windowed.frame_log = options.frame_log;
     if (!parse_size(options.size, windowed.width, windowed.height)) {
       std::fprintf(stderr, "antumbra edit: --size must be WxH, got \"%s\"\n", options.size.c_str());
       return kExitUsage;

@@ -23,8 +23,9 @@ struct EditOptions {
   std::string script;
   bool headless = false;
   std::string size = "1280x720";
-  std::string out;     // optional PNG of the last frame
-  std::string select;  // window: the light selected at start
+  std::string out;         // optional PNG of the last frame
+  std::string select;      // window: the light selected at start
+  bool frame_log = false;  // window: a line per presented frame
 };
 
 int run_edit(const EditOptions& options);

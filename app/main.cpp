@@ -82,6 +82,8 @@ int dispatch(int argc, char** argv) {
   edit_cmd->add_option("--script", edit.script, "JSON script of edits and expectations");
   edit_cmd->add_flag("--headless", edit.headless, "No window: run the script offscreen");
   edit_cmd->add_option("--select", edit.select, "Window: the light selected at start (by name)");
+  edit_cmd->add_flag("--frame-log", edit.frame_log,
+                     "Window: print a line per presented frame (for scripts driving it)");
   edit_cmd->add_option("--size", edit.size, "Viewport WxH")->capture_default_str();
   edit_cmd->add_option("--out,--screenshot", edit.out,
                        "PNG of the last frame (windowed: the window as presented, UI included)");

@@ -28,13 +28,26 @@ low_position() {
 cat > "$tmp/input.sh" <<'INPUT'
 #!/usr/bin/env bash
 set -u
-"$1" edit --validation --size 960x540 --scene "$2/scene.json" --graph "$2/graph.json" \
-  > "$2/log.txt" 2>&1 &
+log="$2/log.txt"
+"$1" edit --validation --frame-log --size 960x540 --scene "$2/scene.json" \
+  --graph "$2/graph.json" > "$log" 2>&1 &
 editor=$!
-# Input sent before the first frame would all arrive in one poll: wait for it.
-for _ in $(seq 1 240); do grep -q "first frame presented" "$2/log.txt" && break; sleep 0.5; done
-# Each event in a frame of its own (lavapipe: a few frames a second at this size).
-step() { xdotool "$@"; sleep 1.5; }
+frames() { grep -c '^editor: frame ' "$log"; }
+# Waits (up to 60 s) until `pattern` is in the log.
+wait_for() {
+  for _ in $(seq 1 600); do grep -q "$1" "$log" && return 0; sleep 0.1; done
+  echo "timed out waiting for: $1"
+  return 1
+}
+# Each event, then two whole frames: the frame that polled it has finished with it.
+step() {
+  local before
+  before=$(frames)
+  xdotool "$@"
+  for _ in $(seq 1 600); do [ "$(frames)" -ge $((before + 2)) ] && return 0; sleep 0.1; done
+  echo "timed out after: xdotool $*"
+}
+wait_for "first frame presented"
 step mousemove 480 465
 step mousedown 1
 step mousemove 530 465
@@ -47,9 +60,9 @@ step key ctrl+s
 cp "$2/scene.json" "$2/after-undo.json"
 # Resizing (no window manager under Xvfb: X resizes directly): the graph follows.
 xdotool search --name "antumbra edit" windowsize 800 450
-sleep 4
-step key ctrl+q
-for _ in $(seq 1 60); do kill -0 $editor 2>/dev/null || break; sleep 0.5; done
+wait_for "graph resized to 800x450"
+xdotool key ctrl+q  # no frames follow: the editor closes
+for _ in $(seq 1 600); do kill -0 $editor 2>/dev/null || break; sleep 0.1; done
 kill $editor 2>/dev/null && echo "the editor did not close on Ctrl+Q"
 wait $editor
 echo "editor exit $?"

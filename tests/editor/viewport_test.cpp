@@ -160,16 +160,47 @@ TEST(Viewport, AVerticalDragChangesHeightFacingTheCamera) {
   EXPECT_GT(moved->y, light.y);
   EXPECT_NEAR(moved->z, light.z, 1e-4f);  // stays on the plane facing the camera
   EXPECT_NEAR(moved->x, light.x, 1e-4f);
-  // Looking straight down the upright plane is edge-on: cursor motion maps onto it.
+  // Looking steeply down (the navigation camera stops at 89 degrees) the upright plane
+  // is edge-on: cursor motion maps onto it, and up on screen is still up.
+  for (const float pitch_pixels : {1000.0f, 300.0f}) {  // to the 89 degree clamp; ~86 degrees
+    scene::Camera level;
+    level.position = {0.0f, 10.0f, 0.0f};
+    level.target = {0.0f, 10.0f, -1.0f};
+    ViewportCamera view(level);
+    view.look({0.0f, pitch_pixels});  // mouse down: look down
+    ASSERT_LT(view.camera().forward().y, -0.98f);
+    const glm::vec3 below{0.0f, 0.0f, 0.0f};
+    const glm::vec2 grab = *project(view.camera(), kImage, below);
+    const LightDrag steep(below, view.camera(), kImage, grab, DragPlane::vertical);
+    EXPECT_FALSE(steep.follows_cursor_ray());
+    expect_near(*steep.update(grab), below, 1e-6f);
+    EXPECT_GT(steep.update(grab + glm::vec2(0.0f, -20.0f))->y, 0.0f) << "up on screen is up";
+    const glm::vec3 right = *steep.update(grab + glm::vec2(20.0f, 0.0f));
+    EXPECT_GT(right.x, 0.0f);  // the camera looks down -Z: its right is +X
+    EXPECT_TRUE(std::isfinite(right.y) && std::isfinite(right.z));
+  }
+  // A file camera straight down, its `up` saying where the top of the image is.
   scene::Camera down;
   down.position = {0.0f, 10.0f, 0.0f};
   down.target = {0.0f, 0.0f, 0.0f};
   down.up = {0.0f, 0.0f, -1.0f};
   const glm::vec2 centre = glm::vec2(kImage) * 0.5f;
-  const LightDrag from_above({0.0f, 0.0f, 0.0f}, down, kImage, centre, DragPlane::vertical);
-  EXPECT_FALSE(from_above.follows_cursor_ray());
-  expect_near(*from_above.update(centre), {0.0f, 0.0f, 0.0f}, 1e-6f);
-  EXPECT_GT(from_above.update(centre + glm::vec2(0.0f, -20.0f))->y, 0.0f);  // up is up
+  const LightDrag from_above({0.0f, 0.0f, 0.0f}, down, kImage, centre, DragPlane::horizontal);
+  const glm::vec3 up_on_screen = *from_above.update(centre + glm::vec2(0.0f, -20.0f));
+  EXPECT_LT(up_on_screen.z, 0.0f) << "the top of the image faces -Z";
+  EXPECT_TRUE(std::isfinite(up_on_screen.x));
+}
+
+TEST(Viewport, AStraightDownFileCameraKeepsItsHeading) {
+  scene::Camera down;
+  down.position = {0.0f, 10.0f, 0.0f};
+  down.target = {0.0f, 0.0f, 0.0f};
+  down.up = {1.0f, 0.0f, 0.0f};  // the top of the image faces +X
+  const ViewportCamera view(down);
+  const glm::vec3 forward = view.camera().forward();
+  EXPECT_LT(forward.y, -0.99f);
+  EXPECT_GT(forward.x, 0.0f) << "tilted towards the image's top, not an arbitrary side";
+  EXPECT_NEAR(forward.z, 0.0f, 1e-5f);
 }
 
 TEST(Viewport, AHorizontalDragAtEyeHeightFollowsTheCursorOnScreen) {
@@ -260,6 +291,9 @@ TEST(Viewport, OrbitingKeepsThePivotAndItsDistance) {
   EXPECT_NEAR(glm::distance(view.camera().position, light), distance * 0.85f, 1e-3f);
   view.dolly(100.0f);
   EXPECT_NEAR(view.distance(), 0.05f, 1e-6f);  // never through the pivot
+  view.dolly(-10000.0f);
+  EXPECT_LE(view.distance(), view.camera().far);  // never to infinity
+  EXPECT_TRUE(std::isfinite(view.camera().position.x));
   view.reset(looking_down_minus_z());
   expect_near(view.camera().target, {0.0f, 2.0f, 0.0f}, 1e-4f);
 }

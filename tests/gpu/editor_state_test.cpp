@@ -143,6 +143,9 @@ TEST_F(EditorStateGpu, FilesChangedOnDiskReloadAsTransactions) {
   poll_after_change(*state, graph);
   EXPECT_FALSE(state->diagnostics().has_errors());
   EXPECT_NE(state->reload_summary().find("reloaded in"), std::string::npos);
+  session->render(1, nullptr);
+  state->frame_presented();  // the latency the editor shows: file seen -> new frame
+  EXPECT_NE(state->message().find("file seen -> new frame"), std::string::npos) << state->message();
   // A scene edited by another tool replaces the document; the view stays where it was.
   editor::ViewportCamera camera = state->camera();
   camera.move({0.0f, 0.0f, 1.0f}, 2.0f);

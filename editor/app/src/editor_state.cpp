@@ -32,6 +32,7 @@ bool EditorState::start() {
   scene_camera_ = parsed->camera;
   camera_.reset(scene_camera_);
   session_.set_scene(std::move(parsed.value()));
+  session_.set_camera(camera_.camera());  // what picking and overlays assume
   status_.set_cap(graph_cap());
   status_.update(scene_);
   watch_files();
@@ -51,6 +52,7 @@ void EditorState::poll_files() {
   since_poll_.restart();
   const auto changed = watcher_.poll();
   if (changed.empty()) return;
+  since_change_.emplace();
   bool shaders = false;
   for (const auto& path : changed) {
     if (path == scene_.file()) {
@@ -68,6 +70,19 @@ void EditorState::poll_files() {
                    : "shader change reloaded";
   }
   watch_files();  // the graph's shader set may have changed
+}
+
+void EditorState::frame_presented() {
+  if (!since_change_) return;
+  char ms[32];
+  std::snprintf(ms, sizeof ms, "%.1f ms", since_change_->elapsed_ms());
+  since_change_.reset();
+  message_ += std::string(" (file seen -> new frame ") + ms + ")";
+  std::printf("editor: %s; graph: %s\n", message_.c_str(), reload_summary_.c_str());
+  for (const auto& d : diagnostics_) {
+    if (d.severity != fg::Severity::note) std::printf("  %s\n", fg::format_text(d).c_str());
+  }
+  std::fflush(stdout);
 }
 
 void EditorState::reload_scene_file() {
@@ -257,17 +272,25 @@ void EditorState::reload_graph() {
   status_.set_cap(graph_cap());
 }
 
-void EditorState::resize(VkExtent2D extent) {
-  if (extent.width == 0 || extent.height == 0) return;
+bool EditorState::resize(VkExtent2D extent) {
+  if (extent.width == 0 || extent.height == 0) return false;
   const VkExtent2D previous = session_.viewport();
   session_.set_viewport(extent);
   reload_graph();
-  if (diagnostics_.has_errors()) {  // e.g. too large for the device: keep the old size
-    message_ = "cannot render at " + std::to_string(extent.width) + "x" +
-               std::to_string(extent.height) + "; the graph stays at its size";
-    session_.set_viewport(previous);
-    reload_graph();
+  if (!diagnostics_.has_errors()) return true;
+  // Whatever refused it (a device limit, a shader broken on disk meanwhile): say it.
+  std::string why = "unknown";
+  for (const auto& d : diagnostics_) {
+    if (d.severity == fg::Severity::error) {
+      why = fg::format_text(d);
+      break;
+    }
   }
+  message_ = "cannot render at " + std::to_string(extent.width) + "x" +
+             std::to_string(extent.height) + " (" + why + "); the graph stays at its size";
+  session_.set_viewport(previous);
+  reload_graph();
+  return false;
 }
 
 void EditorState::set_view_resource(const std::string& resource) {

@@ -5,6 +5,7 @@
 // edit reaches the GPU and the layer report before the next frame is rendered.
 
 #include <chrono>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -66,13 +67,18 @@ class EditorState {
   [[nodiscard]] std::string shown_resource() const;  // the resource being shown now
 
   // The graph renders at the window's size: a new size reallocates its images (a reload).
-  void resize(VkExtent2D extent);
+  // False (and message()) when the graph cannot be realised at that size: it stays at
+  // the old one.
+  bool resize(VkExtent2D extent);
 
   // Live reload: the graph, the scene and every shader on disk, polled a few times a
   // second. A changed shader reloads the graph (the last good pipelines stay on error);
   // a changed graph or scene file replaces its document unless it has unsaved edits,
   // which win (the file is not lost: a save overwrites it only when asked).
   void poll_files();
+  // Call after each presented frame: a reload from disk is timed from the poll that saw
+  // the change to this frame, added to message() (the status bar) and printed to the log.
+  void frame_presented();
 
   [[nodiscard]] bool dirty() const { return scene_.dirty() || graph_.dirty(); }
   bool save();  // atomic, both documents; false (and message()) when it failed
@@ -115,6 +121,7 @@ class EditorState {
   std::vector<app::PassTiming> timings_;
   watch::FileWatcher watcher_;
   gpu::CpuTimer since_poll_;
+  std::optional<gpu::CpuTimer> since_change_;  // a change seen on disk, not yet on screen
 };
 
 }  // namespace antumbra::editor_app

@@ -17,7 +17,7 @@ namespace {
 constexpr float kFlySpeed = 4.0f;  // metres per second; Shift x4
 constexpr ImU32 kSelectedColour = IM_COL32(255, 255, 255, 255);
 constexpr const char* kHelp =
-    "RMB+WASD/QE fly  Alt+LMB/MMB orbit  wheel dolly  F focus  Home reset  "
+    "RMB look  WASD/QE move  Alt+LMB/MMB orbit  wheel dolly  F focus  Home reset  "
     "LMB pick/drag light (Shift: height)";
 
 // ImGui works in window coordinates, the swapchain in framebuffer pixels.
@@ -59,6 +59,7 @@ void ViewportView::update(EditorState& state, const std::vector<KeyPress>& press
 
 void ViewportView::navigate(EditorState& state, const std::vector<KeyPress>& presses,
                             bool over_image) {
+  if (drag_) return;  // the drag maps the cursor through the view it started in
   const ImGuiIO& io = ImGui::GetIO();
   editor::ViewportCamera camera = state.camera();
   bool changed = false;
@@ -177,7 +178,9 @@ void ViewportView::draw_overlays(EditorState& state, glm::ivec2 view, const edit
     const auto projected = editor::project(camera, view, light.position, &depth);
     if (!projected) continue;
     const ImVec2 centre = to_window(editor::to_target(rect, view, *projected));
-    const float radius = std::clamp(light.size * focal / depth, 4.0f, 14.0f);
+    // The sphere's size on screen (framebuffer pixels) in ImGui's window units.
+    const float scale = std::max(ImGui::GetIO().DisplayFramebufferScale.x, 1e-3f);
+    const float radius = std::clamp(light.size * focal / depth / scale, 4.0f, 14.0f);
     const int layer = i < report.layer.size() ? report.layer[i] : editor::kNoShadowLayer;
     const ImU32 colour = layer_colour(layer);
     draw->AddCircleFilled(centre, radius, with_alpha(colour, 170));

@@ -1,6 +1,6 @@
 #pragma once
 // The 3D viewport's input and overlays. Input the panels do not take drives the
-// navigation camera (right mouse + WASD/QE fly, Alt+left or middle mouse orbit, wheel
+// navigation camera (right mouse looks, WASD/QE move, Alt+left or middle mouse orbit, wheel
 // dolly, F focus on the selected light, Home back to the scene's camera) and the lights
 // (click selects, dragging a light moves it on its horizontal plane, with Shift up and
 // down; one undo step per drag). Overlays on the graph's image: every light's marker in

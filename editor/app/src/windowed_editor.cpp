@@ -88,25 +88,36 @@ glm::ivec2 size_of(VkExtent2D extent) {
 }
 
 // The graph follows the window's size once it has stopped changing for a moment, so a
-// drag of the window's border reallocates the graph's images once, not every frame.
+// drag of the window's border reallocates the graph's images once, not every frame. A
+// size that failed is not retried until the window's size changes again.
 struct PendingResize {
   VkExtent2D extent{0, 0};
+  VkExtent2D failed{0, 0};
   gpu::CpuTimer since;
 };
 
+bool same(VkExtent2D a, VkExtent2D b) {
+  return a.width == b.width && a.height == b.height;
+}
+
 void follow_window_size(EditorState& state, VkExtent2D window, PendingResize& pending) {
   constexpr double kSettleMs = 250.0;
-  const VkExtent2D graph = state.session().viewport();
-  if (window.width == graph.width && window.height == graph.height) return;
-  if (window.width != pending.extent.width || window.height != pending.extent.height) {
+  if (same(window, state.session().viewport()) || same(window, pending.failed)) return;
+  if (!same(window, pending.extent)) {
     pending.extent = window;
     pending.since.restart();
     return;
   }
   if (pending.since.elapsed_ms() < kSettleMs) return;
-  state.resize(window);
-  std::printf("editor: graph resized to %ux%u (%s)\n", window.width, window.height,
-              state.reload_summary().c_str());
+  if (state.resize(window)) {
+    pending.failed = {0, 0};
+    std::printf("editor: graph resized to %ux%u (%s)\n", window.width, window.height,
+                state.reload_summary().c_str());
+  } else {
+    pending.failed = window;
+    std::printf("editor: %s\n", state.message().c_str());
+  }
+  std::fflush(stdout);
 }
 
 enum class CloseChoice { none, close, cancel };
@@ -265,10 +276,11 @@ int run_windowed_editor(const WindowedOptions& options) {
       }
       ++presented;
       frame_ms.push_back(frame_clock.elapsed_ms());
-      if (presented == 1) {
-        std::printf("editor: first frame presented\n");
-        std::fflush(stdout);  // scripts that drive the window wait for this line
-      }
+      state.frame_presented();
+      if (presented == 1) std::printf("editor: first frame presented\n");
+      if (options.frame_log) std::printf("editor: frame %d\n", presented);
+      // Scripts that drive the window wait for these lines.
+      if (presented == 1 || options.frame_log) std::fflush(stdout);
     }
     state.autosave();
     state.poll_files();

@@ -171,12 +171,22 @@ LightDrag::LightDrag(glm::vec3 light_position, const scene::Camera& camera, glm:
   // Cursor motion at the light's depth, onto the plane's axes.
   const float depth = std::max(glm::dot(start_ - camera.position, forward), camera.near);
   const float metres_per_pixel = depth / focal_pixels(camera, image);
-  const glm::vec3 camera_right = glm::normalize(glm::cross(forward, kWorldUp));
-  glm::vec3 a = camera_right - normal_ * glm::dot(camera_right, normal_);
+  // The camera's right and the direction that is up on screen, from its own `up` (a
+  // camera looking straight down has no right from the world's up).
+  glm::vec3 right = glm::cross(forward, camera.up);
+  if (glm::length(right) < 1e-6f) right = glm::cross(forward, glm::vec3(0.0f, 0.0f, -1.0f));
+  right = glm::normalize(right);
+  const glm::vec3 screen_up = glm::cross(right, forward);
+  glm::vec3 a = right - normal_ * glm::dot(right, normal_);
   a = glm::length(a) > 1e-3f ? glm::normalize(a) : glm::normalize(glm::cross(normal_, forward));
-  glm::vec3 b = glm::cross(normal_, a);
-  const glm::vec3 camera_up = glm::cross(camera_right, forward);
-  if (glm::dot(b, camera_up + forward) < 0.0f) b = -b;  // up on screen: away, or up
+  // Up on screen moves the light up (vertical plane) or away from the camera (horizontal).
+  glm::vec3 b = kWorldUp;
+  if (plane == DragPlane::horizontal) {
+    const glm::vec3 away(forward.x, 0.0f, forward.z);
+    const glm::vec3 top(screen_up.x, 0.0f, screen_up.z);
+    b = glm::normalize(glm::length(away) > 1e-3f ? away : top);
+  }
+  max_step_ = camera.far;
   right_axis_ = a * metres_per_pixel;
   up_axis_ = b * (metres_per_pixel / std::max(sine, 0.25f));
 }
@@ -186,6 +196,7 @@ std::optional<glm::vec3> LightDrag::update(glm::vec2 pixel) const {
   if (edge_on_) {
     const glm::vec2 delta = pixel - grab_pixel_;
     position = start_ + right_axis_ * delta.x - up_axis_ * delta.y;  // image y points down
+    if (glm::distance(position, start_) > max_step_) return std::nullopt;
   } else {
     const auto hit =
         intersect_plane(ray_through(camera_, image_, pixel), start_, normal_, camera_.far);
@@ -235,7 +246,10 @@ void ViewportCamera::reset(const scene::Camera& start) {
   distance_ = std::max(glm::length(offset), kMinDistance);
   const glm::vec3 f =
       glm::length(offset) > 0.0f ? offset / glm::length(offset) : glm::vec3(0.0f, 0.0f, -1.0f);
-  yaw_ = std::atan2(f.x, -f.z);
+  // Straight down (or up) the view has no horizontal direction: the file's `up` says
+  // which way the top of the image faces.
+  const glm::vec3 heading = std::abs(f.y) > 0.999f ? start.up * (f.y < 0.0f ? 1.0f : -1.0f) : f;
+  yaw_ = std::atan2(heading.x, -heading.z);
   pitch_ = std::clamp(std::asin(std::clamp(f.y, -1.0f, 1.0f)), -kMaxPitch, kMaxPitch);
   apply();
 }
@@ -269,7 +283,8 @@ void ViewportCamera::orbit(glm::vec2 delta_pixels) {
 
 void ViewportCamera::dolly(float steps) {
   const glm::vec3 pivot = camera_.target;
-  distance_ = std::max(distance_ * std::pow(0.85f, steps), kMinDistance);
+  distance_ =
+      std::clamp(distance_ * std::pow(0.85f, steps), kMinDistance, std::max(camera_.far, 1.0f));
   camera_.position = pivot - direction_of(yaw_, pitch_) * distance_;
   apply();
 }

@@ -16,6 +16,7 @@ struct WindowedOptions {
   unsigned height = 720;
   std::string screenshot;  // PNG of the last presented window image (UI included)
   std::string select;      // a light's name: selected at start (its range sphere shown)
+  bool frame_log = false;  // "editor: frame N" per presented frame, flushed (input scripts)
 };
 
 // Exit codes as the rest of the command line: 0 ok, 1 diagnostics (bad files, or

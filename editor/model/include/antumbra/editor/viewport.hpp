@@ -68,8 +68,9 @@ std::optional<glm::vec3> intersect_plane(const Ray& ray, glm::vec3 plane_point,
 // offset between it and the light's centre is kept for the whole drag. When the plane is
 // seen nearly edge-on (a light at eye height: the cursor would leave the plane at once),
 // the drag maps cursor motion onto the plane's two axes instead: right on screen is the
-// camera's right, up on screen is away from the camera (horizontal) or up (vertical), at
-// the light's depth, the away axis stretched as the plane's foreshortening would.
+// camera's right, up on screen is away from the camera (horizontal) or world up
+// (vertical), at the light's depth, stretched up to 4x as the plane's foreshortening
+// would; never further than the far plane.
 enum class DragPlane { horizontal, vertical };
 
 class LightDrag {
@@ -96,6 +97,7 @@ class LightDrag {
   bool edge_on_ = false;
   glm::vec3 right_axis_{0.0f};  // edge-on mapping: metres per pixel along each axis
   glm::vec3 up_axis_{0.0f};
+  float max_step_ = 0.0f;  // edge-on mapping: no further than the far plane
 };
 
 // Polylines (image pixels) outlining a sphere as the camera sees it: its silhouette
@@ -127,7 +129,7 @@ class ViewportCamera {
   // Orbit: turn the camera about the pivot (the distance to it is kept).
   void orbit(glm::vec2 delta_pixels);
   // Dolly towards (steps > 0) or away from the pivot, by 15 % of the distance per step;
-  // never closer than 0.05 m.
+  // never closer than 0.05 m nor further than the far plane.
   void dolly(float steps);
   // Orbit about a new point (a selected light): the camera turns to face it, staying put.
   void set_pivot(glm::vec3 pivot);
