@@ -99,7 +99,10 @@ class EditRun {
   }
 
   std::size_t light_index(const Json& step) const {
-    const auto name = step.at("light").get<std::string>();
+    return light_named(step.at("light").get<std::string>());
+  }
+
+  std::size_t light_named(const std::string& name) const {
     const int index = scene_.find_light(name);
     if (index < 0) throw StepError{"no light named '" + name + "'"};
     return static_cast<std::size_t>(index);
@@ -269,7 +272,7 @@ class EditRun {
       return *p;
     }
     if (at.is_string()) {
-      const auto index = light_index(Json{{"light", at}});
+      const auto index = light_named(at.get<std::string>());
       const auto p =
           editor::project(camera_.camera(), view_size(), scene_.lights()[index].position);
       if (!p) throw StepError{"'" + at.get<std::string>() + "' is behind the camera"};
@@ -294,7 +297,7 @@ class EditRun {
   void navigate(const Json& step) {
     if (step.value("reset", false)) camera_.reset(scene_camera_);
     if (step.contains("pivot")) {
-      camera_.set_pivot(scene_.lights()[light_index(Json{{"light", step["pivot"]}})].position);
+      camera_.set_pivot(scene_.lights()[light_named(step["pivot"].get<std::string>())].position);
     }
     if (step.contains("orbit")) camera_.orbit(vec2_of(step["orbit"]));
     if (step.contains("look")) camera_.look(vec2_of(step["look"]));

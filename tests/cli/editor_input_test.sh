@@ -11,12 +11,7 @@ antumbra=$1
 source_root=$2
 command -v xvfb-run >/dev/null 2>&1 || { echo "SKIP: xvfb-run is not installed"; exit 77; }
 command -v xdotool >/dev/null 2>&1 || { echo "SKIP: xdotool is not installed"; exit 77; }
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-export ANTUMBRA_CACHE_DIR="$tmp/cache"
-cp "$source_root/tests/data/editor/viewport.json" "$tmp/scene.json"
-sed 's|"../schema/|"'"$source_root"'/data/schema/|' "$source_root/data/graphs/layered-ssss.json" \
-  > "$tmp/graph.json"
+source "$(dirname "$0")/editor_test_setup.sh" "$source_root/tests/data/editor/viewport.json"
 
 # The light's position in a saved scene: "x y z".
 low_position() {

@@ -10,13 +10,7 @@ antumbra=$1
 png_stats=$2
 source_root=$3
 command -v xvfb-run >/dev/null 2>&1 || { echo "SKIP: xvfb-run is not installed"; exit 77; }
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-export ANTUMBRA_CACHE_DIR="$tmp/cache"
-# Copies: the editor writes recovery files beside what it edits, never into the tree.
-cp "$source_root/data/scenes/atrium.json" "$tmp/scene.json"
-sed 's|"../schema/|"'"$source_root"'/data/schema/|' "$source_root/data/graphs/layered-ssss.json" \
-  > "$tmp/graph.json"
+source "$(dirname "$0")/editor_test_setup.sh" "$source_root/data/scenes/atrium.json"
 
 log="$tmp/log.txt"
 start=$(date +%s.%N)

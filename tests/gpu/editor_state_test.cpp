@@ -28,8 +28,7 @@ class EditorStateGpu : public RenderTest {
   // The lamps fixture and layered-ssss with a cap of 3, copied where saves may go.
   std::unique_ptr<EditorState> open(app::RenderSession& session) {
     fs::copy_file(source_dir() / "tests/data/editor/lamps.json", dir_.path() / "scene.json");
-    std::ifstream in(source_dir() / "data/graphs/layered-ssss.json");
-    std::string graph((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::string graph = read(source_dir() / "data/graphs/layered-ssss.json");
     const auto at = graph.find("\"maxLayers\": 4");
     EXPECT_NE(at, std::string::npos);
     graph.replace(at, 14, "\"maxLayers\": 3");
@@ -43,6 +42,11 @@ class EditorStateGpu : public RenderTest {
                                                editor::lookup_in(registry_.reflection()));
     EXPECT_TRUE(state->start());
     return state;
+  }
+
+  static std::string read(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
   }
 
   static void write(const fs::path& file, const std::string& text) {
@@ -131,8 +135,7 @@ TEST_F(EditorStateGpu, FilesChangedOnDiskReloadAsTransactions) {
   OPEN_SESSION(session, {64, 36});
   auto state = open(*session);
   const fs::path graph = dir_.path() / "graph.json";
-  std::ifstream in(graph);
-  const std::string good((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string good = read(graph);
   write(graph, "{ \"version\": 1,\n  \"passes\": [");
   poll_after_change(*state, graph);
   EXPECT_TRUE(state->diagnostics().has_errors());
@@ -151,8 +154,7 @@ TEST_F(EditorStateGpu, FilesChangedOnDiskReloadAsTransactions) {
   camera.move({0.0f, 0.0f, 1.0f}, 2.0f);
   state->set_camera(camera);
   const fs::path scene = dir_.path() / "scene.json";
-  std::ifstream scene_in(scene);
-  std::string text((std::istreambuf_iterator<char>(scene_in)), std::istreambuf_iterator<char>());
+  std::string text = read(scene);
   const auto at = text.find("\"lamp d\"");
   ASSERT_NE(at, std::string::npos);
   text.replace(at, 8, "\"lamp z\"");

@@ -161,8 +161,7 @@ void ViewportView::draw_overlays(EditorState& state, glm::ivec2 view, const edit
     if (!p) return std::nullopt;
     return to_window(editor::to_target(rect, view, *p));
   };
-  const float focal =
-      0.5f * static_cast<float>(rect.height) / std::tan(glm::radians(camera.fov_y_degrees) * 0.5f);
+  const float focal = editor::focal_pixels(camera, {rect.width, rect.height});
   // A warning's conflicting pairs: why the layout needs more layers than the cap.
   for (const auto& edge : report.edges) {
     if (!edge.witness || edge.a >= lights.size() || edge.b >= lights.size()) continue;

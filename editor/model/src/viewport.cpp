@@ -21,11 +21,6 @@ glm::vec3 direction_of(float yaw, float pitch) {
   return {std::cos(pitch) * std::sin(yaw), std::sin(pitch), -std::cos(pitch) * std::cos(yaw)};
 }
 
-// A focal length in pixels: how many pixels one metre covers at one metre of depth.
-float focal_pixels(const scene::Camera& camera, glm::ivec2 image) {
-  return 0.5f * static_cast<float>(image.y) / std::tan(glm::radians(camera.fov_y_degrees) * 0.5f);
-}
-
 // A closed world-space loop to image polylines, cut where it passes behind the near plane.
 void add_loop(const scene::Camera& camera, glm::ivec2 image, const std::vector<glm::vec3>& loop,
               std::vector<std::vector<glm::vec2>>& out) {
@@ -65,6 +60,10 @@ void add_loop(const scene::Camera& camera, glm::ivec2 image, const std::vector<g
 }
 
 }  // namespace
+
+float focal_pixels(const scene::Camera& camera, glm::ivec2 image) {
+  return 0.5f * static_cast<float>(image.y) / std::tan(glm::radians(camera.fov_y_degrees) * 0.5f);
+}
 
 PixelRect letterbox(glm::ivec2 image, glm::ivec2 target) {
   const double scale = std::min(static_cast<double>(target.x) / std::max(image.x, 1),

@@ -49,6 +49,9 @@ Ray ray_through(const scene::Camera& camera, glm::ivec2 image, glm::vec2 pixel);
 std::optional<glm::vec2> project(const scene::Camera& camera, glm::ivec2 image, glm::vec3 point,
                                  float* view_depth = nullptr);
 
+// How many image pixels one metre covers at one metre of depth (vertical focal length).
+float focal_pixels(const scene::Camera& camera, glm::ivec2 image);
+
 // The light under a pixel. Where the pixel is inside lights' own spheres (radius `size`),
 // the nearest of them to the camera; else, within the markers that keep small lights
 // clickable (at least `min_radius_px` on screen), the one whose centre is closest.
