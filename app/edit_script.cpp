@@ -8,6 +8,8 @@
 #include <sstream>
 #include <vector>
 
+#include "antumbra/editor/edit_script_check.hpp"
+#include "antumbra/editor/editor_codes.hpp"
 #include "antumbra/editor/fix_suggestion.hpp"
 #include "antumbra/editor/graph_document.hpp"
 #include "antumbra/editor/layer_status.hpp"
@@ -140,6 +142,7 @@ class EditRun {
     }
     if (upload_geometry) {
       scene_camera_ = parsed->camera;
+      drag_limit_ = editor::drag_limit(parsed.value());
       camera_.reset(scene_camera_);
       session_.set_scene(std::move(parsed.value()));
       session_.set_camera(camera_.camera());  // what picking assumes
@@ -310,7 +313,9 @@ class EditRun {
     render(1);
   }
 
-  // Press on a light, move in `steps` increments, release: one undoable gesture.
+  // Press on a light, move in `steps` increments, release: one undoable gesture. The
+  // grabbed point must end under the cursor: within a pixel of `to` on screen and, for
+  // {"over": P}, within `tolerance` metres (default 0.05) of P.
   void viewport_drag(const Json& step) {
     const int hit = pick(step.at("from"));
     if (hit < 0) throw StepError{"no light under the cursor where the drag starts"};
@@ -324,7 +329,9 @@ class EditRun {
     }
     const editor::LightDrag drag(
         scene_.lights()[index].position, camera_.camera(), view_size(), from,
-        plane == "vertical" ? editor::DragPlane::vertical : editor::DragPlane::horizontal);
+        plane == "vertical" ? editor::DragPlane::vertical : editor::DragPlane::horizontal,
+        drag_limit_);
+    std::printf("  %s\n", drag.describe().c_str());
     const int steps = std::max(1, step.value("steps", 4));
     scene_.begin_gesture();
     for (int i = 1; i <= steps; ++i) {
@@ -341,6 +348,40 @@ class EditRun {
     const glm::vec3 p = scene_.lights()[index].position;
     std::printf("  dragged '%s' to (%.3f, %.3f, %.3f)\n", scene_.lights()[index].name.c_str(), p.x,
                 p.y, p.z);
+    check_drag_landed(step, drag, p, to);
+  }
+
+  void check_drag_landed(const Json& step, const editor::LightDrag& drag, glm::vec3 position,
+                         glm::vec2 to) const {
+    char text[320];
+    const glm::vec3 grabbed = position - drag.offset();
+    const auto on_screen = editor::project(camera_.camera(), view_size(), grabbed);
+    if (!on_screen || glm::distance(*on_screen, to) > 1.0f) {
+      std::snprintf(text, sizeof text,
+                    "the light did not end under the cursor: it is at (%.3f, %.3f, %.3f), %s; "
+                    "the cursor's ray leaves the %s plane or the drag's limits "
+                    "(far plane, %.1f m from its start)",
+                    position.x, position.y, position.z,
+                    on_screen ? ("on screen " + std::to_string(glm::distance(*on_screen, to)) +
+                                 " px from the cursor")
+                                    .c_str()
+                              : "behind the camera",
+                    std::string(editor::to_string(drag.plane())).c_str(), drag_limit_);
+      throw StepError{text};
+    }
+    const Json& target = step.at("to");
+    if (!target.is_object() || !target.contains("over")) return;
+    const glm::vec3 want = vec3_of(target["over"]);
+    const float tolerance = step.value("tolerance", 0.05f);
+    const float miss = glm::distance(grabbed, want);
+    if (miss > tolerance) {
+      std::snprintf(text, sizeof text,
+                    "the light ended at (%.3f, %.3f, %.3f), %.3f m from the target (tolerance "
+                    "%.3f m): the target is not on the %s drag plane",
+                    position.x, position.y, position.z, miss, tolerance,
+                    std::string(editor::to_string(drag.plane())).c_str());
+      throw StepError{text};
+    }
   }
 
   [[nodiscard]] bool frame_reports_layer_warning() const {
@@ -416,6 +457,7 @@ class EditRun {
   fs::path script_dir_;
   editor::ViewportCamera camera_{scene::Camera{}};
   scene::Camera scene_camera_;
+  float drag_limit_ = 1.0f;
   fg::Diagnostics last_reload_;
   bool reload_ok_ = true;
   std::vector<double> frame_ms_;
@@ -470,8 +512,11 @@ int run_edit(const EditOptions& options) {
       print(loaded.diagnostics());
       return kExitDiagnostics;
     }
-    if (!loaded->root().contains("steps") || !loaded->root()["steps"].is_array()) {
-      std::fprintf(stderr, "%s: error: expected {\"steps\": [...]}\n", options.script.c_str());
+    // The whole script before anything runs: a typo fails here, not silently later.
+    const fg::Diagnostics problems = editor::check_edit_script(loaded.value());
+    if (!problems.empty()) {
+      print(problems);
+      std::printf("%zu problem(s) in the script; nothing was run\n", problems.size());
       return kExitDiagnostics;
     }
     script = std::move(loaded.value());
@@ -508,13 +553,14 @@ int run_edit(const EditOptions& options) {
         run.run_step(steps[i]);
       } catch (const StepError& e) {
         ++failures;
-        std::printf("%s:%d:%d: error[ED100]: step %zu failed: %s (at %s)\n", options.script.c_str(),
-                    location.line, location.column, i, e.message.c_str(), pointer.c_str());
+        std::printf("%s:%d:%d: error[%s]: step %zu failed: %s (at %s)\n", options.script.c_str(),
+                    location.line, location.column, editor::codes::kStepFailed, i,
+                    e.message.c_str(), pointer.c_str());
       } catch (const Json::exception& e) {
         ++failures;
-        std::printf("%s:%d:%d: error[ED101]: step %zu is malformed: %s (at %s)\n",
-                    options.script.c_str(), location.line, location.column, i, e.what(),
-                    pointer.c_str());
+        std::printf("%s:%d:%d: error[%s]: step %zu is malformed: %s (at %s)\n",
+                    options.script.c_str(), location.line, location.column,
+                    editor::codes::kScriptMalformed, i, e.what(), pointer.c_str());
       }
       std::fflush(stdout);
     }

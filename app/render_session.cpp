@@ -83,6 +83,7 @@ fg::Diagnostics RenderSession::load_graph(const fg::GraphDesc& graph) {
   if (!plan.ok()) return diagnostics;
   try {
     executor_->load(std::move(plan.value()));
+    live_document_ = graph.document;
   } catch (const fgvk::PassError& e) {
     diagnostics.append(e.diagnostics());
   } catch (const std::runtime_error& e) {
@@ -92,6 +93,26 @@ fg::Diagnostics RenderSession::load_graph(const fg::GraphDesc& graph) {
                      graph.document.file(), "", 0, 0});
   }
   return diagnostics;
+}
+
+fg::Diagnostics RenderSession::frame_diagnostics() const {
+  fg::Diagnostics out;
+  const fg::Plan& plan = executor_->plan();
+  for (const auto& m : report_.messages()) {
+    const fg::PlanPass* pass = plan.find_pass(m.pass);
+    std::string pointer;
+    if (pass != nullptr && pass->source_index >= 0) {
+      pointer = "/passes/" + std::to_string(pass->source_index);
+      const std::string cap = pointer + "/params/maxLayers";
+      if (m.code == "LY001" && live_document_.root().is_object() &&
+          live_document_.root().contains(nlohmann::json::json_pointer(cap))) {
+        pointer = cap;
+      }
+    }
+    out.add(
+        live_document_.make(m.code, m.severity, "pass '" + m.pass + "': " + m.message, pointer));
+  }
+  return out;
 }
 
 void RenderSession::set_scene(scene::Scene scene) {
@@ -162,6 +183,7 @@ std::vector<PassTiming> RenderSession::pass_timings() const {
     PassTiming t{pass.name, pass.type};
     if (auto it = observer_->gpu_ms.find(pass.name); it != observer_->gpu_ms.end()) {
       t.gpu_ms = median(it->second);
+      t.gpu_samples = it->second;
     }
     if (auto it = observer_->cpu_ms.find(pass.name); it != observer_->cpu_ms.end()) {
       t.cpu_ms = median(it->second);

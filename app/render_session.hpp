@@ -35,8 +35,9 @@ struct SessionOptions {
 struct PassTiming {
   std::string name;
   std::string type;
-  double gpu_ms = 0.0;  // median over the timed frames
-  double cpu_ms = 0.0;  // recording time, median
+  double gpu_ms = 0.0;              // median over the timed frames
+  double cpu_ms = 0.0;              // recording time, median
+  std::vector<double> gpu_samples;  // every timed frame, in order (bench's percentiles)
 };
 
 class RenderSession {
@@ -64,6 +65,10 @@ class RenderSession {
   [[nodiscard]] std::vector<PassTiming> pass_timings() const;
   // What the passes reported about the last rendered frame.
   [[nodiscard]] const fgvk::FrameReport& last_report() const { return report_; }
+  // The same messages as diagnostics located in the live graph's file: at the pass that
+  // reported it (a layer-cap warning at the cap, /passes/N/params/maxLayers), so reports
+  // print them like any other diagnostic and JSON reports carry one list.
+  [[nodiscard]] fg::Diagnostics frame_diagnostics() const;
 
   // Writes a graph image to PNG (or PFM when the path ends in .pfm).
   void write_image(const std::string& resource, const std::string& path);
@@ -86,6 +91,7 @@ class RenderSession {
   std::unique_ptr<passes::GpuScene> gpu_scene_;
   std::unique_ptr<Observer> observer_;
   fgvk::FrameReport report_;
+  fg::JsonDocument live_document_;  // the source of the graph that is running
 };
 
 }  // namespace antumbra::app

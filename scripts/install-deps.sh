@@ -8,7 +8,7 @@ packages=(
   glslang-dev glslang-tools spirv-tools
   libglm-dev libtinygltf-dev nlohmann-json3-dev libspdlog-dev libstb-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev libglfw3-dev libimgui-dev
-  xvfb xauth xdotool
+  xvfb xauth xdotool ccache
   assimp-testmodels
 )
 missing=()

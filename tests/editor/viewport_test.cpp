@@ -2,8 +2,11 @@
 // plane, range-sphere outlines and the fly/orbit camera.
 
 #include "antumbra/editor/viewport.hpp"
+#include "antumbra/scene/scene_file.hpp"
 
 #include <cmath>
+#include <optional>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -36,6 +39,15 @@ void expect_near(glm::vec3 a, glm::vec3 b, float tolerance) {
   EXPECT_NEAR(a.x, b.x, tolerance);
   EXPECT_NEAR(a.y, b.y, tolerance);
   EXPECT_NEAR(a.z, b.z, tolerance);
+}
+
+constexpr float kNoLimit = 1e9f;
+
+// A dragged light (grabbed at its centre) is where the cursor points.
+void expect_under_cursor(const scene::Camera& camera, glm::vec3 light, glm::vec2 cursor) {
+  const auto on_screen = project(camera, kImage, light);
+  ASSERT_TRUE(on_screen.has_value());
+  EXPECT_LT(glm::distance(*on_screen, cursor), 0.05f);
 }
 
 TEST(Viewport, LetterboxKeepsTheAspectAndMapsBothWays) {
@@ -130,8 +142,8 @@ TEST(Viewport, AHorizontalDragKeepsTheLightUnderTheCursorAtItsHeight) {
   camera.target = {0.0f, 0.0f, 0.0f};
   const glm::vec3 light{1.0f, 1.5f, -1.0f};
   const glm::vec2 grab_pixel = *project(camera, kImage, light) + glm::vec2(2.0f, -1.0f);
-  const LightDrag drag(light, camera, kImage, grab_pixel, DragPlane::horizontal);
-  ASSERT_TRUE(drag.follows_cursor_ray());
+  const LightDrag drag(light, camera, kImage, grab_pixel, DragPlane::horizontal, kNoLimit);
+  ASSERT_FALSE(drag.switched());
   // Not moving the cursor does not move the light, even though the grab was off-centre.
   expect_near(*drag.update(grab_pixel), light, 1e-4f);
   const glm::vec2 target_pixel = grab_pixel + glm::vec2(40.0f, 25.0f);
@@ -151,17 +163,18 @@ TEST(Viewport, AHorizontalDragKeepsTheLightUnderTheCursorAtItsHeight) {
 
 TEST(Viewport, AVerticalDragChangesHeightFacingTheCamera) {
   const scene::Camera camera = looking_down_minus_z();
-  const glm::vec3 light{0.0f, 2.0f, 0.0f};
+  const glm::vec3 light{0.0f, 2.5f, 0.0f};
   const glm::vec2 at = *project(camera, kImage, light);
-  const LightDrag drag(light, camera, kImage, at, DragPlane::vertical);
-  ASSERT_TRUE(drag.follows_cursor_ray());
+  const LightDrag drag(light, camera, kImage, at, DragPlane::vertical, kNoLimit);
+  ASSERT_FALSE(drag.switched());
   const auto moved = drag.update(at + glm::vec2(0.0f, -30.0f));
   ASSERT_TRUE(moved.has_value());
   EXPECT_GT(moved->y, light.y);
   EXPECT_NEAR(moved->z, light.z, 1e-4f);  // stays on the plane facing the camera
   EXPECT_NEAR(moved->x, light.x, 1e-4f);
+  expect_under_cursor(camera, *moved, at + glm::vec2(0.0f, -30.0f));
   // Looking steeply down (the navigation camera stops at 89 degrees) the upright plane
-  // is edge-on: cursor motion maps onto it, and up on screen is still up.
+  // is edge-on: the drag moves to the horizontal plane and still follows the cursor.
   for (const float pitch_pixels : {1000.0f, 300.0f}) {  // to the 89 degree clamp; ~86 degrees
     scene::Camera level;
     level.position = {0.0f, 10.0f, 0.0f};
@@ -171,13 +184,15 @@ TEST(Viewport, AVerticalDragChangesHeightFacingTheCamera) {
     ASSERT_LT(view.camera().forward().y, -0.98f);
     const glm::vec3 below{0.0f, 0.0f, 0.0f};
     const glm::vec2 grab = *project(view.camera(), kImage, below);
-    const LightDrag steep(below, view.camera(), kImage, grab, DragPlane::vertical);
-    EXPECT_FALSE(steep.follows_cursor_ray());
-    expect_near(*steep.update(grab), below, 1e-6f);
-    EXPECT_GT(steep.update(grab + glm::vec2(0.0f, -20.0f))->y, 0.0f) << "up on screen is up";
-    const glm::vec3 right = *steep.update(grab + glm::vec2(20.0f, 0.0f));
-    EXPECT_GT(right.x, 0.0f);  // the camera looks down -Z: its right is +X
-    EXPECT_TRUE(std::isfinite(right.y) && std::isfinite(right.z));
+    const LightDrag steep(below, view.camera(), kImage, grab, DragPlane::vertical, kNoLimit);
+    if (pitch_pixels > 500.0f) {
+      EXPECT_TRUE(steep.switched());
+      EXPECT_EQ(steep.plane(), DragPlane::horizontal);
+      EXPECT_NE(steep.describe().find("edge-on"), std::string::npos) << steep.describe();
+    }
+    expect_near(*steep.update(grab), below, 1e-4f);
+    const glm::vec2 cursor = grab + glm::vec2(20.0f, -20.0f);
+    expect_under_cursor(view.camera(), *steep.update(cursor), cursor);
   }
   // A file camera straight down, its `up` saying where the top of the image is.
   scene::Camera down;
@@ -185,7 +200,9 @@ TEST(Viewport, AVerticalDragChangesHeightFacingTheCamera) {
   down.target = {0.0f, 0.0f, 0.0f};
   down.up = {0.0f, 0.0f, -1.0f};
   const glm::vec2 centre = glm::vec2(kImage) * 0.5f;
-  const LightDrag from_above({0.0f, 0.0f, 0.0f}, down, kImage, centre, DragPlane::horizontal);
+  const LightDrag from_above({0.0f, 0.0f, 0.0f}, down, kImage, centre, DragPlane::horizontal,
+                             kNoLimit);
+  EXPECT_FALSE(from_above.switched());
   const glm::vec3 up_on_screen = *from_above.update(centre + glm::vec2(0.0f, -20.0f));
   EXPECT_LT(up_on_screen.z, 0.0f) << "the top of the image faces -Z";
   EXPECT_TRUE(std::isfinite(up_on_screen.x));
@@ -203,24 +220,124 @@ TEST(Viewport, AStraightDownFileCameraKeepsItsHeading) {
   EXPECT_NEAR(forward.z, 0.0f, 1e-5f);
 }
 
-TEST(Viewport, AHorizontalDragAtEyeHeightFollowsTheCursorOnScreen) {
-  // The light a little above the eye: its horizontal plane is seen edge-on and a ray
-  // below the horizon never meets it. The drag still moves it, in the right directions.
+TEST(Viewport, AHorizontalDragSlightlyAboveTheEyeFollowsTheCursorRay) {
+  // A grazing plane that is not edge-on: the ray still decides, however far a pixel moves
+  // the light; the old screen-space mapping put the light metres from the cursor here.
   const scene::Camera camera = looking_down_minus_z();  // eye at y = 2
   const glm::vec3 light{1.0f, 2.3f, -6.0f};
   const glm::vec2 at = *project(camera, kImage, light);
-  const LightDrag drag(light, camera, kImage, at, DragPlane::horizontal);
-  EXPECT_FALSE(drag.follows_cursor_ray());
-  expect_near(*drag.update(at), light, 1e-6f);
-  const glm::vec3 right = *drag.update(at + glm::vec2(20.0f, 0.0f));
-  EXPECT_GT(right.x, light.x);
-  EXPECT_EQ(right.y, light.y);
-  EXPECT_NEAR(right.z, light.z, 1e-5f);
-  // 20 px at 16 m depth with a 155.9 px focal length: about 2 m.
-  EXPECT_NEAR(right.x - light.x, 20.0f * 16.0f / 155.88f, 0.05f);
-  const glm::vec3 down = *drag.update(at + glm::vec2(0.0f, 30.0f));
-  EXPECT_GT(down.z, light.z);  // down on screen: towards the camera
-  EXPECT_EQ(down.y, light.y);
+  const LightDrag drag(light, camera, kImage, at, DragPlane::horizontal, kNoLimit);
+  EXPECT_FALSE(drag.switched());
+  expect_near(*drag.update(at), light, 1e-4f);
+  for (const glm::vec3 target : {glm::vec3(-2.0f, 2.3f, -1.0f), glm::vec3(3.0f, 2.3f, 4.0f),
+                                 glm::vec3(0.5f, 2.3f, -20.0f)}) {
+    const glm::vec2 cursor = *project(camera, kImage, target);
+    const auto moved = drag.update(cursor);
+    ASSERT_TRUE(moved.has_value());
+    EXPECT_LT(glm::distance(*moved, target), 0.01f) << target.x << " " << target.z;
+  }
+  // Below the plane's horizon the ray never meets it: the light stays where it was put.
+  EXPECT_FALSE(drag.update(at + glm::vec2(0.0f, 30.0f)).has_value());
+}
+
+TEST(Viewport, AnEdgeOnPlaneIsSwappedForOneThatIsNot) {
+  // The light at eye height: its horizontal plane contains the eye.
+  const scene::Camera camera = looking_down_minus_z();
+  for (const float height : {2.0f, 2.04f, 1.97f}) {
+    const glm::vec3 light{1.0f, height, -6.0f};
+    const glm::vec2 at = *project(camera, kImage, light);
+    const LightDrag drag(light, camera, kImage, at, DragPlane::horizontal, kNoLimit);
+    EXPECT_TRUE(drag.switched()) << height;
+    EXPECT_EQ(drag.plane(), DragPlane::vertical);
+    EXPECT_NE(drag.describe().find("upright"), std::string::npos) << drag.describe();
+    expect_near(*drag.update(at), light, 1e-4f);
+    for (const glm::vec2 step : {glm::vec2(25.0f, 0.0f), glm::vec2(-10.0f, 30.0f)}) {
+      const auto moved = drag.update(at + step);
+      ASSERT_TRUE(moved.has_value());
+      expect_under_cursor(camera, *moved, at + step);
+      EXPECT_NEAR(moved->z, light.z, 1e-3f);  // on the upright plane through the light
+    }
+  }
+}
+
+TEST(Viewport, ADragNeverMovesALightFurtherThanItsLimits) {
+  const scene::Camera camera = looking_down_minus_z();  // eye at y = 2, far 100
+  const glm::vec3 light{0.0f, 2.5f, 0.0f};
+  const glm::vec2 at = *project(camera, kImage, light);
+  const LightDrag drag(light, camera, kImage, at, DragPlane::horizontal, 12.0f);
+  EXPECT_FALSE(drag.switched());
+  // Towards the plane's horizon the hit runs away: within the limit it follows, beyond it
+  // the light stays.
+  float last_distance = 0.0f;
+  int followed = 0;
+  for (float dy = 0.0f; dy < 90.0f; dy += 0.5f) {
+    const auto moved = drag.update(at + glm::vec2(0.0f, dy));
+    if (!moved) continue;
+    ++followed;
+    last_distance = glm::distance(*moved, light);
+    EXPECT_LE(last_distance, 12.0f + 1e-3f);
+  }
+  EXPECT_GT(followed, 3);
+  EXPECT_GT(last_distance, 6.0f);
+  const LightDrag unlimited(light, camera, kImage, at, DragPlane::horizontal, 1e9f);
+  for (float dy = 0.0f; dy < 90.0f; dy += 0.5f) {
+    if (const auto moved = unlimited.update(at + glm::vec2(0.0f, dy))) {
+      EXPECT_LE(glm::distance(camera.position, *moved), camera.far + 1e-2f);
+    }
+  }
+}
+
+TEST(Viewport, TheDragLimitIsTheSceneExtent) {
+  scene::Scene scene;
+  scene.camera.far = 100.0f;
+  scene.bounds.expand(glm::vec3(-15.0f, 0.0f, -7.0f));
+  scene.bounds.expand(glm::vec3(15.0f, 8.0f, 7.0f));
+  EXPECT_NEAR(drag_limit(scene), glm::length(glm::vec3(30.0f, 8.0f, 14.0f)), 1e-3f);
+  scene.lights.push_back(point_light("far", {40.0f, 2.0f, 0.0f}));
+  EXPECT_NEAR(drag_limit(scene), glm::length(glm::vec3(55.0f, 8.0f, 14.0f)), 1e-3f);
+  scene.camera.far = 20.0f;
+  EXPECT_NEAR(drag_limit(scene), 20.0f, 1e-3f);
+  EXPECT_NEAR(drag_limit(scene::Scene{}), 1.0f, 1e-6f);
+}
+
+// The default scene as a new user opens it: every light dragged from the scene's camera
+// to points over the floor at its height lands under the cursor, within 5 cm.
+TEST(Viewport, EveryAtriumLightLandsOverTheFloorWhereItIsDropped) {
+  const auto loaded = scene::load_scene_file(ANTUMBRA_SOURCE_DIR "/data/scenes/atrium.json");
+  ASSERT_TRUE(loaded.ok());
+  const scene::Scene& atrium = loaded.value();
+  const glm::ivec2 image{1280, 720};
+  const ViewportCamera view(atrium.camera);
+  const scene::Camera& camera = view.camera();
+  const float limit = drag_limit(atrium);
+  const auto on_image = [&](const std::optional<glm::vec2>& p) {
+    return p && p->x >= 0.0f && p->y >= 0.0f && p->x <= static_cast<float>(image.x) &&
+           p->y <= static_cast<float>(image.y);
+  };
+  int drags = 0;
+  for (const auto& light : atrium.lights) {
+    if (light.type == scene::LightType::directional) continue;
+    const auto at = project(camera, image, light.position);
+    if (!on_image(at)) continue;
+    for (float x = -13.0f; x <= 13.0f; x += 3.25f) {
+      for (float z = -6.0f; z <= 6.0f; z += 2.0f) {
+        const glm::vec3 target{x, light.position.y, z};
+        const auto cursor = project(camera, image, target);
+        if (!on_image(cursor)) continue;
+        const LightDrag drag(light.position, camera, image, *at, DragPlane::horizontal, limit);
+        ASSERT_FALSE(drag.switched()) << light.name;
+        // The cursor's path in steps, as a hand moves it: every step follows the ray.
+        std::optional<glm::vec3> moved;
+        for (int i = 1; i <= 8; ++i) {
+          moved = drag.update(*at + (*cursor - *at) * (static_cast<float>(i) / 8.0f));
+        }
+        ASSERT_TRUE(moved.has_value()) << light.name << " to " << x << ", " << z;
+        EXPECT_LT(glm::distance(*moved, target), 0.05f) << light.name << " to " << x << ", " << z;
+        ++drags;
+      }
+    }
+  }
+  EXPECT_GT(drags, 200);
 }
 
 TEST(Viewport, TheRangeSilhouetteIsTangentToTheSphere) {

@@ -20,6 +20,7 @@ EditorState::EditorState(app::RenderSession& session, editor::SceneDocument scen
 
 bool EditorState::start() {
   reload_graph();
+  reload_summary_ = "none yet";  // the first load is not a reload
   for (const auto& d : diagnostics_) {
     if (d.severity != fg::Severity::note) std::printf("  %s\n", fg::format_text(d).c_str());
   }
@@ -30,6 +31,7 @@ bool EditorState::start() {
     return false;
   }
   scene_camera_ = parsed->camera;
+  drag_limit_ = editor::drag_limit(parsed.value());
   camera_.reset(scene_camera_);
   session_.set_scene(std::move(parsed.value()));
   session_.set_camera(camera_.camera());  // what picking and overlays assume
@@ -82,6 +84,11 @@ void EditorState::frame_presented() {
   for (const auto& d : diagnostics_) {
     if (d.severity != fg::Severity::note) std::printf("  %s\n", fg::format_text(d).c_str());
   }
+  // What the new frame's passes report (a layer cap that is still too low) is said again
+  // after every reload, not only the first time it appeared.
+  for (const auto& d : session_.frame_diagnostics()) {
+    if (d.severity != fg::Severity::note) std::printf("  %s\n", fg::format_text(d).c_str());
+  }
   std::fflush(stdout);
 }
 
@@ -107,6 +114,7 @@ void EditorState::reload_scene_file() {
   std::erase(redo_order_, DocKind::scene);
   gesture_open_ = false;
   scene_camera_ = parsed->camera;
+  drag_limit_ = editor::drag_limit(parsed.value());
   session_.set_scene(std::move(parsed.value()));
   session_.set_camera(camera_.camera());  // the artist's view stays where it was
   status_.update(scene_);

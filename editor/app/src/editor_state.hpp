@@ -42,6 +42,11 @@ class EditorState {
   [[nodiscard]] const editor::ViewportCamera& camera() const { return camera_; }
   void set_camera(const editor::ViewportCamera& camera);
   void reset_camera();
+  // How far a viewport drag may move a light: the scene's extent (editor::drag_limit).
+  [[nodiscard]] float drag_limit() const { return drag_limit_; }
+  // The status bar's line about the drag in progress (which plane), empty when none.
+  void set_drag_note(std::string note) { drag_note_ = std::move(note); }
+  [[nodiscard]] const std::string& drag_note() const { return drag_note_; }
 
   // Edits. A gesture (a drag, typing into a field) is one undo step however many edits
   // it forwards: open_gesture() when a widget becomes active or a viewport drag starts;
@@ -115,6 +120,8 @@ class EditorState {
   std::string view_resource_;
   editor::ViewportCamera camera_{scene::Camera{}};
   scene::Camera scene_camera_;  // as the scene file has it
+  float drag_limit_ = 1.0f;
+  std::string drag_note_;
   fg::Diagnostics diagnostics_;
   std::string reload_summary_;
   std::string message_;

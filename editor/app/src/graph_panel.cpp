@@ -120,16 +120,20 @@ void draw_passes(EditorState& state) {
     const auto* planned = plan.find_pass(view.name);
     const bool culled = std::find(plan.culled_passes.begin(), plan.culled_passes.end(),
                                   view.name) != plan.culled_passes.end();
-    double ms = 0.0;
+    double ms = -1.0;  // not measured yet (the first frames, or a pass just added)
     for (const auto& t : timings) {
-      if (t.name == view.name) ms = t.gpu_ms;
+      if (t.name == view.name && !t.gpu_samples.empty()) ms = t.gpu_ms;
     }
     std::string title = view.name + " (" + view.type + ")";
     if (planned == nullptr) {
       title += culled ? "  [culled]" : "  [disabled]";
     } else {
       char time[32];
-      std::snprintf(time, sizeof time, "  %.3f ms", ms);
+      if (ms >= 0.0) {
+        std::snprintf(time, sizeof time, "  %.3f ms", ms);
+      } else {
+        std::snprintf(time, sizeof time, "  -- ms");
+      }
       title += time;
     }
     if (planned == nullptr) ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(140, 140, 140, 255));

@@ -62,9 +62,16 @@ ImguiLayer::~ImguiLayer() {
   ImGui::DestroyContext();
 }
 
-void ImguiLayer::begin_frame() {
+void ImguiLayer::begin_frame(Window& window) {
   ImGui_ImplVulkan_NewFrame();
   ImGui_ImplGlfw_NewFrame();
+  // Debian's 1.86 backend keeps one "just pressed" flag per button and reads the cursor
+  // at the frame's start: queued clicks are replayed one per frame at their position.
+  if (const auto mouse = window.next_mouse_event()) {
+    ImGuiIO& io = ImGui::GetIO();
+    for (int b = 0; b < QueuedMouse::kButtons; ++b) io.MouseDown[b] = mouse->down[b];
+    io.MousePos = {static_cast<float>(mouse->x), static_cast<float>(mouse->y)};
+  }
   ImGui::NewFrame();
 }
 

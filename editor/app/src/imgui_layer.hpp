@@ -24,9 +24,9 @@ class ImguiLayer {
   ImguiLayer& operator=(const ImguiLayer&) = delete;
   ~ImguiLayer();
 
-  void begin_frame();              // input, then ImGui::NewFrame()
-  void end_frame();                // ImGui::Render(): the draw data for draw()
-  void draw(VkCommandBuffer cmd);  // inside the swapchain's UI render pass
+  void begin_frame(Window& window);  // input (queued clicks first), then ImGui::NewFrame()
+  void end_frame();                  // ImGui::Render(): the draw data for draw()
+  void draw(VkCommandBuffer cmd);    // inside the swapchain's UI render pass
 
  private:
   gpu::Context& gpu_;

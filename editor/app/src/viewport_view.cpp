@@ -50,7 +50,7 @@ void ViewportView::update(EditorState& state, const std::vector<KeyPress>& press
   const glm::vec2 mouse_image = editor::to_image(rect, view, mouse_fb);
   navigate(state, presses, over_image);
   if (!camera_image) {
-    drag_.reset();  // an atlas on screen: nothing to pick or drag
+    end_drag(state);  // an atlas on screen: nothing to pick or drag
     return;
   }
   edit_lights(state, view, mouse_image, over_image);
@@ -126,24 +126,32 @@ void ViewportView::edit_lights(EditorState& state, glm::ivec2 view, glm::vec2 mo
     if (hit >= 0) {
       const auto plane = io.KeyShift ? editor::DragPlane::vertical : editor::DragPlane::horizontal;
       drag_.emplace(scene.lights()[static_cast<std::size_t>(hit)].position, camera, view,
-                    mouse_image, plane);
+                    mouse_image, plane, state.drag_limit());
       drag_light_ = hit;
       state.open_gesture(DocKind::scene);
+      state.set_drag_note(drag_->describe());
     }
   }
   if (!drag_) return;
   // Undo, a reload from disk or a delete may have taken the light away mid-drag.
-  if (!ImGui::IsMouseDown(ImGuiMouseButton_Left) || !state.gesture_open() ||
-      drag_light_ >= static_cast<int>(scene.lights().size())) {
-    drag_.reset();
+  if (!state.gesture_open() || drag_light_ >= static_cast<int>(scene.lights().size())) {
+    end_drag(state);
     return;
   }
+  // The release frame still moves the light: a press and release replayed from the
+  // queue carry the cursor to where the button came up.
   const auto index = static_cast<std::size_t>(drag_light_);
   if (const auto position = drag_->update(mouse_image)) {
     if (*position != scene.lights()[index].position) {
       state.scene_edited(scene.set_position(index, *position));
     }
   }
+  if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) end_drag(state);
+}
+
+void ViewportView::end_drag(EditorState& state) {
+  drag_.reset();
+  state.set_drag_note({});
 }
 
 void ViewportView::draw_overlays(EditorState& state, glm::ivec2 view, const editor::PixelRect& rect,

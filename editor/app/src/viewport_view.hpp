@@ -32,6 +32,7 @@ class ViewportView {
  private:
   void navigate(EditorState& state, const std::vector<KeyPress>& presses, bool over_image);
   void edit_lights(EditorState& state, glm::ivec2 view, glm::vec2 mouse_image, bool over_image);
+  void end_drag(EditorState& state);
   void draw_overlays(EditorState& state, glm::ivec2 view, const editor::PixelRect& rect,
                      glm::vec2 mouse_image, bool over_image);
 

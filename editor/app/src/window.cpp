@@ -51,6 +51,31 @@ Window::Window(int width, int height, const std::string& title) {
   }
   glfwSetWindowUserPointer(window_, this);
   glfwSetKeyCallback(window_, &Window::on_key);
+  glfwSetMouseButtonCallback(window_, &Window::on_mouse_button);
+}
+
+void Window::on_mouse_button(GLFWwindow* window, int button, int action, int /*mods*/) {
+  auto* self = static_cast<Window*>(glfwGetWindowUserPointer(window));
+  if (self == nullptr || button < 0 || button >= QueuedMouse::kButtons) return;
+  MouseButtonEvent event{button, action == GLFW_PRESS, 0.0, 0.0};
+  glfwGetCursorPos(window, &event.x, &event.y);
+  self->mouse_events_.push_back(event);
+}
+
+std::optional<QueuedMouse> Window::next_mouse_event() {
+  if (mouse_events_.empty()) {
+    // Caught up: the live state is what was last delivered.
+    for (int b = 0; b < QueuedMouse::kButtons; ++b) {
+      shown_mouse_.down[b] = glfwGetMouseButton(window_, b) == GLFW_PRESS;
+    }
+    return std::nullopt;
+  }
+  const MouseButtonEvent event = mouse_events_.front();
+  mouse_events_.pop_front();
+  shown_mouse_.down[event.button] = event.pressed;
+  shown_mouse_.x = event.x;
+  shown_mouse_.y = event.y;
+  return shown_mouse_;
 }
 
 void Window::on_key(GLFWwindow* window, int key, int /*scancode*/, int action, int mods) {

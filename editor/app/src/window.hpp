@@ -3,6 +3,8 @@
 // GLFW is initialised once per Window; the surface belongs to the instance, so it must
 // be destroyed before the gpu::Context that owns the instance.
 
+#include <deque>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -16,6 +18,24 @@ namespace antumbra::editor_app {
 struct KeyPress {
   int key = 0;
   int mods = 0;
+};
+
+// A mouse button going down or up, where the cursor was then (window coordinates).
+struct MouseButtonEvent {
+  int button = 0;
+  bool pressed = false;
+  double x = 0.0;
+  double y = 0.0;
+};
+
+// The mouse state a frame shows ImGui when queued button events are pending: one event a
+// frame, so a click whose press and release (or two clicks) fall between two frames at a
+// few frames per second on lavapipe is seen as a click, at the place it happened.
+struct QueuedMouse {
+  static constexpr int kButtons = 5;
+  bool down[kButtons] = {};
+  double x = 0.0;
+  double y = 0.0;
 };
 
 class Window {
@@ -42,12 +62,18 @@ class Window {
   // (easy at a few frames per second on lavapipe) is still here, where a per-frame
   // "is it down" test misses it. Registered before ImGui's backend, which chains to it.
   [[nodiscard]] std::vector<KeyPress> take_key_presses();
+  // The next queued mouse button event applied to the buttons' state as last shown;
+  // nullopt when none is pending (the live state is current).
+  [[nodiscard]] std::optional<QueuedMouse> next_mouse_event();
 
  private:
   static void on_key(GLFWwindow* window, int key, int scancode, int action, int mods);
+  static void on_mouse_button(GLFWwindow* window, int button, int action, int mods);
 
   GLFWwindow* window_ = nullptr;
   std::vector<KeyPress> presses_;
+  std::deque<MouseButtonEvent> mouse_events_;
+  QueuedMouse shown_mouse_;  // the buttons as ImGui last saw them through the queue
 };
 
 // The window's VkSurfaceKHR, destroyed with the object (before the instance goes).

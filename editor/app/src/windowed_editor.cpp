@@ -79,7 +79,8 @@ void draw_status_bar(EditorState& state) {
   ImGui::SameLine();
   if (ImGui::SmallButton("Save")) state.save();
   ImGui::SameLine();
-  ImGui::Text("%s %s", state.dirty() ? "unsaved changes." : "", state.message().c_str());
+  ImGui::Text("%s %s", state.dirty() ? "unsaved changes." : "",
+              state.drag_note().empty() ? state.message().c_str() : state.drag_note().c_str());
   ImGui::End();
 }
 
@@ -236,7 +237,7 @@ int run_windowed_editor(const WindowedOptions& options) {
     paused = false;
     follow_window_size(state, presenter.swapchain().extent(), resize);
     gpu::CpuTimer frame_clock;
-    ui.begin_frame();
+    ui.begin_frame(*window);
     const std::vector<KeyPress> presses = window->take_key_presses();
     handle_shortcuts(state, presses, *window);
     {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 #include <glm/gtc/constants.hpp>
@@ -145,65 +146,102 @@ std::optional<glm::vec3> intersect_plane(const Ray& ray, glm::vec3 plane_point,
   return ray.origin + ray.direction * t;
 }
 
+std::string_view to_string(DragPlane plane) {
+  switch (plane) {
+    case DragPlane::horizontal:
+      return "horizontal";
+    case DragPlane::vertical:
+      return "vertical";
+    case DragPlane::facing:
+      return "facing";
+  }
+  return "?";
+}
+
+namespace {
+
+glm::vec3 normal_of(DragPlane plane, const scene::Camera& camera, glm::vec3 grab_direction) {
+  if (plane == DragPlane::horizontal) return kWorldUp;
+  if (plane == DragPlane::facing) return -grab_direction;
+  const glm::vec3 forward = camera.forward();
+  const glm::vec2 flat(forward.x, forward.z);
+  // Straight down the view has no horizontal direction: the upright plane is then
+  // edge-on whichever way it faces, and the drag moves on.
+  return glm::length(flat) > 1e-6f ? glm::normalize(glm::vec3(flat.x, 0.0f, flat.y))
+                                   : glm::vec3(0.0f, 0.0f, 1.0f);
+}
+
+// The planes to try, best first: the one asked for, the other upright one, then facing.
+std::vector<DragPlane> plane_order(DragPlane requested) {
+  if (requested == DragPlane::vertical) {
+    return {DragPlane::vertical, DragPlane::horizontal, DragPlane::facing};
+  }
+  if (requested == DragPlane::facing) return {DragPlane::facing};
+  return {DragPlane::horizontal, DragPlane::vertical, DragPlane::facing};
+}
+
+}  // namespace
+
 LightDrag::LightDrag(glm::vec3 light_position, const scene::Camera& camera, glm::ivec2 image,
-                     glm::vec2 grab_pixel, DragPlane plane)
+                     glm::vec2 grab_pixel, DragPlane requested, float max_move)
     : camera_(camera),
       image_(image),
-      grab_pixel_(grab_pixel),
       start_(light_position),
-      normal_(kWorldUp),
-      plane_(plane) {
-  const glm::vec3 forward = camera.forward();
-  if (plane == DragPlane::vertical) {
-    const glm::vec2 flat(forward.x, forward.z);
-    normal_ = glm::length(flat) > 1e-3f ? glm::normalize(glm::vec3(flat.x, 0.0f, flat.y))
-                                        : glm::vec3(0.0f, 0.0f, 1.0f);
-  }
+      requested_(requested),
+      plane_(requested),
+      max_move_(std::max(max_move, 0.0f)) {
   const Ray grab = ray_through(camera, image, grab_pixel);
-  const float sine = std::abs(glm::dot(grab.direction, normal_));
-  const auto hit = intersect_plane(grab, start_, normal_, camera.far);
-  edge_on_ = sine < kGrazingSine || !hit;
-  if (!edge_on_) {
-    offset_ = start_ - *hit;
+  for (const DragPlane candidate : plane_order(requested)) {
+    const glm::vec3 normal = normal_of(candidate, camera, grab.direction);
+    const auto hit = intersect_plane(grab, start_, normal, std::numeric_limits<float>::max());
+    const bool edge_on = std::abs(glm::dot(grab.direction, normal)) < kGrazingSine;
+    if ((edge_on || !hit) && candidate != DragPlane::facing) continue;
+    plane_ = candidate;
+    normal_ = normal;
+    // The facing plane always meets its own grab ray; the fallback keeps the light put.
+    offset_ = hit ? start_ - *hit : glm::vec3(0.0f);
     return;
   }
-  // Cursor motion at the light's depth, onto the plane's axes.
-  const float depth = std::max(glm::dot(start_ - camera.position, forward), camera.near);
-  const float metres_per_pixel = depth / focal_pixels(camera, image);
-  // The camera's right and the direction that is up on screen, from its own `up` (a
-  // camera looking straight down has no right from the world's up).
-  glm::vec3 right = glm::cross(forward, camera.up);
-  if (glm::length(right) < 1e-6f) right = glm::cross(forward, glm::vec3(0.0f, 0.0f, -1.0f));
-  right = glm::normalize(right);
-  const glm::vec3 screen_up = glm::cross(right, forward);
-  glm::vec3 a = right - normal_ * glm::dot(right, normal_);
-  a = glm::length(a) > 1e-3f ? glm::normalize(a) : glm::normalize(glm::cross(normal_, forward));
-  // Up on screen moves the light up (vertical plane) or away from the camera (horizontal).
-  glm::vec3 b = kWorldUp;
-  if (plane == DragPlane::horizontal) {
-    const glm::vec3 away(forward.x, 0.0f, forward.z);
-    const glm::vec3 top(screen_up.x, 0.0f, screen_up.z);
-    b = glm::normalize(glm::length(away) > 1e-3f ? away : top);
-  }
-  max_step_ = camera.far;
-  right_axis_ = a * metres_per_pixel;
-  up_axis_ = b * (metres_per_pixel / std::max(sine, 0.25f));
 }
 
 std::optional<glm::vec3> LightDrag::update(glm::vec2 pixel) const {
-  glm::vec3 position;
-  if (edge_on_) {
-    const glm::vec2 delta = pixel - grab_pixel_;
-    position = start_ + right_axis_ * delta.x - up_axis_ * delta.y;  // image y points down
-    if (glm::distance(position, start_) > max_step_) return std::nullopt;
-  } else {
-    const auto hit =
-        intersect_plane(ray_through(camera_, image_, pixel), start_, normal_, camera_.far);
-    if (!hit) return std::nullopt;
-    position = *hit + offset_;
-  }
+  const Ray ray = ray_through(camera_, image_, pixel);
+  const auto hit = intersect_plane(ray, start_, normal_, camera_.far);
+  if (!hit) return std::nullopt;
+  glm::vec3 position = *hit + offset_;
+  if (glm::distance(position, start_) > max_move_) return std::nullopt;
   if (plane_ == DragPlane::horizontal) position.y = start_.y;  // exactly, not within float noise
   return position;
+}
+
+std::string LightDrag::describe() const {
+  char text[160];
+  switch (plane_) {
+    case DragPlane::horizontal:
+      std::snprintf(text, sizeof text, "horizontal plane y = %.2f m", start_.y);
+      break;
+    case DragPlane::vertical:
+      std::snprintf(text, sizeof text, "upright plane facing the camera");
+      break;
+    case DragPlane::facing:
+      std::snprintf(text, sizeof text, "plane facing the cursor's ray");
+      break;
+  }
+  std::string out = std::string("dragging on the ") + text;
+  if (switched()) {
+    out += " (the " + std::string(to_string(requested_)) + " plane is seen edge-on from here)";
+  }
+  return out;
+}
+
+float drag_limit(const scene::Scene& scene) {
+  scene::Aabb box = scene.bounds;
+  for (const auto& light : scene.lights) {
+    if (light.type == scene::LightType::directional) continue;
+    box.expand(light.position);
+  }
+  const float diagonal = box.empty() ? 0.0f : glm::length(box.extent());
+  return std::min(std::max(diagonal, 1.0f), std::max(scene.camera.far, 1.0f));
 }
 
 std::vector<std::vector<glm::vec2>> sphere_outline(const scene::Camera& camera, glm::ivec2 image,

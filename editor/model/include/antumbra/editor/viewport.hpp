@@ -9,6 +9,8 @@
 // scene::Camera (NDC y = -1 is the top edge). Pixel (i, j) has its centre at (i+0.5, j+0.5).
 
 #include <optional>
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -65,43 +67,55 @@ int pick_light(const std::vector<scene::PointLight>& lights, const scene::Camera
 std::optional<glm::vec3> intersect_plane(const Ray& ray, glm::vec3 plane_point,
                                          glm::vec3 plane_normal, float max_distance);
 
-// Dragging a light in the viewport. `horizontal`: on the plane y = the light's height
-// (the artist's usual layout move); `vertical`: on the upright plane through the light
-// facing the camera (height changes). The point grabbed stays under the cursor: the
-// offset between it and the light's centre is kept for the whole drag. When the plane is
-// seen nearly edge-on (a light at eye height: the cursor would leave the plane at once),
-// the drag maps cursor motion onto the plane's two axes instead: right on screen is the
-// camera's right, up on screen is away from the camera (horizontal) or world up
-// (vertical), at the light's depth, stretched up to 4x as the plane's foreshortening
-// would; never further than the far plane.
-enum class DragPlane { horizontal, vertical };
+// Dragging a light in the viewport: the light follows the point where the cursor's ray
+// meets its drag plane, so what is under the cursor at the start stays under it (the
+// offset between the grabbed point and the light's centre is kept for the whole drag).
+// `horizontal`: the plane y = the light's height (the artist's usual layout move);
+// `vertical`: the upright plane through the light facing the camera (height changes);
+// `facing`: the plane through the light perpendicular to the grab ray, never edge-on.
+// A plane seen edge-on from the grab (the eye within about half a degree of it, where a
+// pixel of cursor motion would move the light metres) is swapped for one that is not:
+// horizontal -> vertical -> facing, and vertical -> horizontal -> facing; plane() and
+// describe() say which is used. Nothing is extrapolated: where the cursor's ray misses
+// the plane, meets it beyond the far plane or further than `max_move` from where the
+// light started (the scene's extent), the light stays where it was last put.
+enum class DragPlane { horizontal, vertical, facing };
+
+std::string_view to_string(DragPlane plane);
 
 class LightDrag {
  public:
-  // Grazing planes: below this |sine| of the angle between the view ray and the plane.
-  static constexpr float kGrazingSine = 0.17f;  // about 10 degrees
+  // Edge-on planes: below this |sine| of the angle between the grab ray and the plane.
+  static constexpr float kGrazingSine = 0.01f;  // about 0.6 degrees
 
   LightDrag(glm::vec3 light_position, const scene::Camera& camera, glm::ivec2 image,
-            glm::vec2 grab_pixel, DragPlane plane);
+            glm::vec2 grab_pixel, DragPlane requested, float max_move);
   // The light's new position for a cursor position; nullopt where the cursor's ray
-  // misses the plane (the light stays where it was last put).
+  // misses the plane or the limits (the light stays where it was last put).
   [[nodiscard]] std::optional<glm::vec3> update(glm::vec2 pixel) const;
+  // The plane the drag uses, and the one asked for (they differ when it was edge-on).
   [[nodiscard]] DragPlane plane() const { return plane_; }
-  [[nodiscard]] bool follows_cursor_ray() const { return !edge_on_; }
+  [[nodiscard]] DragPlane requested() const { return requested_; }
+  [[nodiscard]] bool switched() const { return plane_ != requested_; }
+  // Light centre minus the grabbed point: the grabbed point is what lands under the cursor.
+  [[nodiscard]] glm::vec3 offset() const { return offset_; }
+  // For the status bar: "dragging on the horizontal plane y = 2.30 m", or why another.
+  [[nodiscard]] std::string describe() const;
 
  private:
   scene::Camera camera_;
   glm::ivec2 image_;
-  glm::vec2 grab_pixel_;
   glm::vec3 start_;
-  glm::vec3 normal_;
-  glm::vec3 offset_{0.0f};  // light centre minus the grabbed point on the plane
+  glm::vec3 normal_{0.0f, 1.0f, 0.0f};
+  glm::vec3 offset_{0.0f};
+  DragPlane requested_;
   DragPlane plane_;
-  bool edge_on_ = false;
-  glm::vec3 right_axis_{0.0f};  // edge-on mapping: metres per pixel along each axis
-  glm::vec3 up_axis_{0.0f};
-  float max_step_ = 0.0f;  // edge-on mapping: no further than the far plane
+  float max_move_;
 };
+
+// How far a drag may move a light in `scene`: the diagonal of its geometry and lights'
+// bounds (at least 1 m), and never beyond the camera's far plane.
+float drag_limit(const scene::Scene& scene);
 
 // Polylines (image pixels) outlining a sphere as the camera sees it: its silhouette
 // (when the camera is outside it) and its horizontal great circle (the footprint an
