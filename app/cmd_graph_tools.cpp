@@ -4,6 +4,7 @@
 
 #include "antumbra/fg/compiler.hpp"
 #include "antumbra/fg/plan_io.hpp"
+#include "antumbra/fg/plan_memory.hpp"
 #include "antumbra/fg/schema.hpp"
 #include "commands.hpp"
 #include "register_builtin_passes.hpp"
@@ -24,10 +25,18 @@ void print_plan_text(const fg::Plan& plan) {
     std::printf("     %-20s (culled)\n", culled.c_str());
   std::printf("resources:\n");
   for (const auto& r : plan.resources) {
-    std::printf("  %-20s %-8s %5ux%-5u x%-3u life [%d, %d]%s\n", r.name.c_str(),
-                std::string(fg::to_string(r.format)).c_str(), r.extent.width, r.extent.height,
-                r.layers, r.first_use, r.last_use,
-                r.aliased ? (" aliased @" + std::to_string(r.heap_offset)).c_str() : "");
+    // Buffers have no format or extent: their kind and byte size take those columns.
+    const std::string shape = r.kind == fg::ResourceKind::image
+                                  ? std::to_string(r.extent.width) + "x" +
+                                        std::to_string(r.extent.height) + " x" +
+                                        std::to_string(r.layers)
+                                  : std::to_string(r.buffer_size) + " bytes";
+    const std::string kind = r.kind == fg::ResourceKind::image
+                                 ? std::string(fg::to_string(r.format))
+                                 : std::string(fg::to_string(r.kind));
+    const std::string aliased = r.aliased ? " aliased @" + std::to_string(r.heap_offset) : "";
+    std::printf("  %-20s %-10s %-16s life [%d, %d]%s\n", r.name.c_str(), kind.c_str(),
+                shape.c_str(), r.first_use, r.last_use, aliased.c_str());
   }
   std::printf("aliasing: %llu bytes in the transient heap instead of %llu (saved %llu)\n",
               static_cast<unsigned long long>(plan.aliasing.heap_bytes),
@@ -58,26 +67,44 @@ bool parse_size(const std::string& text, unsigned& width, unsigned& height) {
 int run_validate(const ValidateOptions& options) {
   const auto registry = passes::builtin_pass_registry();
   bool failed = false;
+  bool unreadable = false;
   nlohmann::json report = nlohmann::json::array();
   for (const auto& file : options.files) {
     const auto result = fg::compile_file(file, registry.reflection());
     const auto& diagnostics = result.diagnostics();
     const bool file_failed = !result.ok() || (options.werror && diagnostics.warning_count() > 0);
     failed = failed || file_failed;
+    unreadable = unreadable || exit_code_for(diagnostics) == kExitUsage;
+    // The memory the plan asks for, without a device (formats' texel sizes, no driver
+    // padding): a CI job sees a graph grow before a GPU does.
+    const fg::CompileOptions defaults;
+    std::string memory;
+    if (result.ok()) {
+      memory = "; memory at " + std::to_string(defaults.viewport.width) + "x" +
+               std::to_string(defaults.viewport.height) + ": " +
+               fg::describe_plan_memory(result.value());
+    }
     if (options.format == "json") {
-      report.push_back(
-          {{"file", file}, {"valid", !file_failed}, {"diagnostics", diagnostics.to_json()}});
+      nlohmann::json item{
+          {"file", file}, {"valid", !file_failed}, {"diagnostics", diagnostics.to_json()}};
+      if (result.ok()) {
+        item["memoryBytes"] = fg::plan_memory_bytes(result.value());
+        item["transientHeapBytes"] = result.value().aliasing.heap_bytes;
+        item["viewport"] = {defaults.viewport.width, defaults.viewport.height};
+      }
+      report.push_back(std::move(item));
       continue;
     }
     for (const auto& d : diagnostics) {
       if (d.severity == fg::Severity::note) continue;
       std::fprintf(stderr, "%s\n", fg::format_text(d).c_str());
     }
-    std::printf("%s: %s (%zu error(s), %zu warning(s))\n", file.c_str(),
+    std::printf("%s: %s (%zu error(s), %zu warning(s)%s)\n", file.c_str(),
                 file_failed ? "invalid" : "valid", diagnostics.error_count(),
-                diagnostics.warning_count());
+                diagnostics.warning_count(), memory.c_str());
   }
   if (options.format == "json") std::cout << nlohmann::json{{"files", report}}.dump(2) << '\n';
+  if (unreadable) return kExitUsage;  // a file that cannot be read: like a bad argument
   return failed ? kExitDiagnostics : kExitOk;
 }
 

@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "antumbra/fg/diagnostic_codes.hpp"
 #include "antumbra/fg/graph_desc.hpp"
 #include "antumbra/fg/json_document.hpp"
 #include "antumbra/gpu/timing.hpp"
@@ -48,13 +49,16 @@ nlohmann::json render_report_json(const RenderSession& session, const std::strin
     passes.push_back(
         {{"name", t.name}, {"type", t.type}, {"gpuMs", t.gpu_ms}, {"cpuMs", t.cpu_ms}});
   }
-  auto messages = nlohmann::json::array();
-  for (const auto& m : session.last_report().messages()) {
-    messages.push_back({{"pass", m.pass},
-                        {"code", m.code},
-                        {"severity", fg::to_string(m.severity)},
-                        {"message", m.message},
-                        {"details", nlohmann::json::parse(m.details.dump())}});
+  // One list: the compiler's diagnostics, then what the passes reported about the last
+  // frame (with their machine-readable details, e.g. the conflicting pairs of LY001).
+  auto all = diagnostics.to_json();
+  const auto frame = session.frame_diagnostics();
+  const auto& messages = session.last_report().messages();
+  for (std::size_t i = 0; i < frame.size(); ++i) {
+    auto item = fg::to_json(frame[i]);
+    item["pass"] = messages[i].pass;
+    item["details"] = nlohmann::json::parse(messages[i].details.dump());
+    all.push_back(std::move(item));
   }
   return {{"device", device},
           {"graph", session.executor().plan().file},
@@ -63,8 +67,7 @@ nlohmann::json render_report_json(const RenderSession& session, const std::strin
           {"frames", options.frames},
           {"passes", passes},
           {"culled", session.executor().plan().culled_passes},
-          {"messages", messages},
-          {"diagnostics", diagnostics.to_json()}};
+          {"diagnostics", all}};
 }
 
 }  // namespace
@@ -88,7 +91,7 @@ int run_render(const RenderOptions& options) {
   auto document = fg::load_json_file(graph_path);
   if (!document.ok()) {
     print_diagnostics(document.diagnostics());
-    return kExitDiagnostics;
+    return exit_code_for(document.diagnostics());
   }
   auto graph = fg::parse_graph(document.value());
   if (!graph.ok()) {
@@ -107,7 +110,7 @@ int run_render(const RenderOptions& options) {
   }
   auto scene = scene::load_scene_file(scene_path);
   print_diagnostics(scene.diagnostics());
-  if (!scene.ok()) return kExitDiagnostics;
+  if (!scene.ok()) return exit_code_for(scene.diagnostics());
   const double parse_ms = stage.elapsed_ms();
 
   stage.restart();
@@ -126,7 +129,12 @@ int run_render(const RenderOptions& options) {
   stage.restart();
   const auto diagnostics = session.load_graph(graph.value());
   print_diagnostics(diagnostics);
-  if (diagnostics.has_errors()) return kExitDiagnostics;
+  if (diagnostics.has_errors()) {
+    // A valid graph this device cannot hold (memory, limits) is a runtime failure, as the
+    // README promises (3), not a problem in the file (1).
+    return diagnostics.find(fg::codes::kRealiseFailed) != nullptr ? kExitRuntime
+                                                                  : kExitDiagnostics;
+  }
   const double compile_ms = stage.elapsed_ms();
 
   stage.restart();
@@ -157,10 +165,7 @@ int run_render(const RenderOptions& options) {
                             .c_str());
   } else {
     print_timings(session, session.pass_timings(), options.frames);
-    for (const auto& m : session.last_report().messages()) {
-      std::fprintf(stderr, "%s[%s]: %s (pass %s)\n", fg::to_string(m.severity), m.code.c_str(),
-                   m.message.c_str(), m.pass.c_str());
-    }
+    print_diagnostics(session.frame_diagnostics());
   }
   if (!json) {
     std::printf(
@@ -191,6 +196,11 @@ int run_render(const RenderOptions& options) {
     std::fprintf(stderr, "antumbra render: %zu validation error(s)\n",
                  session.gpu().validation_error_count());
     return kExitRuntime;
+  }
+  const std::size_t warnings = diagnostics.warning_count() + session.frame_diagnostics().warning_count();
+  if (options.werror && warnings > 0) {
+    std::fprintf(stderr, "antumbra render: %zu warning(s) with --werror\n", warnings);
+    return kExitDiagnostics;
   }
   return kExitOk;
 }

@@ -5,12 +5,20 @@
 #include <string>
 #include <vector>
 
+#include "antumbra/fg/diagnostics.hpp"
+
 namespace antumbra::app {
 
 inline constexpr int kExitOk = 0;
 inline constexpr int kExitDiagnostics = 1;
 inline constexpr int kExitUsage = 2;
 inline constexpr int kExitRuntime = 3;
+
+// The exit code for diagnostics on user input: a file that cannot be read (FG000: missing,
+// a directory, no permission) is a usage error (2) like a bad option; anything else 1.
+inline int exit_code_for(const fg::Diagnostics& diagnostics) {
+  return diagnostics.find("FG000") != nullptr ? kExitUsage : kExitDiagnostics;
+}
 
 struct ValidateOptions {
   std::vector<std::string> files;
@@ -22,6 +30,11 @@ struct PlanOptions {
   std::string file;
   std::string format = "json";  // json | dot | text
   std::string size = "1280x720";
+};
+
+struct PassesOptions {
+  std::string type;             // empty: list every pass type
+  std::string format = "text";  // text | json | markdown
 };
 
 struct RenderOptions {
@@ -38,6 +51,7 @@ struct RenderOptions {
   std::string format = "text";  // text | json (timings, pass reports, diagnostics)
   bool watch = false;           // keep running; reload on file changes
   double watch_seconds = 0;     // with watch: stop after this long (0 = until interrupted)
+  bool werror = false;          // warnings (compiler's and passes') fail the run: exit 1
 };
 
 struct BenchOptions {
@@ -74,6 +88,7 @@ int run_validate(const ValidateOptions& options);
 int run_bench(const BenchOptions& options);
 int run_plan(const PlanOptions& options);
 int run_schema();
+int run_passes(const PassesOptions& options);
 int run_render(const RenderOptions& options);
 int run_devices(const std::string& device, bool validation);
 int run_compare(const CompareOptions& options);

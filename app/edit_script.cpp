@@ -85,6 +85,14 @@ class EditRun {
     frame_ms_.push_back(wall.elapsed_ms() / std::max(frames, 1));
   }
 
+  // The documents with edits no step saved: said at the end, so nothing is lost silently.
+  [[nodiscard]] std::vector<std::string> unsaved() const {
+    std::vector<std::string> files;
+    if (scene_.dirty()) files.push_back(scene_.file().string());
+    if (graph_.dirty()) files.push_back(graph_.file().string());
+    return files;
+  }
+
   [[nodiscard]] double median_frame_ms() const {
     if (frame_ms_.empty()) return 0.0;
     auto sorted = frame_ms_;
@@ -510,7 +518,7 @@ int run_edit(const EditOptions& options) {
     auto loaded = fg::load_json_file(options.script);
     if (!loaded.ok()) {
       print(loaded.diagnostics());
-      return kExitDiagnostics;
+      return exit_code_for(loaded.diagnostics());
     }
     // The whole script before anything runs: a typo fails here, not silently later.
     const fg::Diagnostics problems = editor::check_edit_script(loaded.value());
@@ -527,7 +535,8 @@ int run_edit(const EditOptions& options) {
   auto graph = editor::GraphDocument::load(graph_path, lookup);
   print(scene.diagnostics());
   print(graph.diagnostics());
-  if (!scene.ok() || !graph.ok()) return kExitDiagnostics;
+  if (!scene.ok()) return exit_code_for(scene.diagnostics());
+  if (!graph.ok()) return exit_code_for(graph.diagnostics());
 
   SessionOptions session_options;
   session_options.device = options.device;
@@ -581,6 +590,10 @@ int run_edit(const EditOptions& options) {
       "editor frame (%ux%u): %.2f ms wall median (edit + layer status + render + wait), "
       "%.3f ms GPU (sum of pass medians)\n",
       width, height, run.median_frame_ms(), gpu_ms);
+  for (const auto& file : run.unsaved()) {
+    std::printf("warning: unsaved changes to %s were not saved (no \"save\" step after them)\n",
+                file.c_str());
+  }
   std::printf("%d step(s) failed\n", failures);
   return failures == 0 ? kExitOk : kExitDiagnostics;
 }

@@ -45,6 +45,8 @@ int dispatch(int argc, char** argv) {
   render_cmd->add_option("--format", render.format, "text|json report on stdout")
       ->check(CLI::IsMember({"text", "json"}))
       ->capture_default_str();
+  render_cmd->add_flag("--werror", render.werror,
+                       "Exit 1 when the graph or a pass (e.g. the layer cap) warns");
 
   ValidateOptions validate;
   auto* validate_cmd = cli.add_subcommand("validate", "Check frame graph files (no GPU needed)");
@@ -57,13 +59,18 @@ int dispatch(int argc, char** argv) {
   PlanOptions plan;
   auto* plan_cmd = cli.add_subcommand("plan", "Print the compiled plan of a graph");
   plan_cmd->add_option("file", plan.file, "Graph file")->required();
-  auto* plan_format = plan_cmd->add_option_group("format");
+  plan_cmd->add_option("--format", plan.format, "json (canonical) | dot (Graphviz) | text")
+      ->check(CLI::IsMember({"json", "dot", "text"}))
+      ->capture_default_str();
+  // The spellings from before --format, kept so that existing scripts keep working.
+  auto* plan_format =
+      plan_cmd->add_option_group("deprecated", "Spellings of --format kept for old scripts");
   bool plan_dot = false;
   bool plan_json = false;
   bool plan_text = false;
-  plan_format->add_flag("--dot", plan_dot, "Graphviz dot");
-  plan_format->add_flag("--json", plan_json, "Canonical JSON (default)");
-  plan_format->add_flag("--text", plan_text, "Readable summary");
+  plan_format->add_flag("--dot", plan_dot, "Same as --format dot (deprecated)");
+  plan_format->add_flag("--json", plan_json, "Same as --format json (deprecated)");
+  plan_format->add_flag("--text", plan_text, "Same as --format text (deprecated)");
   plan_format->require_option(0, 1);
   plan_cmd->add_option("--size", plan.size, "Viewport WxH the plan is compiled for")
       ->capture_default_str();
@@ -108,6 +115,14 @@ int dispatch(int argc, char** argv) {
   bench_cmd->add_flag("--list", bench.list, "List the scenarios and exit");
 
   cli.add_subcommand("schema", "Print the JSON Schema of graph files");
+
+  PassesOptions passes;
+  auto* passes_cmd = cli.add_subcommand(
+      "passes", "List the pass types, or print one type's ports, parameters and description");
+  passes_cmd->add_option("type", passes.type, "Pass type to describe (default: list them all)");
+  passes_cmd->add_option("--format", passes.format, "text|json|markdown")
+      ->check(CLI::IsMember({"text", "json", "markdown"}))
+      ->capture_default_str();
 
   std::string devices_device = "auto";
   bool devices_validation = false;
@@ -165,9 +180,20 @@ int dispatch(int argc, char** argv) {
   if (render_cmd->parsed()) return run_render(render);
   if (validate_cmd->parsed()) return run_validate(validate);
   if (plan_cmd->parsed()) {
-    plan.format = plan_dot ? "dot" : (plan_text ? "text" : "json");
+    const char* flag = plan_dot ? "dot" : (plan_text ? "text" : (plan_json ? "json" : nullptr));
+    if (flag != nullptr) {
+      // Silently letting one of two contradicting choices win would hide a script's bug.
+      if (plan_cmd->count("--format") > 0 && plan.format != flag) {
+        std::fprintf(stderr, "antumbra plan: --%s contradicts --format %s\n", flag,
+                     plan.format.c_str());
+        return kExitUsage;
+      }
+      std::fprintf(stderr, "antumbra plan: --%s is deprecated; use --format %s\n", flag, flag);
+      plan.format = flag;
+    }
     return run_plan(plan);
   }
+  if (passes_cmd->parsed()) return run_passes(passes);
   if (devices_cmd->parsed()) return run_devices(devices_device, devices_validation);
   if (bench_cmd->parsed()) return run_bench(bench);
   if (compare_cmd->parsed()) return run_compare(compare);

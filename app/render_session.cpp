@@ -6,7 +6,9 @@
 
 #include "antumbra/fg/compiler.hpp"
 #include "antumbra/fg/diagnostic_codes.hpp"
+#include "antumbra/fg/plan_memory.hpp"
 #include "antumbra/gpu/image_io.hpp"
+#include "antumbra/gpu/memory_heaps.hpp"
 #include "antumbra/gpu/pipeline_cache.hpp"
 #include "register_builtin_passes.hpp"
 
@@ -78,19 +80,41 @@ fg::Diagnostics RenderSession::load_graph(const fg::GraphDesc& graph) {
   fg::CompileOptions compile_options;
   compile_options.viewport = {options_.viewport.width, options_.viewport.height};
   compile_options.footprint = executor_->footprint_fn();
-  auto plan = fg::compile(graph, registry_->reflection(), compile_options);
-  fg::Diagnostics diagnostics = plan.diagnostics();
-  if (!plan.ok()) return diagnostics;
+  const auto realise_failed = [&](const std::string& why) {
+    fg::Diagnostics out;
+    out.add({fg::codes::kRealiseFailed, fg::Severity::error, why, graph.document.file(), "", 0, 0});
+    return out;
+  };
+  std::optional<fg::Result<fg::Plan>> plan;
   try {
-    executor_->load(std::move(plan.value()));
+    // The device's own footprints: an image beyond its limits fails here.
+    plan.emplace(fg::compile(graph, registry_->reflection(), compile_options));
+  } catch (const std::runtime_error& e) {
+    return realise_failed(std::string("the device cannot size this plan's resources: ") + e.what());
+  }
+  fg::Diagnostics diagnostics = plan->diagnostics();
+  if (!plan->ok()) return diagnostics;
+  // Refused before allocating: a driver asked for more than it has may fail late, or (a
+  // CPU device) overcommit host memory. The message says what the plan needs.
+  const std::uint64_t needed = fg::plan_memory_bytes(plan->value());
+  const std::uint64_t available = gpu::local_heaps(gpu_->physical_device()).total;
+  const std::string memory = fg::describe_plan_memory(plan->value());
+  if (available > 0 && needed > available) {
+    diagnostics.append(realise_failed("the plan needs " + memory +
+                                      "; the device's local memory heaps hold " +
+                                      fg::format_bytes(available) + " in all"));
+    return diagnostics;
+  }
+  try {
+    executor_->load(std::move(plan->value()));
     live_document_ = graph.document;
   } catch (const fgvk::PassError& e) {
     diagnostics.append(e.diagnostics());
   } catch (const std::runtime_error& e) {
-    // The device cannot realise this plan (memory types, a pass type with no runtime):
-    // the previous plan stays live and the reason is reported like any diagnostic.
-    diagnostics.add({fg::codes::kRealiseFailed, fg::Severity::error, e.what(),
-                     graph.document.file(), "", 0, 0});
+    // The device cannot realise this plan (memory types, out of memory, a pass type with
+    // no runtime): the previous plan stays live and the reason is reported with what the
+    // plan needs.
+    diagnostics.append(realise_failed(std::string(e.what()) + " (the plan needs " + memory + ")"));
   }
   return diagnostics;
 }

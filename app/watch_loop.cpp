@@ -89,9 +89,16 @@ int run_watch_loop(RenderSession& session, const WatchOptions& options) {
         changed.front().string().c_str(), latency.elapsed_ms(), options.out.c_str(), frame_ms,
         compiled_ms);
     if (graph_changed) {
-      std::printf("  %s\n", fg::to_text(fg::diff_plans(before, session.executor().plan())).c_str());
+      auto diff = fg::diff_plans(before, session.executor().plan());
+      std::vector<std::string> files;
+      for (const auto& f : changed) files.push_back(f.string());
+      diff.passes_rebuilt = session.executor().passes_reading(files);
+      std::printf("  %s\n", fg::to_text(diff).c_str());
     }
+    // Warnings that still hold are reported again: a cap lowered in the file must say so.
     std::fflush(stdout);
+    print(session.frame_diagnostics());
+    std::fflush(stderr);
   }
   std::printf("watch ended after %d reload(s)\n", reloads);
   return kExitOk;

@@ -1,6 +1,8 @@
 // compile(): runs the phases in order and assembles the Plan.
 #include "antumbra/fg/compiler.hpp"
 
+#include <algorithm>
+
 #include "antumbra/fg/compiler_phases.hpp"
 #include "antumbra/fg/diagnostic_codes.hpp"
 
@@ -38,6 +40,15 @@ int check_output(const GraphDesc& graph, const std::vector<ResolvedPass>& passes
     if (!rp.enabled) continue;
     for (const BoundPort& w : rp.writes) {
       if (w.resource == output) return output;
+    }
+    // A pass whose type is unknown (already reported) may be the writer: saying that
+    // nothing writes the output would be a knock-on error of the same typo.
+    if (rp.desc == nullptr) {
+      const auto& outs = graph.passes[static_cast<std::size_t>(rp.source_index)].outputs;
+      if (std::any_of(outs.begin(), outs.end(),
+                      [&](const PortBindingDesc& b) { return b.resource == graph.output; })) {
+        return -1;
+      }
     }
   }
   error(codes::kOutputNotProduced, "no enabled pass writes the output " + quote_name(graph.output));

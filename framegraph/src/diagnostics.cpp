@@ -29,17 +29,35 @@ std::string format_text(const Diagnostic& diagnostic) {
   out += to_string(diagnostic.severity);
   out += '[' + diagnostic.code + "]: " + diagnostic.message;
   if (!diagnostic.pointer.empty()) out += " (at " + diagnostic.pointer + ')';
+  if (!diagnostic.excerpt.empty()) {
+    // Appended piece by piece: GCC 12 warns (-Wrestrict, a false positive) on "a" + s.
+    out += "\n  | ";
+    out += diagnostic.excerpt;
+    if (diagnostic.column > 0) {
+      // Tabs stay tabs so that the caret lines up under the same terminal columns.
+      std::string pad;
+      for (int i = 0; i + 1 < diagnostic.column && i < static_cast<int>(diagnostic.excerpt.size());
+           ++i) {
+        pad += diagnostic.excerpt[static_cast<std::size_t>(i)] == '\t' ? '\t' : ' ';
+      }
+      out += "\n  | ";
+      out += pad;
+      out += '^';
+    }
+  }
   return out;
 }
 
 nlohmann::json to_json(const Diagnostic& diagnostic) {
-  return nlohmann::json{{"code", diagnostic.code},
+  auto out = nlohmann::json{{"code", diagnostic.code},
                         {"severity", to_string(diagnostic.severity)},
                         {"message", diagnostic.message},
                         {"file", diagnostic.file},
                         {"pointer", diagnostic.pointer},
                         {"line", diagnostic.line},
                         {"column", diagnostic.column}};
+  if (!diagnostic.excerpt.empty()) out["excerpt"] = diagnostic.excerpt;
+  return out;
 }
 
 void Diagnostics::append(const Diagnostics& other) {

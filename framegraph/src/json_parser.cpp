@@ -2,6 +2,8 @@
 #include <charconv>
 #include <cmath>
 #include <filesystem>
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 
@@ -426,10 +428,16 @@ Result<JsonDocument> load_json_file(const std::string& path, const JsonParseOpti
                                "is a directory; expected a JSON file", path, "", 0, 0});
     return diagnostics;
   }
+  errno = 0;
   std::ifstream in(path, std::ios::binary);
   if (!in) {
+    // The OS's reason: a missing file and a file without read permission need different fixes.
+    const int reason = errno;
     Diagnostics diagnostics;
-    diagnostics.add(Diagnostic{codes::kFileUnreadable, Severity::error, "cannot open the file", path, "", 0, 0});
+    diagnostics.add(Diagnostic{codes::kFileUnreadable, Severity::error,
+                               std::string("cannot open the file: ") +
+                                   (reason != 0 ? std::strerror(reason) : "unknown reason"),
+                               path, "", 0, 0});
     return diagnostics;
   }
   std::ostringstream buffer;

@@ -119,7 +119,8 @@ std::string to_text(const PlanDiff& d) {
       "passes +" + std::to_string(d.passes_added.size()) + " -" +
       std::to_string(d.passes_removed.size()) + " ~" + std::to_string(d.passes_changed.size()) +
       ", culled " + std::to_string(d.passes_culled.size()) + " unculled " +
-      std::to_string(d.passes_unculled.size()) + ", resources +" +
+      std::to_string(d.passes_unculled.size()) + " rebuilt " +
+      std::to_string(d.passes_rebuilt.size()) + ", resources +" +
       std::to_string(d.resources_added.size()) + " -" + std::to_string(d.resources_removed.size()) +
       " realloc " + std::to_string(d.resources_reallocated.size()) + " kept " +
       std::to_string(d.resources_kept.size()) + " transient " +
@@ -130,6 +131,7 @@ std::string to_text(const PlanDiff& d) {
   append_list(out, "passes changed", d.passes_changed);
   append_list(out, "passes culled", d.passes_culled);
   append_list(out, "passes no longer culled", d.passes_unculled);
+  append_list(out, "passes rebuilt from edited shaders", d.passes_rebuilt);
   append_list(out, "resources added", d.resources_added);
   append_list(out, "resources removed", d.resources_removed);
   append_list(out, "resources reallocated", d.resources_reallocated);
@@ -140,7 +142,8 @@ Json to_json(const PlanDiff& d) {
   return Json{
       {"passesAdded", d.passes_added},           {"passesRemoved", d.passes_removed},
       {"passesChanged", d.passes_changed},       {"passesCulled", d.passes_culled},
-      {"passesUnculled", d.passes_unculled},     {"resourcesAdded", d.resources_added},
+      {"passesUnculled", d.passes_unculled},     {"passesRebuilt", d.passes_rebuilt},
+      {"resourcesAdded", d.resources_added},
       {"resourcesRemoved", d.resources_removed}, {"resourcesReallocated", d.resources_reallocated},
       {"resourcesKept", d.resources_kept},       {"resourcesTransient", d.resources_transient},
       {"barriersBefore", d.barriers_before},     {"barriersAfter", d.barriers_after}};

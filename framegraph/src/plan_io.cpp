@@ -1,5 +1,7 @@
 #include "antumbra/fg/plan_io.hpp"
 
+#include <initializer_list>
+
 #include "antumbra/fg/graph_desc.hpp"
 
 namespace antumbra::fg {
@@ -47,11 +49,29 @@ Json resource_json(const PlanResource& r) {
   return j;
 }
 
+// Text inside a quoted DOT string (an escString): quotes and backslashes escaped, and a
+// newline in a name becomes Graphviz's own line break instead of ending the string.
 std::string dot_escape(std::string_view s) {
   std::string out;
   for (char c : s) {
+    if (c == '\n') {
+      out += "\\n";
+      continue;
+    }
+    if (c == '\r') continue;
     if (c == '"' || c == '\\') out += '\\';
     out += c;
+  }
+  return out;
+}
+
+// Lines escaped one by one and joined with the `\n` escape itself: escaping the joined
+// text would double the backslash and Graphviz would show a literal "\n".
+std::string dot_label(std::initializer_list<std::string_view> lines) {
+  std::string out;
+  for (std::string_view line : lines) {
+    if (!out.empty()) out += "\\n";
+    out += dot_escape(line);
   }
   return out;
 }
@@ -98,24 +118,28 @@ Json plan_to_json(const Plan& plan) {
   return j;
 }
 
-std::string plan_to_json_text(const Plan& plan) { return plan_to_json(plan).dump(2) + "\n"; }
+std::string plan_to_json_text(const Plan& plan) {
+  return plan_to_json(plan).dump(2) + "\n";
+}
 
 std::string plan_to_dot(const Plan& plan) {
   std::string out = "digraph \"" + dot_escape(plan.name) + "\" {\n  rankdir=LR;\n";
   for (std::size_t i = 0; i < plan.resources.size(); ++i) {
     const PlanResource& r = plan.resources[i];
-    std::string label = r.name + "\\n" +
-                        (r.kind == ResourceKind::image ? std::string(to_string(r.format)) + " " + describe_size(r.size)
-                                                       : std::to_string(r.buffer_size) + " B");
-    out += "  r" + std::to_string(i) + " [shape=ellipse, label=\"" + dot_escape(label) + "\"";
+    const std::string detail = r.kind == ResourceKind::image
+                                   ? std::string(to_string(r.format)) + " " + describe_size(r.size)
+                                   : "buffer " + std::to_string(r.buffer_size) + " bytes";
+    out += "  r" + std::to_string(i) + " [shape=ellipse, label=\"" + dot_label({r.name, detail}) +
+           "\"";
     if (r.is_output) out += ", peripheries=2";
     if (r.persistent) out += ", style=bold";
     out += "];\n";
   }
   for (std::size_t p = 0; p < plan.passes.size(); ++p) {
     const PlanPass& pass = plan.passes[p];
-    out += "  p" + std::to_string(p) + " [shape=box, label=\"" + dot_escape(std::to_string(p) + ": " + pass.name) +
-           "\\n" + dot_escape(pass.type) + "\"];\n";
+    const std::string title = std::to_string(p) + ": " + pass.name;
+    out += "  p" + std::to_string(p) + " [shape=box, label=\"" + dot_label({title, pass.type}) +
+           "\"];\n";
     for (const PlanBinding& b : pass.bindings) {
       if (b.resource < 0) continue;
       // Appended piecewise: GCC 12 misreports -Wrestrict on "lit" + std::string chains.
@@ -134,7 +158,7 @@ std::string plan_to_dot(const Plan& plan) {
   }
   for (std::size_t c = 0; c < plan.culled_passes.size(); ++c) {
     out += "  c" + std::to_string(c) + " [shape=box, style=dashed, label=\"" +
-           dot_escape(plan.culled_passes[c]) + "\\n(culled)\"];\n";
+           dot_label({plan.culled_passes[c], "(culled)"}) + "\"];\n";
   }
   out += "}\n";
   return out;

@@ -1,22 +1,13 @@
 #include "layer_checks.hpp"
 
 #include "antumbra/fg/diagnostic_codes.hpp"
+#include "plan_checks.hpp"
 
 namespace antumbra::passes {
-namespace {
-
-int bound_resource(const fg::PlanPass& pass, std::string_view port) {
-  for (const auto& b : pass.bindings) {
-    if (b.port == port) return b.resource;
-  }
-  return -1;
-}
-
-}  // namespace
 
 LayerCap find_layer_cap(const fg::PlanPass& pass, const fg::Plan& plan,
                         std::string_view layer_port) {
-  const int table = bound_resource(pass, layer_port);
+  const int table = bound_index(pass, layer_port);
   if (table < 0) return {};
   for (const auto& other : plan.passes) {
     if (other.type != "light-layering") continue;
@@ -33,7 +24,7 @@ LayerCap find_layer_cap(const fg::PlanPass& pass, const fg::Plan& plan,
 
 void check_layer_storage(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& graph,
                          const LayerCap& cap, std::string_view port, fg::Diagnostics& diagnostics) {
-  const int image = bound_resource(pass, port);
+  const int image = bound_index(pass, port);
   if (cap.source_index < 0 || image < 0) return;
   const auto& resource = plan.resources[static_cast<std::size_t>(image)];
   const int capacity = static_cast<int>(resource.layers) * 4;

@@ -1,6 +1,25 @@
+#include "common/layer_table.hpp"
+#include "common/plan_checks.hpp"
 #include "light_layering_pass.hpp"
 
 namespace antumbra::passes {
+
+namespace {
+
+// The table must hold a layer per light the engine supports: a compiler check (validate).
+void check(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& graph,
+           fg::Diagnostics& diagnostics) {
+  const auto* table = bound_resource(pass, plan, "layerTable");
+  if (table == nullptr || table->buffer_size >= kLayerTableBytes) return;
+  add_pass_error(graph, pass, "LY010",
+                 "the layerTable buffer '" + table->name + "' holds " +
+                     std::to_string(table->buffer_size) + " bytes; it must hold at least " +
+                     std::to_string(kLayerTableBytes) + " (" + std::to_string(kMaxShadowLights) +
+                     " lights)",
+                 "/out/layerTable", diagnostics);
+}
+
+}  // namespace
 
 fg::PassDesc LightLayeringPass::describe() {
   fg::PassDesc desc;
@@ -54,6 +73,7 @@ fg::PassDesc LightLayeringPass::describe() {
        .description = "Maximum blur radius in pixels added around each light's "
                       "screen footprint (screen-tile criterion)."},
   };
+  desc.check = &check;
   return desc;
 }
 

@@ -28,17 +28,8 @@ LightLayeringPass::LightLayeringPass(const fg::PlanPass& pass) {
   tiles_.dilation_px = param_float(pass, "dilation");
 }
 
-void LightLayeringPass::prepare(fgvk::PrepareContext& context) {
-  const auto* table = context.bindings.buffer("layerTable");
-  if (table == nullptr || table->size < kLayerTableBytes) {
-    fg::Diagnostics diagnostics;
-    diagnostics.add({"LY010", fg::Severity::error,
-                     "the layerTable buffer of pass '" + context.pass.name +
-                         "' must hold at least " + std::to_string(kLayerTableBytes) + " bytes (" +
-                         std::to_string(kMaxShadowLights) + " lights)",
-                     "", "", 0, 0});
-    throw fgvk::PassError("layerTable too small", diagnostics);
-  }
+void LightLayeringPass::prepare(fgvk::PrepareContext& /*context*/) {
+  // The layerTable's size is a compiler check (light_layering_desc.cpp).
 }
 
 void LightLayeringPass::execute(fgvk::ExecuteContext& context) {

@@ -1,6 +1,36 @@
+#include "common/plan_checks.hpp"
+#include "common/shadow_data.hpp"
 #include "point_shadow_atlas_pass.hpp"
 
 namespace antumbra::passes {
+namespace {
+
+// Buffer and colour-map sizes against the atlas: compiler checks, so validate sees them.
+void check(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& graph,
+           fg::Diagnostics& diagnostics) {
+  const auto* atlas = bound_resource(pass, plan, "atlas");
+  const auto* colour = bound_resource(pass, plan, "colour");
+  const auto* data = bound_resource(pass, plan, "shadowData");
+  if (atlas == nullptr) return;  // a required port: the compiler has reported it
+  const std::size_t needed = shadow_data_bytes(atlas->layers);
+  if (data != nullptr && data->buffer_size < needed) {
+    add_pass_error(graph, pass, "SHD001",
+                   "the shadowData buffer '" + data->name + "' holds " +
+                       std::to_string(data->buffer_size) + " bytes; " +
+                       std::to_string(atlas->layers) + " atlas layers need " +
+                       std::to_string(needed) + " (shadow_data_bytes(layers))",
+                   "/out/shadowData", diagnostics);
+  }
+  if (colour != nullptr && colour->layers < atlas->layers) {
+    add_pass_error(graph, pass, "SHD003",
+                   "the colour map '" + colour->name + "' has " + std::to_string(colour->layers) +
+                       " layers, the atlas " + std::to_string(atlas->layers) +
+                       "; give both the same layer count",
+                   "/out/colour", diagnostics);
+  }
+}
+
+}  // namespace
 
 fg::PassDesc PointShadowAtlasPass::describe() {
   using fg::Access;
@@ -92,6 +122,7 @@ fg::PassDesc PointShadowAtlasPass::describe() {
        .description = "One instanced draw writing gl_Layer where the device supports it; off "
                       "forces the fallback of one draw per face into a single-layer view."},
   };
+  desc.check = &check;
   return desc;
 }
 

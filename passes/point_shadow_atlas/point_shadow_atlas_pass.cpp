@@ -22,15 +22,6 @@ using FaceDraw = ShadowFace;
 
 constexpr VkClearColorValue kWhite{{1.0f, 1.0f, 1.0f, 1.0f}};
 
-[[noreturn]] void fail(fgvk::PrepareContext& context, const std::string& code,
-                       const std::string& message) {
-  fg::Diagnostics diagnostics;
-  diagnostics.add({code, fg::Severity::error,
-                   "pass '" + context.pass.name + "' (point-shadow-atlas): " + message, "", "", 0,
-                   0});
-  throw fgvk::PassError(message, diagnostics);
-}
-
 gpu::ImageView layer_view(gpu::Context& gpu, const fgvk::BoundImage& image, std::uint32_t layer,
                           VkImageAspectFlags aspect, const std::string& name) {
   VkImageViewCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
@@ -70,19 +61,7 @@ PointShadowAtlasPass::PointShadowAtlasPass(const fg::PlanPass& pass) {
 void PointShadowAtlasPass::prepare(fgvk::PrepareContext& context) {
   const auto& atlas = context.bindings.required_image("atlas");
   const auto* colour = context.bindings.image("colour");
-  const auto* data = context.bindings.buffer("shadowData");
-  const std::size_t needed = shadow_data_bytes(atlas.layers);
-  if (data == nullptr || data->size < needed) {
-    fail(context, "SHD001",
-         "the shadowData buffer holds " + std::to_string(data == nullptr ? 0 : data->size) +
-             " bytes; " + std::to_string(atlas.layers) + " atlas layers need " +
-             std::to_string(needed) + " (shadow_data_bytes(layers))");
-  }
-  if (colour != nullptr && colour->layers < atlas.layers) {
-    fail(context, "SHD003",
-         "the colour map has " + std::to_string(colour->layers) + " layers, the atlas " +
-             std::to_string(atlas.layers) + "; give both the same layer count");
-  }
+  // shadowData and colour sizes are compiler checks (point_shadow_atlas_desc.cpp).
   settings_.layers = atlas.layers;
   settings_.face_size = atlas.extent.width;
   colour_map_ = colour != nullptr;

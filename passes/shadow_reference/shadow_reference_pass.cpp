@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "antumbra/gpu/context.hpp"
+#include "antumbra/gpu/memory_heaps.hpp"
 #include "antumbra/gpu/pipelines.hpp"
 #include "antumbra/scene/scene.hpp"
 #include "common/frame_data.hpp"
@@ -197,7 +198,17 @@ void ShadowReferencePass::rebuild(fgvk::ExecuteContext& context, const Key& key)
     indices_ = merged.indices;
     merged_version_ = context.frame.geometry_version;
   }
-  plan_ = reference::build_plan(scene, positions_, indices_, key.view_proj, settings_,
+  // lightsPerBatch is an upper bound: the faces of one batch (depth and tint layers) stay
+  // within a quarter of the device's largest local heap, so a large faceSize renders in
+  // more, smaller batches instead of failing to allocate (a 4096 face is 384 MiB a light).
+  auto settings = settings_;
+  const VkDeviceSize per_light = VkDeviceSize{reference::kFacesPerLight} * face_size_ * face_size_ *
+                                 (sizeof(float) + sizeof(std::uint32_t));
+  const VkDeviceSize fitting = gpu::local_heaps(context.gpu.physical_device()).largest / 4 /
+                               std::max<VkDeviceSize>(per_light, 1);
+  settings.lights_per_batch = static_cast<std::uint32_t>(
+      std::clamp<VkDeviceSize>(fitting, 1, std::max<std::uint32_t>(settings.lights_per_batch, 1)));
+  plan_ = reference::build_plan(scene, positions_, indices_, key.view_proj, settings,
                                 vertex_materials_);
   gpu::Context& gpu = context.gpu;
   const std::string& name = context.pass.name;

@@ -1,4 +1,7 @@
+#include "common/layer_table.hpp"
 #include "common/lighting_reflection.hpp"
+#include "common/plan_checks.hpp"
+#include "common/shadow_data.hpp"
 #include "tiled_lighting_pass.hpp"
 
 namespace antumbra::passes {
@@ -62,6 +65,55 @@ std::vector<fg::ParamDesc> pcss_params() {
   };
 }
 
+// What the shadow mode needs bound, checked by the compiler (validate) rather than when the
+// executor prepares the pass (render), so that both accept the same graphs.
+void check(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& graph,
+           fg::Diagnostics& diagnostics) {
+  const ShadowMode mode = TiledLightingPass::mode_of(pass);
+  const std::string mode_at = pass.type == TiledLightingPass::kType ? "/params/shadows" : "/type";
+  const auto error = [&](const char* code, const std::string& message, const std::string& at) {
+    add_pass_error(graph, pass, code, message, at, diagnostics);
+  };
+  const auto* atlas = bound_resource(pass, plan, "atlas");
+  const auto* shadow_data = bound_resource(pass, plan, "shadowData");
+  if ((atlas == nullptr) != (shadow_data == nullptr)) {
+    error("TL001", "bind both `atlas` and `shadowData`, or neither",
+          atlas == nullptr ? "/in/shadowData" : "/in/atlas");
+  }
+  const bool needs_atlas =
+      mode == ShadowMode::hard || mode == ShadowMode::pcf || mode == ShadowMode::pcss;
+  if (needs_atlas && (atlas == nullptr || shadow_data == nullptr)) {
+    error("TL002",
+          "shadows = " + std::string(to_string(mode)) +
+              " needs the `atlas` and `shadowData` inputs",
+          mode_at);
+  }
+  if (atlas != nullptr && shadow_data != nullptr && mode != ShadowMode::none &&
+      shadow_data->buffer_size < shadow_data_bytes(atlas->layers)) {
+    error("TL003",
+          "`shadowData` ('" + shadow_data->name + "') holds " +
+              std::to_string(shadow_data->buffer_size) + " bytes; an atlas of " +
+              std::to_string(atlas->layers) + " layers needs " +
+              std::to_string(shadow_data_bytes(atlas->layers)),
+          "/in/shadowData");
+  }
+  if (mode != ShadowMode::layered) return;
+  const auto* table = bound_resource(pass, plan, "layerTable");
+  const auto* shadow = bound_resource(pass, plan, "shadow");
+  if (table == nullptr || shadow == nullptr) {
+    error("TL004",
+          std::string("shadows = layered needs the `layerTable` and `shadow` inputs; `") +
+              (table == nullptr ? "layerTable" : "shadow") + "` is not bound",
+          mode_at);
+  }
+  if (table != nullptr && table->buffer_size < kLayerTableBytes) {
+    error("TL005",
+          "`layerTable` ('" + table->name + "') holds " + std::to_string(table->buffer_size) +
+              " bytes; it must hold at least " + std::to_string(kLayerTableBytes),
+          "/in/layerTable");
+  }
+}
+
 }  // namespace
 
 fg::PassDesc TiledLightingPass::describe() {
@@ -107,6 +159,7 @@ fg::PassDesc TiledLightingPass::describe() {
        .default_value = "pcf",
        .choices = {"hard", "pcf"},
        .description = "Layered mode: atlas lookup for lights without a layer (needs the atlas)."});
+  desc.check = &check;
   return desc;
 }
 
@@ -117,6 +170,7 @@ fg::PassDesc TiledLightingPass::describe_hard() {
   desc.ports = lighting_ports();
   for (auto& port : atlas_ports(false)) desc.ports.push_back(std::move(port));
   desc.params = lighting_params();
+  desc.check = &check;
   return desc;
 }
 

@@ -14,7 +14,6 @@ namespace antumbra::passes {
 namespace {
 
 constexpr std::uint32_t kTileSize = 16;        // TILE_SIZE in tiled_lighting.comp
-constexpr std::uint32_t kMaxShadowTexels = 8;  // MAX_SHADOW_TEXELS in layered.glsl
 
 struct PushConstants {
   float exposure;
@@ -39,15 +38,6 @@ enum Binding : std::uint32_t {
   kShadow = 9,
   kColour = 10,
 };
-
-[[noreturn]] void fail(const fgvk::PrepareContext& context, const char* code,
-                       const std::string& message) {
-  fg::Diagnostics diagnostics;
-  diagnostics.add({code, fg::Severity::error,
-                   "pass '" + context.pass.name + "' (" + context.pass.type + "): " + message, "",
-                   "", 0, 0});
-  throw fgvk::PassError(message, diagnostics);
-}
 
 int kernel_of(const fg::PlanPass& pass) {
   const std::string kernel = param_string(pass, "kernel");
@@ -92,44 +82,14 @@ TiledLightingPass::TiledLightingPass(const fg::PlanPass& pass) : mode_(mode_of(p
 }
 
 void TiledLightingPass::prepare(fgvk::PrepareContext& context) {
+  // What must be bound for the mode is checked by the compiler (tiled_lighting_desc.cpp):
+  // a plan that reaches here has it.
   const auto& b = context.bindings;
   const auto* atlas = b.image("atlas");
-  const auto* shadow_data = b.buffer("shadowData");
-  const bool needs_atlas =
-      mode_ == ShadowMode::hard || mode_ == ShadowMode::pcf || mode_ == ShadowMode::pcss;
-  if ((atlas == nullptr) != (shadow_data == nullptr)) {
-    fail(context, "TL001", "bind both `atlas` and `shadowData`, or neither");
-  }
-  if (needs_atlas && atlas == nullptr) {
-    fail(context, "TL002",
-         "shadows = " + std::string(to_string(mode_)) +
-             " needs the `atlas` and `shadowData` inputs");
-  }
   // Layered mode uses the atlas only as the fallback of layer-less lights; other modes
   // ignore an atlas bound without a use (it is still read-declared, which is harmless).
   has_atlas_ = atlas != nullptr && mode_ != ShadowMode::none;
-  if (has_atlas_ && shadow_data->size < shadow_data_bytes(atlas->layers)) {
-    fail(context, "TL003",
-         "`shadowData` holds " + std::to_string(shadow_data->size) + " bytes; an atlas of " +
-             std::to_string(atlas->layers) + " layers needs " +
-             std::to_string(shadow_data_bytes(atlas->layers)));
-  }
-  has_colour_ = false;
-  if (mode_ == ShadowMode::layered) {
-    const auto* table = b.buffer("layerTable");
-    const auto* shadow = b.image("shadow");
-    if (table == nullptr || shadow == nullptr) {
-      fail(context, "TL004", "shadows = layered needs the `layerTable` and `shadow` inputs");
-    }
-    if (table->size < kLayerTableBytes) {
-      fail(context, "TL005",
-           "`layerTable` must hold at least " + std::to_string(kLayerTableBytes) + " bytes");
-    }
-    if (shadow->layers > kMaxShadowTexels) {
-      fail(context, "TL006", "`shadow` has more than 8 array layers (32 shadow layers)");
-    }
-    has_colour_ = b.image("colour") != nullptr;
-  }
+  has_colour_ = mode_ == ShadowMode::layered && b.image("colour") != nullptr;
 
   constexpr VkShaderStageFlags kComp = VK_SHADER_STAGE_COMPUTE_BIT;
   gpu::DescriptorSetLayoutBuilder builder;

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "antumbra/fg/compiler.hpp"
+#include "antumbra/fg/pass_reference.hpp"
 #include "antumbra/fg/plan_io.hpp"
 #include "antumbra/fg/schema.hpp"
 #include "register_builtin_passes.hpp"
@@ -54,6 +55,16 @@ TEST(BuiltinGraphs, CommittedSchemaIsWhatTheRegistryGenerates) {
          "data/schema/framegraph.schema.json` (or ANTUMBRA_UPDATE_GOLDEN=1)";
 }
 
+TEST(BuiltinGraphs, CommittedPassReferenceIsWhatTheRegistryGenerates) {
+  const auto registry = passes::builtin_pass_registry();
+  const std::string generated = fg::pass_reference_markdown(registry.reflection());
+  const fs::path committed = kRoot / "docs" / "passes.md";
+  if (update_golden()) std::ofstream(committed, std::ios::binary) << generated;
+  EXPECT_EQ(read_file(committed), generated)
+      << "docs/passes.md is stale: run `antumbra passes --format markdown > docs/passes.md` "
+         "(or ANTUMBRA_UPDATE_GOLDEN=1)";
+}
+
 TEST(BuiltinGraphs, DeferredPlanMatchesGolden) {
   const auto registry = passes::builtin_pass_registry();
   const fs::path graph = kRoot / "data" / "graphs" / "deferred.json";
@@ -66,13 +77,14 @@ TEST(BuiltinGraphs, DeferredPlanMatchesGolden) {
     fs::create_directories(golden.parent_path());
     std::ofstream(golden, std::ios::binary) << text;
   }
-  EXPECT_EQ(read_file(golden), text) << "plan changed; review and regenerate with ANTUMBRA_UPDATE_GOLDEN=1";
+  EXPECT_EQ(read_file(golden), text)
+      << "plan changed; review and regenerate with ANTUMBRA_UPDATE_GOLDEN=1";
 }
 
 TEST(BuiltinGraphs, DeferredPlanOrderAndBarriers) {
   const auto registry = passes::builtin_pass_registry();
-  const auto result =
-      fg::compile_file((kRoot / "data" / "graphs" / "deferred.json").string(), registry.reflection());
+  const auto result = fg::compile_file((kRoot / "data" / "graphs" / "deferred.json").string(),
+                                       registry.reflection());
   ASSERT_TRUE(result.ok());
   const auto& plan = result.value();
   ASSERT_EQ(plan.passes.size(), 3u);
@@ -117,6 +129,7 @@ TEST(BuiltinPasses, ParameterDefaultsAreValid) {
             << type << "." << p.name;
       }
     }
-    for (const auto& port : desc.ports) EXPECT_FALSE(port.description.empty()) << type << "." << port.name;
+    for (const auto& port : desc.ports)
+      EXPECT_FALSE(port.description.empty()) << type << "." << port.name;
   }
 }

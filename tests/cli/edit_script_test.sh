@@ -45,6 +45,22 @@ printf '{"steps": [\n  {"expect": "warning"}\n]}\n' > "$tmp/wrong.json"
 rc=$?
 [ $rc -eq 1 ] || fail "a failing expectation gave exit $rc, not 1"
 grep -q "wrong.json:2:[0-9]*: error\[ED100\]" "$log" || fail "the failure is not located"
+# The default scene from its own camera: drags land under the cursor (within 5 cm), and
+# a drag to a point off the light's plane fails, located, instead of claiming success.
+cp "$source_root/tests/data/editor/script/atrium_drag.json" "$source_root/tests/data/editor/script/off_plane_drag.json" "$tmp/"
+"$antumbra" edit --headless --validation --size 160x90 --script "$tmp/atrium_drag.json" >"$log" 2>&1
+rc=$?
+[ $rc -eq 0 ] || fail "the atrium drags exited with $rc"
+grep -q "0 step(s) failed" "$log" || fail "an atrium drag did not land under the cursor"
+grep -q "dragging on the horizontal plane y = 2.30 m" "$log" || fail "the drag does not say its plane"
+grep -q "Validation Error" "$log" && fail "validation errors"
+"$antumbra" edit --headless --size 160x90 --script "$tmp/off_plane_drag.json" >"$log" 2>&1
+rc=$?
+[ $rc -eq 1 ] || fail "a drag to a point off the plane gave exit $rc, not 1"
+grep -q "off_plane_drag.json:5:[0-9]*: error\[ED100\]: .*m from the target" "$log" \
+  || fail "the missed target is not a located ED100"
+grep -q "unsaved changes to .*atrium.json were not saved" "$log" || fail "no unsaved-changes warning"
+
 # A script runs headless only (the windowed editor has its own test, editor_window_test.sh).
 "$antumbra" edit --script "$tmp/edit.json" >"$log" 2>&1
 [ $? -eq 2 ] || fail "edit --script without --headless should be a usage error"

@@ -53,6 +53,11 @@ cp "$2/scene.json" "$2/after-drag.json"
 step key ctrl+z
 step key ctrl+s
 cp "$2/scene.json" "$2/after-undo.json"
+# The whole drag between two frames (press, move, release in one burst, as a fast hand
+# or a slow lavapipe frame makes it): the queued press is replayed where it happened.
+step mousemove 480 465 mousedown 1 mousemove 580 465 mouseup 1
+step key ctrl+s
+cp "$2/scene.json" "$2/after-burst.json"
 # Resizing (no window manager under Xvfb: X resizes directly): the graph follows.
 xdotool search --name "antumbra edit" windowsize 800 450
 wait_for "graph resized to 800x450"
@@ -82,4 +87,9 @@ read -r x y z <<<"$(low_position)"
 echo "after one undo: $x $y $z"
 awk -v x="$x" -v y="$y" -v z="$z" 'BEGIN { exit !(x == 0 && y == 0.5 && z == 2) }' \
   || fail "one Ctrl+Z did not take the whole drag back: $x $y $z"
+cp "$tmp/after-burst.json" "$tmp/scene.json"
+read -r x y z <<<"$(low_position)"
+echo "after a drag within one frame: $x $y $z"
+awk -v x="$x" -v y="$y" -v z="$z" 'BEGIN { exit !(x > 0.9 && x < 1.7 && y == 0.5 && z > 1.8 && z < 2.2) }' \
+  || fail "a press, move and release between two frames was lost: $x $y $z"
 echo "PASS: editor input test in $(awk "BEGIN { printf \"%.1f\", $end - $start }") s"

@@ -154,6 +154,19 @@ TEST(SceneDocument, EveryFieldEditsUndoesAndRedoes) {
   expect_engine_agrees(doc);
 }
 
+TEST(SceneDocument, DraggedPositionsAreWrittenTo4Decimals) {
+  // A drag leaves float noise (-2.9999998); the file gets 0.1 mm, its layout kept.
+  SceneDocument doc = load(fixture("lamps.json"));
+  ASSERT_TRUE(doc.set_position(0, {-2.9999998f, 2.8f, -4.000001f}));
+  ASSERT_TRUE(doc.set_intensity(1, 7.123456f));
+  const std::string text = doc.to_text();
+  EXPECT_EQ(fg::Json::parse(text)["lights"][0]["position"], fg::Json::parse("[-3.0, 2.8, -4.0]"))
+      << text;
+  EXPECT_EQ(fg::Json::parse(text)["lights"][1]["intensity"], fg::Json::parse("7.1235")) << text;
+  EXPECT_EQ(text.find("9999"), std::string::npos) << text;
+  EXPECT_EQ(text.find("0000"), std::string::npos) << text;
+}
+
 TEST(SceneDocument, SettingTheSameValueIsNoStep) {
   SceneDocument doc = load(fixture("lamps.json"));
   const EditResult result = doc.set_range(0, 2.0f);

@@ -93,6 +93,36 @@ TEST_F(ShaderCompilerTest, ErrorInIncludeReportsTheIncludedFileAndLine) {
   EXPECT_EQ(error->severity, fg::Severity::error);
 }
 
+TEST_F(ShaderCompilerTest, AMissingSemicolonIsReportedOnItsLineWithTheSourceAndACaret) {
+  write(root() / "shaders" / "semi.frag",
+        "#version 460\nlayout(location = 0) out vec4 colour;\nvoid main() {\n  float x = 1.0\n\n"
+        "  colour = vec4(x);\n}\n");
+  ShaderCompiler compiler(options());
+  auto result = compiler.compile({root() / "shaders" / "semi.frag", {}, {}, "main"});
+  ASSERT_FALSE(result.ok());
+  const fg::Diagnostic* error = result.diagnostics().find(shader_codes::kCompile);
+  ASSERT_NE(error, nullptr) << result.diagnostics().to_text();
+  EXPECT_EQ(error->line, 4) << result.diagnostics().to_text();
+  EXPECT_EQ(error->column, 16) << result.diagnostics().to_text();
+  EXPECT_EQ(error->excerpt, "  float x = 1.0");
+  EXPECT_NE(fg::format_text(*error).find("\n  |   float x = 1.0\n  |                ^"),
+            std::string::npos)
+      << fg::format_text(*error);
+}
+
+TEST_F(ShaderCompilerTest, AnErrorInsideALineGetsACaretUnderItsToken) {
+  write(root() / "shaders" / "word.frag",
+        "#version 460\nvoid main() {\n  this is not glsl;\n}\n");
+  ShaderCompiler compiler(options());
+  auto result = compiler.compile({root() / "shaders" / "word.frag", {}, {}, "main"});
+  ASSERT_FALSE(result.ok());
+  const fg::Diagnostic* error = result.diagnostics().find(shader_codes::kCompile);
+  ASSERT_NE(error, nullptr);
+  EXPECT_EQ(error->line, 3) << result.diagnostics().to_text();
+  EXPECT_EQ(error->excerpt, "  this is not glsl;");
+  EXPECT_GT(error->column, 2) << result.diagnostics().to_text();
+}
+
 TEST_F(ShaderCompilerTest, MissingIncludeAndUnknownStage) {
   write(root() / "shaders" / "bad.frag",
         "#version 460\n#include \"nowhere.glsl\"\nvoid main() {}\n");

@@ -162,6 +162,17 @@ TEST(Compile, SuggestionsReachTheUser) {
             "(at /passes/2/type)");
 }
 
+TEST(Compile, ATypoInThePassThatWritesTheOutputIsTheOnlyError) {
+  // The tonemap pass writes the output: with its type misspelt, "no pass writes the
+  // output" (FG073) would only repeat the typo.
+  std::string text = testing::read_text(data_path("graphs/good/deferred.json"));
+  text.replace(text.find("\"tonemap\",\n      \"params\""), 9, "\"tonemop\"");
+  auto r = testing::compile_json(text);
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.diagnostics().error_count(), 1u) << r.diagnostics().to_text();
+  EXPECT_EQ(r.diagnostics().find(codes::kOutputNotProduced), nullptr);
+}
+
 TEST(Compile, GraphBuiltInCode) {
   GraphDesc g;
   g.name = "code";

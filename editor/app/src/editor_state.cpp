@@ -1,8 +1,10 @@
 #include "editor_state.hpp"
 
+#include <chrono>
 #include <cstdio>
 
 #include "antumbra/editor/atomic_file.hpp"
+#include "antumbra/editor/recovery_file.hpp"
 #include "antumbra/fg/json_document.hpp"
 #include "antumbra/fg/plan_diff.hpp"
 #include "antumbra/gpu/timing.hpp"
@@ -56,6 +58,7 @@ void EditorState::poll_files() {
   if (changed.empty()) return;
   since_change_.emplace();
   bool shaders = false;
+  edited_shaders_.clear();
   for (const auto& path : changed) {
     if (path == scene_.file()) {
       reload_scene_file();
@@ -63,6 +66,7 @@ void EditorState::poll_files() {
       reload_graph_file();
     } else {
       shaders = true;
+      edited_shaders_.push_back(path.string());
     }
   }
   if (shaders) {
@@ -272,10 +276,14 @@ void EditorState::reload_graph() {
   } else {
     char ms[32];
     std::snprintf(ms, sizeof ms, "%.1f ms", clock.elapsed_ms());
-    reload_summary_ =
-        std::string("reloaded in ") + ms +
-        (had_plan ? ": " + fg::to_text(fg::diff_plans(before, session_.executor().plan()))
-                  : std::string());
+    std::string diff_text;
+    if (had_plan) {
+      auto diff = fg::diff_plans(before, session_.executor().plan());
+      diff.passes_rebuilt = session_.executor().passes_reading(edited_shaders_);
+      diff_text = ": " + fg::to_text(diff);
+    }
+    reload_summary_ = std::string("reloaded in ") + ms + diff_text;
+    edited_shaders_.clear();
   }
   status_.set_cap(graph_cap());
 }
@@ -361,6 +369,25 @@ void EditorState::refresh_timings() {
 void EditorState::close() {
   scene_.close();
   graph_.close();
+}
+
+std::vector<std::string> EditorState::close_keeping_unsaved() {
+  std::vector<std::string> kept;
+  // Far enough ahead that the autosave interval has passed: the write happens now.
+  const auto later = editor::RecoveryFile::Clock::now() + std::chrono::hours(24);
+  const auto keep = [&](auto& document) {
+    if (!document.dirty()) {
+      document.close();
+      return;
+    }
+    document.autosave_if_due(later);
+    kept.push_back("unsaved changes to " + document.file().string() + " were not saved; kept in " +
+                   editor::RecoveryFile::path_for(document.file()).string() +
+                   " (the editor offers them when it opens the file)");
+  };
+  keep(scene_);
+  keep(graph_);
+  return kept;
 }
 
 }  // namespace antumbra::editor_app

@@ -89,6 +89,9 @@ class EditorState {
   bool save();  // atomic, both documents; false (and message()) when it failed
   void autosave();
   void close();  // a clean end: recovery files go
+  // An end nobody confirmed (--frames ran out): unsaved edits are written to recovery
+  // files instead of being dropped. Returns a line per document kept that way.
+  std::vector<std::string> close_keeping_unsaved();
 
   [[nodiscard]] const fg::Diagnostics& diagnostics() const { return diagnostics_; }
   [[nodiscard]] const std::string& reload_summary() const { return reload_summary_; }
@@ -124,6 +127,7 @@ class EditorState {
   std::string drag_note_;
   fg::Diagnostics diagnostics_;
   std::string reload_summary_;
+  std::vector<std::string> edited_shaders_;  // the shader files behind the pending reload
   std::string message_;
   std::vector<app::PassTiming> timings_;
   watch::FileWatcher watcher_;

@@ -1,5 +1,8 @@
 #include "window.hpp"
 
+#include <cstdint>
+#include <limits>
+
 #include <stdexcept>
 
 #define GLFW_INCLUDE_VULKAN
@@ -52,17 +55,28 @@ Window::Window(int width, int height, const std::string& title) {
   glfwSetWindowUserPointer(window_, this);
   glfwSetKeyCallback(window_, &Window::on_key);
   glfwSetMouseButtonCallback(window_, &Window::on_mouse_button);
+  glfwSetCursorPosCallback(window_, &Window::on_cursor);
+  glfwGetCursorPos(window_, &cursor_x_, &cursor_y_);
+}
+
+void Window::on_cursor(GLFWwindow* window, double x, double y) {
+  auto* self = static_cast<Window*>(glfwGetWindowUserPointer(window));
+  if (self == nullptr) return;
+  self->cursor_x_ = x;
+  self->cursor_y_ = y;
 }
 
 void Window::on_mouse_button(GLFWwindow* window, int button, int action, int /*mods*/) {
   auto* self = static_cast<Window*>(glfwGetWindowUserPointer(window));
   if (self == nullptr || button < 0 || button >= QueuedMouse::kButtons) return;
-  MouseButtonEvent event{button, action == GLFW_PRESS, 0.0, 0.0};
-  glfwGetCursorPos(window, &event.x, &event.y);
-  self->mouse_events_.push_back(event);
+  // The cursor as the event stream had it when the button changed: glfwGetCursorPos asks
+  // the X server for where the pointer is now, after every motion still queued.
+  self->mouse_events_.push_back(
+      {button, action == GLFW_PRESS, self->cursor_x_, self->cursor_y_, self->sequence_++});
 }
 
 std::optional<QueuedMouse> Window::next_mouse_event() {
+  delivered_now_.reset();
   if (mouse_events_.empty()) {
     // Caught up: the live state is what was last delivered.
     for (int b = 0; b < QueuedMouse::kButtons; ++b) {
@@ -72,6 +86,7 @@ std::optional<QueuedMouse> Window::next_mouse_event() {
   }
   const MouseButtonEvent event = mouse_events_.front();
   mouse_events_.pop_front();
+  delivered_now_ = event.sequence;
   shown_mouse_.down[event.button] = event.pressed;
   shown_mouse_.x = event.x;
   shown_mouse_.y = event.y;
@@ -81,13 +96,24 @@ std::optional<QueuedMouse> Window::next_mouse_event() {
 void Window::on_key(GLFWwindow* window, int key, int /*scancode*/, int action, int mods) {
   if (action != GLFW_PRESS) return;
   auto* self = static_cast<Window*>(glfwGetWindowUserPointer(window));
-  if (self != nullptr) self->presses_.push_back({key, mods});
+  if (self != nullptr) self->presses_.push_back({key, mods, self->sequence_++});
 }
 
 std::vector<KeyPress> Window::take_key_presses() {
-  std::vector<KeyPress> presses;
-  presses.swap(presses_);
-  return presses;
+  // Keys and the mouse in the order they came: a key pressed after a queued click waits
+  // until the frame after that click is replayed (Ctrl+S after a fast drag saves the
+  // drag's end, not its start).
+  std::uint64_t limit = std::numeric_limits<std::uint64_t>::max();
+  if (delivered_now_) {
+    limit = *delivered_now_;
+  } else if (!mouse_events_.empty()) {
+    limit = mouse_events_.front().sequence;
+  }
+  std::vector<KeyPress> ready;
+  std::vector<KeyPress> later;
+  for (const KeyPress& press : presses_) (press.sequence < limit ? ready : later).push_back(press);
+  presses_.swap(later);
+  return ready;
 }
 
 Window::~Window() {

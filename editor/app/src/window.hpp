@@ -3,6 +3,7 @@
 // GLFW is initialised once per Window; the surface belongs to the instance, so it must
 // be destroyed before the gpu::Context that owns the instance.
 
+#include <cstdint>
 #include <deque>
 #include <optional>
 #include <string>
@@ -18,6 +19,7 @@ namespace antumbra::editor_app {
 struct KeyPress {
   int key = 0;
   int mods = 0;
+  std::uint64_t sequence = 0;  // order among key and mouse button events
 };
 
 // A mouse button going down or up, where the cursor was then (window coordinates).
@@ -26,6 +28,7 @@ struct MouseButtonEvent {
   bool pressed = false;
   double x = 0.0;
   double y = 0.0;
+  std::uint64_t sequence = 0;
 };
 
 // The mouse state a frame shows ImGui when queued button events are pending: one event a
@@ -69,11 +72,16 @@ class Window {
  private:
   static void on_key(GLFWwindow* window, int key, int scancode, int action, int mods);
   static void on_mouse_button(GLFWwindow* window, int button, int action, int mods);
+  static void on_cursor(GLFWwindow* window, double x, double y);
 
   GLFWwindow* window_ = nullptr;
   std::vector<KeyPress> presses_;
   std::deque<MouseButtonEvent> mouse_events_;
   QueuedMouse shown_mouse_;  // the buttons as ImGui last saw them through the queue
+  std::uint64_t sequence_ = 0;                 // the next event's place in the order
+  std::optional<std::uint64_t> delivered_now_;  // the mouse event replayed this frame
+  double cursor_x_ = 0.0;    // the cursor in event order (window coordinates)
+  double cursor_y_ = 0.0;
 };
 
 // The window's VkSurfaceKHR, destroyed with the object (before the instance goes).

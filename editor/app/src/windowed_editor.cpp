@@ -292,7 +292,13 @@ int run_windowed_editor(const WindowedOptions& options) {
     }
     if (options.frames > 0 && presented >= options.frames) quit = true;
   }
-  state.close();
+  if (options.frames > 0 && presented >= options.frames) {
+    for (const auto& line : state.close_keeping_unsaved()) {
+      std::printf("editor: warning: %s\n", line.c_str());
+    }
+  } else {
+    state.close();
+  }
   session.gpu().wait_idle();
   std::printf("editor: %d frame(s) presented, %u swapchain rebuild(s)\n", presented,
               presenter.recreations());

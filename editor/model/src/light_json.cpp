@@ -169,11 +169,11 @@ std::vector<scene::PointLight> read_lights(const Json& root, const fg::JsonDocum
 
 Json tidy(float value) {
   if (!std::isfinite(value)) return Json(value);
-  char buffer[32];
-  const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, value);
-  double shortest = value;
-  if (ec == std::errc()) std::from_chars(buffer, end, shortest);
-  return Json(shortest);
+  // 4 decimals (0.1 mm for positions): a drag's float noise such as -2.9999998 is not
+  // written into the artist's file; the rounded double prints as its shortest form.
+  constexpr double kScale = 1e4;
+  const double rounded = std::round(static_cast<double>(value) * kScale) / kScale;
+  return Json(rounded == 0.0 ? 0.0 : rounded);  // never "-0.0"
 }
 
 Json tidy(glm::vec3 value) {

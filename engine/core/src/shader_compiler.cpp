@@ -126,6 +126,85 @@ fg::Diagnostic make_error(const char* code, std::string message, const std::stri
   return diagnostic;
 }
 
+std::vector<std::string> split_lines(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  std::string line;
+  while (std::getline(in, line)) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    lines.push_back(line);
+  }
+  return lines;
+}
+
+bool blank(const std::string& line) {
+  return line.find_first_not_of(" \t") == std::string::npos;
+}
+
+// glslang reports a syntax error at the token where parsing failed, often without naming
+// it (''); when that token starts its line and the previous non-blank line does not end
+// a statement or block (a missing ';' or ')'), the mistake is at the end of that previous
+// line. The diagnostic then points there, with the source line and the column of the
+// token (or of the line's end) for the caret.
+void point_into_source(fg::Diagnostic& diagnostic, const std::string& text) {
+  const auto lines = split_lines(text);
+  if (diagnostic.line < 1 || diagnostic.line > static_cast<int>(lines.size())) return;
+  auto index = static_cast<std::size_t>(diagnostic.line - 1);
+  std::string token;
+  const auto open = diagnostic.message.find('\'');
+  const auto close = open == std::string::npos ? open : diagnostic.message.find('\'', open + 1);
+  if (close != std::string::npos) token = diagnostic.message.substr(open + 1, close - open - 1);
+  const std::string& line = lines[index];
+  const auto first = line.find_first_not_of(" \t");
+  const bool starts_line = token.empty() || (first != std::string::npos &&
+                                              line.compare(first, token.size(), token) == 0);
+  if (diagnostic.message.find("syntax error") != std::string::npos && starts_line) {
+    std::size_t previous = index;
+    while (previous > 0 && blank(lines[previous - 1])) --previous;
+    const auto unfinished = [](const std::string& source_line) {
+      const auto last = source_line.find_last_not_of(" \t");
+      return last != std::string::npos && source_line[last] != ';' && source_line[last] != '{' &&
+             source_line[last] != '}' &&
+             source_line.compare(source_line.find_first_not_of(" \t"), 1, "#") != 0 &&
+             source_line.find("//") == std::string::npos;
+    };
+    if (previous > 0 && unfinished(lines[previous - 1])) {
+      index = previous - 1;
+      diagnostic.line = static_cast<int>(index) + 1;
+      const std::string& before = lines[index];
+      diagnostic.column = static_cast<int>(before.find_last_not_of(" \t") + 2);
+      diagnostic.message += " (at the end of this line: a missing ';' or ')'?)";
+      diagnostic.excerpt = before;
+      return;
+    }
+  }
+  diagnostic.excerpt = line;
+  const auto at = token.empty() ? std::string::npos : line.find(token);
+  if (at != std::string::npos) {
+    diagnostic.column = static_cast<int>(at) + 1;
+  } else if (first != std::string::npos) {
+    diagnostic.column = static_cast<int>(first) + 1;
+  }
+}
+
+// Source lines and carets for every located diagnostic: the top-level file's text is at
+// hand, included files are read again.
+void add_excerpts(fg::Diagnostics& diagnostics, const std::string& top_name,
+                  const std::string& top_source) {
+  fg::Diagnostics out;
+  for (fg::Diagnostic d : diagnostics) {
+    if (d.line > 0) {
+      if (d.file == top_name) {
+        point_into_source(d, top_source);
+      } else if (const auto text = detail::read_text(d.file)) {
+        point_into_source(d, *text);
+      }
+    }
+    out.add(std::move(d));
+  }
+  diagnostics = std::move(out);
+}
+
 }  // namespace
 
 fg::Diagnostics parse_glslang_log(std::string_view log, const std::string& fallback_file) {
@@ -259,12 +338,14 @@ fg::Result<ShaderBinary> ShaderCompiler::compile_glsl(const std::string& source,
   fg::Diagnostics diagnostics;
   if (!shader.parse(GetDefaultResources(), 460, false, messages, includer)) {
     diagnostics = parse_glslang_log(shader.getInfoLog(), name);
+    add_excerpts(diagnostics, name, source);
     if (!diagnostics.has_errors()) {
       diagnostics.add(make_error(shader_codes::kCompile, "glslang failed without a message", name));
     }
     return diagnostics;
   }
   diagnostics = parse_glslang_log(shader.getInfoLog(), name);
+  add_excerpts(diagnostics, name, source);
 
   glslang::TProgram program;
   program.addShader(&shader);

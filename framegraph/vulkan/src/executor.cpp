@@ -328,4 +328,18 @@ std::vector<std::string> Executor::shader_files() const {
   return files;
 }
 
+std::vector<std::string> Executor::passes_reading(const std::vector<std::string>& files) const {
+  std::vector<std::string> names;
+  if (!state_) return names;
+  for (std::size_t i = 0; i < state_->passes.size(); ++i) {
+    const auto used = state_->passes[i]->shader_files();
+    if (std::any_of(used.begin(), used.end(), [&](const std::string& f) {
+          return std::find(files.begin(), files.end(), f) != files.end();
+        })) {
+      names.push_back(state_->plan.passes[i].name);
+    }
+  }
+  return names;
+}
+
 }  // namespace antumbra::fgvk

@@ -23,9 +23,13 @@ struct Diagnostic {
   std::string pointer;  // JSON Pointer into the document, "" for the root
   int line = 0;         // 1-based; 0 when unknown
   int column = 0;       // 1-based; 0 when unknown
+  // The source line the diagnostic points at, printed under it with a caret at `column`
+  // (shader errors: the GLSL line); empty when there is nothing to show.
+  std::string excerpt;
 };
 
-// "file:line:col: error[FG012]: message (at /passes/2/in/depth)"
+// "file:line:col: error[FG012]: message (at /passes/2/in/depth)", then, with an excerpt,
+// "  | <source line>" and "  | ^" under the column.
 std::string format_text(const Diagnostic& diagnostic);
 nlohmann::json to_json(const Diagnostic& diagnostic);
 

@@ -20,6 +20,9 @@ struct PlanDiff {
   std::vector<std::string> passes_changed;   // same name: other type, parameters or bindings
   std::vector<std::string> passes_culled;    // executed before, culled now
   std::vector<std::string> passes_unculled;  // culled before, executed now
+  // Filled by whoever knows which shader sources changed (the plan does not): passes
+  // whose pipelines were rebuilt from edited shaders, with the plan otherwise the same.
+  std::vector<std::string> passes_rebuilt;
   std::vector<std::string> resources_added;
   std::vector<std::string> resources_removed;
   std::vector<std::string> resources_reallocated;  // same name, another description

@@ -64,6 +64,9 @@ class Executor {
   [[nodiscard]] std::uint64_t resource_bytes() const;
   // Every shader file the passes read (for file watching).
   [[nodiscard]] std::vector<std::string> shader_files() const;
+  // The passes (names, in execution order) that read any of `files` (reload summaries).
+  [[nodiscard]] std::vector<std::string> passes_reading(
+      const std::vector<std::string>& files) const;
 
  private:
   struct State;

@@ -1,0 +1,33 @@
+#include "plan_checks.hpp"
+
+namespace antumbra::passes {
+
+int bound_index(const fg::PlanPass& pass, std::string_view port) {
+  for (const auto& b : pass.bindings) {
+    if (b.port == port) return b.resource;
+  }
+  return -1;
+}
+
+const fg::PlanResource* bound_resource(const fg::PlanPass& pass, const fg::Plan& plan,
+                                       std::string_view port) {
+  const int index = bound_index(pass, port);
+  return index < 0 ? nullptr : &plan.resources[static_cast<std::size_t>(index)];
+}
+
+void add_pass_error(const fg::GraphDesc& graph, const fg::PlanPass& pass, const char* code,
+                    const std::string& message, const std::string& suffix,
+                    fg::Diagnostics& diagnostics) {
+  // A suffix into a part of the pass the file does not spell out (an omitted "in" entry)
+  // has no position of its own: the pass's position is the nearest.
+  std::string pointer = "/passes/" + std::to_string(pass.source_index);
+  if (graph.document.root().is_object() && !suffix.empty()) {
+    const nlohmann::json::json_pointer at(pointer + suffix);
+    if (graph.document.root().contains(at)) pointer += suffix;
+  }
+  diagnostics.add(graph.document.make(code, fg::Severity::error,
+                                      "pass '" + pass.name + "' (" + pass.type + "): " + message,
+                                      pointer));
+}
+
+}  // namespace antumbra::passes

@@ -1,0 +1,25 @@
+#pragma once
+// Helpers for pass checks (fg::PassDesc::check): rules about what a pass is bound to that
+// the Vulkan-free compiler runs, so that `antumbra validate` rejects every graph that
+// `render` would reject before touching the GPU, located at the pass in the file.
+
+#include <string>
+#include <string_view>
+
+#include "antumbra/fg/graph_desc.hpp"
+
+namespace antumbra::passes {
+
+// The index of the resource bound to `port` of `pass`, or -1 when the port is unbound.
+int bound_index(const fg::PlanPass& pass, std::string_view port);
+// The resource bound to `port`, or nullptr.
+const fg::PlanResource* bound_resource(const fg::PlanPass& pass, const fg::Plan& plan,
+                                       std::string_view port);
+
+// An error about `pass`, at "/passes/<its index>" + `suffix` in the graph file (e.g.
+// "/params/shadows", "/in/layerTable"), prefixed with the pass's name and type.
+void add_pass_error(const fg::GraphDesc& graph, const fg::PlanPass& pass, const char* code,
+                    const std::string& message, const std::string& suffix,
+                    fg::Diagnostics& diagnostics);
+
+}  // namespace antumbra::passes

@@ -1,0 +1,152 @@
+// `validate` means `render` works: mutants of every shipped graph (an input unbound, a
+// pass disabled, every choice of an enumeration, a flipped flag, numbers at their
+// range's ends, a resource with one layer) that the Vulkan-free compiler accepts -- what
+// `antumbra validate` runs -- must also load on the device and render a frame without
+// errors. Rules that only the executor knew (TL004: layered shadows without their
+// inputs) were how a graph CI called valid failed to render.
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "antumbra/fg/compiler.hpp"
+#include "antumbra/fg/json_document.hpp"
+#include "register_builtin_passes.hpp"
+#include "render_test_support.hpp"
+
+using namespace antumbra;
+using namespace antumbra::render_testing;
+
+namespace {
+
+struct Mutant {
+  std::string what;
+  fg::Json json;
+};
+
+// One change at a time to the graph's JSON, guided by the registry's reflection.
+std::vector<Mutant> mutants_of(const fg::Json& graph, const fg::Registry& registry) {
+  std::vector<Mutant> out;
+  const auto add = [&](std::string what, const auto& change) {
+    fg::Json copy = graph;
+    change(copy);
+    out.push_back({std::move(what), std::move(copy)});
+  };
+  const auto& passes = graph.at("passes");
+  for (std::size_t i = 0; i < passes.size(); ++i) {
+    const auto& pass = passes[i];
+    const std::string name = pass.value("name", std::to_string(i));
+    if (pass.contains("in")) {
+      for (const auto& [port, unused] : pass["in"].items()) {
+        add(name + ": in." + port + " unbound",
+            [&, port = port](fg::Json& g) { g["passes"][i]["in"].erase(port); });
+      }
+    }
+    add(name + " disabled", [&](fg::Json& g) { g["passes"][i]["enabled"] = false; });
+    const fg::PassDesc* desc = registry.find(pass.value("type", std::string()));
+    if (desc == nullptr) continue;
+    for (const auto& param : desc->params) {
+      std::vector<fg::Json> values;
+      if (param.type == fg::ParamType::enumeration) {
+        for (const auto& c : param.choices) values.emplace_back(c);
+      } else if (param.type == fg::ParamType::boolean) {
+        values = {true, false};
+      } else if (param.type == fg::ParamType::integer) {
+        if (param.min) values.emplace_back(static_cast<int>(*param.min));
+        if (param.max) values.emplace_back(static_cast<int>(*param.max));
+      } else if (param.type == fg::ParamType::number) {
+        if (param.min) values.emplace_back(*param.min);
+        if (param.max) values.emplace_back(*param.max);
+      }
+      for (const auto& v : values) {
+        if (pass.contains("params") && pass["params"].contains(param.name) &&
+            pass["params"][param.name] == v) {
+          continue;
+        }
+        if (!pass.contains("params") && v == param.default_value) continue;
+        add(name + ": " + param.name + " = " + v.dump(),
+            [&](fg::Json& g) { g["passes"][i]["params"][param.name] = v; });
+      }
+    }
+  }
+  if (graph.contains("resources")) {
+    for (const auto& [name, resource] : graph["resources"].items()) {
+      if (!resource.is_object() || resource.value("layers", 1) <= 1) continue;
+      add(name + " with 1 layer", [&, key = name](fg::Json& g) { g["resources"][key]["layers"] = 1; });
+    }
+  }
+  return out;
+}
+
+std::string read_text(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+}  // namespace
+
+class ValidateMeansRenderTest : public RenderTest {};
+
+TEST_F(ValidateMeansRenderTest, WhatTheCompilerAcceptsTheDeviceRenders) {
+  const auto registry = passes::builtin_pass_registry();
+  std::vector<std::filesystem::path> files;
+  for (const auto& entry : std::filesystem::directory_iterator(source_dir() / "data" / "graphs")) {
+    if (entry.path().extension() == ".json") files.push_back(entry.path());
+  }
+  std::sort(files.begin(), files.end());
+  ASSERT_FALSE(files.empty());
+  constexpr VkExtent2D kTiny{48, 27};
+  OPEN_SESSION(session, kTiny);
+  // One point and one spot light: every light path, and the reference's largest faces
+  // (faceSize 4096) at a cost lavapipe can afford.
+  scene::Scene scene = load_scene(source_dir() / "tests" / "data" / "editor" / "lamps.json");
+  std::erase_if(scene.lights, [](const scene::PointLight& light) {
+    return light.name != "lamp a" && light.name != "spot";
+  });
+  ASSERT_EQ(scene.lights.size(), 2u);
+  session->set_scene(std::move(scene));
+  int accepted = 0;
+  int refused = 0;
+  for (const auto& file : files) {
+    const auto original = fg::parse_json(read_text(file), file.string());
+    ASSERT_TRUE(original.ok()) << file;
+    for (const auto& mutant : mutants_of(original->root(), registry.reflection())) {
+      SCOPED_TRACE(file.filename().string() + ": " + mutant.what);
+      const auto document = fg::parse_json(mutant.json.dump(2), file.string());
+      ASSERT_TRUE(document.ok());
+      const auto graph = fg::parse_graph(document.value());
+      if (!graph.ok()) {
+        ++refused;
+        continue;
+      }
+      fg::CompileOptions options;
+      options.viewport = {kTiny.width, kTiny.height};
+      const auto plan = fg::compile(graph.value(), registry.reflection(), options);
+      if (!plan.ok()) {
+        ++refused;
+        continue;
+      }
+      ++accepted;
+      const auto diagnostics = session->load_graph(graph.value());
+      EXPECT_FALSE(diagnostics.has_errors())
+          << "validate accepts it, render refuses it:\n"
+          << describe(diagnostics);
+      if (diagnostics.has_errors()) continue;
+      const std::size_t errors_before = session->gpu().validation_error_count();
+      EXPECT_NO_THROW(session->render(1, nullptr));
+      EXPECT_EQ(session->gpu().validation_error_count(), errors_before)
+          << "validation errors while rendering this mutant";
+    }
+  }
+  expect_no_validation_errors(*session);
+  // The mutants must exercise both sides, or the test proves nothing.
+  EXPECT_GT(accepted, 50);
+  EXPECT_GT(refused, 20);
+  std::printf("%d mutant(s) accepted and rendered, %d refused by the compiler\n", accepted,
+              refused);
+}
