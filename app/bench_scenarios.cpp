@@ -26,18 +26,23 @@ const std::vector<Technique>& techniques() {
   return kTechniques;
 }
 
-Scenario make(const std::string& table, const Technique& t, int kernel, unsigned height,
-              int lights) {
+unsigned scaled(unsigned size, double scale) {
+  return std::max(16u, static_cast<unsigned>(std::lround(size * scale)));
+}
+
+Scenario make(const std::string& table, const Technique& t, int kernel, unsigned height, int lights,
+              double scale) {
   Scenario s;
   s.table = table;
   s.technique = t.name;
   s.graph = t.graph;
   s.kernel = kernel;
-  s.height = height;
-  s.width = height * 16 / 9;
+  s.height = scaled(height, scale);
+  s.width = scaled(height * 16 / 9, scale);
+  s.face = shadow_face_size(lights, scale);
   s.lights = lights;
   s.name = table + "/" + t.name + (kernel > 0 ? "-" + std::to_string(kernel) : "") + "/" +
-           std::to_string(height) + "p" +
+           std::to_string(s.height) + "p" +
            (table == "table1" ? "" : "/" + std::to_string(lights) + "l");
   if (kernel > 0) s.overrides.push_back({t.kernel_pass, "kernel", std::to_string(kernel)});
   // Tables 1 and 2 re-render every shadow face every frame, as the seed's dynamic-light
@@ -56,14 +61,19 @@ const Technique& technique(const std::string& name) {
 
 }  // namespace
 
-std::vector<Scenario> builtin_scenarios() {
+unsigned shadow_face_size(int lights, double scale) {
+  const double face = (lights <= 64 ? 1024.0 : 512.0) * scale;
+  return std::max(16u, static_cast<unsigned>(std::lround(face / 16.0)) * 16u);
+}
+
+std::vector<Scenario> builtin_scenarios(double scale) {
   std::vector<Scenario> out;
   for (const unsigned height : {720u, 1080u}) {
     for (const auto& t : techniques()) {
       if (t.kernels.empty()) {
-        out.push_back(make("table1", t, 0, height, 16));
+        out.push_back(make("table1", t, 0, height, 16, scale));
       } else {
-        for (const int k : t.kernels) out.push_back(make("table1", t, k, height, 16));
+        for (const int k : t.kernels) out.push_back(make("table1", t, k, height, 16, scale));
       }
     }
   }
@@ -72,7 +82,7 @@ std::vector<Scenario> builtin_scenarios() {
   for (const int lights : {1, 4, 8, 12, 16, 64, 256, 1024}) {
     const std::string table = lights <= 16 ? "table2" : "lights";
     for (const char* name : {"pcss", "ssss", "ssss-min"}) {
-      out.push_back(make(table, technique(name), 11, 1080, lights));
+      out.push_back(make(table, technique(name), 11, 1080, lights, scale));
     }
   }
   return out;
@@ -108,10 +118,9 @@ std::vector<std::string> apply_overrides(fg::GraphDesc& graph,
   return unmatched;
 }
 
-void fit_shadow_resources(fg::GraphDesc& graph, int lights) {
+void fit_shadow_resources(fg::GraphDesc& graph, int lights, unsigned face) {
   constexpr int kMaxLayers = 2046;  // 341 lights x 6 faces; Vulkan guarantees 2048 layers
   const int layers = std::clamp(6 * lights, 6, kMaxLayers);
-  const std::uint32_t face = lights <= 64 ? 1024u : 512u;
   // A map derived from the atlas (shadow-min-filter) keeps its factor of the face size.
   std::uint32_t atlas_width = 0;
   for (const auto& r : graph.resources) {
@@ -123,7 +132,7 @@ void fit_shadow_resources(fg::GraphDesc& graph, int lights) {
       const std::uint32_t factor = r.name == "minDepth" && atlas_width > 0 && r.size.width > 0
                                        ? std::max(atlas_width / r.size.width, 1u)
                                        : 1u;
-      const std::uint32_t size = face / factor;
+      const std::uint32_t size = std::max(face / factor, 1u);
       r.layers = static_cast<std::uint32_t>(layers);
       r.size.relative = false;
       r.size.width = size;

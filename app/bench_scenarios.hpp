@@ -1,7 +1,8 @@
 #pragma once
 // Named benchmark scenarios: technique x kernel x resolution x light count, laid out
 // like the seed's Table 1 (techniques x kernels x 720p/1080p, 16 lights) and Table 2
-// (1..16 lights), extended to 64, 256 and 1024 lights. Plain data: tested without a
+// (1..16 lights), extended to 64, 256 and 1024 lights, at a scale that shrinks the
+// screen and the shadow atlas faces alike (lavapipe). Plain data: tested without a
 // device.
 
 #include <string>
@@ -19,20 +20,27 @@ struct ParamOverride {
 };
 
 struct Scenario {
-  std::string name;       // e.g. "table1/pcss-11/1080p"
+  std::string name;       // e.g. "table1/pcss-11/1080p"; the scaled height, e.g. "270p"
   std::string table;      // "table1", "table2", "lights"
   std::string technique;  // e.g. "pcss"
   std::string graph;      // file name under data/graphs/
   int kernel = 0;         // 0 when the technique has none
-  unsigned width = 0;
+  unsigned width = 0;     // the rendered size, scale applied
   unsigned height = 0;
+  unsigned face = 0;  // shadow atlas face size in texels, scale applied
   int lights = 16;
   std::vector<ParamOverride> overrides;
   bool shadow_cache = false;  // static shadow caching (off: every face re-rendered each frame)
 };
 
-// Every built-in scenario, in a stable order.
-std::vector<Scenario> builtin_scenarios();
+// Every built-in scenario, in a stable order, with screen and atlas faces scaled by
+// `scale` (names carry the scaled height, so two scales never share a name).
+std::vector<Scenario> builtin_scenarios(double scale = 1.0);
+
+// The atlas face for `lights` lights at `scale`: 1024 texels up to 64 lights and 512
+// beyond, scaled, rounded to a multiple of 16 (maps derived from the atlas divide it by
+// 2, 4, 8 or 16) and at least 16.
+unsigned shadow_face_size(int lights, double scale);
 
 // Scenarios whose name contains any of `filters` (all when empty).
 std::vector<Scenario> select_scenarios(const std::vector<Scenario>& all,
@@ -43,10 +51,11 @@ std::vector<Scenario> select_scenarios(const std::vector<Scenario>& all,
 std::vector<std::string> apply_overrides(fg::GraphDesc& graph,
                                          const std::vector<ParamOverride>& overrides);
 
-// Sizes the shadow atlas (and its colour twin and shadowData buffer) of a graph for
-// `lights` shadow-casting lights: 6 layers per light up to the device-independent
-// limit of 2046 layers, faces of 1024 texels up to 64 lights and 512 beyond.
-void fit_shadow_resources(fg::GraphDesc& graph, int lights);
+// Sizes the shadow atlas (and its colour twin, min-filtered map and shadowData buffer)
+// of a graph for `lights` shadow-casting lights: 6 layers per light up to the
+// device-independent limit of 2046 layers, faces of `face` texels (a derived map keeps
+// its factor of the graph's atlas size).
+void fit_shadow_resources(fg::GraphDesc& graph, int lights, unsigned face);
 
 // The scene with its lights replaced by `count` lights in a deterministic layout that
 // covers the same area (16 keeps the scene's own lights). Ranges shrink as the count

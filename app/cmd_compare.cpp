@@ -1,6 +1,7 @@
 // antumbra compare: image-quality metrics of two HDR frames (PFM), optionally over
 // penumbra / overlap masks. antumbra quality: renders the reference and one or more
 // technique graphs in one session and prints the same metrics for each.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -13,6 +14,7 @@
 #include "antumbra/gpu/timing.hpp"
 #include "antumbra/scene/scene_file.hpp"
 #include "commands.hpp"
+#include "error_map.hpp"
 #include "image_metrics.hpp"
 #include "render_session.hpp"
 
@@ -162,6 +164,53 @@ std::optional<fg::GraphDesc> load_for_quality(const std::string& path, const std
   return std::move(graph.value());
 }
 
+// Below this many pixels quality's ranking of techniques is not to be trusted. Measured
+// on lavapipe, atrium, hard / PCSS / layered SSSS (README, "Quality and bench
+// reports"): ranked by RMSE over all pixels, PCSS < hard < layered at 160x90, 320x180
+// and 480x270, PCSS < layered < hard at 640x360, layered < PCSS < hard at 960x540 and
+// 1280x720 (penumbra pixels alike). The layered technique estimates penumbrae and blurs
+// at half resolution, so a small frame measures a blur of a few dozen texels more than
+// the technique.
+constexpr unsigned kStableRankingWidth = 960;
+constexpr unsigned kStableRankingHeight = 540;
+// App-level code (not a graph diagnostic): the size is too small to rank techniques.
+constexpr const char* kRankingUnreliable = "QU001";
+
+std::optional<fg::Diagnostic> size_warning(unsigned width, unsigned height) {
+  if (std::uint64_t{width} * height >= std::uint64_t{kStableRankingWidth} * kStableRankingHeight) {
+    return std::nullopt;
+  }
+  char message[240];
+  std::snprintf(message, sizeof message,
+                "at %ux%u the ranking of techniques is not reliable: on the atrium it changes up "
+                "to %ux%u; use --size %ux%u (or as many pixels) or larger to rank them",
+                width, height, kStableRankingWidth, kStableRankingHeight, kStableRankingWidth,
+                kStableRankingHeight);
+  return fg::Diagnostic{kRankingUnreliable, fg::Severity::warning, message, "", "", 0, 0};
+}
+
+// File stems name the error maps; a repeated stem gets its position appended.
+std::vector<std::string> unique_labels(const std::vector<std::string>& graphs) {
+  std::vector<std::string> labels;
+  for (std::size_t i = 0; i < graphs.size(); ++i) {
+    std::string label = std::filesystem::path(graphs[i]).stem().string();
+    if (std::find(labels.begin(), labels.end(), label) != labels.end()) {
+      label += '-' + std::to_string(i + 1);
+    }
+    labels.push_back(label);
+  }
+  return labels;
+}
+
+void print_error_maps(const ErrorMaps& maps) {
+  if (maps.files.empty()) return;
+  std::printf(
+      "error maps (technique - reference, display luminance): blue = darker by %g or more, "
+      "white = equal, red = brighter by %g or more\n",
+      maps.scale, maps.scale);
+  for (const auto& file : maps.files) std::printf("wrote %s\n", file.string().c_str());
+}
+
 }  // namespace
 
 int run_quality(const QualityOptions& options) {
@@ -171,6 +220,20 @@ int run_quality(const QualityOptions& options) {
     std::fprintf(stderr, "antumbra quality: --size must be WxH with 1..16384, got \"%s\"\n",
                  options.size.c_str());
     return kExitUsage;
+  }
+  const bool json = options.format == "json";
+  fg::Diagnostics report_diagnostics;
+  if (auto warning = size_warning(width, height)) {
+    std::fprintf(stderr, "%s\n", fg::format_text(*warning).c_str());
+    report_diagnostics.add(std::move(*warning));
+  }
+  // Before minutes of rendering (lavapipe), not after.
+  if (std::error_code failure; !options.out.empty() &&
+                               !std::filesystem::create_directories(options.out, failure) &&
+                               failure) {
+    std::fprintf(stderr, "antumbra quality: cannot create %s: %s\n", options.out.c_str(),
+                 failure.message().c_str());
+    return kExitRuntime;
   }
   const DataPaths paths = find_data_paths();
   const std::string reference_path =
@@ -226,7 +289,6 @@ int run_quality(const QualityOptions& options) {
   }
   const auto regions = regions_for("", mask.has_value()).value();
 
-  const bool json = options.format == "json";
   nlohmann::json results = nlohmann::json::array();
   if (!json) {
     std::printf("device: %s; reference %s rendered in %.0f ms at %ux%u\n",
@@ -234,12 +296,15 @@ int run_quality(const QualityOptions& options) {
                 height);
     print_header();
   }
+  const auto labels = unique_labels(options.graphs);
+  std::vector<std::vector<float>> errors;
   for (std::size_t i = 0; i < graphs.size(); ++i) {
     double ms = 0.0;
     const auto hdr = render(graphs[i], options.graphs[i], ms);
     if (!hdr) return kExitDiagnostics;
     const auto comparisons = compare_images(*reference_hdr, *hdr, mask ? &*mask : nullptr, regions);
-    const std::string label = std::filesystem::path(options.graphs[i]).stem().string();
+    if (!options.out.empty()) errors.push_back(signed_error(*reference_hdr, *hdr));
+    const std::string& label = labels[i];
     if (json) {
       results.push_back(
           {{"graph", options.graphs[i]}, {"renderMs", ms}, {"regions", metrics_json(comparisons)}});
@@ -247,18 +312,33 @@ int run_quality(const QualityOptions& options) {
       for (const auto& c : comparisons) print_row(label, c);
     }
   }
+  ErrorMaps maps;
+  if (!options.out.empty()) {
+    try {
+      maps = write_error_maps(options.out, labels, errors, width, height);
+    } catch (const std::runtime_error& e) {
+      std::fprintf(stderr, "antumbra quality: %s\n", e.what());
+      return kExitRuntime;
+    }
+    for (std::size_t i = 0; json && i < maps.files.size(); ++i) {
+      results[i]["errorMap"] = maps.files[i].string();
+    }
+  }
   if (json) {
-    const nlohmann::json report{{"device", session.gpu().device_name()},
-                                {"reference", reference_path},
-                                {"referenceMs", reference_ms},
-                                {"scene", scene_path},
-                                {"width", width},
-                                {"height", height},
-                                {"signal", kMetricNote},
-                                {"graphs", results}};
+    nlohmann::json report{{"device", session.gpu().device_name()},
+                          {"reference", reference_path},
+                          {"referenceMs", reference_ms},
+                          {"scene", scene_path},
+                          {"width", width},
+                          {"height", height},
+                          {"signal", kMetricNote},
+                          {"graphs", results},
+                          {"diagnostics", report_diagnostics.to_json()}};
+    if (!maps.files.empty()) report["errorMapScale"] = maps.scale;
     std::printf("%s\n", report.dump(2).c_str());
   } else {
     std::printf("(%s)\n", kMetricNote);
+    print_error_maps(maps);
   }
   if (options.validation && session.gpu().validation_error_count() > 0) {
     std::fprintf(stderr, "antumbra quality: %zu validation error(s)\n",

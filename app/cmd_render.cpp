@@ -132,8 +132,7 @@ int run_render(const RenderOptions& options) {
   if (diagnostics.has_errors()) {
     // A valid graph this device cannot hold (memory, limits) is a runtime failure, as the
     // README promises (3), not a problem in the file (1).
-    return diagnostics.find(fg::codes::kRealiseFailed) != nullptr ? kExitRuntime
-                                                                  : kExitDiagnostics;
+    return diagnostics.find(fg::codes::kRealiseFailed) != nullptr ? kExitRuntime : kExitDiagnostics;
   }
   const double compile_ms = stage.elapsed_ms();
 
@@ -197,7 +196,8 @@ int run_render(const RenderOptions& options) {
                  session.gpu().validation_error_count());
     return kExitRuntime;
   }
-  const std::size_t warnings = diagnostics.warning_count() + session.frame_diagnostics().warning_count();
+  const std::size_t warnings =
+      diagnostics.warning_count() + session.frame_diagnostics().warning_count();
   if (options.werror && warnings > 0) {
     std::fprintf(stderr, "antumbra render: %zu warning(s) with --werror\n", warnings);
     return kExitDiagnostics;

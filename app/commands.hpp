@@ -77,8 +77,9 @@ struct QualityOptions {
   std::vector<std::string> graphs;  // technique graphs compared with the reference
   std::string reference;            // empty: data/graphs/reference.json
   std::string scene;                // empty: data/scenes/atrium.json
-  std::string size = "160x90";
-  std::string resource = "hdr";  // the HDR resource of every graph
+  std::string size = "960x540";     // the smallest size whose ranking held (cmd_compare.cpp)
+  std::string resource = "hdr";     // the HDR resource of every graph
+  std::string out;                  // folder for per-technique error heat maps; empty: none
   std::string device = "auto";
   bool validation = false;
   std::string format = "text";

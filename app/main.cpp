@@ -154,6 +154,8 @@ int dispatch(int argc, char** argv) {
   quality_cmd->add_option("--scene", quality.scene,
                           "Scene JSON (default: data/scenes/atrium.json)");
   quality_cmd->add_option("--size", quality.size, "Viewport WxH")->capture_default_str();
+  quality_cmd->add_option("--out", quality.out,
+                          "Folder for per-technique error heat maps (<graph>-error.png)");
   quality_cmd->add_option("--resource", quality.resource, "HDR resource of every graph")
       ->capture_default_str();
   quality_cmd->add_option("--device", quality.device, "auto|cpu|gpu|N|<name substring>")

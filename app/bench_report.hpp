@@ -1,0 +1,55 @@
+#pragma once
+// What `antumbra bench` keeps of a run and how it writes it: per-pass and whole-frame
+// GPU time as median, 10th and 90th percentile over the timed frames, written as a
+// long-format CSV (one row per scenario and pass, the frame as pass "frame") and as
+// JSON with the same numbers. No device here: tested on made-up samples.
+
+#include <cstddef>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "bench_scenarios.hpp"
+
+namespace antumbra::app {
+
+// Percentile p (0..100) of `values`, linear between closest ranks (numpy's default),
+// so that p = 50 is the usual median. 0 for no values.
+double percentile(std::vector<double> values, double p);
+
+struct TimingStats {
+  double median_ms = 0.0;
+  double p10_ms = 0.0;
+  double p90_ms = 0.0;
+  std::size_t frames = 0;
+};
+TimingStats summarize(const std::vector<double>& samples_ms);
+
+// Sums the passes' samples frame by frame (passes all record the same frames; a pass
+// with fewer samples cuts the frame count, so no frame is summed half).
+std::vector<double> frame_samples(const std::vector<std::vector<double>>& per_pass);
+
+struct PassStats {
+  std::string name;
+  std::string type;
+  TimingStats gpu;
+  double cpu_median_ms = 0.0;
+};
+
+struct BenchResult {
+  Scenario scenario;
+  std::string status = "ok";  // ok | missing-graph | invalid | error
+  std::string detail;
+  std::vector<PassStats> passes;
+  TimingStats frame;  // per-frame sum of the passes
+};
+
+// The long CSV: header, then per scenario one row per pass and one "frame" row (a
+// failed scenario: its "frame" row only, without numbers).
+void write_long_csv(std::ostream& out, const std::vector<BenchResult>& results);
+
+nlohmann::json results_json(const std::vector<BenchResult>& results);
+
+}  // namespace antumbra::app

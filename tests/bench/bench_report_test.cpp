@@ -1,0 +1,114 @@
+// Percentiles, per-frame sums and the long CSV / JSON of `antumbra bench`, on made-up
+// timings.
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "bench_report.hpp"
+
+namespace antumbra::app {
+namespace {
+
+TEST(Percentile, InterpolatesBetweenClosestRanks) {
+  const std::vector<double> values{5.0, 1.0, 4.0, 2.0, 3.0};  // unsorted on purpose
+  EXPECT_DOUBLE_EQ(percentile(values, 50.0), 3.0);
+  EXPECT_DOUBLE_EQ(percentile(values, 10.0), 1.4);
+  EXPECT_DOUBLE_EQ(percentile(values, 90.0), 4.6);
+  EXPECT_DOUBLE_EQ(percentile(values, 0.0), 1.0);
+  EXPECT_DOUBLE_EQ(percentile(values, 100.0), 5.0);
+}
+
+TEST(Percentile, MedianOfAnEvenCountIsTheMiddlePairsMean) {
+  EXPECT_DOUBLE_EQ(percentile({4.0, 1.0, 3.0, 2.0}, 50.0), 2.5);
+}
+
+TEST(Percentile, EmptyAndSingle) {
+  EXPECT_DOUBLE_EQ(percentile({}, 50.0), 0.0);
+  EXPECT_DOUBLE_EQ(percentile({7.0}, 10.0), 7.0);
+  EXPECT_DOUBLE_EQ(percentile({7.0}, 90.0), 7.0);
+}
+
+TEST(Summarize, KeepsTheSpreadAndTheFrameCount) {
+  std::vector<double> samples;
+  for (int i = 1; i <= 11; ++i) samples.push_back(i);  // 1..11
+  const auto s = summarize(samples);
+  EXPECT_DOUBLE_EQ(s.median_ms, 6.0);
+  EXPECT_DOUBLE_EQ(s.p10_ms, 2.0);
+  EXPECT_DOUBLE_EQ(s.p90_ms, 10.0);
+  EXPECT_EQ(s.frames, 11u);
+}
+
+TEST(FrameSamples, SumsFrameByFrameAndCutsToTheShortestPass) {
+  const auto sums = frame_samples({{1.0, 2.0, 3.0}, {10.0, 20.0}});
+  ASSERT_EQ(sums.size(), 2u);
+  EXPECT_DOUBLE_EQ(sums[0], 11.0);
+  EXPECT_DOUBLE_EQ(sums[1], 22.0);
+  EXPECT_TRUE(frame_samples({}).empty());
+}
+
+std::vector<std::string> split(const std::string& text, char separator) {
+  std::vector<std::string> out(1);
+  bool quoted = false;
+  for (const char c : text) {
+    if (c == '"') quoted = !quoted;
+    if (c == separator && !quoted) {
+      out.emplace_back();
+    } else {
+      out.back() += c;
+    }
+  }
+  return out;
+}
+
+std::vector<BenchResult> two_results() {
+  Scenario s;
+  s.name = "table1/pcss-11/180p";
+  s.table = "table1";
+  s.technique = "pcss";
+  s.kernel = 11;
+  s.width = 320;
+  s.height = 180;
+  s.face = 256;
+  BenchResult ok{s};
+  ok.passes.push_back({"gbuffer", "gbuffer", {1.5, 1.0, 2.0, 60}, 0.1});
+  ok.passes.push_back({"odd,name", "shadow-pcss", {3.0, 2.5, 4.0, 60}, 0.2});
+  ok.frame = {4.5, 4.0, 5.5, 60};
+  Scenario t = s;
+  t.name = "table1/ssss-11/180p";
+  BenchResult failed{t, "invalid", "FG030 ...", {}, {}};
+  return {ok, failed};
+}
+
+TEST(LongCsv, OneRowPerScenarioAndPassPlusTheFrame) {
+  std::ostringstream out;
+  write_long_csv(out, two_results());
+  std::vector<std::string> lines;
+  std::istringstream in(out.str());
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  ASSERT_EQ(lines.size(), 5u);  // header, 2 passes + frame, the failed scenario's frame
+  const auto header = split(lines[0], ',');
+  for (const auto& line : lines) EXPECT_EQ(split(line, ',').size(), header.size()) << line;
+  EXPECT_EQ(lines[0],
+            "scenario,table,technique,kernel,width,height,atlas_face,lights,status,pass,"
+            "pass_type,median_ms,p10_ms,p90_ms,frames");
+  EXPECT_EQ(lines[1],
+            "table1/pcss-11/180p,table1,pcss,11,320,180,256,16,ok,gbuffer,gbuffer,1.5,1,2,60");
+  EXPECT_EQ(split(lines[2], ',')[9], "\"odd,name\"");
+  EXPECT_EQ(lines[3], "table1/pcss-11/180p,table1,pcss,11,320,180,256,16,ok,frame,,4.5,4,5.5,60");
+  EXPECT_EQ(lines[4], "table1/ssss-11/180p,table1,pcss,11,320,180,256,16,invalid,frame,,,,,0");
+}
+
+TEST(ResultsJson, CarriesTheSameNumbers) {
+  const auto json = results_json(two_results());
+  ASSERT_EQ(json.size(), 2u);
+  EXPECT_EQ(json[0]["atlasFace"], 256);
+  EXPECT_DOUBLE_EQ(json[0]["frame"]["p90Ms"].get<double>(), 5.5);
+  EXPECT_DOUBLE_EQ(json[0]["passes"][1]["p10Ms"].get<double>(), 2.5);
+  EXPECT_EQ(json[0]["passes"][1]["frames"], 60);
+  EXPECT_EQ(json[1]["status"], "invalid");
+}
+
+}  // namespace
+}  // namespace antumbra::app
