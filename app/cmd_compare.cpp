@@ -80,6 +80,16 @@ FloatImage to_float_image(const gpu::HostImage& host) {
 
 }  // namespace
 
+namespace {
+
+// A file that cannot be opened is a usage error (2), as for graphs and scenes; a file
+// that opens but is no PFM is a problem in the file (1).
+int unreadable_exit(const std::string& error) {
+  return error.rfind("cannot open ", 0) == 0 ? kExitUsage : kExitDiagnostics;
+}
+
+}  // namespace
+
 int run_compare(const CompareOptions& options) {
   const auto regions = regions_for(options.mask, !options.mask_image.empty());
   if (!regions) {
@@ -93,19 +103,19 @@ int run_compare(const CompareOptions& options) {
   const auto a = read_pfm(options.a, error);
   if (!a) {
     std::fprintf(stderr, "antumbra compare: error: %s\n", error.c_str());
-    return kExitDiagnostics;
+    return unreadable_exit(error);
   }
   const auto b = read_pfm(options.b, error);
   if (!b) {
     std::fprintf(stderr, "antumbra compare: error: %s\n", error.c_str());
-    return kExitDiagnostics;
+    return unreadable_exit(error);
   }
   std::optional<FloatImage> mask;
   if (!options.mask_image.empty()) {
     mask = read_pfm(options.mask_image, error);
     if (!mask) {
       std::fprintf(stderr, "antumbra compare: error: %s\n", error.c_str());
-      return kExitDiagnostics;
+      return unreadable_exit(error);
     }
   }
   std::vector<Comparison> comparisons;

@@ -123,7 +123,7 @@ int run_plan(const PlanOptions& options) {
   for (const auto& d : result.diagnostics()) {
     if (d.severity != fg::Severity::note) std::fprintf(stderr, "%s\n", fg::format_text(d).c_str());
   }
-  if (!result.ok()) return kExitDiagnostics;
+  if (!result.ok()) return exit_code_for(result.diagnostics());
   if (options.format == "dot") {
     std::cout << fg::plan_to_dot(result.value());
   } else if (options.format == "text") {

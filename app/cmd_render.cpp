@@ -7,6 +7,7 @@
 #include "antumbra/fg/diagnostic_codes.hpp"
 #include "antumbra/fg/graph_desc.hpp"
 #include "antumbra/fg/json_document.hpp"
+#include "antumbra/fg/registry.hpp"
 #include "antumbra/gpu/timing.hpp"
 #include "antumbra/scene/scene_file.hpp"
 #include "commands.hpp"
@@ -60,7 +61,8 @@ nlohmann::json render_report_json(const RenderSession& session, const std::strin
     item["details"] = nlohmann::json::parse(messages[i].details.dump());
     all.push_back(std::move(item));
   }
-  return {{"device", device},
+  return {{"ok", true},
+          {"device", device},
           {"graph", session.executor().plan().file},
           {"output", resource},
           {"image", options.out},
@@ -86,22 +88,33 @@ int run_render(const RenderOptions& options) {
   const std::string scene_path =
       options.scene.empty() ? (paths.scenes() / "atrium.json").string() : options.scene;
   gpu::CpuTimer stage;
+  const bool json = options.format == "json";
+  // A run that fails still answers a tool that asked for JSON: {"ok": false, diagnostics}.
+  const auto fail = [&](const fg::Diagnostics& diagnostics, int code) {
+    print_diagnostics(diagnostics);
+    if (json) {
+      std::printf("%s\n", nlohmann::json{{"ok", false},
+                                         {"graph", graph_path},
+                                         {"exitCode", code},
+                                         {"diagnostics", diagnostics.to_json()}}
+                              .dump(2)
+                              .c_str());
+    }
+    return code;
+  };
 
   // User input first, so a broken file fails fast without touching the GPU.
   auto document = fg::load_json_file(graph_path);
-  if (!document.ok()) {
-    print_diagnostics(document.diagnostics());
-    return exit_code_for(document.diagnostics());
-  }
+  if (!document.ok()) return fail(document.diagnostics(), exit_code_for(document.diagnostics()));
   auto graph = fg::parse_graph(document.value());
-  if (!graph.ok()) {
-    print_diagnostics(graph.diagnostics());
-    return kExitDiagnostics;
-  }
+  if (!graph.ok()) return fail(graph.diagnostics(), kExitDiagnostics);
   if (!options.output.empty()) {
     if (graph->find_resource(options.output) < 0) {
-      std::fprintf(stderr, "antumbra render: --output \"%s\" is not a resource of %s\n",
-                   options.output.c_str(), graph_path.c_str());
+      std::vector<std::string> names;
+      for (const auto& r : graph->resources) names.push_back(r.name);
+      std::fprintf(stderr, "antumbra render: --output \"%s\" is not a resource of %s%s\n",
+                   options.output.c_str(), graph_path.c_str(),
+                   fg::did_you_mean(options.output, names).c_str());
       return kExitUsage;
     }
     // The requested resource becomes the graph's output: it is kept alive (never
@@ -109,8 +122,8 @@ int run_render(const RenderOptions& options) {
     graph->output = options.output;
   }
   auto scene = scene::load_scene_file(scene_path);
+  if (!scene.ok()) return fail(scene.diagnostics(), exit_code_for(scene.diagnostics()));
   print_diagnostics(scene.diagnostics());
-  if (!scene.ok()) return exit_code_for(scene.diagnostics());
   const double parse_ms = stage.elapsed_ms();
 
   stage.restart();
@@ -120,7 +133,6 @@ int run_render(const RenderOptions& options) {
   session_options.viewport = {width, height};
   RenderSession session(paths, session_options);
   const double device_ms = stage.elapsed_ms();
-  const bool json = options.format == "json";
   if (!json) {
     std::printf("device: %s%s\n", session.gpu().device_name().c_str(),
                 options.validation ? " (validation + synchronization validation on)" : "");
@@ -128,12 +140,14 @@ int run_render(const RenderOptions& options) {
 
   stage.restart();
   const auto diagnostics = session.load_graph(graph.value());
-  print_diagnostics(diagnostics);
   if (diagnostics.has_errors()) {
     // A valid graph this device cannot hold (memory, limits) is a runtime failure, as the
     // README promises (3), not a problem in the file (1).
-    return diagnostics.find(fg::codes::kRealiseFailed) != nullptr ? kExitRuntime : kExitDiagnostics;
+    return fail(diagnostics, diagnostics.find(fg::codes::kRealiseFailed) != nullptr
+                                 ? kExitRuntime
+                                 : kExitDiagnostics);
   }
+  print_diagnostics(diagnostics);
   const double compile_ms = stage.elapsed_ms();
 
   stage.restart();
@@ -171,7 +185,11 @@ int run_render(const RenderOptions& options) {
         "cpu stages: parse %.1f ms, device %.1f ms, compile+realise %.1f ms, upload %.1f ms, "
         "render %.1f ms, write %.1f ms\n",
         parse_ms, device_ms, compile_ms, upload_ms, render_ms, write_ms);
-    std::printf("wrote %s (%s, %ux%u)\n", options.out.c_str(), resource.c_str(), width, height);
+    // The resource's own size: a half-resolution buffer is written as it is.
+    const auto& written = session.executor().plan().resources.at(
+        static_cast<std::size_t>(session.executor().plan().output));
+    std::printf("wrote %s (%s, %ux%u)\n", options.out.c_str(), resource.c_str(),
+                written.extent.width, written.extent.height);
   }
 
   if (!options.trace.empty()) {

@@ -28,8 +28,7 @@ DataPaths find_data_paths() {
   std::vector<std::string> tried;
   if (const char* env = std::getenv("ANTUMBRA_ROOT"); env != nullptr && *env != '\0') {
     if (is_root(env)) return {std::filesystem::absolute(env)};
-    throw std::runtime_error(std::string("ANTUMBRA_ROOT=") + env +
-                             " does not hold data/ and passes/");
+    throw DataPathsError(std::string("ANTUMBRA_ROOT=") + env + " does not hold data/ and passes/");
   }
   std::error_code ec;
   const auto cwd = std::filesystem::current_path(ec);
@@ -49,7 +48,7 @@ DataPaths find_data_paths() {
   std::string message =
       "cannot find Antumbra's data/ and passes/ folders (set ANTUMBRA_ROOT); searched up from:";
   for (const auto& t : tried) message += "\n  " + t;
-  throw std::runtime_error(message);
+  throw DataPathsError(message);
 }
 
 }  // namespace antumbra::app

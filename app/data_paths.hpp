@@ -4,6 +4,7 @@
 // from the executable, then the source tree it was built from.
 
 #include <filesystem>
+#include <stdexcept>
 #include <string>
 
 namespace antumbra::app {
@@ -16,6 +17,12 @@ struct DataPaths {
 };
 
 // Throws std::runtime_error naming the places searched when nothing fits.
+// Throws DataPathsError when no root is found or ANTUMBRA_ROOT names the wrong folder:
+// a setting to fix, so the command line exits 2 (usage), not 3.
+class DataPathsError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
 DataPaths find_data_paths();
 
 }  // namespace antumbra::app

@@ -182,6 +182,7 @@ class EditRun {
       render(1);
       std::printf("  reloaded in %.1f ms: %s\n", latency.elapsed_ms(),
                   fg::to_text(fg::diff_plans(before, session_.executor().plan())).c_str());
+      print(session_.frame_diagnostics());  // a warning that still holds is said again
     } else {
       print(last_reload_);
       render(1);  // the last good plan keeps running
@@ -426,7 +427,14 @@ class EditRun {
         return (code.empty() || d.code == code) && (line == 0 || d.line == line);
       });
       if (!found) {
-        throw StepError{"no diagnostic with code '" + code + "' at line " + std::to_string(line)};
+        std::string seen;
+        for (const auto& d : last_reload_) {
+          if (d.severity == fg::Severity::error) {
+            seen += (seen.empty() ? "" : ", ") + d.code + " at line " + std::to_string(d.line);
+          }
+        }
+        throw StepError{"no diagnostic with code '" + code + "' at line " + std::to_string(line) +
+                        "; the reload reported " + (seen.empty() ? "no error" : seen)};
       }
     } else if (what == "file-contains" || what == "file-lacks") {
       const auto text = read_text(resolve(step.at("path").get<std::string>()));
@@ -442,10 +450,14 @@ class EditRun {
     } else if (what == "light-at") {
       const glm::vec3 want = vec3_of(step.at("position"));
       const glm::vec3 have = scene_.lights()[light_index(step)].position;
-      if (glm::distance(want, have) > step.value("tolerance", 1e-3f)) {
-        char text[160];
-        std::snprintf(text, sizeof text, "the light is at (%.4f, %.4f, %.4f)", have.x, have.y,
-                      have.z);
+      const float tolerance = step.value("tolerance", 1e-3f);
+      if (glm::distance(want, have) > tolerance) {
+        char text[240];
+        std::snprintf(text, sizeof text,
+                      "the light is at (%.4f, %.4f, %.4f), %.4f m from the expected (%.4f, %.4f, "
+                      "%.4f) (tolerance %.4f m)",
+                      have.x, have.y, have.z, glm::distance(want, have), want.x, want.y, want.z,
+                      tolerance);
         throw StepError{text};
       }
     } else if (what == "dirty") {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <cerrno>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -60,9 +61,12 @@ std::vector<double> blur(const std::vector<double>& in, std::uint32_t width, std
 }  // namespace
 
 std::optional<FloatImage> read_pfm(const std::filesystem::path& path, std::string& error) {
+  errno = 0;
   std::ifstream file(path, std::ios::binary);
   if (!file) {
-    error = "cannot open " + path.string();
+    const int reason = errno;
+    error = "cannot open " + path.string() + ": " +
+            (reason != 0 ? std::strerror(reason) : "unknown reason");
     return std::nullopt;
   }
   std::string magic;

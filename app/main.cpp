@@ -8,6 +8,7 @@
 #include <spdlog/spdlog.h>
 
 #include "commands.hpp"
+#include "data_paths.hpp"
 #include "edit_script.hpp"
 
 namespace {
@@ -210,6 +211,9 @@ int main(int argc, char** argv) {
   spdlog::set_default_logger(spdlog::stderr_color_mt("antumbra"));
   try {
     return dispatch(argc, argv);
+  } catch (const antumbra::app::DataPathsError& e) {
+    std::fprintf(stderr, "antumbra: error: %s\n", e.what());
+    return antumbra::app::kExitUsage;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "antumbra: error: %s\n", e.what());
     return antumbra::app::kExitRuntime;

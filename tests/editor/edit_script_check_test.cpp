@@ -49,10 +49,11 @@ TEST(EditScriptCheck, UnknownActionsMissingKeysAndWrongTypesAreAllReported) {
     {"do": "set-light", "light": "a", "position": [1, 2]},
     {"do": "click", "at": {"over": [1, 2]}},
     {"do": "frames", "count": 1.5},
+    {"do": "viewport-drag", "from": "a", "to": "b", "plane": "horizonal"},
     {"light": "a"},
     42
   ], "stepz": []})");
-  ASSERT_EQ(problems.size(), 9u) << problems.to_text();
+  ASSERT_EQ(problems.size(), 10u) << problems.to_text();
   EXPECT_NE(problems[0].message.find("did you mean 'steps'"), std::string::npos)
       << problems.to_text();
   EXPECT_NE(problems.to_text().find("unknown action 'set-lite'; did you mean 'set-light'"),
@@ -63,6 +64,10 @@ TEST(EditScriptCheck, UnknownActionsMissingKeysAndWrongTypesAreAllReported) {
   EXPECT_NE(problems.to_text().find("'position' must be [x, y, z]"), std::string::npos);
   EXPECT_NE(problems.to_text().find("'at' must be"), std::string::npos);
   EXPECT_NE(problems.to_text().find("'count' must be an integer"), std::string::npos);
+  EXPECT_NE(problems.to_text().find("'plane' must be \"horizontal\" or \"vertical\"; did you mean "
+                                    "'horizontal'"),
+            std::string::npos)
+      << problems.to_text();
   for (const auto& d : problems) EXPECT_EQ(d.code, "ED101");
 }
 

@@ -340,6 +340,37 @@ TEST(Viewport, EveryAtriumLightLandsOverTheFloorWhereItIsDropped) {
   EXPECT_GT(drags, 200);
 }
 
+// The atrium's camera raised to the lights' height (2.3 m): every horizontal drag is
+// edge-on, moves to the upright plane, and the light still ends under the cursor.
+TEST(Viewport, AtriumDragsAtTheLightsHeightStayUnderTheCursor) {
+  const auto loaded = scene::load_scene_file(ANTUMBRA_SOURCE_DIR "/data/scenes/atrium.json");
+  ASSERT_TRUE(loaded.ok());
+  const glm::ivec2 image{1280, 720};
+  ViewportCamera view(loaded.value().camera);
+  view.move({0.0f, 1.0f, 0.0f}, 2.3f - view.camera().position.y);
+  const scene::Camera& camera = view.camera();
+  ASSERT_NEAR(camera.position.y, 2.3f, 1e-4f);
+  int drags = 0;
+  for (const auto& light : loaded.value().lights) {
+    if (light.type == scene::LightType::directional || light.position.y != 2.3f) continue;
+    const auto at = project(camera, image, light.position);
+    if (!at || at->x < 0.0f || at->x > 1280.0f || at->y < 0.0f || at->y > 720.0f) continue;
+    const LightDrag drag(light.position, camera, image, *at, DragPlane::horizontal,
+                         drag_limit(loaded.value()));
+    EXPECT_TRUE(drag.switched()) << light.name;
+    for (const glm::vec2 step : {glm::vec2(40.0f, 0.0f), glm::vec2(-25.0f, -60.0f)}) {
+      const auto moved = drag.update(*at + step);
+      ASSERT_TRUE(moved.has_value()) << light.name;
+      const auto on_screen = project(camera, image, *moved);
+      ASSERT_TRUE(on_screen.has_value());
+      EXPECT_LT(glm::distance(*on_screen, *at + step), 0.05f) << light.name;
+      EXPECT_LT(glm::distance(*moved, light.position), drag_limit(loaded.value()));
+    }
+    ++drags;
+  }
+  EXPECT_GT(drags, 3);
+}
+
 TEST(Viewport, TheRangeSilhouetteIsTangentToTheSphere) {
   scene::Camera camera;
   camera.position = {0.0f, 4.0f, 12.0f};

@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "antumbra/editor/graph_document.hpp"
+#include "antumbra/editor/recovery_file.hpp"
 #include "antumbra/editor/scene_document.hpp"
 #include "gpu_test_support.hpp"
 #include "register_builtin_passes.hpp"
@@ -163,6 +164,39 @@ TEST_F(EditorStateGpu, FilesChangedOnDiskReloadAsTransactions) {
   EXPECT_GE(state->scene().find_light("lamp z"), 0);
   EXPECT_EQ(state->camera().camera().position, camera.camera().position);
   session->render(1, nullptr);
+  expect_no_validation_errors(*session);
+}
+
+// What the panels show before anything happened must not read as a measurement or a
+// reload: timings are "--" until frames were timed, and the first load is no reload.
+TEST_F(EditorStateGpu, NothingIsReportedBeforeItHappened) {
+  OPEN_SESSION(session, {64, 36});
+  auto state = open(*session);
+  EXPECT_EQ(state->reload_summary(), "none yet");
+  EXPECT_EQ(state->pass_time_text("lighting"), "-- ms");
+  state->refresh_timings();  // no frame rendered yet: nothing measured
+  EXPECT_EQ(state->pass_time_text("lighting"), "-- ms");
+  session->render(2, nullptr);
+  state->refresh_timings();
+  EXPECT_NE(state->pass_time_text("lighting"), "-- ms");
+  EXPECT_NE(state->pass_time_text("lighting").find(" ms"), std::string::npos);
+  expect_no_validation_errors(*session);
+}
+
+// An editor closed by --frames running out (nobody asked) keeps unsaved edits in recovery
+// files and says so; a clean document leaves none.
+TEST_F(EditorStateGpu, ClosingUnconfirmedKeepsUnsavedEdits) {
+  OPEN_SESSION(session, {64, 36});
+  auto state = open(*session);
+  const auto c = static_cast<std::size_t>(state->scene().find_light("lamp c"));
+  state->scene_edited(state->scene().set_position(c, {1.5f, 2.0f, 0.0f}));
+  const auto kept = state->close_keeping_unsaved();
+  ASSERT_EQ(kept.size(), 1u);
+  EXPECT_NE(kept[0].find("scene.json"), std::string::npos) << kept[0];
+  EXPECT_TRUE(fs::exists(editor::RecoveryFile::path_for(dir_.path() / "scene.json")));
+  EXPECT_FALSE(fs::exists(editor::RecoveryFile::path_for(dir_.path() / "graph.json")));
+  const std::string recovered = read(editor::RecoveryFile::path_for(dir_.path() / "scene.json"));
+  EXPECT_NE(recovered.find("1.5"), std::string::npos);
   expect_no_validation_errors(*session);
 }
 

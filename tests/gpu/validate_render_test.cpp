@@ -75,7 +75,8 @@ std::vector<Mutant> mutants_of(const fg::Json& graph, const fg::Registry& regist
   if (graph.contains("resources")) {
     for (const auto& [name, resource] : graph["resources"].items()) {
       if (!resource.is_object() || resource.value("layers", 1) <= 1) continue;
-      add(name + " with 1 layer", [&, key = name](fg::Json& g) { g["resources"][key]["layers"] = 1; });
+      add(name + " with 1 layer",
+          [&, key = name](fg::Json& g) { g["resources"][key]["layers"] = 1; });
     }
   }
   return out;
@@ -133,9 +134,8 @@ TEST_F(ValidateMeansRenderTest, WhatTheCompilerAcceptsTheDeviceRenders) {
       }
       ++accepted;
       const auto diagnostics = session->load_graph(graph.value());
-      EXPECT_FALSE(diagnostics.has_errors())
-          << "validate accepts it, render refuses it:\n"
-          << describe(diagnostics);
+      EXPECT_FALSE(diagnostics.has_errors()) << "validate accepts it, render refuses it:\n"
+                                             << describe(diagnostics);
       if (diagnostics.has_errors()) continue;
       const std::size_t errors_before = session->gpu().validation_error_count();
       EXPECT_NO_THROW(session->render(1, nullptr));

@@ -361,6 +361,16 @@ void EditorState::autosave() {
   }
 }
 
+std::string EditorState::pass_time_text(const std::string& pass) const {
+  for (const auto& t : timings_) {
+    if (t.name != pass || t.gpu_samples.empty()) continue;
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3f ms", t.gpu_ms);
+    return text;
+  }
+  return "-- ms";
+}
+
 void EditorState::refresh_timings() {
   timings_ = session_.pass_timings();
   session_.reset_timings();  // medians over the next window of frames, not since start

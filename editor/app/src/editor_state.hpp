@@ -99,6 +99,9 @@ class EditorState {
   // Per-pass GPU times, refreshed every few frames (medians over those frames).
   [[nodiscard]] const std::vector<app::PassTiming>& timings() const { return timings_; }
   void refresh_timings();
+  // "0.565 ms", or "-- ms" before the pass has been measured (the first frames after the
+  // start or a reload): never a 0.000 that reads as a measurement.
+  [[nodiscard]] std::string pass_time_text(const std::string& pass) const;
   void set_message(std::string message) { message_ = std::move(message); }
 
  private:

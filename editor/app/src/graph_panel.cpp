@@ -113,28 +113,26 @@ void draw_passes(EditorState& state) {
   const auto& plan = state.session().executor().plan();
   const auto& timings = state.timings();
   double total = 0.0;
-  for (const auto& t : timings) total += t.gpu_ms;
-  ImGui::Text("%zu passes, %.3f ms GPU", plan.passes.size(), total);
+  bool measured = false;
+  for (const auto& t : timings) {
+    total += t.gpu_ms;
+    measured = measured || !t.gpu_samples.empty();
+  }
+  if (measured) {
+    ImGui::Text("%zu passes, %.3f ms GPU", plan.passes.size(), total);
+  } else {
+    ImGui::Text("%zu passes, GPU time not measured yet", plan.passes.size());
+  }
   const auto views = state.graph().passes();
   for (const auto& view : views) {
     const auto* planned = plan.find_pass(view.name);
     const bool culled = std::find(plan.culled_passes.begin(), plan.culled_passes.end(),
                                   view.name) != plan.culled_passes.end();
-    double ms = -1.0;  // not measured yet (the first frames, or a pass just added)
-    for (const auto& t : timings) {
-      if (t.name == view.name && !t.gpu_samples.empty()) ms = t.gpu_ms;
-    }
     std::string title = view.name + " (" + view.type + ")";
     if (planned == nullptr) {
       title += culled ? "  [culled]" : "  [disabled]";
     } else {
-      char time[32];
-      if (ms >= 0.0) {
-        std::snprintf(time, sizeof time, "  %.3f ms", ms);
-      } else {
-        std::snprintf(time, sizeof time, "  -- ms");
-      }
-      title += time;
+      title += "  " + state.pass_time_text(view.name);
     }
     if (planned == nullptr) ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(140, 140, 140, 255));
     const bool open = ImGui::TreeNode(view.name.c_str(), "%s", title.c_str());

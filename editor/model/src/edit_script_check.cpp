@@ -15,7 +15,12 @@ using fg::Json;
 
 // What a key's value must be. `at`: a viewport position ([x, y], a light's name or
 // {"over": [x, y, z]}).
-enum class Kind { number, integer, boolean, string, vec2, vec3, at, any, string_or_null };
+enum class Kind { number, integer, boolean, string, vec2, vec3, at, any, string_or_null, plane };
+
+const std::vector<std::string>& plane_names() {
+  static const std::vector<std::string> names{"horizontal", "vertical"};
+  return names;
+}
 
 struct Key {
   const char* name;
@@ -63,7 +68,7 @@ const std::map<std::string, Action, std::less<>>& do_actions() {
       {"viewport-drag",
        {{{"from", Kind::at, true},
          {"to", Kind::at, true},
-         {"plane", Kind::string},
+         {"plane", Kind::plane},
          {"steps", Kind::integer},
          {"tolerance", Kind::number}}}},
   };
@@ -113,6 +118,9 @@ bool fits(const Json& v, Kind kind) {
     case Kind::at:
       return numbers(v, 2) || v.is_string() ||
              (v.is_object() && v.size() == 1 && v.contains("over") && numbers(v["over"], 3));
+    case Kind::plane:
+      return v.is_string() && std::find(plane_names().begin(), plane_names().end(),
+                                        v.get<std::string>()) != plane_names().end();
     case Kind::any:
       return true;
   }
@@ -137,6 +145,8 @@ const char* expected(Kind kind) {
       return "[x, y, z] (numbers)";
     case Kind::at:
       return "[x, y] pixels, a light's name or {\"over\": [x, y, z]}";
+    case Kind::plane:
+      return "\"horizontal\" or \"vertical\"";
     case Kind::any:
       return "a value";
   }
@@ -148,6 +158,14 @@ std::vector<std::string> names_of(const Map& map) {
   std::vector<std::string> names;
   for (const auto& [name, unused] : map) names.push_back(name);
   return names;
+}
+
+// Built by appending: GCC 12 warns (-Wrestrict, a false positive) on "'" + s.
+std::string quoted(const std::string& text) {
+  std::string out(1, '\'');
+  out += text;
+  out += '\'';
+  return out;
 }
 
 void check_step(const fg::JsonDocument& script, const Json& step, const std::string& pointer,
@@ -185,7 +203,7 @@ void check_step(const fg::JsonDocument& script, const Json& step, const std::str
   for (const auto& [key, value] : step.items()) {
     const std::string key_pointer = pointer + "/" + key;
     if (std::find(allowed.begin(), allowed.end(), key) == allowed.end()) {
-      error("'" + name.get<std::string>() + "' has no key '" + key + "'" +
+      error(quoted(name.get<std::string>()) + " has no key " + quoted(key) +
                 fg::did_you_mean(key, allowed),
             key_pointer, true);
       continue;
@@ -193,12 +211,15 @@ void check_step(const fg::JsonDocument& script, const Json& step, const std::str
     const auto spec = std::find_if(action->second.keys.begin(), action->second.keys.end(),
                                    [&](const Key& k) { return key == k.name; });
     if (spec != action->second.keys.end() && !fits(value, spec->kind)) {
-      error("'" + key + "' must be " + expected(spec->kind), key_pointer, false);
+      const std::string hint = spec->kind == Kind::plane && value.is_string()
+                                   ? fg::did_you_mean(value.get<std::string>(), plane_names())
+                                   : std::string();
+      error("'" + key + "' must be " + expected(spec->kind) + hint, key_pointer, false);
     }
   }
   for (const Key& key : action->second.keys) {
     if (key.required && !step.contains(key.name)) {
-      error("'" + name.get<std::string>() + "' needs '" + key.name + "'", pointer, false);
+      error(quoted(name.get<std::string>()) + " needs " + quoted(key.name), pointer, false);
     }
   }
 }

@@ -1,5 +1,7 @@
 #include "antumbra/editor/json_file.hpp"
 
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -12,11 +14,16 @@ namespace antumbra::editor {
 
 fg::Result<std::string> read_text_file(const std::filesystem::path& file) {
   std::error_code ec;
+  errno = 0;
   std::ifstream in(file, std::ios::binary);
+  const int reason = errno;
   if (!in || std::filesystem::is_directory(file, ec)) {
     fg::Diagnostics diagnostics;
-    diagnostics.add({fg::codes::kFileUnreadable, fg::Severity::error, "cannot open the file",
-                     file.string(), "", 0, 0});
+    const std::string why = std::filesystem::is_directory(file, ec) ? "it is a directory"
+                            : reason != 0                           ? std::strerror(reason)
+                                                                    : "unknown reason";
+    diagnostics.add({fg::codes::kFileUnreadable, fg::Severity::error,
+                     "cannot open the file: " + why, file.string(), "", 0, 0});
     return diagnostics;
   }
   std::ostringstream buffer;

@@ -157,7 +157,7 @@ void point_into_source(fg::Diagnostic& diagnostic, const std::string& text) {
   const std::string& line = lines[index];
   const auto first = line.find_first_not_of(" \t");
   const bool starts_line = token.empty() || (first != std::string::npos &&
-                                              line.compare(first, token.size(), token) == 0);
+                                             line.compare(first, token.size(), token) == 0);
   if (diagnostic.message.find("syntax error") != std::string::npos && starts_line) {
     std::size_t previous = index;
     while (previous > 0 && blank(lines[previous - 1])) --previous;
