@@ -61,6 +61,11 @@ cp "$2/scene.json" "$2/after-burst.json"
 # Resizing (no window manager under Xvfb: X resizes directly): the graph follows.
 xdotool search --name "antumbra edit" windowsize 800 450
 wait_for "graph resized to 800x450"
+# The cap lowered in the file on disk: the reload says, located, that the two
+# overlapping lamps need more layers than it allows (LY001), not only at start.
+sed 's/"maxLayers": 4/"maxLayers": 1/' "$2/graph.json" > "$2/graph.tmp" && mv "$2/graph.tmp" "$2/graph.json"
+wait_for "graph reloaded from disk"
+wait_for "graph.json:[0-9]*:[0-9]*: warning\[LY001\]"
 xdotool key ctrl+q  # no frames follow: the editor closes
 for _ in $(seq 1 600); do kill -0 $editor 2>/dev/null || break; sleep 0.1; done
 kill $editor 2>/dev/null && echo "the editor did not close on Ctrl+Q"
@@ -76,6 +81,7 @@ fail() { echo "FAIL: $*"; echo "--- driver:"; cat "$tmp/driver.txt"; echo "--- l
 grep -q "editor exit 0" "$tmp/driver.txt" || fail "the editor did not exit 0 on Ctrl+Q"
 grep -q "validation: 0 error(s)" "$log" || fail "no clean validation summary"
 grep -q "graph resized to 800x450" "$log" || fail "the graph did not follow the window's new size"
+grep -q "warning\[LY001\]" "$log" || fail "the lowered cap's reload did not warn"
 cp "$tmp/after-drag.json" "$tmp/scene.json"
 read -r x y z <<<"$(low_position)"
 echo "after the drag: $x $y $z"
