@@ -366,15 +366,16 @@ class EditRun {
     const glm::vec3 grabbed = position - drag.offset();
     const auto on_screen = editor::project(camera_.camera(), view_size(), grabbed);
     if (!on_screen || glm::distance(*on_screen, to) > 1.0f) {
+      char where[64] = "behind the camera";
+      if (on_screen) {
+        std::snprintf(where, sizeof where, "on screen %.1f px from the cursor",
+                      glm::distance(*on_screen, to));
+      }
       std::snprintf(text, sizeof text,
                     "the light did not end under the cursor: it is at (%.3f, %.3f, %.3f), %s; "
                     "the cursor's ray leaves the %s plane or the drag's limits "
                     "(far plane, %.1f m from its start)",
-                    position.x, position.y, position.z,
-                    on_screen ? ("on screen " + std::to_string(glm::distance(*on_screen, to)) +
-                                 " px from the cursor")
-                                    .c_str()
-                              : "behind the camera",
+                    position.x, position.y, position.z, where,
                     std::string(editor::to_string(drag.plane())).c_str(), drag_limit_);
       throw StepError{text};
     }
