@@ -2,6 +2,9 @@
 // Helpers for pass checks (fg::PassDesc::check): rules about what a pass is bound to that
 // the Vulkan-free compiler runs, so that `antumbra validate` rejects every graph that
 // `render` would reject before touching the GPU, located at the pass in the file.
+// A pass's prepare() must not refuse a plan for a reason it could have checked here:
+// tests/gpu/validate_render_test.cpp renders every mutant of the shipped graphs that the
+// compiler accepts and fails on any the executor refuses.
 
 #include <string>
 #include <string_view>
