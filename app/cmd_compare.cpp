@@ -223,6 +223,32 @@ void print_error_maps(const ErrorMaps& maps) {
 
 }  // namespace
 
+namespace {
+
+// The reference's region mask: channel 0 its penumbraCount (0 where the graph has none),
+// channel 1 the silhouette pixels of its depth (when it has a depth resource).
+std::optional<FloatImage> reference_mask(const std::optional<FloatImage>& penumbra,
+                                         const std::optional<FloatImage>& depth,
+                                         const scene::Camera& camera) {
+  if (!penumbra && !depth) return std::nullopt;
+  if (!depth) return penumbra;
+  FloatImage mask;
+  mask.width = depth->width;
+  mask.height = depth->height;
+  mask.channels = 2;
+  mask.texels.assign(std::size_t{mask.width} * mask.height * 2, 0.0f);
+  const auto edges = silhouette_mask(*depth, camera.near, camera.far);
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    if (penumbra && penumbra->width == mask.width && penumbra->height == mask.height) {
+      mask.texels[i * 2] = penumbra->texels[i * penumbra->channels];
+    }
+    mask.texels[i * 2 + 1] = edges[i];
+  }
+  return mask;
+}
+
+}  // namespace
+
 int run_quality(const QualityOptions& options) {
   unsigned width = 0;
   unsigned height = 0;
@@ -250,7 +276,7 @@ int run_quality(const QualityOptions& options) {
       options.reference.empty() ? (paths.graphs() / "reference.json").string() : options.reference;
   const std::string scene_path =
       options.scene.empty() ? (paths.scenes() / "atrium.json").string() : options.scene;
-  auto reference = load_for_quality(reference_path, options.resource, {"penumbraCount"});
+  auto reference = load_for_quality(reference_path, options.resource, {"penumbraCount", "depth"});
   if (!reference) return kExitDiagnostics;
   std::vector<fg::GraphDesc> graphs;
   for (const auto& path : options.graphs) {
@@ -268,6 +294,7 @@ int run_quality(const QualityOptions& options) {
   session_options.validation = options.validation;
   session_options.viewport = {width, height};
   RenderSession session(paths, session_options);
+  const scene::Camera camera = scene->camera;
   session.set_scene(std::move(scene.value()));
 
   auto render = [&](const fg::GraphDesc& graph, const std::string& path,
@@ -292,12 +319,15 @@ int run_quality(const QualityOptions& options) {
   double reference_ms = 0.0;
   const auto reference_hdr = render(*reference, reference_path, reference_ms);
   if (!reference_hdr) return kExitDiagnostics;
-  std::optional<FloatImage> mask;
-  if (const auto* image = session.executor().gpu_image("penumbraCount"); image != nullptr) {
-    mask = to_float_image(
-        gpu::read_image(session.gpu(), *image, session.executor().image("penumbraCount")->layout));
-  }
-  const auto regions = regions_for("", mask.has_value()).value();
+  const auto read_back = [&](const char* name) -> std::optional<FloatImage> {
+    const auto* image = session.executor().gpu_image(name);
+    if (image == nullptr) return std::nullopt;
+    return to_float_image(
+        gpu::read_image(session.gpu(), *image, session.executor().image(name)->layout));
+  };
+  const auto mask = reference_mask(read_back("penumbraCount"), read_back("depth"), camera);
+  auto regions = regions_for("", mask.has_value()).value();
+  if (mask && mask->channels >= 2) regions.push_back(MaskRegion::silhouette);
 
   nlohmann::json results = nlohmann::json::array();
   if (!json) {

@@ -148,6 +148,8 @@ std::string_view to_string(MaskRegion region) {
       return "penumbra";
     case MaskRegion::overlap:
       return "overlap";
+    case MaskRegion::silhouette:
+      return "silhouette";
   }
   return "all";
 }
@@ -156,6 +158,7 @@ std::optional<MaskRegion> parse_mask_region(std::string_view name) {
   if (name == "all") return MaskRegion::all;
   if (name == "penumbra") return MaskRegion::penumbra;
   if (name == "overlap") return MaskRegion::overlap;
+  if (name == "silhouette") return MaskRegion::silhouette;
   return std::nullopt;
 }
 
@@ -164,11 +167,58 @@ std::vector<std::uint8_t> region_mask(MaskRegion region, const FloatImage* mask,
   std::vector<std::uint8_t> selected(pixels, 1);
   if (region == MaskRegion::all) return selected;
   if (mask == nullptr) throw std::invalid_argument("a penumbra/overlap region needs a mask image");
+  if (region == MaskRegion::silhouette) {
+    if (mask->channels < 2) throw std::invalid_argument("the silhouette region needs channel 1");
+    for (std::size_t i = 0; i < pixels; ++i) {
+      selected[i] = mask->texels[i * mask->channels + 1] >= 1.0f ? 1 : 0;
+    }
+    return selected;
+  }
   const float threshold = region == MaskRegion::penumbra ? 1.0f : 2.0f;
   for (std::size_t i = 0; i < pixels; ++i) {
     selected[i] = mask->texels[i * mask->channels] >= threshold ? 1 : 0;
   }
   return selected;
+}
+
+std::vector<std::uint8_t> silhouette_mask(const FloatImage& depth, float near, float far,
+                                          int radius, float relative_jump) {
+  const std::uint32_t w = depth.width;
+  const std::uint32_t h = depth.height;
+  std::vector<float> z(std::size_t{w} * h);
+  for (std::uint32_t y = 0; y < h; ++y) {
+    for (std::uint32_t x = 0; x < w; ++x) {
+      // Inverse of d = far (z - near) / (z (far - near)).
+      const double d = std::clamp(static_cast<double>(depth.at(x, y, 0)), 0.0, 1.0);
+      z[std::size_t{y} * w + x] =
+          static_cast<float>(double(near) * far / std::max(far - d * (far - near), 1e-9));
+    }
+  }
+  std::vector<std::uint8_t> edge(z.size(), 0);
+  const auto jump = [&](std::size_t a, std::size_t b) {
+    return std::abs(z[a] - z[b]) > relative_jump * std::min(z[a], z[b]);
+  };
+  for (std::uint32_t y = 0; y < h; ++y) {
+    for (std::uint32_t x = 0; x < w; ++x) {
+      const std::size_t i = std::size_t{y} * w + x;
+      if (x + 1 < w && jump(i, i + 1)) edge[i] = edge[i + 1] = 1;
+      if (y + 1 < h && jump(i, i + w)) edge[i] = edge[i + w] = 1;
+    }
+  }
+  std::vector<std::uint8_t> out(z.size(), 0);
+  for (std::uint32_t y = 0; y < h; ++y) {
+    for (std::uint32_t x = 0; x < w; ++x) {
+      if (edge[std::size_t{y} * w + x] == 0) continue;
+      const int y0 = std::max(0, static_cast<int>(y) - radius);
+      const int y1 = std::min(static_cast<int>(h) - 1, static_cast<int>(y) + radius);
+      const int x0 = std::max(0, static_cast<int>(x) - radius);
+      const int x1 = std::min(static_cast<int>(w) - 1, static_cast<int>(x) + radius);
+      for (int yy = y0; yy <= y1; ++yy) {
+        for (int xx = x0; xx <= x1; ++xx) out[static_cast<std::size_t>(yy) * w + xx] = 1;
+      }
+    }
+  }
+  return out;
 }
 
 std::vector<double> ssim_map(const std::vector<float>& a, const std::vector<float>& b,

@@ -13,7 +13,9 @@
 //    C2 = 0.03^2; the window is cut at the image border and its weights renormalised, so
 //    every pixel has an SSIM value; the reported SSIM is the mean over selected pixels.
 // Masks: `penumbra` selects pixels whose mask value (channel 0, e.g. the reference's
-// penumbraCount) is >= 1, `overlap` those with >= 2; `all` selects every pixel.
+// penumbraCount) is >= 1, `overlap` those with >= 2; `silhouette` those whose channel 1
+// is >= 1 (silhouette_mask: pixels near a depth discontinuity, where a technique that
+// filters or upsamples across depth edges shows seams); `all` selects every pixel.
 
 #include <cstdint>
 #include <filesystem>
@@ -47,13 +49,20 @@ bool write_pfm(const std::filesystem::path& path, const FloatImage& image);
 // Luminance clamped to [0, 1], one value per pixel.
 std::vector<float> display_luminance(const FloatImage& image);
 
-enum class MaskRegion { all, penumbra, overlap };
+enum class MaskRegion { all, penumbra, overlap, silhouette };
 std::string_view to_string(MaskRegion region);
 std::optional<MaskRegion> parse_mask_region(std::string_view name);
 
 // Per-pixel selection of a region: all pixels, or the mask thresholds above.
 std::vector<std::uint8_t> region_mask(MaskRegion region, const FloatImage* mask,
                                       std::size_t pixels);
+
+// 1 for pixels within `radius` pixels (Chebyshev) of a depth discontinuity: neighbouring
+// linear depths that differ by more than `relative_jump` of the nearer one. `depth` holds
+// perspectiveRH_ZO window depths (scene::Camera) of a camera with `near` and `far`; the
+// far plane (depth 1, the sky) counts as a surface at `far`.
+std::vector<std::uint8_t> silhouette_mask(const FloatImage& depth, float near, float far,
+                                          int radius = 2, float relative_jump = 0.1f);
 
 struct Metrics {
   std::size_t pixels = 0;  // selected pixels; the values below are NaN when 0

@@ -38,6 +38,44 @@ FloatImage mask_of(std::uint32_t w, std::uint32_t h, float (*f)(std::uint32_t, s
   return image;
 }
 
+// A depth image of linear depths `z` (perspectiveRH_ZO window depth, as scene::Camera).
+FloatImage depth_of(const std::vector<float>& z, std::uint32_t width, float near, float far) {
+  FloatImage image;
+  image.width = width;
+  image.height = static_cast<std::uint32_t>(z.size()) / width;
+  image.channels = 1;
+  for (const float v : z) image.texels.push_back(far * (v - near) / (v * (far - near)));
+  return image;
+}
+
+TEST(Metrics, SilhouettePixelsAreThoseNearADepthStep) {
+  // 10 x 3: a wall at 10 m behind a column at 2 m covering x = 0..4.
+  std::vector<float> z;
+  for (int y = 0; y < 3; ++y) {
+    for (int x = 0; x < 10; ++x) z.push_back(x < 5 ? 2.0f : 10.0f);
+  }
+  const auto mask = silhouette_mask(depth_of(z, 10, 0.1f, 100.0f), 0.1f, 100.0f, 2);
+  for (int x = 0; x < 10; ++x) {
+    // The step is between x = 4 and 5: both sides, 2 pixels either way.
+    EXPECT_EQ(mask[static_cast<std::size_t>(x)], (x >= 2 && x <= 7) ? 1 : 0) << x;
+    EXPECT_EQ(mask[static_cast<std::size_t>(20 + x)], mask[static_cast<std::size_t>(x)]);
+  }
+  // A floor receding smoothly (1 % a pixel) has no silhouette, however far it goes.
+  std::vector<float> slope;
+  for (int x = 0; x < 40; ++x) slope.push_back(1.0f * std::pow(1.01f, static_cast<float>(x)));
+  const auto none = silhouette_mask(depth_of(slope, 40, 0.1f, 100.0f), 0.1f, 100.0f, 2);
+  for (const auto v : none) EXPECT_EQ(v, 0);
+  // The region selects channel 1 of a mask image.
+  FloatImage regions;
+  regions.width = 2;
+  regions.height = 1;
+  regions.channels = 2;
+  regions.texels = {0.0f, 1.0f, 3.0f, 0.0f};
+  EXPECT_EQ(region_mask(MaskRegion::silhouette, &regions, 2), (std::vector<std::uint8_t>{1, 0}));
+  EXPECT_EQ(region_mask(MaskRegion::overlap, &regions, 2), (std::vector<std::uint8_t>{0, 1}));
+  EXPECT_EQ(parse_mask_region("silhouette"), MaskRegion::silhouette);
+}
+
 TEST(Metrics, IdenticalImagesAreExact) {
   const auto a = grey(32, 24, ramp);
   const auto result = compare_images(a, a, nullptr, {MaskRegion::all});
