@@ -1,11 +1,12 @@
 // A strict recursive-descent JSON parser that records the position of every value.
+#include <cerrno>
 #include <charconv>
 #include <cmath>
-#include <filesystem>
-#include <cerrno>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <utility>
 
 #include "antumbra/fg/diagnostic_codes.hpp"
 #include "antumbra/fg/json_document.hpp"
@@ -17,6 +18,7 @@ struct ParseError {
   const char* code;
   std::string message;
   TextPosition position;
+  std::string pointer;  // the innermost value being read (a duplicate key: its own)
 };
 
 // Length of the UTF-8 sequence starting at s[i], or 0 when it is not valid UTF-8.
@@ -82,7 +84,8 @@ class Parser {
   Json parse_document() {
     skip_bom();
     skip_whitespace();
-    if (at_end()) throw ParseError{codes::kJsonEmpty, "the file is empty; expected a JSON value", here()};
+    if (at_end())
+      throw ParseError{codes::kJsonEmpty, "the file is empty; expected a JSON value", here()};
     Json root = parse_value("", 0);
     skip_whitespace();
     if (!at_end()) fail("unexpected " + describe_char(peek()) + " after the end of the JSON value");
@@ -95,10 +98,14 @@ class Parser {
  private:
   [[nodiscard]] bool at_end() const { return pos_ >= text_.size(); }
   [[nodiscard]] char peek() const { return text_[pos_]; }
-  [[nodiscard]] TextPosition here() const { return {line_, static_cast<int>(pos_ - line_start_) + 1}; }
+  [[nodiscard]] TextPosition here() const {
+    return {line_, static_cast<int>(pos_ - line_start_) + 1};
+  }
+
+  std::string where_;  // JSON Pointer of the value being read, for syntax errors
 
   [[noreturn]] void fail(std::string message) const {
-    throw ParseError{codes::kJsonSyntax, std::move(message), here()};
+    throw ParseError{codes::kJsonSyntax, std::move(message), here(), where_};
   }
 
   void advance() {
@@ -121,7 +128,8 @@ class Parser {
       const char c = peek();
       if (c == ' ' || c == '\t' || c == '\n' || c == '\r') {
         advance();
-      } else if (c == '/' && pos_ + 1 < text_.size() && (text_[pos_ + 1] == '/' || text_[pos_ + 1] == '*')) {
+      } else if (c == '/' && pos_ + 1 < text_.size() &&
+                 (text_[pos_ + 1] == '/' || text_[pos_ + 1] == '*')) {
         fail("comments are not allowed in JSON");
       } else {
         return;
@@ -130,7 +138,8 @@ class Parser {
   }
 
   void expect_literal(std::string_view word) {
-    if (text_.substr(pos_, word.size()) != word) fail("invalid literal; expected '" + std::string(word) + "'");
+    if (text_.substr(pos_, word.size()) != word)
+      fail("invalid literal; expected '" + std::string(word) + "'");
     for (std::size_t i = 0; i < word.size(); ++i) advance();
   }
 
@@ -138,8 +147,17 @@ class Parser {
     if (depth > options_.max_depth) {
       throw ParseError{codes::kJsonTooDeep,
                        "nesting deeper than " + std::to_string(options_.max_depth) + " levels",
-                       here()};
+                       here()};  // no pointer: hundreds of "/0" would bury the message
     }
+    // Errors inside point at the innermost value being read; the caller's is restored when
+    // this value is done (an error after it belongs to the enclosing object or array).
+    const std::string enclosing = std::exchange(where_, pointer);
+    Json value = parse_value_at(pointer, depth);
+    where_ = enclosing;
+    return value;
+  }
+
+  Json parse_value_at(const std::string& pointer, int depth) {
     skip_whitespace();
     if (at_end()) fail("unexpected end of file; expected a value");
     value_positions[pointer] = here();
@@ -185,7 +203,7 @@ class Parser {
       std::string key = parse_string();
       const std::string child = pointer_append(pointer, key);
       if (object.contains(key)) {
-        throw ParseError{codes::kJsonDuplicateKey, "duplicate key \"" + key + "\"", key_pos};
+        throw ParseError{codes::kJsonDuplicateKey, "duplicate key \"" + key + "\"", key_pos, child};
       }
       key_positions[child] = key_pos;
       skip_whitespace();
@@ -270,14 +288,30 @@ class Parser {
         const char e = peek();
         advance();
         switch (e) {
-          case '"': out += '"'; break;
-          case '\\': out += '\\'; break;
-          case '/': out += '/'; break;
-          case 'b': out += '\b'; break;
-          case 'f': out += '\f'; break;
-          case 'n': out += '\n'; break;
-          case 'r': out += '\r'; break;
-          case 't': out += '\t'; break;
+          case '"':
+            out += '"';
+            break;
+          case '\\':
+            out += '\\';
+            break;
+          case '/':
+            out += '/';
+            break;
+          case 'b':
+            out += '\b';
+            break;
+          case 'f':
+            out += '\f';
+            break;
+          case 'n':
+            out += '\n';
+            break;
+          case 'r':
+            out += '\r';
+            break;
+          case 't':
+            out += '\t';
+            break;
           case 'u': {
             std::uint32_t cp = parse_hex4();
             if (cp >= 0xD800 && cp <= 0xDBFF) {
@@ -312,24 +346,28 @@ class Parser {
     const std::size_t start = pos_;
     bool is_integer = true;
     if (peek() == '-') advance();
-    if (at_end() || !std::isdigit(static_cast<unsigned char>(peek()))) fail("invalid number; expected a digit");
+    if (at_end() || !std::isdigit(static_cast<unsigned char>(peek())))
+      fail("invalid number; expected a digit");
     if (peek() == '0') {
       advance();
-      if (!at_end() && std::isdigit(static_cast<unsigned char>(peek()))) fail("numbers must not have leading zeros");
+      if (!at_end() && std::isdigit(static_cast<unsigned char>(peek())))
+        fail("numbers must not have leading zeros");
     } else {
       while (!at_end() && std::isdigit(static_cast<unsigned char>(peek()))) advance();
     }
     if (!at_end() && peek() == '.') {
       is_integer = false;
       advance();
-      if (at_end() || !std::isdigit(static_cast<unsigned char>(peek()))) fail("invalid number; expected a digit after '.'");
+      if (at_end() || !std::isdigit(static_cast<unsigned char>(peek())))
+        fail("invalid number; expected a digit after '.'");
       while (!at_end() && std::isdigit(static_cast<unsigned char>(peek()))) advance();
     }
     if (!at_end() && (peek() == 'e' || peek() == 'E')) {
       is_integer = false;
       advance();
       if (!at_end() && (peek() == '+' || peek() == '-')) advance();
-      if (at_end() || !std::isdigit(static_cast<unsigned char>(peek()))) fail("invalid number; expected a digit in the exponent");
+      if (at_end() || !std::isdigit(static_cast<unsigned char>(peek())))
+        fail("invalid number; expected a digit in the exponent");
       while (!at_end() && std::isdigit(static_cast<unsigned char>(peek()))) advance();
     }
     const std::string_view token = text_.substr(start, pos_ - start);
@@ -384,7 +422,8 @@ JsonDocument::JsonDocument(std::string file, Json root,
     : file_(std::move(file)),
       root_(std::move(root)),
       value_positions_(std::move(value_positions)),
-      key_positions_(std::move(key_positions)) {}
+      key_positions_(std::move(key_positions)) {
+}
 
 TextPosition JsonDocument::position(std::string_view pointer) const {
   std::string p(pointer);
@@ -396,14 +435,16 @@ TextPosition JsonDocument::position(std::string_view pointer) const {
 }
 
 TextPosition JsonDocument::key_position(std::string_view pointer) const {
-  if (auto it = key_positions_.find(std::string(pointer)); it != key_positions_.end()) return it->second;
+  if (auto it = key_positions_.find(std::string(pointer)); it != key_positions_.end())
+    return it->second;
   return position(pointer);
 }
 
 Diagnostic JsonDocument::make(std::string code, Severity severity, std::string message,
                               const std::string& pointer, bool at_key) const {
   const TextPosition pos = at_key ? key_position(pointer) : position(pointer);
-  return Diagnostic{std::move(code), severity, std::move(message), file_, pointer, pos.line, pos.column};
+  return Diagnostic{std::move(code), severity, std::move(message), file_,
+                    pointer,         pos.line, pos.column};
 }
 
 Result<JsonDocument> parse_json(std::string_view text, const std::string& file,
@@ -415,7 +456,8 @@ Result<JsonDocument> parse_json(std::string_view text, const std::string& file,
                         std::move(parser.key_positions));
   } catch (const ParseError& e) {
     Diagnostics diagnostics;
-    diagnostics.add(Diagnostic{e.code, Severity::error, e.message, file, "", e.position.line, e.position.column});
+    diagnostics.add(Diagnostic{e.code, Severity::error, e.message, file, e.pointer, e.position.line,
+                               e.position.column});
     return diagnostics;
   }
 }

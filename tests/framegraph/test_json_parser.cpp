@@ -81,6 +81,16 @@ TEST(JsonParser, DuplicateKeyPointsAtSecondKey) {
   EXPECT_EQ(d.code, codes::kJsonDuplicateKey);
   EXPECT_EQ(d.line, 2);
   EXPECT_EQ(d.column, 2);
+  EXPECT_EQ(d.pointer, "/a");
+  EXPECT_EQ(parse_error(R"({"passes": [{"params": {"order": 1, "order": 2}}]})").pointer,
+            "/passes/0/params/order");
+}
+
+TEST(JsonParser, SyntaxErrorsPointAtTheInnermostValue) {
+  EXPECT_EQ(parse_error(R"({"a": {"b": [1, 2,]}})").pointer, "/a/b");
+  EXPECT_EQ(parse_error(R"({"passes": [{"name": "x" "type": "y"}]})").pointer, "/passes/0");
+  EXPECT_EQ(parse_error(R"({"a": 1,})").pointer, "");
+  EXPECT_EQ(parse_error(R"({"a": tru})").pointer, "/a");
 }
 
 TEST(JsonParser, DepthLimit) {
