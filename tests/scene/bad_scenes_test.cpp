@@ -47,7 +47,7 @@ TEST_P(BadScenes, ReportsTheExpectedLocatedDiagnostic) {
 INSTANTIATE_TEST_SUITE_P(
     Fixtures, BadScenes,
     ::testing::Values(
-        BadScene{"syntax_error.json", "FG001", "", 5},
+        BadScene{"syntax_error.json", "FG001", "/objects/0", 5},
         BadScene{"unknown_key.json", "SC004", "/lights/0/rnage", 5, "did you mean 'range'?"},
         BadScene{"wrong_type.json", "SC003", "/camera/fovY", 4, "expected a number"},
         BadScene{"negative_range.json", "SC006", "/lights/1/range", 7, "> 0"},
