@@ -127,10 +127,10 @@ fg::Diagnostics RenderSession::frame_diagnostics() const {
     std::string pointer;
     if (pass != nullptr && pass->source_index >= 0) {
       pointer = "/passes/" + std::to_string(pass->source_index);
-      const std::string cap = pointer + "/params/maxLayers";
-      if (m.code == "LY001" && live_document_.root().is_object() &&
-          live_document_.root().contains(nlohmann::json::json_pointer(cap))) {
-        pointer = cap;
+      const std::string param = pointer + "/params/" + m.param;
+      if (!m.param.empty() && live_document_.root().is_object() &&
+          live_document_.root().contains(nlohmann::json::json_pointer(param))) {
+        pointer = param;
       }
     }
     out.add(

@@ -65,8 +65,8 @@ class RenderSession {
   [[nodiscard]] std::vector<PassTiming> pass_timings() const;
   // What the passes reported about the last rendered frame.
   [[nodiscard]] const fgvk::FrameReport& last_report() const { return report_; }
-  // The same messages as diagnostics located in the live graph's file: at the pass that
-  // reported it (a layer-cap warning at the cap, /passes/N/params/maxLayers), so reports
+  // The same messages as diagnostics located in the live graph's file: at the parameter
+  // a message names (a layer-cap warning at /passes/N/params/maxLayers), else its pass, so reports
   // print them like any other diagnostic and JSON reports carry one list.
   [[nodiscard]] fg::Diagnostics frame_diagnostics() const;
 

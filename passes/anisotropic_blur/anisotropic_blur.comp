@@ -1,7 +1,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 // One direction of the separable, depth-aware, anisotropic Gaussian blur of the layered
-// shadow (TECHNIQUE.md section 1, step 5), at the resolution of its output (half
+// shadow (docs/technique.md section 1, step 5), at the resolution of its output (half
 // resolution in the default graphs). The first direction reads the full-resolution
 // hard-shadow bits, averaging the 2x2 texels under each half-resolution texel (the
 // supersampling that hides blockiness), or the ESM values the same way; the second reads

@@ -1,6 +1,6 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// Batched layered penumbra estimation (TECHNIQUE.md section 1, step 4): one dispatch
+// Batched layered penumbra estimation (docs/technique.md section 1, step 4): one dispatch
 // reads every light's shadow faces through one sampler2DArray and writes, per pixel
 // and per screen layer, the penumbra width (4 layers per RGBA16F texel, array layers
 // beyond 4), a hard-shadow bit (32 layers in one R32UI) and the translucent shadow

@@ -30,7 +30,7 @@ PenumbraSample estimate_penumbra(ShadowLight sl, vec3 world, vec3 n_world) {
   ShadowCoord c = shadow_coord(faces[layer].view_proj, sl, layer, p);
   if (!c.valid || c.depth >= 1.0) return result;
   result.in_shadow = shadow_hard_coord(atlas, c) < 0.5;
-  // ESM (TECHNIQUE.md section 3): the occluder at the lookup against the receiver, in
+  // ESM (docs/technique.md section 3): the occluder at the lookup against the receiver, in
   // units of the light's depth range so one c suits every light. Receivers just behind
   // their own surface stay near 1, which is what keeps ESM free of acne.
   float occluder = shadow_linearise_light(sl, textureLod(atlas, vec3(c.uv, c.layer), 0.0).r);

@@ -84,7 +84,7 @@ void LightLayeringPass::execute(fgvk::ExecuteContext& context) {
 
   for (const auto& warning : assignment->warnings) {
     context.report.add({context.pass.name, "LY001", fg::Severity::warning, warning.message,
-                        layering::to_json(warning)});
+                        layering::to_json(warning), "maxLayers"});
   }
 }
 

@@ -7,7 +7,7 @@
 //  - Directional: an orthographic box along the sun direction, clip.w = 1 and depth
 //    linear in metres from the box's near plane. Its xy square is fitted around the
 //    bounding sphere of the camera frustum cut at `max_distance`, and its origin snapped
-//    to whole texels so that the map does not shimmer as the camera moves (TECHNIQUE.md
+//    to whole texels so that the map does not shimmer as the camera moves (docs/technique.md
 //    3, CSM notes; one cascade). Its depth range spans the sphere and every scene caster
 //    between it and the sun, so no caster is clipped by the near plane.
 // The face bases are only needed to be orthonormal: the atlas rasterises without culling.

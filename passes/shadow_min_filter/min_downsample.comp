@@ -1,6 +1,6 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// Step 1 of the separable min filter (TECHNIQUE.md section 1, step 4, the cheaper
+// Step 1 of the separable min filter (docs/technique.md section 1, step 4, the cheaper
 // alternative to the blocker search): each output texel takes the nearest depth of the
 // factor x factor atlas texels under it, read four at a time with gathers, so every
 // atlas texel is read once.

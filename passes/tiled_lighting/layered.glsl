@@ -1,5 +1,5 @@
 // The `layered` mode: each light reads its own layer of the blurred layered shadow
-// buffer (TECHNIQUE.md 1, step 6). Layer L of the light-layering table lives in channel
+// buffer (docs/technique.md 1, step 6). Layer L of the light-layering table lives in channel
 // L % 4 of array layer L / 4 of `shadow` (1 = lit, 0 = shadowed); the optional `colour`
 // (rgba32ui) holds the shadow colour of translucent occluders in the same place, packed
 // r<<24 | g<<16 | b<<8 | a (a = opacity; 0xFFFFFFFF = no tint). One fetch per array

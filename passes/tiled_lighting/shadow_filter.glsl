@@ -111,7 +111,7 @@ float filter_pcf(FilterCoord c, int taps, float spacing) {
   return sum / float(taps * taps);
 }
 
-// PCSS (TECHNIQUE.md 3): blocker search over BLOCKER_SEARCH^2 taps in a region scaled by
+// PCSS (docs/technique.md 3): blocker search over BLOCKER_SEARCH^2 taps in a region scaled by
 // the light size (NVIDIA's w_light_uv * (z_r - n) / z_r, w_light_uv = w_light / 2 for a
 // 90-degree face) and capped at the kernel's radius; then
 // w_penumbra = (d_receiver - d_blocker) * w_light / d_blocker in linear depth, and a

@@ -1,6 +1,6 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// Tiled deferred shading (TECHNIQUE.md 1, step 6). One 16x16 workgroup per tile:
+// Tiled deferred shading (docs/technique.md 1, step 6). One 16x16 workgroup per tile:
 //  1. the tile's linear depth bounds, min/max through shared-memory atomics on the
 //     float bits (positive floats order like their bit patterns);
 //  2. a per-tile light list in shared memory: every light's bounding sphere (a spot

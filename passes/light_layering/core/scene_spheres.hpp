@@ -21,7 +21,7 @@ namespace antumbra::layering {
 // Fills `spheres` (cleared first) with the shadow-casting lights among the first
 // `max_lights` of `lights`: point lights as their lit sphere, spot lights as the bounding
 // sphere of their cone (common/light_bounds.hpp, conservative), the directional sun as an
-// infinite sphere on a layer of its own (TECHNIQUE.md 1, step 3). `scene_index[s]` is the
+// infinite sphere on a layer of its own (docs/technique.md 1, step 3). `scene_index[s]` is the
 // index in `lights` of sphere s.
 void gather_light_spheres(std::span<const scene::PointLight> lights, std::size_t max_lights,
                           std::vector<LightSphere>& spheres,

@@ -100,6 +100,9 @@ struct PassMessage {
   fg::Severity severity = fg::Severity::warning;
   std::string message;
   fg::Json details;  // machine-readable payload
+  // The parameter the message is about (e.g. "maxLayers"), so that reports point at it
+  // in the graph file; empty: the pass itself.
+  std::string param;
 };
 
 class FrameReport {
