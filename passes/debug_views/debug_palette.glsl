@@ -1,19 +1,18 @@
-// Colours shared by the debug views. Mirrors debug_palette.hpp (the tests count
-// palette colours in the layer view); keep the two in step.
+// Colours shared by the debug views. The layer palette itself is layer_palette.h, which
+// the C++ side (debug_palette.hpp, the tests) includes too.
 #ifndef ANTUMBRA_DEBUG_PALETTE_GLSL
 #define ANTUMBRA_DEBUG_PALETTE_GLSL
 
-// 32 distinct, saturated colours (golden-ratio hues): one per screen layer. None is a
-// grey, so a grey pixel always means "no light's sphere reaches here".
-const uint kLayerPalette[32] = uint[32](
-    0x26D9FFu, 0x739CFFu, 0x95FF00u, 0xFF4DE9u, 0x1FCCAFu, 0xCC995Cu, 0x3300CCu, 0x43CC3Du,
-    0xE62264u, 0x67B6E6u, 0xD3E600u, 0xC445E6u, 0x19A65Fu, 0xA65D4Bu, 0x000EA6u, 0x5DA632u,
-    0xFF26B7u, 0x73F9FFu, 0xFFBF00u, 0x9E4DFFu, 0x1FCC3Bu, 0xCC5C6Au, 0x0056CCu, 0xA3CC3Du,
-    0xE522E6u, 0x67E6C0u, 0xE65F00u, 0x5845E6u, 0x31A619u, 0xA64B75u, 0x007DA6u, 0xA6A032u);
+#include "layer_palette.h"
+
+const uint kLayerPalette[32] = uint[32](ANTUMBRA_LAYER_PALETTE);
+
+vec3 rgb_of(uint c) {
+  return vec3(float((c >> 16u) & 255u), float((c >> 8u) & 255u), float(c & 255u)) / 255.0;
+}
 
 vec3 layer_colour(uint layer) {
-  uint c = kLayerPalette[layer & 31u];
-  return vec3(float((c >> 16u) & 255u), float((c >> 8u) & 255u), float(c & 255u)) / 255.0;
+  return rgb_of(kLayerPalette[layer & 31u]);
 }
 
 // Turbo colour map (Mikhailov 2019, polynomial fit): perceptually ordered, never black,

@@ -88,7 +88,7 @@ void main() {
   vec3 result = vec3(dim * shade);
   if (shared_layer) {
     bool stripe = (int(floor(float(pixel.x + pixel.y) / max(stripe_px, 1.0))) & 1) == 0;
-    result = stripe ? vec3(1.0, 0.0, 0.0) : vec3(1.0);
+    result = rgb_of(stripe ? ANTUMBRA_SHARED_STRIPE_A : ANTUMBRA_SHARED_STRIPE_B);
   } else if (weight > 0.0) {
     result = dominant != 0u ? best_colour : (sum / weight) * shade;
   }
