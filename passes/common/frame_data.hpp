@@ -8,22 +8,12 @@
 #include <glm/glm.hpp>
 
 #include "antumbra/scene/scene.hpp"
+#include "frame_uniforms.h"
 
 namespace antumbra::passes {
 
-// std140 `FrameUniforms` in frame.glsl.
-struct FrameUniforms {
-  glm::mat4 view{1.0f};
-  glm::mat4 proj{1.0f};
-  glm::mat4 view_proj{1.0f};
-  glm::mat4 inv_proj{1.0f};
-  glm::vec4 viewport{0.0f};  // width, height, 1/width, 1/height
-  glm::vec4 ambient{0.0f};
-  glm::uvec4 counts{0u};  // x light count, y frame index
-  glm::mat4 inv_view{1.0f};
-  glm::vec4 camera_world{0.0f};  // xyz position, w near
-  glm::vec4 projection{0.0f};    // proj[0][0], proj[1][1], near, far
-};
+// std140 `FrameUniforms`, declared once in frame_uniforms.h (shared with frame.glsl).
+using shared::FrameUniforms;
 static_assert(sizeof(FrameUniforms) == 5 * 64 + 5 * 16);
 
 // std430 `GpuLight` in lights.glsl (see there for the per-type meaning of the fields).

@@ -1,0 +1,33 @@
+// The per-frame data every pass reads (std140 uniform block `Frame`), declared once for
+// GLSL (frame.glsl includes this file) and C++ (frame_data.hpp): the types are GLSL's
+// names, which C++ maps to GLM's. Each member is a vec4 or mat4, so std140 and the C++
+// layout agree without padding.
+#ifndef ANTUMBRA_FRAME_UNIFORMS_H
+#define ANTUMBRA_FRAME_UNIFORMS_H
+
+#ifdef __cplusplus
+#include <glm/glm.hpp>
+namespace antumbra::passes::shared {
+using mat4 = glm::mat4;
+using vec4 = glm::vec4;
+using uvec4 = glm::uvec4;
+#endif
+
+struct FrameUniforms {
+  mat4 view;
+  mat4 proj;
+  mat4 view_proj;
+  mat4 inv_proj;
+  vec4 viewport;      // width, height, 1/width, 1/height
+  vec4 ambient;       // rgb, w unused
+  uvec4 counts;       // x = light count, y = frame index
+  mat4 inv_view;      // view -> world
+  vec4 camera_world;  // xyz camera position in world space, w = near plane
+  vec4 projection;    // x = proj[0][0], y = proj[1][1] (focal lengths), z = near, w = far
+};
+
+#ifdef __cplusplus
+}  // namespace antumbra::passes::shared
+#endif
+
+#endif
