@@ -10,8 +10,10 @@
 // Kernel radius in output pixels, per layer:
 //   penumbra_width * focal / view_depth * sqrt(max(n_view.z, 0.25))
 // where penumbra_width comes from layered-penumbra in world units. Taps whose linear
-// depth differs from the centre's by more than depth_threshold (relative) are skipped,
-// so shadows do not bleed across depth edges.
+// depth differs from the centre's by more than depth_threshold (relative), or whose
+// normal turns away from the centre's (cosine below normal_threshold), are skipped, so
+// shadows bleed neither across depth edges nor between faces meeting at a corner (a
+// column's side seen edge-on next to its front at the same depth).
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
@@ -37,8 +39,12 @@ layout(push_constant) uniform Params {
   uint half_taps;         // (kernel - 1) / 2
   uint slots;             // array layers of the output (4 shadow layers each)
   uint layers;            // shadow layers in use
-  uint pad;
+  float normal_threshold; // cosine between normals below which a tap is rejected
 };
+
+vec3 view_normal(ivec2 full_pixel) {
+  return normalize(texelFetch(g_normal, full_pixel, 0).xyz);
+}
 
 float linear_depth(ivec2 full_pixel) {
   float d = texelFetch(g_depth, full_pixel, 0).r;
@@ -68,12 +74,14 @@ vec4 visibility(ivec2 out_pixel, uint slot, ivec2 full_size, ivec2 scale) {
   vec4 sum = full_resolution_input(first, slot);
   if (scale == ivec2(1)) return sum;
   float z_ref = linear_depth(first);
+  vec3 n_ref = view_normal(first);
   float count = 1.0;
   for (int y = 0; y < scale.y; ++y) {
     for (int x = 0; x < scale.x; ++x) {
       if (x == 0 && y == 0) continue;
       ivec2 p = min(out_pixel * scale + ivec2(x, y), full_size - 1);
       if (abs(linear_depth(p) - z_ref) > depth_threshold * z_ref) continue;
+      if (dot(view_normal(p), n_ref) < normal_threshold) continue;
       sum += full_resolution_input(p, slot);
       count += 1.0;
     }
@@ -98,7 +106,7 @@ void main() {
     return;
   }
   float z_centre = linear_depth(full_pixel);
-  vec3 n_view = normalize(texelFetch(g_normal, full_pixel, 0).xyz);
+  vec3 n_view = view_normal(full_pixel);
   float anisotropy = sqrt(max(n_view.z, 0.25));
   // Focal length in output pixels: world size w at depth z covers w * focal / z pixels.
   // abs: proj[1][1] is negative (Vulkan's y points down); a negative focal length
@@ -124,6 +132,7 @@ void main() {
           ivec2 tap_full = min(tap * scale, full_size - 1);
           if (texelFetch(g_depth, tap_full, 0).r >= 1.0) continue;
           if (abs(linear_depth(tap_full) - z_centre) > depth_threshold * z_centre) continue;
+          if (dot(view_normal(tap_full), n_view) < normal_threshold) continue;
           sum[c] += w_tap * visibility(tap, s, full_size, scale)[c];
           weight_sum[c] += w_tap;
         }

@@ -99,6 +99,14 @@ fg::PassDesc AnisotropicBlurPass::describe() {
        .max = 1.0,
        .description =
            "Relative depth difference that rejects a tap (stops bleeding across edges)."},
+      {.name = "normalThreshold",
+       .type = fg::ParamType::number,
+       .default_value = 0.8,
+       .min = -1.0,
+       .max = 1.0,
+       .description = "Taps whose normal's cosine to the centre's is below this are rejected: "
+                      "a face seen edge-on (a column's side, a slab's front) keeps its own "
+                      "shadow instead of its neighbours' at the same depth. -1 turns it off."},
       {.name = "maxRadius",
        .type = fg::ParamType::number,
        .default_value = 24.0,

@@ -18,7 +18,7 @@ struct PushConstants {
   std::uint32_t half_taps;
   std::uint32_t slots;
   std::uint32_t layers;
-  std::uint32_t pad;
+  float normal_threshold;
 };
 
 constexpr VkShaderStageFlags kCompute = VK_SHADER_STAGE_COMPUTE_BIT;
@@ -86,7 +86,7 @@ void AnisotropicBlurPass::execute(fgvk::ExecuteContext& context) {
                                 (kernel - 1) / 2,
                                 shadow.layers,
                                 penumbra.layers * 4,
-                                0};
+                                param_float(context.pass, "normalThreshold")};
   vkCmdPushConstants(cmd, compute_.layout, kCompute, 0, sizeof constants, &constants);
   vkCmdDispatch(cmd, (shadow.extent.width + 7) / 8, (shadow.extent.height + 7) / 8, 1);
 }

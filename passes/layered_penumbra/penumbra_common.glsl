@@ -83,8 +83,12 @@ PenumbraSample estimate_penumbra(ShadowLight sl, vec3 world, vec3 n_world) {
   }
 #ifdef HAS_COLOUR
   // Only lights with a translucent caster in range have valid colour layers (w = 1).
+  // rgb: the product of the panes' tints; a: the nearest pane's distance over the far
+  // plane (shadow_colour.frag). A receiver not behind that pane (a lit pane's own
+  // surface, offset towards the light) is not tinted by it.
   if (sl.params.w > 0.5) {
-    result.colour = pack_colour(textureLod(colour_atlas, vec3(c.uv, c.layer), 0.0));
+    vec4 tint = textureLod(colour_atlas, vec3(c.uv, c.layer), 0.0);
+    if (c.linear > tint.a * sl.position_range.w) result.colour = pack_colour(vec4(tint.rgb, 1.0));
   }
 #endif
   return result;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cstring>
 
 #include <nlohmann/json.hpp>
@@ -125,7 +126,7 @@ void PointShadowAtlasPass::prepare(fgvk::PrepareContext& context) {
             .shader(VK_SHADER_STAGE_VERTEX_BIT, colour_vert)
             .shader(VK_SHADER_STAGE_FRAGMENT_BIT, colour_frag)
             .depth(true, false, VK_COMPARE_OP_LESS_OR_EQUAL)
-            .multiply_blend(0)
+            .tint_blend(0)
             .build(context.gpu, context.pass.name + ".colour");
   }
 
@@ -256,7 +257,11 @@ void PointShadowAtlasPass::upload(fgvk::ExecuteContext& context, const AtlasFram
   for (std::size_t i = 0; i < frame.render_layers.size(); ++i) {
     const std::uint32_t layer = frame.render_layers[i];
     draws[i].view_proj = frame.faces[layer].view_proj;
-    draws[i].info = {layer, frame.faces[layer].info.y, 0u, 0u};
+    // info.z: the face's far plane (float bits), so the colour pass can store a pane's
+    // distance as a fraction of it (shadow_colour.frag).
+    const std::uint32_t light = frame.faces[layer].info.x;
+    const float far = light < frame.lights.size() ? frame.lights[light].position_range.w : 1.0f;
+    draws[i].info = {layer, frame.faces[layer].info.y, std::bit_cast<std::uint32_t>(far), 0u};
   }
 }
 

@@ -26,6 +26,9 @@ layout(location = 0) flat out uint out_material;
 // dot(normal, point - light) (the sun: dot(normal, its direction)), up to a positive
 // scale: < 0 where the surface faces the light. Constant over a flat triangle.
 layout(location = 1) out float out_away;
+// Distance from the light as a fraction of the face's far plane (info.z, float bits):
+// along the face axis (clip.w) for perspective faces, clip.z for orthographic maps.
+layout(location = 2) out float out_distance;
 #endif
 
 void main() {
@@ -48,6 +51,7 @@ void main() {
                                          max(dot(rx, rx), 1e-12) +
                                      dot(rw, in_normal) * clip.w
                                : dot(rz, in_normal);
+  out_distance = dot(rw, rw) > 0.0 ? clip.w / max(uintBitsToFloat(face.info.z), 1e-6) : clip.z;
 #elif defined(SKIP_TRANSLUCENT)
   bool keep = !translucent;  // translucent casters tint through the colour map instead
 #else

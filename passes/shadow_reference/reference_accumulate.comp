@@ -7,12 +7,15 @@
 // colour layers, white where no pane is; reference_colour.frag), all weighted.
 //
 // Point and spot lights: sample k is a point of the light's sphere, seen through cube
-// faces. Weight ("projected", the default): the cosine between the sphere's normal at
-// the sample and the direction to the receiver, zero on the far hemisphere. A uniformly
-// radiant sphere seen from the receiver is a uniformly bright disk; cosine-weighted
-// uniform sphere samples project to a uniform density on that disk, so the average is
-// the visible fraction of the light. "uniform" weighs every sample 1 (the projection of
-// a uniform sphere: more weight near the disk's rim, a linear penumbra profile).
+// faces. Weight ("projected", the default): cos(theta_s) / r^2, theta_s between the
+// sphere's normal at the sample and the direction to the receiver, r the distance; zero
+// where the sample lies on the part of the sphere the receiver cannot see. Samples are
+// uniform by area on the sphere and dOmega = cos(theta_s) dA / r^2, so the weighted
+// average is the visible fraction of the solid angle of the light's disc as seen from
+// this receiver (a uniformly radiant sphere looks like a uniformly bright disc), exact
+// even where the receiver is close to the light (docs/technique.md, "Reference").
+// "uniform" weighs every sample 1 (the projection of a uniform sphere: more weight near
+// the disc's rim, a linear penumbra profile).
 // Directional light: sample k is a direction spread uniformly over the sun's disc, seen
 // through its own orthographic map (matrices[]); every sample weighs 1 in both modes.
 #include "../common/frame.glsl"
@@ -47,8 +50,11 @@ layout(push_constant) uniform Params {
   uint tinted;  // 1: the batch's colour layers hold this sample's tints
 };
 
-// A tint this close to white is no tint (8-bit colour layers).
+// A tint this close to white is no tint.
 const float kUntinted = 0.998;
+// A receiver this close to the nearest pane (a fraction of the far plane or the map's
+// depth; the colour layers are 16-bit floats) is that pane's own surface: not tinted.
+const float kPaneTolerance = 2e-3;
 
 void main() {
   uvec2 pixel = gl_GlobalInvocationID.xy;
@@ -73,6 +79,7 @@ void main() {
     float lit = 1.0;
     vec3 fuv = vec3(0.0);  // face uv and layer of the lookup
     bool inside = false;
+    float receiver = 0.0;  // the offset receiver's distance, as the colour layers store it
     if (light_is_directional(lights[light])) {
       // The resolve skips surfaces facing away from the sun's centre too.
       vec3 to_sun = -normalize(mat3(frame.inv_view) * lights[light].direction_type.xyz);
@@ -89,6 +96,7 @@ void main() {
       if (inside) {
         float stored = textureLod(faces, fuv, 0.0).r;
         lit = clip.z > stored + depth_bias ? 0.0 : 1.0;
+        receiver = clip.z;
       }
     } else {
       vec4 centre_size = lights[light].world_size;
@@ -100,7 +108,8 @@ void main() {
       vec3 to_receiver = p - s;
       float len = length(to_receiver);
       if (weighting == 0u && centre_size.w > 0.0 && len > 0.0) {
-        weight = max(dot((s - centre_size.xyz) / centre_size.w, to_receiver / len), 0.0);
+        float cos_sample = dot((s - centre_size.xyz) / centre_size.w, to_receiver / len);
+        weight = max(cos_sample, 0.0) / (len * len);
       }
       if (weight <= 0.0) continue;
 
@@ -117,10 +126,14 @@ void main() {
         float stored = textureLod(faces, fuv, 0.0).r;
         lit = (z < 1.0 && z > stored + depth_bias) ? 0.0 : 1.0;
         inside = z < 1.0;
+        receiver = length(d) / pf.w;
       }
     }
     vec3 tint = vec3(1.0);
-    if (tinted != 0u && inside && lit > 0.0) tint = textureLod(tints, fuv, 0.0).rgb;
+    if (tinted != 0u && inside && lit > 0.0) {
+      vec4 panes = textureLod(tints, fuv, 0.0);
+      if (receiver > panes.a + kPaneTolerance) tint = panes.rgb;
+    }
     float untinted = (lit > 0.0 && all(greaterThanEqual(tint, vec3(kUntinted)))) ? 1.0 : 0.0;
     uint index = 2u * (slot * pixels + pixel_index);
     visibility[index] += vec4(weight * lit * tint, weight);

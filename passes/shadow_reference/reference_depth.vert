@@ -28,7 +28,9 @@ layout(location = 2) in uint in_material;
 layout(location = 0) out vec3 out_world;
 layout(location = 1) out vec3 out_normal;
 layout(location = 2) flat out uint out_material;
-layout(location = 3) flat out vec4 out_sample;  // xyz point or direction, w 1 ortho
+// xyz the sample point (or the sun's direction), w its faces' far plane (ortho: -1)
+layout(location = 3) flat out vec4 out_sample;
+layout(location = 4) out float out_ortho_depth;  // ortho: the map's depth (linear, 0..1)
 #endif
 
 void main() {
@@ -43,7 +45,8 @@ void main() {
   out_world = in_position;
   out_normal = in_normal;
   out_material = in_material;
-  out_sample = vec4(pf.xyz, ortho != 0u ? 1.0 : 0.0);
+  out_sample = vec4(pf.xyz, ortho != 0u ? -1.0 : pf.w);
+  out_ortho_depth = gl_Position.z;
 #endif
 #ifdef LAYERED
   gl_Layer = int(layer_base + face);

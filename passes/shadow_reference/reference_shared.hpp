@@ -9,8 +9,10 @@
 namespace antumbra::passes::reference {
 
 inline constexpr VkFormat kFaceFormat = VK_FORMAT_D32_SFLOAT;
-// Tints of translucent casters (reference_colour.frag), beside the depth faces.
-inline constexpr VkFormat kTintFormat = VK_FORMAT_R8G8B8A8_UNORM;
+// Tints of translucent casters (reference_colour.frag), beside the depth faces: rgb the
+// product of the panes' tints, a the nearest pane's distance (16-bit: the pane test
+// needs millimetres at a few metres).
+inline constexpr VkFormat kTintFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
 inline constexpr std::uint32_t kFacesPerLight = 6;
 inline constexpr std::uint32_t kGroupSize = 8;  // local_size_x/y of the compute shaders
 // Visibility strictly inside (kPenumbraLow, kPenumbraHigh) counts as penumbra.

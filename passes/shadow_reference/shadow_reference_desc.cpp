@@ -18,21 +18,22 @@ fg::PassDesc ShadowReferencePass::describe() {
       "averaged over `samples` directions (Fibonacci disc), each with its own orthographic "
       "map around the visible receivers. Translucent casters tint instead of blocking: each "
       "sample's visibility is 0 behind an opaque caster, else the product of the tints of "
-      "the panes in between, so shadows are coloured. Slow, offline, deterministic.";
+      "the panes in between, so shadows are coloured; a pane does not tint its own lit "
+      "surface. Slow, offline, deterministic.";
   desc.ports = lighting_ports();
   desc.ports.back().description = "Linear HDR radiance with reference soft shadows.";
-  desc.ports.push_back(
-      {.name = "penumbraCount",
-       .direction = PortDirection::output,
-       .access = Access::storage_write,
-       .stage = Stage::compute,
-       .formats = {Format::r32f},
-       .optional = true,
-       .size_group = "screen",
-       .description = "Per pixel, the number of lights whose samples disagree: the fraction "
-                      "no opaque caster blocks, or the fraction nothing blocks or tints, is "
-                      "strictly between 0.02 and 0.98 (>= 1: penumbra, >= 2: overlapping "
-                      "penumbrae; a pane's uniform coloured shadow is no penumbra)."});
+  desc.ports.push_back({.name = "penumbraCount",
+                        .direction = PortDirection::output,
+                        .access = Access::storage_write,
+                        .stage = Stage::compute,
+                        .formats = {Format::r32f},
+                        .optional = true,
+                        .size_group = "screen",
+                        .description =
+                            "Per pixel, the number of lights whose samples disagree: the fraction "
+                            "no opaque caster blocks, or the fraction nothing blocks or tints, is "
+                            "strictly between 0.02 and 0.98 (>= 1: penumbra, >= 2: overlapping "
+                            "penumbrae; a pane's uniform coloured shadow is no penumbra)."});
   desc.params = {
       {.name = "samples",
        .type = fg::ParamType::integer,
@@ -57,9 +58,9 @@ fg::PassDesc ShadowReferencePass::describe() {
        .type = fg::ParamType::enumeration,
        .default_value = "projected",
        .choices = {"projected", "uniform"},
-       .description = "projected: samples weighted by the cosine towards the receiver (the "
-                      "visible fraction of a uniformly bright disk); uniform: plain average of "
-                      "the sphere samples."},
+       .description = "projected: samples weighted by cos / distance^2 towards the receiver "
+                      "(the visible fraction of the solid angle of the light's disc); uniform: "
+                      "plain average of the sphere samples."},
       {.name = "nearPlane",
        .type = fg::ParamType::number,
        .default_value = 0.02,

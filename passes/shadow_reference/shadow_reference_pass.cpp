@@ -109,7 +109,7 @@ void ShadowReferencePass::prepare(fgvk::PrepareContext& context) {
           .vertex_attribute(2, 0, VK_FORMAT_R32_UINT, offsetof(GpuVertex, material))
           .depth(true, false, VK_COMPARE_OP_LESS_OR_EQUAL)
           .color_formats({reference::kTintFormat})
-          .multiply_blend(0)
+          .tint_blend(0)
           .build(context.gpu, name + ".colour");
 
   auto compute = [&](const char* file, const gpu::DescriptorSetLayoutBuilder& builder,

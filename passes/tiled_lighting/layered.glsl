@@ -18,8 +18,37 @@ layout(set = 0, binding = 9) uniform sampler2DArray shadow_layers;
 #if HAS_COLOUR
 layout(set = 0, binding = 10) uniform usampler2DArray colour_layers;
 #endif
+#if HAS_HARD_BITS
+layout(set = 0, binding = 11) uniform usampler2D hard_bits;  // bit L: layer L in shadow
+#endif
+
+// A low-resolution texel was blurred on this pixel's surface when its representative
+// pixel's view depth is within this fraction of the pixel's and its normal within
+// about 37 degrees (anisotropic-blur's normalThreshold default) of the pixel's.
+#define LAYERED_SAME_DEPTH 0.03
+#define LAYERED_SAME_NORMAL 0.8
+// A depth jump of this fraction within LAYERED_EDGE_REACH pixels makes the pixel a
+// silhouette pixel (the silhouette region of `antumbra quality`).
+#define LAYERED_EDGE_JUMP 0.1
+#define LAYERED_EDGE_REACH 2
+// Where a layer's value changes by more than this between low-resolution texels of the
+// pixel's surface, its shadow edge is sharper than the layers can hold (a penumbra of a
+// few pixels, as at contact): the upsample then also weighs each texel by how well it
+// agrees with the pixel's own full-resolution hard bit, so the edge falls where the hard
+// test puts it instead of being smeared over a low-resolution texel.
+#define LAYERED_SHARP 0.35
+#define LAYERED_GUIDED 1
 
 vec4 g_shadow[MAX_SHADOW_TEXELS];
+// The layers hold no trustworthy value for this pixel, so each light's shadow is filtered
+// from the atlas at full resolution instead (PCSS, the estimate the layers approximate)
+// and silhouettes show no seam (docs/technique.md 1, step 6). Either no low-resolution
+// texel around the pixel lies on its surface (a thin object against a distant
+// background, a face seen edge-on as a strip one or two pixels wide), or the pixel lies
+// next to a depth jump: there the screen-space blur saw only one side of the edge (the
+// part of a penumbra on the background that continues behind the foreground object is
+// not on screen), so its kernel was cut short and its estimate is biased.
+bool g_layered_foreign = false;
 #if HAS_COLOUR
 uvec4 g_colour[MAX_SHADOW_TEXELS];
 #endif
@@ -33,37 +62,91 @@ float layered_view_depth(ivec2 pixel) {
 
 // The buffer may be at a lower resolution (half-res blur). A plain bilinear fetch would
 // smear shadow across depth edges (a pillar's shadow haloing the wall behind it), so
-// the four nearest low-resolution texels are weighted bilinearly and by how close the
+// the four nearest low-resolution texels are weighted bilinearly, by how close the
 // depth each was blurred at (its top-left full-resolution pixel, as anisotropic-blur
-// reads it) is to this pixel's: a joint bilateral upsample.
+// reads it) is to this pixel's and by how alike their normals are: a joint bilateral
+// upsample.
 void layered_fetch(ivec2 pixel) {
   g_shadow_texels = min(textureSize(shadow_layers, 0).z, MAX_SHADOW_TEXELS);
   ivec2 low = textureSize(shadow_layers, 0).xy;
   ivec2 scale = max(ivec2(image_size) / low, ivec2(1));
+  float z = layered_view_depth(pixel);
+  bool near_edge = false;
+  for (int k = 0; k < 9; ++k) {
+    if (k == 4) continue;  // the pixel itself
+    ivec2 o = ivec2(k % 3 - 1, k / 3 - 1) * LAYERED_EDGE_REACH;
+    float other = layered_view_depth(pixel + o);
+    near_edge = near_edge || abs(other - z) > LAYERED_EDGE_JUMP * min(other, z);
+  }
   if (scale == ivec2(1)) {
     for (int i = 0; i < g_shadow_texels; ++i) {
       g_shadow[i] = texelFetch(shadow_layers, ivec3(min(pixel, low - 1), i), 0);
     }
+    g_layered_foreign = near_edge;
   } else {
     vec2 f = (vec2(pixel) + 0.5) / vec2(scale) - 0.5;
     ivec2 base = ivec2(floor(f));
     vec2 t = f - vec2(base);
-    float z = layered_view_depth(pixel);
+    vec3 n = normalize(texelFetch(g_normal, pixel, 0).xyz);
+    bool matched = false;
     vec4 sum[MAX_SHADOW_TEXELS];
-    for (int i = 0; i < g_shadow_texels; ++i) sum[i] = vec4(0.0);
+    vec4 lo[MAX_SHADOW_TEXELS];  // range of the layers over same-surface texels
+    vec4 hi[MAX_SHADOW_TEXELS];
+    for (int i = 0; i < g_shadow_texels; ++i) {
+      sum[i] = vec4(0.0);
+      lo[i] = vec4(1.0);
+      hi[i] = vec4(0.0);
+    }
     float weight_sum = 0.0;
+    float weights[4];
+    ivec2 texels[4];
     for (int k = 0; k < 4; ++k) {
       ivec2 o = ivec2(k & 1, k >> 1);
       ivec2 q = clamp(base + o, ivec2(0), low - 1);
       float bilinear = (o.x == 1 ? t.x : 1.0 - t.x) * (o.y == 1 ? t.y : 1.0 - t.y);
       float relative = abs(layered_view_depth(q * scale) - z) / max(z, 1e-4);
-      float w = max(bilinear, 1e-3) / (1e-3 + relative * relative * 1e4);
+      ivec2 q_full = min(q * scale, ivec2(image_size) - 1);
+      float facing = dot(n, normalize(texelFetch(g_normal, q_full, 0).xyz));
+      bool same = relative <= LAYERED_SAME_DEPTH && facing >= LAYERED_SAME_NORMAL;
+      matched = matched || same;
+      float w = max(bilinear, 1e-3) * max(facing, 1e-2) / (1e-3 + relative * relative * 1e4);
       weight_sum += w;
+      weights[k] = w;
+      texels[k] = q;
       for (int i = 0; i < g_shadow_texels; ++i) {
-        sum[i] += w * texelFetch(shadow_layers, ivec3(q, i), 0);
+        vec4 v = texelFetch(shadow_layers, ivec3(q, i), 0);
+        sum[i] += w * v;
+        if (same) {
+          lo[i] = min(lo[i], v);
+          hi[i] = max(hi[i], v);
+        }
       }
     }
     for (int i = 0; i < g_shadow_texels; ++i) g_shadow[i] = sum[i] / weight_sum;
+#if HAS_HARD_BITS
+    uint bits = texelFetch(hard_bits, pixel, 0).r;
+    for (int i = 0; i < g_shadow_texels; ++i) {
+      bvec4 sharp = greaterThan(hi[i] - lo[i], vec4(LAYERED_SHARP));
+      if (!any(sharp)) continue;
+      uvec4 b = (uvec4(bits) >> uvec4(4 * i) + uvec4(0, 1, 2, 3)) & 1u;
+      vec4 hard = vec4(1.0) - vec4(b);  // 1 lit, 0 shadowed
+      vec4 guided = vec4(0.0);
+      vec4 guided_weight = vec4(1e-6);
+      for (int k = 0; k < 4; ++k) {
+        vec4 v = texelFetch(shadow_layers, ivec3(texels[k], i), 0);
+        vec4 agree = vec4(1.0) - abs(v - hard);
+        vec4 w = weights[k] * agree * agree;
+        guided += w * v;
+        guided_weight += w;
+      }
+#if LAYERED_GUIDED
+      g_shadow[i] = mix(g_shadow[i], guided / guided_weight, vec4(sharp));
+#else
+      g_shadow[i] = mix(g_shadow[i], hard, vec4(sharp));
+#endif
+    }
+#endif
+    g_layered_foreign = !matched || near_edge;
   }
 #if HAS_COLOUR
   ivec3 size = textureSize(colour_layers, 0);
@@ -89,6 +172,9 @@ vec3 layered_shadow(uint index, vec3 p_world, vec3 n_world) {
     if (int(layer / 4u) < textureSize(colour_layers, 0).z) {
       tint = unpack_tint(g_colour[layer / 4u][layer % 4u]);
     }
+#endif
+#if HAS_ATLAS
+    if (g_layered_foreign) return atlas_shadow(index, p_world, n_world, 3) * tint;
 #endif
     return clamp(g_shadow[layer / 4u][layer % 4u], 0.0, 1.0) * tint;
   }

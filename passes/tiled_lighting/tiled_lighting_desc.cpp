@@ -83,10 +83,10 @@ void check(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& 
   const bool needs_atlas =
       mode == ShadowMode::hard || mode == ShadowMode::pcf || mode == ShadowMode::pcss;
   if (needs_atlas && (atlas == nullptr || shadow_data == nullptr)) {
-    error("TL002",
-          "shadows = " + std::string(to_string(mode)) +
-              " needs the `atlas` and `shadowData` inputs",
-          mode_at);
+    error(
+        "TL002",
+        "shadows = " + std::string(to_string(mode)) + " needs the `atlas` and `shadowData` inputs",
+        mode_at);
   }
   if (atlas != nullptr && shadow_data != nullptr && mode != ShadowMode::none &&
       shadow_data->buffer_size < shadow_data_bytes(atlas->layers)) {
@@ -142,6 +142,18 @@ fg::PassDesc TiledLightingPass::describe() {
                           "Layered shadow colour of translucent occluders, rgba8 packed "
                           "r<<24|g<<16|b<<8|a per channel like `shadow`; shadows = layered.",
                           true));
+  desc.ports.push_back(
+      {.name = "hardShadow",
+       .access = Access::sampled,
+       .stage = Stage::compute,
+       .formats = {Format::r32ui},
+       .optional = true,
+       .description =
+           "Full-resolution hard-shadow bits (layered-penumbra's `hardShadow`); shadows = "
+           "layered: where a layer changes by more than 0.35 between the low-resolution "
+           "texels of the pixel's surface (a shadow edge sharper than the layers hold, as "
+           "at contact), the upsample also weighs each texel by its agreement with the "
+           "pixel's own hard bit."});
   desc.params = lighting_params();
   desc.params.push_back(
       {.name = "shadows",

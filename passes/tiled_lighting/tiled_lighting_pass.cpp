@@ -13,7 +13,7 @@
 namespace antumbra::passes {
 namespace {
 
-constexpr std::uint32_t kTileSize = 16;        // TILE_SIZE in tiled_lighting.comp
+constexpr std::uint32_t kTileSize = 16;  // TILE_SIZE in tiled_lighting.comp
 
 struct PushConstants {
   float exposure;
@@ -37,6 +37,7 @@ enum Binding : std::uint32_t {
   kLayerTable = 8,
   kShadow = 9,
   kColour = 10,
+  kHardBits = 11,
 };
 
 int kernel_of(const fg::PlanPass& pass) {
@@ -90,6 +91,7 @@ void TiledLightingPass::prepare(fgvk::PrepareContext& context) {
   // ignore an atlas bound without a use (it is still read-declared, which is harmless).
   has_atlas_ = atlas != nullptr && mode_ != ShadowMode::none;
   has_colour_ = mode_ == ShadowMode::layered && b.image("colour") != nullptr;
+  has_hard_bits_ = mode_ == ShadowMode::layered && b.image("hardShadow") != nullptr;
 
   constexpr VkShaderStageFlags kComp = VK_SHADER_STAGE_COMPUTE_BIT;
   gpu::DescriptorSetLayoutBuilder builder;
@@ -103,6 +105,7 @@ void TiledLightingPass::prepare(fgvk::PrepareContext& context) {
   if (mode_ == ShadowMode::layered) {
     builder.storage_buffer(kLayerTable, kComp).combined_image_sampler(kShadow, kComp);
     if (has_colour_) builder.combined_image_sampler(kColour, kComp);
+    if (has_hard_bits_) builder.combined_image_sampler(kHardBits, kComp);
   }
   set_layout_ = builder.build(context.gpu, context.pass.name + ".set");
   const std::array<VkDescriptorSetLayout, 1> sets{set_layout_};
@@ -118,6 +121,7 @@ void TiledLightingPass::prepare(fgvk::PrepareContext& context) {
       {"ATLAS_D16",
        has_atlas_ && b.required_image("atlas").format == VK_FORMAT_D16_UNORM ? "1" : "0"},
       {"HAS_COLOUR", has_colour_ ? "1" : "0"},
+      {"HAS_HARD_BITS", has_hard_bits_ ? "1" : "0"},
       {"FALLBACK_PCF", pcf_fallback ? "1" : "0"},
       {"KERNEL", std::to_string(kernel_of(context.pass))},
       {"BLOCKER_SEARCH", std::to_string(blocker > 0 ? blocker : 5)},
@@ -154,10 +158,15 @@ void TiledLightingPass::execute(fgvk::ExecuteContext& context) {
   if (mode_ == ShadowMode::layered) {
     const auto& shadow = b.required_image("shadow");
     descriptors.storage_buffer(kLayerTable, b.buffer("layerTable")->buffer)
-        .combined_image_sampler(kShadow, shadow.array_view, context.samplers.linear_clamp, shadow.layout);
+        .combined_image_sampler(kShadow, shadow.array_view, context.samplers.linear_clamp,
+                                shadow.layout);
     if (has_colour_) {
       const auto& colour = b.required_image("colour");
       descriptors.combined_image_sampler(kColour, colour.array_view, nearest, colour.layout);
+    }
+    if (has_hard_bits_) {
+      const auto& bits = b.required_image("hardShadow");
+      descriptors.combined_image_sampler(kHardBits, bits.view, nearest, bits.layout);
     }
   }
   descriptors.push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);

@@ -47,6 +47,7 @@ class TiledLightingPass final : public fgvk::Pass {
   ShadowMode mode_;
   bool has_atlas_ = false;
   bool has_colour_ = false;
+  bool has_hard_bits_ = false;  // layered: full-resolution hard bits for sharp edges
   gpu::DescriptorSetLayout set_layout_;
   gpu::PipelineLayout layout_;
   gpu::Pipeline pipeline_;

@@ -54,11 +54,7 @@ app::FloatImage read_float_image(app::RenderSession& session, const std::string&
 scene::Scene analytic_scene(const AnalyticSetup& setup) {
   scene::Scene s;
   s.name = "analytic-penumbra";
-  scene::Material grey;
-  grey.name = "grey";
-  grey.albedo = glm::vec3(0.8f);
-  grey.roughness = 1.0f;
-  s.materials.push_back(grey);
+  s.materials.push_back(matte_grey());
 
   scene::Mesh plane = scene::make_plane({40.0f, 40.0f});
   plane.name = "receiver";
@@ -79,15 +75,29 @@ scene::Scene analytic_scene(const AnalyticSetup& setup) {
   s.lights.push_back(light);
 
   const float x = setup.edge_x();
-  s.camera.position = {x, setup.camera_height, 0.0f};
-  s.camera.target = {x, 0.0f, 0.0f};
-  s.camera.up = {0.0f, 0.0f, -1.0f};
-  s.camera.fov_y_degrees = setup.fov_y_degrees;
-  s.camera.near = 0.05f;
-  s.camera.far = 20.0f;
   s.ambient = glm::vec3(0.0f);
-  s.bounds = s.compute_bounds();
+  finish_test_scene(s, {x, setup.camera_height, 0.0f}, {x, 0.0f, 0.0f}, {0.0f, 0.0f, -1.0f},
+                    setup.fov_y_degrees);
   return s;
+}
+
+scene::Material matte_grey() {
+  scene::Material grey;
+  grey.name = "grey";
+  grey.albedo = glm::vec3(0.8f);
+  grey.roughness = 1.0f;
+  return grey;
+}
+
+void finish_test_scene(scene::Scene& s, const glm::vec3& position, const glm::vec3& target,
+                       const glm::vec3& up, float fov_y_degrees, float near, float far) {
+  s.camera.position = position;
+  s.camera.target = target;
+  s.camera.up = up;
+  s.camera.fov_y_degrees = fov_y_degrees;
+  s.camera.near = near;
+  s.camera.far = far;
+  s.bounds = s.compute_bounds();
 }
 
 double transition_width(const std::vector<double>& profile, double low, double high) {

@@ -49,6 +49,15 @@ struct AnalyticSetup {
 };
 scene::Scene analytic_scene(const AnalyticSetup& setup);
 
+// The test scenes' diffuse grey (albedo 0.8, roughness 1).
+scene::Material matte_grey();
+// A camera at `position` looking at `target` with no ambient light left to set: the
+// scene's camera gets `fov_y_degrees`, near 0.05 (or `near`) and far `far`, and the
+// scene's bounds are computed from its meshes.
+void finish_test_scene(scene::Scene& s, const glm::vec3& position, const glm::vec3& target,
+                       const glm::vec3& up, float fov_y_degrees, float near = 0.05f,
+                       float far = 20.0f);
+
 // 10%-90% width (in samples, linearly interpolated) of a monotone transition of
 // `profile` between its low and high plateaus; negative when none is found.
 double transition_width(const std::vector<double>& profile, double low, double high);

@@ -111,9 +111,11 @@ GraphicsPipelineBuilder& GraphicsPipelineBuilder::additive_blend(std::uint32_t a
   return *this;
 }
 
-GraphicsPipelineBuilder& GraphicsPipelineBuilder::multiply_blend(std::uint32_t attachment) {
-  enable_blend(blend_.at(attachment), VK_BLEND_FACTOR_DST_COLOR, VK_BLEND_FACTOR_ZERO,
-               VK_BLEND_FACTOR_DST_ALPHA, VK_BLEND_FACTOR_ZERO);
+GraphicsPipelineBuilder& GraphicsPipelineBuilder::tint_blend(std::uint32_t attachment) {
+  auto& b = blend_.at(attachment);
+  enable_blend(b, VK_BLEND_FACTOR_DST_COLOR, VK_BLEND_FACTOR_ZERO, VK_BLEND_FACTOR_ONE,
+               VK_BLEND_FACTOR_ONE);
+  b.alphaBlendOp = VK_BLEND_OP_MIN;  // factors are ignored by MIN
   return *this;
 }
 

@@ -114,8 +114,10 @@ class GraphicsPipelineBuilder {
   // Standard alpha blending on one attachment (others stay opaque).
   GraphicsPipelineBuilder& alpha_blend(std::uint32_t attachment);
   GraphicsPipelineBuilder& additive_blend(std::uint32_t attachment);
-  // dst * src (transmittance maps: translucent layers compose by multiplication).
-  GraphicsPipelineBuilder& multiply_blend(std::uint32_t attachment);
+  // Transmittance maps: rgb = dst * src (stacked panes compose by multiplication),
+  // a = min(dst, src) (the nearest pane's distance, so a pane tints only what lies
+  // behind it).
+  GraphicsPipelineBuilder& tint_blend(std::uint32_t attachment);
   GraphicsPipelineBuilder& color_write_mask(std::uint32_t attachment, VkColorComponentFlags mask);
   GraphicsPipelineBuilder& layout(VkPipelineLayout layout);
   GraphicsPipelineBuilder& cache(VkPipelineCache cache);
