@@ -27,10 +27,12 @@ layout(set = 0, binding = 11) uniform usampler2D hard_bits;  // bit L: layer L i
 // about 37 degrees (anisotropic-blur's normalThreshold default) of the pixel's.
 #define LAYERED_SAME_DEPTH 0.03
 #define LAYERED_SAME_NORMAL 0.8
-// A depth jump of this fraction within LAYERED_EDGE_REACH pixels makes the pixel a
-// silhouette pixel (the silhouette region of `antumbra quality`).
+// A depth jump of this fraction between the pixel and a pixel LAYERED_EDGE_REACH away
+// (8 directions) makes it a silhouette pixel. Reach 3 covers the silhouette region of
+// `antumbra quality` (within 2 px of either side of a jump between neighbours); reach 2
+// left lit strips 3 px from a jump smeared into the shadow (measured on the atrium).
 #define LAYERED_EDGE_JUMP 0.1
-#define LAYERED_EDGE_REACH 2
+#define LAYERED_EDGE_REACH 3
 // Where a layer's value changes by more than this between low-resolution texels of the
 // pixel's surface, its shadow edge is sharper than the layers can hold (a penumbra of a
 // few pixels, as at contact): the upsample then also weighs each texel by how well it
