@@ -34,8 +34,11 @@
 #ifndef ANTUMBRA_SHADOW_SAMPLING_GLSL
 #define ANTUMBRA_SHADOW_SAMPLING_GLSL
 
+// One texel: against the reference on the atrium (docs/technique.md 3, Bias), 1.5 moved
+// receivers out of the contact shadows under slabs (bright lines where they meet a
+// column) and 0.5 brought self-shadowing back over whole surfaces.
 #ifndef SHADOW_NORMAL_OFFSET
-#define SHADOW_NORMAL_OFFSET 1.5
+#define SHADOW_NORMAL_OFFSET 1.0
 #endif
 
 struct ShadowCoord {

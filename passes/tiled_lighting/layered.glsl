@@ -27,10 +27,13 @@ layout(set = 0, binding = 11) uniform usampler2D hard_bits;  // bit L: layer L i
 // about 37 degrees (anisotropic-blur's normalThreshold default) of the pixel's.
 #define LAYERED_SAME_DEPTH 0.03
 #define LAYERED_SAME_NORMAL 0.8
-// A depth jump of this fraction between the pixel and a pixel LAYERED_EDGE_REACH away
-// (8 directions) makes it a silhouette pixel. Reach 3 covers the silhouette region of
-// `antumbra quality` (within 2 px of either side of a jump between neighbours); reach 2
-// left lit strips 3 px from a jump smeared into the shadow (measured on the atrium).
+// A depth jump of this fraction, or (LAYERED_CREASES) a normal turned by more than
+// LAYERED_SAME_NORMAL allows, between the pixel and a pixel LAYERED_EDGE_REACH away (8
+// directions) puts the pixel on a surface boundary, where the blur's kernel was cut
+// short. Reach 3 covers the silhouette region of `antumbra quality` (within 2 px of
+// either side of a jump between neighbours); reach 2 left lit strips 3 px from a jump
+// smeared into the shadow, and without creases the contact lines under slabs were
+// 1.1x PCSS's error on the atrium's penumbra pixels (measured, docs/technique.md 1, 6).
 #define LAYERED_EDGE_JUMP 0.1
 #define LAYERED_EDGE_REACH 3
 // Where a layer's value changes by more than this between low-resolution texels of the
@@ -40,6 +43,7 @@ layout(set = 0, binding = 11) uniform usampler2D hard_bits;  // bit L: layer L i
 // test puts it instead of being smeared over a low-resolution texel.
 #define LAYERED_SHARP 0.35
 #define LAYERED_GUIDED 1
+#define LAYERED_CREASES 1
 
 vec4 g_shadow[MAX_SHADOW_TEXELS];
 // The layers hold no trustworthy value for this pixel, so each light's shadow is filtered
@@ -47,9 +51,10 @@ vec4 g_shadow[MAX_SHADOW_TEXELS];
 // and silhouettes show no seam (docs/technique.md 1, step 6). Either no low-resolution
 // texel around the pixel lies on its surface (a thin object against a distant
 // background, a face seen edge-on as a strip one or two pixels wide), or the pixel lies
-// next to a depth jump: there the screen-space blur saw only one side of the edge (the
-// part of a penumbra on the background that continues behind the foreground object is
-// not on screen), so its kernel was cut short and its estimate is biased.
+// next to a surface boundary (a depth jump or a crease): there the screen-space blur saw
+// only one side of the boundary (the part of a penumbra on the background that
+// continues behind the foreground object is not on screen; a contact shadow continues
+// onto the other face), so its kernel was cut short and its estimate is biased.
 bool g_layered_foreign = false;
 #if HAS_COLOUR
 uvec4 g_colour[MAX_SHADOW_TEXELS];
@@ -73,12 +78,18 @@ void layered_fetch(ivec2 pixel) {
   ivec2 low = textureSize(shadow_layers, 0).xy;
   ivec2 scale = max(ivec2(image_size) / low, ivec2(1));
   float z = layered_view_depth(pixel);
+  vec3 n_pixel = normalize(texelFetch(g_normal, pixel, 0).xyz);
   bool near_edge = false;
   for (int k = 0; k < 9; ++k) {
     if (k == 4) continue;  // the pixel itself
-    ivec2 o = ivec2(k % 3 - 1, k / 3 - 1) * LAYERED_EDGE_REACH;
-    float other = layered_view_depth(pixel + o);
+    ivec2 o = clamp(pixel + ivec2(k % 3 - 1, k / 3 - 1) * LAYERED_EDGE_REACH, ivec2(0),
+                    ivec2(image_size) - 1);
+    float other = layered_view_depth(o);
     near_edge = near_edge || abs(other - z) > LAYERED_EDGE_JUMP * min(other, z);
+#if LAYERED_CREASES
+    near_edge = near_edge ||
+                dot(n_pixel, normalize(texelFetch(g_normal, o, 0).xyz)) < LAYERED_SAME_NORMAL;
+#endif
   }
   if (scale == ivec2(1)) {
     for (int i = 0; i < g_shadow_texels; ++i) {
