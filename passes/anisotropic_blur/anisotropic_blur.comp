@@ -116,6 +116,11 @@ void main() {
   for (uint s = 0u; s < slots; ++s) {
     vec4 width = texelFetch(penumbra, ivec3(pixel, int(s)), 0);
     vec4 radius = clamp(width * focal / z_centre * anisotropy, vec4(0.0), vec4(max_radius));
+    // At full resolution, where a blocker was found, at least a one-pixel radius: the
+    // half-resolution first direction averages 2x2 hard bits, and without the same
+    // smoothing single hard bits alias the contact lines under slabs (docs/technique.md
+    // 1, step 5).
+    if (scale == ivec2(1)) radius = mix(radius, max(radius, vec4(1.0)), greaterThan(width, vec4(0.0)));
     vec4 centre = visibility(pixel, s, full_size, scale);
     vec4 sum = centre;
     vec4 weight_sum = vec4(1.0);
