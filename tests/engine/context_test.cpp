@@ -63,8 +63,10 @@ TEST(DeviceSelection, CpuSelectsLavapipe) {
     context.wait_idle();
     testing::expect_no_validation_errors(context);
   } catch (const NoVulkanDeviceError& error) {
+    testing::report_missing_device(error.what());
     GTEST_SKIP() << error.what();
   } catch (const DeviceSelectionError& error) {
+    testing::report_missing_device(std::string("no CPU device (lavapipe): ") + error.what());
     GTEST_SKIP() << "no CPU device here: " << error.what();
   }
 }
@@ -74,6 +76,7 @@ TEST(DeviceSelection, UnknownNameListsDevices) {
     Context context(testing::validation_options("nonexistent-name"));
     FAIL() << "expected DeviceSelectionError";
   } catch (const NoVulkanDeviceError& error) {
+    testing::report_missing_device(error.what());
     GTEST_SKIP() << error.what();
   } catch (const DeviceSelectionError& error) {
     const std::string message = error.what();
@@ -88,6 +91,7 @@ TEST(DeviceSelection, IndexOutOfRange) {
     Context context(testing::validation_options("99"));
     FAIL() << "expected DeviceSelectionError";
   } catch (const NoVulkanDeviceError& error) {
+    testing::report_missing_device(error.what());
     GTEST_SKIP() << error.what();
   } catch (const DeviceSelectionError& error) {
     EXPECT_NE(std::string(error.what()).find("out of range"), std::string::npos) << error.what();
@@ -101,6 +105,7 @@ TEST(DeviceSelection, IndexZeroAndNameSubstringWork) {
     Context by_name(testing::validation_options(name.substr(0, 4)));
     EXPECT_FALSE(by_name.device_name().empty());
   } catch (const NoVulkanDeviceError& error) {
+    testing::report_missing_device(error.what());
     GTEST_SKIP() << error.what();
   }
 }

@@ -15,6 +15,7 @@
 #include <gtest/gtest.h>
 
 #include "antumbra/gpu/context.hpp"
+#include "device_requirement.hpp"
 
 namespace antumbra::gpu::testing {
 
@@ -72,6 +73,7 @@ class GpuTest : public ::testing::Test {
     try {
       context_ = std::make_unique<Context>(options());
     } catch (const NoVulkanDeviceError& error) {
+      report_missing_device(error.what());
       GTEST_SKIP() << "no Vulkan device: " << error.what();
     }
   }

@@ -15,6 +15,7 @@
 #include "antumbra/gpu/resources.hpp"
 #include "antumbra/gpu/vk_check.hpp"
 #include "antumbra/scene/scene_file.hpp"
+#include "device_requirement.hpp"
 #include "gpu_test_support.hpp"
 
 namespace antumbra::render_testing {
@@ -253,6 +254,7 @@ app::RenderSession* RenderTest::open_session(VkExtent2D viewport, const app::Dat
   try {
     sessions_.push_back(std::make_unique<app::RenderSession>(paths, options));
   } catch (const gpu::NoVulkanDeviceError& error) {
+    gpu::testing::report_missing_device(error.what());
     skip_reason_ = std::string("no Vulkan device: ") + error.what();
     return nullptr;
   }

@@ -19,6 +19,7 @@
 #include "antumbra/gpu/shader_compiler.hpp"
 #include "antumbra/gpu/vk_check.hpp"
 #include "common/gpu_scene.hpp"
+#include "device_requirement.hpp"
 #include "register_builtin_passes.hpp"
 #include "render_test_support.hpp"
 
@@ -36,6 +37,7 @@ class ExecutorTest : public render_testing::RenderTest {
     try {
       gpu_ = std::make_unique<gpu::Context>(options);
     } catch (const gpu::NoVulkanDeviceError& error) {
+      gpu::testing::report_missing_device(error.what());
       skip_reason_ = std::string("no Vulkan device: ") + error.what();
       return false;
     }
