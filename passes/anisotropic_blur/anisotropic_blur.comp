@@ -120,7 +120,9 @@ void main() {
     // half-resolution first direction averages 2x2 hard bits, and without the same
     // smoothing single hard bits alias the contact lines under slabs (docs/technique.md
     // 1, step 5).
-    if (scale == ivec2(1)) radius = mix(radius, max(radius, vec4(1.0)), greaterThan(width, vec4(0.0)));
+    if (scale == ivec2(1)) {
+      radius = mix(radius, max(radius, vec4(1.0)), greaterThan(width, vec4(0.0)));
+    }
     vec4 centre = visibility(pixel, s, full_size, scale);
     vec4 sum = centre;
     vec4 weight_sum = vec4(1.0);

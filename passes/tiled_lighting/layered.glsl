@@ -27,8 +27,8 @@ layout(set = 0, binding = 11) uniform usampler2D hard_bits;  // bit L: layer L i
 // about 37 degrees (anisotropic-blur's normalThreshold default) of the pixel's.
 #define LAYERED_SAME_DEPTH 0.03
 #define LAYERED_SAME_NORMAL 0.8
-// A depth jump of this fraction, or (LAYERED_CREASES) a normal turned by more than
-// LAYERED_SAME_NORMAL allows, between the pixel and a pixel LAYERED_EDGE_REACH away (8
+// A depth jump of this fraction, or a normal turned by more than LAYERED_SAME_NORMAL
+// allows (a crease), between the pixel and a pixel LAYERED_EDGE_REACH away (8
 // directions) puts the pixel on a surface boundary, where the blur's kernel was cut
 // short. Reach 3 covers the silhouette region of `antumbra quality` (within 2 px of
 // either side of a jump between neighbours); reach 2 left lit strips 3 px from a jump
@@ -42,8 +42,6 @@ layout(set = 0, binding = 11) uniform usampler2D hard_bits;  // bit L: layer L i
 // agrees with the pixel's own full-resolution hard bit, so the edge falls where the hard
 // test puts it instead of being smeared over a low-resolution texel.
 #define LAYERED_SHARP 0.35
-#define LAYERED_GUIDED 1
-#define LAYERED_CREASES 1
 
 vec4 g_shadow[MAX_SHADOW_TEXELS];
 // The layers hold no trustworthy value for this pixel, so each light's shadow is filtered
@@ -78,19 +76,18 @@ void layered_fetch(ivec2 pixel) {
   ivec2 low = textureSize(shadow_layers, 0).xy;
   ivec2 scale = max(ivec2(image_size) / low, ivec2(1));
   float z = layered_view_depth(pixel);
-  vec3 n_pixel = normalize(texelFetch(g_normal, pixel, 0).xyz);
+  vec3 n = normalize(texelFetch(g_normal, pixel, 0).xyz);
   bool near_edge = false;
+#if HAS_ATLAS  // without the atlas there is nothing to fall back to
   for (int k = 0; k < 9; ++k) {
     if (k == 4) continue;  // the pixel itself
     ivec2 o = clamp(pixel + ivec2(k % 3 - 1, k / 3 - 1) * LAYERED_EDGE_REACH, ivec2(0),
                     ivec2(image_size) - 1);
     float other = layered_view_depth(o);
-    near_edge = near_edge || abs(other - z) > LAYERED_EDGE_JUMP * min(other, z);
-#if LAYERED_CREASES
-    near_edge = near_edge ||
-                dot(n_pixel, normalize(texelFetch(g_normal, o, 0).xyz)) < LAYERED_SAME_NORMAL;
-#endif
+    near_edge = near_edge || abs(other - z) > LAYERED_EDGE_JUMP * min(other, z) ||
+                dot(n, normalize(texelFetch(g_normal, o, 0).xyz)) < LAYERED_SAME_NORMAL;
   }
+#endif
   if (scale == ivec2(1)) {
     for (int i = 0; i < g_shadow_texels; ++i) {
       g_shadow[i] = texelFetch(shadow_layers, ivec3(min(pixel, low - 1), i), 0);
@@ -100,7 +97,6 @@ void layered_fetch(ivec2 pixel) {
     vec2 f = (vec2(pixel) + 0.5) / vec2(scale) - 0.5;
     ivec2 base = ivec2(floor(f));
     vec2 t = f - vec2(base);
-    vec3 n = normalize(texelFetch(g_normal, pixel, 0).xyz);
     bool matched = false;
     vec4 sum[MAX_SHADOW_TEXELS];
     vec4 lo[MAX_SHADOW_TEXELS];  // range of the layers over same-surface texels
@@ -152,11 +148,7 @@ void layered_fetch(ivec2 pixel) {
         guided += w * v;
         guided_weight += w;
       }
-#if LAYERED_GUIDED
       g_shadow[i] = mix(g_shadow[i], guided / guided_weight, vec4(sharp));
-#else
-      g_shadow[i] = mix(g_shadow[i], hard, vec4(sharp));
-#endif
     }
 #endif
     g_layered_foreign = !matched || near_edge;
