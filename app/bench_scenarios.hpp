@@ -16,7 +16,7 @@ namespace antumbra::app {
 struct ParamOverride {
   std::string pass_type;  // applies to every pass of this type
   std::string param;
-  fg::Json value;
+  base::Json value;
 };
 
 struct Scenario {

@@ -10,14 +10,14 @@
 
 #include <nlohmann/json.hpp>
 
-#include "antumbra/fg/json_document.hpp"
+#include "antumbra/base/json_document.hpp"
 #include "antumbra/gpu/timing.hpp"
+#include "antumbra/runtime/render_session.hpp"
 #include "antumbra/scene/scene_file.hpp"
 #include "bench_report.hpp"
 #include "bench_scenarios.hpp"
 #include "commands.hpp"
 #include "plot.hpp"
-#include "render_session.hpp"
 
 namespace antumbra::app {
 namespace {
@@ -67,7 +67,7 @@ void write_reports(const std::filesystem::path& dir, const std::string& device,
   write_stacked_chart((dir / "bench.png").string(), chart_of(device, results));
 }
 
-void measure(RenderSession& session, const BenchOptions& options, BenchResult& r) {
+void measure(runtime::RenderSession& session, const BenchOptions& options, BenchResult& r) {
   session.render(options.warmup, nullptr);
   session.reset_timings();
   session.render(options.frames, nullptr);
@@ -79,8 +79,9 @@ void measure(RenderSession& session, const BenchOptions& options, BenchResult& r
   r.frame = summarize(frame_samples(samples));
 }
 
-BenchResult run_scenario(RenderSession& session, const DataPaths& paths, const scene::Scene& base,
-                         const Scenario& scenario, const BenchOptions& options) {
+BenchResult run_scenario(runtime::RenderSession& session, const runtime::DataPaths& paths,
+                         const scene::Scene& base, const Scenario& scenario,
+                         const BenchOptions& options) {
   BenchResult r{scenario};
   const auto graph_path = paths.graphs() / scenario.graph;
   if (!std::filesystem::exists(graph_path)) {
@@ -88,9 +89,9 @@ BenchResult run_scenario(RenderSession& session, const DataPaths& paths, const s
     r.detail = graph_path.string() + " does not exist";
     return r;
   }
-  auto document = fg::load_json_file(graph_path.string());
+  auto document = base::load_json_file(graph_path.string());
   auto graph = document.ok() ? fg::parse_graph(document.value())
-                             : fg::Result<fg::GraphDesc>(document.diagnostics());
+                             : base::Result<fg::GraphDesc>(document.diagnostics());
   if (!graph.ok()) {
     r.status = "invalid";
     r.detail = graph.diagnostics().to_text();
@@ -120,22 +121,22 @@ int run_bench(const BenchOptions& options) {
   const auto chosen = select_scenarios(all, options.filters);
   if (options.list) {
     for (const auto& s : all) std::printf("%s\n", s.name.c_str());
-    return kExitOk;
+    return runtime::kExitOk;
   }
   if (chosen.empty()) {
     std::fprintf(stderr, "antumbra bench: no scenario matches; see `antumbra bench --list`\n");
-    return kExitUsage;
+    return runtime::kExitUsage;
   }
-  const DataPaths paths = find_data_paths();
+  const runtime::DataPaths paths = runtime::find_data_paths();
   auto base = scene::load_scene_file((paths.scenes() / "atrium.json").string());
   if (!base.ok()) {
     std::fprintf(stderr, "%s", base.diagnostics().to_text().c_str());
-    return kExitDiagnostics;
+    return runtime::kExitDiagnostics;
   }
-  SessionOptions session_options;
+  runtime::SessionOptions session_options;
   session_options.device = options.device;
   session_options.validation = options.validation;
-  RenderSession session(paths, session_options);
+  runtime::RenderSession session(paths, session_options);
   std::fprintf(stderr,
                "bench on %s: %zu scenario(s), %d warm-up + %d timed frames each, scale %.2f\n",
                session.gpu().device_name().c_str(), chosen.size(), options.warmup, options.frames,
@@ -169,15 +170,15 @@ int run_bench(const BenchOptions& options) {
     write_reports(options.out, session.gpu().device_name(), options, results);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "antumbra bench: %s\n", e.what());
-    return kExitRuntime;
+    return runtime::kExitRuntime;
   }
   std::printf("wrote %s/bench.csv, bench.json, bench.png\n", options.out.c_str());
   if (options.validation && session.gpu().validation_error_count() > 0) {
     std::fprintf(stderr, "antumbra bench: %zu validation error(s)\n",
                  session.gpu().validation_error_count());
-    return kExitRuntime;
+    return runtime::kExitRuntime;
   }
-  return failures > 0 ? kExitRuntime : kExitOk;
+  return failures > 0 ? runtime::kExitRuntime : runtime::kExitOk;
 }
 
 }  // namespace antumbra::app

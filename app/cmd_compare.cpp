@@ -8,15 +8,15 @@
 
 #include <nlohmann/json.hpp>
 
+#include "antumbra/base/json_document.hpp"
 #include "antumbra/fg/graph_desc.hpp"
-#include "antumbra/fg/json_document.hpp"
 #include "antumbra/gpu/image_io.hpp"
 #include "antumbra/gpu/timing.hpp"
+#include "antumbra/runtime/render_session.hpp"
 #include "antumbra/scene/scene_file.hpp"
 #include "commands.hpp"
 #include "error_map.hpp"
 #include "image_metrics.hpp"
-#include "render_session.hpp"
 
 namespace antumbra::app {
 namespace {
@@ -85,7 +85,7 @@ namespace {
 // A file that cannot be opened is a usage error (2), as for graphs and scenes; a file
 // that opens but is no PFM is a problem in the file (1).
 int unreadable_exit(const std::string& error) {
-  return error.rfind("cannot open ", 0) == 0 ? kExitUsage : kExitDiagnostics;
+  return error.rfind("cannot open ", 0) == 0 ? runtime::kExitUsage : runtime::kExitDiagnostics;
 }
 
 }  // namespace
@@ -97,7 +97,7 @@ int run_compare(const CompareOptions& options) {
                  "antumbra compare: --mask %s needs --mask-image (penumbra/overlap pick pixels "
                  "by its values)\n",
                  options.mask.c_str());
-    return kExitUsage;
+    return runtime::kExitUsage;
   }
   std::string error;
   const auto a = read_pfm(options.a, error);
@@ -124,7 +124,7 @@ int run_compare(const CompareOptions& options) {
   } catch (const std::invalid_argument& e) {
     std::fprintf(stderr, "antumbra compare: error: %s (%s, %s)\n", e.what(), options.a.c_str(),
                  options.b.c_str());
-    return kExitDiagnostics;
+    return runtime::kExitDiagnostics;
   }
   if (options.format == "json") {
     const nlohmann::json report{{"a", options.a},
@@ -135,12 +135,12 @@ int run_compare(const CompareOptions& options) {
                                 {"signal", kMetricNote},
                                 {"regions", metrics_json(comparisons)}};
     std::printf("%s\n", report.dump(2).c_str());
-    return kExitOk;
+    return runtime::kExitOk;
   }
   print_header();
   for (const auto& c : comparisons) print_row(std::filesystem::path(options.b).filename(), c);
   std::printf("(%s)\n", kMetricNote);
-  return kExitOk;
+  return runtime::kExitOk;
 }
 
 namespace {
@@ -149,16 +149,16 @@ namespace {
 // extra resources named in `keep` are marked persistent so they stay readable too.
 std::optional<fg::GraphDesc> load_for_quality(const std::string& path, const std::string& resource,
                                               const std::vector<std::string>& keep) {
-  auto document = fg::load_json_file(path);
+  auto document = base::load_json_file(path);
   if (!document.ok()) {
     for (const auto& d : document.diagnostics())
-      std::fprintf(stderr, "%s\n", fg::format_text(d).c_str());
+      std::fprintf(stderr, "%s\n", base::format_text(d).c_str());
     return std::nullopt;
   }
   auto graph = fg::parse_graph(document.value());
   if (!graph.ok()) {
     for (const auto& d : graph.diagnostics())
-      std::fprintf(stderr, "%s\n", fg::format_text(d).c_str());
+      std::fprintf(stderr, "%s\n", base::format_text(d).c_str());
     return std::nullopt;
   }
   if (graph->find_resource(resource) < 0) {
@@ -186,7 +186,7 @@ constexpr unsigned kStableRankingHeight = 540;
 // App-level code (not a graph diagnostic): the size is too small to rank techniques.
 constexpr const char* kRankingUnreliable = "QU001";
 
-std::optional<fg::Diagnostic> size_warning(unsigned width, unsigned height) {
+std::optional<base::Diagnostic> size_warning(unsigned width, unsigned height) {
   if (std::uint64_t{width} * height >= std::uint64_t{kStableRankingWidth} * kStableRankingHeight) {
     return std::nullopt;
   }
@@ -196,7 +196,7 @@ std::optional<fg::Diagnostic> size_warning(unsigned width, unsigned height) {
                 "to %ux%u; use --size %ux%u (or as many pixels) or larger to rank them",
                 width, height, kStableRankingWidth, kStableRankingHeight, kStableRankingWidth,
                 kStableRankingHeight);
-  return fg::Diagnostic{kRankingUnreliable, fg::Severity::warning, message, "", "", 0, 0};
+  return base::Diagnostic{kRankingUnreliable, base::Severity::warning, message, "", "", 0, 0};
 }
 
 // File stems name the error maps; a repeated stem gets its position appended.
@@ -255,12 +255,12 @@ int run_quality(const QualityOptions& options) {
   if (!parse_size(options.size, width, height)) {
     std::fprintf(stderr, "antumbra quality: --size must be WxH with 1..16384, got \"%s\"\n",
                  options.size.c_str());
-    return kExitUsage;
+    return runtime::kExitUsage;
   }
   const bool json = options.format == "json";
-  fg::Diagnostics report_diagnostics;
+  base::Diagnostics report_diagnostics;
   if (auto warning = size_warning(width, height)) {
-    std::fprintf(stderr, "%s\n", fg::format_text(*warning).c_str());
+    std::fprintf(stderr, "%s\n", base::format_text(*warning).c_str());
     report_diagnostics.add(std::move(*warning));
   }
   // Before minutes of rendering (lavapipe), not after.
@@ -269,31 +269,31 @@ int run_quality(const QualityOptions& options) {
                                failure) {
     std::fprintf(stderr, "antumbra quality: cannot create %s: %s\n", options.out.c_str(),
                  failure.message().c_str());
-    return kExitRuntime;
+    return runtime::kExitRuntime;
   }
-  const DataPaths paths = find_data_paths();
+  const runtime::DataPaths paths = runtime::find_data_paths();
   const std::string reference_path =
       options.reference.empty() ? (paths.graphs() / "reference.json").string() : options.reference;
   const std::string scene_path =
       options.scene.empty() ? (paths.scenes() / "atrium.json").string() : options.scene;
   auto reference = load_for_quality(reference_path, options.resource, {"penumbraCount", "depth"});
-  if (!reference) return kExitDiagnostics;
+  if (!reference) return runtime::kExitDiagnostics;
   std::vector<fg::GraphDesc> graphs;
   for (const auto& path : options.graphs) {
     auto graph = load_for_quality(path, options.resource, {});
-    if (!graph) return kExitDiagnostics;
+    if (!graph) return runtime::kExitDiagnostics;
     graphs.push_back(std::move(*graph));
   }
   auto scene = scene::load_scene_file(scene_path);
   for (const auto& d : scene.diagnostics())
-    std::fprintf(stderr, "%s\n", fg::format_text(d).c_str());
-  if (!scene.ok()) return kExitDiagnostics;
+    std::fprintf(stderr, "%s\n", base::format_text(d).c_str());
+  if (!scene.ok()) return runtime::kExitDiagnostics;
 
-  SessionOptions session_options;
+  runtime::SessionOptions session_options;
   session_options.device = options.device;
   session_options.validation = options.validation;
   session_options.viewport = {width, height};
-  RenderSession session(paths, session_options);
+  runtime::RenderSession session(paths, session_options);
   const scene::Camera camera = scene->camera;
   session.set_scene(std::move(scene.value()));
 
@@ -301,8 +301,8 @@ int run_quality(const QualityOptions& options) {
                     double& ms) -> std::optional<FloatImage> {
     const auto diagnostics = session.load_graph(graph);
     for (const auto& d : diagnostics) {
-      if (d.severity != fg::Severity::note)
-        std::fprintf(stderr, "%s\n", fg::format_text(d).c_str());
+      if (d.severity != base::Severity::note)
+        std::fprintf(stderr, "%s\n", base::format_text(d).c_str());
     }
     if (diagnostics.has_errors()) {
       std::fprintf(stderr, "antumbra quality: %s does not load\n", path.c_str());
@@ -318,7 +318,7 @@ int run_quality(const QualityOptions& options) {
 
   double reference_ms = 0.0;
   const auto reference_hdr = render(*reference, reference_path, reference_ms);
-  if (!reference_hdr) return kExitDiagnostics;
+  if (!reference_hdr) return runtime::kExitDiagnostics;
   const auto read_back = [&](const char* name) -> std::optional<FloatImage> {
     const auto* image = session.executor().gpu_image(name);
     if (image == nullptr) return std::nullopt;
@@ -341,7 +341,7 @@ int run_quality(const QualityOptions& options) {
   for (std::size_t i = 0; i < graphs.size(); ++i) {
     double ms = 0.0;
     const auto hdr = render(graphs[i], options.graphs[i], ms);
-    if (!hdr) return kExitDiagnostics;
+    if (!hdr) return runtime::kExitDiagnostics;
     const auto comparisons = compare_images(*reference_hdr, *hdr, mask ? &*mask : nullptr, regions);
     if (!options.out.empty()) errors.push_back(signed_error(*reference_hdr, *hdr));
     const std::string& label = labels[i];
@@ -358,7 +358,7 @@ int run_quality(const QualityOptions& options) {
       maps = write_error_maps(options.out, labels, errors, width, height);
     } catch (const std::runtime_error& e) {
       std::fprintf(stderr, "antumbra quality: %s\n", e.what());
-      return kExitRuntime;
+      return runtime::kExitRuntime;
     }
     for (std::size_t i = 0; json && i < maps.files.size(); ++i) {
       results[i]["errorMap"] = maps.files[i].string();
@@ -383,9 +383,9 @@ int run_quality(const QualityOptions& options) {
   if (options.validation && session.gpu().validation_error_count() > 0) {
     std::fprintf(stderr, "antumbra quality: %zu validation error(s)\n",
                  session.gpu().validation_error_count());
-    return kExitRuntime;
+    return runtime::kExitRuntime;
   }
-  return kExitOk;
+  return runtime::kExitOk;
 }
 
 }  // namespace antumbra::app

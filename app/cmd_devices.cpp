@@ -35,7 +35,7 @@ int run_devices(const std::string& device, bool validation) {
                 VK_API_VERSION_MINOR(info.api_version), VK_API_VERSION_PATCH(info.api_version));
   }
   std::printf("--device %s picks: %s\n", device.c_str(), context.device_name().c_str());
-  return kExitOk;
+  return runtime::kExitOk;
 }
 
 }  // namespace antumbra::app

@@ -74,7 +74,7 @@ int run_validate(const ValidateOptions& options) {
     const auto& diagnostics = result.diagnostics();
     const bool file_failed = !result.ok() || (options.werror && diagnostics.warning_count() > 0);
     failed = failed || file_failed;
-    unreadable = unreadable || exit_code_for(diagnostics) == kExitUsage;
+    unreadable = unreadable || runtime::exit_code_for(diagnostics) == runtime::kExitUsage;
     // The memory the plan asks for, without a device (formats' texel sizes, no driver
     // padding): a CI job sees a graph grow before a GPU does.
     const fg::CompileOptions defaults;
@@ -96,16 +96,16 @@ int run_validate(const ValidateOptions& options) {
       continue;
     }
     for (const auto& d : diagnostics) {
-      if (d.severity == fg::Severity::note) continue;
-      std::fprintf(stderr, "%s\n", fg::format_text(d).c_str());
+      if (d.severity == base::Severity::note) continue;
+      std::fprintf(stderr, "%s\n", base::format_text(d).c_str());
     }
     std::printf("%s: %s (%zu error(s), %zu warning(s)%s)\n", file.c_str(),
                 file_failed ? "invalid" : "valid", diagnostics.error_count(),
                 diagnostics.warning_count(), memory.c_str());
   }
   if (options.format == "json") std::cout << nlohmann::json{{"files", report}}.dump(2) << '\n';
-  if (unreadable) return kExitUsage;  // a file that cannot be read: like a bad argument
-  return failed ? kExitDiagnostics : kExitOk;
+  if (unreadable) return runtime::kExitUsage;  // a file that cannot be read: like a bad argument
+  return failed ? runtime::kExitDiagnostics : runtime::kExitOk;
 }
 
 int run_plan(const PlanOptions& options) {
@@ -114,16 +114,17 @@ int run_plan(const PlanOptions& options) {
   if (!parse_size(options.size, width, height)) {
     std::fprintf(stderr, "antumbra plan: --size must be WxH with 1..16384, got \"%s\"\n",
                  options.size.c_str());
-    return kExitUsage;
+    return runtime::kExitUsage;
   }
   const auto registry = passes::builtin_pass_registry();
   fg::CompileOptions compile_options;
   compile_options.viewport = {width, height};
   const auto result = fg::compile_file(options.file, registry.reflection(), compile_options);
   for (const auto& d : result.diagnostics()) {
-    if (d.severity != fg::Severity::note) std::fprintf(stderr, "%s\n", fg::format_text(d).c_str());
+    if (d.severity != base::Severity::note)
+      std::fprintf(stderr, "%s\n", base::format_text(d).c_str());
   }
-  if (!result.ok()) return exit_code_for(result.diagnostics());
+  if (!result.ok()) return runtime::exit_code_for(result.diagnostics());
   if (options.format == "dot") {
     std::cout << fg::plan_to_dot(result.value());
   } else if (options.format == "text") {
@@ -131,13 +132,13 @@ int run_plan(const PlanOptions& options) {
   } else {
     std::cout << fg::plan_to_json_text(result.value());
   }
-  return kExitOk;
+  return runtime::kExitOk;
 }
 
 int run_schema() {
   const auto registry = passes::builtin_pass_registry();
   std::cout << fg::generate_schema(registry.reflection()).dump(2) << '\n';
-  return kExitOk;
+  return runtime::kExitOk;
 }
 
 }  // namespace antumbra::app

@@ -19,14 +19,14 @@ int run_passes(const PassesOptions& options) {
     } else {
       std::cout << fg::pass_list_text(reflection);
     }
-    return kExitOk;
+    return runtime::kExitOk;
   }
   const fg::PassDesc* desc = reflection.find(options.type);
   if (desc == nullptr) {
     std::fprintf(stderr,
                  "antumbra passes: unknown pass type '%s'%s (`antumbra passes` lists them)\n",
                  options.type.c_str(), fg::did_you_mean(options.type, reflection.types()).c_str());
-    return kExitUsage;
+    return runtime::kExitUsage;
   }
   if (options.format == "json") {
     std::cout << fg::pass_reference_json(*desc).dump(2) << '\n';
@@ -35,7 +35,7 @@ int run_passes(const PassesOptions& options) {
   } else {
     std::cout << fg::pass_reference_text(*desc);
   }
-  return kExitOk;
+  return runtime::kExitOk;
 }
 
 }  // namespace antumbra::app

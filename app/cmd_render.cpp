@@ -4,27 +4,28 @@
 
 #include <nlohmann/json.hpp>
 
-#include "antumbra/fg/diagnostic_codes.hpp"
+#include "antumbra/base/diagnostic_codes.hpp"
+#include "antumbra/base/json_document.hpp"
 #include "antumbra/fg/graph_desc.hpp"
-#include "antumbra/fg/json_document.hpp"
 #include "antumbra/fg/registry.hpp"
 #include "antumbra/gpu/timing.hpp"
+#include "antumbra/runtime/render_session.hpp"
+#include "antumbra/runtime/watch_loop.hpp"
 #include "antumbra/scene/scene_file.hpp"
 #include "commands.hpp"
-#include "render_session.hpp"
-#include "watch_loop.hpp"
 
 namespace antumbra::app {
 namespace {
 
-void print_diagnostics(const fg::Diagnostics& diagnostics) {
+void print_diagnostics(const base::Diagnostics& diagnostics) {
   for (const auto& d : diagnostics) {
-    if (d.severity != fg::Severity::note) std::fprintf(stderr, "%s\n", fg::format_text(d).c_str());
+    if (d.severity != base::Severity::note)
+      std::fprintf(stderr, "%s\n", base::format_text(d).c_str());
   }
 }
 
-void print_timings(const RenderSession& session, const std::vector<PassTiming>& timings,
-                   int frames) {
+void print_timings(const runtime::RenderSession& session,
+                   const std::vector<runtime::PassTiming>& timings, int frames) {
   std::printf("%-20s %-20s %10s %10s\n", "pass", "type", "gpu ms", "cpu ms");
   double gpu_total = 0.0;
   double cpu_total = 0.0;
@@ -42,9 +43,9 @@ void print_timings(const RenderSession& session, const std::vector<PassTiming>& 
 
 // Everything a tool needs from one run: timings, what the passes reported (e.g.
 // layer-cap warnings with the lights and conflicting pairs) and the diagnostics.
-nlohmann::json render_report_json(const RenderSession& session, const std::string& device,
+nlohmann::json render_report_json(const runtime::RenderSession& session, const std::string& device,
                                   const RenderOptions& options, const std::string& resource,
-                                  const fg::Diagnostics& diagnostics) {
+                                  const base::Diagnostics& diagnostics) {
   auto passes = nlohmann::json::array();
   for (const auto& t : session.pass_timings()) {
     passes.push_back(
@@ -56,7 +57,7 @@ nlohmann::json render_report_json(const RenderSession& session, const std::strin
   const auto frame = session.frame_diagnostics();
   const auto& messages = session.last_report().messages();
   for (std::size_t i = 0; i < frame.size(); ++i) {
-    auto item = fg::to_json(frame[i]);
+    auto item = base::to_json(frame[i]);
     item["pass"] = messages[i].pass;
     item["details"] = nlohmann::json::parse(messages[i].details.dump());
     all.push_back(std::move(item));
@@ -80,9 +81,9 @@ int run_render(const RenderOptions& options) {
   if (!parse_size(options.size, width, height)) {
     std::fprintf(stderr, "antumbra render: --size must be WxH with 1..16384, got \"%s\"\n",
                  options.size.c_str());
-    return kExitUsage;
+    return runtime::kExitUsage;
   }
-  const DataPaths paths = find_data_paths();
+  const runtime::DataPaths paths = runtime::find_data_paths();
   const std::string graph_path =
       options.graph.empty() ? (paths.graphs() / "layered-ssss.json").string() : options.graph;
   const std::string scene_path =
@@ -90,7 +91,7 @@ int run_render(const RenderOptions& options) {
   gpu::CpuTimer stage;
   const bool json = options.format == "json";
   // A run that fails still answers a tool that asked for JSON: {"ok": false, diagnostics}.
-  const auto fail = [&](const fg::Diagnostics& diagnostics, int code) {
+  const auto fail = [&](const base::Diagnostics& diagnostics, int code) {
     print_diagnostics(diagnostics);
     if (json) {
       std::printf("%s\n", nlohmann::json{{"ok", false},
@@ -104,10 +105,11 @@ int run_render(const RenderOptions& options) {
   };
 
   // User input first, so a broken file fails fast without touching the GPU.
-  auto document = fg::load_json_file(graph_path);
-  if (!document.ok()) return fail(document.diagnostics(), exit_code_for(document.diagnostics()));
+  auto document = base::load_json_file(graph_path);
+  if (!document.ok())
+    return fail(document.diagnostics(), runtime::exit_code_for(document.diagnostics()));
   auto graph = fg::parse_graph(document.value());
-  if (!graph.ok()) return fail(graph.diagnostics(), kExitDiagnostics);
+  if (!graph.ok()) return fail(graph.diagnostics(), runtime::kExitDiagnostics);
   if (!options.output.empty()) {
     if (graph->find_resource(options.output) < 0) {
       std::vector<std::string> names;
@@ -115,23 +117,23 @@ int run_render(const RenderOptions& options) {
       std::fprintf(stderr, "antumbra render: --output \"%s\" is not a resource of %s%s\n",
                    options.output.c_str(), graph_path.c_str(),
                    fg::did_you_mean(options.output, names).c_str());
-      return kExitUsage;
+      return runtime::kExitUsage;
     }
     // The requested resource becomes the graph's output: it is kept alive (never
     // aliased) and only the passes that feed it run.
     graph->output = options.output;
   }
   auto scene = scene::load_scene_file(scene_path);
-  if (!scene.ok()) return fail(scene.diagnostics(), exit_code_for(scene.diagnostics()));
+  if (!scene.ok()) return fail(scene.diagnostics(), runtime::exit_code_for(scene.diagnostics()));
   print_diagnostics(scene.diagnostics());
   const double parse_ms = stage.elapsed_ms();
 
   stage.restart();
-  SessionOptions session_options;
+  runtime::SessionOptions session_options;
   session_options.device = options.device;
   session_options.validation = options.validation;
   session_options.viewport = {width, height};
-  RenderSession session(paths, session_options);
+  runtime::RenderSession session(paths, session_options);
   const double device_ms = stage.elapsed_ms();
   if (!json) {
     std::printf("device: %s%s\n", session.gpu().device_name().c_str(),
@@ -143,9 +145,9 @@ int run_render(const RenderOptions& options) {
   if (diagnostics.has_errors()) {
     // A valid graph this device cannot hold (memory, limits) is a runtime failure, as the
     // README promises (3), not a problem in the file (1).
-    return fail(diagnostics, diagnostics.find(fg::codes::kRealiseFailed) != nullptr
-                                 ? kExitRuntime
-                                 : kExitDiagnostics);
+    return fail(diagnostics, diagnostics.find(codes::graph::kRealiseFailed) != nullptr
+                                 ? runtime::kExitRuntime
+                                 : runtime::kExitDiagnostics);
   }
   print_diagnostics(diagnostics);
   const double compile_ms = stage.elapsed_ms();
@@ -154,7 +156,7 @@ int run_render(const RenderOptions& options) {
   session.set_scene(std::move(scene.value()));
   const double upload_ms = stage.elapsed_ms();
 
-  TraceWriter trace;
+  runtime::TraceWriter trace;
   stage.restart();
   session.render(options.frames, options.trace.empty() ? nullptr : &trace);
   const double render_ms = stage.elapsed_ms();
@@ -205,22 +207,23 @@ int run_render(const RenderOptions& options) {
   }
   if (options.watch) {
     std::fflush(stdout);
-    WatchOptions watch{graph_path, scene_path, options.output, options.out, options.watch_seconds};
-    const int code = run_watch_loop(session, watch);
-    if (code != kExitOk) return code;
+    runtime::WatchOptions watch{graph_path, scene_path, options.output, options.out,
+                                options.watch_seconds};
+    const int code = runtime::run_watch_loop(session, watch);
+    if (code != runtime::kExitOk) return code;
   }
   if (options.validation && session.gpu().validation_error_count() > 0) {
     std::fprintf(stderr, "antumbra render: %zu validation error(s)\n",
                  session.gpu().validation_error_count());
-    return kExitRuntime;
+    return runtime::kExitRuntime;
   }
   const std::size_t warnings =
       diagnostics.warning_count() + session.frame_diagnostics().warning_count();
   if (options.werror && warnings > 0) {
     std::fprintf(stderr, "antumbra render: %zu warning(s) with --werror\n", warnings);
-    return kExitDiagnostics;
+    return runtime::kExitDiagnostics;
   }
-  return kExitOk;
+  return runtime::kExitOk;
 }
 
 }  // namespace antumbra::app

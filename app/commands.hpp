@@ -5,20 +5,9 @@
 #include <string>
 #include <vector>
 
-#include "antumbra/fg/diagnostics.hpp"
+#include "antumbra/runtime/exit_codes.hpp"
 
 namespace antumbra::app {
-
-inline constexpr int kExitOk = 0;
-inline constexpr int kExitDiagnostics = 1;
-inline constexpr int kExitUsage = 2;
-inline constexpr int kExitRuntime = 3;
-
-// The exit code for diagnostics on user input: a file that cannot be read (FG000: missing,
-// a directory, no permission) is a usage error (2) like a bad option; anything else 1.
-inline int exit_code_for(const fg::Diagnostics& diagnostics) {
-  return diagnostics.find("FG000") != nullptr ? kExitUsage : kExitDiagnostics;
-}
 
 struct ValidateOptions {
   std::vector<std::string> files;

@@ -8,8 +8,9 @@
 #include <sstream>
 #include <vector>
 
+#include "antumbra/base/diagnostic_codes.hpp"
+#include "antumbra/base/json_document.hpp"
 #include "antumbra/editor/edit_script_check.hpp"
-#include "antumbra/editor/editor_codes.hpp"
 #include "antumbra/editor/fix_suggestion.hpp"
 #include "antumbra/editor/graph_document.hpp"
 #include "antumbra/editor/layer_status.hpp"
@@ -17,23 +18,22 @@
 #include "antumbra/editor/viewport.hpp"
 #include "antumbra/editor_app/windowed_editor.hpp"
 #include "antumbra/fg/graph_desc.hpp"
-#include "antumbra/fg/json_document.hpp"
 #include "antumbra/fg/plan_diff.hpp"
 #include "antumbra/gpu/timing.hpp"
+#include "antumbra/runtime/render_session.hpp"
 #include "antumbra/scene/scene_file.hpp"
 #include "commands.hpp"
 #include "register_builtin_passes.hpp"
-#include "render_session.hpp"
 
 namespace antumbra::app {
 namespace {
 
 namespace fs = std::filesystem;
-using fg::Json;
+using base::Json;
 
-void print(const fg::Diagnostics& diagnostics) {
+void print(const base::Diagnostics& diagnostics) {
   for (const auto& d : diagnostics) {
-    if (d.severity != fg::Severity::note) std::printf("  %s\n", fg::format_text(d).c_str());
+    if (d.severity != base::Severity::note) std::printf("  %s\n", base::format_text(d).c_str());
   }
 }
 
@@ -51,7 +51,7 @@ struct StepError {
 
 class EditRun {
  public:
-  EditRun(RenderSession& session, editor::SceneDocument scene, editor::GraphDocument graph,
+  EditRun(runtime::RenderSession& session, editor::SceneDocument scene, editor::GraphDocument graph,
           editor::PassDescLookup lookup, fs::path script_dir)
       : session_(session),
         scene_(std::move(scene)),
@@ -129,15 +129,7 @@ class EditRun {
   }
 
   // The layer cap of the graph being edited: its light-layering pass's maxLayers.
-  int graph_cap() const {
-    for (const auto& pass : graph_.passes()) {
-      if (pass.type != "light-layering") continue;
-      for (const auto& p : pass.params) {
-        if (p.name == "maxLayers" && p.value.is_number_integer()) return p.value.get<int>();
-      }
-    }
-    return layering::LayeringOptions{}.max_layers;
-  }
+  int graph_cap() const { return editor::layer_cap(graph_); }
 
   // Scene edits reach the GPU and the layer status in the same step: the next frame
   // (and the warnings it reports) already shows them.
@@ -161,8 +153,8 @@ class EditRun {
     status_.update(scene_);
   }
 
-  fg::Diagnostics load_graph_text(const std::string& text) {
-    auto document = fg::parse_json(text, graph_.file().string());
+  base::Diagnostics load_graph_text(const std::string& text) {
+    auto document = base::parse_json(text, graph_.file().string());
     if (!document.ok()) return document.diagnostics();
     auto graph = fg::parse_graph(document.value());
     if (!graph.ok()) return graph.diagnostics();
@@ -430,7 +422,7 @@ class EditRun {
       if (!found) {
         std::string seen;
         for (const auto& d : last_reload_) {
-          if (d.severity == fg::Severity::error) {
+          if (d.severity == base::Severity::error) {
             seen += (seen.empty() ? "" : ", ") + d.code + " at line " + std::to_string(d.line);
           }
         }
@@ -470,7 +462,7 @@ class EditRun {
     }
   }
 
-  RenderSession& session_;
+  runtime::RenderSession& session_;
   editor::SceneDocument scene_;
   editor::GraphDocument graph_;
   editor::PassDescLookup lookup_;
@@ -479,7 +471,7 @@ class EditRun {
   editor::ViewportCamera camera_{scene::Camera{}};
   scene::Camera scene_camera_;
   float drag_limit_ = 1.0f;
-  fg::Diagnostics last_reload_;
+  base::Diagnostics last_reload_;
   bool reload_ok_ = true;
   std::vector<double> frame_ms_;
 };
@@ -496,7 +488,7 @@ int run_edit(const EditOptions& options) {
   if (!options.headless) {
     if (!options.script.empty()) {
       std::fprintf(stderr, "antumbra edit: --script runs headless; add --headless\n");
-      return kExitUsage;
+      return runtime::kExitUsage;
     }
     editor_app::WindowedOptions windowed{options.graph, options.scene, options.device,
                                          options.validation, options.frames};
@@ -505,40 +497,40 @@ int run_edit(const EditOptions& options) {
     windowed.frame_log = options.frame_log;
     if (!parse_size(options.size, windowed.width, windowed.height)) {
       std::fprintf(stderr, "antumbra edit: --size must be WxH, got \"%s\"\n", options.size.c_str());
-      return kExitUsage;
+      return runtime::kExitUsage;
     }
     return editor_app::run_windowed_editor(windowed);
   }
   if (options.script.empty() && options.frames <= 0) {
     std::fprintf(stderr, "antumbra edit --headless needs --script FILE or --frames N\n");
-    return kExitUsage;
+    return runtime::kExitUsage;
   }
   unsigned width = 0;
   unsigned height = 0;
   if (!parse_size(options.size, width, height)) {
     std::fprintf(stderr, "antumbra edit: --size must be WxH, got \"%s\"\n", options.size.c_str());
-    return kExitUsage;
+    return runtime::kExitUsage;
   }
-  const DataPaths paths = find_data_paths();
+  const runtime::DataPaths paths = runtime::find_data_paths();
   const fs::path graph_path =
       options.graph.empty() ? paths.graphs() / "layered-ssss.json" : fs::path(options.graph);
   const fs::path scene_path =
       options.scene.empty() ? paths.scenes() / "atrium.json" : fs::path(options.scene);
 
   // User input first: a bad script, scene or graph fails before the device starts.
-  std::optional<fg::JsonDocument> script;
+  std::optional<base::JsonDocument> script;
   if (!options.script.empty()) {
-    auto loaded = fg::load_json_file(options.script);
+    auto loaded = base::load_json_file(options.script);
     if (!loaded.ok()) {
       print(loaded.diagnostics());
-      return exit_code_for(loaded.diagnostics());
+      return runtime::exit_code_for(loaded.diagnostics());
     }
     // The whole script before anything runs: a typo fails here, not silently later.
-    const fg::Diagnostics problems = editor::check_edit_script(loaded.value());
+    const base::Diagnostics problems = editor::check_edit_script(loaded.value());
     if (!problems.empty()) {
       print(problems);
       std::printf("%zu problem(s) in the script; nothing was run\n", problems.size());
-      return kExitDiagnostics;
+      return runtime::kExitDiagnostics;
     }
     script = std::move(loaded.value());
   }
@@ -548,21 +540,21 @@ int run_edit(const EditOptions& options) {
   auto graph = editor::GraphDocument::load(graph_path, lookup);
   print(scene.diagnostics());
   print(graph.diagnostics());
-  if (!scene.ok()) return exit_code_for(scene.diagnostics());
-  if (!graph.ok()) return exit_code_for(graph.diagnostics());
+  if (!scene.ok()) return runtime::exit_code_for(scene.diagnostics());
+  if (!graph.ok()) return runtime::exit_code_for(graph.diagnostics());
 
-  SessionOptions session_options;
+  runtime::SessionOptions session_options;
   session_options.device = options.device;
   session_options.validation = options.validation;
   session_options.viewport = {width, height};
-  RenderSession session(paths, session_options);
+  runtime::RenderSession session(paths, session_options);
   std::printf("device: %s%s\n", session.gpu().device_name().c_str(),
               options.validation ? " (validation + synchronization validation on)" : "");
 
   EditRun run(
       session, std::move(scene.value()), std::move(graph.value()), lookup,
       options.script.empty() ? fs::current_path() : fs::absolute(options.script).parent_path());
-  if (!run.start()) return kExitDiagnostics;
+  if (!run.start()) return runtime::kExitDiagnostics;
   int failures = 0;
   if (script) {
     const auto& steps = script->root()["steps"];
@@ -576,13 +568,13 @@ int run_edit(const EditOptions& options) {
       } catch (const StepError& e) {
         ++failures;
         std::printf("%s:%d:%d: error[%s]: step %zu failed: %s (at %s)\n", options.script.c_str(),
-                    location.line, location.column, editor::codes::kStepFailed, i,
+                    location.line, location.column, codes::editor::kStepFailed, i,
                     e.message.c_str(), pointer.c_str());
       } catch (const Json::exception& e) {
         ++failures;
         std::printf("%s:%d:%d: error[%s]: step %zu is malformed: %s (at %s)\n",
                     options.script.c_str(), location.line, location.column,
-                    editor::codes::kScriptMalformed, i, e.what(), pointer.c_str());
+                    codes::editor::kScriptMalformed, i, e.what(), pointer.c_str());
       }
       std::fflush(stdout);
     }
@@ -608,7 +600,7 @@ int run_edit(const EditOptions& options) {
                 file.c_str());
   }
   std::printf("%d step(s) failed\n", failures);
-  return failures == 0 ? kExitOk : kExitDiagnostics;
+  return failures == 0 ? runtime::kExitOk : runtime::kExitDiagnostics;
 }
 
 }  // namespace antumbra::app

@@ -1,6 +1,6 @@
 #pragma once
 // `antumbra edit --headless --script FILE`: the editor's model driven by a JSON script
-// instead of a window, rendering every frame through the same RenderSession. What an
+// instead of a window, rendering every frame through the same runtime::RenderSession. What an
 // artist does (move a light, undo, apply the suggested fix, save) and what a tool does
 // (replace the graph or a shader on disk, reload) are steps; what must then hold
 // (a layer warning this frame, a kept frame after a broken file, a saved file's

@@ -7,8 +7,8 @@
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 
+#include "antumbra/runtime/data_paths.hpp"
 #include "commands.hpp"
-#include "data_paths.hpp"
 #include "edit_script.hpp"
 
 namespace {
@@ -176,7 +176,7 @@ int dispatch(int argc, char** argv) {
     return cli.exit(e);
   } catch (const CLI::ParseError& e) {
     cli.exit(e);
-    return kExitUsage;
+    return antumbra::runtime::kExitUsage;
   }
 
   if (edit_cmd->parsed()) return run_edit(edit);
@@ -189,7 +189,7 @@ int dispatch(int argc, char** argv) {
       if (plan_cmd->count("--format") > 0 && plan.format != flag) {
         std::fprintf(stderr, "antumbra plan: --%s contradicts --format %s\n", flag,
                      plan.format.c_str());
-        return kExitUsage;
+        return antumbra::runtime::kExitUsage;
       }
       std::fprintf(stderr, "antumbra plan: --%s is deprecated; use --format %s\n", flag, flag);
       plan.format = flag;
@@ -211,14 +211,14 @@ int main(int argc, char** argv) {
   spdlog::set_default_logger(spdlog::stderr_color_mt("antumbra"));
   try {
     return dispatch(argc, argv);
-  } catch (const antumbra::app::DataPathsError& e) {
+  } catch (const antumbra::runtime::DataPathsError& e) {
     std::fprintf(stderr, "antumbra: error: %s\n", e.what());
-    return antumbra::app::kExitUsage;
+    return antumbra::runtime::kExitUsage;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "antumbra: error: %s\n", e.what());
-    return antumbra::app::kExitRuntime;
+    return antumbra::runtime::kExitRuntime;
   } catch (...) {
     std::fprintf(stderr, "antumbra: error: unknown failure\n");
-    return antumbra::app::kExitRuntime;
+    return antumbra::runtime::kExitRuntime;
   }
 }

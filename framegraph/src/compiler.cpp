@@ -4,7 +4,7 @@
 #include <algorithm>
 
 #include "antumbra/fg/compiler_phases.hpp"
-#include "antumbra/fg/diagnostic_codes.hpp"
+#include "antumbra/fg/vocabulary.hpp"
 
 namespace antumbra::fg {
 namespace {
@@ -20,7 +20,8 @@ std::string quote_name(std::string_view s) {
 }
 
 // The output must name an image that some enabled pass writes.
-int check_output(const GraphDesc& graph, const std::vector<ResolvedPass>& passes, Diagnostics& diags) {
+int check_output(const GraphDesc& graph, const std::vector<ResolvedPass>& passes,
+                 Diagnostics& diags) {
   const int output = graph.find_resource(graph.output);
   const auto error = [&](const char* code, const std::string& message) {
     diags.add(graph.document.make(code, Severity::error, message, "/output"));
@@ -28,12 +29,13 @@ int check_output(const GraphDesc& graph, const std::vector<ResolvedPass>& passes
   if (output < 0) {
     std::vector<std::string> names;
     for (const auto& r : graph.resources) names.push_back(r.name);
-    error(codes::kUnknownResource,
-          "output names unknown resource " + quote_name(graph.output) + did_you_mean(graph.output, names));
+    error(codes::kUnknownResource, "output names unknown resource " + quote_name(graph.output) +
+                                       did_you_mean(graph.output, names));
     return -1;
   }
   if (graph.resources[static_cast<std::size_t>(output)].kind != ResourceKind::image) {
-    error(codes::kOutputNotImage, "output " + quote_name(graph.output) + " is a buffer; the output must be an image");
+    error(codes::kOutputNotImage,
+          "output " + quote_name(graph.output) + " is a buffer; the output must be an image");
     return -1;
   }
   for (const ResolvedPass& rp : passes) {
@@ -55,7 +57,8 @@ int check_output(const GraphDesc& graph, const std::vector<ResolvedPass>& passes
   return -1;
 }
 
-void warn_unused_resources(const GraphDesc& graph, const std::vector<ResolvedPass>& passes, Diagnostics& diags) {
+void warn_unused_resources(const GraphDesc& graph, const std::vector<ResolvedPass>& passes,
+                           Diagnostics& diags) {
   std::vector<bool> used(graph.resources.size(), false);
   for (const ResolvedPass& rp : passes) {
     for (const auto* list : {&rp.reads, &rp.writes}) {
@@ -65,17 +68,17 @@ void warn_unused_resources(const GraphDesc& graph, const std::vector<ResolvedPas
   for (std::size_t i = 0; i < graph.resources.size(); ++i) {
     const ResourceDesc& r = graph.resources[i];
     if (used[i] || r.name == graph.output) continue;
-    diags.add(graph.document.make(codes::kUnusedResource, Severity::warning,
-                                  "resource " + quote_name(r.name) + " is declared but no pass uses it", r.pointer,
-                                  true));
+    diags.add(graph.document.make(
+        codes::kUnusedResource, Severity::warning,
+        "resource " + quote_name(r.name) + " is declared but no pass uses it", r.pointer, true));
   }
 }
 
 std::string describe_edges(const GraphDesc& graph, const std::vector<DepEdge>& edges) {
   std::string out;
   for (const DepEdge& e : edges) {
-    out += (out.empty() ? "" : ", ") + graph.passes[static_cast<std::size_t>(e.from)].name + " -> " +
-           graph.passes[static_cast<std::size_t>(e.to)].name + " (" +
+    out += (out.empty() ? "" : ", ") + graph.passes[static_cast<std::size_t>(e.from)].name +
+           " -> " + graph.passes[static_cast<std::size_t>(e.to)].name + " (" +
            (e.resource >= 0 ? "via " + graph.resources[static_cast<std::size_t>(e.resource)].name
                             : std::string("after")) +
            ")";
@@ -84,8 +87,9 @@ std::string describe_edges(const GraphDesc& graph, const std::vector<DepEdge>& e
 }
 
 // Builds the plan's passes and resources from the kept passes in execution order.
-Plan assemble(const GraphDesc& graph, const std::vector<ResolvedPass>& passes, const std::vector<bool>& keep,
-              const std::vector<int>& order, int output, const CompileOptions& options) {
+Plan assemble(const GraphDesc& graph, const std::vector<ResolvedPass>& passes,
+              const std::vector<bool>& keep, const std::vector<int>& order, int output,
+              const CompileOptions& options) {
   Plan plan;
   plan.name = graph.name;
   plan.file = graph.document.file();
@@ -93,7 +97,8 @@ Plan assemble(const GraphDesc& graph, const std::vector<ResolvedPass>& passes, c
   std::vector<int> remap(graph.resources.size(), -1);
   std::vector<bool> used(graph.resources.size(), false);
   for (int p : order) {
-    for (const auto* list : {&passes[static_cast<std::size_t>(p)].reads, &passes[static_cast<std::size_t>(p)].writes}) {
+    for (const auto* list : {&passes[static_cast<std::size_t>(p)].reads,
+                             &passes[static_cast<std::size_t>(p)].writes}) {
       for (const BoundPort& b : *list) used[static_cast<std::size_t>(b.resource)] = true;
     }
   }
@@ -147,7 +152,8 @@ Plan assemble(const GraphDesc& graph, const std::vector<ResolvedPass>& passes, c
 
 }  // namespace
 
-Result<Plan> compile(const GraphDesc& graph, const Registry& registry, const CompileOptions& options) {
+Result<Plan> compile(const GraphDesc& graph, const Registry& registry,
+                     const CompileOptions& options) {
   Diagnostics diags;
   std::vector<ResolvedPass> passes = resolve_passes(graph, registry, diags);
   bind_ports(graph, passes, diags);
@@ -159,9 +165,9 @@ Result<Plan> compile(const GraphDesc& graph, const Registry& registry, const Com
   if (diags.has_errors()) return diags;
   if (auto left = find_cycle_edges(deps, passes); !left.empty()) {
     const auto& first = graph.passes[static_cast<std::size_t>(left.front().to)];
-    diags.add(graph.document.make(codes::kCycle, Severity::error,
-                                  "the passes form a cycle; edges left: " + describe_edges(graph, left),
-                                  first.pointer));
+    diags.add(graph.document.make(
+        codes::kCycle, Severity::error,
+        "the passes form a cycle; edges left: " + describe_edges(graph, left), first.pointer));
     return diags;
   }
   const std::vector<bool> keep = cull_passes(deps, passes, output);
@@ -169,10 +175,12 @@ Result<Plan> compile(const GraphDesc& graph, const Registry& registry, const Com
     const auto& pass = graph.passes[i];
     if (!passes[i].enabled) {
       diags.add(graph.document.make(codes::kPassDisabled, Severity::note,
-                                    "pass " + quote_name(pass.name) + " is disabled", pass.pointer));
+                                    "pass " + quote_name(pass.name) + " is disabled",
+                                    pass.pointer));
     } else if (!keep[i]) {
       diags.add(graph.document.make(codes::kPassCulled, Severity::note,
-                                    "pass " + quote_name(pass.name) + " is culled: its outputs reach neither " +
+                                    "pass " + quote_name(pass.name) +
+                                        " is culled: its outputs reach neither " +
                                         quote_name(graph.output) + " nor a side effect",
                                     pass.pointer));
     }
@@ -205,7 +213,8 @@ Result<Plan> compile_text(std::string_view text, const std::string& file, const 
   return Result<Plan>(std::move(plan.value()), std::move(all));
 }
 
-Result<Plan> compile_file(const std::string& path, const Registry& registry, const CompileOptions& options) {
+Result<Plan> compile_file(const std::string& path, const Registry& registry,
+                          const CompileOptions& options) {
   Result<JsonDocument> doc = load_json_file(path);
   if (!doc) return doc.diagnostics();
   Result<GraphDesc> graph = parse_graph(doc.value());

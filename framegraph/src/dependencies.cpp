@@ -5,7 +5,7 @@
 #include <tuple>
 
 #include "antumbra/fg/compiler_phases.hpp"
-#include "antumbra/fg/diagnostic_codes.hpp"
+#include "antumbra/fg/vocabulary.hpp"
 
 namespace antumbra::fg {
 namespace {
@@ -20,7 +20,9 @@ std::string quote_name(std::string_view s) {
   return out;
 }
 
-void add_edge(std::vector<DepEdge>& edges, DepEdge edge) { edges.push_back(edge); }
+void add_edge(std::vector<DepEdge>& edges, DepEdge edge) {
+  edges.push_back(edge);
+}
 
 bool edge_less(const DepEdge& a, const DepEdge& b) {
   return std::tie(a.from, a.to, a.kind, a.resource) < std::tie(b.from, b.to, b.kind, b.resource);
@@ -36,10 +38,14 @@ void normalize(std::vector<DepEdge>& edges) {
 
 std::string_view to_string(EdgeKind kind) {
   switch (kind) {
-    case EdgeKind::read_after_write: return "read";
-    case EdgeKind::write_after_read: return "write-after-read";
-    case EdgeKind::write_after_write: return "write-after-write";
-    case EdgeKind::after: return "after";
+    case EdgeKind::read_after_write:
+      return "read";
+    case EdgeKind::write_after_read:
+      return "write-after-read";
+    case EdgeKind::write_after_write:
+      return "write-after-write";
+    case EdgeKind::after:
+      return "after";
   }
   return "read";
 }
@@ -69,7 +75,8 @@ DependencyGraph build_dependencies(const GraphDesc& graph, const std::vector<Res
           for (const BoundPort& w : passes[j].writes) {
             if (w.resource == read.resource && passes[j].enabled) {
               hint = "; " + quote_name(graph.passes[j].name) +
-                     " writes it later (move it earlier, or make the resource persistent to read the previous "
+                     " writes it later (move it earlier, or make the resource persistent to read "
+                     "the previous "
                      "frame)";
               break;
             }
@@ -77,16 +84,19 @@ DependencyGraph build_dependencies(const GraphDesc& graph, const std::vector<Res
         }
         diags.add(graph.document.make(codes::kReadNeverWritten, Severity::error,
                                       "pass " + quote_name(graph.passes[i].name) + " reads " +
-                                          quote_name(graph.resources[r].name) + " but no earlier pass writes it" + hint,
+                                          quote_name(graph.resources[r].name) +
+                                          " but no earlier pass writes it" + hint,
                                       read.pointer));
       }
       readers[r].push_back(to);
     }
     for (const BoundPort& write : rp.writes) {
       const auto r = static_cast<std::size_t>(write.resource);
-      if (last_writer[r] >= 0) add_edge(deps.edges, {last_writer[r], to, EdgeKind::write_after_write, write.resource});
+      if (last_writer[r] >= 0)
+        add_edge(deps.edges, {last_writer[r], to, EdgeKind::write_after_write, write.resource});
       for (int reader : readers[r]) {
-        if (reader != to) add_edge(deps.edges, {reader, to, EdgeKind::write_after_read, write.resource});
+        if (reader != to)
+          add_edge(deps.edges, {reader, to, EdgeKind::write_after_read, write.resource});
       }
       readers[r].clear();
       last_writer[r] = to;
@@ -103,7 +113,8 @@ DependencyGraph build_dependencies(const GraphDesc& graph, const std::vector<Res
       }
       diags.add(graph.document.make(codes::kReadNeverWritten, Severity::error,
                                     "pass " + quote_name(pass.name) + " reads persistent " +
-                                        quote_name(graph.resources[r].name) + " but no pass ever writes it",
+                                        quote_name(graph.resources[r].name) +
+                                        " but no pass ever writes it",
                                     read->pointer));
       continue;
     }
@@ -133,7 +144,8 @@ DependencyGraph build_dependencies(const GraphDesc& graph, const std::vector<Res
   return deps;
 }
 
-std::vector<DepEdge> find_cycle_edges(const DependencyGraph& deps, const std::vector<ResolvedPass>& passes) {
+std::vector<DepEdge> find_cycle_edges(const DependencyGraph& deps,
+                                      const std::vector<ResolvedPass>& passes) {
   std::vector<int> in_degree(passes.size(), 0);
   std::vector<std::vector<int>> out_edges(passes.size());
   for (std::size_t e = 0; e < deps.edges.size(); ++e) {
@@ -156,7 +168,8 @@ std::vector<DepEdge> find_cycle_edges(const DependencyGraph& deps, const std::ve
   }
   std::vector<DepEdge> left;
   for (const DepEdge& e : deps.edges) {
-    if (!done[static_cast<std::size_t>(e.from)] && !done[static_cast<std::size_t>(e.to)]) left.push_back(e);
+    if (!done[static_cast<std::size_t>(e.from)] && !done[static_cast<std::size_t>(e.to)])
+      left.push_back(e);
   }
   std::sort(left.begin(), left.end(), edge_less);
   return left;
@@ -194,7 +207,8 @@ std::vector<bool> cull_passes(const DependencyGraph& deps, const std::vector<Res
   std::vector<std::vector<int>> producers(passes.size());
   for (const auto* list : {&deps.edges, &deps.previous_frame}) {
     for (const DepEdge& e : *list) {
-      if (e.kind == EdgeKind::read_after_write || (e.kind == EdgeKind::write_after_write && keeps_contents(e))) {
+      if (e.kind == EdgeKind::read_after_write ||
+          (e.kind == EdgeKind::write_after_write && keeps_contents(e))) {
         producers[static_cast<std::size_t>(e.to)].push_back(e.from);
       }
     }

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "antumbra/fg/diagnostic_codes.hpp"
 #include "antumbra/fg/registry.hpp"
+#include "antumbra/fg/vocabulary.hpp"
 
 namespace antumbra::fg {
 namespace {
@@ -45,10 +45,12 @@ class GraphParser {
     GraphDesc graph;
     const Json& root = doc_.root();
     if (!root.is_object()) {
-      error(codes::kWrongType, "a graph file must be a JSON object, not " + json_type_name(root), "");
+      error(codes::kWrongType, "a graph file must be a JSON object, not " + json_type_name(root),
+            "");
       return std::move(diags_);
     }
-    check_keys(root, "", {"$schema", "version", "name", "description", "resources", "passes", "output"});
+    check_keys(root, "",
+               {"$schema", "version", "name", "description", "resources", "passes", "output"});
     parse_version(root, graph);
     if (root.contains("name")) expect_string(root["name"], "/name", graph.name);
     if (root.contains("description")) {
@@ -59,7 +61,8 @@ class GraphParser {
     if (require(root, "", "passes")) parse_passes(root["passes"], graph);
     if (require(root, "", "output") && expect_string(root["output"], "/output", graph.output) &&
         !is_identifier(graph.output)) {
-      error(codes::kInvalidName, "output " + quote_name(graph.output) + " is not a resource name", "/output");
+      error(codes::kInvalidName, "output " + quote_name(graph.output) + " is not a resource name",
+            "/output");
     }
     if (diags_.has_errors()) return std::move(diags_);
     graph.document = doc_;
@@ -67,7 +70,8 @@ class GraphParser {
   }
 
  private:
-  void error(const char* code, std::string message, const std::string& pointer, bool at_key = false) {
+  void error(const char* code, std::string message, const std::string& pointer,
+             bool at_key = false) {
     diags_.add(doc_.make(code, Severity::error, std::move(message), pointer, at_key));
   }
 
@@ -77,7 +81,8 @@ class GraphParser {
   }
 
   // Rejects keys outside `allowed`, suggesting the nearest allowed one.
-  void check_keys(const Json& object, const std::string& pointer, const std::vector<std::string>& allowed) {
+  void check_keys(const Json& object, const std::string& pointer,
+                  const std::vector<std::string>& allowed) {
     for (const auto& [key, value] : object.items()) {
       if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
       error(codes::kUnknownKey, "unknown key " + quote_name(key) + did_you_mean(key, allowed),
@@ -111,8 +116,8 @@ class GraphParser {
 
   void parse_version(const Json& root, GraphDesc& graph) {
     if (!root.contains("version")) {
-      error(codes::kVersionMissing, "missing 'version'; this build reads version " +
-                                        std::to_string(kGraphVersion), "");
+      error(codes::kVersionMissing,
+            "missing 'version'; this build reads version " + std::to_string(kGraphVersion), "");
       return;
     }
     const Json& v = root["version"];
@@ -129,22 +134,26 @@ class GraphParser {
       return;
     }
     if (v.get<std::int64_t>() < 1) {
-      error(codes::kVersionUnsupported, "invalid graph version " + v.dump() + "; versions start at 1",
-            "/version");
+      error(codes::kVersionUnsupported,
+            "invalid graph version " + v.dump() + "; versions start at 1", "/version");
       return;
     }
     graph.version = static_cast<int>(v.get<std::int64_t>());
   }
 
   // A positive integer in [lo, hi] or a diagnostic with `what`.
-  bool expect_uint(const Json& value, const std::string& pointer, std::uint64_t lo, std::uint64_t hi,
-                   const char* code, const std::string& what, std::uint64_t& out) {
+  bool expect_uint(const Json& value, const std::string& pointer, std::uint64_t lo,
+                   std::uint64_t hi, const char* code, const std::string& what,
+                   std::uint64_t& out) {
     if (!value.is_number_integer()) {
       wrong_type(value, pointer, "an integer");
       return false;
     }
-    if (!value.is_number_unsigned() || value.get<std::uint64_t>() < lo || value.get<std::uint64_t>() > hi) {
-      error(code, what + " " + value.dump() + " is outside " + std::to_string(lo) + ".." + std::to_string(hi),
+    if (!value.is_number_unsigned() || value.get<std::uint64_t>() < lo ||
+        value.get<std::uint64_t>() > hi) {
+      error(code,
+            what + " " + value.dump() + " is outside " + std::to_string(lo) + ".." +
+                std::to_string(hi),
             pointer);
       return false;
     }
@@ -174,17 +183,19 @@ class GraphParser {
             pointer);
     } else if (value.is_array()) {
       if (value.size() != 2) {
-        error(codes::kBadSize, "an absolute size is [width, height]; found " +
-                                   std::to_string(value.size()) + " elements", pointer);
+        error(codes::kBadSize,
+              "an absolute size is [width, height]; found " + std::to_string(value.size()) +
+                  " elements",
+              pointer);
         return;
       }
       std::uint64_t w = 0;
       std::uint64_t h = 0;
       // Check both, so that a bad width does not hide a bad height.
-      const bool width_ok =
-          expect_uint(value[0], pointer_append(pointer, 0), 1, kMaxExtent, codes::kBadSize, "width", w);
-      const bool height_ok =
-          expect_uint(value[1], pointer_append(pointer, 1), 1, kMaxExtent, codes::kBadSize, "height", h);
+      const bool width_ok = expect_uint(value[0], pointer_append(pointer, 0), 1, kMaxExtent,
+                                        codes::kBadSize, "width", w);
+      const bool height_ok = expect_uint(value[1], pointer_append(pointer, 1), 1, kMaxExtent,
+                                         codes::kBadSize, "height", h);
       if (!width_ok || !height_ok) return;
       size.relative = false;
       size.width = static_cast<std::uint32_t>(w);
@@ -225,8 +236,8 @@ class GraphParser {
                       GraphDesc& graph) {
     if (!is_identifier(name)) {
       error(codes::kInvalidName,
-            "resource name " + quote_name(name) + " is not an identifier ([A-Za-z][A-Za-z0-9_.-]*)", pointer,
-            true);
+            "resource name " + quote_name(name) + " is not an identifier ([A-Za-z][A-Za-z0-9_.-]*)",
+            pointer, true);
     }
     if (!value.is_object()) {
       wrong_type(value, pointer, "an object");
@@ -236,7 +247,8 @@ class GraphParser {
     res.name = name;
     res.pointer = pointer;
     std::string kind;
-    if (!require(value, pointer, "kind") || !expect_string(value["kind"], pointer + "/kind", kind)) {
+    if (!require(value, pointer, "kind") ||
+        !expect_string(value["kind"], pointer + "/kind", kind)) {
       check_keys(value, pointer, {"kind", "format", "size", "layers", "persistent", "description"});
       return;
     }
@@ -250,21 +262,23 @@ class GraphParser {
     } else if (kind == "image") {
       check_keys(value, pointer, {"kind", "format", "size", "layers", "persistent", "description"});
       std::string format;
-      if (require(value, pointer, "format") && expect_string(value["format"], pointer + "/format", format)) {
+      if (require(value, pointer, "format") &&
+          expect_string(value["format"], pointer + "/format", format)) {
         if (auto f = parse_format(format)) {
           res.format = *f;
         } else {
           std::vector<std::string> names;
           for (Format known : all_formats()) names.emplace_back(to_string(known));
-          error(codes::kUnknownFormat, "unknown format " + quote_name(format) + did_you_mean(format, names),
+          error(codes::kUnknownFormat,
+                "unknown format " + quote_name(format) + did_you_mean(format, names),
                 pointer + "/format");
         }
       }
       if (require(value, pointer, "size")) parse_size(value["size"], pointer + "/size", res.size);
       if (value.contains("layers")) {
         std::uint64_t layers = 1;
-        if (expect_uint(value["layers"], pointer + "/layers", 1, kMaxLayers, codes::kBadLayers, "layers",
-                        layers)) {
+        if (expect_uint(value["layers"], pointer + "/layers", 1, kMaxLayers, codes::kBadLayers,
+                        "layers", layers)) {
           res.layers = static_cast<std::uint32_t>(layers);
         }
       }
@@ -275,7 +289,8 @@ class GraphParser {
             pointer + "/kind");
       return;
     }
-    if (value.contains("persistent")) expect_bool(value["persistent"], pointer + "/persistent", res.persistent);
+    if (value.contains("persistent"))
+      expect_bool(value["persistent"], pointer + "/persistent", res.persistent);
     if (value.contains("description")) {
       std::string ignored;
       expect_string(value["description"], pointer + "/description", ignored);
@@ -293,7 +308,8 @@ class GraphParser {
     }
   }
 
-  void parse_ports(const Json& value, const std::string& pointer, std::vector<PortBindingDesc>& out) {
+  void parse_ports(const Json& value, const std::string& pointer,
+                   std::vector<PortBindingDesc>& out) {
     if (!value.is_object()) {
       wrong_type(value, pointer, "an object mapping port names to resource names");
       return;
@@ -309,22 +325,26 @@ class GraphParser {
       wrong_type(value, pointer, "an object");
       return;
     }
-    check_keys(value, pointer,
-               {"name", "type", "description", "params", "in", "out", "after", "sideEffects", "enabled"});
+    check_keys(
+        value, pointer,
+        {"name", "type", "description", "params", "in", "out", "after", "sideEffects", "enabled"});
     PassInstanceDesc pass;
     pass.pointer = pointer;
-    bool ok = require(value, pointer, "name") && expect_string(value["name"], pointer + "/name", pass.name);
+    bool ok = require(value, pointer, "name") &&
+              expect_string(value["name"], pointer + "/name", pass.name);
     if (ok && !is_identifier(pass.name)) {
-      error(codes::kInvalidName,
-            "pass name " + quote_name(pass.name) + " is not an identifier ([A-Za-z][A-Za-z0-9_.-]*)",
-            pointer + "/name");
+      error(
+          codes::kInvalidName,
+          "pass name " + quote_name(pass.name) + " is not an identifier ([A-Za-z][A-Za-z0-9_.-]*)",
+          pointer + "/name");
     } else if (ok && graph.find_pass(pass.name) >= 0) {
-      error(codes::kDuplicatePass, "a pass named " + quote_name(pass.name) + " already exists (" +
-                                       graph.passes[static_cast<std::size_t>(graph.find_pass(pass.name))].pointer +
-                                       ")",
+      error(codes::kDuplicatePass,
+            "a pass named " + quote_name(pass.name) + " already exists (" +
+                graph.passes[static_cast<std::size_t>(graph.find_pass(pass.name))].pointer + ")",
             pointer + "/name");
     }
-    ok = require(value, pointer, "type") && expect_string(value["type"], pointer + "/type", pass.type) && ok;
+    ok = require(value, pointer, "type") &&
+         expect_string(value["type"], pointer + "/type", pass.type) && ok;
     if (value.contains("description")) {
       std::string ignored;
       expect_string(value["description"], pointer + "/description", ignored);
@@ -345,7 +365,8 @@ class GraphParser {
       } else {
         for (std::size_t i = 0; i < after.size(); ++i) {
           std::string name;
-          if (expect_string(after[i], pointer_append(pointer + "/after", i), name)) pass.after.push_back(name);
+          if (expect_string(after[i], pointer_append(pointer + "/after", i), name))
+            pass.after.push_back(name);
         }
       }
     }
@@ -355,7 +376,8 @@ class GraphParser {
         pass.side_effects = side_effects;
       }
     }
-    if (value.contains("enabled")) expect_bool(value["enabled"], pointer + "/enabled", pass.enabled);
+    if (value.contains("enabled"))
+      expect_bool(value["enabled"], pointer + "/enabled", pass.enabled);
     if (ok) graph.passes.push_back(std::move(pass));
   }
 
@@ -365,7 +387,8 @@ class GraphParser {
       return;
     }
     if (value.empty()) error(codes::kNoPasses, "the graph has no passes", "/passes");
-    for (std::size_t i = 0; i < value.size(); ++i) parse_pass(value[i], pointer_append("/passes", i), graph);
+    for (std::size_t i = 0; i < value.size(); ++i)
+      parse_pass(value[i], pointer_append("/passes", i), graph);
   }
 
   const JsonDocument& doc_;
@@ -388,7 +411,9 @@ int GraphDesc::find_pass(std::string_view pass_name) const {
   return -1;
 }
 
-Result<GraphDesc> parse_graph(const JsonDocument& document) { return GraphParser(document).run(); }
+Result<GraphDesc> parse_graph(const JsonDocument& document) {
+  return GraphParser(document).run();
+}
 
 bool is_identifier(std::string_view name) {
   if (name.empty() || !std::isalpha(static_cast<unsigned char>(name[0]))) return false;
@@ -402,7 +427,8 @@ std::string describe_size(const SizeSpec& size) {
   if (size.scale_x == 1.0 && size.scale_y == 1.0) return "viewport";
   if (size.scale_x == size.scale_y) {
     const double inverse = 1.0 / size.scale_x;
-    if (inverse == std::round(inverse)) return "viewport/" + std::to_string(static_cast<int>(inverse));
+    if (inverse == std::round(inverse))
+      return "viewport/" + std::to_string(static_cast<int>(inverse));
   }
   char buf[64];
   std::snprintf(buf, sizeof buf, "viewport*%gx%g", size.scale_x, size.scale_y);

@@ -4,7 +4,7 @@
 #include <map>
 
 #include "antumbra/fg/compiler_phases.hpp"
-#include "antumbra/fg/diagnostic_codes.hpp"
+#include "antumbra/fg/vocabulary.hpp"
 
 namespace antumbra::fg {
 namespace {
@@ -51,24 +51,30 @@ bool check_param(const JsonDocument& doc, const ParamDesc& param, const Json& va
   const std::string who = "parameter " + quote_name(param.name) + " of " + quote_name(type);
   switch (param.type) {
     case ParamType::boolean:
-      if (!value.is_boolean()) return fail(codes::kParamType, who + " expects true or false, found " + json_type_name(value));
+      if (!value.is_boolean())
+        return fail(codes::kParamType,
+                    who + " expects true or false, found " + json_type_name(value));
       return true;
     case ParamType::string:
-      if (!value.is_string()) return fail(codes::kParamType, who + " expects a string, found " + json_type_name(value));
+      if (!value.is_string())
+        return fail(codes::kParamType, who + " expects a string, found " + json_type_name(value));
       return true;
     case ParamType::enumeration: {
-      if (!value.is_string()) return fail(codes::kParamType, who + " expects a string, found " + json_type_name(value));
+      if (!value.is_string())
+        return fail(codes::kParamType, who + " expects a string, found " + json_type_name(value));
       const auto s = value.get<std::string>();
-      if (std::find(param.choices.begin(), param.choices.end(), s) != param.choices.end()) return true;
-      return fail(codes::kParamChoice, who + " cannot be " + quote_name(s) + did_you_mean(s, param.choices) +
+      if (std::find(param.choices.begin(), param.choices.end(), s) != param.choices.end())
+        return true;
+      return fail(codes::kParamChoice, who + " cannot be " + quote_name(s) +
+                                           did_you_mean(s, param.choices) +
                                            " (choices: " + join(param.choices) + ")");
     }
     case ParamType::integer:
     case ParamType::number: {
       const bool integer = param.type == ParamType::integer;
       if (integer ? !value.is_number_integer() : !value.is_number()) {
-        return fail(codes::kParamType,
-                    who + " expects " + (integer ? "an integer" : "a number") + ", found " + json_type_name(value));
+        return fail(codes::kParamType, who + " expects " + (integer ? "an integer" : "a number") +
+                                           ", found " + json_type_name(value));
       }
       const double v = value.get<double>();
       if ((param.min && v < *param.min) || (param.max && v > *param.max)) {
@@ -110,9 +116,10 @@ std::vector<ResolvedPass> resolve_passes(const GraphDesc& graph, const Registry&
     rp.enabled = pass.enabled;
     rp.desc = registry.find(pass.type);
     if (rp.desc == nullptr) {
-      diags.add(doc.make(codes::kUnknownPassType, Severity::error,
-                         "unknown pass type " + quote_name(pass.type) + did_you_mean(pass.type, registry.types()),
-                         pass.pointer + "/type"));
+      diags.add(doc.make(
+          codes::kUnknownPassType, Severity::error,
+          "unknown pass type " + quote_name(pass.type) + did_you_mean(pass.type, registry.types()),
+          pass.pointer + "/type"));
       out.push_back(std::move(rp));
       continue;
     }
@@ -123,16 +130,18 @@ std::vector<ResolvedPass> resolve_passes(const GraphDesc& graph, const Registry&
       const std::string pointer = pointer_append(pass.pointer + "/params", key);
       if (rp.desc->find_param(key) == nullptr) {
         const std::string known = names.empty() ? " (it has none)" : did_you_mean(key, names);
-        diags.add(doc.make(codes::kUnknownParam, Severity::error,
-                           "pass type " + quote_name(pass.type) + " has no parameter " + quote_name(key) + known,
-                           pointer, true));
+        diags.add(doc.make(
+            codes::kUnknownParam, Severity::error,
+            "pass type " + quote_name(pass.type) + " has no parameter " + quote_name(key) + known,
+            pointer, true));
       }
     }
     for (const auto& param : rp.desc->params) {
       const auto it = pass.params.find(param.name);
-      const bool given = it != pass.params.end() &&
-                         check_param(doc, param, *it, pointer_append(pass.pointer + "/params", param.name),
-                                     pass.type, diags);
+      const bool given =
+          it != pass.params.end() &&
+          check_param(doc, param, *it, pointer_append(pass.pointer + "/params", param.name),
+                      pass.type, diags);
       rp.params[param.name] = given ? *it : param.default_value;
     }
     out.push_back(std::move(rp));
@@ -161,23 +170,25 @@ void bind_ports(const GraphDesc& graph, std::vector<ResolvedPass>& passes, Diagn
         if (port == nullptr) {
           const auto same_side = port_names(desc, direction);
           error(codes::kUnknownPort,
-                "pass type " + quote_name(pass.type) + " has no " + (input ? "input" : "output") + " port " +
-                    quote_name(b.port) + did_you_mean(b.port, same_side) +
+                "pass type " + quote_name(pass.type) + " has no " + (input ? "input" : "output") +
+                    " port " + quote_name(b.port) + did_you_mean(b.port, same_side) +
                     (same_side.empty() ? "" : " (ports: " + join(same_side) + ")"),
                 b.pointer, true);
           continue;
         }
         if (port->direction != direction) {
           error(codes::kPortDirection,
-                quote_name(b.port) + " is an " + (input ? "output" : "input") + " port of " + quote_name(pass.type) +
-                    "; list it under \"" + (input ? "out" : "in") + "\"",
+                quote_name(b.port) + " is an " + (input ? "output" : "input") + " port of " +
+                    quote_name(pass.type) + "; list it under \"" + (input ? "out" : "in") + "\"",
                 b.pointer, true);
           continue;
         }
         const int r = graph.find_resource(b.resource);
         if (r < 0) {
           error(codes::kUnknownResource,
-                "unknown resource " + quote_name(b.resource) + did_you_mean(b.resource, resource_names), b.pointer);
+                "unknown resource " + quote_name(b.resource) +
+                    did_you_mean(b.resource, resource_names),
+                b.pointer);
           continue;
         }
         const ResourceDesc& res = graph.resources[static_cast<std::size_t>(r)];
@@ -191,22 +202,25 @@ void bind_ports(const GraphDesc& graph, std::vector<ResolvedPass>& passes, Diagn
         }
         bool ok = true;
         if (res.kind == ResourceKind::image && !port->formats.empty() &&
-            std::find(port->formats.begin(), port->formats.end(), res.format) == port->formats.end()) {
+            std::find(port->formats.begin(), port->formats.end(), res.format) ==
+                port->formats.end()) {
           error(codes::kFormatRejected,
-                "port " + quote_name(port->name) + " of " + quote_name(pass.type) + " does not accept format " +
-                    quote_name(to_string(res.format)) + " of " + quote_name(res.name) + " (accepts " +
-                    format_list(port->formats) + ")",
+                "port " + quote_name(port->name) + " of " + quote_name(pass.type) +
+                    " does not accept format " + quote_name(to_string(res.format)) + " of " +
+                    quote_name(res.name) + " (accepts " + format_list(port->formats) + ")",
                 b.pointer);
           ok = false;
         }
         if (res.kind == ResourceKind::image &&
-            (res.layers < port->min_layers || (port->max_layers != 0 && res.layers > port->max_layers))) {
-          error(codes::kLayersRejected,
-                "port " + quote_name(port->name) + " of " + quote_name(pass.type) + " takes " +
-                    std::to_string(port->min_layers) + ".." +
-                    (port->max_layers == 0 ? std::string("any") : std::to_string(port->max_layers)) +
-                    " layers, but " + quote_name(res.name) + " has " + std::to_string(res.layers),
-                b.pointer);
+            (res.layers < port->min_layers ||
+             (port->max_layers != 0 && res.layers > port->max_layers))) {
+          error(
+              codes::kLayersRejected,
+              "port " + quote_name(port->name) + " of " + quote_name(pass.type) + " takes " +
+                  std::to_string(port->min_layers) + ".." +
+                  (port->max_layers == 0 ? std::string("any") : std::to_string(port->max_layers)) +
+                  " layers, but " + quote_name(res.name) + " has " + std::to_string(res.layers),
+              b.pointer);
           ok = false;
         }
         if (ok) target.push_back(BoundPort{port, r, b.pointer});
@@ -221,30 +235,33 @@ void bind_ports(const GraphDesc& graph, std::vector<ResolvedPass>& passes, Diagn
     for (const PortDesc& port : desc.ports) {
       const bool input = port.direction == PortDirection::input;
       const auto& list = input ? pass.inputs : pass.outputs;
-      const bool named = std::any_of(list.begin(), list.end(), [&](const auto& b) { return b.port == port.name; });
+      const bool named =
+          std::any_of(list.begin(), list.end(), [&](const auto& b) { return b.port == port.name; });
       if (port.optional || named) continue;
       error(codes::kPortUnbound,
-            "pass " + quote_name(pass.name) + " (" + pass.type + ") leaves required " + (input ? "input" : "output") +
-                " port " + quote_name(port.name) + " unbound",
+            "pass " + quote_name(pass.name) + " (" + pass.type + ") leaves required " +
+                (input ? "input" : "output") + " port " + quote_name(port.name) + " unbound",
             pass.pointer + (input ? "/in" : "/out"));
     }
     // A pass must not write one resource twice, nor read what it writes.
     for (std::size_t w = 0; w < rp.writes.size(); ++w) {
-      const std::string& name = graph.resources[static_cast<std::size_t>(rp.writes[w].resource)].name;
+      const std::string& name =
+          graph.resources[static_cast<std::size_t>(rp.writes[w].resource)].name;
       for (std::size_t v = 0; v < w; ++v) {
         if (rp.writes[v].resource == rp.writes[w].resource) {
           error(codes::kDoubleWrite,
                 "pass " + quote_name(pass.name) + " writes " + quote_name(name) + " through both " +
-                    quote_name(rp.writes[v].port->name) + " and " + quote_name(rp.writes[w].port->name),
+                    quote_name(rp.writes[v].port->name) + " and " +
+                    quote_name(rp.writes[w].port->name),
                 rp.writes[w].pointer);
         }
       }
       for (const BoundPort& read : rp.reads) {
         if (read.resource == rp.writes[w].resource) {
           error(codes::kReadWriteSamePass,
-                "pass " + quote_name(pass.name) + " reads " + quote_name(name) + " through " + quote_name(read.port->name) +
-                    " and writes it through " + quote_name(rp.writes[w].port->name) +
-                    "; use a second resource (ping-pong)",
+                "pass " + quote_name(pass.name) + " reads " + quote_name(name) + " through " +
+                    quote_name(read.port->name) + " and writes it through " +
+                    quote_name(rp.writes[w].port->name) + "; use a second resource (ping-pong)",
                 rp.writes[w].pointer);
         }
       }
@@ -260,9 +277,9 @@ void bind_ports(const GraphDesc& graph, std::vector<ResolvedPass>& passes, Diagn
         const ResourceDesc& res = graph.resources[static_cast<std::size_t>(b.resource)];
         if (!(first.size == res.size)) {
           error(codes::kSizeMismatch,
-                "attachments of size group " + quote_name(b.port->size_group) + " differ: " + quote_name(res.name) +
-                    " is " + describe_size(res.size) + " but " + quote_name(first.name) + " is " +
-                    describe_size(first.size),
+                "attachments of size group " + quote_name(b.port->size_group) +
+                    " differ: " + quote_name(res.name) + " is " + describe_size(res.size) +
+                    " but " + quote_name(first.name) + " is " + describe_size(first.size),
                 b.pointer);
         }
       }

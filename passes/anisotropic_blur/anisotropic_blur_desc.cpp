@@ -2,7 +2,7 @@
 #include "common/layer_checks.hpp"
 #include "common/lighting_reflection.hpp"
 
-#include "antumbra/fg/diagnostic_codes.hpp"
+#include "antumbra/base/diagnostic_codes.hpp"
 
 namespace antumbra::passes {
 namespace {
@@ -16,13 +16,13 @@ int bound(const fg::PlanPass& pass, std::string_view port) {
 
 // Exactly one source, and the output holds as many layers as the penumbra it follows.
 void check(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& graph,
-           fg::Diagnostics& diagnostics) {
+           base::Diagnostics& diagnostics) {
   const auto& source_desc = graph.passes[static_cast<std::size_t>(pass.source_index)];
   const int inputs = (bound(pass, "hardShadow") >= 0 ? 1 : 0) + (bound(pass, "esm") >= 0 ? 1 : 0) +
                      (bound(pass, "source") >= 0 ? 1 : 0);
   if (inputs != 1) {
     diagnostics.add(graph.document.make(
-        fg::codes::kPortUnbound, fg::Severity::error,
+        codes::graph::kPortUnbound, base::Severity::error,
         "pass '" + pass.name +
             "' needs exactly one of the inputs 'hardShadow' or 'esm' (first direction) or "
             "'source' (second direction)",
@@ -34,7 +34,7 @@ void check(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& 
       plan.resources[static_cast<std::size_t>(shadow)].layers <
           plan.resources[static_cast<std::size_t>(penumbra)].layers) {
     diagnostics.add(graph.document.make(
-        fg::codes::kLayerStorageMismatch, fg::Severity::error,
+        codes::graph::kLayerStorageMismatch, base::Severity::error,
         "'" + plan.resources[static_cast<std::size_t>(shadow)].name +
             "' has fewer array layers than the penumbra image '" +
             plan.resources[static_cast<std::size_t>(penumbra)].name + "' it blurs",
@@ -81,45 +81,58 @@ fg::PassDesc AnisotropicBlurPass::describe() {
        .max_layers = 8,
        .description = "Blurred visibility, 4 layers per texel."},
   };
-  desc.params = {
-      {.name = "direction",
-       .type = fg::ParamType::enumeration,
-       .default_value = "horizontal",
-       .choices = {"horizontal", "vertical"},
-       .description = "Blur direction."},
-      {.name = "kernel",
-       .type = fg::ParamType::enumeration,
-       .default_value = "11",
-       .choices = {"5", "11", "23"},
-       .description = "Taps across the kernel (5 cheap, 11 default, 23 huge)."},
-      {.name = "depthThreshold",
-       .type = fg::ParamType::number,
-       .default_value = 0.03,
-       .min = 0.0,
-       .max = 1.0,
-       .description =
-           "Relative depth difference that rejects a tap (stops bleeding across edges)."},
-      {.name = "normalThreshold",
-       .type = fg::ParamType::number,
-       .default_value = 0.8,
-       .min = -1.0,
-       .max = 1.0,
-       .description = "Taps whose normal's cosine to the centre's is below this are rejected: "
-                      "a face seen edge-on (a column's side, a slab's front) keeps its own "
-                      "shadow instead of its neighbours' at the same depth. -1 turns it off."},
-      {.name = "maxRadius",
-       .type = fg::ParamType::number,
-       .default_value = 24.0,
-       .min = 1.0,
-       .max = 128.0,
-       .description = "Largest kernel radius in output pixels."},
-      {.name = "rotated",
-       .type = fg::ParamType::boolean,
-       .default_value = false,
-       .description = "Rotate the direction by 26.6 degrees (against banding on vertical walls)."},
-  };
+  desc.params = param_table().descs();
   desc.check = &check;
   return desc;
+}
+
+const fg::ParamTable<AnisotropicBlurParams>& AnisotropicBlurPass::param_table() {
+  static const auto table =
+      fg::ParamTable<AnisotropicBlurParams>()
+          .choice({.name = "direction",
+                   .type = fg::ParamType::enumeration,
+                   .default_value = "horizontal",
+                   .choices = {"horizontal", "vertical"},
+                   .description = "Blur direction."},
+                  &AnisotropicBlurParams::vertical, {false, true})
+          .choice({.name = "kernel",
+                   .type = fg::ParamType::enumeration,
+                   .default_value = "11",
+                   .choices = {"5", "11", "23"},
+                   .description = "Taps across the kernel (5 cheap, 11 default, 23 huge)."},
+                  &AnisotropicBlurParams::kernel, {5u, 11u, 23u})
+          .add({.name = "depthThreshold",
+                .type = fg::ParamType::number,
+                .default_value = 0.03,
+                .min = 0.0,
+                .max = 1.0,
+                .description =
+                    "Relative depth difference that rejects a tap (stops bleeding across edges)."},
+               &AnisotropicBlurParams::depth_threshold)
+          .add({.name = "normalThreshold",
+                .type = fg::ParamType::number,
+                .default_value = 0.8,
+                .min = -1.0,
+                .max = 1.0,
+                .description =
+                    "Taps whose normal's cosine to the centre's is below this are rejected: "
+                    "a face seen edge-on (a column's side, a slab's front) keeps its own "
+                    "shadow instead of its neighbours' at the same depth. -1 turns it off."},
+               &AnisotropicBlurParams::normal_threshold)
+          .add({.name = "maxRadius",
+                .type = fg::ParamType::number,
+                .default_value = 24.0,
+                .min = 1.0,
+                .max = 128.0,
+                .description = "Largest kernel radius in output pixels."},
+               &AnisotropicBlurParams::max_radius)
+          .add({.name = "rotated",
+                .type = fg::ParamType::boolean,
+                .default_value = false,
+                .description =
+                    "Rotate the direction by 26.6 degrees (against banding on vertical walls)."},
+               &AnisotropicBlurParams::rotated);
+  return table;
 }
 
 }  // namespace antumbra::passes

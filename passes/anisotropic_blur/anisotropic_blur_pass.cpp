@@ -25,7 +25,8 @@ constexpr VkShaderStageFlags kCompute = VK_SHADER_STAGE_COMPUTE_BIT;
 
 }  // namespace
 
-AnisotropicBlurPass::AnisotropicBlurPass(const fg::PlanPass& /*pass*/) {
+AnisotropicBlurPass::AnisotropicBlurPass(const fg::PlanPass& pass)
+    : params_(param_table().read(pass.params)) {
 }
 
 void AnisotropicBlurPass::prepare(fgvk::PrepareContext& context) {
@@ -68,10 +69,10 @@ void AnisotropicBlurPass::execute(fgvk::ExecuteContext& context) {
       .storage_image(5, shadow.array_view, shadow.layout)
       .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, compute_.layout);
 
-  const bool vertical = param_string(context.pass, "direction") == "vertical";
+  const bool vertical = params_.vertical;
   float dx = vertical ? 0.0f : 1.0f;
   float dy = vertical ? 1.0f : 0.0f;
-  if (param_bool(context.pass, "rotated")) {
+  if (params_.rotated) {
     // atan(1/2) = 26.565 degrees: taps no longer line up with wall edges.
     const float angle = std::atan(0.5f);
     const float rx = dx * std::cos(angle) - dy * std::sin(angle);
@@ -79,14 +80,9 @@ void AnisotropicBlurPass::execute(fgvk::ExecuteContext& context) {
     dx = rx;
     dy = ry;
   }
-  const auto kernel = static_cast<std::uint32_t>(std::stoi(param_string(context.pass, "kernel")));
-  const PushConstants constants{{dx, dy},
-                                param_float(context.pass, "depthThreshold"),
-                                param_float(context.pass, "maxRadius"),
-                                (kernel - 1) / 2,
-                                shadow.layers,
-                                penumbra.layers * 4,
-                                param_float(context.pass, "normalThreshold")};
+  const PushConstants constants{
+      {dx, dy},      params_.depth_threshold, params_.max_radius,      (params_.kernel - 1) / 2,
+      shadow.layers, penumbra.layers * 4,     params_.normal_threshold};
   vkCmdPushConstants(cmd, compute_.layout, kCompute, 0, sizeof constants, &constants);
   vkCmdDispatch(cmd, (shadow.extent.width + 7) / 8, (shadow.extent.height + 7) / 8, 1);
 }

@@ -1,6 +1,7 @@
 #include "layer_checks.hpp"
 
-#include "antumbra/fg/diagnostic_codes.hpp"
+#include "antumbra/base/diagnostic_codes.hpp"
+#include "light_layering/core/layer_cap.hpp"
 #include "plan_checks.hpp"
 
 namespace antumbra::passes {
@@ -10,11 +11,10 @@ LayerCap find_layer_cap(const fg::PlanPass& pass, const fg::Plan& plan,
   const int table = bound_index(pass, layer_port);
   if (table < 0) return {};
   for (const auto& other : plan.passes) {
-    if (other.type != "light-layering") continue;
+    if (other.type != layering::kLayeringPassType) continue;
     for (const auto& b : other.bindings) {
       if (b.resource == table && fg::is_write(b.access)) {
-        const auto it = other.params.find("maxLayers");
-        return {it != other.params.end() && it->is_number_integer() ? it->get<int>() : 0,
+        return {base::read_param(other.params, layering::kLayerCap).value_or(0),
                 other.source_index};
       }
     }
@@ -23,19 +23,22 @@ LayerCap find_layer_cap(const fg::PlanPass& pass, const fg::Plan& plan,
 }
 
 void check_layer_storage(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& graph,
-                         const LayerCap& cap, std::string_view port, fg::Diagnostics& diagnostics) {
+                         const LayerCap& cap, std::string_view port,
+                         base::Diagnostics& diagnostics) {
   const int image = bound_index(pass, port);
   if (cap.source_index < 0 || image < 0) return;
   const auto& resource = plan.resources[static_cast<std::size_t>(image)];
   const int capacity = static_cast<int>(resource.layers) * 4;
   if (cap.max_layers <= capacity) return;
-  const std::string pointer = "/passes/" + std::to_string(cap.source_index) + "/params/maxLayers";
+  const std::string pointer = "/passes/" + std::to_string(cap.source_index) + "/params/" +
+                              std::string(layering::kLayerCap.name);
   diagnostics.add(graph.document.make(
-      fg::codes::kLayerCapExceedsStorage, fg::Severity::error,
-      "the layer cap maxLayers = " + std::to_string(cap.max_layers) + " needs " +
-          std::to_string((cap.max_layers + 3) / 4) + " array layer(s) in '" + resource.name +
-          "' (port " + std::string(port) + " of pass '" + pass.name + "'), which has " +
-          std::to_string(resource.layers) + " (4 shadow layers each)",
+      codes::graph::kLayerCapExceedsStorage, base::Severity::error,
+      "the layer cap " + std::string(layering::kLayerCap.name) + " = " +
+          std::to_string(cap.max_layers) + " needs " + std::to_string((cap.max_layers + 3) / 4) +
+          " array layer(s) in '" + resource.name + "' (port " + std::string(port) + " of pass '" +
+          pass.name + "'), which has " + std::to_string(resource.layers) +
+          " (4 shadow layers each)",
       pointer));
 }
 

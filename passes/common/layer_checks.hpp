@@ -21,6 +21,7 @@ LayerCap find_layer_cap(const fg::PlanPass& pass, const fg::Plan& plan,
 
 // Adds FG090 when `cap` needs more than 4 * layers of the image bound to `port`.
 void check_layer_storage(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& graph,
-                         const LayerCap& cap, std::string_view port, fg::Diagnostics& diagnostics);
+                         const LayerCap& cap, std::string_view port,
+                         base::Diagnostics& diagnostics);
 
 }  // namespace antumbra::passes

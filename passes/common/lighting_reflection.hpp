@@ -1,12 +1,12 @@
 #pragma once
 // Reflection shared by every compute lighting pass (tiled-lighting and its shadow
-// baselines, shadow-reference): the same G-buffer inputs, HDR output and lighting
-// parameters, so the variants stay comparable and a graph can swap one for another.
+// baselines, shadow-reference, deferred-lighting): the same G-buffer inputs, HDR output and
+// lighting parameters, so the variants stay comparable and a graph can swap one for another.
 
 #include <string>
 #include <vector>
 
-#include "antumbra/fg/reflection.hpp"
+#include "antumbra/fg/param_table.hpp"
 
 namespace antumbra::passes {
 
@@ -25,7 +25,12 @@ fg::PortDesc compute_buffer_input(std::string name, std::string description);
 
 // depth, normal, albedo sampled in compute; hdr written as a storage image.
 std::vector<fg::PortDesc> lighting_ports();
-// exposure, ambient, specular, with deferred-lighting's ranges and defaults.
-std::vector<fg::ParamDesc> lighting_params();
+// exposure, ambient, specular: the lighting terms every lighting pass shares.
+struct LightingParams {
+  float exposure = 1.0f;
+  float ambient = 1.0f;
+  float specular = 0.25f;
+};
+const fg::ParamTable<LightingParams>& lighting_param_table();
 
 }  // namespace antumbra::passes

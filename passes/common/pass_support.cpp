@@ -46,21 +46,6 @@ ComputePipeline build_compute_pipeline(fgvk::PrepareContext& context, VkShaderMo
   return out;
 }
 
-float param_float(const fg::PlanPass& pass, std::string_view name) {
-  const auto it = pass.params.find(name);
-  return it != pass.params.end() && it->is_number() ? it->get<float>() : 0.0f;
-}
-
-bool param_bool(const fg::PlanPass& pass, std::string_view name) {
-  const auto it = pass.params.find(name);
-  return it != pass.params.end() && it->is_boolean() && it->get<bool>();
-}
-
-std::string param_string(const fg::PlanPass& pass, std::string_view name) {
-  const auto it = pass.params.find(name);
-  return it != pass.params.end() && it->is_string() ? it->get<std::string>() : std::string();
-}
-
 void set_viewport(VkCommandBuffer cmd, VkExtent2D extent) {
   const VkViewport viewport{
       0.0f, 0.0f, static_cast<float>(extent.width), static_cast<float>(extent.height), 0.0f, 1.0f};

@@ -32,11 +32,6 @@ ComputePipeline build_compute_pipeline(fgvk::PrepareContext& context, VkShaderMo
                                        const gpu::DescriptorSetLayoutBuilder& bindings,
                                        std::uint32_t push_constant_bytes);
 
-// A parameter of the pass as a number (defaults are filled in by the compiler).
-float param_float(const fg::PlanPass& pass, std::string_view name);
-bool param_bool(const fg::PlanPass& pass, std::string_view name);
-std::string param_string(const fg::PlanPass& pass, std::string_view name);
-
 // Sets a full-image viewport and scissor.
 void set_viewport(VkCommandBuffer cmd, VkExtent2D extent);
 

@@ -17,7 +17,7 @@ const fg::PlanResource* bound_resource(const fg::PlanPass& pass, const fg::Plan&
 
 void add_pass_error(const fg::GraphDesc& graph, const fg::PlanPass& pass, const char* code,
                     const std::string& message, const std::string& suffix,
-                    fg::Diagnostics& diagnostics) {
+                    base::Diagnostics& diagnostics) {
   // A suffix into a part of the pass the file does not spell out (an omitted "in" entry)
   // has no position of its own: the pass's position is the nearest.
   std::string pointer = "/passes/" + std::to_string(pass.source_index);
@@ -25,7 +25,7 @@ void add_pass_error(const fg::GraphDesc& graph, const fg::PlanPass& pass, const 
     const nlohmann::json::json_pointer at(pointer + suffix);
     if (graph.document.root().contains(at)) pointer += suffix;
   }
-  diagnostics.add(graph.document.make(code, fg::Severity::error,
+  diagnostics.add(graph.document.make(code, base::Severity::error,
                                       "pass '" + pass.name + "' (" + pass.type + "): " + message,
                                       pointer));
 }

@@ -23,6 +23,6 @@ const fg::PlanResource* bound_resource(const fg::PlanPass& pass, const fg::Plan&
 // "/params/shadows", "/in/layerTable"), prefixed with the pass's name and type.
 void add_pass_error(const fg::GraphDesc& graph, const fg::PlanPass& pass, const char* code,
                     const std::string& message, const std::string& suffix,
-                    fg::Diagnostics& diagnostics);
+                    base::Diagnostics& diagnostics);
 
 }  // namespace antumbra::passes

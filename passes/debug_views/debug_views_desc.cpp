@@ -37,32 +37,7 @@ fg::PassDesc LayerViewPass::describe() {
       view_port("Layer colours over the dimmed surface (same size as depth)."),
   };
   desc.ports.back().size_group = "screen";
-  desc.params = {
-      {.name = "weighting",
-       .type = fg::ParamType::enumeration,
-       .default_value = "attenuation",
-       .choices = {"attenuation", "dominant"},
-       .description = "Mix the colours of every light reaching a pixel by attenuation, or show "
-                      "the strongest light's layer colour flat (exact palette colours)."},
-      {.name = "dim",
-       .type = fg::ParamType::number,
-       .default_value = 0.35,
-       .min = 0.0,
-       .max = 1.0,
-       .description = "Brightness of the grey-scale surface outside every light's sphere."},
-      {.name = "stripeWidth",
-       .type = fg::ParamType::number,
-       .default_value = 4.0,
-       .min = 1.0,
-       .max = 64.0,
-       .description = "Width in pixels of the red/white stripes that mark a shared layer."},
-      {.name = "noLayerGrey",
-       .type = fg::ParamType::number,
-       .default_value = 0.5,
-       .min = 0.0,
-       .max = 1.0,
-       .description = "Grey level of lights without a layer (no shadow, or over the cap)."},
-  };
+  desc.params = param_table().descs();
   return desc;
 }
 
@@ -77,14 +52,7 @@ fg::PassDesc PenumbraViewPass::describe() {
                           "Penumbra widths from layered-penumbra (4 layers per texel)."),
       view_port("False-colour widths (nearest-scaled to its own size)."),
   };
-  desc.params = {
-      {.name = "maxWidth",
-       .type = fg::ParamType::number,
-       .default_value = 0.25,
-       .min = 0.001,
-       .max = 100.0,
-       .description = "Penumbra width (world units) shown at the top of the ramp."},
-  };
+  desc.params = param_table().descs();
   return desc;
 }
 
@@ -105,27 +73,85 @@ fg::PassDesc AtlasViewPass::describe() {
        .description = "Face -> light and each light's near/far, for linear depth."},
       view_port("The grid of faces."),
   };
-  desc.params = {
-      {.name = "firstFace",
-       .type = fg::ParamType::integer,
-       .default_value = 0,
-       .min = 0.0,
-       .max = 4095.0,
-       .description = "Atlas layer shown in the first cell."},
-      {.name = "faces",
-       .type = fg::ParamType::integer,
-       .default_value = 24,
-       .min = 1.0,
-       .max = 1024.0,
-       .description = "Number of faces shown (clamped to the atlas)."},
-      {.name = "columns",
-       .type = fg::ParamType::integer,
-       .default_value = 0,
-       .min = 0.0,
-       .max = 64.0,
-       .description = "Grid columns; 0 picks the count that gives the largest cells."},
-  };
+  desc.params = param_table().descs();
   return desc;
+}
+
+const fg::ParamTable<LayerViewParams>& LayerViewPass::param_table() {
+  static const auto table =
+      fg::ParamTable<LayerViewParams>()
+          .choice({.name = "weighting",
+                   .type = fg::ParamType::enumeration,
+                   .default_value = "attenuation",
+                   .choices = {"attenuation", "dominant"},
+                   .description =
+                       "Mix the colours of every light reaching a pixel by attenuation, or show "
+                       "the strongest light's layer colour flat (exact palette colours)."},
+                  &LayerViewParams::dominant, {false, true})
+          .add(
+              {.name = "dim",
+               .type = fg::ParamType::number,
+               .default_value = 0.35,
+               .min = 0.0,
+               .max = 1.0,
+               .description = "Brightness of the grey-scale surface outside every light's sphere."},
+              &LayerViewParams::dim)
+          .add(
+              {.name = "stripeWidth",
+               .type = fg::ParamType::number,
+               .default_value = 4.0,
+               .min = 1.0,
+               .max = 64.0,
+               .description = "Width in pixels of the red/white stripes that mark a shared layer."},
+              &LayerViewParams::stripe_width)
+          .add(
+              {.name = "noLayerGrey",
+               .type = fg::ParamType::number,
+               .default_value = 0.5,
+               .min = 0.0,
+               .max = 1.0,
+               .description = "Grey level of lights without a layer (no shadow, or over the cap)."},
+              &LayerViewParams::no_layer_grey);
+  return table;
+}
+
+const fg::ParamTable<PenumbraViewParams>& PenumbraViewPass::param_table() {
+  static const auto table = fg::ParamTable<PenumbraViewParams>().add(
+      {.name = "maxWidth",
+       .type = fg::ParamType::number,
+       .default_value = 0.25,
+       .min = 0.001,
+       .max = 100.0,
+       .description = "Penumbra width (world units) shown at the top of the ramp."},
+      &PenumbraViewParams::max_width);
+  return table;
+}
+
+const fg::ParamTable<AtlasViewParams>& AtlasViewPass::param_table() {
+  static const auto table =
+      fg::ParamTable<AtlasViewParams>()
+          .add({.name = "firstFace",
+                .type = fg::ParamType::integer,
+                .default_value = 0,
+                .min = 0.0,
+                .max = 4095.0,
+                .description = "Atlas layer shown in the first cell."},
+               &AtlasViewParams::first_face)
+          .add({.name = "faces",
+                .type = fg::ParamType::integer,
+                .default_value = 24,
+                .min = 1.0,
+                .max = 1024.0,
+                .description = "Number of faces shown (clamped to the atlas)."},
+               &AtlasViewParams::faces)
+          .add({.name = "columns",
+                .type = fg::ParamType::integer,
+                .default_value = 0,
+                .min = 0.0,
+                .max = 64.0,
+                .description = "Grid columns; 0 picks the count that gives the largest cells."},
+               &AtlasViewParams::columns);
+  return table;
 }
 
 }  // namespace antumbra::passes

@@ -85,10 +85,8 @@ void LayerViewPass::execute(fgvk::ExecuteContext& context) {
       .combined_image_sampler(4, normal.view, nearest, normal.layout)
       .storage_image(5, view.view, view.layout)
       .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, compute_.layout);
-  const LayerViewConstants constants{
-      param_string(context.pass, "weighting") == "dominant" ? 1u : 0u,
-      param_float(context.pass, "dim"), param_float(context.pass, "stripeWidth"),
-      param_float(context.pass, "noLayerGrey")};
+  const LayerViewConstants constants{params_.dominant ? 1u : 0u, params_.dim, params_.stripe_width,
+                                     params_.no_layer_grey};
   vkCmdPushConstants(cmd, compute_.layout, kCompute, 0, sizeof constants, &constants);
   // 16x16 groups: the shader culls lights per tile against the tile's depth bounds.
   vkCmdDispatch(cmd, groups(view.extent.width, 16), groups(view.extent.height, 16), 1);
@@ -111,7 +109,7 @@ void PenumbraViewPass::execute(fgvk::ExecuteContext& context) {
                               penumbra.layout)
       .storage_image(1, view.view, view.layout)
       .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, compute_.layout);
-  const PenumbraViewConstants constants{param_float(context.pass, "maxWidth"), penumbra.layers};
+  const PenumbraViewConstants constants{params_.max_width, penumbra.layers};
   vkCmdPushConstants(cmd, compute_.layout, kCompute, 0, sizeof constants, &constants);
   vkCmdDispatch(cmd, groups(view.extent.width, 8), groups(view.extent.height, 8), 1);
 }
@@ -132,14 +130,12 @@ void AtlasViewPass::execute(fgvk::ExecuteContext& context) {
   const auto& b = context.bindings;
   const auto& atlas = b.required_image("atlas");
   const auto& view = b.required_image("view");
-  const auto first = static_cast<std::uint32_t>(param_float(context.pass, "firstFace"));
+  const auto first = params_.first_face;
   const std::uint32_t available = atlas.layers > first ? atlas.layers - first : 1u;
-  const std::uint32_t faces =
-      std::min(static_cast<std::uint32_t>(param_float(context.pass, "faces")), available);
+  const std::uint32_t faces = std::min(params_.faces, available);
   std::uint32_t columns = 1;
   std::uint32_t cell = 1;
-  grid_layout(view.extent, faces, static_cast<std::uint32_t>(param_float(context.pass, "columns")),
-              columns, cell);
+  grid_layout(view.extent, faces, params_.columns, columns, cell);
 
   const VkCommandBuffer cmd = context.cmd;
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, compute_.pipeline);

@@ -6,53 +6,77 @@
 // writes one rgba8 storage image, so a graph declares them without side effects and
 // the compiler culls them unless their image is the output.
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
-#include "antumbra/fg/reflection.hpp"
+#include "antumbra/fg/param_table.hpp"
 #include "antumbra/fgvk/pass.hpp"
 #include "common/pass_support.hpp"
 
 namespace antumbra::passes {
 
+struct LayerViewParams {
+  bool dominant = false;  // weighting: attenuation or dominant
+  float dim = 0.35f;
+  float stripe_width = 4.0f;
+  float no_layer_grey = 0.5f;
+};
+
 class LayerViewPass final : public fgvk::Pass {
  public:
   static fg::PassDesc describe();
-  explicit LayerViewPass(const fg::PlanPass& /*pass*/) {}
+  static const fg::ParamTable<LayerViewParams>& param_table();
+  explicit LayerViewPass(const fg::PlanPass& pass) : params_(param_table().read(pass.params)) {}
 
   void prepare(fgvk::PrepareContext& context) override;
   void execute(fgvk::ExecuteContext& context) override;
   [[nodiscard]] std::vector<std::string> shader_files() const override { return shader_files_; }
 
  private:
+  LayerViewParams params_;
   ComputePipeline compute_;
   std::vector<std::string> shader_files_;
+};
+
+struct PenumbraViewParams {
+  float max_width = 0.25f;
 };
 
 class PenumbraViewPass final : public fgvk::Pass {
  public:
   static fg::PassDesc describe();
-  explicit PenumbraViewPass(const fg::PlanPass& /*pass*/) {}
+  static const fg::ParamTable<PenumbraViewParams>& param_table();
+  explicit PenumbraViewPass(const fg::PlanPass& pass) : params_(param_table().read(pass.params)) {}
 
   void prepare(fgvk::PrepareContext& context) override;
   void execute(fgvk::ExecuteContext& context) override;
   [[nodiscard]] std::vector<std::string> shader_files() const override { return shader_files_; }
 
  private:
+  PenumbraViewParams params_;
   ComputePipeline compute_;
   std::vector<std::string> shader_files_;
+};
+
+struct AtlasViewParams {
+  std::uint32_t first_face = 0;
+  std::uint32_t faces = 24;
+  std::uint32_t columns = 0;  // 0: chosen from the view's aspect
 };
 
 class AtlasViewPass final : public fgvk::Pass {
  public:
   static fg::PassDesc describe();
-  explicit AtlasViewPass(const fg::PlanPass& /*pass*/) {}
+  static const fg::ParamTable<AtlasViewParams>& param_table();
+  explicit AtlasViewPass(const fg::PlanPass& pass) : params_(param_table().read(pass.params)) {}
 
   void prepare(fgvk::PrepareContext& context) override;
   void execute(fgvk::ExecuteContext& context) override;
   [[nodiscard]] std::vector<std::string> shader_files() const override { return shader_files_; }
 
  private:
+  AtlasViewParams params_;
   bool linearise_ = false;
   ComputePipeline compute_;
   std::vector<std::string> shader_files_;

@@ -1,5 +1,7 @@
 #include "deferred_lighting_pass.hpp"
 
+#include "common/lighting_reflection.hpp"
+
 namespace antumbra::passes {
 
 fg::PassDesc DeferredLightingPass::describe() {
@@ -12,27 +14,33 @@ fg::PassDesc DeferredLightingPass::describe() {
   desc.description =
       "Shades every scene point light over the G-buffer (untiled, no shadows) into an HDR image.";
   desc.ports = {
-      {.name = "depth", .access = Access::sampled, .stage = Stage::fragment,
-       .formats = {Format::d32f, Format::d16, Format::d24s8}, .size_group = "screen",
+      {.name = "depth",
+       .access = Access::sampled,
+       .stage = Stage::fragment,
+       .formats = {Format::d32f, Format::d16, Format::d24s8},
+       .size_group = "screen",
        .description = "G-buffer depth."},
-      {.name = "normal", .access = Access::sampled, .stage = Stage::fragment,
-       .formats = {Format::rgba16f, Format::rgba32f}, .size_group = "screen",
+      {.name = "normal",
+       .access = Access::sampled,
+       .stage = Stage::fragment,
+       .formats = {Format::rgba16f, Format::rgba32f},
+       .size_group = "screen",
        .description = "G-buffer view-space normal and roughness."},
-      {.name = "albedo", .access = Access::sampled, .stage = Stage::fragment,
-       .formats = {Format::rgba8, Format::rgba16f}, .size_group = "screen",
+      {.name = "albedo",
+       .access = Access::sampled,
+       .stage = Stage::fragment,
+       .formats = {Format::rgba8, Format::rgba16f},
+       .size_group = "screen",
        .description = "G-buffer albedo and metallic."},
-      {.name = "hdr", .direction = PortDirection::output, .access = Access::color_attachment,
-       .stage = Stage::fragment, .formats = {Format::rgba16f, Format::rgba32f, Format::r11g11b10f},
-       .size_group = "screen", .description = "Linear HDR radiance."},
+      {.name = "hdr",
+       .direction = PortDirection::output,
+       .access = Access::color_attachment,
+       .stage = Stage::fragment,
+       .formats = {Format::rgba16f, Format::rgba32f, Format::r11g11b10f},
+       .size_group = "screen",
+       .description = "Linear HDR radiance."},
   };
-  desc.params = {
-      {.name = "exposure", .type = fg::ParamType::number, .default_value = 1.0, .min = 0.0,
-       .max = 16.0, .description = "Scale applied to the shaded radiance."},
-      {.name = "ambient", .type = fg::ParamType::number, .default_value = 1.0, .min = 0.0,
-       .max = 16.0, .description = "Scale of the scene's ambient term."},
-      {.name = "specular", .type = fg::ParamType::number, .default_value = 0.25, .min = 0.0,
-       .max = 4.0, .description = "Strength of the Blinn-Phong specular lobe."},
-  };
+  desc.params = lighting_param_table().descs();
   return desc;
 }
 

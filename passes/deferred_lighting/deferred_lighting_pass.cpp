@@ -19,7 +19,9 @@ struct PushConstants {
 
 }  // namespace
 
-DeferredLightingPass::DeferredLightingPass(const fg::PlanPass& /*pass*/) {}
+DeferredLightingPass::DeferredLightingPass(const fg::PlanPass& pass)
+    : params_(lighting_param_table().read(pass.params)) {
+}
 
 void DeferredLightingPass::prepare(fgvk::PrepareContext& context) {
   constexpr VkShaderStageFlags kFrag = VK_SHADER_STAGE_FRAGMENT_BIT;
@@ -33,8 +35,9 @@ void DeferredLightingPass::prepare(fgvk::PrepareContext& context) {
   const std::array<VkDescriptorSetLayout, 1> sets{set_layout_};
   const std::array<VkPushConstantRange, 1> push{{{kFrag, 0, sizeof(PushConstants)}}};
   layout_ = gpu::create_pipeline_layout(context.gpu, sets, push, context.pass.name + ".layout");
-  pipeline_ = build_fullscreen_pipeline(context, "deferred_lighting/deferred_lighting.frag", layout_,
-                                        context.bindings.required_image("hdr").format, shader_files_);
+  pipeline_ =
+      build_fullscreen_pipeline(context, "deferred_lighting/deferred_lighting.frag", layout_,
+                                context.bindings.required_image("hdr").format, shader_files_);
 }
 
 void DeferredLightingPass::execute(fgvk::ExecuteContext& context) {
@@ -55,9 +58,7 @@ void DeferredLightingPass::execute(fgvk::ExecuteContext& context) {
       .combined_image_sampler(3, normal.view, nearest, normal.layout)
       .combined_image_sampler(4, albedo.view, nearest, albedo.layout)
       .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_);
-  const PushConstants constants{param_float(context.pass, "exposure"),
-                                param_float(context.pass, "ambient"),
-                                param_float(context.pass, "specular")};
+  const PushConstants constants{params_.exposure, params_.ambient, params_.specular};
   vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof constants, &constants);
   end_fullscreen(cmd);
 }

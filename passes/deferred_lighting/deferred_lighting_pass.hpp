@@ -1,6 +1,6 @@
 #pragma once
-// Pass type "deferred-lighting". Reflection in deferred_lighting_desc.cpp, runtime in deferred_lighting_pass.cpp,
-// shaders beside them.
+// Pass type "deferred-lighting". Reflection in deferred_lighting_desc.cpp, runtime in
+// deferred_lighting_pass.cpp, shaders beside them.
 
 #include <string>
 #include <vector>
@@ -8,6 +8,7 @@
 #include "antumbra/fg/reflection.hpp"
 #include "antumbra/fgvk/pass.hpp"
 #include "antumbra/gpu/handle.hpp"
+#include "common/lighting_reflection.hpp"
 
 namespace antumbra::passes {
 
@@ -21,6 +22,7 @@ class DeferredLightingPass final : public fgvk::Pass {
   [[nodiscard]] std::vector<std::string> shader_files() const override { return shader_files_; }
 
  private:
+  LightingParams params_;
   gpu::DescriptorSetLayout set_layout_;
   gpu::PipelineLayout layout_;
   gpu::Pipeline pipeline_;

@@ -10,7 +10,8 @@
 
 namespace antumbra::passes {
 
-GBufferPass::GBufferPass(const fg::PlanPass& /*pass*/) {}
+GBufferPass::GBufferPass(const fg::PlanPass& pass) : params_(param_table().read(pass.params)) {
+}
 
 void GBufferPass::prepare(fgvk::PrepareContext& context) {
   auto vert = load_shader(context, "gbuffer/gbuffer.vert", shader_files_);
@@ -25,7 +26,7 @@ void GBufferPass::prepare(fgvk::PrepareContext& context) {
                     .build(context.gpu, context.pass.name + ".set");
   const std::array<VkDescriptorSetLayout, 1> sets{set_layout_};
   layout_ = gpu::create_pipeline_layout(context.gpu, sets, {}, context.pass.name + ".layout");
-  const bool cull = param_bool(context.pass, "cullBackFaces");
+  const bool cull = params_.cull_back_faces;
   pipeline_ = gpu::GraphicsPipelineBuilder()
                   .shader(VK_SHADER_STAGE_VERTEX_BIT, vert)
                   .shader(VK_SHADER_STAGE_FRAGMENT_BIT, frag)

@@ -5,15 +5,20 @@
 #include <string>
 #include <vector>
 
-#include "antumbra/fg/reflection.hpp"
+#include "antumbra/fg/param_table.hpp"
 #include "antumbra/fgvk/pass.hpp"
 #include "antumbra/gpu/handle.hpp"
 
 namespace antumbra::passes {
 
+struct GBufferParams {
+  bool cull_back_faces = false;
+};
+
 class GBufferPass final : public fgvk::Pass {
  public:
   static fg::PassDesc describe();
+  static const fg::ParamTable<GBufferParams>& param_table();
   explicit GBufferPass(const fg::PlanPass& pass);
 
   void prepare(fgvk::PrepareContext& context) override;
@@ -21,6 +26,7 @@ class GBufferPass final : public fgvk::Pass {
   [[nodiscard]] std::vector<std::string> shader_files() const override { return shader_files_; }
 
  private:
+  GBufferParams params_;
   gpu::DescriptorSetLayout set_layout_;
   gpu::PipelineLayout layout_;
   gpu::Pipeline pipeline_;

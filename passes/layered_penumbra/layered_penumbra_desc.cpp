@@ -6,7 +6,7 @@ namespace antumbra::passes {
 namespace {
 
 void check(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& graph,
-           fg::Diagnostics& diagnostics) {
+           base::Diagnostics& diagnostics) {
   const LayerCap cap = find_layer_cap(pass, plan, "layerTable");
   check_layer_storage(pass, plan, graph, cap, "penumbra", diagnostics);
   check_layer_storage(pass, plan, graph, cap, "translucency", diagnostics);
@@ -83,34 +83,44 @@ fg::PassDesc LayeredPenumbraPass::describe() {
        .description = "Exponential-shadow-map visibility exp(-c (d_receiver - d_occluder)) per "
                       "layer, 8 bits, 4 layers per texel: a soft alternative to the hard bits "
                       "that avoids self-shadowing (anisotropic-blur's `esm` input)."});
-  desc.params = {
-      {.name = "lightSizeScale",
-       .type = fg::ParamType::number,
-       .default_value = 1.0,
-       .min = 0.0,
-       .max = 16.0,
-       .description = "Multiplies every light's size (w_light)."},
-      {.name = "searchScale",
-       .type = fg::ParamType::number,
-       .default_value = 1.0,
-       .min = 0.05,
-       .max = 8.0,
-       .description = "Blocker-search radius relative to light size over receiver distance."},
-      {.name = "searchTaps",
-       .type = fg::ParamType::integer,
-       .default_value = 5,
-       .min = 1.0,
-       .max = 9.0,
-       .description = "Blocker-search taps per axis."},
-      {.name = "esmConstant",
-       .type = fg::ParamType::number,
-       .default_value = 80.0,
-       .min = 1.0,
-       .max = 400.0,
-       .description = "ESM sharpness c (depth difference in units of the light's range)."},
-  };
+  desc.params = param_table().descs();
   desc.check = &check;
   return desc;
+}
+
+const fg::ParamTable<LayeredPenumbraParams>& LayeredPenumbraPass::param_table() {
+  static const auto table =
+      fg::ParamTable<LayeredPenumbraParams>()
+          .add({.name = "lightSizeScale",
+                .type = fg::ParamType::number,
+                .default_value = 1.0,
+                .min = 0.0,
+                .max = 16.0,
+                .description = "Multiplies every light's size (w_light)."},
+               &LayeredPenumbraParams::light_size_scale)
+          .add({.name = "searchScale",
+                .type = fg::ParamType::number,
+                .default_value = 1.0,
+                .min = 0.05,
+                .max = 8.0,
+                .description =
+                    "Blocker-search radius relative to light size over receiver distance."},
+               &LayeredPenumbraParams::search_scale)
+          .add({.name = "searchTaps",
+                .type = fg::ParamType::integer,
+                .default_value = 5,
+                .min = 1.0,
+                .max = 9.0,
+                .description = "Blocker-search taps per axis."},
+               &LayeredPenumbraParams::search_taps)
+          .add({.name = "esmConstant",
+                .type = fg::ParamType::number,
+                .default_value = 80.0,
+                .min = 1.0,
+                .max = 400.0,
+                .description = "ESM sharpness c (depth difference in units of the light's range)."},
+               &LayeredPenumbraParams::esm_constant);
+  return table;
 }
 
 }  // namespace antumbra::passes

@@ -23,7 +23,8 @@ constexpr VkShaderStageFlags kCompute = VK_SHADER_STAGE_COMPUTE_BIT;
 
 }  // namespace
 
-LayeredPenumbraPass::LayeredPenumbraPass(const fg::PlanPass& /*pass*/) {
+LayeredPenumbraPass::LayeredPenumbraPass(const fg::PlanPass& pass)
+    : params_(param_table().read(pass.params)) {
 }
 
 void LayeredPenumbraPass::prepare(fgvk::PrepareContext& context) {
@@ -90,12 +91,9 @@ void LayeredPenumbraPass::execute(fgvk::ExecuteContext& context) {
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, compute_.pipeline);
   descriptors.push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, compute_.layout);
   const PushConstants constants{
-      penumbra.layers * 4u,
-      penumbra.extent.width < depth.extent.width ? 1u : 0u,
-      param_float(context.pass, "lightSizeScale"),
-      param_float(context.pass, "searchScale"),
-      static_cast<std::uint32_t>(param_float(context.pass, "searchTaps")),
-      param_float(context.pass, "esmConstant"),
+      penumbra.layers * 4u,     penumbra.extent.width < depth.extent.width ? 1u : 0u,
+      params_.light_size_scale, params_.search_scale,
+      params_.search_taps,      params_.esm_constant,
   };
   vkCmdPushConstants(cmd, compute_.layout, kCompute, 0, sizeof constants, &constants);
   vkCmdDispatch(cmd, (depth.extent.width + 15) / 16, (depth.extent.height + 15) / 16, 1);

@@ -8,10 +8,10 @@ namespace {
 
 // The table must hold a layer per light the engine supports: a compiler check (validate).
 void check(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& graph,
-           fg::Diagnostics& diagnostics) {
+           base::Diagnostics& diagnostics) {
   const auto* table = bound_resource(pass, plan, "layerTable");
   if (table == nullptr || table->buffer_size >= kLayerTableBytes) return;
-  add_pass_error(graph, pass, "LY010",
+  add_pass_error(graph, pass, codes::layering::kLayerTableTooSmall,
                  "the layerTable buffer '" + table->name + "' holds " +
                      std::to_string(table->buffer_size) + " bytes; it must hold at least " +
                      std::to_string(kLayerTableBytes) + " (" + std::to_string(kMaxShadowLights) +
@@ -23,7 +23,7 @@ void check(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& 
 
 fg::PassDesc LightLayeringPass::describe() {
   fg::PassDesc desc;
-  desc.type = "light-layering";
+  desc.type = layering::kLayeringPassType;
   desc.description =
       "Colours the shadow-casting lights into at most maxLayers screen-space shadow layers "
       "(lights of one layer never overlap) and uploads the light -> layer table.";
@@ -35,46 +35,62 @@ fg::PassDesc LightLayeringPass::describe() {
        .stage = fg::Stage::transfer,
        .description = "LayerTableHeader + one uint per scene light (layer_table.glsl)."},
   };
-  desc.params = {
-      {.name = "maxLayers",
-       .type = fg::ParamType::integer,
-       .default_value = 4,
-       .min = 1.0,
-       .max = 32.0,
-       .description = "Artist cap k on the number of shadow layers."},
-      {.name = "order",
-       .type = fg::ParamType::enumeration,
-       .default_value = "dsatur",
-       .choices = {"dsatur", "smallest-last", "largest-first", "first-fit", "degree-ascending"},
-       .description = "Vertex order of the greedy colouring."},
-      {.name = "criterion",
-       .type = fg::ParamType::enumeration,
-       .default_value = "world-sphere",
-       .choices = {"world-sphere", "screen-tile"},
-       .description = "When two lights conflict: their lit spheres intersect, or they reach a "
-                      "common screen tile after dilation by the blur radius."},
-      {.name = "policy",
-       .type = fg::ParamType::enumeration,
-       .default_value = "least-conflict",
-       .choices = {"least-conflict", "fallback"},
-       .description = "Over the cap: share the least-overlapping layer, or draw that light's "
-                      "shadow with the hard/PCF path."},
-      {.name = "tileSize",
-       .type = fg::ParamType::integer,
-       .default_value = 16,
-       .min = 4.0,
-       .max = 256.0,
-       .description = "Screen tile size in pixels (screen-tile criterion)."},
-      {.name = "dilation",
-       .type = fg::ParamType::number,
-       .default_value = 12.0,
-       .min = 0.0,
-       .max = 256.0,
-       .description = "Maximum blur radius in pixels added around each light's "
-                      "screen footprint (screen-tile criterion)."},
-  };
+  desc.params = param_table().descs();
   desc.check = &check;
   return desc;
+}
+
+const fg::ParamTable<LightLayeringParams>& LightLayeringPass::param_table() {
+  using layering::CapPolicy;
+  using layering::Criterion;
+  using layering::Order;
+  static const auto table =
+      fg::ParamTable<LightLayeringParams>()
+          .add({.name = layering::kLayerCap.name,
+                .type = fg::ParamType::integer,
+                .default_value = 4,
+                .min = 1.0,
+                .max = 32.0,
+                .description = "Artist cap k on the number of shadow layers."},
+               &LightLayeringParams::max_layers)
+          .choice({.name = "order",
+                   .type = fg::ParamType::enumeration,
+                   .default_value = "dsatur",
+                   .description = "Vertex order of the greedy colouring."},
+                  &LightLayeringParams::order,
+                  {Order::dsatur, Order::smallest_last, Order::largest_first, Order::first_fit,
+                   Order::degree_ascending})
+          .choice({.name = "criterion",
+                   .type = fg::ParamType::enumeration,
+                   .default_value = "world-sphere",
+                   .description =
+                       "When two lights conflict: their lit spheres intersect, or they reach a "
+                       "common screen tile after dilation by the blur radius."},
+                  &LightLayeringParams::criterion,
+                  {Criterion::world_sphere, Criterion::screen_tile})
+          .choice({.name = "policy",
+                   .type = fg::ParamType::enumeration,
+                   .default_value = "least-conflict",
+                   .description =
+                       "Over the cap: share the least-overlapping layer, or draw that light's "
+                       "shadow with the hard/PCF path."},
+                  &LightLayeringParams::policy, {CapPolicy::least_conflict, CapPolicy::fallback})
+          .add({.name = "tileSize",
+                .type = fg::ParamType::integer,
+                .default_value = 16,
+                .min = 4.0,
+                .max = 256.0,
+                .description = "Screen tile size in pixels (screen-tile criterion)."},
+               &LightLayeringParams::tile_size)
+          .add({.name = "dilation",
+                .type = fg::ParamType::number,
+                .default_value = 12.0,
+                .min = 0.0,
+                .max = 256.0,
+                .description = "Maximum blur radius in pixels added around each light's "
+                               "screen footprint (screen-tile criterion)."},
+               &LightLayeringParams::dilation);
+  return table;
 }
 
 }  // namespace antumbra::passes

@@ -17,15 +17,13 @@
 namespace antumbra::passes {
 
 LightLayeringPass::LightLayeringPass(const fg::PlanPass& pass) {
-  options_.max_layers = static_cast<int>(param_float(pass, "maxLayers"));
-  options_.order =
-      layering::parse_order(param_string(pass, "order")).value_or(layering::Order::dsatur);
-  options_.policy = layering::parse_cap_policy(param_string(pass, "policy"))
-                        .value_or(layering::CapPolicy::least_conflict);
-  criterion_ = layering::parse_criterion(param_string(pass, "criterion"))
-                   .value_or(layering::Criterion::world_sphere);
-  tiles_.tile_size = static_cast<int>(param_float(pass, "tileSize"));
-  tiles_.dilation_px = param_float(pass, "dilation");
+  const LightLayeringParams params = param_table().read(pass.params);
+  options_.max_layers = params.max_layers;
+  options_.order = params.order;
+  options_.policy = params.policy;
+  criterion_ = params.criterion;
+  tiles_.tile_size = params.tile_size;
+  tiles_.dilation_px = params.dilation;
 }
 
 void LightLayeringPass::prepare(fgvk::PrepareContext& /*context*/) {
@@ -83,8 +81,8 @@ void LightLayeringPass::execute(fgvk::ExecuteContext& context) {
   vkCmdCopyBuffer(context.cmd, staging, table->buffer, 1, &region);
 
   for (const auto& warning : assignment->warnings) {
-    context.report.add({context.pass.name, "LY001", fg::Severity::warning, warning.message,
-                        layering::to_json(warning), "maxLayers"});
+    context.report.add({context.pass.name, codes::layering::kOverCap, base::Severity::warning,
+                        warning.message, layering::to_json(warning), layering::kLayerCap.name});
   }
 }
 

@@ -7,16 +7,27 @@
 #include <string>
 #include <vector>
 
-#include "antumbra/fg/reflection.hpp"
+#include "antumbra/fg/param_table.hpp"
 #include "antumbra/fgvk/pass.hpp"
 #include "antumbra/gpu/resources.hpp"
 #include "light_layering/core/layer_assignment.hpp"
+#include "light_layering/core/layer_cap.hpp"
 
 namespace antumbra::passes {
+
+struct LightLayeringParams {
+  int max_layers = 4;
+  layering::Order order = layering::Order::dsatur;
+  layering::Criterion criterion = layering::Criterion::world_sphere;
+  layering::CapPolicy policy = layering::CapPolicy::least_conflict;
+  int tile_size = 16;
+  float dilation = 12.0f;
+};
 
 class LightLayeringPass final : public fgvk::Pass {
  public:
   static fg::PassDesc describe();
+  static const fg::ParamTable<LightLayeringParams>& param_table();
   explicit LightLayeringPass(const fg::PlanPass& pass);
 
   void prepare(fgvk::PrepareContext& context) override;

@@ -7,14 +7,14 @@ namespace {
 
 // Buffer and colour-map sizes against the atlas: compiler checks, so validate sees them.
 void check(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& graph,
-           fg::Diagnostics& diagnostics) {
+           base::Diagnostics& diagnostics) {
   const auto* atlas = bound_resource(pass, plan, "atlas");
   const auto* colour = bound_resource(pass, plan, "colour");
   const auto* data = bound_resource(pass, plan, "shadowData");
   if (atlas == nullptr) return;  // a required port: the compiler has reported it
   const std::size_t needed = shadow_data_bytes(atlas->layers);
   if (data != nullptr && data->buffer_size < needed) {
-    add_pass_error(graph, pass, "SHD001",
+    add_pass_error(graph, pass, codes::shadow_atlas::kShadowDataTooSmall,
                    "the shadowData buffer '" + data->name + "' holds " +
                        std::to_string(data->buffer_size) + " bytes; " +
                        std::to_string(atlas->layers) + " atlas layers need " +
@@ -22,7 +22,7 @@ void check(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& 
                    "/out/shadowData", diagnostics);
   }
   if (colour != nullptr && colour->layers < atlas->layers) {
-    add_pass_error(graph, pass, "SHD003",
+    add_pass_error(graph, pass, codes::shadow_atlas::kColourLayers,
                    "the colour map '" + colour->name + "' has " + std::to_string(colour->layers) +
                        " layers, the atlas " + std::to_string(atlas->layers) +
                        "; give both the same layer count",
@@ -76,54 +76,73 @@ fg::PassDesc PointShadowAtlasPass::describe() {
        .description = "Header, ShadowLight per scene light and ShadowFace per layer "
                       "(passes/common/shadow_data.glsl); at least shadow_data_bytes(layers)."},
   };
-  desc.params = {
-      {.name = "nearPlane",
-       .type = fg::ParamType::number,
-       .default_value = 0.05,
-       .min = 0.001,
-       .max = 10.0,
-       .description = "Near plane of every face in metres (capped at half the range)."},
-      {.name = "sunDistance",
-       .type = fg::ParamType::number,
-       .default_value = 40.0,
-       .min = 1.0,
-       .max = 10000.0,
-       .description = "The directional light's orthographic map covers the camera frustum up "
-                      "to this distance in metres (one cascade; beyond it the sun is unshadowed)."},
-      {.name = "depthBias",
-       .type = fg::ParamType::number,
-       .default_value = 2.0,
-       .min = 0.0,
-       .max = 1000.0,
-       .description = "Constant raster depth bias (depthBiasConstantFactor: units of the depth "
-                      "format's resolution)."},
-      {.name = "slopeBias",
-       .type = fg::ParamType::number,
-       .default_value = 1.75,
-       .min = 0.0,
-       .max = 16.0,
-       .description = "Slope-scaled raster depth bias (depthBiasSlopeFactor)."},
-      {.name = "cullFaces",
-       .type = fg::ParamType::boolean,
-       .default_value = true,
-       .description = "Skip faces whose frustum (to the light's range) misses the camera's."},
-      {.name = "cache",
-       .type = fg::ParamType::boolean,
-       .default_value = true,
-       .description = "Keep faces whose light and geometry did not change (static caching)."},
-      {.name = "translucentColour",
-       .type = fg::ParamType::boolean,
-       .default_value = true,
-       .description = "With `colour` bound: translucent casters tint the colour map instead of "
-                      "writing depth. Off (or `colour` unbound): they cast opaque shadows."},
-      {.name = "layeredDraw",
-       .type = fg::ParamType::boolean,
-       .default_value = true,
-       .description = "One instanced draw writing gl_Layer where the device supports it; off "
-                      "forces the fallback of one draw per face into a single-layer view."},
-  };
+  desc.params = param_table().descs();
   desc.check = &check;
   return desc;
+}
+
+const fg::ParamTable<PointShadowAtlasParams>& PointShadowAtlasPass::param_table() {
+  static const auto table =
+      fg::ParamTable<PointShadowAtlasParams>()
+          .add({.name = "nearPlane",
+                .type = fg::ParamType::number,
+                .default_value = 0.05,
+                .min = 0.001,
+                .max = 10.0,
+                .description = "Near plane of every face in metres (capped at half the range)."},
+               &PointShadowAtlasParams::near_plane)
+          .add({.name = "sunDistance",
+                .type = fg::ParamType::number,
+                .default_value = 40.0,
+                .min = 1.0,
+                .max = 10000.0,
+                .description =
+                    "The directional light's orthographic map covers the camera frustum up "
+                    "to this distance in metres (one cascade; beyond it the sun is unshadowed)."},
+               &PointShadowAtlasParams::sun_distance)
+          .add({.name = "depthBias",
+                .type = fg::ParamType::number,
+                .default_value = 2.0,
+                .min = 0.0,
+                .max = 1000.0,
+                .description =
+                    "Constant raster depth bias (depthBiasConstantFactor: units of the depth "
+                    "format's resolution)."},
+               &PointShadowAtlasParams::depth_bias)
+          .add({.name = "slopeBias",
+                .type = fg::ParamType::number,
+                .default_value = 1.75,
+                .min = 0.0,
+                .max = 16.0,
+                .description = "Slope-scaled raster depth bias (depthBiasSlopeFactor)."},
+               &PointShadowAtlasParams::slope_bias)
+          .add({.name = "cullFaces",
+                .type = fg::ParamType::boolean,
+                .default_value = true,
+                .description =
+                    "Skip faces whose frustum (to the light's range) misses the camera's."},
+               &PointShadowAtlasParams::cull_faces)
+          .add({.name = "cache",
+                .type = fg::ParamType::boolean,
+                .default_value = true,
+                .description =
+                    "Keep faces whose light and geometry did not change (static caching)."},
+               &PointShadowAtlasParams::cache)
+          .add({.name = "translucentColour",
+                .type = fg::ParamType::boolean,
+                .default_value = true,
+                .description =
+                    "With `colour` bound: translucent casters tint the colour map instead of "
+                    "writing depth. Off (or `colour` unbound): they cast opaque shadows."},
+               &PointShadowAtlasParams::translucent_colour)
+          .add({.name = "layeredDraw",
+                .type = fg::ParamType::boolean,
+                .default_value = true,
+                .description =
+                    "One instanced draw writing gl_Layer where the device supports it; off "
+                    "forces the fallback of one draw per face into a single-layer view."},
+               &PointShadowAtlasParams::layered_draw);
+  return table;
 }
 
 }  // namespace antumbra::passes

@@ -48,15 +48,12 @@ VkRenderingAttachmentInfo attachment(VkImageView view, VkImageLayout layout, boo
 
 }  // namespace
 
-PointShadowAtlasPass::PointShadowAtlasPass(const fg::PlanPass& pass) {
-  settings_.near_plane = param_float(pass, "nearPlane");
-  settings_.sun_max_distance = param_float(pass, "sunDistance");
-  settings_.cull_faces = param_bool(pass, "cullFaces");
-  settings_.cache = param_bool(pass, "cache");
-  depth_bias_ = param_float(pass, "depthBias");
-  slope_bias_ = param_float(pass, "slopeBias");
-  want_colour_ = param_bool(pass, "translucentColour");
-  want_layered_ = param_bool(pass, "layeredDraw");
+PointShadowAtlasPass::PointShadowAtlasPass(const fg::PlanPass& pass)
+    : params_(param_table().read(pass.params)) {
+  settings_.near_plane = params_.near_plane;
+  settings_.sun_max_distance = params_.sun_distance;
+  settings_.cull_faces = params_.cull_faces;
+  settings_.cache = params_.cache;
 }
 
 void PointShadowAtlasPass::prepare(fgvk::PrepareContext& context) {
@@ -66,8 +63,8 @@ void PointShadowAtlasPass::prepare(fgvk::PrepareContext& context) {
   settings_.layers = atlas.layers;
   settings_.face_size = atlas.extent.width;
   colour_map_ = colour != nullptr;
-  colour_ = colour_map_ && want_colour_;
-  layered_ = want_layered_ && context.gpu.features().shader_output_layer;
+  colour_ = colour_map_ && params_.translucent_colour;
+  layered_ = params_.layered_draw && context.gpu.features().shader_output_layer;
 
   std::vector<gpu::ShaderDefine> depth_defines;
   std::vector<gpu::ShaderDefine> colour_defines{{"COLOUR_PASS", ""}};
@@ -78,7 +75,7 @@ void PointShadowAtlasPass::prepare(fgvk::PrepareContext& context) {
   if (colour_) depth_defines.push_back({"SKIP_TRANSLUCENT", ""});
   shader_files_.clear();
   gpu::Fnv1a64 key;
-  const float shape[] = {depth_bias_, slope_bias_, settings_.near_plane,
+  const float shape[] = {params_.depth_bias, params_.slope_bias, settings_.near_plane,
                          settings_.sun_max_distance};
   const std::uint32_t flags[] = {
       settings_.layers, settings_.face_size, settings_.cull_faces, settings_.cache, layered_,
@@ -111,7 +108,7 @@ void PointShadowAtlasPass::prepare(fgvk::PrepareContext& context) {
   auto depth = base();
   depth.shader(VK_SHADER_STAGE_VERTEX_BIT, depth_vert)
       .depth(true, true, VK_COMPARE_OP_LESS)
-      .depth_bias(depth_bias_, slope_bias_);
+      .depth_bias(params_.depth_bias, params_.slope_bias);
   if (colour_map_) depth.color_write_mask(0, 0);
   depth_pipeline_ = depth.build(context.gpu, context.pass.name + ".depth");
   colour_pipeline_ = {};
@@ -193,25 +190,25 @@ void PointShadowAtlasPass::execute(fgvk::ExecuteContext& context) {
       if (!names.empty()) names += ", ";
       names += name;
     }
-    context.report.add({context.pass.name, "SHD002", fg::Severity::warning,
-                        std::to_string(frame.unshadowed.size()) +
-                            " shadow-casting light(s) do not fit the atlas (" +
-                            std::to_string(settings_.layers) +
-                            " layers: 6 per point light, 1 per spot or sun) and cast no "
-                            "shadows: " +
-                            names,
-                        fg::Json{{"lights", frame.unshadowed}, {"layers", settings_.layers}}});
+    context.report.add(
+        {context.pass.name, codes::shadow_atlas::kLightsUnshadowed, base::Severity::warning,
+         std::to_string(frame.unshadowed.size()) +
+             " shadow-casting light(s) do not fit the atlas (" + std::to_string(settings_.layers) +
+             " layers: 6 per point light, 1 per spot or sun) and cast no "
+             "shadows: " +
+             names,
+         base::Json{{"lights", frame.unshadowed}, {"layers", settings_.layers}}});
   }
   const AtlasStats& s = frame.stats;
-  context.report.add({context.pass.name, "SHD010", fg::Severity::note,
+  context.report.add({context.pass.name, codes::shadow_atlas::kFaceStats, base::Severity::note,
                       "shadow faces: " + std::to_string(s.total) + " total, " +
                           std::to_string(s.culled) + " culled, " + std::to_string(s.rendered) +
                           " rendered, " + std::to_string(s.cached) + " cached",
-                      fg::Json{{"total", s.total},
-                               {"culled", s.culled},
-                               {"rendered", s.rendered},
-                               {"cached", s.cached},
-                               {"layered", layered_}}});
+                      base::Json{{"total", s.total},
+                                 {"culled", s.culled},
+                                 {"rendered", s.rendered},
+                                 {"cached", s.cached},
+                                 {"layered", layered_}}});
 
   if (frame.render_layers.empty() && !frame.clear_all) return;
   if (layered_) {

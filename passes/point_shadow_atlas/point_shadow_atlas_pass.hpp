@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "antumbra/fg/reflection.hpp"
+#include "antumbra/fg/param_table.hpp"
 #include "antumbra/fgvk/pass.hpp"
 #include "antumbra/gpu/handle.hpp"
 #include "antumbra/gpu/resources.hpp"
@@ -24,9 +24,21 @@
 
 namespace antumbra::passes {
 
+struct PointShadowAtlasParams {
+  float near_plane = 0.05f;
+  float sun_distance = 40.0f;
+  float depth_bias = 2.0f;
+  float slope_bias = 1.75f;
+  bool cull_faces = true;
+  bool cache = true;
+  bool translucent_colour = true;
+  bool layered_draw = true;
+};
+
 class PointShadowAtlasPass final : public fgvk::Pass {
  public:
   static fg::PassDesc describe();
+  static const fg::ParamTable<PointShadowAtlasParams>& param_table();
   explicit PointShadowAtlasPass(const fg::PlanPass& pass);
 
   void prepare(fgvk::PrepareContext& context) override;
@@ -55,10 +67,7 @@ class PointShadowAtlasPass final : public fgvk::Pass {
                   std::uint32_t count);
 
   AtlasSettings settings_;
-  float depth_bias_ = 0.0f;
-  float slope_bias_ = 0.0f;
-  bool want_colour_ = true;
-  bool want_layered_ = true;
+  PointShadowAtlasParams params_;
   bool layered_ = false;
   bool colour_map_ = false;   // `colour` bound
   bool colour_ = false;       // ... and translucent casters tint it

@@ -1,4 +1,4 @@
-#include "antumbra/fg/diagnostic_codes.hpp"
+#include "antumbra/base/diagnostic_codes.hpp"
 #include "antumbra/fg/graph_desc.hpp"
 #include "common/lighting_reflection.hpp"
 #include "shadow_min_filter_pass.hpp"
@@ -18,13 +18,13 @@ const fg::PlanResource* bound_image(const fg::PlanPass& pass, const fg::Plan& pl
 // The map must cover every atlas layer, and each of its texels a whole, gatherable
 // block of atlas texels (factor 1 or even, the same on both axes).
 void check(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& graph,
-           fg::Diagnostics& diagnostics) {
+           base::Diagnostics& diagnostics) {
   const auto* atlas = bound_image(pass, plan, "atlas");
   const auto* out = bound_image(pass, plan, "minDepth");
   if (atlas == nullptr || out == nullptr) return;
   const auto& desc = graph.passes[static_cast<std::size_t>(pass.source_index)];
   const auto fail = [&](const std::string& what) {
-    diagnostics.add(graph.document.make(fg::codes::kDerivedMapMismatch, fg::Severity::error,
+    diagnostics.add(graph.document.make(codes::graph::kDerivedMapMismatch, base::Severity::error,
                                         "pass '" + pass.name + "': " + what,
                                         desc.pointer + "/out/minDepth"));
   };
@@ -74,16 +74,21 @@ fg::PassDesc ShadowMinFilterPass::describe() {
                       "by 1 or an even factor, as many layers as the atlas. Persistent to keep "
                       "cached faces' results."},
   };
-  desc.params = {
+  desc.params = param_table().descs();
+  desc.check = &check;
+  return desc;
+}
+
+const fg::ParamTable<ShadowMinFilterParams>& ShadowMinFilterPass::param_table() {
+  static const auto table = fg::ParamTable<ShadowMinFilterParams>().add(
       {.name = "radius",
        .type = fg::ParamType::integer,
        .default_value = 3,
        .min = 0.0,
        .max = 8.0,
        .description = "Half width of the min filter in output texels ((2r+1)^2 texels)."},
-  };
-  desc.check = &check;
-  return desc;
+      &ShadowMinFilterParams::radius);
+  return table;
 }
 
 }  // namespace antumbra::passes

@@ -32,7 +32,8 @@ gpu::DescriptorSetLayoutBuilder bindings() {
 
 }  // namespace
 
-ShadowMinFilterPass::ShadowMinFilterPass(const fg::PlanPass& /*pass*/) {
+ShadowMinFilterPass::ShadowMinFilterPass(const fg::PlanPass& pass)
+    : params_(param_table().read(pass.params)) {
 }
 
 void ShadowMinFilterPass::prepare(fgvk::PrepareContext& context) {
@@ -84,7 +85,7 @@ void ShadowMinFilterPass::execute(fgvk::ExecuteContext& context) {
   filtered_for_ = out.image;
   const PushConstants constants{
       atlas.extent.width / std::max(out.extent.width, 1u),
-      static_cast<std::uint32_t>(param_float(context.pass, "radius")),
+      params_.radius,
       force_all ? 1u : 0u,
       span,
   };

@@ -10,16 +10,21 @@
 #include <string>
 #include <vector>
 
-#include "antumbra/fg/reflection.hpp"
+#include "antumbra/fg/param_table.hpp"
 #include "antumbra/fgvk/pass.hpp"
 #include "antumbra/gpu/resources.hpp"
 #include "common/pass_support.hpp"
 
 namespace antumbra::passes {
 
+struct ShadowMinFilterParams {
+  std::uint32_t radius = 3;
+};
+
 class ShadowMinFilterPass final : public fgvk::Pass {
  public:
   static fg::PassDesc describe();
+  static const fg::ParamTable<ShadowMinFilterParams>& param_table();
   explicit ShadowMinFilterPass(const fg::PlanPass& pass);
 
   void prepare(fgvk::PrepareContext& context) override;
@@ -27,6 +32,7 @@ class ShadowMinFilterPass final : public fgvk::Pass {
   [[nodiscard]] std::vector<std::string> shader_files() const override { return shader_files_; }
 
  private:
+  ShadowMinFilterParams params_;
   // The downsampled depths between the two dispatches: internal to the pass, so its
   // barriers are the pass's own (graph resources get theirs from the plan).
   gpu::Image coarse_;

@@ -34,70 +34,87 @@ fg::PassDesc ShadowReferencePass::describe() {
                             "no opaque caster blocks, or the fraction nothing blocks or tints, is "
                             "strictly between 0.02 and 0.98 (>= 1: penumbra, >= 2: overlapping "
                             "penumbrae; a pane's uniform coloured shadow is no penumbra)."});
-  desc.params = {
-      {.name = "samples",
-       .type = fg::ParamType::integer,
-       .default_value = 256,
-       .min = 16.0,
-       .max = 4096.0,
-       .description = "Shadow-map samples per light (points on its sphere; the sun: "
-                      "directions over its disc)."},
-      {.name = "faceSize",
-       .type = fg::ParamType::integer,
-       .default_value = 512,
-       .min = 32.0,
-       .max = 4096.0,
-       .description = "Texels per side of each sample's cube faces."},
-      {.name = "lightsPerBatch",
-       .type = fg::ParamType::integer,
-       .default_value = 16,
-       .min = 1.0,
-       .max = 64.0,
-       .description = "Lights whose faces are rendered together (6 depth layers each)."},
-      {.name = "weighting",
-       .type = fg::ParamType::enumeration,
-       .default_value = "projected",
-       .choices = {"projected", "uniform"},
-       .description = "projected: samples weighted by cos / distance^2 towards the receiver "
-                      "(the visible fraction of the solid angle of the light's disc); uniform: "
-                      "plain average of the sphere samples."},
-      {.name = "nearPlane",
-       .type = fg::ParamType::number,
-       .default_value = 0.02,
-       .min = 0.001,
-       .max = 1.0,
-       .description = "Near plane of every sample's faces in metres."},
-      {.name = "normalOffset",
-       .type = fg::ParamType::number,
-       .default_value = 1.0,
-       .min = 0.0,
-       .max = 8.0,
-       .description = "Receiver offset along its normal, in face texels."},
-      {.name = "depthBias",
-       .type = fg::ParamType::number,
-       .default_value = 0.0,
-       .min = 0.0,
-       .max = 0.1,
-       .description = "Constant bias of the depth comparison (face depth units)."},
-      {.name = "rasterBias",
-       .type = fg::ParamType::number,
-       .default_value = 1.0,
-       .min = 0.0,
-       .max = 1000.0,
-       .description = "Constant raster depth bias of the face rendering."},
-      {.name = "slopeBias",
-       .type = fg::ParamType::number,
-       .default_value = 1.0,
-       .min = 0.0,
-       .max = 16.0,
-       .description = "Slope-scaled raster depth bias of the face rendering."},
-      {.name = "cullFaces",
-       .type = fg::ParamType::boolean,
-       .default_value = true,
-       .description = "Skip faces whose frustum misses the camera's (never changes the image)."},
-  };
-  for (auto& p : lighting_params()) desc.params.push_back(std::move(p));
+  desc.params = param_table().descs();
   return desc;
+}
+
+const fg::ParamTable<ShadowReferenceParams>& ShadowReferencePass::param_table() {
+  static const auto table =
+      fg::ParamTable<ShadowReferenceParams>()
+          .add({.name = "samples",
+                .type = fg::ParamType::integer,
+                .default_value = 256,
+                .min = 16.0,
+                .max = 4096.0,
+                .description = "Shadow-map samples per light (points on its sphere; the sun: "
+                               "directions over its disc)."},
+               &ShadowReferenceParams::samples)
+          .add({.name = "faceSize",
+                .type = fg::ParamType::integer,
+                .default_value = 512,
+                .min = 32.0,
+                .max = 4096.0,
+                .description = "Texels per side of each sample's cube faces."},
+               &ShadowReferenceParams::face_size)
+          .add({.name = "lightsPerBatch",
+                .type = fg::ParamType::integer,
+                .default_value = 16,
+                .min = 1.0,
+                .max = 64.0,
+                .description = "Lights whose faces are rendered together (6 depth layers each)."},
+               &ShadowReferenceParams::lights_per_batch)
+          .choice({.name = "weighting",
+                   .type = fg::ParamType::enumeration,
+                   .default_value = "projected",
+                   .choices = {"projected", "uniform"},
+                   .description =
+                       "projected: samples weighted by cos / distance^2 towards the receiver "
+                       "(the visible fraction of the solid angle of the light's disc); uniform: "
+                       "plain average of the sphere samples."},
+                  &ShadowReferenceParams::weighting, {0u, 1u})
+          .add({.name = "nearPlane",
+                .type = fg::ParamType::number,
+                .default_value = 0.02,
+                .min = 0.001,
+                .max = 1.0,
+                .description = "Near plane of every sample's faces in metres."},
+               &ShadowReferenceParams::near_plane)
+          .add({.name = "normalOffset",
+                .type = fg::ParamType::number,
+                .default_value = 1.0,
+                .min = 0.0,
+                .max = 8.0,
+                .description = "Receiver offset along its normal, in face texels."},
+               &ShadowReferenceParams::normal_offset)
+          .add({.name = "depthBias",
+                .type = fg::ParamType::number,
+                .default_value = 0.0,
+                .min = 0.0,
+                .max = 0.1,
+                .description = "Constant bias of the depth comparison (face depth units)."},
+               &ShadowReferenceParams::depth_bias)
+          .add({.name = "rasterBias",
+                .type = fg::ParamType::number,
+                .default_value = 1.0,
+                .min = 0.0,
+                .max = 1000.0,
+                .description = "Constant raster depth bias of the face rendering."},
+               &ShadowReferenceParams::raster_bias)
+          .add({.name = "slopeBias",
+                .type = fg::ParamType::number,
+                .default_value = 1.0,
+                .min = 0.0,
+                .max = 16.0,
+                .description = "Slope-scaled raster depth bias of the face rendering."},
+               &ShadowReferenceParams::slope_bias)
+          .add({.name = "cullFaces",
+                .type = fg::ParamType::boolean,
+                .default_value = true,
+                .description =
+                    "Skip faces whose frustum misses the camera's (never changes the image)."},
+               &ShadowReferenceParams::cull_faces)
+          .include(&ShadowReferenceParams::lighting, lighting_param_table());
+  return table;
 }
 
 }  // namespace antumbra::passes

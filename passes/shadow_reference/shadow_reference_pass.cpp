@@ -36,18 +36,12 @@ bool ShadowReferencePass::Key::operator==(const Key& other) const {
          lights == other.lights;
 }
 
-ShadowReferencePass::ShadowReferencePass(const fg::PlanPass& pass) {
-  settings_.samples = static_cast<std::uint32_t>(param_float(pass, "samples"));
-  settings_.lights_per_batch = static_cast<std::uint32_t>(param_float(pass, "lightsPerBatch"));
-  settings_.cull_faces = param_bool(pass, "cullFaces");
-  face_size_ = static_cast<std::uint32_t>(param_float(pass, "faceSize"));
-  settings_.face_size = face_size_;
-  near_ = param_float(pass, "nearPlane");
-  normal_offset_ = param_float(pass, "normalOffset");
-  depth_bias_ = param_float(pass, "depthBias");
-  raster_bias_ = param_float(pass, "rasterBias");
-  slope_bias_ = param_float(pass, "slopeBias");
-  weighting_ = param_string(pass, "weighting") == "uniform" ? 1u : 0u;
+ShadowReferencePass::ShadowReferencePass(const fg::PlanPass& pass)
+    : params_(param_table().read(pass.params)) {
+  settings_.samples = params_.samples;
+  settings_.lights_per_batch = params_.lights_per_batch;
+  settings_.cull_faces = params_.cull_faces;
+  settings_.face_size = params_.face_size;
 }
 
 void ShadowReferencePass::prepare(fgvk::PrepareContext& context) {
@@ -92,7 +86,7 @@ void ShadowReferencePass::prepare(fgvk::PrepareContext& context) {
     auto builder = raster();
     builder.shader(VK_SHADER_STAGE_VERTEX_BIT, vert)
         .depth(true, true, VK_COMPARE_OP_LESS)
-        .depth_bias(raster_bias_, slope_bias_);
+        .depth_bias(params_.raster_bias, params_.slope_bias);
     return builder;
   };
   depth_pipeline_ = depth().build(context.gpu, name + ".depth");
@@ -202,8 +196,8 @@ void ShadowReferencePass::rebuild(fgvk::ExecuteContext& context, const Key& key)
   // within a quarter of the device's largest local heap, so a large faceSize renders in
   // more, smaller batches instead of failing to allocate (a 4096 face is 384 MiB a light).
   auto settings = settings_;
-  const VkDeviceSize per_light = VkDeviceSize{reference::kFacesPerLight} * face_size_ * face_size_ *
-                                 (sizeof(float) + sizeof(std::uint32_t));
+  const VkDeviceSize per_light = VkDeviceSize{reference::kFacesPerLight} * params_.face_size *
+                                 params_.face_size * (sizeof(float) + sizeof(std::uint32_t));
   const VkDeviceSize fitting = gpu::local_heaps(context.gpu.physical_device()).largest / 4 /
                                std::max<VkDeviceSize>(per_light, 1);
   settings.lights_per_batch = static_cast<std::uint32_t>(
@@ -240,10 +234,10 @@ void ShadowReferencePass::rebuild(fgvk::ExecuteContext& context, const Key& key)
                                  gpu::MemoryUsage::gpu_only, name + ".accum");
   }
   const std::uint32_t layers = slots * reference::kFacesPerLight;
-  if (!faces_ || faces_.layers() != layers || faces_.extent().width != face_size_) {
+  if (!faces_ || faces_.layers() != layers || faces_.extent().width != params_.face_size) {
     gpu::ImageDesc desc;
     desc.format = reference::kFaceFormat;
-    desc.extent = {face_size_, face_size_};
+    desc.extent = {params_.face_size, params_.face_size};
     desc.layers = layers;
     desc.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
     desc.name = name + ".faces";
@@ -252,7 +246,7 @@ void ShadowReferencePass::rebuild(fgvk::ExecuteContext& context, const Key& key)
   // Colour layers like the faces only when some light has translucent casters; else a
   // 1x1 stand-in that is bound but never read.
   const VkExtent2D tint_extent =
-      plan_.any_tinted ? VkExtent2D{face_size_, face_size_} : VkExtent2D{1, 1};
+      plan_.any_tinted ? VkExtent2D{params_.face_size, params_.face_size} : VkExtent2D{1, 1};
   const std::uint32_t tint_layers = plan_.any_tinted ? layers : 1;
   if (!tints_ || tints_.layers() != tint_layers || tints_.extent().width != tint_extent.width) {
     gpu::ImageDesc desc;

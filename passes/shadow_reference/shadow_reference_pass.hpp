@@ -19,17 +19,33 @@
 
 #include <glm/glm.hpp>
 
-#include "antumbra/fg/reflection.hpp"
+#include "antumbra/fg/param_table.hpp"
 #include "antumbra/fgvk/pass.hpp"
 #include "antumbra/gpu/handle.hpp"
 #include "antumbra/gpu/resources.hpp"
+#include "common/lighting_reflection.hpp"
 #include "reference_plan.hpp"
 
 namespace antumbra::passes {
 
+struct ShadowReferenceParams {
+  std::uint32_t samples = 256;
+  std::uint32_t face_size = 512;
+  std::uint32_t lights_per_batch = 16;
+  std::uint32_t weighting = 0;  // the shaders' index: 0 projected, 1 uniform
+  float near_plane = 0.02f;
+  float normal_offset = 1.0f;
+  float depth_bias = 0.0f;
+  float raster_bias = 1.0f;
+  float slope_bias = 1.0f;
+  bool cull_faces = true;
+  LightingParams lighting;
+};
+
 class ShadowReferencePass final : public fgvk::Pass {
  public:
   static fg::PassDesc describe();
+  static const fg::ParamTable<ShadowReferenceParams>& param_table();
   explicit ShadowReferencePass(const fg::PlanPass& pass);
 
   void prepare(fgvk::PrepareContext& context) override;
@@ -54,15 +70,8 @@ class ShadowReferencePass final : public fgvk::Pass {
   void tints_to_sampled(VkCommandBuffer cmd);
   void record_final(fgvk::ExecuteContext& context);
 
-  // Parameters.
+  ShadowReferenceParams params_;
   reference::PlanSettings settings_;
-  std::uint32_t face_size_ = 512;
-  float near_ = 0.02f;
-  float normal_offset_ = 1.0f;
-  float depth_bias_ = 0.0f;
-  float raster_bias_ = 0.0f;
-  float slope_bias_ = 0.0f;
-  std::uint32_t weighting_ = 0;
 
   // Pipelines.
   bool layered_ = false;

@@ -137,10 +137,11 @@ void ShadowReferencePass::record_batch(fgvk::ExecuteContext& context,
                                 VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
         .storage_buffer(8, matrices_)
         .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, accumulate_layout_);
-    const reference::AccumulatePush push{extent.width,  extent.height,     k,
-                                         plan_.samples, batch.first_light, batch.light_count,
-                                         near_,         normal_offset_,    float(face_size_),
-                                         weighting_,    depth_bias_,       batch.tinted ? 1u : 0u};
+    const reference::AccumulatePush push{
+        extent.width,       extent.height,         k,
+        plan_.samples,      batch.first_light,     batch.light_count,
+        params_.near_plane, params_.normal_offset, float(params_.face_size),
+        params_.weighting,  params_.depth_bias,    batch.tinted ? 1u : 0u};
     vkCmdPushConstants(cmd, accumulate_layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
     dispatch_pixels(cmd, extent);
   }
@@ -160,7 +161,7 @@ void ShadowReferencePass::record_batch(fgvk::ExecuteContext& context,
                                     extent.height,
                                     batch.first_light,
                                     batch.light_count,
-                                    param_float(context.pass, "specular"),
+                                    params_.lighting.specular,
                                     reference::kPenumbraLow,
                                     reference::kPenumbraHigh};
   vkCmdPushConstants(cmd, resolve_layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
@@ -170,7 +171,7 @@ void ShadowReferencePass::record_batch(fgvk::ExecuteContext& context,
 void ShadowReferencePass::render_faces(fgvk::ExecuteContext& context, const reference::Batch& batch,
                                        std::uint32_t sample, std::size_t& run) {
   const VkCommandBuffer cmd = context.cmd;
-  const VkExtent2D face_extent{face_size_, face_size_};
+  const VkExtent2D face_extent{params_.face_size, params_.face_size};
   VkRenderingAttachmentInfo attachment{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
   attachment.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
   attachment.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
@@ -210,7 +211,8 @@ void ShadowReferencePass::render_faces(fgvk::ExecuteContext& context, const refe
     if (index_count == 0) return;
     const bool ortho = context.frame.scene->lights[light].type == scene::LightType::directional;
     const reference::DepthPush push{light * plan_.samples + sample,
-                                    r.slot * reference::kFacesPerLight, near_, ortho ? 1u : 0u};
+                                    r.slot * reference::kFacesPerLight, params_.near_plane,
+                                    ortho ? 1u : 0u};
     vkCmdPushConstants(cmd, depth_layout_, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof push, &push);
     vkCmdDrawIndexed(cmd, index_count, count,
                      tint ? plan_.tint_first[light] : plan_.index_first[light], 0, first_face);
@@ -284,9 +286,8 @@ void ShadowReferencePass::record_final(fgvk::ExecuteContext& context) {
     descriptors.storage_image(5, penumbra.view, penumbra.layout);
   }
   descriptors.push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, final_layout_);
-  const reference::FinalPush push{hdr.extent.width, hdr.extent.height,
-                                  param_float(context.pass, "exposure"),
-                                  param_float(context.pass, "ambient")};
+  const reference::FinalPush push{hdr.extent.width, hdr.extent.height, params_.lighting.exposure,
+                                  params_.lighting.ambient};
   vkCmdPushConstants(cmd, final_layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
   dispatch_pixels(cmd, hdr.extent);
 }

@@ -33,42 +33,85 @@ std::vector<fg::PortDesc> atlas_ports(bool optional) {
   };
 }
 
-// Same names, ranges and defaults as deferred-lighting, so images match with shadows off.
+using Table = fg::ParamTable<TiledLightingParams>;
 
-fg::ParamDesc kernel_param(const char* what) {
+Table& add_kernel(Table& table, const char* what) {
   // An enumeration rather than an integer: the filter sizes of the technique are exactly
   // these three, and the graph compiler then rejects any other value (with suggestions).
-  return {
-      .name = "kernel",
-      .type = fg::ParamType::enumeration,
-      .default_value = "11",
-      .choices = {"5", "11", "23"},
-      .description = std::string("Filter taps per side of the ") + what + " (5x5, 11x11, 23x23)."};
+  return table.choice(
+      {.name = "kernel",
+       .type = fg::ParamType::enumeration,
+       .default_value = "11",
+       .choices = {"5", "11", "23"},
+       .description = std::string("Filter taps per side of the ") + what + " (5x5, 11x11, 23x23)."},
+      &TiledLightingParams::kernel, {5, 11, 23});
 }
 
-std::vector<fg::ParamDesc> pcss_params() {
-  return {
-      {.name = "blockerSearch",
-       .type = fg::ParamType::integer,
-       .default_value = 5,
-       .min = 1.0,
-       .max = 23.0,
-       .description = "PCSS blocker-search taps per side (even values round up to "
-                      "odd); the region they span scales with the light size."},
-      {.name = "lightSizeScale",
-       .type = fg::ParamType::number,
-       .default_value = 1.0,
-       .min = 0.0,
-       .max = 16.0,
-       .description = "Multiplies each light's size (w_light) in the PCSS penumbra "
-                      "estimate."},
-  };
+Table& add_pcss(Table& table) {
+  return table
+      .add({.name = "blockerSearch",
+            .type = fg::ParamType::integer,
+            .default_value = 5,
+            .min = 1.0,
+            .max = 23.0,
+            .description = "PCSS blocker-search taps per side (even values round up to "
+                           "odd); the region they span scales with the light size."},
+           &TiledLightingParams::blocker_search)
+      .add({.name = "lightSizeScale",
+            .type = fg::ParamType::number,
+            .default_value = 1.0,
+            .min = 0.0,
+            .max = 16.0,
+            .description = "Multiplies each light's size (w_light) in the PCSS penumbra "
+                           "estimate."},
+           &TiledLightingParams::light_size_scale);
+}
+
+// Same names, ranges and defaults as deferred-lighting, so images match with shadows off.
+Table lighting_table() {
+  return Table().include(&TiledLightingParams::lighting, lighting_param_table());
+}
+
+Table tiled_table() {
+  Table table = lighting_table();
+  table.choice(
+      {.name = "shadows",
+       .type = fg::ParamType::enumeration,
+       .default_value = "none",
+       .description = "Shadow term: none; hard, pcf or pcss from the atlas (atlas + shadowData "
+                      "required); layered from the blurred layer buffer (layerTable + shadow "
+                      "required)."},
+      &TiledLightingParams::shadows,
+      {ShadowMode::none, ShadowMode::hard, ShadowMode::pcf, ShadowMode::pcss, ShadowMode::layered});
+  add_kernel(table, "PCF / PCSS filter and the layered fallback");
+  add_pcss(table);
+  table.choice(
+      {.name = "fallback",
+       .type = fg::ParamType::enumeration,
+       .default_value = "pcf",
+       .choices = {"hard", "pcf"},
+       .description = "Layered mode: atlas lookup for lights without a layer (needs the atlas)."},
+      &TiledLightingParams::pcf_fallback, {false, true});
+  return table;
+}
+
+Table pcf_table() {
+  Table table = lighting_table();
+  add_kernel(table, "PCF box filter");
+  return table;
+}
+
+Table pcss_table() {
+  Table table = lighting_table();
+  add_kernel(table, "PCF step (the largest penumbra it can draw)");
+  add_pcss(table);
+  return table;
 }
 
 // What the shadow mode needs bound, checked by the compiler (validate) rather than when the
 // executor prepares the pass (render), so that both accept the same graphs.
 void check(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& graph,
-           fg::Diagnostics& diagnostics) {
+           base::Diagnostics& diagnostics) {
   const ShadowMode mode = TiledLightingPass::mode_of(pass);
   const std::string mode_at = pass.type == TiledLightingPass::kType ? "/params/shadows" : "/type";
   const auto error = [&](const char* code, const std::string& message, const std::string& at) {
@@ -77,20 +120,20 @@ void check(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& 
   const auto* atlas = bound_resource(pass, plan, "atlas");
   const auto* shadow_data = bound_resource(pass, plan, "shadowData");
   if ((atlas == nullptr) != (shadow_data == nullptr)) {
-    error("TL001", "bind both `atlas` and `shadowData`, or neither",
+    error(codes::lighting::kAtlasWithoutData, "bind both `atlas` and `shadowData`, or neither",
           atlas == nullptr ? "/in/shadowData" : "/in/atlas");
   }
   const bool needs_atlas =
       mode == ShadowMode::hard || mode == ShadowMode::pcf || mode == ShadowMode::pcss;
   if (needs_atlas && (atlas == nullptr || shadow_data == nullptr)) {
     error(
-        "TL002",
+        codes::lighting::kModeNeedsAtlas,
         "shadows = " + std::string(to_string(mode)) + " needs the `atlas` and `shadowData` inputs",
         mode_at);
   }
   if (atlas != nullptr && shadow_data != nullptr && mode != ShadowMode::none &&
       shadow_data->buffer_size < shadow_data_bytes(atlas->layers)) {
-    error("TL003",
+    error(codes::lighting::kShadowDataTooSmall,
           "`shadowData` ('" + shadow_data->name + "') holds " +
               std::to_string(shadow_data->buffer_size) + " bytes; an atlas of " +
               std::to_string(atlas->layers) + " layers needs " +
@@ -101,13 +144,13 @@ void check(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& 
   const auto* table = bound_resource(pass, plan, "layerTable");
   const auto* shadow = bound_resource(pass, plan, "shadow");
   if (table == nullptr || shadow == nullptr) {
-    error("TL004",
+    error(codes::lighting::kLayeredInputs,
           std::string("shadows = layered needs the `layerTable` and `shadow` inputs; `") +
               (table == nullptr ? "layerTable" : "shadow") + "` is not bound",
           mode_at);
   }
   if (table != nullptr && table->buffer_size < kLayerTableBytes) {
-    error("TL005",
+    error(codes::lighting::kLayerTableTooSmall,
           "`layerTable` ('" + table->name + "') holds " + std::to_string(table->buffer_size) +
               " bytes; it must hold at least " + std::to_string(kLayerTableBytes),
           "/in/layerTable");
@@ -154,23 +197,7 @@ fg::PassDesc TiledLightingPass::describe() {
            "texels of the pixel's surface (a shadow edge sharper than the layers hold, as "
            "at contact), the upsample also weighs each texel by its agreement with the "
            "pixel's own hard bit."});
-  desc.params = lighting_params();
-  desc.params.push_back(
-      {.name = "shadows",
-       .type = fg::ParamType::enumeration,
-       .default_value = "none",
-       .choices = {"none", "hard", "pcf", "pcss", "layered"},
-       .description = "Shadow term: none; hard, pcf or pcss from the atlas (atlas + shadowData "
-                      "required); layered from the blurred layer buffer (layerTable + shadow "
-                      "required)."});
-  desc.params.push_back(kernel_param("PCF / PCSS filter and the layered fallback"));
-  for (auto& param : pcss_params()) desc.params.push_back(std::move(param));
-  desc.params.push_back(
-      {.name = "fallback",
-       .type = fg::ParamType::enumeration,
-       .default_value = "pcf",
-       .choices = {"hard", "pcf"},
-       .description = "Layered mode: atlas lookup for lights without a layer (needs the atlas)."});
+  desc.params = param_table(kType).descs();
   desc.check = &check;
   return desc;
 }
@@ -181,7 +208,7 @@ fg::PassDesc TiledLightingPass::describe_hard() {
   desc.description = "Baseline: tiled lighting with one hard shadow-map test per light.";
   desc.ports = lighting_ports();
   for (auto& port : atlas_ports(false)) desc.ports.push_back(std::move(port));
-  desc.params = lighting_params();
+  desc.params = param_table(kHardType).descs();
   desc.check = &check;
   return desc;
 }
@@ -190,7 +217,7 @@ fg::PassDesc TiledLightingPass::describe_pcf() {
   fg::PassDesc desc = describe_hard();
   desc.type = kPcfType;
   desc.description = "Baseline: tiled lighting with percentage-closer filtering (box kernel).";
-  desc.params.push_back(kernel_param("PCF box filter"));
+  desc.params = param_table(kPcfType).descs();
   return desc;
 }
 
@@ -198,9 +225,19 @@ fg::PassDesc TiledLightingPass::describe_pcss() {
   fg::PassDesc desc = describe_hard();
   desc.type = kPcssType;
   desc.description = "Baseline: tiled lighting with PCSS (blocker search, penumbra estimate, PCF).";
-  desc.params.push_back(kernel_param("PCF step (the largest penumbra it can draw)"));
-  for (auto& param : pcss_params()) desc.params.push_back(std::move(param));
+  desc.params = param_table(kPcssType).descs();
   return desc;
+}
+
+const fg::ParamTable<TiledLightingParams>& TiledLightingPass::param_table(std::string_view type) {
+  static const Table tiled = tiled_table();
+  static const Table hard = lighting_table();
+  static const Table pcf = pcf_table();
+  static const Table pcss = pcss_table();
+  if (type == kHardType) return hard;
+  if (type == kPcfType) return pcf;
+  if (type == kPcssType) return pcss;
+  return tiled;
 }
 
 }  // namespace antumbra::passes

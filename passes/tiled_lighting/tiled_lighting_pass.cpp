@@ -40,11 +40,6 @@ enum Binding : std::uint32_t {
   kHardBits = 11,
 };
 
-int kernel_of(const fg::PlanPass& pass) {
-  const std::string kernel = param_string(pass, "kernel");
-  return kernel.empty() ? 11 : std::stoi(kernel);
-}
-
 }  // namespace
 
 std::optional<ShadowMode> parse_shadow_mode(std::string_view name) {
@@ -76,10 +71,11 @@ ShadowMode TiledLightingPass::mode_of(const fg::PlanPass& pass) {
   if (pass.type == kHardType) return ShadowMode::hard;
   if (pass.type == kPcfType) return ShadowMode::pcf;
   if (pass.type == kPcssType) return ShadowMode::pcss;
-  return parse_shadow_mode(param_string(pass, "shadows")).value_or(ShadowMode::none);
+  return param_table(pass.type).read(pass.params).shadows;
 }
 
-TiledLightingPass::TiledLightingPass(const fg::PlanPass& pass) : mode_(mode_of(pass)) {
+TiledLightingPass::TiledLightingPass(const fg::PlanPass& pass)
+    : params_(param_table(pass.type).read(pass.params)), mode_(mode_of(pass)) {
 }
 
 void TiledLightingPass::prepare(fgvk::PrepareContext& context) {
@@ -112,8 +108,6 @@ void TiledLightingPass::prepare(fgvk::PrepareContext& context) {
   const std::array<VkPushConstantRange, 1> push{{{kComp, 0, sizeof(PushConstants)}}};
   layout_ = gpu::create_pipeline_layout(context.gpu, sets, push, context.pass.name + ".layout");
 
-  const bool pcf_fallback = param_string(context.pass, "fallback") != "hard";
-  const int blocker = static_cast<int>(param_float(context.pass, "blockerSearch"));
   const auto hdr_format = b.required_image("hdr").format;
   const std::vector<gpu::ShaderDefine> defines{
       {"SHADOW_MODE", std::to_string(static_cast<int>(mode_))},
@@ -122,9 +116,9 @@ void TiledLightingPass::prepare(fgvk::PrepareContext& context) {
        has_atlas_ && b.required_image("atlas").format == VK_FORMAT_D16_UNORM ? "1" : "0"},
       {"HAS_COLOUR", has_colour_ ? "1" : "0"},
       {"HAS_HARD_BITS", has_hard_bits_ ? "1" : "0"},
-      {"FALLBACK_PCF", pcf_fallback ? "1" : "0"},
-      {"KERNEL", std::to_string(kernel_of(context.pass))},
-      {"BLOCKER_SEARCH", std::to_string(blocker > 0 ? blocker : 5)},
+      {"FALLBACK_PCF", params_.pcf_fallback ? "1" : "0"},
+      {"KERNEL", std::to_string(params_.kernel)},
+      {"BLOCKER_SEARCH", std::to_string(params_.blocker_search)},
       {"HDR_FORMAT", hdr_format == VK_FORMAT_R32G32B32A32_SFLOAT ? "rgba32f" : "rgba16f"},
   };
   shader_files_.clear();
@@ -171,12 +165,9 @@ void TiledLightingPass::execute(fgvk::ExecuteContext& context) {
   }
   descriptors.push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
 
-  const PushConstants constants{param_float(context.pass, "exposure"),
-                                param_float(context.pass, "ambient"),
-                                param_float(context.pass, "specular"),
-                                param_float(context.pass, "lightSizeScale"),
-                                hdr.extent.width,
-                                hdr.extent.height};
+  const PushConstants constants{params_.lighting.exposure, params_.lighting.ambient,
+                                params_.lighting.specular, params_.light_size_scale,
+                                hdr.extent.width,          hdr.extent.height};
   vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof constants, &constants);
   vkCmdDispatch(cmd, (hdr.extent.width + kTileSize - 1) / kTileSize,
                 (hdr.extent.height + kTileSize - 1) / kTileSize, 1);

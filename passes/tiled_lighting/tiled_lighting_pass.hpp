@@ -14,6 +14,7 @@
 #include "antumbra/fg/reflection.hpp"
 #include "antumbra/fgvk/pass.hpp"
 #include "antumbra/gpu/handle.hpp"
+#include "common/lighting_reflection.hpp"
 
 namespace antumbra::passes {
 
@@ -21,6 +22,15 @@ enum class ShadowMode : std::uint8_t { none, hard, pcf, pcss, layered };
 
 std::optional<ShadowMode> parse_shadow_mode(std::string_view name);
 std::string_view to_string(ShadowMode mode);
+
+struct TiledLightingParams {
+  LightingParams lighting;
+  ShadowMode shadows = ShadowMode::none;  // tiled-lighting; shadow-* fix the mode by type
+  int kernel = 11;
+  int blocker_search = 5;
+  float light_size_scale = 1.0f;
+  bool pcf_fallback = true;  // layered: layer-less lights by PCF (else one hard test)
+};
 
 class TiledLightingPass final : public fgvk::Pass {
  public:
@@ -34,6 +44,9 @@ class TiledLightingPass final : public fgvk::Pass {
   static fg::PassDesc describe_pcf();   // shadow-pcf
   static fg::PassDesc describe_pcss();  // shadow-pcss
 
+  // The parameters of pass type `type` (the four differ in which they have).
+  static const fg::ParamTable<TiledLightingParams>& param_table(std::string_view type);
+
   // The mode comes from the pass type (shadow-*) or the `shadows` parameter.
   static ShadowMode mode_of(const fg::PlanPass& pass);
 
@@ -44,6 +57,7 @@ class TiledLightingPass final : public fgvk::Pass {
   [[nodiscard]] std::vector<std::string> shader_files() const override { return shader_files_; }
 
  private:
+  TiledLightingParams params_;
   ShadowMode mode_;
   bool has_atlas_ = false;
   bool has_colour_ = false;

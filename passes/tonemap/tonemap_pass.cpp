@@ -17,30 +17,25 @@ struct PushConstants {
   std::uint32_t encode_srgb;
 };
 
-std::uint32_t operator_index(const std::string& name) {
-  if (name == "reinhard") return 1;
-  if (name == "linear") return 2;
-  return 0;  // aces
-}
-
 bool is_srgb_format(VkFormat format) {
   return format == VK_FORMAT_R8G8B8A8_SRGB || format == VK_FORMAT_B8G8R8A8_SRGB;
 }
 
 }  // namespace
 
-TonemapPass::TonemapPass(const fg::PlanPass& /*pass*/) {}
+TonemapPass::TonemapPass(const fg::PlanPass& pass) : params_(param_table().read(pass.params)) {
+}
 
 void TonemapPass::prepare(fgvk::PrepareContext& context) {
   constexpr VkShaderStageFlags kFrag = VK_SHADER_STAGE_FRAGMENT_BIT;
-  set_layout_ = gpu::DescriptorSetLayoutBuilder()
-                    .combined_image_sampler(0, kFrag)
-                    .build(context.gpu, context.pass.name + ".set");
+  set_layout_ = gpu::DescriptorSetLayoutBuilder().combined_image_sampler(0, kFrag).build(
+      context.gpu, context.pass.name + ".set");
   const std::array<VkDescriptorSetLayout, 1> sets{set_layout_};
   const std::array<VkPushConstantRange, 1> push{{{kFrag, 0, sizeof(PushConstants)}}};
   layout_ = gpu::create_pipeline_layout(context.gpu, sets, push, context.pass.name + ".layout");
-  pipeline_ = build_fullscreen_pipeline(context, "tonemap/tonemap.frag", layout_,
-                                        context.bindings.required_image("ldr").format, shader_files_);
+  pipeline_ =
+      build_fullscreen_pipeline(context, "tonemap/tonemap.frag", layout_,
+                                context.bindings.required_image("ldr").format, shader_files_);
 }
 
 void TonemapPass::execute(fgvk::ExecuteContext& context) {
@@ -52,8 +47,7 @@ void TonemapPass::execute(fgvk::ExecuteContext& context) {
   gpu::PushDescriptors()
       .combined_image_sampler(0, hdr.view, context.samplers.nearest_clamp, hdr.layout)
       .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_);
-  const PushConstants constants{param_float(context.pass, "exposure"),
-                                operator_index(param_string(context.pass, "operator")),
+  const PushConstants constants{params_.exposure, static_cast<std::uint32_t>(params_.tone_operator),
                                 is_srgb_format(ldr.format) ? 0u : 1u};
   vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof constants, &constants);
   end_fullscreen(cmd);

@@ -2,18 +2,28 @@
 // Pass type "tonemap". Reflection in tonemap_desc.cpp, runtime in tonemap_pass.cpp,
 // shaders beside them.
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
-#include "antumbra/fg/reflection.hpp"
+#include "antumbra/fg/param_table.hpp"
 #include "antumbra/fgvk/pass.hpp"
 #include "antumbra/gpu/handle.hpp"
 
 namespace antumbra::passes {
 
+// The shader's operator index (tonemap.frag).
+enum class ToneOperator : std::uint32_t { aces = 0, reinhard = 1, linear = 2 };
+
+struct TonemapParams {
+  ToneOperator tone_operator = ToneOperator::aces;
+  float exposure = 1.0f;
+};
+
 class TonemapPass final : public fgvk::Pass {
  public:
   static fg::PassDesc describe();
+  static const fg::ParamTable<TonemapParams>& param_table();
   explicit TonemapPass(const fg::PlanPass& pass);
 
   void prepare(fgvk::PrepareContext& context) override;
@@ -21,6 +31,7 @@ class TonemapPass final : public fgvk::Pass {
   [[nodiscard]] std::vector<std::string> shader_files() const override { return shader_files_; }
 
  private:
+  TonemapParams params_;
   gpu::DescriptorSetLayout set_layout_;
   gpu::PipelineLayout layout_;
   gpu::Pipeline pipeline_;

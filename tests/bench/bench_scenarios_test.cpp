@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "antumbra/fg/json_document.hpp"
+#include "antumbra/base/json_document.hpp"
 #include "bench_scenarios.hpp"
 
 namespace antumbra::app {
@@ -62,8 +62,8 @@ TEST(BenchScenarios, FaceSizesDivideByTheDerivedMapsFactors) {
 }
 
 TEST(BenchScenarios, FitShadowResourcesUsesTheFaceAndKeepsTheMinMapsFactor) {
-  auto document = fg::load_json_file(std::string(ANTUMBRA_TEST_SOURCE_DIR) +
-                                     "/data/graphs/layered-ssss-min.json");
+  auto document = base::load_json_file(std::string(ANTUMBRA_TEST_SOURCE_DIR) +
+                                       "/data/graphs/layered-ssss-min.json");
   ASSERT_TRUE(document.ok());
   auto graph = fg::parse_graph(document.value());
   ASSERT_TRUE(graph.ok());

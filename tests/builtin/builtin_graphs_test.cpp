@@ -133,3 +133,22 @@ TEST(BuiltinPasses, ParameterDefaultsAreValid) {
       EXPECT_FALSE(port.description.empty()) << type << "." << port.name;
   }
 }
+
+// Every registered type reads its parameters through its field table when constructed:
+// from the defaults alone (what the compiler fills in) and from a plan that names each
+// parameter with its default, no constructor throws or rejects a value.
+TEST(BuiltinPasses, EveryTypeConstructsFromItsDefaults) {
+  const auto registry = passes::builtin_pass_registry();
+  ASSERT_GE(registry.reflection().passes().size(), 16u);
+  for (const auto& [type, desc] : registry.reflection().passes()) {
+    const auto make = registry.factory(type);
+    ASSERT_NE(make, nullptr) << type;
+    fg::PlanPass pass;
+    pass.name = "p";
+    pass.type = type;
+    pass.params = fg::Json::object();
+    EXPECT_NO_THROW(EXPECT_NE(make(pass), nullptr)) << type << " without params";
+    for (const auto& p : desc.params) pass.params[p.name] = p.default_value;
+    EXPECT_NO_THROW(EXPECT_NE(make(pass), nullptr)) << type << " with every default";
+  }
+}

@@ -29,7 +29,7 @@ std::uint32_t rgb_at(const Image8& image, std::uint32_t x, std::uint32_t y) {
 }
 
 void set_param(fg::GraphDesc& graph, const std::string& pass, const std::string& name,
-               fg::Json value) {
+               base::Json value) {
   const int index = graph.find_pass(pass);
   ASSERT_GE(index, 0) << pass;
   graph.passes[static_cast<std::size_t>(index)].params[name] = std::move(value);
@@ -54,9 +54,9 @@ int layers_used(const scene::Scene& scene, int max_layers) {
 class DebugViewsTest : public RenderTest {
  protected:
   // debug-views.json with `output` as its output, after `edit`; renders 2 frames.
-  app::RenderSession* render_view(const std::string& output,
-                                  const std::function<void(fg::GraphDesc&)>& edit = {}) {
-    app::RenderSession* session = open_session(kSmall);
+  runtime::RenderSession* render_view(const std::string& output,
+                                      const std::function<void(fg::GraphDesc&)>& edit = {}) {
+    runtime::RenderSession* session = open_session(kSmall);
     if (session == nullptr) return nullptr;
     fg::GraphDesc graph = load_graph_file(source_dir() / kGraph);
     graph.output = output;
@@ -77,7 +77,7 @@ class DebugViewsTest : public RenderTest {
 };
 
 #define RENDER_VIEW(var, ...)                                \
-  app::RenderSession* var = render_view(__VA_ARGS__);        \
+  runtime::RenderSession* var = render_view(__VA_ARGS__);    \
   if ((var) == nullptr) {                                    \
     if (!skip_reason_.empty()) GTEST_SKIP() << skip_reason_; \
     FAIL() << "graph did not load";                          \

@@ -10,8 +10,8 @@
 namespace antumbra::editor {
 namespace {
 
-fg::Diagnostics check(const std::string& text) {
-  const auto document = fg::parse_json(text, "script.json");
+base::Diagnostics check(const std::string& text) {
+  const auto document = base::parse_json(text, "script.json");
   EXPECT_TRUE(document.ok()) << document.diagnostics().to_text();
   return check_edit_script(document.value());
 }

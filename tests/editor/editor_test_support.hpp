@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "antumbra/fg/diagnostics.hpp"
+#include "antumbra/base/diagnostics.hpp"
 #include "antumbra/fg/registry.hpp"
 
 namespace antumbra::editor::testing {
@@ -21,7 +21,7 @@ std::string read(const std::filesystem::path& file);
 // The value of a result that must be good; a bad one fails the test with its diagnostics
 // (as an exception) instead of reaching an empty value.
 template <class T>
-T take(fg::Result<T> result) {
+T take(base::Result<T> result) {
   if (!result.ok()) throw std::runtime_error(result.diagnostics().to_text());
   return std::move(result.value());
 }

@@ -155,13 +155,13 @@ TEST_F(GraphDocumentTest, NewParamsAreAddedAndRemovedByUndo) {
   GraphDocument doc = load(fixture("graph.json"));
   ASSERT_TRUE(doc.set_param("tonemap", "enabled", false));
   ASSERT_TRUE(doc.set_param("lighting", "ambient", 0.5));  // the pass had no "params"
-  const fg::Json& tonemap = doc.json()["passes"][2]["params"];
+  const base::Json& tonemap = doc.json()["passes"][2]["params"];
   std::vector<std::string> keys;
   for (auto it = tonemap.begin(); it != tonemap.end(); ++it) keys.push_back(it.key());
   EXPECT_EQ(keys, (std::vector<std::string>{"exposure", "operator", "x-unknown", "enabled"}));
   EXPECT_EQ(doc.json()["passes"][1]["params"]["ambient"], 0.5);
   // Still a graph the engine's parser accepts.
-  const auto reparsed = fg::parse_json(doc.to_text(), "graph.json");
+  const auto reparsed = base::parse_json(doc.to_text(), "graph.json");
   ASSERT_TRUE(reparsed.ok());
   EXPECT_TRUE(fg::parse_graph(reparsed.value()).ok());
 
@@ -238,8 +238,9 @@ TEST_F(GraphDocumentTest, BadFilesAreLocatedDiagnostics) {
       "nameless.json", lookup_in(registry_));
   ASSERT_FALSE(structure.ok());
   const auto& items = structure.diagnostics().items();
-  const auto nameless = std::find_if(
-      items.begin(), items.end(), [](const fg::Diagnostic& d) { return d.pointer == "/passes/0"; });
+  const auto nameless = std::find_if(items.begin(), items.end(), [](const base::Diagnostic& d) {
+    return d.pointer == "/passes/0";
+  });
   ASSERT_NE(nameless, items.end()) << structure.diagnostics().to_text();
   EXPECT_EQ(nameless->line, 4);
   EXPECT_EQ(nameless->column, 5);

@@ -170,7 +170,7 @@ TEST(Recovery, ANewerRecoveryFileIsReportedAndRecovered) {
   auto doc = testing::take(SceneDocument::load(file));
   EXPECT_TRUE(doc.recovery_available());
   EXPECT_EQ(doc.find_light("lamp renamed"), -1);  // load itself reads the file
-  const fg::Diagnostics diagnostics = doc.recover();
+  const base::Diagnostics diagnostics = doc.recover();
   EXPECT_FALSE(diagnostics.has_errors()) << diagnostics.to_text();
   EXPECT_EQ(doc.find_light("lamp renamed"), 3);
   EXPECT_EQ(doc.lights()[2].position, glm::vec3(1.5f, 2.0f, 1.0f));
@@ -197,12 +197,12 @@ TEST(Recovery, ABadRecoveryFileIsADiagnosticAndChangesNothing) {
   ScratchDir dir;
   const auto file = dir.copy(fixture("lamps.json"));
   auto doc = testing::take(SceneDocument::load(file));
-  const fg::Diagnostics none = doc.recover();
+  const base::Diagnostics none = doc.recover();
   ASSERT_NE(none.find("ED020"), nullptr);
 
   testing::write(RecoveryFile::path_for(file), "{\n  \"version\": 1,\n  \"lights\": [\n");
   const std::string before = doc.to_text();
-  const fg::Diagnostics bad = doc.recover();
+  const base::Diagnostics bad = doc.recover();
   ASSERT_TRUE(bad.has_errors());
   EXPECT_EQ(bad[0].line, 4);
   EXPECT_EQ(doc.to_text(), before);

@@ -4,8 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include "antumbra/base/diagnostic_codes.hpp"
 #include "antumbra/editor/scene_document.hpp"
-#include "antumbra/scene/scene_codes.hpp"
 #include "antumbra/scene/scene_file.hpp"
 #include "editor_test_support.hpp"
 
@@ -87,7 +87,7 @@ TEST(SceneDocument, BadJsonIsADiagnosticWithLineAndColumn) {
   const auto result = SceneDocument::load(fixture("bad_syntax.json"));
   ASSERT_FALSE(result.ok());
   ASSERT_FALSE(result.diagnostics().empty());
-  const fg::Diagnostic& d = result.diagnostics()[0];
+  const base::Diagnostic& d = result.diagnostics()[0];
   EXPECT_EQ(std::filesystem::path(d.file).filename(), "bad_syntax.json");
   EXPECT_EQ(d.line, 5);
   EXPECT_GT(d.column, 0);
@@ -96,7 +96,7 @@ TEST(SceneDocument, BadJsonIsADiagnosticWithLineAndColumn) {
 TEST(SceneDocument, ABadLightFieldIsLocated) {
   const auto result = SceneDocument::load(fixture("bad_light.json"));
   ASSERT_FALSE(result.ok());
-  const fg::Diagnostic* d = result.diagnostics().find("ED012");
+  const base::Diagnostic* d = result.diagnostics().find("ED012");
   ASSERT_NE(d, nullptr) << result.diagnostics().to_text();
   EXPECT_EQ(d->pointer, "/lights/1/range");
   EXPECT_EQ(d->line, 7);
@@ -138,8 +138,8 @@ TEST(SceneDocument, EveryFieldEditsUndoesAndRedoes) {
   EXPECT_FALSE(doc.lights()[4].casts_shadows);
   EXPECT_EQ(doc.lights()[5].size, 0.3f);
   // Floats from sliders are written as the short decimals they are (3.3, not 3.2999999).
-  EXPECT_EQ(fg::Json::parse(doc.to_text())["lights"][1]["position"],
-            fg::Json::parse("[3.3, 2.5, -1.0]"));
+  EXPECT_EQ(base::Json::parse(doc.to_text())["lights"][1]["position"],
+            base::Json::parse("[3.3, 2.5, -1.0]"));
   EXPECT_EQ(doc.to_text().find("3.29999"), std::string::npos);
   expect_engine_agrees(doc);
 
@@ -160,9 +160,10 @@ TEST(SceneDocument, DraggedPositionsAreWrittenTo4Decimals) {
   ASSERT_TRUE(doc.set_position(0, {-2.9999998f, 2.8f, -4.000001f}));
   ASSERT_TRUE(doc.set_intensity(1, 7.123456f));
   const std::string text = doc.to_text();
-  EXPECT_EQ(fg::Json::parse(text)["lights"][0]["position"], fg::Json::parse("[-3.0, 2.8, -4.0]"))
+  EXPECT_EQ(base::Json::parse(text)["lights"][0]["position"],
+            base::Json::parse("[-3.0, 2.8, -4.0]"))
       << text;
-  EXPECT_EQ(fg::Json::parse(text)["lights"][1]["intensity"], fg::Json::parse("7.1235")) << text;
+  EXPECT_EQ(base::Json::parse(text)["lights"][1]["intensity"], base::Json::parse("7.1235")) << text;
   EXPECT_EQ(text.find("9999"), std::string::npos) << text;
   EXPECT_EQ(text.find("0000"), std::string::npos) << text;
 }
@@ -260,7 +261,7 @@ TEST(SceneDocument, ChangingTheTypeDropsKeysTheNewTypeIgnores) {
   const std::string original = doc.to_text();
   ASSERT_TRUE(doc.set_type(4, scene::LightType::point));  // the spot
   EXPECT_EQ(doc.lights()[4].type, scene::LightType::point);
-  const fg::Json& spot = doc.json()["lights"][4];
+  const base::Json& spot = doc.json()["lights"][4];
   EXPECT_FALSE(spot.contains("direction"));
   EXPECT_FALSE(spot.contains("angle"));
   expect_engine_agrees(doc);                              // no "has no effect" warnings either
@@ -311,13 +312,13 @@ TEST(SceneDocument, UnknownKeysSurviveEditsInPlace) {
   const auto changed = changed_lines(original, text);
   ASSERT_EQ(changed.size(), 1u) << text;
   EXPECT_NE(changed[0].find("\"range\": 6.5}"), std::string::npos) << changed[0];
-  fg::Json expected = fg::Json::parse(original);
+  base::Json expected = base::Json::parse(original);
   expected["lights"][0]["range"] = 6.5;
-  EXPECT_EQ(fg::Json::parse(text), expected);  // ordered: key order kept too
+  EXPECT_EQ(base::Json::parse(text), expected);  // ordered: key order kept too
 
   // A structural edit rewrites the layout but still keeps every unknown key, in order.
   ASSERT_TRUE(doc.add_light());
-  const fg::Json rewritten = fg::Json::parse(doc.to_text());
+  const base::Json rewritten = base::Json::parse(doc.to_text());
   EXPECT_EQ(rewritten["x-editorLayout"], expected["x-editorLayout"]);
   EXPECT_EQ(rewritten["x-trailer"], expected["x-trailer"]);
   EXPECT_EQ(rewritten["lights"][0]["x-gel"], expected["lights"][0]["x-gel"]);
@@ -328,7 +329,7 @@ TEST(SceneDocument, UnknownKeysSurviveEditsInPlace) {
                                             "x-trailer"}));
   EXPECT_EQ(doc.to_text().rfind("{\n  \"version\": 1,\n", 0), 0u);  // 2-space canonical
   // The engine is strict about unknown keys; validate() says so without stopping the editor.
-  EXPECT_NE(doc.validate().find(scene::codes::kUnknownKey), nullptr) << doc.validate().to_text();
+  EXPECT_NE(doc.validate().find(codes::scene::kUnknownKey), nullptr) << doc.validate().to_text();
 }
 
 TEST(SceneDocument, TheAtriumKeepsItsLayoutWhenALightMoves) {

@@ -74,7 +74,7 @@ TEST_F(ShaderCompilerTest, MissingDefineIsAnError) {
   request.defines.clear();
   auto result = compiler.compile(request);
   EXPECT_FALSE(result.ok());
-  const fg::Diagnostic* error = result.diagnostics().find(shader_codes::kCompile);
+  const base::Diagnostic* error = result.diagnostics().find(codes::shader::kCompile);
   ASSERT_NE(error, nullptr);
   EXPECT_EQ(fs::path(error->file).filename(), "fill.comp");
   EXPECT_EQ(error->line, 7);
@@ -85,12 +85,12 @@ TEST_F(ShaderCompilerTest, ErrorInIncludeReportsTheIncludedFileAndLine) {
   ShaderCompiler compiler(options());
   auto result = compiler.compile(fill_request());
   ASSERT_FALSE(result.ok());
-  const fg::Diagnostic* error = result.diagnostics().find(shader_codes::kCompile);
+  const base::Diagnostic* error = result.diagnostics().find(codes::shader::kCompile);
   ASSERT_NE(error, nullptr) << result.diagnostics().to_text();
   EXPECT_EQ(fs::path(error->file), fs::weakly_canonical(root() / "lib" / "detail" / "scale.glsl"))
       << result.diagnostics().to_text();
   EXPECT_EQ(error->line, 2) << result.diagnostics().to_text();
-  EXPECT_EQ(error->severity, fg::Severity::error);
+  EXPECT_EQ(error->severity, base::Severity::error);
 }
 
 TEST_F(ShaderCompilerTest, AMissingSemicolonIsReportedOnItsLineWithTheSourceAndACaret) {
@@ -100,23 +100,22 @@ TEST_F(ShaderCompilerTest, AMissingSemicolonIsReportedOnItsLineWithTheSourceAndA
   ShaderCompiler compiler(options());
   auto result = compiler.compile({root() / "shaders" / "semi.frag", {}, {}, "main"});
   ASSERT_FALSE(result.ok());
-  const fg::Diagnostic* error = result.diagnostics().find(shader_codes::kCompile);
+  const base::Diagnostic* error = result.diagnostics().find(codes::shader::kCompile);
   ASSERT_NE(error, nullptr) << result.diagnostics().to_text();
   EXPECT_EQ(error->line, 4) << result.diagnostics().to_text();
   EXPECT_EQ(error->column, 16) << result.diagnostics().to_text();
   EXPECT_EQ(error->excerpt, "  float x = 1.0");
-  EXPECT_NE(fg::format_text(*error).find("\n  |   float x = 1.0\n  |                ^"),
+  EXPECT_NE(base::format_text(*error).find("\n  |   float x = 1.0\n  |                ^"),
             std::string::npos)
-      << fg::format_text(*error);
+      << base::format_text(*error);
 }
 
 TEST_F(ShaderCompilerTest, AnErrorInsideALineGetsACaretUnderItsToken) {
-  write(root() / "shaders" / "word.frag",
-        "#version 460\nvoid main() {\n  this is not glsl;\n}\n");
+  write(root() / "shaders" / "word.frag", "#version 460\nvoid main() {\n  this is not glsl;\n}\n");
   ShaderCompiler compiler(options());
   auto result = compiler.compile({root() / "shaders" / "word.frag", {}, {}, "main"});
   ASSERT_FALSE(result.ok());
-  const fg::Diagnostic* error = result.diagnostics().find(shader_codes::kCompile);
+  const base::Diagnostic* error = result.diagnostics().find(codes::shader::kCompile);
   ASSERT_NE(error, nullptr);
   EXPECT_EQ(error->line, 3) << result.diagnostics().to_text();
   EXPECT_EQ(error->excerpt, "  this is not glsl;");
@@ -132,9 +131,9 @@ TEST_F(ShaderCompilerTest, MissingIncludeAndUnknownStage) {
   EXPECT_EQ(missing.diagnostics()[0].line, 2) << missing.diagnostics().to_text();
   auto unknown = compiler.compile({root() / "shaders" / "x.glsl", {}, {}, "main"});
   ASSERT_FALSE(unknown.ok());
-  EXPECT_NE(unknown.diagnostics().find(shader_codes::kUnknownStage), nullptr);
+  EXPECT_NE(unknown.diagnostics().find(codes::shader::kUnknownStage), nullptr);
   auto unreadable = compiler.compile({root() / "shaders" / "none.comp", {}, {}, "main"});
-  EXPECT_NE(unreadable.diagnostics().find(shader_codes::kUnreadable), nullptr);
+  EXPECT_NE(unreadable.diagnostics().find(codes::shader::kUnreadable), nullptr);
 }
 
 TEST_F(ShaderCompilerTest, SecondCompileHitsTheDiskCache) {
@@ -178,7 +177,7 @@ TEST(GlslangLog, ParsesLocatedAndUnlocatedLines) {
   EXPECT_EQ(diagnostics[0].file, "/a/b.frag");
   EXPECT_EQ(diagnostics[0].line, 12);
   EXPECT_EQ(diagnostics[0].code, "SH001");
-  EXPECT_EQ(diagnostics[1].severity, fg::Severity::warning);
+  EXPECT_EQ(diagnostics[1].severity, base::Severity::warning);
   EXPECT_EQ(diagnostics[2].file, "/a/b.frag");
   EXPECT_EQ(diagnostics[2].line, 4);
 }

@@ -1,7 +1,7 @@
 // compile() end to end on the good fixtures: order, culling, lifetimes, aliasing, barriers.
 #include <gtest/gtest.h>
 
-#include "antumbra/fg/diagnostic_codes.hpp"
+#include "antumbra/base/diagnostic_codes.hpp"
 #include "test_support.hpp"
 
 namespace antumbra::fg {
@@ -46,8 +46,10 @@ TEST(Compile, ViewportScalesRelativeResources) {
   CompileOptions options;
   options.viewport = {800, 600};
   const Plan plan = compile_good("after.json", options);
-  EXPECT_EQ(plan.resources[static_cast<std::size_t>(plan.find_resource("quarter"))].extent, (Extent2D{400, 150}));
-  EXPECT_EQ(plan.resources[static_cast<std::size_t>(plan.find_resource("depth"))].extent, (Extent2D{1024, 512}));
+  EXPECT_EQ(plan.resources[static_cast<std::size_t>(plan.find_resource("quarter"))].extent,
+            (Extent2D{400, 150}));
+  EXPECT_EQ(plan.resources[static_cast<std::size_t>(plan.find_resource("depth"))].extent,
+            (Extent2D{1024, 512}));
 }
 
 TEST(Compile, CullsPassesThatReachNothing) {
@@ -56,7 +58,8 @@ TEST(Compile, CullsPassesThatReachNothing) {
   const Plan& plan = r.value();
   EXPECT_EQ(plan.culled_passes, (std::vector<std::string>{"shadows", "debug", "debug2"}));
   EXPECT_EQ(plan.disabled_passes, (std::vector<std::string>{"off"}));
-  EXPECT_EQ(pass_names(plan), (std::vector<std::string>{"gbuffer", "lighting", "capture", "keepMe", "tonemap"}));
+  EXPECT_EQ(pass_names(plan),
+            (std::vector<std::string>{"gbuffer", "lighting", "capture", "keepMe", "tonemap"}));
   EXPECT_EQ(plan.find_resource("atlas"), -1);  // only a culled pass used it
   const Diagnostic* note = r.diagnostics().find(codes::kPassCulled);
   ASSERT_NE(note, nullptr);
@@ -68,8 +71,8 @@ TEST(Compile, CullsPassesThatReachNothing) {
 
 TEST(Compile, ExplicitAfterReordersStably) {
   const Plan plan = compile_good("after.json");
-  EXPECT_EQ(pass_names(plan),
-            (std::vector<std::string>{"gbuffer", "lightList", "lighting", "quarter", "mix", "tonemap"}));
+  EXPECT_EQ(pass_names(plan), (std::vector<std::string>{"gbuffer", "lightList", "lighting",
+                                                        "quarter", "mix", "tonemap"}));
   const PlanPass* light_list = plan.find_pass("lightList");
   EXPECT_EQ(light_list->source_index, 0);
   EXPECT_EQ(light_list->params["label"], "point");
@@ -90,7 +93,8 @@ TEST(Compile, AliasingSavesMemoryWithoutOverlap) {
       EXPECT_FALSE(live && overlap) << x.name << " and " << y.name;
     }
   }
-  // half1 dies (blurY) before half3 is born? No: half1 ends at blurX (4), half3 starts at blurY (5).
+  // half1 dies (blurY) before half3 is born? No: half1 ends at blurX (4), half3 starts at blurY
+  // (5).
   const auto& half1 = plan.resources[static_cast<std::size_t>(plan.find_resource("half1"))];
   const auto& half3 = plan.resources[static_cast<std::size_t>(plan.find_resource("half3"))];
   EXPECT_LT(half1.last_use, half3.first_use);
@@ -141,7 +145,8 @@ TEST(Compile, CycleMessageListsEdges) {
 
 TEST(Compile, WarnsAboutUnusedResources) {
   std::string text = testing::read_text(data_path("graphs/good/deferred.json"));
-  text.replace(text.find("\"ldr\": {"), 0, "\"spare\": { \"kind\": \"buffer\", \"size\": 4 },\n    ");
+  text.replace(text.find("\"ldr\": {"), 0,
+               "\"spare\": { \"kind\": \"buffer\", \"size\": 4 },\n    ");
   auto r = testing::compile_json(text);
   ASSERT_TRUE(r.ok()) << r.diagnostics().to_text();
   const Diagnostic* d = r.diagnostics().find(codes::kUnusedResource);

@@ -1,8 +1,8 @@
 // Each compiler phase on hand-made input.
 #include <gtest/gtest.h>
 
+#include "antumbra/base/diagnostic_codes.hpp"
 #include "antumbra/fg/compiler_phases.hpp"
-#include "antumbra/fg/diagnostic_codes.hpp"
 #include "test_support.hpp"
 
 namespace antumbra::fg {
@@ -22,7 +22,8 @@ struct Builder {
   }
   Builder& pass(const std::string& name, const std::string& type,
                 std::vector<std::pair<std::string, std::string>> in,
-                std::vector<std::pair<std::string, std::string>> out, std::vector<std::string> after = {}) {
+                std::vector<std::pair<std::string, std::string>> out,
+                std::vector<std::string> after = {}) {
     PassInstanceDesc p;
     p.name = name;
     p.type = type;
@@ -99,7 +100,7 @@ TEST(DependencyPhase, EdgesFollowDescriptionOrder) {
       {0, 2, EdgeKind::write_after_write, 0},  // rewriteA after makeA
       {0, 3, EdgeKind::write_after_read, 2},   // makeA read last frame's c before writeC
       {1, 2, EdgeKind::read_after_write, 1},
-      {1, 2, EdgeKind::write_after_read, 0},   // readA must read a before rewriteA
+      {1, 2, EdgeKind::write_after_read, 0},  // readA must read a before rewriteA
       {2, 3, EdgeKind::read_after_write, 0},
   };
   EXPECT_EQ(p.deps.edges, expected);
@@ -134,7 +135,10 @@ TEST(CyclePhase, AcyclicGraphLeavesNothing) {
 
 TEST(CullPhase, KeepsProducersOfOutputAndSideEffects) {
   Builder b;
-  b.image("a", Format::rgba8).image("dead", Format::rgba8).image("o", Format::rgba8).image("x", Format::rgba8);
+  b.image("a", Format::rgba8)
+      .image("dead", Format::rgba8)
+      .image("o", Format::rgba8)
+      .image("x", Format::rgba8);
   b.pass("makeA", "composite", {}, {{"out", "a"}});
   b.pass("deadEnd", "blur", {{"src", "a"}}, {{"dst", "dead"}});
   b.pass("capture", "readback", {{"src", "x"}}, {});
@@ -230,8 +234,8 @@ TEST(AliasingPhase, OverlappingLifetimesNeverShareAndRespectAlignment) {
     for (std::size_t j = i + 1; j < 5; ++j) {
       const auto& b = plan.resources[j];
       const bool live_together = a.first_use <= b.last_use && b.first_use <= a.last_use;
-      const bool memory_overlaps =
-          a.heap_offset < b.heap_offset + b.footprint.size && b.heap_offset < a.heap_offset + a.footprint.size;
+      const bool memory_overlaps = a.heap_offset < b.heap_offset + b.footprint.size &&
+                                   b.heap_offset < a.heap_offset + a.footprint.size;
       EXPECT_FALSE(live_together && memory_overlaps) << a.name << " vs " << b.name;
     }
   }

@@ -1,7 +1,7 @@
 // Structural parsing of graph files into GraphDesc.
 #include <gtest/gtest.h>
 
-#include "antumbra/fg/diagnostic_codes.hpp"
+#include "antumbra/base/diagnostic_codes.hpp"
 #include "antumbra/fg/graph_desc.hpp"
 #include "test_support.hpp"
 
@@ -52,7 +52,9 @@ TEST(GraphDesc, Sizes) {
 }
 
 TEST(GraphDesc, UnknownKeyPointsAtKeyWithSuggestion) {
-  auto g = parse("{\"version\":1,\"resources\":{},\n  \"pases\":[],\"passes\":[{\"name\":\"p\",\"type\":\"t\"}],\"output\":\"x\"}");
+  auto g = parse(
+      "{\"version\":1,\"resources\":{},\n  "
+      "\"pases\":[],\"passes\":[{\"name\":\"p\",\"type\":\"t\"}],\"output\":\"x\"}");
   ASSERT_FALSE(g.ok());
   const Diagnostic* d = g.diagnostics().find(codes::kUnknownKey);
   ASSERT_NE(d, nullptr);
@@ -63,11 +65,14 @@ TEST(GraphDesc, UnknownKeyPointsAtKeyWithSuggestion) {
 }
 
 TEST(GraphDesc, VersionChecks) {
-  EXPECT_EQ(parse(R"({"resources":{},"passes":[],"output":"x"})").diagnostics()[0].code, codes::kVersionMissing);
-  auto newer = parse(R"({"version":7,"resources":{},"passes":[{"name":"p","type":"t"}],"output":"x"})");
+  EXPECT_EQ(parse(R"({"resources":{},"passes":[],"output":"x"})").diagnostics()[0].code,
+            codes::kVersionMissing);
+  auto newer =
+      parse(R"({"version":7,"resources":{},"passes":[{"name":"p","type":"t"}],"output":"x"})");
   ASSERT_NE(newer.diagnostics().find(codes::kVersionUnsupported), nullptr);
-  EXPECT_NE(newer.diagnostics().find(codes::kVersionUnsupported)->message.find("newer than supported"),
-            std::string::npos);
+  EXPECT_NE(
+      newer.diagnostics().find(codes::kVersionUnsupported)->message.find("newer than supported"),
+      std::string::npos);
   EXPECT_NE(parse(R"({"version":0,"resources":{},"passes":[{"name":"p","type":"t"}],"output":"x"})")
                 .diagnostics()
                 .find(codes::kVersionUnsupported),
@@ -75,7 +80,8 @@ TEST(GraphDesc, VersionChecks) {
 }
 
 TEST(GraphDesc, CollectsSeveralErrors) {
-  auto g = parse(R"({"version":1,"resources":{"a":{"kind":"image","format":"rgb8","size":"viewport/x"}},
+  auto g =
+      parse(R"({"version":1,"resources":{"a":{"kind":"image","format":"rgb8","size":"viewport/x"}},
     "passes":[{"name":"p","type":1},{"name":"p","type":"t","enabled":1}],"output":"a"})");
   ASSERT_FALSE(g.ok());
   const auto& d = g.diagnostics();

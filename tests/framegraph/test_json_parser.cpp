@@ -1,10 +1,10 @@
 // The position-tracking JSON parser: values, positions and every error code.
 #include <gtest/gtest.h>
 
-#include "antumbra/fg/diagnostic_codes.hpp"
-#include "antumbra/fg/json_document.hpp"
+#include "antumbra/base/diagnostic_codes.hpp"
+#include "antumbra/base/json_document.hpp"
 
-namespace antumbra::fg {
+namespace antumbra::base {
 namespace {
 
 Diagnostic parse_error(std::string_view text) {
@@ -44,33 +44,33 @@ TEST(JsonParser, PointerEscaping) {
 
 TEST(JsonParser, SyntaxErrorsCarryPosition) {
   const Diagnostic d = parse_error("{\n  \"a\": 1,\n}");
-  EXPECT_EQ(d.code, codes::kJsonSyntax);
+  EXPECT_EQ(d.code, codes::graph::kJsonSyntax);
   EXPECT_EQ(d.line, 3);
   EXPECT_EQ(d.column, 1);
   EXPECT_NE(d.message.find("trailing"), std::string::npos);
-  EXPECT_EQ(parse_error("[1,]").code, codes::kJsonSyntax);
-  EXPECT_EQ(parse_error("[1 2]").code, codes::kJsonSyntax);
-  EXPECT_EQ(parse_error("{\"a\" 1}").code, codes::kJsonSyntax);
-  EXPECT_EQ(parse_error("// c\n{}").code, codes::kJsonSyntax);
-  EXPECT_EQ(parse_error("01").code, codes::kJsonSyntax);
-  EXPECT_EQ(parse_error("\"\\x\"").code, codes::kJsonSyntax);
-  EXPECT_EQ(parse_error("\"\\ud800\"").code, codes::kJsonSyntax);
-  EXPECT_EQ(parse_error("nul").code, codes::kJsonSyntax);
-  EXPECT_EQ(parse_error("1e999").code, codes::kJsonSyntax);
-  EXPECT_EQ(parse_error("{} {}").code, codes::kJsonSyntax);
-  EXPECT_EQ(parse_error("\"a\nb\"").code, codes::kJsonSyntax);
+  EXPECT_EQ(parse_error("[1,]").code, codes::graph::kJsonSyntax);
+  EXPECT_EQ(parse_error("[1 2]").code, codes::graph::kJsonSyntax);
+  EXPECT_EQ(parse_error("{\"a\" 1}").code, codes::graph::kJsonSyntax);
+  EXPECT_EQ(parse_error("// c\n{}").code, codes::graph::kJsonSyntax);
+  EXPECT_EQ(parse_error("01").code, codes::graph::kJsonSyntax);
+  EXPECT_EQ(parse_error("\"\\x\"").code, codes::graph::kJsonSyntax);
+  EXPECT_EQ(parse_error("\"\\ud800\"").code, codes::graph::kJsonSyntax);
+  EXPECT_EQ(parse_error("nul").code, codes::graph::kJsonSyntax);
+  EXPECT_EQ(parse_error("1e999").code, codes::graph::kJsonSyntax);
+  EXPECT_EQ(parse_error("{} {}").code, codes::graph::kJsonSyntax);
+  EXPECT_EQ(parse_error("\"a\nb\"").code, codes::graph::kJsonSyntax);
 }
 
 TEST(JsonParser, EmptyFile) {
-  EXPECT_EQ(parse_error("").code, codes::kJsonEmpty);
+  EXPECT_EQ(parse_error("").code, codes::graph::kJsonEmpty);
   const Diagnostic d = parse_error(" \n \t\n");
-  EXPECT_EQ(d.code, codes::kJsonEmpty);
+  EXPECT_EQ(d.code, codes::graph::kJsonEmpty);
   EXPECT_EQ(d.line, 3);
 }
 
 TEST(JsonParser, InvalidUtf8) {
   for (std::string_view bad : {"\"\xFF\"", "\"\xC0\xAF\"", "\"\xED\xA0\x80\"", "\"\xE2\x82\""}) {
-    EXPECT_EQ(parse_error(bad).code, codes::kJsonInvalidUtf8) << bad;
+    EXPECT_EQ(parse_error(bad).code, codes::graph::kJsonInvalidUtf8) << bad;
   }
   auto ok = parse_json("\"\xF0\x9F\x98\x80\"", "x.json");
   EXPECT_TRUE(ok.ok());
@@ -78,7 +78,7 @@ TEST(JsonParser, InvalidUtf8) {
 
 TEST(JsonParser, DuplicateKeyPointsAtSecondKey) {
   const Diagnostic d = parse_error("{\"a\": 1,\n \"a\": 2}");
-  EXPECT_EQ(d.code, codes::kJsonDuplicateKey);
+  EXPECT_EQ(d.code, codes::graph::kJsonDuplicateKey);
   EXPECT_EQ(d.line, 2);
   EXPECT_EQ(d.column, 2);
   EXPECT_EQ(d.pointer, "/a");
@@ -95,7 +95,7 @@ TEST(JsonParser, SyntaxErrorsPointAtTheInnermostValue) {
 
 TEST(JsonParser, DepthLimit) {
   const std::string deep = std::string(300, '[') + std::string(300, ']');
-  EXPECT_EQ(parse_error(deep).code, codes::kJsonTooDeep);
+  EXPECT_EQ(parse_error(deep).code, codes::graph::kJsonTooDeep);
   auto ok = parse_json(deep, "x.json", JsonParseOptions{400});
   EXPECT_TRUE(ok.ok());
 }
@@ -109,13 +109,13 @@ TEST(JsonParser, ByteOrderMarkIsSkipped) {
 TEST(JsonParser, MissingFile) {
   auto r = load_json_file("/nonexistent/graph.json");
   ASSERT_FALSE(r.ok());
-  EXPECT_EQ(r.diagnostics()[0].code, codes::kFileUnreadable);
+  EXPECT_EQ(r.diagnostics()[0].code, codes::graph::kFileUnreadable);
 }
 
 TEST(JsonParser, DirectoryIsNotReadAsAnEmptyFile) {
   auto r = load_json_file(ANTUMBRA_FG_TEST_DATA);
   ASSERT_FALSE(r.ok());
-  EXPECT_EQ(r.diagnostics()[0].code, codes::kFileUnreadable);
+  EXPECT_EQ(r.diagnostics()[0].code, codes::graph::kFileUnreadable);
   EXPECT_NE(r.diagnostics()[0].message.find("directory"), std::string::npos);
 }
 
@@ -126,4 +126,4 @@ TEST(Diagnostics, FormatsLikeACompiler) {
 }
 
 }  // namespace
-}  // namespace antumbra::fg
+}  // namespace antumbra::base

@@ -27,7 +27,7 @@ using editor_app::EditorState;
 class EditorStateGpu : public RenderTest {
  protected:
   // The lamps fixture and layered-ssss with a cap of 3, copied where saves may go.
-  std::unique_ptr<EditorState> open(app::RenderSession& session) {
+  std::unique_ptr<EditorState> open(runtime::RenderSession& session) {
     fs::copy_file(source_dir() / "tests/data/editor/lamps.json", dir_.path() / "scene.json");
     std::string graph = read(source_dir() / "data/graphs/layered-ssss.json");
     const auto at = graph.find("\"maxLayers\": 4");

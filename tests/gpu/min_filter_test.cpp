@@ -61,7 +61,7 @@ std::vector<float> cpu_min_filter(const gpu::HostImage& atlas) {
 }
 
 // Texels of `layer` where the GPU result differs from the CPU filter of the atlas.
-int mismatches(app::RenderSession& session, std::uint32_t layer, float* nearest) {
+int mismatches(runtime::RenderSession& session, std::uint32_t layer, float* nearest) {
   const auto atlas = read_resource(session, "atlas", layer);
   const auto filtered = read_resource(session, "minDepth", layer);
   const auto expected = cpu_min_filter(atlas);

@@ -32,10 +32,10 @@ float tonemap_channel(float x) {
 class OutputTest : public RenderTest {
  protected:
   // Renders the default graph with `output` as its output; checks the plan's passes.
-  app::RenderSession* render_output(const std::string& output,
-                                    const std::vector<std::string>& expected_passes,
-                                    const std::vector<std::string>& expected_culled) {
-    app::RenderSession* session = open_session(kSmall);
+  runtime::RenderSession* render_output(const std::string& output,
+                                        const std::vector<std::string>& expected_passes,
+                                        const std::vector<std::string>& expected_culled) {
+    runtime::RenderSession* session = open_session(kSmall);
     if (session == nullptr) return nullptr;
     fg::GraphDesc graph = default_graph();
     graph.output = output;

@@ -8,7 +8,7 @@
 #include <sstream>
 #include <string>
 
-#include "antumbra/fg/diagnostic_codes.hpp"
+#include "antumbra/base/diagnostic_codes.hpp"
 #include "antumbra/gpu/shader_compiler.hpp"
 #include "gpu_test_support.hpp"
 #include "render_test_support.hpp"
@@ -77,7 +77,7 @@ TEST_F(ReloadTest, BrokenGraphKeepsTheLastGoodPlan) {
   {
     fg::GraphDesc graph = good;
     graph.passes.at(2).type = "tonemapp";
-    broken.push_back({"unknown pass type", graph, fg::codes::kUnknownPassType});
+    broken.push_back({"unknown pass type", graph, codes::graph::kUnknownPassType});
   }
   {
     fg::GraphDesc graph = good;
@@ -116,7 +116,7 @@ TEST_F(ReloadTest, ShaderErrorKeepsTheLastGoodPlan) {
   const fs::path tonemap = root.path() / "passes" / "tonemap" / "tonemap.frag";
   const std::string original = read_text(tonemap);
 
-  OPEN_SESSION(session, kSmall, app::DataPaths{root.path()});
+  OPEN_SESSION(session, kSmall, runtime::DataPaths{root.path()});
   const fg::GraphDesc graph = default_graph();
   ASSERT_NO_FATAL_FAILURE(load_graph_ok(*session, graph));
   session->set_scene(default_scene());
@@ -128,11 +128,11 @@ TEST_F(ReloadTest, ShaderErrorKeepsTheLastGoodPlan) {
   ASSERT_GT(line, 0) << "tonemap.frag has no 'void main() {' line";
   const auto diagnostics = session->load_graph(graph);
   ASSERT_TRUE(diagnostics.has_errors());
-  const fg::Diagnostic* error = diagnostics.find(gpu::shader_codes::kCompile);
+  const base::Diagnostic* error = diagnostics.find(codes::shader::kCompile);
   ASSERT_NE(error, nullptr) << describe(diagnostics);
   EXPECT_TRUE(same_file(error->file, tonemap)) << error->file << " is not " << tonemap;
-  EXPECT_EQ(error->line, line) << fg::format_text(*error);
-  EXPECT_EQ(error->severity, fg::Severity::error);
+  EXPECT_EQ(error->line, line) << base::format_text(*error);
+  EXPECT_EQ(error->severity, base::Severity::error);
 
   ASSERT_TRUE(session->executor().loaded());
   EXPECT_EQ(session->executor().plan().passes.size(), 3u);
@@ -155,9 +155,9 @@ TEST_F(ReloadTest, ShaderErrorOnFirstLoadLoadsNothing) {
   const int line = insert_line_after(tonemap, "void main() {", "  vec3 broken = ;");
   ASSERT_GT(line, 0);
 
-  OPEN_SESSION(session, kSmall, app::DataPaths{root.path()});
+  OPEN_SESSION(session, kSmall, runtime::DataPaths{root.path()});
   const auto diagnostics = session->load_graph(default_graph());
-  const fg::Diagnostic* error = diagnostics.find(gpu::shader_codes::kCompile);
+  const base::Diagnostic* error = diagnostics.find(codes::shader::kCompile);
   ASSERT_NE(error, nullptr) << describe(diagnostics);
   EXPECT_TRUE(same_file(error->file, tonemap)) << error->file;
   EXPECT_EQ(error->line, line);
@@ -204,7 +204,7 @@ TEST_F(ReloadTest, UnchangedResourcesKeepTheirImagesAcrossAReload) {
 namespace {
 
 // The point-shadow-atlas report of the last frame: faces drawn.
-std::uint32_t faces_rendered(const app::RenderSession& session) {
+std::uint32_t faces_rendered(const runtime::RenderSession& session) {
   for (const auto& m : session.last_report().messages()) {
     if (m.code == "SHD010") return m.details["rendered"].get<std::uint32_t>();
   }

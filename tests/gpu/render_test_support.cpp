@@ -9,7 +9,7 @@
 
 #include <stb_image.h>
 
-#include "antumbra/fg/json_document.hpp"
+#include "antumbra/base/json_document.hpp"
 #include "antumbra/gpu/context.hpp"
 #include "antumbra/gpu/frame_loop.hpp"
 #include "antumbra/gpu/resources.hpp"
@@ -38,18 +38,18 @@ fs::path artifact_dir() {
   return dir;
 }
 
-app::DataPaths source_paths() {
-  return app::DataPaths{source_dir()};
+runtime::DataPaths source_paths() {
+  return runtime::DataPaths{source_dir()};
 }
 
-std::string describe(const fg::Diagnostics& diagnostics) {
+std::string describe(const base::Diagnostics& diagnostics) {
   std::string text;
-  for (const auto& d : diagnostics) text += "\n  " + fg::format_text(d);
+  for (const auto& d : diagnostics) text += "\n  " + base::format_text(d);
   return text;
 }
 
 fg::GraphDesc load_graph_file(const fs::path& path) {
-  auto document = fg::load_json_file(path.string());
+  auto document = base::load_json_file(path.string());
   if (!document.ok()) {
     throw std::runtime_error("cannot read " + path.string() + describe(document.diagnostics()));
   }
@@ -76,7 +76,7 @@ scene::Scene default_scene() {
   return load_scene(source_dir() / "data" / "scenes" / "atrium.json");
 }
 
-gpu::HostImage read_resource(app::RenderSession& session, const std::string& resource,
+gpu::HostImage read_resource(runtime::RenderSession& session, const std::string& resource,
                              std::uint32_t layer) {
   const gpu::Image* image = session.executor().gpu_image(resource);
   const fgvk::BoundImage* bound = session.executor().image(resource);
@@ -86,7 +86,7 @@ gpu::HostImage read_resource(app::RenderSession& session, const std::string& res
   return gpu::read_image(session.gpu(), *image, bound->layout, layer);
 }
 
-gpu::HostImage read_output(app::RenderSession& session) {
+gpu::HostImage read_output(runtime::RenderSession& session) {
   const auto& plan = session.executor().plan();
   return read_resource(session, plan.resources.at(static_cast<std::size_t>(plan.output)).name);
 }
@@ -247,12 +247,13 @@ void RenderTest::TearDown() {
   sessions_.clear();
 }
 
-app::RenderSession* RenderTest::open_session(VkExtent2D viewport, const app::DataPaths& paths) {
-  app::SessionOptions options;
+runtime::RenderSession* RenderTest::open_session(VkExtent2D viewport,
+                                                 const runtime::DataPaths& paths) {
+  runtime::SessionOptions options;
   options.validation = true;  // ContextOptions::sync_validation defaults to on
   options.viewport = viewport;
   try {
-    sessions_.push_back(std::make_unique<app::RenderSession>(paths, options));
+    sessions_.push_back(std::make_unique<runtime::RenderSession>(paths, options));
   } catch (const gpu::NoVulkanDeviceError& error) {
     gpu::testing::report_missing_device(error.what());
     skip_reason_ = std::string("no Vulkan device: ") + error.what();
@@ -263,11 +264,11 @@ app::RenderSession* RenderTest::open_session(VkExtent2D viewport, const app::Dat
   return &session;
 }
 
-void RenderTest::expect_no_validation_errors(app::RenderSession& session) {
+void RenderTest::expect_no_validation_errors(runtime::RenderSession& session) {
   EXPECT_EQ(session.gpu().validation_error_count(), 0u) << validation_report(session.gpu());
 }
 
-void RenderTest::load_graph_ok(app::RenderSession& session, const fg::GraphDesc& graph) {
+void RenderTest::load_graph_ok(runtime::RenderSession& session, const fg::GraphDesc& graph) {
   const auto diagnostics = session.load_graph(graph);
   ASSERT_FALSE(diagnostics.has_errors()) << "graph " << graph.name << ":" << describe(diagnostics);
 }

@@ -15,8 +15,8 @@
 
 #include "antumbra/fg/graph_desc.hpp"
 #include "antumbra/gpu/image_io.hpp"
+#include "antumbra/runtime/render_session.hpp"
 #include "antumbra/scene/scene.hpp"
-#include "render_session.hpp"
 
 namespace antumbra::render_testing {
 
@@ -26,7 +26,7 @@ std::filesystem::path gpu_data_dir();  // tests/data/gpu
 // A folder under the build tree for failure artefacts of the running test (created).
 std::filesystem::path artifact_dir();
 
-app::DataPaths source_paths();
+runtime::DataPaths source_paths();
 
 // Throw std::runtime_error with the diagnostics when the file is not valid (gtest
 // reports the exception as a failure of the test).
@@ -36,14 +36,14 @@ scene::Scene load_scene(const std::filesystem::path& path);
 scene::Scene default_scene();  // data/scenes/atrium.json
 
 // Every diagnostic, one per line, for failure messages.
-std::string describe(const fg::Diagnostics& diagnostics);
+std::string describe(const base::Diagnostics& diagnostics);
 
 // Read-back after render() (which waits for the frames), through gpu::read_image:
 // colour formats, and depth (d32f/d16) as one channel.
 // `layer`: the array layer of layered images.
-gpu::HostImage read_resource(app::RenderSession& session, const std::string& resource,
+gpu::HostImage read_resource(runtime::RenderSession& session, const std::string& resource,
                              std::uint32_t layer = 0);
-gpu::HostImage read_output(app::RenderSession& session);  // the plan's output resource
+gpu::HostImage read_output(runtime::RenderSession& session);  // the plan's output resource
 
 // 8-bit image, as written to PNG: the texels quantised like gpu::write_png does.
 struct Image8 {
@@ -106,20 +106,20 @@ class RenderTest : public ::testing::Test {
   void TearDown() override;
 
   // nullptr (and skip_reason_ set) when no Vulkan device exists: use OPEN_SESSION.
-  app::RenderSession* open_session(VkExtent2D viewport = kSmall,
-                                   const app::DataPaths& paths = source_paths());
+  runtime::RenderSession* open_session(VkExtent2D viewport = kSmall,
+                                       const runtime::DataPaths& paths = source_paths());
   // Non-fatal check with every kept message in the failure text.
-  static void expect_no_validation_errors(app::RenderSession& session);
+  static void expect_no_validation_errors(runtime::RenderSession& session);
   // Loads the graph and expects no error diagnostics.
-  static void load_graph_ok(app::RenderSession& session, const fg::GraphDesc& graph);
+  static void load_graph_ok(runtime::RenderSession& session, const fg::GraphDesc& graph);
 
-  std::vector<std::unique_ptr<app::RenderSession>> sessions_;
+  std::vector<std::unique_ptr<runtime::RenderSession>> sessions_;
   std::string skip_reason_;
 };
 
 }  // namespace antumbra::render_testing
 
 // Opens a session into `var`, or skips the test when no Vulkan device exists.
-#define OPEN_SESSION(var, ...)                                     \
-  ::antumbra::app::RenderSession* var = open_session(__VA_ARGS__); \
+#define OPEN_SESSION(var, ...)                                         \
+  ::antumbra::runtime::RenderSession* var = open_session(__VA_ARGS__); \
   if ((var) == nullptr) GTEST_SKIP() << skip_reason_

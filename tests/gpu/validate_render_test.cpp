@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "antumbra/base/json_document.hpp"
 #include "antumbra/fg/compiler.hpp"
-#include "antumbra/fg/json_document.hpp"
 #include "register_builtin_passes.hpp"
 #include "render_test_support.hpp"
 
@@ -24,14 +24,14 @@ namespace {
 
 struct Mutant {
   std::string what;
-  fg::Json json;
+  base::Json json;
 };
 
 // One change at a time to the graph's JSON, guided by the registry's reflection.
-std::vector<Mutant> mutants_of(const fg::Json& graph, const fg::Registry& registry) {
+std::vector<Mutant> mutants_of(const base::Json& graph, const fg::Registry& registry) {
   std::vector<Mutant> out;
   const auto add = [&](std::string what, const auto& change) {
-    fg::Json copy = graph;
+    base::Json copy = graph;
     change(copy);
     out.push_back({std::move(what), std::move(copy)});
   };
@@ -42,14 +42,14 @@ std::vector<Mutant> mutants_of(const fg::Json& graph, const fg::Registry& regist
     if (pass.contains("in")) {
       for (const auto& [port, unused] : pass["in"].items()) {
         add(name + ": in." + port + " unbound",
-            [&, port = port](fg::Json& g) { g["passes"][i]["in"].erase(port); });
+            [&, port = port](base::Json& g) { g["passes"][i]["in"].erase(port); });
       }
     }
-    add(name + " disabled", [&](fg::Json& g) { g["passes"][i]["enabled"] = false; });
+    add(name + " disabled", [&](base::Json& g) { g["passes"][i]["enabled"] = false; });
     const fg::PassDesc* desc = registry.find(pass.value("type", std::string()));
     if (desc == nullptr) continue;
     for (const auto& param : desc->params) {
-      std::vector<fg::Json> values;
+      std::vector<base::Json> values;
       if (param.type == fg::ParamType::enumeration) {
         for (const auto& c : param.choices) values.emplace_back(c);
       } else if (param.type == fg::ParamType::boolean) {
@@ -68,7 +68,7 @@ std::vector<Mutant> mutants_of(const fg::Json& graph, const fg::Registry& regist
         }
         if (!pass.contains("params") && v == param.default_value) continue;
         add(name + ": " + param.name + " = " + v.dump(),
-            [&](fg::Json& g) { g["passes"][i]["params"][param.name] = v; });
+            [&](base::Json& g) { g["passes"][i]["params"][param.name] = v; });
       }
     }
   }
@@ -76,7 +76,7 @@ std::vector<Mutant> mutants_of(const fg::Json& graph, const fg::Registry& regist
     for (const auto& [name, resource] : graph["resources"].items()) {
       if (!resource.is_object() || resource.value("layers", 1) <= 1) continue;
       add(name + " with 1 layer",
-          [&, key = name](fg::Json& g) { g["resources"][key]["layers"] = 1; });
+          [&, key = name](base::Json& g) { g["resources"][key]["layers"] = 1; });
     }
   }
   return out;
@@ -114,11 +114,11 @@ TEST_F(ValidateMeansRenderTest, WhatTheCompilerAcceptsTheDeviceRenders) {
   int accepted = 0;
   int refused = 0;
   for (const auto& file : files) {
-    const auto original = fg::parse_json(read_text(file), file.string());
+    const auto original = base::parse_json(read_text(file), file.string());
     ASSERT_TRUE(original.ok()) << file;
     for (const auto& mutant : mutants_of(original->root(), registry.reflection())) {
       SCOPED_TRACE(file.filename().string() + ": " + mutant.what);
-      const auto document = fg::parse_json(mutant.json.dump(2), file.string());
+      const auto document = base::parse_json(mutant.json.dump(2), file.string());
       ASSERT_TRUE(document.ok());
       const auto graph = fg::parse_graph(document.value());
       if (!graph.ok()) {

@@ -12,6 +12,7 @@
 #include <memory>
 #include <string>
 
+#include "antumbra/fg/param_table.hpp"
 #include "common/layer_table.hpp"
 #include "common/pass_support.hpp"
 #include "executor_harness.hpp"
@@ -47,18 +48,28 @@ class LayerFillPass final : public fgvk::Pass {
          .access = fg::Access::transfer_dst,
          .stage = fg::Stage::transfer},
     };
-    desc.params = {
-        {.name = "a", .type = fg::ParamType::number, .default_value = 1.0},
-        {.name = "b", .type = fg::ParamType::number, .default_value = 1.0},
-        {.name = "light1HasLayer", .type = fg::ParamType::boolean, .default_value = true},
-    };
+    desc.params = param_table().descs();
     return desc;
   }
-  explicit LayerFillPass(const fg::PlanPass& /*pass*/) {}
+  struct Params {
+    float a = 1.0f;
+    float b = 1.0f;
+    bool light1_has_layer = true;
+  };
+  static const fg::ParamTable<Params>& param_table() {
+    static const auto table =
+        fg::ParamTable<Params>()
+            .add({.name = "a", .type = fg::ParamType::number, .default_value = 1.0}, &Params::a)
+            .add({.name = "b", .type = fg::ParamType::number, .default_value = 1.0}, &Params::b)
+            .add({.name = "light1HasLayer", .type = fg::ParamType::boolean, .default_value = true},
+                 &Params::light1_has_layer);
+    return table;
+  }
+  explicit LayerFillPass(const fg::PlanPass& pass) : params_(param_table().read(pass.params)) {}
   void prepare(fgvk::PrepareContext& /*context*/) override {}
   void execute(fgvk::ExecuteContext& context) override {
-    const float a = passes::param_float(context.pass, "a");
-    const float b = passes::param_float(context.pass, "b");
+    const float a = params_.a;
+    const float b = params_.b;
     const auto& shadow = context.bindings.required_image("shadow");
     const std::array<VkClearColorValue, 2> values{
         {{{a, kDecoy, kDecoy, kDecoy}}, {{kDecoy, b, kDecoy, kDecoy}}}};
@@ -70,11 +81,13 @@ class LayerFillPass final : public fgvk::Pass {
     table[0] = 2;  // light count
     table[1] = 6;  // layers used
     table[4] = kLayerOfLight0;
-    table[5] =
-        passes::param_bool(context.pass, "light1HasLayer") ? kLayerOfLight1 : passes::kNoLayer;
+    table[5] = params_.light1_has_layer ? kLayerOfLight1 : passes::kNoLayer;
     vkCmdUpdateBuffer(context.cmd, context.bindings.buffer("layerTable")->buffer, 0,
                       passes::kLayerTableBytes, table.data());
   }
+
+ private:
+  Params params_;
 };
 
 std::unique_ptr<fgvk::Pass> make_fill(const fg::PlanPass& pass) {

@@ -11,8 +11,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "antumbra/base/json_document.hpp"
 #include "antumbra/fg/graph_desc.hpp"
-#include "antumbra/fg/json_document.hpp"
 #include "common/shadow_data.hpp"
 #include "lighting_test_support.hpp"
 #include "render_test_support.hpp"
@@ -24,7 +24,7 @@ using namespace antumbra::lighting_testing;
 namespace {
 
 fg::GraphDesc parse(const std::string& text) {
-  auto document = fg::parse_json(text, "light_types.json");
+  auto document = base::parse_json(text, "light_types.json");
   if (!document.ok()) throw std::runtime_error(document.diagnostics().to_text());
   auto graph = fg::parse_graph(document.value());
   if (!graph.ok()) throw std::runtime_error(graph.diagnostics().to_text());
@@ -55,8 +55,8 @@ std::string baseline_graph(const std::string& type, const std::string& params) {
 
 // data/graphs/layered-ssss.json without its tonemap, so that its hdr is the output.
 std::string layered_graph() {
-  auto document =
-      fg::load_json_file(std::string(ANTUMBRA_TEST_SOURCE_DIR) + "/data/graphs/layered-ssss.json");
+  auto document = base::load_json_file(std::string(ANTUMBRA_TEST_SOURCE_DIR) +
+                                       "/data/graphs/layered-ssss.json");
   if (!document.ok()) throw std::runtime_error(document.diagnostics().to_text());
   nlohmann::json graph = document.value().root();
   auto& passes = graph["passes"];
@@ -112,7 +112,7 @@ float check_profile(const std::string& what, const std::vector<std::pair<float, 
 
 class LightTypesTest : public RenderTest {
  protected:
-  gpu::HostImage render(app::RenderSession& session, const std::string& graph) {
+  gpu::HostImage render(runtime::RenderSession& session, const std::string& graph) {
     load_graph_ok(session, parse(graph));
     session.render(2, nullptr);
     return read_resource(session, "hdr");

@@ -34,7 +34,7 @@ std::string lighting_graph(const std::string& type, const std::string& params) {
   return text;
 }
 
-fg::Diagnostics compile_text(const std::string& text) {
+base::Diagnostics compile_text(const std::string& text) {
   const auto registry = passes::builtin_pass_registry();
   return fg::compile_text(text, "test.json", registry.reflection()).diagnostics();
 }

@@ -8,8 +8,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "antumbra/base/json_document.hpp"
 #include "antumbra/fg/graph_desc.hpp"
-#include "antumbra/fg/json_document.hpp"
 #include "common/shadow_data.hpp"
 #include "lighting_test_support.hpp"
 #include "render_test_support.hpp"
@@ -44,7 +44,7 @@ std::string atlas_graph(const std::string& type, const std::string& params) {
 }
 
 fg::GraphDesc parse(const std::string& text) {
-  auto document = fg::parse_json(text, "baseline.json");
+  auto document = base::parse_json(text, "baseline.json");
   if (!document.ok()) throw std::runtime_error(document.diagnostics().to_text());
   auto graph = fg::parse_graph(document.value());
   if (!graph.ok()) throw std::runtime_error(graph.diagnostics().to_text());
@@ -55,7 +55,7 @@ fg::GraphDesc parse(const std::string& text) {
 
 class ShadowBaselinesTest : public RenderTest {
  protected:
-  gpu::HostImage render(app::RenderSession& session, const std::string& type,
+  gpu::HostImage render(runtime::RenderSession& session, const std::string& type,
                         const std::string& params) {
     load_graph_ok(session, parse(atlas_graph(type, params)));
     session.render(2, nullptr);

@@ -68,7 +68,7 @@ class TiledLightingTest : public RenderTest {
  protected:
   // Renders the tiled graph over `scene` and compares hdr with the CPU reference at a
   // grid of pixels (every `step` pixels) that show geometry.
-  void expect_matches_reference(app::RenderSession& session, const scene::Scene& scene,
+  void expect_matches_reference(runtime::RenderSession& session, const scene::Scene& scene,
                                 VkExtent2D viewport, std::uint32_t step) {
     session.render(1, nullptr);
     expect_no_validation_errors(session);

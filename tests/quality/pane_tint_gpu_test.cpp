@@ -77,7 +77,7 @@ glm::vec3 ratio_at(const app::FloatImage& shadowed, const app::FloatImage& lit, 
   return r;
 }
 
-void check_graph(app::RenderSession& session, const char* name, const app::FloatImage& lit) {
+void check_graph(runtime::RenderSession& session, const char* name, const app::FloatImage& lit) {
   ASSERT_FALSE(session.load_graph(graph_for_hdr(graph_path(name))).has_errors()) << name;
   session.render(2, nullptr);  // the atlas's colour map and layers settle in frame 1
   const auto shadowed = read_float_image(session, "hdr");

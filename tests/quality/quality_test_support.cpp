@@ -30,7 +30,7 @@ fg::GraphDesc graph_for_hdr(const std::filesystem::path& path,
 }
 
 void set_param(fg::GraphDesc& graph, const std::string& type, const std::string& name,
-               const fg::Json& value) {
+               const base::Json& value) {
   for (auto& pass : graph.passes) {
     if (pass.type == type) {
       pass.params[name] = value;
@@ -40,7 +40,7 @@ void set_param(fg::GraphDesc& graph, const std::string& type, const std::string&
   throw std::runtime_error("graph " + graph.name + " has no pass of type " + type);
 }
 
-app::FloatImage read_float_image(app::RenderSession& session, const std::string& resource) {
+app::FloatImage read_float_image(runtime::RenderSession& session, const std::string& resource) {
   const auto host = render_testing::read_resource(session, resource);
   app::FloatImage image{host.width, host.height, host.channels == 1 ? 1u : 3u, {}};
   for (std::uint32_t y = 0; y < host.height; ++y) {

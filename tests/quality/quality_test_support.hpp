@@ -7,9 +7,9 @@
 #include <vector>
 
 #include "antumbra/fg/graph_desc.hpp"
+#include "antumbra/runtime/render_session.hpp"
 #include "antumbra/scene/scene.hpp"
 #include "image_metrics.hpp"
-#include "render_session.hpp"
 
 namespace antumbra::quality_testing {
 
@@ -21,9 +21,9 @@ fg::GraphDesc graph_for_hdr(const std::filesystem::path& path,
                             const std::vector<std::string>& keep = {});
 // Sets a parameter of the first pass of `type` (throws when there is none).
 void set_param(fg::GraphDesc& graph, const std::string& type, const std::string& name,
-               const fg::Json& value);
+               const base::Json& value);
 
-app::FloatImage read_float_image(app::RenderSession& session, const std::string& resource);
+app::FloatImage read_float_image(runtime::RenderSession& session, const std::string& resource);
 
 // A square occluder (side `side`, thin) at height `blocker` over a large plane at y = 0,
 // one point light of radius `light_size` at height `light`, straight above the

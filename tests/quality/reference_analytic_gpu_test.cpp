@@ -72,7 +72,7 @@ struct RowError {
   int penumbra_pixels = 0;
 };
 
-void check_edge(RenderTest& test, app::RenderSession& session, const EdgeSetup& setup,
+void check_edge(RenderTest& test, runtime::RenderSession& session, const EdgeSetup& setup,
                 double max_tolerance, double rmse_tolerance) {
   session.set_scene(edge_scene(setup));
   auto reference = graph_for_hdr(graph_path("reference"));

@@ -59,7 +59,7 @@ TEST_F(ReferenceGpu, AtriumIsCleanDeterministicAndHasPenumbrae) {
 constexpr double kDiskTenNinety = 0.6872;
 constexpr double kLinearTenNinety = 0.8;
 
-void check_penumbra_width(RenderTest& test, app::RenderSession& session, const char* weighting,
+void check_penumbra_width(RenderTest& test, runtime::RenderSession& session, const char* weighting,
                           double ten_ninety) {
   const AnalyticSetup setup;
   session.set_scene(analytic_scene(setup));

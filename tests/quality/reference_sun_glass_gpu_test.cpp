@@ -36,7 +36,7 @@ class ReferenceSunGlassGpu : public RenderTest {
     app::FloatImage shadowed;
     app::FloatImage unshadowed;
   };
-  Frames render_pair(app::RenderSession& session, const fg::GraphDesc& graph) {
+  Frames render_pair(runtime::RenderSession& session, const fg::GraphDesc& graph) {
     Frames f;
     load_graph_ok(session, graph);
     session.render(1, nullptr);
@@ -50,7 +50,7 @@ class ReferenceSunGlassGpu : public RenderTest {
     return f;
   }
 
-  static double metres_per_pixel(const app::RenderSession& session, float camera_height,
+  static double metres_per_pixel(const runtime::RenderSession& session, float camera_height,
                                  float fov_y_degrees) {
     const VkExtent2D e = session.viewport();
     const double aspect = double(e.width) / double(e.height);

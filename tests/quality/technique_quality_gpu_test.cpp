@@ -36,7 +36,7 @@ class TechniqueQualityGpu : public RenderTest {
   }
 
   // Renders the reference once per session, then each graph, and measures them.
-  std::map<std::string, Regions> measure(app::RenderSession& session,
+  std::map<std::string, Regions> measure(runtime::RenderSession& session,
                                          const std::vector<std::string>& graphs) {
     session.set_scene(render_testing::load_scene(quality_data_dir() / "overlap.json"));
     load_graph_ok(session, graph_for_hdr(graph_path("reference"), {"penumbraCount"}));

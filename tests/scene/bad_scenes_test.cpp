@@ -30,16 +30,16 @@ TEST_P(BadScenes, ReportsTheExpectedLocatedDiagnostic) {
   const std::string path = kBadDir + expected.file;
   const auto result = load_scene_file(path);
   ASSERT_FALSE(result.ok());
-  const fg::Diagnostics& diagnostics = result.diagnostics();
-  const fg::Diagnostic* d = diagnostics.find(expected.code);
+  const base::Diagnostics& diagnostics = result.diagnostics();
+  const base::Diagnostic* d = diagnostics.find(expected.code);
   ASSERT_NE(d, nullptr) << "got:\n" << diagnostics.to_text();
-  EXPECT_EQ(d->severity, fg::Severity::error);
+  EXPECT_EQ(d->severity, base::Severity::error);
   EXPECT_EQ(d->file, path);
   EXPECT_EQ(d->pointer, expected.pointer) << diagnostics.to_text();
   EXPECT_EQ(d->line, expected.line) << diagnostics.to_text();
   EXPECT_GT(d->column, 0);
   EXPECT_NE(d->message.find(expected.message_contains), std::string::npos) << d->message;
-  const std::string text = fg::format_text(*d);
+  const std::string text = base::format_text(*d);
   EXPECT_EQ(text.rfind(path + ":" + std::to_string(expected.line) + ":", 0), 0u) << text;
   EXPECT_NE(text.find(std::string("error[") + expected.code + "]"), std::string::npos) << text;
 }

@@ -4,7 +4,7 @@
 
 #include <filesystem>
 
-#include "antumbra/scene/scene_codes.hpp"
+#include "antumbra/base/diagnostic_codes.hpp"
 #include "mesh_checks.hpp"
 
 namespace antumbra::scene {
@@ -15,7 +15,7 @@ namespace fs = std::filesystem;
 const std::string kFixtures = std::string(ANTUMBRA_SOURCE_DIR) + "/tests/data/scenes/gltf/";
 const std::string kAssimp = ANTUMBRA_GLTF_MODELS_DIR;
 
-void expect_triangle(const fg::Result<GltfImport>& result) {
+void expect_triangle(const base::Result<GltfImport>& result) {
   ASSERT_TRUE(result.ok()) << result.diagnostics().to_text();
   ASSERT_EQ(result->meshes.size(), 1u);
   const Mesh& mesh = result->meshes[0];
@@ -61,9 +61,9 @@ TEST_P(BadGltfFiles, FailWithTheExpectedCode) {
   }
   const auto result = load_gltf(expected.file);
   ASSERT_FALSE(result.ok());
-  const fg::Diagnostic* d = result.diagnostics().find(expected.code);
+  const base::Diagnostic* d = result.diagnostics().find(expected.code);
   ASSERT_NE(d, nullptr) << result.diagnostics().to_text();
-  EXPECT_EQ(d->severity, fg::Severity::error);
+  EXPECT_EQ(d->severity, base::Severity::error);
   EXPECT_EQ(d->pointer, expected.pointer) << result.diagnostics().to_text();
   EXPECT_EQ(d->file, expected.file);
 }
@@ -71,36 +71,39 @@ TEST_P(BadGltfFiles, FailWithTheExpectedCode) {
 INSTANTIATE_TEST_SUITE_P(
     Fixtures, BadGltfFiles,
     ::testing::Values(
-        BadGltf{kFixtures + "bad_index.gltf", codes::kGltfIndexOutOfRange, "/accessors/1"},
-        BadGltf{kFixtures + "accessor_overflow.gltf", codes::kGltfOutOfBounds, "/accessors/0"},
-        BadGltf{kFixtures + "bad_stride.gltf", codes::kGltfBadAccessor,
+        BadGltf{kFixtures + "bad_index.gltf", codes::scene::kGltfIndexOutOfRange, "/accessors/1"},
+        BadGltf{kFixtures + "accessor_overflow.gltf", codes::scene::kGltfOutOfBounds,
+                "/accessors/0"},
+        BadGltf{kFixtures + "bad_stride.gltf", codes::scene::kGltfBadAccessor,
                 "/bufferViews/0/byteStride"},
-        BadGltf{kFixtures + "float_indices.gltf", codes::kGltfBadAccessor, "/accessors/1"},
-        BadGltf{kFixtures + "cycle.gltf", codes::kGltfNodeCycle, "/nodes/1/children/0"},
-        BadGltf{kFixtures + "no_such_file.gltf", codes::kGltfFileMissing, ""}));
+        BadGltf{kFixtures + "float_indices.gltf", codes::scene::kGltfBadAccessor, "/accessors/1"},
+        BadGltf{kFixtures + "cycle.gltf", codes::scene::kGltfNodeCycle, "/nodes/1/children/0"},
+        BadGltf{kFixtures + "no_such_file.gltf", codes::scene::kGltfFileMissing, ""}));
 
 // Debian's assimp-testmodels: malformed files from the wild.
 INSTANTIATE_TEST_SUITE_P(
     AssimpCorpus, BadGltfFiles,
     ::testing::Values(
-        BadGltf{kAssimp + "/wrongTypes/badArray.gltf", codes::kGltfParse, "/meshes/0/primitives"},
-        BadGltf{kAssimp + "/SchemaFailures/sceneWrongType.gltf", codes::kGltfParse, "/scene"},
-        BadGltf{kAssimp + "/IndexOutOfRange/IndexOutOfRange.gltf", codes::kGltfIndexOutOfRange,
-                "/accessors/0"},
-        BadGltf{kAssimp + "/IndexOutOfRange/AllIndicesOutOfRange.gltf", codes::kGltfIndexOutOfRange,
-                "/accessors/0"},
-        BadGltf{kAssimp + "/MissingBin/BoxTextured.gltf", codes::kGltfParse, ""},
-        BadGltf{kAssimp + "/RecursiveNodes/RecursiveNodes.gltf", codes::kGltfNodeCycle,
+        BadGltf{kAssimp + "/wrongTypes/badArray.gltf", codes::scene::kGltfParse,
+                "/meshes/0/primitives"},
+        BadGltf{kAssimp + "/SchemaFailures/sceneWrongType.gltf", codes::scene::kGltfParse,
+                "/scene"},
+        BadGltf{kAssimp + "/IndexOutOfRange/IndexOutOfRange.gltf",
+                codes::scene::kGltfIndexOutOfRange, "/accessors/0"},
+        BadGltf{kAssimp + "/IndexOutOfRange/AllIndicesOutOfRange.gltf",
+                codes::scene::kGltfIndexOutOfRange, "/accessors/0"},
+        BadGltf{kAssimp + "/MissingBin/BoxTextured.gltf", codes::scene::kGltfParse, ""},
+        BadGltf{kAssimp + "/RecursiveNodes/RecursiveNodes.gltf", codes::scene::kGltfNodeCycle,
                 "/nodes/1/children/0"},
         BadGltf{kAssimp + "/BoxWithInfinites-glTF-Binary/BoxWithInfinites.glb",
-                codes::kGltfNonFinite, "/accessors/2"},
-        BadGltf{kAssimp + "/IncorrectVertexArrays/Cube.gltf", codes::kGltfCountMismatch,
+                codes::scene::kGltfNonFinite, "/accessors/2"},
+        BadGltf{kAssimp + "/IncorrectVertexArrays/Cube.gltf", codes::scene::kGltfCountMismatch,
                 "/meshes/1/primitives/0"},
-        BadGltf{kAssimp + "/TestNoRootNode/NoScene.gltf", codes::kGltfNoGeometry, "/scene"},
-        BadGltf{kAssimp + "/TestNoRootNode/SceneWithoutNodes.gltf", codes::kGltfNoGeometry,
+        BadGltf{kAssimp + "/TestNoRootNode/NoScene.gltf", codes::scene::kGltfNoGeometry, "/scene"},
+        BadGltf{kAssimp + "/TestNoRootNode/SceneWithoutNodes.gltf", codes::scene::kGltfNoGeometry,
                 "/scenes/0"},
         BadGltf{kAssimp + "/BoxTextured-glTF-techniqueWebGL/BoxTextured.gltf",
-                codes::kGltfUnsupported, "/extensionsRequired"}));
+                codes::scene::kGltfUnsupported, "/extensionsRequired"}));
 
 // Wrongly typed properties the importer does not use: geometry loads, with a warning.
 TEST(Gltf, WrongTypesOutsideGeometryAreWarnings) {
@@ -110,7 +113,7 @@ TEST(Gltf, WrongTypesOutsideGeometryAreWarnings) {
     const auto result = load_gltf(path);
     ASSERT_TRUE(result.ok()) << result.diagnostics().to_text();
     EXPECT_EQ(result.diagnostics().warning_count(), 1u) << name;
-    EXPECT_NE(result.diagnostics().find(codes::kGltfWarning), nullptr) << name;
+    EXPECT_NE(result.diagnostics().find(codes::scene::kGltfWarning), nullptr) << name;
   }
 }
 
@@ -149,7 +152,7 @@ TEST(Gltf, EveryCorpusFileLoadsOrFailsCleanly) {
     if (ext != ".gltf" && ext != ".glb") continue;
     ++files;
     const auto result = load_gltf(e.path().string());
-    for (const fg::Diagnostic& d : result.diagnostics()) {
+    for (const base::Diagnostic& d : result.diagnostics()) {
       EXPECT_EQ(d.code.rfind("SC", 0), 0u) << d.code;
       EXPECT_FALSE(d.message.empty());
     }

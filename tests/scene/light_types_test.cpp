@@ -4,13 +4,13 @@
 
 #include <cmath>
 
-#include "antumbra/scene/scene_codes.hpp"
+#include "antumbra/base/diagnostic_codes.hpp"
 #include "antumbra/scene/scene_file.hpp"
 
 namespace antumbra::scene {
 namespace {
 
-fg::Result<Scene> parse_lights(const std::string& lights) {
+base::Result<Scene> parse_lights(const std::string& lights) {
   return parse_scene_text(
       R"({"version": 1, "camera": {"position": [0, 1, 5], "target": [0, 1, 0]}, "lights": [)" +
           lights + "]}",
@@ -51,10 +51,10 @@ TEST(LightTypes, DirectionalLightIsInfiniteWithAngularSize) {
 TEST(LightTypes, DirectionalNeedsDirectionNotPosition) {
   const auto missing = parse_lights(R"({"name": "sun", "type": "directional"})");
   ASSERT_FALSE(missing.ok());
-  EXPECT_NE(missing.diagnostics().find(codes::kMissingKey), nullptr);
+  EXPECT_NE(missing.diagnostics().find(codes::scene::kMissingKey), nullptr);
   const auto spot = parse_lights(R"({"name": "s", "type": "spot", "position": [0, 1, 0]})");
   ASSERT_FALSE(spot.ok());
-  EXPECT_NE(spot.diagnostics().find(codes::kMissingKey), nullptr);
+  EXPECT_NE(spot.diagnostics().find(codes::scene::kMissingKey), nullptr);
 }
 
 TEST(LightTypes, KeysOfOtherTypesWarn) {
@@ -64,7 +64,7 @@ TEST(LightTypes, KeysOfOtherTypesWarn) {
   ASSERT_TRUE(result.ok()) << result.diagnostics().to_text();
   std::size_t warnings = 0;
   for (const auto& d : result.diagnostics().items()) {
-    if (d.code == std::string(codes::kLightKeyIgnored)) ++warnings;
+    if (d.code == std::string(codes::scene::kLightKeyIgnored)) ++warnings;
   }
   EXPECT_EQ(warnings, 2u) << result.diagnostics().to_text();
 }

@@ -4,14 +4,14 @@
 
 #include <gtest/gtest.h>
 
-#include "antumbra/scene/scene_codes.hpp"
+#include "antumbra/base/diagnostic_codes.hpp"
 
 namespace antumbra::scene {
 namespace {
 
 constexpr const char* kCamera = R"("camera": {"position": [0, 1, 5], "target": [0, 1, 0]})";
 
-fg::Result<Scene> parse(const std::string& body) {
+base::Result<Scene> parse(const std::string& body) {
   return parse_scene_text(std::string("{\"version\": 1, ") + kCamera + body + "}", "test.json");
 }
 
@@ -97,8 +97,8 @@ TEST(SceneFile, TransmittanceOnAnOpaqueMaterialIsAWarning) {
   const auto result = parse(R"(, "materials": {"m": {"transmittance": [1, 0, 0, 0.5]}})");
   ASSERT_TRUE(result.ok());
   ASSERT_EQ(result.diagnostics().size(), 1u);
-  EXPECT_EQ(result.diagnostics()[0].code, codes::kTransmittanceIgnored);
-  EXPECT_EQ(result.diagnostics()[0].severity, fg::Severity::warning);
+  EXPECT_EQ(result.diagnostics()[0].code, codes::scene::kTransmittanceIgnored);
+  EXPECT_EQ(result.diagnostics()[0].severity, base::Severity::warning);
 }
 
 TEST(SceneFile, ReportsEveryProblemInOnePass) {
@@ -108,12 +108,12 @@ TEST(SceneFile, ReportsEveryProblemInOnePass) {
   ASSERT_FALSE(result.ok());
   const auto& d = result.diagnostics();
   EXPECT_EQ(d.error_count(), 4u) << d.to_text();
-  const fg::Diagnostic* unknown = d.find(codes::kUnknownKey);
+  const base::Diagnostic* unknown = d.find(codes::scene::kUnknownKey);
   ASSERT_NE(unknown, nullptr);
   EXPECT_EQ(unknown->pointer, "/lihgts");
   EXPECT_NE(unknown->message.find("did you mean 'lights'?"), std::string::npos);
-  EXPECT_NE(d.find(codes::kOutOfRange), nullptr);
-  EXPECT_NE(d.find(codes::kWrongType), nullptr);
+  EXPECT_NE(d.find(codes::scene::kOutOfRange), nullptr);
+  EXPECT_NE(d.find(codes::scene::kWrongType), nullptr);
   EXPECT_NE(d.to_text().find("did you mean 'segments'?"), std::string::npos);
 }
 

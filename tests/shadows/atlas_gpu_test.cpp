@@ -13,8 +13,8 @@
 #include <gtest/gtest.h>
 #include <glm/glm.hpp>
 
+#include "antumbra/base/json_document.hpp"
 #include "antumbra/fg/compiler.hpp"
-#include "antumbra/fg/json_document.hpp"
 #include "antumbra/fgvk/executor.hpp"
 #include "antumbra/gpu/commands.hpp"
 #include "antumbra/gpu/frame_loop.hpp"
@@ -76,8 +76,8 @@ class AtlasGpuTest : public gpu::testing::GpuTest {
   }
 
   // tests/data/shadows/atlas.json with 256 x 256 faces and the given atlas params.
-  void load(const fg::Json& params = fg::Json::object()) {
-    auto document = fg::load_json_file((source_dir() / "tests/data/shadows/atlas.json").string());
+  void load(const base::Json& params = base::Json::object()) {
+    auto document = base::load_json_file((source_dir() / "tests/data/shadows/atlas.json").string());
     ASSERT_TRUE(document.ok());
     auto graph = fg::parse_graph(document.value());
     ASSERT_TRUE(graph.ok());
@@ -208,7 +208,7 @@ TEST_F(AtlasGpuTest, MovingOneLightRerendersExactlyItsVisibleFaces) {
 }
 
 TEST_F(AtlasGpuTest, PerFaceFallbackMatchesLayeredDraw) {
-  load(fg::Json{{"layeredDraw", false}});
+  load(base::Json{{"layeredDraw", false}});
   const Counts c = frame();
   EXPECT_FALSE(c.layered);
   EXPECT_GT(c.rendered, 0u);
@@ -222,7 +222,7 @@ TEST_F(AtlasGpuTest, PerFaceFallbackMatchesLayeredDraw) {
 
 // A compiler check (validate reports it without a device), located at the binding.
 TEST_F(AtlasGpuTest, TooSmallShadowDataIsACompilerError) {
-  auto document = fg::load_json_file((source_dir() / "tests/data/shadows/atlas.json").string());
+  auto document = base::load_json_file((source_dir() / "tests/data/shadows/atlas.json").string());
   ASSERT_TRUE(document.ok());
   auto graph = fg::parse_graph(document.value());
   ASSERT_TRUE(graph.ok());
@@ -234,7 +234,7 @@ TEST_F(AtlasGpuTest, TooSmallShadowDataIsACompilerError) {
   options.footprint = executor_->footprint_fn();
   auto plan = fg::compile(graph.value(), registry_->reflection(), options);
   ASSERT_FALSE(plan.ok());
-  const fg::Diagnostic* d = plan.diagnostics().find("SHD001");
+  const base::Diagnostic* d = plan.diagnostics().find("SHD001");
   ASSERT_NE(d, nullptr) << plan.diagnostics().to_text();
   EXPECT_NE(d->message.find("73232"), std::string::npos) << d->message;
   EXPECT_EQ(d->pointer.rfind("/passes/", 0), 0u) << d->pointer;

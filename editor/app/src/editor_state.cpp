@@ -3,16 +3,16 @@
 #include <chrono>
 #include <cstdio>
 
+#include "antumbra/base/json_document.hpp"
 #include "antumbra/editor/atomic_file.hpp"
 #include "antumbra/editor/recovery_file.hpp"
-#include "antumbra/fg/json_document.hpp"
 #include "antumbra/fg/plan_diff.hpp"
 #include "antumbra/gpu/timing.hpp"
 #include "antumbra/scene/scene_file.hpp"
 
 namespace antumbra::editor_app {
 
-EditorState::EditorState(app::RenderSession& session, editor::SceneDocument scene,
+EditorState::EditorState(runtime::RenderSession& session, editor::SceneDocument scene,
                          editor::GraphDocument graph, editor::PassDescLookup lookup)
     : session_(session),
       scene_(std::move(scene)),
@@ -24,12 +24,12 @@ bool EditorState::start() {
   reload_graph();
   reload_summary_ = "none yet";  // the first load is not a reload
   for (const auto& d : diagnostics_) {
-    if (d.severity != fg::Severity::note) std::printf("  %s\n", fg::format_text(d).c_str());
+    if (d.severity != base::Severity::note) std::printf("  %s\n", base::format_text(d).c_str());
   }
   if (diagnostics_.has_errors()) return false;
   auto parsed = scene::parse_scene_text(scene_.to_text(), scene_.file().string());
   if (!parsed.ok()) {
-    for (const auto& d : parsed.diagnostics()) std::printf("  %s\n", fg::format_text(d).c_str());
+    for (const auto& d : parsed.diagnostics()) std::printf("  %s\n", base::format_text(d).c_str());
     return false;
   }
   scene_camera_ = parsed->camera;
@@ -86,12 +86,12 @@ void EditorState::frame_presented() {
   message_ += std::string(" (file seen -> new frame ") + ms + ")";
   std::printf("editor: %s; graph: %s\n", message_.c_str(), reload_summary_.c_str());
   for (const auto& d : diagnostics_) {
-    if (d.severity != fg::Severity::note) std::printf("  %s\n", fg::format_text(d).c_str());
+    if (d.severity != base::Severity::note) std::printf("  %s\n", base::format_text(d).c_str());
   }
   // What the new frame's passes report (a layer cap that is still too low) is said again
   // after every reload, not only the first time it appeared.
   for (const auto& d : session_.frame_diagnostics()) {
-    if (d.severity != fg::Severity::note) std::printf("  %s\n", fg::format_text(d).c_str());
+    if (d.severity != base::Severity::note) std::printf("  %s\n", base::format_text(d).c_str());
   }
   std::fflush(stdout);
 }
@@ -146,20 +146,11 @@ void EditorState::reload_graph_file() {
 }
 
 int EditorState::graph_cap() const {
-  const std::string pass = layering_pass();
-  if (!pass.empty()) {
-    if (auto p = graph_.param(pass, "maxLayers"); p && p->value.is_number_integer()) {
-      return p->value.get<int>();
-    }
-  }
-  return layering::LayeringOptions{}.max_layers;
+  return editor::layer_cap(graph_);
 }
 
 std::string EditorState::layering_pass() const {
-  for (const auto& pass : graph_.passes()) {
-    if (pass.type == "light-layering") return pass.name;
-  }
-  return {};
+  return editor::layering_pass(graph_);
 }
 
 void EditorState::open_gesture(DocKind kind) {
@@ -203,7 +194,7 @@ void EditorState::scene_edited(const editor::EditResult& result) {
 }
 
 void EditorState::set_param(const std::string& pass, const std::string& name,
-                            const fg::Json& value) {
+                            const base::Json& value) {
   const auto result = graph_.set_param(pass, name, value);
   if (!result) {
     message_ = "edit refused: " + result.message;
@@ -262,7 +253,7 @@ void EditorState::reload_graph() {
   const bool had_plan = session_.executor().loaded();
   fg::Plan before;
   if (had_plan) before = session_.executor().plan();
-  auto document = fg::parse_json(graph_.to_text(), graph_.file().string());
+  auto document = base::parse_json(graph_.to_text(), graph_.file().string());
   if (!document.ok()) {
     diagnostics_ = document.diagnostics();
   } else if (auto graph = fg::parse_graph(document.value()); !graph.ok()) {
@@ -297,8 +288,8 @@ bool EditorState::resize(VkExtent2D extent) {
   // Whatever refused it (a device limit, a shader broken on disk meanwhile): say it.
   std::string why = "unknown";
   for (const auto& d : diagnostics_) {
-    if (d.severity == fg::Severity::error) {
-      why = fg::format_text(d);
+    if (d.severity == base::Severity::error) {
+      why = base::format_text(d);
       break;
     }
   }

@@ -9,14 +9,14 @@
 #include <string>
 #include <vector>
 
+#include "antumbra/base/diagnostics.hpp"
 #include "antumbra/editor/graph_document.hpp"
 #include "antumbra/editor/layer_status.hpp"
 #include "antumbra/editor/scene_document.hpp"
 #include "antumbra/editor/viewport.hpp"
-#include "antumbra/fg/diagnostics.hpp"
 #include "antumbra/gpu/timing.hpp"
+#include "antumbra/runtime/render_session.hpp"
 #include "antumbra/watch/file_watcher.hpp"
-#include "render_session.hpp"
 
 namespace antumbra::editor_app {
 
@@ -25,13 +25,13 @@ enum class DocKind { scene, graph };
 class EditorState {
  public:
   // `lookup` (the pass reflection) must outlive the state: reloaded graphs use it.
-  EditorState(app::RenderSession& session, editor::SceneDocument scene, editor::GraphDocument graph,
-              editor::PassDescLookup lookup);
+  EditorState(runtime::RenderSession& session, editor::SceneDocument scene,
+              editor::GraphDocument graph, editor::PassDescLookup lookup);
 
   // The first load of the graph and the scene; false (diagnostics printed) on errors.
   bool start();
 
-  [[nodiscard]] app::RenderSession& session() { return session_; }
+  [[nodiscard]] runtime::RenderSession& session() { return session_; }
   [[nodiscard]] editor::SceneDocument& scene() { return scene_; }
   [[nodiscard]] const editor::GraphDocument& graph() const { return graph_; }
   [[nodiscard]] editor::LayerStatus& status() { return status_; }
@@ -56,7 +56,7 @@ class EditorState {
   void end_frame(bool held);
   [[nodiscard]] bool gesture_open() const { return gesture_open_; }
   void scene_edited(const editor::EditResult& result);
-  void set_param(const std::string& pass, const std::string& name, const fg::Json& value);
+  void set_param(const std::string& pass, const std::string& name, const base::Json& value);
   void undo();
   void redo();
   [[nodiscard]] bool can_undo() const { return !undo_order_.empty(); }
@@ -93,11 +93,11 @@ class EditorState {
   // files instead of being dropped. Returns a line per document kept that way.
   std::vector<std::string> close_keeping_unsaved();
 
-  [[nodiscard]] const fg::Diagnostics& diagnostics() const { return diagnostics_; }
+  [[nodiscard]] const base::Diagnostics& diagnostics() const { return diagnostics_; }
   [[nodiscard]] const std::string& reload_summary() const { return reload_summary_; }
   [[nodiscard]] const std::string& message() const { return message_; }
   // Per-pass GPU times, refreshed every few frames (medians over those frames).
-  [[nodiscard]] const std::vector<app::PassTiming>& timings() const { return timings_; }
+  [[nodiscard]] const std::vector<runtime::PassTiming>& timings() const { return timings_; }
   void refresh_timings();
   // "0.565 ms", or "-- ms" before the pass has been measured (the first frames after the
   // start or a reload): never a 0.000 that reads as a measurement.
@@ -112,7 +112,7 @@ class EditorState {
   void sync_lights();
   void reload_graph();
 
-  app::RenderSession& session_;
+  runtime::RenderSession& session_;
   editor::SceneDocument scene_;
   editor::GraphDocument graph_;
   editor::PassDescLookup lookup_;
@@ -128,11 +128,11 @@ class EditorState {
   scene::Camera scene_camera_;  // as the scene file has it
   float drag_limit_ = 1.0f;
   std::string drag_note_;
-  fg::Diagnostics diagnostics_;
+  base::Diagnostics diagnostics_;
   std::string reload_summary_;
   std::vector<std::string> edited_shaders_;  // the shader files behind the pending reload
   std::string message_;
-  std::vector<app::PassTiming> timings_;
+  std::vector<runtime::PassTiming> timings_;
   watch::FileWatcher watcher_;
   gpu::CpuTimer since_poll_;
   std::optional<gpu::CpuTimer> since_change_;  // a change seen on disk, not yet on screen

@@ -12,7 +12,7 @@
 namespace antumbra::editor_app {
 namespace {
 
-using fg::Json;
+using base::Json;
 
 // A float control's value as the shortest decimal that reads back as the same float
 // (5.8, not 5.800000190734863), so saved files stay as an artist would write them.
@@ -177,8 +177,8 @@ void draw_graph_panel(EditorState& state) {
   ImGui::Separator();
   ImGui::TextWrapped("last reload: %s", state.reload_summary().c_str());
   for (const auto& d : state.diagnostics()) {
-    if (d.severity == fg::Severity::note) continue;
-    ImGui::TextWrapped("%s", fg::format_text(d).c_str());
+    if (d.severity == base::Severity::note) continue;
+    ImGui::TextWrapped("%s", base::format_text(d).c_str());
   }
   ImGui::End();
 }

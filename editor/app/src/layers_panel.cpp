@@ -7,6 +7,7 @@
 
 #include "antumbra/editor/fix_suggestion.hpp"
 #include "layer_colours.hpp"
+#include "light_layering/core/layer_cap.hpp"
 #include "panels.hpp"
 
 namespace antumbra::editor_app {
@@ -18,14 +19,14 @@ void draw_cap_control(EditorState& state) {
     ImGui::TextDisabled("this graph has no light-layering pass: no cap to edit");
     return;
   }
-  const auto param = state.graph().param(pass, "maxLayers");
+  const auto param = state.graph().param(pass, layering::kLayerCap.name);
   int cap = state.graph_cap();
   // Typed digits commit on Enter (one undo step and one graph reload per value, not per
   // keystroke); the +/- buttons commit at once.
   if (ImGui::InputInt("cap k", &cap, 1, 1, ImGuiInputTextFlags_EnterReturnsTrue)) {
     if (param && param->min) cap = std::max(cap, static_cast<int>(*param->min));
     if (param && param->max) cap = std::min(cap, static_cast<int>(*param->max));
-    state.set_param(pass, "maxLayers", cap);  // reloads the graph
+    state.set_param(pass, layering::kLayerCap.name, cap);  // reloads the graph
   }
 }
 

@@ -14,7 +14,7 @@
 #include "antumbra/editor/graph_document.hpp"
 #include "antumbra/editor/scene_document.hpp"
 #include "antumbra/gpu/timing.hpp"
-#include "commands.hpp"
+#include "antumbra/runtime/exit_codes.hpp"
 #include "editor_state.hpp"
 #include "imgui_layer.hpp"
 #include "panels.hpp"
@@ -30,9 +30,9 @@ namespace fs = std::filesystem;
 
 constexpr int kTimingWindowFrames = 30;  // per-pass GPU times: medians over this many
 
-void print(const fg::Diagnostics& diagnostics) {
+void print(const base::Diagnostics& diagnostics) {
   for (const auto& d : diagnostics) {
-    if (d.severity != fg::Severity::note) std::printf("  %s\n", fg::format_text(d).c_str());
+    if (d.severity != base::Severity::note) std::printf("  %s\n", base::format_text(d).c_str());
   }
 }
 
@@ -151,7 +151,7 @@ struct Documents {
 // `registry` must outlive the documents: the graph's lookup reads its reflection.
 std::optional<Documents> load_documents(const WindowedOptions& options,
                                         const fgvk::PassRegistry& registry) {
-  const app::DataPaths paths = app::find_data_paths();
+  const runtime::DataPaths paths = runtime::find_data_paths();
   const fs::path graph_path =
       options.graph.empty() ? paths.graphs() / "layered-ssss.json" : fs::path(options.graph);
   const fs::path scene_path =
@@ -172,7 +172,7 @@ std::optional<Documents> load_documents(const WindowedOptions& options,
 int run_windowed_editor(const WindowedOptions& options) {
   const fgvk::PassRegistry registry = passes::builtin_pass_registry();
   auto documents = load_documents(options, registry);
-  if (!documents) return app::kExitDiagnostics;
+  if (!documents) return runtime::kExitDiagnostics;
   const fs::path scene_file = documents->scene.file();
   const fs::path graph_file = documents->graph.file();
 
@@ -182,15 +182,15 @@ int run_windowed_editor(const WindowedOptions& options) {
                    "antumbra edit");
   } catch (const std::runtime_error& e) {
     std::fprintf(stderr, "antumbra edit: %s (without a display, use --headless)\n", e.what());
-    return app::kExitRuntime;
+    return runtime::kExitRuntime;
   }
-  app::SessionOptions session_options;
+  runtime::SessionOptions session_options;
   session_options.device = options.device;
   session_options.validation = options.validation;
   session_options.viewport = {options.width, options.height};
   session_options.instance_extensions = window->required_instance_extensions();
   session_options.present = true;
-  app::RenderSession session(app::find_data_paths(), session_options);
+  runtime::RenderSession session(runtime::find_data_paths(), session_options);
   std::printf("device: %s%s\n", session.gpu().device_name().c_str(),
               options.validation ? " (validation + synchronization validation on)" : "");
 
@@ -200,13 +200,13 @@ int run_windowed_editor(const WindowedOptions& options) {
   ImguiLayer ui(session.gpu(), *window, presenter.swapchain());
   EditorState state(session, std::move(documents->scene), std::move(documents->graph),
                     editor::lookup_in(registry.reflection()));
-  if (!state.start()) return app::kExitDiagnostics;
+  if (!state.start()) return runtime::kExitDiagnostics;
   if (!options.select.empty()) {
     const int light = state.scene().find_light(options.select);
     if (light < 0) {
       std::fprintf(stderr, "antumbra edit: --select: the scene has no light named '%s'\n",
                    options.select.c_str());
-      return app::kExitUsage;
+      return runtime::kExitUsage;
     }
     state.scene().select(light);
   }
@@ -314,9 +314,9 @@ int run_windowed_editor(const WindowedOptions& options) {
     const std::size_t errors = session.gpu().validation_error_count();
     std::printf("validation: %zu error(s), %zu warning(s)\n", errors,
                 session.gpu().validation_warning_count());
-    if (errors > 0) return app::kExitDiagnostics;
+    if (errors > 0) return runtime::kExitDiagnostics;
   }
-  return app::kExitOk;
+  return runtime::kExitOk;
 }
 
 }  // namespace antumbra::editor_app

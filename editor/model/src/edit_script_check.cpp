@@ -5,13 +5,13 @@
 #include <string>
 #include <vector>
 
-#include "antumbra/editor/editor_codes.hpp"
+#include "antumbra/base/diagnostic_codes.hpp"
 #include "antumbra/fg/registry.hpp"
 
 namespace antumbra::editor {
 namespace {
 
-using fg::Json;
+using base::Json;
 
 // What a key's value must be. `at`: a viewport position ([x, y], a light's name or
 // {"over": [x, y, z]}).
@@ -168,10 +168,11 @@ std::string quoted(const std::string& text) {
   return out;
 }
 
-void check_step(const fg::JsonDocument& script, const Json& step, const std::string& pointer,
-                fg::Diagnostics& out) {
+void check_step(const base::JsonDocument& script, const Json& step, const std::string& pointer,
+                base::Diagnostics& out) {
   const auto error = [&](const std::string& message, const std::string& at, bool at_key) {
-    out.add(script.make(codes::kScriptMalformed, fg::Severity::error, message, at, at_key));
+    out.add(
+        script.make(codes::editor::kScriptMalformed, base::Severity::error, message, at, at_key));
   };
   if (!step.is_object()) {
     error("a step must be an object with \"do\" or \"expect\"", pointer, false);
@@ -226,11 +227,12 @@ void check_step(const fg::JsonDocument& script, const Json& step, const std::str
 
 }  // namespace
 
-fg::Diagnostics check_edit_script(const fg::JsonDocument& script) {
-  fg::Diagnostics out;
+base::Diagnostics check_edit_script(const base::JsonDocument& script) {
+  base::Diagnostics out;
   const Json& root = script.root();
   const auto error = [&](const std::string& message, const std::string& at, bool at_key) {
-    out.add(script.make(codes::kScriptMalformed, fg::Severity::error, message, at, at_key));
+    out.add(
+        script.make(codes::editor::kScriptMalformed, base::Severity::error, message, at, at_key));
   };
   if (!root.is_object()) {
     error("expected {\"steps\": [...]}", "", false);

@@ -4,8 +4,10 @@
 #include <cmath>
 #include <cstdio>
 
-#include "antumbra/editor/editor_codes.hpp"
+#include "antumbra/base/diagnostic_codes.hpp"
 #include "antumbra/fg/graph_desc.hpp"
+#include "light_layering/core/layer_assignment.hpp"
+#include "light_layering/core/layer_cap.hpp"
 
 namespace antumbra::editor {
 namespace {
@@ -32,8 +34,8 @@ std::string range_text(const fg::ParamDesc& d) {
 // Checks (and for integers, normalises) `value` for parameter `d`: the reason it is
 // refused, or nullopt. An out-of-range number is clamped under RangePolicy::clamp, with
 // `note` saying so.
-std::optional<std::string> check_value(const fg::ParamDesc& d, fg::Json& value, RangePolicy policy,
-                                       std::string& note) {
+std::optional<std::string> check_value(const fg::ParamDesc& d, base::Json& value,
+                                       RangePolicy policy, std::string& note) {
   const std::string who = "parameter " + in_quotes(d.name);
   switch (d.type) {
     case fg::ParamType::boolean:
@@ -66,7 +68,7 @@ std::optional<std::string> check_value(const fg::ParamDesc& d, fg::Json& value, 
     if (integer) v = below ? std::ceil(v) : std::floor(v);
     note = outside + "; clamped to " + number_text(v);
   }
-  value = integer ? fg::Json(static_cast<std::int64_t>(v)) : fg::Json(v);
+  value = integer ? base::Json(static_cast<std::int64_t>(v)) : base::Json(v);
   return std::nullopt;
 }
 
@@ -81,17 +83,17 @@ PassDescLookup lookup_in(const fg::Registry& registry) {
   return [&registry](std::string_view type) { return registry.find(type); };
 }
 
-fg::Result<GraphDocument> GraphDocument::load(const std::filesystem::path& file,
-                                              PassDescLookup lookup) {
+base::Result<GraphDocument> GraphDocument::load(const std::filesystem::path& file,
+                                                PassDescLookup lookup) {
   auto text = read_text_file(file);
   if (!text.ok()) return text.diagnostics();
   return parse(text.value(), file, std::move(lookup));
 }
 
-fg::Result<GraphDocument> GraphDocument::parse(std::string_view text,
-                                               const std::filesystem::path& file,
-                                               PassDescLookup lookup) {
-  auto document = fg::parse_json(text, file.string());
+base::Result<GraphDocument> GraphDocument::parse(std::string_view text,
+                                                 const std::filesystem::path& file,
+                                                 PassDescLookup lookup) {
+  auto document = base::parse_json(text, file.string());
   if (!document.ok()) return document.diagnostics();
   // The structure the views rely on (passes with names and object params) is what
   // parse_graph checks; its located diagnostics are the editor's.
@@ -100,7 +102,7 @@ fg::Result<GraphDocument> GraphDocument::parse(std::string_view text,
   GraphDocument doc;
   doc.file_ = JsonFile(file, std::move(document.value()), std::string(text));
   doc.lookup_ = std::move(lookup);
-  return fg::Result<GraphDocument>(std::move(doc), graph.diagnostics());
+  return base::Result<GraphDocument>(std::move(doc), graph.diagnostics());
 }
 
 int GraphDocument::find_pass(std::string_view name) const {
@@ -113,11 +115,11 @@ int GraphDocument::find_pass(std::string_view name) const {
 }
 
 PassView GraphDocument::view(std::size_t index) const {
-  const fg::Json& pass = json()["passes"][index];
+  const base::Json& pass = json()["passes"][index];
   PassView out{index, pass.value("name", ""), pass.value("type", ""), false, {}};
   const fg::PassDesc* desc = lookup_ ? lookup_(out.type) : nullptr;
   out.known_type = desc != nullptr;
-  const fg::Json params = pass.value("params", fg::Json::object());
+  const base::Json params = pass.value("params", base::Json::object());
   if (desc != nullptr) {
     for (const fg::ParamDesc& d : desc->params) {
       ParamView p = declared_view(d);
@@ -157,10 +159,10 @@ std::optional<ParamView> GraphDocument::param(std::string_view pass, std::string
 }
 
 EditResult GraphDocument::set_param(std::string_view pass, std::string_view name,
-                                    const fg::Json& value, RangePolicy policy) {
+                                    const base::Json& value, RangePolicy policy) {
   const int index = find_pass(pass);
   if (index < 0) return EditResult::refused("there is no pass " + in_quotes(pass));
-  const fg::Json& object = json()["passes"][static_cast<std::size_t>(index)];
+  const base::Json& object = json()["passes"][static_cast<std::size_t>(index)];
   const std::string type = object.value("type", "");
   const fg::PassDesc* desc = lookup_ ? lookup_(type) : nullptr;
   if (desc == nullptr) {
@@ -174,24 +176,24 @@ EditResult GraphDocument::set_param(std::string_view pass, std::string_view name
     return EditResult::refused(in_quotes(type) + " has no parameter " + in_quotes(name) +
                                fg::did_you_mean(name, names));
   }
-  fg::Json checked = value;
+  base::Json checked = value;
   std::string note;
   if (auto why = check_value(*d, checked, policy, note)) return EditResult::refused(*why);
 
-  const std::string pointer = fg::pointer_append("/passes", static_cast<std::size_t>(index));
+  const std::string pointer = base::pointer_append("/passes", static_cast<std::size_t>(index));
   Command command{"Set " + std::string(pass) + "." + std::string(name) + " to " + checked.dump(),
                   {},
                   index,
                   index};
   if (const auto params = object.find("params"); params != object.end()) {
-    std::optional<fg::Json> before;
+    std::optional<base::Json> before;
     if (const auto it = params->find(std::string(name)); it != params->end()) before = *it;
     if (before && *before == checked && before->type() == checked.type())
       return {true, false, note};
     command.edits.push_back(JsonEdit::set(pointer + "/params", std::string(name), before, checked));
   } else {
     command.edits.push_back(
-        JsonEdit::set(pointer, "params", std::nullopt, fg::Json::object({{name, checked}})));
+        JsonEdit::set(pointer, "params", std::nullopt, base::Json::object({{name, checked}})));
   }
   file_.apply(std::move(command));
   return {true, true, note};
@@ -200,11 +202,11 @@ EditResult GraphDocument::set_param(std::string_view pass, std::string_view name
 EditResult GraphDocument::reset_param(std::string_view pass, std::string_view name) {
   const int index = find_pass(pass);
   if (index < 0) return EditResult::refused("there is no pass " + in_quotes(pass));
-  const fg::Json& object = json()["passes"][static_cast<std::size_t>(index)];
+  const base::Json& object = json()["passes"][static_cast<std::size_t>(index)];
   const auto params = object.find("params");
   if (params == object.end() || !params->contains(std::string(name))) return {};
   const std::string pointer =
-      fg::pointer_append("/passes", static_cast<std::size_t>(index)) + "/params";
+      base::pointer_append("/passes", static_cast<std::size_t>(index)) + "/params";
   file_.apply(
       {"Reset " + std::string(pass) + "." + std::string(name),
        {JsonEdit::set(pointer, std::string(name), (*params)[std::string(name)], std::nullopt)},
@@ -213,13 +215,30 @@ EditResult GraphDocument::reset_param(std::string_view pass, std::string_view na
   return {true, true, {}};
 }
 
-fg::Diagnostics GraphDocument::recover() {
+base::Diagnostics GraphDocument::recover() {
   auto document = file_.read_recovery();
   if (!document.ok()) return document.diagnostics();
   auto graph = fg::parse_graph(document.value());
   if (!graph.ok()) return graph.diagnostics();
   file_.replace_content(document->root());
   return graph.diagnostics();
+}
+
+std::string layering_pass(const GraphDocument& graph) {
+  for (const auto& pass : graph.passes()) {
+    if (pass.type == layering::kLayeringPassType) return pass.name;
+  }
+  return {};
+}
+
+int layer_cap(const GraphDocument& graph) {
+  const std::string pass = layering_pass(graph);
+  if (!pass.empty()) {
+    if (const auto param = graph.param(pass, layering::kLayerCap.name)) {
+      if (const auto cap = base::json_as<int>(param->value)) return *cap;
+    }
+  }
+  return layering::LayeringOptions{}.max_layers;
 }
 
 }  // namespace antumbra::editor

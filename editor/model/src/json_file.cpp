@@ -6,23 +6,22 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "antumbra/editor/editor_codes.hpp"
+#include "antumbra/base/diagnostic_codes.hpp"
 #include "antumbra/editor/json_text.hpp"
-#include "antumbra/fg/diagnostic_codes.hpp"
 
 namespace antumbra::editor {
 
-fg::Result<std::string> read_text_file(const std::filesystem::path& file) {
+base::Result<std::string> read_text_file(const std::filesystem::path& file) {
   std::error_code ec;
   errno = 0;
   std::ifstream in(file, std::ios::binary);
   const int reason = errno;
   if (!in || std::filesystem::is_directory(file, ec)) {
-    fg::Diagnostics diagnostics;
+    base::Diagnostics diagnostics;
     const std::string why = std::filesystem::is_directory(file, ec) ? "it is a directory"
                             : reason != 0                           ? std::strerror(reason)
                                                                     : "unknown reason";
-    diagnostics.add({fg::codes::kFileUnreadable, fg::Severity::error,
+    diagnostics.add({codes::graph::kFileUnreadable, base::Severity::error,
                      "cannot open the file: " + why, file.string(), "", 0, 0});
     return diagnostics;
   }
@@ -31,7 +30,7 @@ fg::Result<std::string> read_text_file(const std::filesystem::path& file) {
   return buffer.str();
 }
 
-JsonFile::JsonFile(const std::filesystem::path& path, fg::JsonDocument document, std::string text)
+JsonFile::JsonFile(const std::filesystem::path& path, base::JsonDocument document, std::string text)
     : path_(path),
       base_(std::move(document)),
       base_text_(std::move(text)),
@@ -48,7 +47,7 @@ std::string JsonFile::to_text() const {
 void JsonFile::save_as(const std::filesystem::path& path) {
   const std::string text = to_text();
   write_file_atomically(path, text, save_hooks_);
-  auto reparsed = fg::parse_json(text, path.string());
+  auto reparsed = base::parse_json(text, path.string());
   if (!reparsed.ok()) throw std::logic_error("editor: the saved text does not parse");
   recovery_.remove();
   if (path != path_) recovery_ = RecoveryFile(path, recovery_.interval());
@@ -63,19 +62,19 @@ bool JsonFile::autosave_if_due(RecoveryFile::Clock::time_point now) {
   return recovery_.write_if_due(now, dirty(), revision(), [this] { return to_text(); });
 }
 
-fg::Result<fg::JsonDocument> JsonFile::read_recovery() const {
+base::Result<base::JsonDocument> JsonFile::read_recovery() const {
   if (!recovery_.exists()) {
-    fg::Diagnostics diagnostics;
-    diagnostics.add({codes::kNoRecovery, fg::Severity::error, "there is no recovery file",
+    base::Diagnostics diagnostics;
+    diagnostics.add({codes::editor::kNoRecovery, base::Severity::error, "there is no recovery file",
                      recovery_.path().string(), "", 0, 0});
     return diagnostics;
   }
   auto text = read_text_file(recovery_.path());
   if (!text.ok()) return text.diagnostics();
-  return fg::parse_json(text.value(), recovery_.path().string());
+  return base::parse_json(text.value(), recovery_.path().string());
 }
 
-void JsonFile::replace_content(fg::Json root) {
+void JsonFile::replace_content(base::Json root) {
   // The file on disk stays the base: the new content is unsaved changes to it.
   root_ = std::move(root);
   history_.clear(false);

@@ -9,7 +9,7 @@
 namespace antumbra::editor {
 namespace {
 
-using fg::Json;
+using base::Json;
 
 struct Replacement {
   std::string pointer;
@@ -29,13 +29,13 @@ bool diff_values(const Json& before, const Json& after, const std::string& point
       auto b = after.begin();
       for (; a != before.end(); ++a, ++b) {
         if (a.key() != b.key()) return false;
-        if (!diff_values(a.value(), b.value(), fg::pointer_append(pointer, a.key()), out))
+        if (!diff_values(a.value(), b.value(), base::pointer_append(pointer, a.key()), out))
           return false;
       }
       return true;
     }
     for (std::size_t i = 0; i < before.size(); ++i) {
-      if (!diff_values(before[i], after[i], fg::pointer_append(pointer, i), out)) return false;
+      if (!diff_values(before[i], after[i], base::pointer_append(pointer, i), out)) return false;
     }
     return true;
   }
@@ -86,7 +86,7 @@ std::string format_json(const Json& value) {
   return value.dump(2) + "\n";
 }
 
-std::string preserve_format(const fg::JsonDocument& original, std::string_view original_text,
+std::string preserve_format(const base::JsonDocument& original, std::string_view original_text,
                             const Json& current) {
   std::vector<Replacement> replacements;
   if (!diff_values(original.root(), current, "", replacements)) return format_json(current);
@@ -94,7 +94,7 @@ std::string preserve_format(const fg::JsonDocument& original, std::string_view o
 
   const std::vector<std::size_t> starts = line_starts(original_text);
   for (Replacement& r : replacements) {
-    const fg::TextPosition at = original.position(r.pointer);
+    const base::TextPosition at = original.position(r.pointer);
     if (at.line < 1 || static_cast<std::size_t>(at.line) > starts.size() || at.column < 1)
       return format_json(current);
     r.begin =
@@ -118,7 +118,7 @@ std::string preserve_format(const fg::JsonDocument& original, std::string_view o
   out.append(original_text.substr(copied));
 
   // Trust, but verify: the spliced text must mean exactly `current`, key order included.
-  const auto reparsed = fg::parse_json(out, original.file());
+  const auto reparsed = base::parse_json(out, original.file());
   if (!reparsed.ok() || reparsed.value().root() != current) return format_json(current);
   return out;
 }

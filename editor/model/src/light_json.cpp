@@ -7,21 +7,21 @@
 #include <string>
 #include <unordered_map>
 
-#include "antumbra/editor/editor_codes.hpp"
+#include "antumbra/base/diagnostic_codes.hpp"
 
 namespace antumbra::editor::detail {
 namespace {
 
 class LightReader {
  public:
-  LightReader(const fg::JsonDocument* located, fg::Diagnostics& diagnostics)
+  LightReader(const base::JsonDocument* located, base::Diagnostics& diagnostics)
       : located_(located), diagnostics_(diagnostics) {}
 
   void error(const char* code, const std::string& message, const std::string& pointer) {
     if (located_ != nullptr) {
-      diagnostics_.add(located_->make(code, fg::Severity::error, message, pointer));
+      diagnostics_.add(located_->make(code, base::Severity::error, message, pointer));
     } else {
-      diagnostics_.add({code, fg::Severity::error, message, "", pointer, 0, 0});
+      diagnostics_.add({code, base::Severity::error, message, "", pointer, 0, 0});
     }
   }
 
@@ -32,12 +32,12 @@ class LightReader {
     if (it == light.end()) return std::nullopt;
     const std::string where = p + "/" + key;
     if (!it->is_number()) {
-      error(codes::kLightField, std::string("'") + key + "' must be a number", where);
+      error(codes::editor::kLightField, std::string("'") + key + "' must be a number", where);
       return std::nullopt;
     }
     const auto v = it->get<double>();
     if (!std::isfinite(v) || v < min || (min_exclusive && v == min)) {
-      error(codes::kLightField,
+      error(codes::editor::kLightField,
             std::string("'") + key + "' must be " + (min_exclusive ? "> " : ">= ") +
                 std::to_string(static_cast<int>(min)),
             where);
@@ -53,13 +53,13 @@ class LightReader {
     const bool shape = it->is_array() && it->size() == 3 && (*it)[0].is_number() &&
                        (*it)[1].is_number() && (*it)[2].is_number();
     if (!shape) {
-      error(codes::kLightField, std::string("'") + key + "' must be an array of 3 numbers",
+      error(codes::editor::kLightField, std::string("'") + key + "' must be an array of 3 numbers",
             p + "/" + key);
       return std::nullopt;
     }
     glm::vec3 v((*it)[0].get<float>(), (*it)[1].get<float>(), (*it)[2].get<float>());
     if (non_negative && (v.x < 0 || v.y < 0 || v.z < 0)) {
-      error(codes::kLightField, std::string("'") + key + "' must be >= 0", p + "/" + key);
+      error(codes::editor::kLightField, std::string("'") + key + "' must be >= 0", p + "/" + key);
       return std::nullopt;
     }
     return v;
@@ -67,7 +67,8 @@ class LightReader {
 
   void read(const Json& light, const std::string& p, scene::PointLight& out) {
     if (const auto it = light.find(kName); it == light.end() || !it->is_string()) {
-      error(codes::kLightName, "a light needs a 'name' string (lights are selected by name)",
+      error(codes::editor::kLightName,
+            "a light needs a 'name' string (lights are selected by name)",
             it == light.end() ? p : p + "/" + kName);
     } else {
       out.name = it->get<std::string>();
@@ -79,7 +80,7 @@ class LightReader {
       } else if (type == "directional") {
         out.type = scene::LightType::directional;
       } else if (type != "point") {
-        error(codes::kLightField, "'type' must be \"point\", \"spot\" or \"directional\"",
+        error(codes::editor::kLightField, "'type' must be \"point\", \"spot\" or \"directional\"",
               p + "/" + kType);
       }
     }
@@ -89,16 +90,17 @@ class LightReader {
       out.size = 0.27f;
     } else {
       if (auto v = vec3(light, p, kPosition, false)) out.position = *v;
-      if (!light.contains(kPosition)) error(codes::kLightField, "a light needs a 'position'", p);
+      if (!light.contains(kPosition))
+        error(codes::editor::kLightField, "a light needs a 'position'", p);
       if (auto v = number(light, p, kRange, 0.0f, true)) out.range = *v;
     }
     if (auto v = vec3(light, p, kDirection, false); v && glm::dot(*v, *v) > 0.0f) {
       out.direction = *v / std::sqrt(glm::dot(*v, *v));
     } else if (v) {
-      error(codes::kLightField, "light 'direction' must not be zero", p + "/" + kDirection);
+      error(codes::editor::kLightField, "light 'direction' must not be zero", p + "/" + kDirection);
     }
     if (out.type != scene::LightType::point && !light.contains(kDirection))
-      error(codes::kLightField, "a spot or directional light needs a 'direction'", p);
+      error(codes::editor::kLightField, "a spot or directional light needs a 'direction'", p);
     if (out.type == scene::LightType::spot) {
       if (auto v = number(light, p, kAngle, 0.0f, true)) out.spot_outer = *v;
       out.spot_inner = 0.8f * out.spot_outer;
@@ -111,43 +113,44 @@ class LightReader {
       if (it->is_boolean()) {
         out.casts_shadows = it->get<bool>();
       } else {
-        error(codes::kLightField, "'castsShadows' must be true or false", p + "/" + kCastsShadows);
+        error(codes::editor::kLightField, "'castsShadows' must be true or false",
+              p + "/" + kCastsShadows);
       }
     }
   }
 
  private:
-  const fg::JsonDocument* located_;
-  fg::Diagnostics& diagnostics_;
+  const base::JsonDocument* located_;
+  base::Diagnostics& diagnostics_;
 };
 
 }  // namespace
 
-std::vector<scene::PointLight> read_lights(const Json& root, const fg::JsonDocument* located,
-                                           fg::Diagnostics& diagnostics) {
+std::vector<scene::PointLight> read_lights(const Json& root, const base::JsonDocument* located,
+                                           base::Diagnostics& diagnostics) {
   std::vector<scene::PointLight> lights;
   LightReader reader(located, diagnostics);
   const auto it = root.find("lights");
   if (it == root.end()) return lights;
   if (!it->is_array()) {
-    reader.error(codes::kLightsNotArray, "'lights' must be an array", "/lights");
+    reader.error(codes::editor::kLightsNotArray, "'lights' must be an array", "/lights");
     return lights;
   }
   std::unordered_map<std::string, std::size_t> names;
   int sun = -1;
   for (std::size_t i = 0; i < it->size(); ++i) {
-    const std::string p = fg::pointer_append("/lights", i);
+    const std::string p = base::pointer_append("/lights", i);
     scene::PointLight light;
     if (!(*it)[i].is_object()) {
-      reader.error(codes::kLightNotObject, "a light must be an object", p);
+      reader.error(codes::editor::kLightNotObject, "a light must be an object", p);
     } else {
       reader.read((*it)[i], p, light);
     }
     if ((*it)[i].contains(kName) && light.name.empty()) {
-      reader.error(codes::kLightName, "light name is empty", p + "/" + kName);
+      reader.error(codes::editor::kLightName, "light name is empty", p + "/" + kName);
     } else if (!light.name.empty()) {
       if (const auto [first, inserted] = names.emplace(light.name, i); !inserted) {
-        reader.error(codes::kLightName,
+        reader.error(codes::editor::kLightName,
                      "duplicate light name '" + light.name + "' (first used by /lights/" +
                          std::to_string(first->second) + ")",
                      p + "/" + kName);
@@ -155,7 +158,7 @@ std::vector<scene::PointLight> read_lights(const Json& root, const fg::JsonDocum
     }
     if (light.type == scene::LightType::directional) {
       if (sun >= 0) {
-        reader.error(codes::kSecondSun,
+        reader.error(codes::editor::kSecondSun,
                      "a scene has at most one directional light (the first is /lights/" +
                          std::to_string(sun) + ")",
                      p + "/" + kType);

@@ -7,13 +7,13 @@
 
 #include <glm/vec3.hpp>
 
-#include "antumbra/fg/diagnostics.hpp"
-#include "antumbra/fg/json_document.hpp"
+#include "antumbra/base/diagnostics.hpp"
+#include "antumbra/base/json_document.hpp"
 #include "antumbra/scene/scene.hpp"
 
 namespace antumbra::editor::detail {
 
-using fg::Json;
+using base::Json;
 
 inline constexpr const char* kName = "name";
 inline constexpr const char* kType = "type";
@@ -30,8 +30,8 @@ inline constexpr const char* kInnerAngle = "innerAngle";
 // Reads /lights of `root`. With a `located` document (at load), every problem becomes a
 // diagnostic at its line:column; without one (after the editor's own, validated edits)
 // problems cannot occur and values fall back to defaults.
-std::vector<scene::PointLight> read_lights(const Json& root, const fg::JsonDocument* located,
-                                           fg::Diagnostics& diagnostics);
+std::vector<scene::PointLight> read_lights(const Json& root, const base::JsonDocument* located,
+                                           base::Diagnostics& diagnostics);
 
 // The shortest decimal that reads back as the same float: sliders hand over floats, and
 // 2.3f must be written as 2.3, not 2.299999952316284.

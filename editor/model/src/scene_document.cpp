@@ -2,7 +2,7 @@
 // scene_edits.cpp, saving and the recovery file in json_file.cpp.
 #include "antumbra/editor/scene_document.hpp"
 
-#include "antumbra/editor/editor_codes.hpp"
+#include "antumbra/base/diagnostic_codes.hpp"
 #include "antumbra/scene/scene_file.hpp"
 #include "light_json.hpp"
 
@@ -10,18 +10,18 @@ namespace antumbra::editor {
 namespace {
 
 // What the editor needs before it can edit a scene safely; the lights come back read.
-std::vector<scene::PointLight> check_scene(const fg::JsonDocument& document,
-                                           fg::Diagnostics& diagnostics) {
-  const fg::Json& root = document.root();
+std::vector<scene::PointLight> check_scene(const base::JsonDocument& document,
+                                           base::Diagnostics& diagnostics) {
+  const base::Json& root = document.root();
   if (!root.is_object()) {
-    diagnostics.add(document.make(codes::kNotAnObject, fg::Severity::error,
+    diagnostics.add(document.make(codes::editor::kNotAnObject, base::Severity::error,
                                   "a scene file must hold a JSON object", ""));
     return {};
   }
   // A newer format may give known keys new meanings: editing it could corrupt it.
   if (const auto it = root.find("version");
       it != root.end() && it->is_number() && it->get<double>() > scene::kSceneFormatVersion) {
-    diagnostics.add(document.make(codes::kNewerVersion, fg::Severity::error,
+    diagnostics.add(document.make(codes::editor::kNewerVersion, base::Severity::error,
                                   "scene format version " + it->dump() +
                                       " is newer than this editor supports (" +
                                       std::to_string(scene::kSceneFormatVersion) + ")",
@@ -33,23 +33,23 @@ std::vector<scene::PointLight> check_scene(const fg::JsonDocument& document,
 
 }  // namespace
 
-fg::Result<SceneDocument> SceneDocument::load(const std::filesystem::path& file) {
+base::Result<SceneDocument> SceneDocument::load(const std::filesystem::path& file) {
   auto text = read_text_file(file);
   if (!text.ok()) return text.diagnostics();
   return parse(text.value(), file);
 }
 
-fg::Result<SceneDocument> SceneDocument::parse(std::string_view text,
-                                               const std::filesystem::path& file) {
-  auto document = fg::parse_json(text, file.string());
+base::Result<SceneDocument> SceneDocument::parse(std::string_view text,
+                                                 const std::filesystem::path& file) {
+  auto document = base::parse_json(text, file.string());
   if (!document.ok()) return document.diagnostics();
-  fg::Diagnostics diagnostics;
+  base::Diagnostics diagnostics;
   std::vector<scene::PointLight> lights = check_scene(document.value(), diagnostics);
   if (diagnostics.has_errors()) return diagnostics;
   SceneDocument doc;
   doc.file_ = JsonFile(file, std::move(document.value()), std::string(text));
   doc.lights_ = std::move(lights);
-  return fg::Result<SceneDocument>(std::move(doc), std::move(diagnostics));
+  return base::Result<SceneDocument>(std::move(doc), std::move(diagnostics));
 }
 
 int SceneDocument::find_light(std::string_view name) const {
@@ -64,7 +64,7 @@ void SceneDocument::select(int index) {
 }
 
 void SceneDocument::refresh() {
-  fg::Diagnostics ignored;  // edits are validated before they are made
+  base::Diagnostics ignored;  // edits are validated before they are made
   lights_ = detail::read_lights(file_.root(), nullptr, ignored);
   select(selected_);
 }
@@ -94,14 +94,14 @@ bool SceneDocument::redo() {
   return command != nullptr;
 }
 
-fg::Diagnostics SceneDocument::validate() const {
+base::Diagnostics SceneDocument::validate() const {
   return scene::parse_scene_text(to_text(), file().string()).diagnostics();
 }
 
-fg::Diagnostics SceneDocument::recover() {
+base::Diagnostics SceneDocument::recover() {
   auto document = file_.read_recovery();
   if (!document.ok()) return document.diagnostics();
-  fg::Diagnostics diagnostics;
+  base::Diagnostics diagnostics;
   (void)check_scene(document.value(), diagnostics);
   if (diagnostics.has_errors()) return diagnostics;
   file_.replace_content(document->root());

@@ -98,7 +98,7 @@ EditResult SceneDocument::apply(std::size_t light, const LightChanges& c, std::s
       pending.set(detail::kInnerAngle, std::nullopt);
     }
     // Spot and sun need a direction (the engine requires it), a point light ignores it.
-    const fg::Json& object = file_.root()["lights"][light];
+    const base::Json& object = file_.root()["lights"][light];
     if (type == scene::LightType::point) {
       pending.set(detail::kDirection, std::nullopt);
     } else if (!object.contains(detail::kDirection)) {
@@ -141,7 +141,7 @@ EditResult SceneDocument::apply(std::size_t light, const LightChanges& c, std::s
   if (c.casts_shadows && *c.casts_shadows != now.casts_shadows)
     pending.set(detail::kCastsShadows, Json(*c.casts_shadows));
 
-  const std::string pointer = fg::pointer_append("/lights", light);
+  const std::string pointer = base::pointer_append("/lights", light);
   Command command{description.empty() ? "Edit " + in_quotes(now.name) : std::move(description),
                   pending.edits(file_.root()["lights"][light], pointer), static_cast<int>(light),
                   static_cast<int>(light)};

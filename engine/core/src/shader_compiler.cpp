@@ -118,8 +118,8 @@ class Includer final : public glslang::TShader::Includer {
   std::vector<fs::path> opened_;
 };
 
-fg::Diagnostic make_error(const char* code, std::string message, const std::string& file) {
-  fg::Diagnostic diagnostic;
+base::Diagnostic make_error(const char* code, std::string message, const std::string& file) {
+  base::Diagnostic diagnostic;
   diagnostic.code = code;
   diagnostic.message = std::move(message);
   diagnostic.file = file;
@@ -146,7 +146,7 @@ bool blank(const std::string& line) {
 // a statement or block (a missing ';' or ')'), the mistake is at the end of that previous
 // line. The diagnostic then points there, with the source line and the column of the
 // token (or of the line's end) for the caret.
-void point_into_source(fg::Diagnostic& diagnostic, const std::string& text) {
+void point_into_source(base::Diagnostic& diagnostic, const std::string& text) {
   const auto lines = split_lines(text);
   if (diagnostic.line < 1 || diagnostic.line > static_cast<int>(lines.size())) return;
   auto index = static_cast<std::size_t>(diagnostic.line - 1);
@@ -189,10 +189,10 @@ void point_into_source(fg::Diagnostic& diagnostic, const std::string& text) {
 
 // Source lines and carets for every located diagnostic: the top-level file's text is at
 // hand, included files are read again.
-void add_excerpts(fg::Diagnostics& diagnostics, const std::string& top_name,
+void add_excerpts(base::Diagnostics& diagnostics, const std::string& top_name,
                   const std::string& top_source) {
-  fg::Diagnostics out;
-  for (fg::Diagnostic d : diagnostics) {
+  base::Diagnostics out;
+  for (base::Diagnostic d : diagnostics) {
     if (d.line > 0) {
       if (d.file == top_name) {
         point_into_source(d, top_source);
@@ -207,31 +207,31 @@ void add_excerpts(fg::Diagnostics& diagnostics, const std::string& top_name,
 
 }  // namespace
 
-fg::Diagnostics parse_glslang_log(std::string_view log, const std::string& fallback_file) {
+base::Diagnostics parse_glslang_log(std::string_view log, const std::string& fallback_file) {
   static const std::regex kLocated(R"(^(ERROR|WARNING): (.+):(\d+): (.*)$)");
   static const std::regex kSummary(R"(^ERROR: \d+ compilation errors\.)");
-  fg::Diagnostics diagnostics;
+  base::Diagnostics diagnostics;
   std::istringstream lines{std::string(log)};
   std::string line;
   std::smatch match;
   while (std::getline(lines, line)) {
     if (!line.empty() && line.back() == '\r') line.pop_back();
     if (line.empty() || std::regex_search(line, kSummary)) continue;
-    fg::Diagnostic diagnostic;
+    base::Diagnostic diagnostic;
     if (std::regex_match(line, match, kLocated)) {
       const bool error = match[1] == "ERROR";
-      diagnostic.code = error ? shader_codes::kCompile : shader_codes::kCompileWarning;
-      diagnostic.severity = error ? fg::Severity::error : fg::Severity::warning;
+      diagnostic.code = error ? codes::shader::kCompile : codes::shader::kCompileWarning;
+      diagnostic.severity = error ? base::Severity::error : base::Severity::warning;
       diagnostic.file = match[2].str();
       // glslang says "0:12" when a string has no name: that is our top-level file.
       if (diagnostic.file == "0" || diagnostic.file.empty()) diagnostic.file = fallback_file;
       diagnostic.line = std::stoi(match[3].str());
       diagnostic.message = match[4].str();
     } else if (line.rfind("ERROR: ", 0) == 0) {
-      diagnostic = make_error(shader_codes::kCompile, line.substr(7), fallback_file);
+      diagnostic = make_error(codes::shader::kCompile, line.substr(7), fallback_file);
     } else if (line.rfind("WARNING: ", 0) == 0) {
-      diagnostic = make_error(shader_codes::kCompileWarning, line.substr(9), fallback_file);
-      diagnostic.severity = fg::Severity::warning;
+      diagnostic = make_error(codes::shader::kCompileWarning, line.substr(9), fallback_file);
+      diagnostic.severity = base::Severity::warning;
     } else {
       continue;  // glslang's informational lines
     }
@@ -262,14 +262,14 @@ ShaderCompiler::~ShaderCompiler() {
   glslang::FinalizeProcess();
 }
 
-fg::Result<ShaderBinary> ShaderCompiler::compile(const ShaderRequest& request) {
+base::Result<ShaderBinary> ShaderCompiler::compile(const ShaderRequest& request) {
   std::error_code error;
   const fs::path path = fs::weakly_canonical(fs::absolute(request.path), error).lexically_normal();
   const std::optional<ShaderStage> stage =
       request.stage ? request.stage : stage_from_path(request.path);
-  fg::Diagnostics diagnostics;
+  base::Diagnostics diagnostics;
   if (!stage) {
-    diagnostics.add(make_error(shader_codes::kUnknownStage,
+    diagnostics.add(make_error(codes::shader::kUnknownStage,
                                "cannot tell the shader stage from the extension '" +
                                    request.path.extension().string() +
                                    "' (use .vert .frag .comp .geom .tesc .tese)",
@@ -279,7 +279,7 @@ fg::Result<ShaderBinary> ShaderCompiler::compile(const ShaderRequest& request) {
   auto source = detail::read_text(path);
   if (!source) {
     diagnostics.add(
-        make_error(shader_codes::kUnreadable, "cannot read shader source", path.string()));
+        make_error(codes::shader::kUnreadable, "cannot read shader source", path.string()));
     return diagnostics;
   }
   const detail::SourceScan scan = detail::scan_source(path, *source, options_.include_dirs, *stage,
@@ -300,18 +300,18 @@ fg::Result<ShaderBinary> ShaderCompiler::compile(const ShaderRequest& request) {
   return result;
 }
 
-fg::Result<ShaderBinary> ShaderCompiler::compile_source(std::string_view source,
-                                                        const fs::path& virtual_path,
-                                                        ShaderStage stage,
-                                                        const std::vector<ShaderDefine>& defines,
-                                                        const std::string& entry_point) {
+base::Result<ShaderBinary> ShaderCompiler::compile_source(std::string_view source,
+                                                          const fs::path& virtual_path,
+                                                          ShaderStage stage,
+                                                          const std::vector<ShaderDefine>& defines,
+                                                          const std::string& entry_point) {
   return compile_glsl(std::string(source), virtual_path, stage, defines, entry_point);
 }
 
-fg::Result<ShaderBinary> ShaderCompiler::compile_glsl(const std::string& source,
-                                                      const fs::path& path, ShaderStage stage,
-                                                      const std::vector<ShaderDefine>& defines,
-                                                      const std::string& entry_point) {
+base::Result<ShaderBinary> ShaderCompiler::compile_glsl(const std::string& source,
+                                                        const fs::path& path, ShaderStage stage,
+                                                        const std::vector<ShaderDefine>& defines,
+                                                        const std::string& entry_point) {
   ++compiled_count_;
   const EShLanguage language = to_glslang(stage);
   glslang::TShader shader(language);
@@ -335,12 +335,13 @@ fg::Result<ShaderBinary> ShaderCompiler::compile_glsl(const std::string& source,
 
   Includer includer(options_.include_dirs);
   const auto messages = static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules);
-  fg::Diagnostics diagnostics;
+  base::Diagnostics diagnostics;
   if (!shader.parse(GetDefaultResources(), 460, false, messages, includer)) {
     diagnostics = parse_glslang_log(shader.getInfoLog(), name);
     add_excerpts(diagnostics, name, source);
     if (!diagnostics.has_errors()) {
-      diagnostics.add(make_error(shader_codes::kCompile, "glslang failed without a message", name));
+      diagnostics.add(
+          make_error(codes::shader::kCompile, "glslang failed without a message", name));
     }
     return diagnostics;
   }
@@ -350,14 +351,14 @@ fg::Result<ShaderBinary> ShaderCompiler::compile_glsl(const std::string& source,
   glslang::TProgram program;
   program.addShader(&shader);
   if (!program.link(messages)) {
-    fg::Diagnostics link = parse_glslang_log(program.getInfoLog(), name);
+    base::Diagnostics link = parse_glslang_log(program.getInfoLog(), name);
     for (const auto& d : link) {
-      fg::Diagnostic copy = d;
-      if (copy.severity == fg::Severity::error) copy.code = shader_codes::kLink;
+      base::Diagnostic copy = d;
+      if (copy.severity == base::Severity::error) copy.code = codes::shader::kLink;
       diagnostics.add(copy);
     }
     if (!diagnostics.has_errors()) {
-      diagnostics.add(make_error(shader_codes::kLink, "glslang link failed", name));
+      diagnostics.add(make_error(codes::shader::kLink, "glslang link failed", name));
     }
     return diagnostics;
   }
@@ -372,12 +373,12 @@ fg::Result<ShaderBinary> ShaderCompiler::compile_glsl(const std::string& source,
   glslang::GlslangToSpv(*program.getIntermediate(language), binary.spirv, &logger, &spv_options);
   const std::string spv_log = logger.getAllMessages();
   if (binary.spirv.empty()) {
-    diagnostics.add(make_error(shader_codes::kLink, "SPIR-V generation failed: " + spv_log, name));
+    diagnostics.add(make_error(codes::shader::kLink, "SPIR-V generation failed: " + spv_log, name));
     return diagnostics;
   }
   binary.dependencies.push_back(path);
   for (const auto& dep : includer.opened()) binary.dependencies.push_back(dep);
-  return fg::Result<ShaderBinary>(std::move(binary), std::move(diagnostics));
+  return base::Result<ShaderBinary>(std::move(binary), std::move(diagnostics));
 }
 
 }  // namespace antumbra::gpu

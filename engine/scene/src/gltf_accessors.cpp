@@ -4,7 +4,7 @@
 #include <cstring>
 #include <initializer_list>
 
-#include "antumbra/scene/scene_codes.hpp"
+#include "antumbra/base/diagnostic_codes.hpp"
 
 namespace antumbra::scene::detail {
 namespace {
@@ -68,45 +68,45 @@ bool validate(const tinygltf::Model& model, int index, const std::string& referr
               std::initializer_list<int> component_types, const char* what, Layout& out,
               GltfIssue& issue) {
   if (index < 0 || static_cast<std::size_t>(index) >= model.accessors.size()) {
-    return fail(issue, codes::kGltfBadReference,
+    return fail(issue, codes::scene::kGltfBadReference,
                 "accessor index " + std::to_string(index) + " does not exist", referrer);
   }
   const tinygltf::Accessor& a = model.accessors[static_cast<std::size_t>(index)];
   const std::string ap = "/accessors/" + std::to_string(index);
   if (a.sparse.isSparse) {
-    return fail(issue, codes::kGltfUnsupported, "sparse accessors are not supported", ap);
+    return fail(issue, codes::scene::kGltfUnsupported, "sparse accessors are not supported", ap);
   }
   bool component_ok = false;
   for (const int c : component_types) component_ok = component_ok || c == a.componentType;
   if (a.type != type || !component_ok) {
-    return fail(issue, codes::kGltfBadAccessor,
+    return fail(issue, codes::scene::kGltfBadAccessor,
                 std::string(what) + " accessor has type " + std::to_string(a.type) +
                     " / componentType " + std::to_string(a.componentType) +
                     ", which glTF does not allow for it",
                 ap);
   }
-  if (a.count == 0) return fail(issue, codes::kGltfBadAccessor, "accessor count is 0", ap);
+  if (a.count == 0) return fail(issue, codes::scene::kGltfBadAccessor, "accessor count is 0", ap);
   if (a.count > kMaxElements) {
-    return fail(issue, codes::kGltfTooLarge,
+    return fail(issue, codes::scene::kGltfTooLarge,
                 "accessor count " + std::to_string(a.count) + " is past the import limit", ap);
   }
   const std::size_t element = component_size(a.componentType) * component_count(a.type);
   out = Layout{nullptr, element, a.count, a.componentType, a.normalized};
   if (a.bufferView < 0) return true;  // all zeros
   if (static_cast<std::size_t>(a.bufferView) >= model.bufferViews.size()) {
-    return fail(issue, codes::kGltfBadReference,
+    return fail(issue, codes::scene::kGltfBadReference,
                 "bufferView " + std::to_string(a.bufferView) + " does not exist",
                 ap + "/bufferView");
   }
   const tinygltf::BufferView& v = model.bufferViews[static_cast<std::size_t>(a.bufferView)];
   const std::string vp = "/bufferViews/" + std::to_string(a.bufferView);
   if (v.buffer < 0 || static_cast<std::size_t>(v.buffer) >= model.buffers.size()) {
-    return fail(issue, codes::kGltfBadReference,
+    return fail(issue, codes::scene::kGltfBadReference,
                 "buffer " + std::to_string(v.buffer) + " does not exist", vp + "/buffer");
   }
   const std::size_t buffer_size = model.buffers[static_cast<std::size_t>(v.buffer)].data.size();
   if (v.byteLength > buffer_size || v.byteOffset > buffer_size - v.byteLength) {
-    return fail(issue, codes::kGltfOutOfBounds,
+    return fail(issue, codes::scene::kGltfOutOfBounds,
                 "bufferView (offset " + std::to_string(v.byteOffset) + ", length " +
                     std::to_string(v.byteLength) + ") lies outside its buffer of " +
                     std::to_string(buffer_size) + " bytes",
@@ -116,7 +116,7 @@ bool validate(const tinygltf::Model& model, int index, const std::string& referr
   if (v.byteStride != 0) {
     if (v.byteStride < element || v.byteStride > 252 ||
         v.byteStride % component_size(a.componentType) != 0) {
-      return fail(issue, codes::kGltfBadAccessor,
+      return fail(issue, codes::scene::kGltfBadAccessor,
                   "byteStride " + std::to_string(v.byteStride) + " is invalid for " +
                       std::to_string(element) + "-byte elements",
                   vp + "/byteStride");
@@ -127,7 +127,7 @@ bool validate(const tinygltf::Model& model, int index, const std::string& referr
   const bool fits = a.byteOffset <= v.byteLength && element <= v.byteLength - a.byteOffset &&
                     (a.count - 1) <= (v.byteLength - a.byteOffset - element) / stride;
   if (!fits) {
-    return fail(issue, codes::kGltfOutOfBounds,
+    return fail(issue, codes::scene::kGltfOutOfBounds,
                 "accessor of " + std::to_string(a.count) + " elements (offset " +
                     std::to_string(a.byteOffset) + ", stride " + std::to_string(stride) +
                     ") runs past the end of its " + std::to_string(v.byteLength) +

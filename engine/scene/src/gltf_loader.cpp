@@ -10,7 +10,7 @@
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
-#include "antumbra/scene/scene_codes.hpp"
+#include "antumbra/base/diagnostic_codes.hpp"
 #include "gltf_accessors.hpp"
 
 namespace antumbra::scene {
@@ -97,7 +97,7 @@ bool Importer::run() {
     // Material and texture extensions only refine shading we do not use; geometry
     // compression/quantisation would leave us reading encoded bytes as floats.
     if (ext.starts_with("KHR_materials_") || ext.starts_with("KHR_texture_")) continue;
-    return fail(codes::kGltfUnsupported, "required extension '" + ext + "' is not supported",
+    return fail(codes::scene::kGltfUnsupported, "required extension '" + ext + "' is not supported",
                 "/extensionsRequired");
   }
   for (std::size_t i = 0; i < model_.materials.size(); ++i) {
@@ -106,7 +106,7 @@ bool Importer::run() {
   out_.materials.push_back(Material{.name = "default"});
   on_path_.assign(model_.nodes.size(), false);
   if (model_.scenes.empty()) {
-    return fail(codes::kGltfNoGeometry,
+    return fail(codes::scene::kGltfNoGeometry,
                 model_.defaultScene >= 0 ? "\"scene\" " + std::to_string(model_.defaultScene) +
                                                " names a scene, but the file has no scenes"
                                          : "the file has no scenes",
@@ -114,8 +114,8 @@ bool Importer::run() {
   }
   const int scene = model_.defaultScene < 0 ? 0 : model_.defaultScene;
   if (static_cast<std::size_t>(scene) >= model_.scenes.size()) {
-    return fail(codes::kGltfBadReference, "scene " + std::to_string(scene) + " does not exist",
-                "/scene");
+    return fail(codes::scene::kGltfBadReference,
+                "scene " + std::to_string(scene) + " does not exist", "/scene");
   }
   const auto& roots = model_.scenes[static_cast<std::size_t>(scene)].nodes;
   const std::string sp = "/scenes/" + std::to_string(scene) + "/nodes";
@@ -123,7 +123,8 @@ bool Importer::run() {
     if (!visit(roots[i], sp + "/" + std::to_string(i), glm::mat4(1.0f), 0)) return false;
   }
   if (out_.meshes.empty()) {
-    return fail(codes::kGltfNoGeometry, "scene " + std::to_string(scene) + " contains no triangles",
+    return fail(codes::scene::kGltfNoGeometry,
+                "scene " + std::to_string(scene) + " contains no triangles",
                 "/scenes/" + std::to_string(scene));
   }
   return true;
@@ -133,7 +134,7 @@ bool Importer::node_matrix(const tinygltf::Node& node, const std::string& p, glm
   out = glm::mat4(1.0f);
   if (!node.matrix.empty()) {
     if (node.matrix.size() != 16) {
-      return fail(codes::kGltfParse, "node matrix needs 16 numbers", p + "/matrix");
+      return fail(codes::scene::kGltfParse, "node matrix needs 16 numbers", p + "/matrix");
     }
     for (int i = 0; i < 16; ++i) {  // column-major in glTF and glm alike
       out[i / 4][i % 4] = static_cast<float>(node.matrix[static_cast<std::size_t>(i)]);
@@ -144,7 +145,8 @@ bool Importer::node_matrix(const tinygltf::Node& node, const std::string& p, glm
     const auto& s = node.scale;
     if ((!t.empty() && t.size() != 3) || (!r.empty() && r.size() != 4) ||
         (!s.empty() && s.size() != 3)) {
-      return fail(codes::kGltfParse, "node translation/rotation/scale has the wrong arity", p);
+      return fail(codes::scene::kGltfParse, "node translation/rotation/scale has the wrong arity",
+                  p);
     }
     glm::mat4 m(1.0f);
     if (!t.empty()) m = glm::translate(m, glm::vec3(t[0], t[1], t[2]));
@@ -157,24 +159,24 @@ bool Importer::node_matrix(const tinygltf::Node& node, const std::string& p, glm
     if (!s.empty()) m = glm::scale(m, glm::vec3(s[0], s[1], s[2]));
     out = m;
   }
-  if (!finite(out)) return fail(codes::kGltfNonFinite, "node transform is not finite", p);
+  if (!finite(out)) return fail(codes::scene::kGltfNonFinite, "node transform is not finite", p);
   return true;
 }
 
 bool Importer::visit(int node, const std::string& referrer, const glm::mat4& parent, int depth) {
   if (node < 0 || static_cast<std::size_t>(node) >= model_.nodes.size()) {
-    return fail(codes::kGltfBadReference, "node " + std::to_string(node) + " does not exist",
+    return fail(codes::scene::kGltfBadReference, "node " + std::to_string(node) + " does not exist",
                 referrer);
   }
   const auto n = static_cast<std::size_t>(node);
   const std::string p = "/nodes/" + std::to_string(node);
   if (on_path_[n]) {
-    return fail(codes::kGltfNodeCycle,
+    return fail(codes::scene::kGltfNodeCycle,
                 "node " + std::to_string(node) + " is its own ancestor (cycle in the node tree)",
                 referrer);
   }
   if (++visits_ > limits_.max_node_visits || depth > kMaxNodeDepth) {
-    return fail(codes::kGltfTooLarge, "node tree is too deep or instanced too often", p);
+    return fail(codes::scene::kGltfTooLarge, "node tree is too deep or instanced too often", p);
   }
   glm::mat4 local;
   if (!node_matrix(model_.nodes[n], p, local)) return false;
@@ -192,7 +194,7 @@ bool Importer::visit(int node, const std::string& referrer, const glm::mat4& par
 
 bool Importer::add_mesh(int mesh, const std::string& referrer, const glm::mat4& world) {
   if (static_cast<std::size_t>(mesh) >= model_.meshes.size()) {
-    return fail(codes::kGltfBadReference, "mesh " + std::to_string(mesh) + " does not exist",
+    return fail(codes::scene::kGltfBadReference, "mesh " + std::to_string(mesh) + " does not exist",
                 referrer);
   }
   const tinygltf::Mesh& m = model_.meshes[static_cast<std::size_t>(mesh)];
@@ -216,12 +218,12 @@ bool Importer::add_primitive(const tinygltf::Primitive& prim, const std::string&
   if (mesh.indices.empty()) return true;  // skipped (points/lines), with a warning
   triangles_ += mesh.triangle_count();
   if (triangles_ > limits_.max_triangles) {
-    return fail(codes::kGltfTooLarge,
+    return fail(codes::scene::kGltfTooLarge,
                 "more than " + std::to_string(limits_.max_triangles) + " triangles", p);
   }
   const int material = prim.material;
   if (material >= static_cast<int>(model_.materials.size())) {
-    return fail(codes::kGltfBadReference,
+    return fail(codes::scene::kGltfBadReference,
                 "material " + std::to_string(material) + " does not exist", p + "/material");
   }
   mesh.material = material < 0 ? static_cast<int>(out_.materials.size()) - 1 : material;
@@ -233,27 +235,27 @@ bool Importer::add_primitive(const tinygltf::Primitive& prim, const std::string&
 
 }  // namespace
 
-fg::Result<GltfImport> load_gltf(const std::string& path, const GltfLimits& limits) {
-  fg::Diagnostics diagnostics;
-  const auto report = [&](const char* code, fg::Severity severity, std::string message,
+base::Result<GltfImport> load_gltf(const std::string& path, const GltfLimits& limits) {
+  base::Diagnostics diagnostics;
+  const auto report = [&](const char* code, base::Severity severity, std::string message,
                           std::string pointer) {
     diagnostics.add(
-        fg::Diagnostic{code, severity, std::move(message), path, std::move(pointer), 0, 0});
+        base::Diagnostic{code, severity, std::move(message), path, std::move(pointer), 0, 0});
   };
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) {
-    report(codes::kGltfFileMissing, fg::Severity::error, "file not found", "");
+    report(codes::scene::kGltfFileMissing, base::Severity::error, "file not found", "");
     return diagnostics;
   }
   std::vector<GltfIssue> schema_errors;
   std::vector<GltfIssue> schema_warnings;
   detail::check_gltf_schema(path, schema_errors, schema_warnings);
   for (const GltfIssue& w : schema_warnings) {
-    report(w.code, fg::Severity::warning, w.message, w.pointer);
+    report(w.code, base::Severity::warning, w.message, w.pointer);
   }
   if (!schema_errors.empty()) {
     for (const GltfIssue& e : schema_errors)
-      report(e.code, fg::Severity::error, e.message, e.pointer);
+      report(e.code, base::Severity::error, e.message, e.pointer);
     return diagnostics;
   }
   tinygltf::Model model;
@@ -273,10 +275,10 @@ fg::Result<GltfImport> load_gltf(const std::string& path, const GltfLimits& limi
     return s;
   };
   if (!trim(warning).empty()) {
-    report(codes::kGltfWarning, fg::Severity::warning, "tinygltf: " + trim(warning), "");
+    report(codes::scene::kGltfWarning, base::Severity::warning, "tinygltf: " + trim(warning), "");
   }
   if (!loaded) {
-    report(codes::kGltfParse, fg::Severity::error,
+    report(codes::scene::kGltfParse, base::Severity::error,
            "cannot load: " + (trim(error).empty() ? std::string("unknown error") : trim(error)),
            "");
     return diagnostics;
@@ -285,14 +287,14 @@ fg::Result<GltfImport> load_gltf(const std::string& path, const GltfLimits& limi
   Importer importer(model, limits, out);
   const bool ok = importer.run();
   for (const GltfIssue& w : importer.warnings()) {
-    report(w.code, fg::Severity::warning, w.message, w.pointer);
+    report(w.code, base::Severity::warning, w.message, w.pointer);
   }
   if (!ok) {
     const GltfIssue& e = importer.issue();
-    report(e.code, fg::Severity::error, e.message, e.pointer);
+    report(e.code, base::Severity::error, e.message, e.pointer);
     return diagnostics;
   }
-  return fg::Result<GltfImport>(std::move(out), std::move(diagnostics));
+  return base::Result<GltfImport>(std::move(out), std::move(diagnostics));
 }
 
 }  // namespace antumbra::scene

@@ -1,6 +1,6 @@
 #include <cmath>
 
-#include "antumbra/scene/scene_codes.hpp"
+#include "antumbra/base/diagnostic_codes.hpp"
 #include "gltf_accessors.hpp"
 
 namespace antumbra::scene::detail {
@@ -66,16 +66,17 @@ bool build_primitive_mesh(const tinygltf::Model& model, const tinygltf::Primitiv
                           const std::string& p, Mesh& mesh, GltfIssue& issue,
                           std::vector<GltfIssue>& warnings) {
   if (prim.mode >= 0 && prim.mode < kModeTriangles) {
-    warnings.push_back({codes::kGltfUnsupported, "points and lines are skipped", p + "/mode"});
+    warnings.push_back(
+        {codes::scene::kGltfUnsupported, "points and lines are skipped", p + "/mode"});
     return true;
   }
   if (prim.mode != kModeTriangles && prim.mode != kModeStrip && prim.mode != kModeFan) {
-    return fail(issue, codes::kGltfParse, "invalid primitive mode " + std::to_string(prim.mode),
-                p + "/mode");
+    return fail(issue, codes::scene::kGltfParse,
+                "invalid primitive mode " + std::to_string(prim.mode), p + "/mode");
   }
   const int position_id = attribute(prim, "POSITION");
   if (position_id < 0) {
-    return fail(issue, codes::kGltfBadAccessor, "primitive has no POSITION attribute",
+    return fail(issue, codes::scene::kGltfBadAccessor, "primitive has no POSITION attribute",
                 p + "/attributes");
   }
   std::vector<glm::vec3> positions;
@@ -84,14 +85,14 @@ bool build_primitive_mesh(const tinygltf::Model& model, const tinygltf::Primitiv
   }
   for (const glm::vec3& v : positions) {
     if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) {
-      return fail(issue, codes::kGltfNonFinite, "POSITION contains NaN or infinite values",
+      return fail(issue, codes::scene::kGltfNonFinite, "POSITION contains NaN or infinite values",
                   "/accessors/" + std::to_string(position_id));
     }
   }
   const std::size_t count = positions.size();
   const auto check_count = [&](std::size_t n, const char* what) {
     if (n == count) return true;
-    return fail(issue, codes::kGltfCountMismatch,
+    return fail(issue, codes::scene::kGltfCountMismatch,
                 std::string(what) + " has " + std::to_string(n) + " elements but POSITION has " +
                     std::to_string(count),
                 p + "/attributes/" + what);
@@ -111,7 +112,7 @@ bool build_primitive_mesh(const tinygltf::Model& model, const tinygltf::Primitiv
     if (!read_indices(model, prim.indices, p + "/indices", indices, issue)) return false;
     for (std::size_t i = 0; i < indices.size(); ++i) {
       if (indices[i] >= count) {
-        return fail(issue, codes::kGltfIndexOutOfRange,
+        return fail(issue, codes::scene::kGltfIndexOutOfRange,
                     "index " + std::to_string(indices[i]) + " at position " + std::to_string(i) +
                         " is out of range for " + std::to_string(count) + " vertices",
                     "/accessors/" + std::to_string(prim.indices));
@@ -122,7 +123,7 @@ bool build_primitive_mesh(const tinygltf::Model& model, const tinygltf::Primitiv
     for (std::size_t i = 0; i < count; ++i) indices[i] = static_cast<std::uint32_t>(i);
   }
   if (prim.mode == kModeTriangles && indices.size() % 3 != 0) {
-    return fail(issue, codes::kGltfCountMismatch,
+    return fail(issue, codes::scene::kGltfCountMismatch,
                 std::to_string(indices.size()) + " indices do not form whole triangles",
                 prim.indices >= 0 ? "/accessors/" + std::to_string(prim.indices) : p);
   }

@@ -9,7 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "antumbra/scene/scene_codes.hpp"
+#include "antumbra/base/diagnostic_codes.hpp"
 #include "gltf_accessors.hpp"
 
 namespace antumbra::scene::detail {
@@ -116,13 +116,13 @@ void check(const json& value, std::string_view pattern, const std::string& point
            const Rule& rule, std::vector<GltfIssue>& errors, std::vector<GltfIssue>& warnings) {
   if (pattern.empty()) {
     if (matches(value, rule.kind)) return;
-    GltfIssue issue{codes::kGltfParse,
+    GltfIssue issue{codes::scene::kGltfParse,
                     std::string("expected ") + describe(rule.kind) + ", found " + value.type_name(),
                     pointer};
     if (rule.error) {
       errors.push_back(std::move(issue));
     } else {
-      issue.code = codes::kGltfWarning;
+      issue.code = codes::scene::kGltfWarning;
       issue.message += " (ignored)";
       warnings.push_back(std::move(issue));
     }

@@ -6,7 +6,7 @@
 #include <sstream>
 #include <vector>
 
-#include "antumbra/scene/scene_codes.hpp"
+#include "antumbra/base/diagnostic_codes.hpp"
 
 namespace antumbra::scene::detail {
 namespace {
@@ -99,13 +99,14 @@ const char* json_type_name(const Json& value) {
 
 void JsonReader::error(const char* code, std::string message, const std::string& pointer,
                        bool at_key) {
-  diagnostics_.add(document_.make(code, fg::Severity::error, std::move(message), pointer, at_key));
+  diagnostics_.add(
+      document_.make(code, base::Severity::error, std::move(message), pointer, at_key));
 }
 
 void JsonReader::warning(const char* code, std::string message, const std::string& pointer,
                          bool at_key) {
   diagnostics_.add(
-      document_.make(code, fg::Severity::warning, std::move(message), pointer, at_key));
+      document_.make(code, base::Severity::warning, std::move(message), pointer, at_key));
 }
 
 bool JsonReader::check_type(const Json& value, const std::string& pointer, Json::value_t type) {
@@ -116,8 +117,8 @@ bool JsonReader::check_type(const Json& value, const std::string& pointer, Json:
   if (type == Json::value_t::array) wanted = "an array";
   if (type == Json::value_t::string) wanted = "a string";
   if (type == Json::value_t::boolean) wanted = "a boolean";
-  error(codes::kWrongType, std::string("expected ") + wanted + ", found " + json_type_name(value),
-        pointer);
+  error(codes::scene::kWrongType,
+        std::string("expected ") + wanted + ", found " + json_type_name(value), pointer);
   return false;
 }
 
@@ -130,7 +131,7 @@ bool JsonReader::check_object(const Json& value, const std::string& pointer, std
     if (const std::string hint = closest_match(key, known); !hint.empty()) {
       message += "; did you mean " + quote(hint) + "?";
     }
-    error(codes::kUnknownKey, std::move(message), fg::pointer_append(pointer, key), true);
+    error(codes::scene::kUnknownKey, std::move(message), base::pointer_append(pointer, key), true);
   }
   return true;
 }
@@ -140,7 +141,7 @@ const Json* JsonReader::member(const Json& object, const std::string& pointer, s
   if (object.is_object()) {
     if (const auto it = object.find(std::string(key)); it != object.end()) return &*it;
   }
-  if (required) error(codes::kMissingKey, "missing required key " + quote(key), pointer);
+  if (required) error(codes::scene::kMissingKey, "missing required key " + quote(key), pointer);
   return nullptr;
 }
 
@@ -148,7 +149,7 @@ bool JsonReader::read_numbers(const Json& value, const std::string& pointer, int
                               Range range) {
   if (!check_type(value, pointer, Json::value_t::array)) return false;
   if (value.size() != static_cast<std::size_t>(n)) {
-    error(codes::kBadArity,
+    error(codes::scene::kBadArity,
           "expected an array of " + std::to_string(n) + " numbers, found " +
               std::to_string(value.size()) + (value.size() == 1 ? " element" : " elements"),
           pointer);
@@ -157,14 +158,15 @@ bool JsonReader::read_numbers(const Json& value, const std::string& pointer, int
   bool ok = true;
   for (int i = 0; i < n; ++i) {
     const Json& v = value[static_cast<std::size_t>(i)];
-    const std::string p = fg::pointer_append(pointer, static_cast<std::size_t>(i));
+    const std::string p = base::pointer_append(pointer, static_cast<std::size_t>(i));
     if (!check_type(v, p, Json::value_t::number_float)) {
       ok = false;
       continue;
     }
     const double d = v.get<double>();
     if (!range.contains(d)) {
-      error(codes::kOutOfRange, "value " + format_number(d) + " must be " + range.describe(), p);
+      error(codes::scene::kOutOfRange, "value " + format_number(d) + " must be " + range.describe(),
+            p);
       ok = false;
     }
     out[i] = static_cast<float>(d);
@@ -177,11 +179,11 @@ std::optional<float> JsonReader::get_float(const Json& object, const std::string
                                            Range range) {
   const Json* v = member(object, pointer, key, !fallback);
   if (v == nullptr) return fallback;
-  const std::string p = fg::pointer_append(pointer, key);
+  const std::string p = base::pointer_append(pointer, key);
   if (!check_type(*v, p, Json::value_t::number_float)) return std::nullopt;
   const double d = v->get<double>();
   if (!range.contains(d)) {
-    error(codes::kOutOfRange,
+    error(codes::scene::kOutOfRange,
           quote(key) + " is " + format_number(d) + " but must be " + range.describe(), p);
     return std::nullopt;
   }
@@ -193,9 +195,9 @@ std::optional<int> JsonReader::get_int(const Json& object, const std::string& po
                                        Range range) {
   const Json* v = member(object, pointer, key, !fallback);
   if (v == nullptr) return fallback;
-  const std::string p = fg::pointer_append(pointer, key);
+  const std::string p = base::pointer_append(pointer, key);
   if (!v->is_number_integer()) {
-    error(codes::kWrongType,
+    error(codes::scene::kWrongType,
           std::string("expected an integer, found ") + json_type_name(*v) +
               (v->is_number() ? " with a fraction" : ""),
           p);
@@ -203,7 +205,7 @@ std::optional<int> JsonReader::get_int(const Json& object, const std::string& po
   }
   const double d = v->get<double>();
   if (!range.contains(d)) {
-    error(codes::kOutOfRange,
+    error(codes::scene::kOutOfRange,
           quote(key) + " is " + format_number(d) + " but must be " + range.describe(), p);
     return std::nullopt;
   }
@@ -214,7 +216,7 @@ std::optional<bool> JsonReader::get_bool(const Json& object, const std::string& 
                                          std::string_view key, std::optional<bool> fallback) {
   const Json* v = member(object, pointer, key, !fallback);
   if (v == nullptr) return fallback;
-  if (!check_type(*v, fg::pointer_append(pointer, key), Json::value_t::boolean))
+  if (!check_type(*v, base::pointer_append(pointer, key), Json::value_t::boolean))
     return std::nullopt;
   return v->get<bool>();
 }
@@ -224,7 +226,8 @@ std::optional<std::string> JsonReader::get_string(const Json& object, const std:
                                                   std::optional<std::string> fallback) {
   const Json* v = member(object, pointer, key, !fallback);
   if (v == nullptr) return fallback;
-  if (!check_type(*v, fg::pointer_append(pointer, key), Json::value_t::string)) return std::nullopt;
+  if (!check_type(*v, base::pointer_append(pointer, key), Json::value_t::string))
+    return std::nullopt;
   return v->get<std::string>();
 }
 
@@ -234,7 +237,7 @@ std::optional<glm::vec2> JsonReader::get_vec2(const Json& object, const std::str
   const Json* v = member(object, pointer, key, !fallback);
   if (v == nullptr) return fallback;
   glm::vec2 out(0.0f);
-  if (!read_numbers(*v, fg::pointer_append(pointer, key), 2, &out.x, range)) return std::nullopt;
+  if (!read_numbers(*v, base::pointer_append(pointer, key), 2, &out.x, range)) return std::nullopt;
   return out;
 }
 
@@ -244,7 +247,7 @@ std::optional<glm::vec3> JsonReader::get_vec3(const Json& object, const std::str
   const Json* v = member(object, pointer, key, !fallback);
   if (v == nullptr) return fallback;
   glm::vec3 out(0.0f);
-  if (!read_numbers(*v, fg::pointer_append(pointer, key), 3, &out.x, range)) return std::nullopt;
+  if (!read_numbers(*v, base::pointer_append(pointer, key), 3, &out.x, range)) return std::nullopt;
   return out;
 }
 
@@ -254,7 +257,7 @@ std::optional<glm::vec4> JsonReader::get_vec4(const Json& object, const std::str
   const Json* v = member(object, pointer, key, !fallback);
   if (v == nullptr) return fallback;
   glm::vec4 out(0.0f);
-  if (!read_numbers(*v, fg::pointer_append(pointer, key), 4, &out.x, range)) return std::nullopt;
+  if (!read_numbers(*v, base::pointer_append(pointer, key), 4, &out.x, range)) return std::nullopt;
   return out;
 }
 

@@ -11,11 +11,11 @@
 
 #include <glm/glm.hpp>
 
-#include "antumbra/fg/json_document.hpp"
+#include "antumbra/base/json_document.hpp"
 
 namespace antumbra::scene::detail {
 
-using fg::Json;
+using base::Json;
 
 struct Range {
   double min = -1e30;
@@ -41,10 +41,10 @@ const char* json_type_name(const Json& value);
 
 class JsonReader {
  public:
-  JsonReader(const fg::JsonDocument& document, fg::Diagnostics& diagnostics)
+  JsonReader(const base::JsonDocument& document, base::Diagnostics& diagnostics)
       : document_(document), diagnostics_(diagnostics) {}
 
-  [[nodiscard]] const fg::JsonDocument& document() const { return document_; }
+  [[nodiscard]] const base::JsonDocument& document() const { return document_; }
   void error(const char* code, std::string message, const std::string& pointer,
              bool at_key = false);
   void warning(const char* code, std::string message, const std::string& pointer,
@@ -87,8 +87,8 @@ class JsonReader {
   const Json* member(const Json& object, const std::string& pointer, std::string_view key,
                      bool required);
 
-  const fg::JsonDocument& document_;
-  fg::Diagnostics& diagnostics_;
+  const base::JsonDocument& document_;
+  base::Diagnostics& diagnostics_;
 };
 
 }  // namespace antumbra::scene::detail

@@ -6,9 +6,9 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "antumbra/base/diagnostic_codes.hpp"
 #include "antumbra/scene/gltf_loader.hpp"
 #include "antumbra/scene/primitives.hpp"
-#include "antumbra/scene/scene_codes.hpp"
 #include "antumbra/scene/scene_file.hpp"
 #include "parse_context.hpp"
 
@@ -37,11 +37,11 @@ bool parse_repeat(JsonReader& r, const Json& value, const std::string& p, Placem
   std::vector<std::pair<const Json*, std::string>> axes;
   if (value.is_array()) {
     if (value.empty() || value.size() > 3) {
-      r.error(codes::kBadArity, "'repeat' takes 1 to 3 {count, offset} entries", p);
+      r.error(codes::scene::kBadArity, "'repeat' takes 1 to 3 {count, offset} entries", p);
       return false;
     }
     for (std::size_t i = 0; i < value.size(); ++i) {
-      axes.emplace_back(&value[i], fg::pointer_append(p, i));
+      axes.emplace_back(&value[i], base::pointer_append(p, i));
     }
   } else {
     axes.emplace_back(&value, p);
@@ -55,7 +55,7 @@ bool parse_repeat(JsonReader& r, const Json& value, const std::string& p, Placem
     if (!count || !offset) return false;
     total *= *count;
     if (total > kMaxRepeatCopies) {
-      r.error(codes::kTooManyCopies,
+      r.error(codes::scene::kTooManyCopies,
               "'repeat' makes more than " + std::to_string(kMaxRepeatCopies) + " copies", p);
       return false;
     }
@@ -93,7 +93,7 @@ std::optional<Placement> parse_placement(JsonReader& r, const Json& o, const std
   }
   bool ok = position && rotation && scale;
   if (const auto it = o.find("repeat"); it != o.end()) {
-    ok = parse_repeat(r, *it, fg::pointer_append(p, "repeat"), out) && ok;
+    ok = parse_repeat(r, *it, base::pointer_append(p, "repeat"), out) && ok;
   }
   if (!ok) return std::nullopt;
   out.transform = compose(*position, *rotation, *scale);
@@ -114,7 +114,7 @@ std::optional<int> parse_material_ref(ParseContext& ctx, const Json& o, const st
   if (const std::string hint = closest_match(*name, names); !hint.empty()) {
     message += "; did you mean '" + hint + "'?";
   }
-  ctx.reader.error(codes::kUnknownMaterial, std::move(message), p + "/material");
+  ctx.reader.error(codes::scene::kUnknownMaterial, std::move(message), p + "/material");
   return std::nullopt;
 }
 
@@ -148,7 +148,7 @@ std::optional<Mesh> build_primitive(JsonReader& r, const Json& o, const std::str
     const auto segments = r.get_int(o, p, "segments", a.segments, {1, 64});
     if (!width || !height || !depth || !pier || !crown || !style || !segments) return std::nullopt;
     if (*style != "round" && *style != "pointed") {
-      r.error(codes::kOutOfRange, "arch style '" + *style + "' must be 'round' or 'pointed'",
+      r.error(codes::scene::kOutOfRange, "arch style '" + *style + "' must be 'round' or 'pointed'",
               p + "/style");
       return std::nullopt;
     }
@@ -156,11 +156,12 @@ std::optional<Mesh> build_primitive(JsonReader& r, const Json& o, const std::str
                    *pier,    *crown,  *style == "round" ? ArchStyle::round : ArchStyle::pointed,
                    *segments};
     if (a.width - 2.0f * a.pier_width <= 0.0f) {
-      r.error(codes::kBadArchShape, "arch piers (2 x pierWidth) leave no opening in its width", p);
+      r.error(codes::scene::kBadArchShape,
+              "arch piers (2 x pierWidth) leave no opening in its width", p);
       return std::nullopt;
     }
     if (arch_springline(a) < 0.0f) {
-      r.error(codes::kBadArchShape,
+      r.error(codes::scene::kBadArchShape,
               "arch opening does not fit: height - crown is below the curve's rise", p);
       return std::nullopt;
     }
@@ -190,14 +191,15 @@ void parse_gltf_object(ParseContext& ctx, const Json& o, const std::string& p,
   const std::filesystem::path path = ctx.base_dir / *relative;
   std::error_code ec;
   if (relative->empty() || !std::filesystem::is_regular_file(path, ec)) {
-    ctx.reader.error(codes::kGltfFileMissing, "glTF file '" + path.string() + "' not found", gp);
+    ctx.reader.error(codes::scene::kGltfFileMissing, "glTF file '" + path.string() + "' not found",
+                     gp);
     return;
   }
   auto imported = load_gltf(path.string());
-  for (const fg::Diagnostic& d : imported.diagnostics()) {
+  for (const base::Diagnostic& d : imported.diagnostics()) {
     std::string message = "in glTF '" + *relative + "': " + d.message;
     if (!d.pointer.empty()) message += " (at " + d.pointer + " in the glTF)";
-    if (d.severity == fg::Severity::error) {
+    if (d.severity == base::Severity::error) {
       ctx.reader.error(d.code.c_str(), std::move(message), gp);
     } else {
       ctx.reader.warning(d.code.c_str(), std::move(message), gp);
@@ -223,7 +225,7 @@ void parse_object(ParseContext& ctx, const Json& o, const std::string& p, std::s
   const bool is_primitive = o.contains("primitive");
   const bool is_gltf = o.contains("gltf");
   if (is_primitive == is_gltf) {
-    r.error(codes::kObjectKind,
+    r.error(codes::scene::kObjectKind,
             is_gltf ? "an object has either 'primitive' or 'gltf', not both"
                     : "an object needs a 'primitive' or a 'gltf' key",
             p);
@@ -238,7 +240,7 @@ void parse_object(ParseContext& ctx, const Json& o, const std::string& p, std::s
       const std::string hint = closest_match(*kind, {"box", "plane", "cylinder", "sphere", "arch"});
       message += hint.empty() ? "; expected box, plane, cylinder, sphere or arch"
                               : "; did you mean '" + hint + "'?";
-      r.error(codes::kUnknownPrimitive, std::move(message), p + "/primitive");
+      r.error(codes::scene::kUnknownPrimitive, std::move(message), p + "/primitive");
       return;
     }
   }
@@ -283,7 +285,7 @@ void parse_object(ParseContext& ctx, const Json& o, const std::string& p, std::s
 void parse_objects(ParseContext& ctx, const Json& objects, const std::string& pointer) {
   if (!ctx.reader.check_type(objects, pointer, Json::value_t::array)) return;
   for (std::size_t i = 0; i < objects.size(); ++i) {
-    parse_object(ctx, objects[i], fg::pointer_append(pointer, i), i);
+    parse_object(ctx, objects[i], base::pointer_append(pointer, i), i);
   }
 }
 

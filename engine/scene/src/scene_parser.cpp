@@ -4,7 +4,7 @@
 #include <limits>
 #include <unordered_map>
 
-#include "antumbra/scene/scene_codes.hpp"
+#include "antumbra/base/diagnostic_codes.hpp"
 #include "antumbra/scene/scene_file.hpp"
 #include "parse_context.hpp"
 
@@ -20,21 +20,21 @@ using detail::Range;
 bool check_version(JsonReader& r, const Json& root) {
   const auto it = root.find("version");
   if (it == root.end()) {
-    r.error(codes::kVersionMissing,
+    r.error(codes::scene::kVersionMissing,
             "missing \"version\"; this build reads scene format version " +
                 std::to_string(kSceneFormatVersion),
             "");
     return false;
   }
   if (!it->is_number_integer()) {
-    r.error(codes::kWrongType,
+    r.error(codes::scene::kWrongType,
             std::string("\"version\" must be an integer, found ") + detail::json_type_name(*it),
             "/version");
     return false;
   }
   const auto version = it->get<double>();
   if (version < 1 || version > kSceneFormatVersion) {
-    r.error(codes::kVersionUnsupported,
+    r.error(codes::scene::kVersionUnsupported,
             "scene format version " + it->dump() +
                 (version > kSceneFormatVersion ? " is newer than this build supports ("
                                                : " does not exist (supported: ") +
@@ -49,7 +49,7 @@ void parse_camera(JsonReader& r, const Json& root, Camera& camera) {
   const std::string p = "/camera";
   const auto it = root.find("camera");
   if (it == root.end()) {
-    r.error(codes::kMissingKey, "missing required key 'camera'", "");
+    r.error(codes::scene::kMissingKey, "missing required key 'camera'", "");
     return;
   }
   if (!r.check_object(*it, p, "the camera", {"position", "target", "up", "fovY", "near", "far"})) {
@@ -69,14 +69,15 @@ void parse_camera(JsonReader& r, const Json& root, Camera& camera) {
   if (near) camera.near = *near;
   if (far) camera.far = *far;
   if (near && far && *far <= *near) {
-    r.error(codes::kOutOfRange, "'far' must be greater than 'near'", p + "/far");
+    r.error(codes::scene::kOutOfRange, "'far' must be greater than 'near'", p + "/far");
   }
   if (position && target) {
     const glm::vec3 view = *target - *position;
     if (glm::length(view) < 1e-6f) {
-      r.error(codes::kCameraDegenerate, "camera target equals its position", p + "/target");
+      r.error(codes::scene::kCameraDegenerate, "camera target equals its position", p + "/target");
     } else if (up && glm::length(glm::cross(glm::normalize(view), *up)) < 1e-4f) {
-      r.error(codes::kCameraDegenerate, "camera 'up' is zero or parallel to the view direction",
+      r.error(codes::scene::kCameraDegenerate,
+              "camera 'up' is zero or parallel to the view direction",
               c.contains("up") ? p + "/up" : p + "/target");
     }
   }
@@ -94,7 +95,7 @@ void parse_material(JsonReader& r, const Json& m, const std::string& p, Material
   const glm::vec4 fallback(glm::clamp(out.albedo, 0.0f, 1.0f), 0.5f);
   if (auto v = r.get_vec4(m, p, "transmittance", fallback, Range::unit())) out.transmittance = *v;
   if (m.contains("transmittance") && !out.translucent) {
-    r.warning(codes::kTransmittanceIgnored,
+    r.warning(codes::scene::kTransmittanceIgnored,
               "'transmittance' has no effect unless 'translucent' is true", p + "/transmittance",
               true);
   }
@@ -106,7 +107,7 @@ void parse_materials(JsonReader& r, const Json& root, Scene& scene) {
   if (it == root.end() || !r.check_type(*it, "/materials", Json::value_t::object)) return;
   for (const auto& [name, value] : it->items()) {
     Material material{.name = name};
-    parse_material(r, value, fg::pointer_append("/materials", name), material);
+    parse_material(r, value, base::pointer_append("/materials", name), material);
     if (name == "default") {
       scene.materials[0] = material;
     } else {
@@ -132,7 +133,7 @@ void parse_light(JsonReader& r, const Json& l, const std::string& p, PointLight&
     } else if (*v == "directional") {
       out.type = LightType::directional;
     } else if (*v != "point") {
-      r.error(codes::kLightTypeUnsupported,
+      r.error(codes::scene::kLightTypeUnsupported,
               "light type '" + *v + "' is unknown; expected 'point', 'spot' or 'directional'",
               p + "/type");
     }
@@ -144,7 +145,7 @@ void parse_light(JsonReader& r, const Json& l, const std::string& p, PointLight&
     out.size = 0.27f;
     for (const char* key : {"position", "range"}) {
       if (l.contains(key)) {
-        r.warning(codes::kLightKeyIgnored,
+        r.warning(codes::scene::kLightKeyIgnored,
                   std::string("'") + key + "' has no effect on a directional light", p + "/" + key,
                   true);
       }
@@ -156,13 +157,14 @@ void parse_light(JsonReader& r, const Json& l, const std::string& p, PointLight&
   if (out.type != LightType::point) {
     if (auto v = r.get_vec3(l, p, "direction", std::nullopt)) {
       if (glm::length(*v) < 1e-6f) {
-        r.error(codes::kLightDirectionZero, "light 'direction' must not be zero", p + "/direction");
+        r.error(codes::scene::kLightDirectionZero, "light 'direction' must not be zero",
+                p + "/direction");
       } else {
         out.direction = glm::normalize(*v);
       }
     }
   } else if (l.contains("direction")) {
-    r.warning(codes::kLightKeyIgnored, "'direction' has no effect on a point light",
+    r.warning(codes::scene::kLightKeyIgnored, "'direction' has no effect on a point light",
               p + "/direction", true);
   }
   if (out.type == LightType::spot) {
@@ -173,15 +175,15 @@ void parse_light(JsonReader& r, const Json& l, const std::string& p, PointLight&
     if (auto v = r.get_float(l, p, "innerAngle", out.spot_inner, {0.0, 90.0, false, false})) {
       out.spot_inner = *v;
       if (*v > out.spot_outer) {
-        r.error(codes::kSpotAngles, "'innerAngle' must not exceed 'angle' (the outer cone)",
+        r.error(codes::scene::kSpotAngles, "'innerAngle' must not exceed 'angle' (the outer cone)",
                 p + "/innerAngle");
       }
     }
   } else {
     for (const char* key : {"angle", "innerAngle"}) {
       if (l.contains(key)) {
-        r.warning(codes::kLightKeyIgnored, std::string("'") + key + "' applies to spot lights only",
-                  p + "/" + key, true);
+        r.warning(codes::scene::kLightKeyIgnored,
+                  std::string("'") + key + "' applies to spot lights only", p + "/" + key, true);
       }
     }
   }
@@ -200,15 +202,15 @@ void parse_lights(JsonReader& r, const Json& root, Scene& scene) {
   std::unordered_map<std::string, std::size_t> seen;  // name -> first index
   int directional = -1;  // the sun gets its own shadow layer: one per scene
   for (std::size_t i = 0; i < it->size(); ++i) {
-    const std::string p = fg::pointer_append("/lights", i);
+    const std::string p = base::pointer_append("/lights", i);
     PointLight light;
     parse_light(r, (*it)[i], p, light);
     const bool has_name = (*it)[i].is_object() && (*it)[i].contains("name");
     if (has_name && (*it)[i]["name"].is_string()) {
       if (light.name.empty()) {
-        r.error(codes::kLightNameEmpty, "light name is empty", p + "/name");
+        r.error(codes::scene::kLightNameEmpty, "light name is empty", p + "/name");
       } else if (const auto [first, inserted] = seen.emplace(light.name, i); !inserted) {
-        r.error(codes::kLightNameDuplicate,
+        r.error(codes::scene::kLightNameDuplicate,
                 "duplicate light name '" + light.name + "' (first used by /lights/" +
                     std::to_string(first->second) + ")",
                 p + "/name");
@@ -216,7 +218,7 @@ void parse_lights(JsonReader& r, const Json& root, Scene& scene) {
     }
     if (light.type == LightType::directional) {
       if (directional >= 0) {
-        r.error(codes::kSecondDirectional,
+        r.error(codes::scene::kSecondDirectional,
                 "a scene has at most one directional light (the first is /lights/" +
                     std::to_string(directional) + ")",
                 p + "/type");
@@ -230,8 +232,8 @@ void parse_lights(JsonReader& r, const Json& root, Scene& scene) {
 
 }  // namespace
 
-fg::Result<Scene> parse_scene(const fg::JsonDocument& document) {
-  fg::Diagnostics diagnostics;
+base::Result<Scene> parse_scene(const base::JsonDocument& document) {
+  base::Diagnostics diagnostics;
   JsonReader r(document, diagnostics);
   Scene scene;
   scene.source_file = document.file();
@@ -255,17 +257,17 @@ fg::Result<Scene> parse_scene(const fg::JsonDocument& document) {
   parse_lights(r, root, scene);
   scene.bounds = scene.compute_bounds();
   if (diagnostics.has_errors()) return diagnostics;
-  return fg::Result<Scene>(std::move(scene), std::move(diagnostics));
+  return base::Result<Scene>(std::move(scene), std::move(diagnostics));
 }
 
-fg::Result<Scene> load_scene_file(const std::string& path) {
-  auto document = fg::load_json_file(path);
+base::Result<Scene> load_scene_file(const std::string& path) {
+  auto document = base::load_json_file(path);
   if (!document.ok()) return document.diagnostics();
   return parse_scene(document.value());
 }
 
-fg::Result<Scene> parse_scene_text(std::string_view text, const std::string& file) {
-  auto document = fg::parse_json(text, file);
+base::Result<Scene> parse_scene_text(std::string_view text, const std::string& file) {
+  auto document = base::parse_json(text, file);
   if (!document.ok()) return document.diagnostics();
   return parse_scene(document.value());
 }

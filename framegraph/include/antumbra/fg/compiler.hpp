@@ -5,10 +5,10 @@
 #include <functional>
 #include <string>
 
-#include "antumbra/fg/diagnostics.hpp"
 #include "antumbra/fg/graph_desc.hpp"
 #include "antumbra/fg/plan.hpp"
 #include "antumbra/fg/registry.hpp"
+#include "antumbra/fg/vocabulary.hpp"
 
 namespace antumbra::fg {
 
@@ -26,7 +26,8 @@ struct CompileOptions {
 
 // Runs every phase; stops at the first phase that reports errors. Warnings and
 // notes (unused resources, culled passes) accompany a successful plan.
-Result<Plan> compile(const GraphDesc& graph, const Registry& registry, const CompileOptions& options = {});
+Result<Plan> compile(const GraphDesc& graph, const Registry& registry,
+                     const CompileOptions& options = {});
 
 // load_json_file + parse_graph + compile.
 Result<Plan> compile_file(const std::string& path, const Registry& registry,

@@ -7,10 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "antumbra/fg/diagnostics.hpp"
-#include "antumbra/fg/json_document.hpp"
 #include "antumbra/fg/plan.hpp"
 #include "antumbra/fg/reflection.hpp"
+#include "antumbra/fg/vocabulary.hpp"
 
 namespace antumbra::fg {
 
@@ -48,7 +47,7 @@ struct PassInstanceDesc {
 struct GraphDesc {
   int version = kGraphVersion;
   std::string name;
-  std::vector<ResourceDesc> resources;  // in file order
+  std::vector<ResourceDesc> resources;   // in file order
   std::vector<PassInstanceDesc> passes;  // in file order
   std::string output;
   // The source, so later phases can point diagnostics at line:column. Graphs built

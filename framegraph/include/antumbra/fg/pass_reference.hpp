@@ -5,8 +5,8 @@
 
 #include <string>
 
-#include "antumbra/fg/json_document.hpp"
 #include "antumbra/fg/registry.hpp"
+#include "antumbra/fg/vocabulary.hpp"
 
 namespace antumbra::fg {
 

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "antumbra/fg/json_document.hpp"
 #include "antumbra/fg/plan.hpp"
+#include "antumbra/fg/vocabulary.hpp"
 
 namespace antumbra::fg {
 

@@ -9,7 +9,7 @@
 #include <string_view>
 #include <vector>
 
-#include "antumbra/fg/json_document.hpp"
+#include "antumbra/fg/vocabulary.hpp"
 
 namespace antumbra::fg {
 
@@ -59,7 +59,7 @@ enum class Access : std::uint8_t {
   uniform_read,        // uniform buffer
   transfer_src,
   transfer_dst,
-  present,             // handed to the presentation engine / read back
+  present,  // handed to the presentation engine / read back
 };
 std::string_view to_string(Access access);
 bool is_write(Access access);

@@ -2,8 +2,8 @@
 // JSON Schema (draft 2020-12) of graph files, generated from the registry so that
 // editors can complete and check pass types, parameters and ports.
 
-#include "antumbra/fg/json_document.hpp"
 #include "antumbra/fg/registry.hpp"
+#include "antumbra/fg/vocabulary.hpp"
 
 namespace antumbra::fg {
 

@@ -12,11 +12,11 @@
 #include <utility>
 #include <vector>
 
-#include "antumbra/fg/json_document.hpp"
+#include "antumbra/base/json_document.hpp"
 
 namespace antumbra::editor {
 
-using fg::Json;
+using base::Json;
 
 struct JsonEdit {
   enum class Kind { set_member, insert_element, erase_element };

@@ -6,11 +6,11 @@
 // Problems are ED101 diagnostics located in the script (line:column, JSON Pointer), with
 // a did-you-mean for misspelt actions and keys.
 
-#include "antumbra/fg/diagnostics.hpp"
-#include "antumbra/fg/json_document.hpp"
+#include "antumbra/base/diagnostics.hpp"
+#include "antumbra/base/json_document.hpp"
 
 namespace antumbra::editor {
 
-fg::Diagnostics check_edit_script(const fg::JsonDocument& script);
+base::Diagnostics check_edit_script(const base::JsonDocument& script);
 
 }  // namespace antumbra::editor

@@ -26,9 +26,9 @@ struct ParamView {
   std::string name;
   bool declared = false;  // false: in the file but not in the reflection (kept, read-only)
   fg::ParamType type = fg::ParamType::number;
-  fg::Json value;          // the file's value, else the default
+  base::Json value;        // the file's value, else the default
   bool from_file = false;  // false: the default applies
-  fg::Json default_value;
+  base::Json default_value;
   std::optional<double> min;  // numbers and integers
   std::optional<double> max;
   std::vector<std::string> choices;  // enumerations
@@ -50,12 +50,12 @@ class GraphDocument {
  public:
   // Bad files (unreadable, bad JSON, a structure parse_graph rejects) come back as
   // diagnostics with file and line:column.
-  static fg::Result<GraphDocument> load(const std::filesystem::path& file, PassDescLookup lookup);
-  static fg::Result<GraphDocument> parse(std::string_view text, const std::filesystem::path& file,
-                                         PassDescLookup lookup);
+  static base::Result<GraphDocument> load(const std::filesystem::path& file, PassDescLookup lookup);
+  static base::Result<GraphDocument> parse(std::string_view text, const std::filesystem::path& file,
+                                           PassDescLookup lookup);
 
   [[nodiscard]] const std::filesystem::path& file() const { return file_.path(); }
-  [[nodiscard]] const fg::Json& json() const { return file_.root(); }
+  [[nodiscard]] const base::Json& json() const { return file_.root(); }
   [[nodiscard]] std::vector<PassView> passes() const;
   [[nodiscard]] int find_pass(std::string_view name) const;  // -1 when absent
   [[nodiscard]] std::optional<ParamView> param(std::string_view pass, std::string_view name) const;
@@ -63,7 +63,7 @@ class GraphDocument {
   // Checks `value` against the parameter's reflection (type, enum choices, range) and
   // sets it as one undoable command. Unknown passes or parameters are refused with a
   // "did you mean".
-  EditResult set_param(std::string_view pass, std::string_view name, const fg::Json& value,
+  EditResult set_param(std::string_view pass, std::string_view name, const base::Json& value,
                        RangePolicy policy = RangePolicy::clamp);
   // Removes the parameter from the file, so the pass type's default applies.
   EditResult reset_param(std::string_view pass, std::string_view name);
@@ -85,7 +85,7 @@ class GraphDocument {
 
   [[nodiscard]] bool recovery_available() const { return file_.recovery_available(); }
   bool autosave_if_due(RecoveryFile::Clock::time_point now) { return file_.autosave_if_due(now); }
-  fg::Diagnostics recover();
+  base::Diagnostics recover();
   void close() { file_.close(); }
   [[nodiscard]] RecoveryFile& recovery() { return file_.recovery(); }
 
@@ -96,5 +96,11 @@ class GraphDocument {
   JsonFile file_;
   PassDescLookup lookup_;
 };
+
+// The name of the graph's light-layering pass (the first), empty when it has none.
+[[nodiscard]] std::string layering_pass(const GraphDocument& graph);
+// The layer cap of that pass (light_layering/core/layer_cap.hpp), its default when the
+// graph has no light-layering pass or the file's value is not an integer.
+[[nodiscard]] int layer_cap(const GraphDocument& graph);
 
 }  // namespace antumbra::editor

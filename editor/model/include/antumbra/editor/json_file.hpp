@@ -8,25 +8,25 @@
 #include <string>
 #include <string_view>
 
+#include "antumbra/base/diagnostics.hpp"
+#include "antumbra/base/json_document.hpp"
 #include "antumbra/editor/atomic_file.hpp"
 #include "antumbra/editor/edit_history.hpp"
 #include "antumbra/editor/recovery_file.hpp"
-#include "antumbra/fg/diagnostics.hpp"
-#include "antumbra/fg/json_document.hpp"
 
 namespace antumbra::editor {
 
 // A file that cannot be opened is bad user input (a wrong path): a diagnostic, FG000.
-[[nodiscard]] fg::Result<std::string> read_text_file(const std::filesystem::path& file);
+[[nodiscard]] base::Result<std::string> read_text_file(const std::filesystem::path& file);
 
 class JsonFile {
  public:
   JsonFile() = default;
   // `document` is `text` parsed; the recovery file beside `path` is looked for.
-  JsonFile(const std::filesystem::path& path, fg::JsonDocument document, std::string text);
+  JsonFile(const std::filesystem::path& path, base::JsonDocument document, std::string text);
 
   [[nodiscard]] const std::filesystem::path& path() const { return path_; }
-  [[nodiscard]] const fg::Json& root() const { return root_; }
+  [[nodiscard]] const base::Json& root() const { return root_; }
 
   void apply(Command command) { history_.apply(root_, std::move(command)); }
   const Command* undo() { return history_.undo(root_); }
@@ -46,16 +46,16 @@ class JsonFile {
   [[nodiscard]] RecoveryFile& recovery() { return recovery_; }
   bool autosave_if_due(RecoveryFile::Clock::time_point now);
   // The recovery file parsed (diagnostics when missing or bad); nothing changes yet.
-  [[nodiscard]] fg::Result<fg::JsonDocument> read_recovery() const;
+  [[nodiscard]] base::Result<base::JsonDocument> read_recovery() const;
   // Takes `root` as the content: unsaved changes to the file, with no undo history.
-  void replace_content(fg::Json root);
+  void replace_content(base::Json root);
   void close();
 
  private:
   std::filesystem::path path_;
-  fg::JsonDocument base_;  // the file as last loaded or saved, with positions
+  base::JsonDocument base_;  // the file as last loaded or saved, with positions
   std::string base_text_;
-  fg::Json root_;
+  base::Json root_;
   EditHistory history_;
   RecoveryFile recovery_;
   bool recovery_available_ = false;

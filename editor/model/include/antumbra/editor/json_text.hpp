@@ -8,17 +8,18 @@
 #include <string>
 #include <string_view>
 
-#include "antumbra/fg/json_document.hpp"
+#include "antumbra/base/json_document.hpp"
 
 namespace antumbra::editor {
 
 // Canonical layout: 2-space indent, key order kept, a final newline.
-[[nodiscard]] std::string format_json(const fg::Json& value);
+[[nodiscard]] std::string format_json(const base::Json& value);
 
 // The text of `current`, reusing `original_text` (parsed as `original`) wherever the two
 // documents agree. The result always parses back to `current` with its key order; when
 // that cannot be had by replacing values in place, it is format_json(current).
-[[nodiscard]] std::string preserve_format(const fg::JsonDocument& original,
-                                          std::string_view original_text, const fg::Json& current);
+[[nodiscard]] std::string preserve_format(const base::JsonDocument& original,
+                                          std::string_view original_text,
+                                          const base::Json& current);
 
 }  // namespace antumbra::editor

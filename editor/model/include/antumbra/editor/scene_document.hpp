@@ -14,9 +14,9 @@
 
 #include <glm/vec3.hpp>
 
+#include "antumbra/base/diagnostics.hpp"
+#include "antumbra/base/json_document.hpp"
 #include "antumbra/editor/json_file.hpp"
-#include "antumbra/fg/diagnostics.hpp"
-#include "antumbra/fg/json_document.hpp"
 #include "antumbra/scene/scene.hpp"
 
 namespace antumbra::editor {
@@ -45,11 +45,12 @@ class SceneDocument {
   // Bad files (unreadable, bad JSON, lights the editor cannot read) come back as
   // diagnostics with file and line:column. recovery_available() tells whether a newer
   // recovery file was found beside the file.
-  static fg::Result<SceneDocument> load(const std::filesystem::path& file);
-  static fg::Result<SceneDocument> parse(std::string_view text, const std::filesystem::path& file);
+  static base::Result<SceneDocument> load(const std::filesystem::path& file);
+  static base::Result<SceneDocument> parse(std::string_view text,
+                                           const std::filesystem::path& file);
 
   [[nodiscard]] const std::filesystem::path& file() const { return file_.path(); }
-  [[nodiscard]] const fg::Json& json() const { return file_.root(); }
+  [[nodiscard]] const base::Json& json() const { return file_.root(); }
   [[nodiscard]] const std::vector<scene::PointLight>& lights() const { return lights_; }
   [[nodiscard]] int find_light(std::string_view name) const;  // -1 when absent
 
@@ -91,7 +92,7 @@ class SceneDocument {
   // canonical 2-space layout (see json_text.hpp).
   [[nodiscard]] std::string to_text() const { return file_.to_text(); }
   // The engine's scene parser run over to_text(): what the renderer would report.
-  [[nodiscard]] fg::Diagnostics validate() const;
+  [[nodiscard]] base::Diagnostics validate() const;
 
   // Atomic save; throws SaveError (and stays dirty) when it fails. Removes the recovery file.
   void save() { file_.save_as(file_.path()); }
@@ -104,7 +105,7 @@ class SceneDocument {
   // of an editing session and removes the file.
   [[nodiscard]] bool recovery_available() const { return file_.recovery_available(); }
   bool autosave_if_due(RecoveryFile::Clock::time_point now) { return file_.autosave_if_due(now); }
-  fg::Diagnostics recover();
+  base::Diagnostics recover();
   void close() { file_.close(); }
   [[nodiscard]] RecoveryFile& recovery() { return file_.recovery(); }
 

@@ -17,18 +17,10 @@
 
 #include <vulkan/vulkan.h>
 
-#include "antumbra/fg/diagnostics.hpp"
+#include "antumbra/base/diagnostic_codes.hpp"
+#include "antumbra/base/diagnostics.hpp"
 
 namespace antumbra::gpu {
-
-// Shader diagnostic codes (SH000-SH099 are reserved for shaders).
-namespace shader_codes {
-inline constexpr const char* kUnreadable = "SH000";      // source file missing/unreadable
-inline constexpr const char* kCompile = "SH001";         // glslang compile error (file:line)
-inline constexpr const char* kUnknownStage = "SH002";    // no stage given, unknown extension
-inline constexpr const char* kLink = "SH003";            // glslang link / SPIR-V generation
-inline constexpr const char* kCompileWarning = "SH004";  // glslang warning
-}  // namespace shader_codes
 
 enum class ShaderStage { vertex, fragment, compute, geometry, tess_control, tess_evaluation };
 
@@ -75,14 +67,14 @@ class ShaderCompiler {
   ~ShaderCompiler();
 
   // Diagnostics (SH000-SH004) on failure; warnings may accompany a binary.
-  fg::Result<ShaderBinary> compile(const ShaderRequest& request);
+  base::Result<ShaderBinary> compile(const ShaderRequest& request);
   // In-memory source; `virtual_path` names it in diagnostics and anchors relative
   // includes. Not cached (generated code changes too often to be worth it).
-  fg::Result<ShaderBinary> compile_source(std::string_view source,
-                                          const std::filesystem::path& virtual_path,
-                                          ShaderStage stage,
-                                          const std::vector<ShaderDefine>& defines = {},
-                                          const std::string& entry_point = "main");
+  base::Result<ShaderBinary> compile_source(std::string_view source,
+                                            const std::filesystem::path& virtual_path,
+                                            ShaderStage stage,
+                                            const std::vector<ShaderDefine>& defines = {},
+                                            const std::string& entry_point = "main");
 
   [[nodiscard]] std::size_t compiled_count() const { return compiled_count_; }
   [[nodiscard]] std::size_t cache_hit_count() const { return cache_hit_count_; }
@@ -94,10 +86,10 @@ class ShaderCompiler {
   static std::filesystem::path default_cache_dir();
 
  private:
-  fg::Result<ShaderBinary> compile_glsl(const std::string& source,
-                                        const std::filesystem::path& path, ShaderStage stage,
-                                        const std::vector<ShaderDefine>& defines,
-                                        const std::string& entry_point);
+  base::Result<ShaderBinary> compile_glsl(const std::string& source,
+                                          const std::filesystem::path& path, ShaderStage stage,
+                                          const std::vector<ShaderDefine>& defines,
+                                          const std::string& entry_point);
 
   ShaderCompilerOptions options_;
   std::size_t compiled_count_ = 0;
@@ -106,6 +98,6 @@ class ShaderCompiler {
 
 // Parses a glslang info log ("ERROR: file:line: message") into diagnostics; lines
 // without a location are attached to `fallback_file`. Exposed for tests.
-fg::Diagnostics parse_glslang_log(std::string_view log, const std::string& fallback_file);
+base::Diagnostics parse_glslang_log(std::string_view log, const std::string& fallback_file);
 
 }  // namespace antumbra::gpu

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "antumbra/fg/diagnostics.hpp"
+#include "antumbra/base/diagnostics.hpp"
 #include "antumbra/scene/scene.hpp"
 
 namespace antumbra::scene {
@@ -31,6 +31,6 @@ struct GltfLimits {
 
 // Diagnostics carry file = `path` and a JSON Pointer into the glTF (e.g. /accessors/3),
 // without line numbers.
-fg::Result<GltfImport> load_gltf(const std::string& path, const GltfLimits& limits = {});
+base::Result<GltfImport> load_gltf(const std::string& path, const GltfLimits& limits = {});
 
 }  // namespace antumbra::scene

@@ -25,8 +25,8 @@
 #include <string>
 #include <string_view>
 
-#include "antumbra/fg/diagnostics.hpp"
-#include "antumbra/fg/json_document.hpp"
+#include "antumbra/base/diagnostics.hpp"
+#include "antumbra/base/json_document.hpp"
 #include "antumbra/scene/scene.hpp"
 
 namespace antumbra::scene {
@@ -36,10 +36,10 @@ inline constexpr int kSceneFormatVersion = 1;
 inline constexpr int kMaxRepeatCopies = 4096;
 
 // Reads, parses and validates a scene file; glTF paths resolve against its folder.
-fg::Result<Scene> load_scene_file(const std::string& path);
+base::Result<Scene> load_scene_file(const std::string& path);
 // Validates an already parsed document; glTF paths resolve against document.file()'s folder.
-fg::Result<Scene> parse_scene(const fg::JsonDocument& document);
+base::Result<Scene> parse_scene(const base::JsonDocument& document);
 // Convenience for tests and the editor: parse JSON text reported as coming from `file`.
-fg::Result<Scene> parse_scene_text(std::string_view text, const std::string& file);
+base::Result<Scene> parse_scene_text(std::string_view text, const std::string& file);
 
 }  // namespace antumbra::scene

@@ -13,7 +13,7 @@
 
 #include <vulkan/vulkan.h>
 
-#include "antumbra/fg/diagnostics.hpp"
+#include "antumbra/base/diagnostics.hpp"
 #include "antumbra/fg/plan.hpp"
 
 namespace antumbra::gpu {
@@ -29,12 +29,12 @@ struct FrameResources;
 // the located diagnostics so callers can print them and keep the last good state.
 class PassError : public std::runtime_error {
  public:
-  PassError(const std::string& what, fg::Diagnostics diagnostics)
+  PassError(const std::string& what, base::Diagnostics diagnostics)
       : std::runtime_error(what), diagnostics_(std::move(diagnostics)) {}
-  [[nodiscard]] const fg::Diagnostics& diagnostics() const { return diagnostics_; }
+  [[nodiscard]] const base::Diagnostics& diagnostics() const { return diagnostics_; }
 
  private:
-  fg::Diagnostics diagnostics_;
+  base::Diagnostics diagnostics_;
 };
 
 // A graph image as a pass sees it.
@@ -97,9 +97,9 @@ struct PrepareContext {
 struct PassMessage {
   std::string pass;  // the pass instance's name
   std::string code;  // stable, e.g. "LY001"
-  fg::Severity severity = fg::Severity::warning;
+  base::Severity severity = base::Severity::warning;
   std::string message;
-  fg::Json details;  // machine-readable payload
+  base::Json details;  // machine-readable payload
   // The parameter the message is about (e.g. "maxLayers"), so that reports point at it
   // in the graph file; empty: the pass itself.
   std::string param;

@@ -1,11 +1,11 @@
-#include "trace_writer.hpp"
+#include "antumbra/runtime/trace_writer.hpp"
 
 #include <fstream>
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
 
-namespace antumbra::app {
+namespace antumbra::runtime {
 
 void TraceWriter::write(const std::string& path) const {
   auto events = nlohmann::json::array();
@@ -28,4 +28,4 @@ void TraceWriter::write(const std::string& path) const {
   if (!out) throw std::runtime_error("failed writing the trace file " + path);
 }
 
-}  // namespace antumbra::app
+}  // namespace antumbra::runtime

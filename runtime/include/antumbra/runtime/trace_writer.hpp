@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-namespace antumbra::app {
+namespace antumbra::runtime {
 
 struct TraceEvent {
   std::string name;
@@ -26,4 +26,4 @@ class TraceWriter {
   std::vector<TraceEvent> events_;
 };
 
-}  // namespace antumbra::app
+}  // namespace antumbra::runtime

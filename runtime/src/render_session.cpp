@@ -1,18 +1,18 @@
-#include "render_session.hpp"
+#include "antumbra/runtime/render_session.hpp"
 
 #include <algorithm>
 #include <map>
 #include <stdexcept>
 
+#include "antumbra/base/diagnostic_codes.hpp"
 #include "antumbra/fg/compiler.hpp"
-#include "antumbra/fg/diagnostic_codes.hpp"
 #include "antumbra/fg/plan_memory.hpp"
 #include "antumbra/gpu/image_io.hpp"
 #include "antumbra/gpu/memory_heaps.hpp"
 #include "antumbra/gpu/pipeline_cache.hpp"
 #include "register_builtin_passes.hpp"
 
-namespace antumbra::app {
+namespace antumbra::runtime {
 namespace {
 
 double median(std::vector<double> values) {
@@ -76,23 +76,24 @@ RenderSession::~RenderSession() {
   if (gpu_) gpu_->wait_idle();
 }
 
-fg::Diagnostics RenderSession::load_graph(const fg::GraphDesc& graph) {
+base::Diagnostics RenderSession::load_graph(const fg::GraphDesc& graph) {
   fg::CompileOptions compile_options;
   compile_options.viewport = {options_.viewport.width, options_.viewport.height};
   compile_options.footprint = executor_->footprint_fn();
   const auto realise_failed = [&](const std::string& why) {
-    fg::Diagnostics out;
-    out.add({fg::codes::kRealiseFailed, fg::Severity::error, why, graph.document.file(), "", 0, 0});
+    base::Diagnostics out;
+    out.add({codes::graph::kRealiseFailed, base::Severity::error, why, graph.document.file(), "", 0,
+             0});
     return out;
   };
-  std::optional<fg::Result<fg::Plan>> plan;
+  std::optional<base::Result<fg::Plan>> plan;
   try {
     // The device's own footprints: an image beyond its limits fails here.
     plan.emplace(fg::compile(graph, registry_->reflection(), compile_options));
   } catch (const std::runtime_error& e) {
     return realise_failed(std::string("the device cannot size this plan's resources: ") + e.what());
   }
-  fg::Diagnostics diagnostics = plan->diagnostics();
+  base::Diagnostics diagnostics = plan->diagnostics();
   if (!plan->ok()) return diagnostics;
   // Refused before allocating: a driver asked for more than it has may fail late, or (a
   // CPU device) overcommit host memory. The message says what the plan needs.
@@ -119,8 +120,8 @@ fg::Diagnostics RenderSession::load_graph(const fg::GraphDesc& graph) {
   return diagnostics;
 }
 
-fg::Diagnostics RenderSession::frame_diagnostics() const {
-  fg::Diagnostics out;
+base::Diagnostics RenderSession::frame_diagnostics() const {
+  base::Diagnostics out;
   const fg::Plan& plan = executor_->plan();
   for (const auto& m : report_.messages()) {
     const fg::PlanPass* pass = plan.find_pass(m.pass);
@@ -230,4 +231,4 @@ void RenderSession::write_image(const std::string& resource, const std::string& 
   if (!ok) throw std::runtime_error("cannot write " + path);
 }
 
-}  // namespace antumbra::app
+}  // namespace antumbra::runtime

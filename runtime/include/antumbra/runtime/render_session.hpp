@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "antumbra/fg/diagnostics.hpp"
+#include "antumbra/base/diagnostics.hpp"
 #include "antumbra/fg/graph_desc.hpp"
 #include "antumbra/fgvk/executor.hpp"
 #include "antumbra/gpu/context.hpp"
@@ -16,12 +16,12 @@
 #include "antumbra/gpu/pipeline_cache.hpp"
 #include "antumbra/gpu/shader_compiler.hpp"
 #include "antumbra/gpu/timing.hpp"
+#include "antumbra/runtime/data_paths.hpp"
+#include "antumbra/runtime/trace_writer.hpp"
 #include "antumbra/scene/scene.hpp"
 #include "common/gpu_scene.hpp"
-#include "data_paths.hpp"
-#include "trace_writer.hpp"
 
-namespace antumbra::app {
+namespace antumbra::runtime {
 
 struct SessionOptions {
   std::string device = "auto";
@@ -47,7 +47,7 @@ class RenderSession {
 
   // Compiles and realises a graph. On errors (graph or shader diagnostics) returns
   // them and keeps the previous graph running.
-  fg::Diagnostics load_graph(const fg::GraphDesc& graph);
+  base::Diagnostics load_graph(const fg::GraphDesc& graph);
   void set_scene(scene::Scene scene);
   // Lights only (the editor's edits): geometry stays uploaded, so the static shadow
   // cache keeps every face a changed light does not reach.
@@ -68,7 +68,7 @@ class RenderSession {
   // The same messages as diagnostics located in the live graph's file: at the parameter
   // a message names (a layer-cap warning at /passes/N/params/maxLayers), else its pass, so reports
   // print them like any other diagnostic and JSON reports carry one list.
-  [[nodiscard]] fg::Diagnostics frame_diagnostics() const;
+  [[nodiscard]] base::Diagnostics frame_diagnostics() const;
 
   // Writes a graph image to PNG (or PFM when the path ends in .pfm).
   void write_image(const std::string& resource, const std::string& path);
@@ -91,7 +91,7 @@ class RenderSession {
   std::unique_ptr<passes::GpuScene> gpu_scene_;
   std::unique_ptr<Observer> observer_;
   fgvk::FrameReport report_;
-  fg::JsonDocument live_document_;  // the source of the graph that is running
+  base::JsonDocument live_document_;  // the source of the graph that is running
 };
 
-}  // namespace antumbra::app
+}  // namespace antumbra::runtime

@@ -1,29 +1,30 @@
-#include "watch_loop.hpp"
+#include "antumbra/runtime/watch_loop.hpp"
 
 #include <algorithm>
 #include <cstdio>
 #include <thread>
 
+#include "antumbra/base/json_document.hpp"
 #include "antumbra/fg/graph_desc.hpp"
-#include "antumbra/fg/json_document.hpp"
 #include "antumbra/fg/plan_diff.hpp"
 #include "antumbra/gpu/timing.hpp"
+#include "antumbra/runtime/exit_codes.hpp"
 #include "antumbra/scene/scene_file.hpp"
 #include "antumbra/watch/file_watcher.hpp"
-#include "commands.hpp"
 
-namespace antumbra::app {
+namespace antumbra::runtime {
 namespace {
 
-void print(const fg::Diagnostics& diagnostics) {
+void print(const base::Diagnostics& diagnostics) {
   for (const auto& d : diagnostics) {
-    if (d.severity != fg::Severity::note) std::fprintf(stderr, "%s\n", fg::format_text(d).c_str());
+    if (d.severity != base::Severity::note)
+      std::fprintf(stderr, "%s\n", base::format_text(d).c_str());
   }
 }
 
 // Parses and loads the graph beside the running one; diagnostics when it is refused.
-fg::Diagnostics reload_graph(RenderSession& session, const WatchOptions& options) {
-  auto document = fg::load_json_file(options.graph_path);
+base::Diagnostics reload_graph(RenderSession& session, const WatchOptions& options) {
+  auto document = base::load_json_file(options.graph_path);
   if (!document.ok()) return document.diagnostics();
   auto graph = fg::parse_graph(document.value());
   if (!graph.ok()) return graph.diagnostics();
@@ -56,7 +57,7 @@ int run_watch_loop(RenderSession& session, const WatchOptions& options) {
         std::find(changed.begin(), changed.end(), std::filesystem::path(options.scene_path)) !=
         changed.end();
     const bool graph_changed = scene_changed ? changed.size() > 1 : true;
-    fg::Diagnostics diagnostics;
+    base::Diagnostics diagnostics;
     const fg::Plan before = session.executor().plan();
     if (scene_changed) {
       auto scene = scene::load_scene_file(options.scene_path);
@@ -104,4 +105,4 @@ int run_watch_loop(RenderSession& session, const WatchOptions& options) {
   return kExitOk;
 }
 
-}  // namespace antumbra::app
+}  // namespace antumbra::runtime

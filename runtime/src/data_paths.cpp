@@ -1,10 +1,10 @@
-#include "data_paths.hpp"
+#include "antumbra/runtime/data_paths.hpp"
 
 #include <cstdlib>
 #include <stdexcept>
 #include <vector>
 
-namespace antumbra::app {
+namespace antumbra::runtime {
 namespace {
 
 bool is_root(const std::filesystem::path& dir) {
@@ -51,4 +51,4 @@ DataPaths find_data_paths() {
   throw DataPathsError(message);
 }
 
-}  // namespace antumbra::app
+}  // namespace antumbra::runtime

@@ -9,9 +9,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "antumbra/fg/diagnostics.hpp"
+#include "antumbra/base/diagnostics.hpp"
 
-namespace antumbra::fg {
+namespace antumbra::base {
 
 // Key order is kept so that files written back keep their layout.
 using Json = nlohmann::ordered_json;
@@ -59,11 +59,10 @@ Result<JsonDocument> parse_json(std::string_view text, const std::string& file,
                                 const JsonParseOptions& options = {});
 
 // Reads and parses a file; a missing or unreadable file is diagnostic FG000.
-Result<JsonDocument> load_json_file(const std::string& path,
-                                    const JsonParseOptions& options = {});
+Result<JsonDocument> load_json_file(const std::string& path, const JsonParseOptions& options = {});
 
 // Appends one reference token to a JSON Pointer, escaping '~' and '/'.
 std::string pointer_append(std::string_view pointer, std::string_view token);
 std::string pointer_append(std::string_view pointer, std::size_t index);
 
-}  // namespace antumbra::fg
+}  // namespace antumbra::base

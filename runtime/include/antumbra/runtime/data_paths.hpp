@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace antumbra::app {
+namespace antumbra::runtime {
 
 struct DataPaths {
   std::filesystem::path root;  // holds data/ and passes/
@@ -25,4 +25,4 @@ class DataPathsError : public std::runtime_error {
 };
 DataPaths find_data_paths();
 
-}  // namespace antumbra::app
+}  // namespace antumbra::runtime

@@ -1,8 +1,8 @@
-#include "antumbra/fg/diagnostics.hpp"
+#include "antumbra/base/diagnostics.hpp"
 
 #include <algorithm>
 
-namespace antumbra::fg {
+namespace antumbra::base {
 
 const char* to_string(Severity severity) {
   switch (severity) {
@@ -49,13 +49,11 @@ std::string format_text(const Diagnostic& diagnostic) {
 }
 
 nlohmann::json to_json(const Diagnostic& diagnostic) {
-  auto out = nlohmann::json{{"code", diagnostic.code},
-                        {"severity", to_string(diagnostic.severity)},
-                        {"message", diagnostic.message},
-                        {"file", diagnostic.file},
-                        {"pointer", diagnostic.pointer},
-                        {"line", diagnostic.line},
-                        {"column", diagnostic.column}};
+  auto out =
+      nlohmann::json{{"code", diagnostic.code},       {"severity", to_string(diagnostic.severity)},
+                     {"message", diagnostic.message}, {"file", diagnostic.file},
+                     {"pointer", diagnostic.pointer}, {"line", diagnostic.line},
+                     {"column", diagnostic.column}};
   if (!diagnostic.excerpt.empty()) out["excerpt"] = diagnostic.excerpt;
   return out;
 }
@@ -64,17 +62,20 @@ void Diagnostics::append(const Diagnostics& other) {
   items_.insert(items_.end(), other.items_.begin(), other.items_.end());
 }
 
-bool Diagnostics::has_errors() const { return error_count() > 0; }
+bool Diagnostics::has_errors() const {
+  return error_count() > 0;
+}
 
 std::size_t Diagnostics::error_count() const {
-  return static_cast<std::size_t>(std::count_if(
-      items_.begin(), items_.end(), [](const Diagnostic& d) { return d.severity == Severity::error; }));
+  return static_cast<std::size_t>(
+      std::count_if(items_.begin(), items_.end(),
+                    [](const Diagnostic& d) { return d.severity == Severity::error; }));
 }
 
 std::size_t Diagnostics::warning_count() const {
-  return static_cast<std::size_t>(std::count_if(items_.begin(), items_.end(), [](const Diagnostic& d) {
-    return d.severity == Severity::warning;
-  }));
+  return static_cast<std::size_t>(
+      std::count_if(items_.begin(), items_.end(),
+                    [](const Diagnostic& d) { return d.severity == Severity::warning; }));
 }
 
 const Diagnostic* Diagnostics::find(std::string_view code) const {
@@ -91,8 +92,8 @@ std::string Diagnostics::to_text() const {
 
 nlohmann::json Diagnostics::to_json() const {
   auto array = nlohmann::json::array();
-  for (const auto& d : items_) array.push_back(fg::to_json(d));
+  for (const auto& d : items_) array.push_back(base::to_json(d));
   return array;
 }
 
-}  // namespace antumbra::fg
+}  // namespace antumbra::base

@@ -7,9 +7,9 @@
 
 #include <string>
 
-#include "render_session.hpp"
+#include "antumbra/runtime/render_session.hpp"
 
-namespace antumbra::app {
+namespace antumbra::runtime {
 
 struct WatchOptions {
   std::string graph_path;
@@ -23,4 +23,4 @@ struct WatchOptions {
 // Returns the process exit code (0 when the loop ends by time).
 int run_watch_loop(RenderSession& session, const WatchOptions& options);
 
-}  // namespace antumbra::app
+}  // namespace antumbra::runtime

@@ -9,7 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace antumbra::fg {
+namespace antumbra::base {
 
 enum class Severity { note, warning, error };
 
@@ -79,4 +79,4 @@ class Result {
   Diagnostics diagnostics_;
 };
 
-}  // namespace antumbra::fg
+}  // namespace antumbra::base

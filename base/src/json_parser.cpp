@@ -8,10 +8,10 @@
 #include <sstream>
 #include <utility>
 
-#include "antumbra/fg/diagnostic_codes.hpp"
-#include "antumbra/fg/json_document.hpp"
+#include "antumbra/base/diagnostic_codes.hpp"
+#include "antumbra/base/json_document.hpp"
 
-namespace antumbra::fg {
+namespace antumbra::base {
 namespace {
 
 struct ParseError {
@@ -85,7 +85,8 @@ class Parser {
     skip_bom();
     skip_whitespace();
     if (at_end())
-      throw ParseError{codes::kJsonEmpty, "the file is empty; expected a JSON value", here()};
+      throw ParseError{codes::graph::kJsonEmpty, "the file is empty; expected a JSON value",
+                       here()};
     Json root = parse_value("", 0);
     skip_whitespace();
     if (!at_end()) fail("unexpected " + describe_char(peek()) + " after the end of the JSON value");
@@ -105,7 +106,7 @@ class Parser {
   std::string where_;  // JSON Pointer of the value being read, for syntax errors
 
   [[noreturn]] void fail(std::string message) const {
-    throw ParseError{codes::kJsonSyntax, std::move(message), here(), where_};
+    throw ParseError{codes::graph::kJsonSyntax, std::move(message), here(), where_};
   }
 
   void advance() {
@@ -145,7 +146,7 @@ class Parser {
 
   Json parse_value(const std::string& pointer, int depth) {
     if (depth > options_.max_depth) {
-      throw ParseError{codes::kJsonTooDeep,
+      throw ParseError{codes::graph::kJsonTooDeep,
                        "nesting deeper than " + std::to_string(options_.max_depth) + " levels",
                        here()};  // no pointer: hundreds of "/0" would bury the message
     }
@@ -203,7 +204,8 @@ class Parser {
       std::string key = parse_string();
       const std::string child = pointer_append(pointer, key);
       if (object.contains(key)) {
-        throw ParseError{codes::kJsonDuplicateKey, "duplicate key \"" + key + "\"", key_pos, child};
+        throw ParseError{codes::graph::kJsonDuplicateKey, "duplicate key \"" + key + "\"", key_pos,
+                         child};
       }
       key_positions[child] = key_pos;
       skip_whitespace();
@@ -334,7 +336,7 @@ class Parser {
       }
       const std::size_t n = utf8_sequence_length(text_, pos_);
       if (n == 0) {
-        throw ParseError{codes::kJsonInvalidUtf8,
+        throw ParseError{codes::graph::kJsonInvalidUtf8,
                          "invalid UTF-8 byte " + describe_char(c) + " in a string", here()};
       }
       out.append(text_.substr(pos_, n));
@@ -466,7 +468,7 @@ Result<JsonDocument> load_json_file(const std::string& path, const JsonParseOpti
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) {
     Diagnostics diagnostics;
-    diagnostics.add(Diagnostic{codes::kFileUnreadable, Severity::error,
+    diagnostics.add(Diagnostic{codes::graph::kFileUnreadable, Severity::error,
                                "is a directory; expected a JSON file", path, "", 0, 0});
     return diagnostics;
   }
@@ -476,7 +478,7 @@ Result<JsonDocument> load_json_file(const std::string& path, const JsonParseOpti
     // The OS's reason: a missing file and a file without read permission need different fixes.
     const int reason = errno;
     Diagnostics diagnostics;
-    diagnostics.add(Diagnostic{codes::kFileUnreadable, Severity::error,
+    diagnostics.add(Diagnostic{codes::graph::kFileUnreadable, Severity::error,
                                std::string("cannot open the file: ") +
                                    (reason != 0 ? std::strerror(reason) : "unknown reason"),
                                path, "", 0, 0});
@@ -487,4 +489,4 @@ Result<JsonDocument> load_json_file(const std::string& path, const JsonParseOpti
   return parse_json(buffer.str(), path, options);
 }
 
-}  // namespace antumbra::fg
+}  // namespace antumbra::base

@@ -1,0 +1,191 @@
+#pragma once
+// The catalogue of diagnostic codes: every code the program reports, in one table, so a
+// code is never reused for another meaning. Codes are stable: tests, tools and the editor
+// match on them.
+//
+//   FG000-FG009  file and JSON syntax           (base/src/json_parser.cpp; graphs and scenes)
+//   FG010-FG029  document structure and types   (graph description)
+//   FG030-FG049  passes, ports and parameters    (resolve/bind)
+//   FG050-FG069  resources, formats and sizes    (bind)
+//   FG070-FG089  dependency graph               (cycles, writers, outputs)
+//   FG090-FG109  checks over the whole plan, realising it on a device
+//   SC000-SC099  scene files                     (engine/scene)
+//   SH000-SH099  shaders                         (engine/core shader compiler, pass reflection)
+//   ED000-ED199  documents the editor opens, edit scripts (editor/model)
+//   SHD, LY, TL  pass-specific checks and frame reports (passes/)
+//   QU000-QU099  the quality comparison          (app/cmd_compare.cpp)
+
+namespace antumbra::codes {
+
+// The graph core's codes.
+namespace graph {
+// File and syntax.
+inline constexpr const char* kFileUnreadable = "FG000";
+inline constexpr const char* kJsonSyntax = "FG001";
+inline constexpr const char* kJsonEmpty = "FG002";
+inline constexpr const char* kJsonInvalidUtf8 = "FG003";
+inline constexpr const char* kJsonDuplicateKey = "FG004";
+inline constexpr const char* kJsonTooDeep = "FG005";
+
+// Document structure and JSON types (graph_desc.cpp).
+inline constexpr const char* kWrongType = "FG010";           // a value has the wrong JSON type
+inline constexpr const char* kUnknownKey = "FG011";          // unknown key (with "did you mean")
+inline constexpr const char* kMissingKey = "FG012";          // a required key is missing
+inline constexpr const char* kVersionMissing = "FG013";      // no "version" at the root
+inline constexpr const char* kVersionUnsupported = "FG014";  // version < 1 or newer than supported
+inline constexpr const char* kInvalidName = "FG015";         // name is not an identifier
+inline constexpr const char* kDuplicatePass = "FG016";       // two passes with one name
+inline constexpr const char* kNoPasses = "FG017";            // "passes" is empty
+
+// Passes, ports and parameters (resolve/bind).
+inline constexpr const char* kUnknownPassType = "FG030";
+inline constexpr const char* kUnknownParam = "FG031";
+inline constexpr const char* kParamType = "FG032";    // parameter has the wrong JSON type
+inline constexpr const char* kParamRange = "FG033";   // parameter outside [min, max]
+inline constexpr const char* kParamChoice = "FG034";  // not one of the enumeration's choices
+inline constexpr const char* kUnknownPort = "FG035";
+inline constexpr const char* kPortDirection = "FG036";      // output port under "in" or vice versa
+inline constexpr const char* kPortUnbound = "FG037";        // a required port has no resource
+inline constexpr const char* kUnknownAfter = "FG038";       // "after" names no pass
+inline constexpr const char* kDoubleWrite = "FG039";        // one pass writes a resource twice
+inline constexpr const char* kPortKind = "FG040";           // image port bound to a buffer, ...
+inline constexpr const char* kReadWriteSamePass = "FG041";  // read and written by one pass
+
+// Resources, formats and sizes.
+inline constexpr const char* kUnknownFormat = "FG050";
+inline constexpr const char* kBadSize = "FG051";
+inline constexpr const char* kBadLayers = "FG052";
+inline constexpr const char* kUnknownResource = "FG053";  // with "did you mean"
+inline constexpr const char* kFormatRejected = "FG054";   // format the port does not accept
+inline constexpr const char* kLayersRejected = "FG055";   // layer count outside the port's range
+inline constexpr const char* kSizeMismatch = "FG056";     // attachments of one size group differ
+inline constexpr const char* kUnknownKind = "FG057";      // kind is not image/buffer
+inline constexpr const char* kUnusedResource = "FG058";   // warning: declared, never used
+
+// Dependency graph.
+inline constexpr const char* kReadNeverWritten = "FG070";  // read of a resource nobody wrote
+inline constexpr const char* kCycle = "FG071";             // message lists the edges left
+inline constexpr const char* kOutputNotImage = "FG072";
+inline constexpr const char* kOutputNotProduced = "FG073";  // no executed pass writes it
+inline constexpr const char* kPassCulled = "FG074";         // note: outputs reach nothing
+inline constexpr const char* kPassDisabled = "FG075";       // note: "enabled": false
+
+// Pass-specific checks over the whole plan (PassDesc::check).
+inline constexpr const char* kLayerCapExceedsStorage = "FG090";  // cap k > layers storage holds
+inline constexpr const char* kLayerStorageMismatch = "FG091";    // layered images disagree
+inline constexpr const char* kDerivedMapMismatch = "FG092";  // map derived from the atlas misfits
+
+// The executor could not realise a valid plan on this device.
+inline constexpr const char* kRealiseFailed = "FG100";
+}  // namespace graph
+
+// Scene files (SC000-SC099). File reading and JSON syntax keep FG000-FG005, because the
+// same JSON layer reports them for graphs and scenes alike.
+namespace scene {
+// Document structure (SC001-SC009).
+inline constexpr const char* kVersionMissing = "SC001";      // no "version" key
+inline constexpr const char* kVersionUnsupported = "SC002";  // newer than supported, or < 1
+inline constexpr const char* kWrongType = "SC003";           // e.g. string where a number goes
+inline constexpr const char* kUnknownKey = "SC004";          // with "did you mean"
+inline constexpr const char* kMissingKey = "SC005";          // a required key is absent
+inline constexpr const char* kOutOfRange = "SC006";          // negative range, fovY >= 180...
+inline constexpr const char* kBadArity = "SC007";            // vec3 with 2 numbers, etc.
+
+// Objects and materials (SC010-SC019).
+inline constexpr const char* kUnknownMaterial = "SC010";
+inline constexpr const char* kTransmittanceIgnored = "SC011";  // warning: not translucent
+inline constexpr const char* kUnknownPrimitive = "SC012";
+inline constexpr const char* kObjectKind = "SC013";     // neither or both of primitive/gltf
+inline constexpr const char* kBadArchShape = "SC014";   // opening does not fit the arch
+inline constexpr const char* kTooManyCopies = "SC015";  // "repeat" expands past the limit
+
+// Lights and camera (SC020-SC029).
+inline constexpr const char* kLightNameEmpty = "SC020";
+inline constexpr const char* kLightNameDuplicate = "SC021";
+inline constexpr const char* kLightTypeUnsupported = "SC022";  // not point/spot/directional
+inline constexpr const char* kCameraDegenerate = "SC023";      // target == position, up || view
+inline constexpr const char* kSecondDirectional = "SC024";     // more than one directional light
+inline constexpr const char* kLightDirectionZero = "SC025";    // spot/directional direction ~ 0
+inline constexpr const char* kSpotAngles = "SC026";            // inner > outer
+inline constexpr const char* kLightKeyIgnored = "SC027";       // warning: key unused by this type
+
+// glTF import (SC030-SC049). Reported at the scene object's "gltf" key; the message names
+// the glTF file and the JSON Pointer inside it.
+inline constexpr const char* kGltfFileMissing = "SC030";
+inline constexpr const char* kGltfParse =
+    "SC031";  // tinygltf rejected it, or a used property is mistyped
+inline constexpr const char* kGltfBadReference = "SC032";     // index of node/mesh/... out of range
+inline constexpr const char* kGltfOutOfBounds = "SC033";      // accessor/view past its buffer
+inline constexpr const char* kGltfBadAccessor = "SC034";      // type/component type/stride
+inline constexpr const char* kGltfIndexOutOfRange = "SC035";  // index value >= vertex count
+inline constexpr const char* kGltfNodeCycle = "SC036";
+inline constexpr const char* kGltfNonFinite = "SC037";      // NaN/inf positions or matrices
+inline constexpr const char* kGltfCountMismatch = "SC038";  // attribute counts, index count % 3
+inline constexpr const char* kGltfNoGeometry = "SC039";     // default scene draws no triangle
+inline constexpr const char* kGltfUnsupported =
+    "SC040";  // sparse, Draco... (warning: points/lines skipped)
+inline constexpr const char* kGltfWarning =
+    "SC041";  // warning: tinygltf, or unused property mistyped
+inline constexpr const char* kGltfTooLarge = "SC042";  // past the import limits
+}  // namespace scene
+
+// Shaders (SH000-SH099).
+namespace shader {
+inline constexpr const char* kUnreadable = "SH000";      // source file missing/unreadable
+inline constexpr const char* kCompile = "SH001";         // glslang compile error (file:line)
+inline constexpr const char* kUnknownStage = "SH002";    // no stage given, unknown extension
+inline constexpr const char* kLink = "SH003";            // glslang link / SPIR-V generation
+inline constexpr const char* kCompileWarning = "SH004";  // glslang warning
+// A shader's reflected descriptor bindings or push-constant size disagree with the
+// pass's C++ declaration (passes/common/shader_interface.hpp).
+inline constexpr const char* kInterfaceMismatch = "SH010";
+}  // namespace shader
+
+// Documents the editor's model opens and edit scripts (docs/edit-script.md). The engine's
+// own codes (FG..., SC...) come through unchanged where its parsers are used.
+namespace editor {
+inline constexpr const char* kNotAnObject = "ED001";     // the document root is not an object
+inline constexpr const char* kNewerVersion = "ED002";    // written by a newer format version
+inline constexpr const char* kLightsNotArray = "ED010";  // "lights" is not an array
+inline constexpr const char* kLightNotObject = "ED011";  // a light is not an object
+inline constexpr const char* kLightField = "ED012";      // a light field has the wrong type/range
+inline constexpr const char* kLightName = "ED013";       // missing, empty or duplicate name
+inline constexpr const char* kSecondSun = "ED014";       // more than one directional light
+inline constexpr const char* kNoRecovery = "ED020";      // recover() without a recovery file
+// Edit scripts (docs/edit-script.md): a step that ran and failed; a script that is malformed
+// (unknown action or key, missing key, wrong value type), found before anything runs.
+inline constexpr const char* kStepFailed = "ED100";
+inline constexpr const char* kScriptMalformed = "ED101";
+}  // namespace editor
+
+// point-shadow-atlas.
+namespace shadow_atlas {
+inline constexpr const char* kShadowDataTooSmall =
+    "SHD001";  // shadowData smaller than the atlas needs
+inline constexpr const char* kLightsUnshadowed = "SHD002";  // warning: lights do not fit the atlas
+inline constexpr const char* kColourLayers = "SHD003";      // colour map has fewer layers
+inline constexpr const char* kFaceStats = "SHD010";         // note: faces culled/drawn/cached
+}  // namespace shadow_atlas
+
+// light-layering.
+namespace layering {
+inline constexpr const char* kOverCap = "LY001";             // warning: layout needs more layers
+inline constexpr const char* kLayerTableTooSmall = "LY010";  // layerTable buffer too small
+}  // namespace layering
+
+// tiled-lighting (and its hard / pcf / pcss variants).
+namespace lighting {
+inline constexpr const char* kAtlasWithoutData = "TL001";  // atlas and shadowData not both bound
+inline constexpr const char* kModeNeedsAtlas = "TL002";    // shadows mode needs the atlas
+inline constexpr const char* kShadowDataTooSmall =
+    "TL003";                                            // shadowData smaller than the atlas needs
+inline constexpr const char* kLayeredInputs = "TL004";  // layered mode needs layerTable, shadow
+inline constexpr const char* kLayerTableTooSmall = "TL005";  // layerTable buffer too small
+}  // namespace lighting
+
+// antumbra quality.
+namespace quality {
+inline constexpr const char* kRankingUnreliable = "QU001";  // warning: too few pixels to rank
+}  // namespace quality
+
+}  // namespace antumbra::codes

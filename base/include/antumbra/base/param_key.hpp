@@ -1,0 +1,41 @@
+#pragma once
+// A parameter's name with its C++ type, for code outside the pass that owns the parameter
+// (the layer checks, the editor and edit scripts read the layer cap through one key).
+
+#include <optional>
+#include <type_traits>
+
+#include "antumbra/base/json_document.hpp"
+
+namespace antumbra::base {
+
+template <class T>
+struct ParamKey {
+  const char* name;
+};
+
+// `value` as T, or nullopt when it is of another JSON type (an integer parameter written
+// 2.5 is not an int).
+template <class T>
+std::optional<T> json_as(const Json& value) {
+  if constexpr (std::is_same_v<T, bool>) {
+    if (value.is_boolean()) return value.template get<bool>();
+  } else if constexpr (std::is_integral_v<T>) {
+    if (value.is_number_integer()) return value.template get<T>();
+  } else if constexpr (std::is_floating_point_v<T>) {
+    if (value.is_number()) return value.template get<T>();
+  } else {
+    if (value.is_string()) return value.template get<T>();
+  }
+  return std::nullopt;
+}
+
+// The value of `key` in a parameter object (a graph's "params" or a plan pass's params),
+// or nullopt when it is absent or not of type T.
+template <class T>
+std::optional<T> read_param(const Json& params, ParamKey<T> key) {
+  const auto it = params.find(key.name);
+  return it == params.end() ? std::nullopt : json_as<T>(*it);
+}
+
+}  // namespace antumbra::base

@@ -1,0 +1,139 @@
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <stdexcept>
+
+#include "antumbra/base/param_key.hpp"
+#include "antumbra/fg/param_table.hpp"
+
+namespace antumbra::fg {
+namespace {
+
+enum class Mode : std::uint8_t { fast, exact };
+
+struct Shared {
+  float scale = 0.0f;
+};
+
+struct Params {
+  float exposure = 0.0f;
+  std::uint32_t taps = 0;
+  bool cache = false;
+  Mode mode = Mode::fast;
+  std::string label;
+  Shared shared;
+};
+
+const ParamTable<Shared>& shared_table() {
+  static const auto table = ParamTable<Shared>().add(
+      {.name = "scale", .type = ParamType::number, .default_value = 2.0, .min = 0.0, .max = 4.0},
+      &Shared::scale);
+  return table;
+}
+
+ParamTable<Params> table() {
+  return ParamTable<Params>()
+      .add({.name = "exposure",
+            .type = ParamType::number,
+            .default_value = 1.5,
+            .min = 0.0,
+            .max = 16.0},
+           &Params::exposure)
+      .add(
+          {.name = "taps", .type = ParamType::integer, .default_value = 5, .min = 1.0, .max = 23.0},
+          &Params::taps)
+      .add({.name = "cache", .type = ParamType::boolean, .default_value = true}, &Params::cache)
+      .choice({.name = "mode",
+               .type = ParamType::enumeration,
+               .default_value = "exact",
+               .choices = {"fast", "exact"}},
+              &Params::mode, {Mode::fast, Mode::exact})
+      .add({.name = "label", .type = ParamType::string, .default_value = "x"}, &Params::label)
+      .include(&Params::shared, shared_table());
+}
+
+TEST(ParamTable, DescribesEveryRowInOrder) {
+  const auto descs = table().descs();
+  ASSERT_EQ(descs.size(), 6u);
+  EXPECT_EQ(descs[0].name, "exposure");
+  EXPECT_EQ(descs[3].choices, (std::vector<std::string>{"fast", "exact"}));
+  EXPECT_EQ(descs[5].name, "scale");
+}
+
+TEST(ParamTable, DefaultsFillEveryMember) {
+  const Params p = table().defaults();
+  EXPECT_FLOAT_EQ(p.exposure, 1.5f);
+  EXPECT_EQ(p.taps, 5u);
+  EXPECT_TRUE(p.cache);
+  EXPECT_EQ(p.mode, Mode::exact);
+  EXPECT_EQ(p.label, "x");
+  EXPECT_FLOAT_EQ(p.shared.scale, 2.0f);
+}
+
+TEST(ParamTable, ReadsAPlanPassValues) {
+  const Json params = {{"exposure", 3},  {"taps", 7.0},  {"cache", false},
+                       {"mode", "fast"}, {"label", "y"}, {"scale", 0.5}};
+  const Params p = table().read(params);
+  EXPECT_FLOAT_EQ(p.exposure, 3.0f);
+  EXPECT_EQ(p.taps, 7u);
+  EXPECT_FALSE(p.cache);
+  EXPECT_EQ(p.mode, Mode::fast);
+  EXPECT_EQ(p.label, "y");
+  EXPECT_FLOAT_EQ(p.shared.scale, 0.5f);
+}
+
+TEST(ParamTable, AValueOfTheWrongTypeIsAnErrorNeverAZero) {
+  EXPECT_THROW((void)table().read(Json{{"exposure", "bright"}}), std::logic_error);
+  EXPECT_THROW((void)table().read(Json{{"taps", 2.5}}), std::logic_error);
+  EXPECT_THROW((void)table().read(Json{{"mode", "slow"}}), std::logic_error);
+}
+
+TEST(ParamTable, ARowThatContradictsItselfThrowsWhenTheTableIsBuilt) {
+  struct P {
+    float f = 0.0f;
+    int i = 0;
+    Mode m = Mode::fast;
+  };
+  const auto out_of_range = [] {
+    (void)ParamTable<P>().add(
+        {.name = "f", .type = ParamType::number, .default_value = 9.0, .min = 0.0, .max = 1.0},
+        &P::f);
+  };
+  const auto wrong_type = [] {
+    (void)ParamTable<P>().add({.name = "i", .type = ParamType::number, .default_value = 1}, &P::i);
+  };
+  const auto twice = [] {
+    (void)ParamTable<P>()
+        .add({.name = "f", .type = ParamType::number, .default_value = 0.0}, &P::f)
+        .add({.name = "f", .type = ParamType::integer, .default_value = 0}, &P::i);
+  };
+  const auto bad_choice = [] {
+    (void)ParamTable<P>().choice({.name = "m",
+                                  .type = ParamType::enumeration,
+                                  .default_value = "slow",
+                                  .choices = {"fast", "exact"}},
+                                 &P::m, {Mode::fast, Mode::exact});
+  };
+  const auto values_mismatch = [] {
+    (void)ParamTable<P>().choice({.name = "m",
+                                  .type = ParamType::enumeration,
+                                  .default_value = "fast",
+                                  .choices = {"fast", "exact"}},
+                                 &P::m, {Mode::fast});
+  };
+  EXPECT_THROW(out_of_range(), std::logic_error);
+  EXPECT_THROW(wrong_type(), std::logic_error);
+  EXPECT_THROW(twice(), std::logic_error);
+  EXPECT_THROW(bad_choice(), std::logic_error);
+  EXPECT_THROW(values_mismatch(), std::logic_error);
+}
+
+TEST(ParamKey, ReadsOnlyTheDeclaredType) {
+  constexpr base::ParamKey<int> kCap{"maxLayers"};
+  EXPECT_EQ(base::read_param(Json{{"maxLayers", 3}}, kCap), 3);
+  EXPECT_EQ(base::read_param(Json{{"maxLayers", 2.5}}, kCap), std::nullopt);
+  EXPECT_EQ(base::read_param(Json{{"other", 3}}, kCap), std::nullopt);
+}
+
+}  // namespace
+}  // namespace antumbra::fg
