@@ -6,7 +6,7 @@ JOBS       ?= $(shell nproc)
 CMAKE_ARGS ?=
 DEMO_ARGS  ?= --size 1280x720 --out out/atrium.png
 
-.PHONY: all deps configure build demo test test-asan fuzz bench clean
+.PHONY: all deps configure build demo test test-asan fuzz bench lint clean
 
 all: build
 
@@ -14,7 +14,7 @@ deps:
 	@scripts/install-deps.sh
 
 configure: deps
-	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release $(CMAKE_ARGS) > /dev/null
+	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release $(CMAKE_ARGS)
 
 build: configure
 	@cmake --build $(BUILD) -j$(JOBS)
@@ -31,7 +31,7 @@ test: build
 
 test-asan: deps
 	@cmake -S . -B $(ASAN_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DANTUMBRA_SANITIZE=ON \
-	  -DANTUMBRA_BUILD_BENCHMARKS=OFF $(CMAKE_ARGS) > /dev/null
+	  -DANTUMBRA_BUILD_BENCHMARKS=OFF $(CMAKE_ARGS)
 	@cmake --build $(ASAN_BUILD) -j$(JOBS) --target antumbra_framegraph_tests antumbra_scene_tests antumbra_layering_tests antumbra_watch_tests \
 	  antumbra_editor_model_tests
 	@ctest --test-dir $(ASAN_BUILD) --output-on-failure --no-tests=error -j$(JOBS) -L asan
@@ -42,11 +42,16 @@ FUZZ_SECONDS ?= 60
 fuzz: deps
 	@cmake -S . -B $(FUZZ_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=clang \
 	  -DCMAKE_CXX_COMPILER=clang++ -DANTUMBRA_FUZZ=ON -DANTUMBRA_BUILD_TESTS=OFF \
-	  -DANTUMBRA_BUILD_BENCHMARKS=OFF $(CMAKE_ARGS) > /dev/null
+	  -DANTUMBRA_BUILD_BENCHMARKS=OFF $(CMAKE_ARGS)
 	@cmake --build $(FUZZ_BUILD) -j$(JOBS) --target antumbra_fuzz_graph
 	@mkdir -p $(FUZZ_BUILD)/corpus
 	$(FUZZ_BUILD)/fuzz/antumbra_fuzz_graph -max_total_time=$(FUZZ_SECONDS) -dict=fuzz/graph.dict \
 	  $(FUZZ_BUILD)/corpus fuzz/corpus
+
+# clang-format (no diff) and clang-tidy (.clang-tidy, every warning an error) over the
+# project's own sources; clean results are cached outside the clone (scripts/lint.py).
+lint: configure
+	@python3 scripts/lint.py --build $(BUILD) --jobs $(JOBS)
 
 bench: build
 	$(BUILD)/bench/antumbra_bench_graph

@@ -11,7 +11,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "light_layering/core/layer_assignment.hpp"
+#include "antumbra/layering/layer_assignment.hpp"
 
 namespace antumbra::layering {
 namespace {

@@ -3,7 +3,7 @@
 # nothing when everything is present. Uses sudo when not root.
 set -euo pipefail
 packages=(
-  build-essential cmake pkg-config clang
+  build-essential cmake pkg-config clang clang-tidy clang-format python3 git
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools
   glslang-dev glslang-tools spirv-tools
   libglm-dev libtinygltf-dev nlohmann-json3-dev libspdlog-dev libstb-dev libcli11-dev

@@ -9,16 +9,6 @@
 namespace antumbra::fg {
 namespace {
 
-// Built by appending: GCC 12 warns (-Wrestrict, a false positive) on "'" + s + "'".
-std::string quote_name(std::string_view s) {
-  std::string out;
-  out.reserve(s.size() + 2);
-  out += '\'';
-  out.append(s);
-  out += '\'';
-  return out;
-}
-
 // The output must name an image that some enabled pass writes.
 int check_output(const GraphDesc& graph, const std::vector<ResolvedPass>& passes,
                  Diagnostics& diags) {
@@ -200,9 +190,8 @@ Result<Plan> compile(const GraphDesc& graph, const Registry& registry,
   return Result<Plan>(std::move(plan), std::move(diags));
 }
 
-Result<Plan> compile_text(std::string_view text, const std::string& file, const Registry& registry,
-                          const CompileOptions& options) {
-  Result<JsonDocument> doc = parse_json(text, file);
+Result<Plan> compile_document(Result<JsonDocument> doc, const Registry& registry,
+                              const CompileOptions& options) {
   if (!doc) return doc.diagnostics();
   Result<GraphDesc> graph = parse_graph(doc.value());
   if (!graph) return graph.diagnostics();
@@ -213,17 +202,14 @@ Result<Plan> compile_text(std::string_view text, const std::string& file, const 
   return Result<Plan>(std::move(plan.value()), std::move(all));
 }
 
+Result<Plan> compile_text(std::string_view text, const std::string& file, const Registry& registry,
+                          const CompileOptions& options) {
+  return compile_document(parse_json(text, file), registry, options);
+}
+
 Result<Plan> compile_file(const std::string& path, const Registry& registry,
                           const CompileOptions& options) {
-  Result<JsonDocument> doc = load_json_file(path);
-  if (!doc) return doc.diagnostics();
-  Result<GraphDesc> graph = parse_graph(doc.value());
-  if (!graph) return graph.diagnostics();
-  Result<Plan> plan = compile(graph.value(), registry, options);
-  Diagnostics all = graph.diagnostics();
-  all.append(plan.diagnostics());
-  if (!plan) return all;
-  return Result<Plan>(std::move(plan.value()), std::move(all));
+  return compile_document(load_json_file(path), registry, options);
 }
 
 }  // namespace antumbra::fg

@@ -10,16 +10,6 @@
 namespace antumbra::fg {
 namespace {
 
-// Built by appending: GCC 12 warns (-Wrestrict, a false positive) on "'" + s + "'".
-std::string quote_name(std::string_view s) {
-  std::string out;
-  out.reserve(s.size() + 2);
-  out += '\'';
-  out.append(s);
-  out += '\'';
-  return out;
-}
-
 void add_edge(std::vector<DepEdge>& edges, DepEdge edge) {
   edges.push_back(edge);
 }

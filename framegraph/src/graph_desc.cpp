@@ -27,16 +27,6 @@ std::string json_type_name(const Json& value) {
   return "null";
 }
 
-// Built by appending: GCC 12 warns (-Wrestrict, a false positive) on "'" + s + "'".
-std::string quote_name(std::string_view s) {
-  std::string out;
-  out.reserve(s.size() + 2);
-  out += '\'';
-  out.append(s);
-  out += '\'';
-  return out;
-}
-
 class GraphParser {
  public:
   explicit GraphParser(const JsonDocument& doc) : doc_(doc) {}

@@ -48,9 +48,12 @@ std::string describe_plan_memory(const Plan& plan, int largest) {
     } else {
       out += std::to_string(r.extent.width) + "x" + std::to_string(r.extent.height);
       if (r.layers > 1) out += " x" + std::to_string(r.layers);
-      out += " " + std::string(to_string(r.format));
+      // Appended piecewise: GCC 12 warns (-Wrestrict, a false positive) on " " + string.
+      out += ' ';
+      out += to_string(r.format);
     }
-    out += " " + format_bytes(r.footprint.size);
+    out += ' ';
+    out += format_bytes(r.footprint.size);
   }
   return out + ")";
 }

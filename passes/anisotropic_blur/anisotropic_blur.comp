@@ -15,11 +15,13 @@
 // shadows bleed neither across depth edges nor between faces meeting at a corner (a
 // column's side seen edge-on next to its front at the same depth).
 
-layout(local_size_x = 8, local_size_y = 8) in;
+#include "../interface/shared/workgroups.h"
+layout(local_size_x = ANTUMBRA_IMAGE_GROUP, local_size_y = ANTUMBRA_IMAGE_GROUP) in;
 
 #include "../common/frame.glsl"
 
 layout(set = 0, binding = 0) uniform Frame { FrameUniforms frame; };
+#include "../common/view_space.glsl"
 layout(set = 0, binding = 1) uniform sampler2D g_depth;
 layout(set = 0, binding = 2) uniform sampler2D g_normal;
 layout(set = 0, binding = 3) uniform sampler2DArray penumbra;
@@ -48,9 +50,7 @@ vec3 view_normal(ivec2 full_pixel) {
 
 float linear_depth(ivec2 full_pixel) {
   float d = texelFetch(g_depth, full_pixel, 0).r;
-  vec2 ndc = (vec2(full_pixel) + 0.5) * frame.viewport.zw * 2.0 - 1.0;
-  vec4 view = frame.inv_proj * vec4(ndc, d, 1.0);
-  return -view.z / view.w;
+  return -view_position((vec2(full_pixel) + 0.5) * frame.viewport.zw, d).z;
 }
 
 // Supersampled first-direction input: the full-resolution texels under an output

@@ -84,7 +84,7 @@ void AnisotropicBlurPass::execute(fgvk::ExecuteContext& context) {
       {dx, dy},      params_.depth_threshold, params_.max_radius,      (params_.kernel - 1) / 2,
       shadow.layers, penumbra.layers * 4,     params_.normal_threshold};
   vkCmdPushConstants(cmd, compute_.layout, kCompute, 0, sizeof constants, &constants);
-  vkCmdDispatch(cmd, (shadow.extent.width + 7) / 8, (shadow.extent.height + 7) / 8, 1);
+  dispatch_groups(cmd, shadow.extent, ANTUMBRA_IMAGE_GROUP);
 }
 
 }  // namespace antumbra::passes

@@ -3,6 +3,6 @@
 #ifndef ANTUMBRA_FRAME_GLSL
 #define ANTUMBRA_FRAME_GLSL
 
-#include "frame_uniforms.h"
+#include "../interface/shared/frame_uniforms.h"
 
 #endif

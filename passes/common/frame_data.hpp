@@ -1,5 +1,6 @@
 #pragma once
-// The data every pass shares, laid out exactly as passes/common/*.glsl declare it.
+// The data every pass shares, laid out once in passes/interface/shared/*.h for the shaders and
+// for C++.
 // Building it is plain CPU work (tested without a device); uploading is gpu_scene's.
 
 #include <cstdint>
@@ -8,7 +9,8 @@
 #include <glm/glm.hpp>
 
 #include "antumbra/scene/scene.hpp"
-#include "frame_uniforms.h"
+#include "shared/frame_uniforms.h"
+#include "shared/scene_data.h"
 
 namespace antumbra::passes {
 
@@ -16,26 +18,16 @@ namespace antumbra::passes {
 using shared::FrameUniforms;
 static_assert(sizeof(FrameUniforms) == 5 * 64 + 5 * 16);
 
-// std430 `GpuLight` in lights.glsl (see there for the per-type meaning of the fields).
-struct GpuLight {
-  glm::vec4 position_range{0.0f};   // view space, range (directional: kDirectionalRange)
-  glm::vec4 color_intensity{0.0f};  // linear rgb, intensity
-  glm::vec4 world_size{0.0f};       // world position, light size
-  glm::vec4 direction_type{0.0f};   // view-space unit direction, type (0 point/1 spot/2 sun)
-  glm::vec4 cone{0.0f};             // spot: cos(outer), cos(inner) half-angles; else 0
-};
+// std430 `GpuLight`, declared once in scene_data.h (shared with the shaders).
+using shared::GpuLight;
 static_assert(sizeof(GpuLight) == 80);
 
 // Range written for directional lights: finite (no infinities in GPU buffers) and larger
 // than any scene, so sphere tests that forget the type still keep the sun.
 inline constexpr float kDirectionalRange = 1.0e30f;
 
-// std430 `GpuMaterial` in material.glsl.
-struct GpuMaterial {
-  glm::vec4 albedo{0.0f};
-  glm::vec4 params{0.0f};  // roughness, metallic, translucent, 0
-  glm::vec4 transmittance{1.0f};
-};
+// std430 `GpuMaterial`, declared once in scene_data.h.
+using shared::GpuMaterial;
 static_assert(sizeof(GpuMaterial) == 48);
 
 // One vertex of the merged world-space scene buffer (gbuffer.vert's inputs).

@@ -6,10 +6,14 @@
 namespace antumbra::passes {
 
 gpu::Pipeline build_fullscreen_pipeline(fgvk::PrepareContext& context, std::string_view fragment,
-                                        VkPipelineLayout layout, VkFormat color_format,
+                                        const gpu::DescriptorSetLayoutBuilder& bindings,
+                                        std::uint32_t push_constant_bytes, VkPipelineLayout layout,
+                                        VkFormat color_format,
                                         std::vector<std::string>& dependencies) {
   auto vert = load_shader(context, "common/fullscreen.vert", dependencies);
   auto frag = load_shader(context, fragment, dependencies);
+  check_shader_interface(context.pass.name, vert, bindings, 0);
+  check_shader_interface(context.pass.name, frag, bindings, push_constant_bytes);
   return gpu::GraphicsPipelineBuilder()
       .shader(VK_SHADER_STAGE_VERTEX_BIT, vert)
       .shader(VK_SHADER_STAGE_FRAGMENT_BIT, frag)

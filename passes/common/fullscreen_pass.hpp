@@ -7,11 +7,16 @@
 
 #include "antumbra/fgvk/pass.hpp"
 #include "antumbra/gpu/handle.hpp"
+#include "antumbra/gpu/pipelines.hpp"
 
 namespace antumbra::passes {
 
+// A full-screen triangle with `fragment`, checked against the pass's set layout
+// (`bindings`) and push-constant size before the pipeline is built.
 gpu::Pipeline build_fullscreen_pipeline(fgvk::PrepareContext& context, std::string_view fragment,
-                                        VkPipelineLayout layout, VkFormat color_format,
+                                        const gpu::DescriptorSetLayoutBuilder& bindings,
+                                        std::uint32_t push_constant_bytes, VkPipelineLayout layout,
+                                        VkFormat color_format,
                                         std::vector<std::string>& dependencies);
 
 // Begins dynamic rendering into `target` (contents discarded) and sets viewport/scissor.

@@ -1,7 +1,7 @@
 #include "layer_checks.hpp"
 
 #include "antumbra/base/diagnostic_codes.hpp"
-#include "light_layering/core/layer_cap.hpp"
+#include "antumbra/layering/layer_cap.hpp"
 #include "plan_checks.hpp"
 
 namespace antumbra::passes {

@@ -1,19 +1,19 @@
 #pragma once
-// CPU mirror of layer_table.glsl (std430).
+// The layer table (interface/shared/layer_table.h) seen from C++: its byte size.
 
 #include <cstdint>
 
 #include <glm/glm.hpp>
 
 #include "shadow_data.hpp"
+#include "shared/layer_table.h"
 
 namespace antumbra::passes {
 
-inline constexpr std::uint32_t kNoLayer = 0xFFFFFFFFu;
+using shared::kNoLayer;
 
-struct LayerTableHeader {
-  glm::uvec4 counts{0u};  // light count, layers used, cap, layers needed uncapped
-};
+using shared::LayerTableHeader;  // std430, declared once in layer_table.h
+static_assert(sizeof(LayerTableHeader) == 16);
 
 inline constexpr std::size_t kLayerTableBytes =
     sizeof(LayerTableHeader) + sizeof(std::uint32_t) * kMaxShadowLights;

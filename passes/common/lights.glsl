@@ -1,17 +1,11 @@
-// Lights as the GPU sees them (std430). Mirrors passes/common/frame_data.hpp.
+// Light helpers over GpuLight (interface/shared/scene_data.h, std430).
 // Types (direction_type.w): 0 point, 1 spot, 2 directional. A directional light has no
 // position and no attenuation: it shines along direction_type.xyz everywhere, and its
 // range is a huge finite value (kDirectionalRange) so sphere culling keeps it anyway.
 #ifndef ANTUMBRA_LIGHTS_GLSL
 #define ANTUMBRA_LIGHTS_GLSL
 
-struct GpuLight {
-  vec4 position_range;   // view-space position, range
-  vec4 color_intensity;  // linear rgb, intensity
-  vec4 world_size;       // world-space position, light size (radius)
-  vec4 direction_type;   // view-space unit direction the light shines along, type
-  vec4 cone;             // spot: x cos(outer half-angle), y cos(inner half-angle)
-};
+#include "../interface/shared/scene_data.h"
 
 bool light_is_directional(GpuLight light) { return light.direction_type.w > 1.5; }
 bool light_is_spot(GpuLight light) {

@@ -1,11 +1,7 @@
-// Materials as the GPU sees them (std430). Mirrors passes/common/frame_data.hpp.
+// Materials as the GPU sees them: GpuMaterial (interface/shared/scene_data.h, std430).
 #ifndef ANTUMBRA_MATERIAL_GLSL
 #define ANTUMBRA_MATERIAL_GLSL
 
-struct GpuMaterial {
-  vec4 albedo;         // linear rgb, a unused
-  vec4 params;         // x roughness, y metallic, z translucent (0/1), w unused
-  vec4 transmittance;  // rgba shadow colour of translucent occluders
-};
+#include "../interface/shared/scene_data.h"
 
 #endif

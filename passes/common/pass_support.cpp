@@ -4,13 +4,14 @@
 #include <array>
 #include <filesystem>
 
+#include "antumbra/base/diagnostic_codes.hpp"
 #include "antumbra/gpu/context.hpp"
 
 namespace antumbra::passes {
 
-gpu::ShaderModule load_shader(fgvk::PrepareContext& context, std::string_view relative,
-                              std::vector<std::string>& dependencies,
-                              const std::vector<gpu::ShaderDefine>& defines, gpu::Fnv1a64* code) {
+Shader load_shader(fgvk::PrepareContext& context, std::string_view relative,
+                   std::vector<std::string>& dependencies,
+                   const std::vector<gpu::ShaderDefine>& defines, gpu::Fnv1a64* code) {
   gpu::ShaderRequest request;
   request.path = std::filesystem::path(context.shader_root) / relative;
   request.defines = defines;
@@ -28,13 +29,63 @@ gpu::ShaderModule load_shader(fgvk::PrepareContext& context, std::string_view re
   if (code != nullptr) {
     code->update(result->spirv.data(), result->spirv.size() * sizeof(std::uint32_t));
   }
-  return gpu::create_shader_module(context.gpu, result->spirv,
-                                   context.pass.name + ":" + std::string(relative));
+  return {gpu::create_shader_module(context.gpu, result->spirv,
+                                    context.pass.name + ":" + std::string(relative)),
+          gpu::reflect_spirv(result->spirv), request.path.string()};
 }
 
-ComputePipeline build_compute_pipeline(fgvk::PrepareContext& context, VkShaderModule shader,
+namespace {
+
+[[noreturn]] void interface_error(std::string_view pass, const Shader& shader,
+                                  const std::string& message) {
+  base::Diagnostics diagnostics;
+  diagnostics.add({.code = codes::shader::kInterfaceMismatch,
+                   .severity = base::Severity::error,
+                   .message = "pass '" + std::string(pass) + "', " + message,
+                   .file = shader.file});
+  throw fgvk::PassError("shader " + shader.file + " does not match its pass", diagnostics);
+}
+
+}  // namespace
+
+void check_shader_interface(std::string_view pass, const Shader& shader,
+                            const gpu::DescriptorSetLayoutBuilder& layout,
+                            std::uint32_t push_constant_bytes) {
+  for (const gpu::SpirvBinding& used : shader.interface.bindings) {
+    const std::string what = shader.file + ": binding " + std::to_string(used.binding) +
+                             (used.name.empty() ? "" : " ('" + used.name + "')");
+    if (used.set != 0) {
+      interface_error(
+          pass, shader,
+          what + " is in set " + std::to_string(used.set) + "; passes declare one set, set 0");
+    }
+    const auto& declared = layout.bindings();
+    const auto it = std::find_if(declared.begin(), declared.end(),
+                                 [&](const auto& b) { return b.binding == used.binding; });
+    if (it == declared.end()) {
+      interface_error(pass, shader,
+                      what + " is a " + gpu::descriptor_type_name(used.type) +
+                          " in the shader and missing from the C++ layout");
+    }
+    if (it->descriptorType != used.type) {
+      interface_error(pass, shader,
+                      what + " is a " + gpu::descriptor_type_name(used.type) +
+                          " in the shader, a " + gpu::descriptor_type_name(it->descriptorType) +
+                          " in the C++ layout");
+    }
+  }
+  if (shader.interface.push_constant_bytes != push_constant_bytes) {
+    interface_error(pass, shader,
+                    shader.file + ": the push-constant block is " +
+                        std::to_string(shader.interface.push_constant_bytes) +
+                        " bytes in the shader, " + std::to_string(push_constant_bytes) + " in C++");
+  }
+}
+
+ComputePipeline build_compute_pipeline(fgvk::PrepareContext& context, const Shader& shader,
                                        const gpu::DescriptorSetLayoutBuilder& bindings,
                                        std::uint32_t push_constant_bytes) {
+  check_shader_interface(context.pass.name, shader, bindings, push_constant_bytes);
   ComputePipeline out;
   out.set_layout = bindings.build(context.gpu, context.pass.name + ".set");
   const std::array<VkDescriptorSetLayout, 1> sets{out.set_layout};
@@ -44,6 +95,11 @@ ComputePipeline build_compute_pipeline(fgvk::PrepareContext& context, VkShaderMo
   out.pipeline = gpu::create_compute_pipeline(
       context.gpu, out.layout, shader, context.pass.name + ".pipeline", context.pipeline_cache);
   return out;
+}
+
+void dispatch_groups(VkCommandBuffer cmd, VkExtent2D extent, std::uint32_t group,
+                     std::uint32_t depth) {
+  vkCmdDispatch(cmd, group_count(extent.width, group), group_count(extent.height, group), depth);
 }
 
 void set_viewport(VkCommandBuffer cmd, VkExtent2D extent) {

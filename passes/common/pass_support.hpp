@@ -10,27 +10,56 @@
 #include "antumbra/gpu/hash.hpp"
 #include "antumbra/gpu/pipelines.hpp"
 #include "antumbra/gpu/shader_compiler.hpp"
+#include "antumbra/gpu/spirv_interface.hpp"
+#include "shared/workgroups.h"
 
 namespace antumbra::passes {
+
+// A compiled shader and what it expects from the pipeline layout (its SPIR-V's bindings
+// and push-constant size), so the pass's C++ declaration can be checked against it.
+struct Shader {
+  gpu::ShaderModule module;
+  gpu::SpirvInterface interface;
+  std::string file;                                   // passes/<relative>, for messages
+  operator VkShaderModule() const { return module; }  // NOLINT(google-explicit-constructor)
+};
 
 // Compiles passes/<relative> (GLSL) and makes a shader module named after it. Adds
 // the file and its includes to `dependencies`. Throws fgvk::PassError with the
 // compiler's file:line diagnostics on failure. `code`, when given, is fed the SPIR-V
 // (passes that keep caches across reloads tell by it whether they draw the same way).
-gpu::ShaderModule load_shader(fgvk::PrepareContext& context, std::string_view relative,
-                              std::vector<std::string>& dependencies,
-                              const std::vector<gpu::ShaderDefine>& defines = {},
-                              gpu::Fnv1a64* code = nullptr);
+Shader load_shader(fgvk::PrepareContext& context, std::string_view relative,
+                   std::vector<std::string>& dependencies,
+                   const std::vector<gpu::ShaderDefine>& defines = {},
+                   gpu::Fnv1a64* code = nullptr);
 
-// A compute pipeline with one push-descriptor set and a push-constant block.
+// Checks `shader` against the pass's C++ declaration: every binding it declares exists in
+// `layout` with the same descriptor type, and its push-constant block is
+// `push_constant_bytes` long (0: it has none). A mismatch throws fgvk::PassError with a
+// diagnostic (SH010) at the shader's file naming the pass, the binding and both values.
+void check_shader_interface(std::string_view pass, const Shader& shader,
+                            const gpu::DescriptorSetLayoutBuilder& layout,
+                            std::uint32_t push_constant_bytes);
+
+// A compute pipeline with one push-descriptor set and a push-constant block; the shader
+// is checked against both first (check_shader_interface).
 struct ComputePipeline {
   gpu::DescriptorSetLayout set_layout;
   gpu::PipelineLayout layout;
   gpu::Pipeline pipeline;
 };
-ComputePipeline build_compute_pipeline(fgvk::PrepareContext& context, VkShaderModule shader,
+ComputePipeline build_compute_pipeline(fgvk::PrepareContext& context, const Shader& shader,
                                        const gpu::DescriptorSetLayoutBuilder& bindings,
                                        std::uint32_t push_constant_bytes);
+
+// Workgroups that cover `size` items in groups of `group`.
+constexpr std::uint32_t group_count(std::uint32_t size, std::uint32_t group) {
+  return (size + group - 1) / group;
+}
+// Dispatches square `group` x `group` workgroups over `extent` (workgroups.h sizes),
+// `depth` deep.
+void dispatch_groups(VkCommandBuffer cmd, VkExtent2D extent, std::uint32_t group,
+                     std::uint32_t depth = 1);
 
 // Sets a full-image viewport and scissor.
 void set_viewport(VkCommandBuffer cmd, VkExtent2D extent);

@@ -1,75 +1,109 @@
-// Per-tile light culling for 16x16 compute workgroups: the tile's depth bounds give a
-// view-space box; every light whose bounding sphere (lights.glsl light_bounding_sphere:
-// point lights' range sphere, spot lights' cone bound) touches it, and every directional
-// light, is appended to a shared list. A tile with more lights than the list holds sets
-// `tile_overflow`, and its pixels then loop over every light: slower, never wrong.
-//
-// The including shader defines TILE_LIGHTS_MAX, declares `Frame frame` (frame.glsl)
-// and `GpuLight lights[]` (lights.glsl), and calls tile_cull(depth, valid) with every
-// thread of the workgroup.
+// Per-tile light culling, one compute workgroup of TILE_SIZE x TILE_SIZE threads per
+// screen tile; the one implementation behind tiled-lighting, layered-penumbra and
+// layer-view (docs/technique.md 1, step 6):
+//  1. tile_begin(): the tile's linear depth bounds, min/max through shared-memory atomics
+//     on the float bits (positive floats order like their bit patterns), and the four
+//     side planes of its sub-frustum through the eye;
+//  2. tile_next_batch(): fills tile_lights[0 .. tile_count) with the lights whose bounding
+//     sphere (lights.glsl light_bounding_sphere: a point light's range sphere, a spot
+//     light's cone bound) touches the sub-frustum, and every directional light. It culls
+//     TILE_THREADS lights per step, one per thread, and only while the list still has room
+//     for a whole step, so the list never overflows: when it is full the caller uses what
+//     it has and calls again, and the cull goes on from where it stopped. No light is
+//     ever dropped and any light count works.
+// Every thread of the workgroup calls both, equally often (they hold barriers):
+//   tile_begin(p_view, has_geometry, image_size);
+//   uint next = 0u;
+//   while (tile_next_batch(next)) {
+//     for (uint k = 0u; k < tile_count; ++k) { ... lights[tile_lights[k]] ... }
+//   }
+// The including shader declares `FrameUniforms frame` (frame.glsl) and
+// `GpuLight lights[]` (lights.glsl) and sets layout(local_size_x = TILE_SIZE,
+// local_size_y = TILE_SIZE).
 #ifndef ANTUMBRA_TILE_CULL_GLSL
 #define ANTUMBRA_TILE_CULL_GLSL
 
-shared uint tile_min_bits;
-shared uint tile_max_bits;
-shared uint tile_count;
-shared bool tile_overflow;
-shared uint tile_lights[TILE_LIGHTS_MAX];
+#include "view_space.glsl"
+#include "../interface/shared/workgroups.h"
 
-vec3 tile_view_position(vec2 pixel, float depth) {
-  vec2 ndc = pixel * frame.viewport.zw * 2.0 - 1.0;
-  vec4 view = frame.inv_proj * vec4(ndc, depth, 1.0);
-  return view.xyz / view.w;
+#define TILE_SIZE ANTUMBRA_TILE_SIZE
+#define TILE_THREADS (TILE_SIZE * TILE_SIZE)
+#define TILE_LIST_CAPACITY 1024
+
+shared uint tile_z_min_bits;
+shared uint tile_z_max_bits;
+shared uint tile_count;
+shared uint tile_lights[TILE_LIST_CAPACITY];
+
+// Each invocation's copy of the tile's bounds, read after tile_begin()'s last barrier.
+float tile_z_min;
+float tile_z_max;
+vec3 tile_planes[4];
+
+// Direction (view space) through a screen point given in pixels.
+vec3 tile_view_ray(vec2 pixel, vec2 image_size) {
+  return view_position(pixel / image_size, 0.5);
 }
 
-// `depth` is the pixel's 0..1 depth; `valid` false for background or out-of-image pixels.
-void tile_cull(float depth, bool valid) {
-  uint local = gl_LocalInvocationIndex;
-  if (local == 0u) {
-    tile_min_bits = floatBitsToUint(1.0);
-    tile_max_bits = 0u;
-    tile_count = 0u;
-    tile_overflow = false;
+// `p` is the pixel's view-space position, `has_geometry` false for background pixels and
+// pixels outside the image.
+void tile_begin(vec3 p, bool has_geometry, vec2 image_size) {
+  if (gl_LocalInvocationIndex == 0u) {
+    tile_z_min_bits = floatBitsToUint(3.0e38);
+    tile_z_max_bits = 0u;
   }
   barrier();
-  if (valid) {
-    // Depths are in [0, 1]: their bit patterns order like the floats.
-    atomicMin(tile_min_bits, floatBitsToUint(depth));
-    atomicMax(tile_max_bits, floatBitsToUint(depth));
+  if (has_geometry) {
+    uint z = floatBitsToUint(max(-p.z, 0.0));
+    atomicMin(tile_z_min_bits, z);
+    atomicMax(tile_z_max_bits, z);
   }
   barrier();
-  float dmin = uintBitsToFloat(tile_min_bits);
-  float dmax = uintBitsToFloat(tile_max_bits);
-  if (dmax < dmin) return;  // no geometry in this tile: the list stays empty
+  tile_z_min = uintBitsToFloat(tile_z_min_bits);
+  tile_z_max = uintBitsToFloat(tile_z_max_bits);
 
-  vec2 lo = vec2(gl_WorkGroupID.xy * gl_WorkGroupSize.xy);
-  vec2 hi = lo + vec2(gl_WorkGroupSize.xy);
-  vec3 box_min = vec3(1e30);
-  vec3 box_max = vec3(-1e30);
-  for (int c = 0; c < 8; ++c) {
-    vec2 pixel = vec2((c & 1) != 0 ? hi.x : lo.x, (c & 2) != 0 ? hi.y : lo.y);
-    vec3 p = tile_view_position(pixel, (c & 4) != 0 ? dmax : dmin);
-    box_min = min(box_min, p);
-    box_max = max(box_max, p);
+  // Side planes through the eye, normals pointing into the tile (view space).
+  vec2 lo = vec2(gl_WorkGroupID.xy * TILE_SIZE);
+  vec2 hi = min(lo + vec2(TILE_SIZE), image_size);
+  vec3 r00 = tile_view_ray(lo, image_size), r10 = tile_view_ray(vec2(hi.x, lo.y), image_size);
+  vec3 r11 = tile_view_ray(hi, image_size), r01 = tile_view_ray(vec2(lo.x, hi.y), image_size);
+  vec3 centre = tile_view_ray(0.5 * (lo + hi), image_size);
+  tile_planes = vec3[4](normalize(cross(r00, r10)), normalize(cross(r10, r11)),
+                        normalize(cross(r11, r01)), normalize(cross(r01, r00)));
+  for (int i = 0; i < 4; ++i) {
+    if (dot(tile_planes[i], centre) < 0.0) tile_planes[i] = -tile_planes[i];
   }
+}
+
+bool tile_light_reaches(uint index) {
+  // Range sphere (point) or the cone's bounding sphere (spot; lights.glsl).
+  vec4 light = light_bounding_sphere(lights[index]);
+  // Slightly inflated so float error at a plane never drops a reaching light.
+  float r = light.w * 1.0001 + 1e-4;
+  float d = -light.z;
+  bool hit = d + r >= tile_z_min && d - r <= tile_z_max;
+  for (int i = 0; i < 4; ++i) hit = hit && dot(tile_planes[i], light.xyz) >= -r;
+  return hit || light_is_directional(lights[index]);  // the sun lights every tile
+}
+
+// The next batch of lights in tile_lights[0 .. tile_count); false when every light has
+// been culled (or the tile shows only background: no light can matter).
+bool tile_next_batch(inout uint next) {
+  barrier();  // everyone has read the previous list before it is emptied
   uint count = frame.counts.x;
-  uint threads = gl_WorkGroupSize.x * gl_WorkGroupSize.y;
-  for (uint i = local; i < count; i += threads) {
-    // Directional lights cover every tile; point lights are culled by their range
-    // sphere, spot lights by their cone's bounding sphere (light_bounding_sphere).
-    vec4 sphere = light_bounding_sphere(lights[i]);
-    vec3 closest = clamp(sphere.xyz, box_min, box_max);
-    vec3 d = closest - sphere.xyz;
-    if (light_is_directional(lights[i]) || dot(d, d) <= sphere.w * sphere.w) {
-      uint slot = atomicAdd(tile_count, 1u);
-      if (slot < TILE_LIGHTS_MAX) {
-        tile_lights[slot] = i;
-      } else {
-        tile_overflow = true;
-      }
-    }
-  }
+  if (tile_z_min > tile_z_max || next >= count) return false;
+  if (gl_LocalInvocationIndex == 0u) tile_count = 0u;
   barrier();
+  while (next < count) {
+    uint used = tile_count;  // uniform: read between barriers, nobody adds meanwhile
+    barrier();
+    if (used + TILE_THREADS > TILE_LIST_CAPACITY) break;
+    uint index = next + gl_LocalInvocationIndex;
+    if (index < count && tile_light_reaches(index)) tile_lights[atomicAdd(tile_count, 1u)] = index;
+    barrier();
+    next += TILE_THREADS;
+  }
+  return true;
 }
 
 #endif

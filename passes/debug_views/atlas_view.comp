@@ -5,9 +5,10 @@
 // the owning light's near plane and range (bright = near the light, black = cleared /
 // nothing within range); without it, raw depth is shown as 1 - depth.
 
-layout(local_size_x = 8, local_size_y = 8) in;
+#include "../interface/shared/workgroups.h"
+layout(local_size_x = ANTUMBRA_IMAGE_GROUP, local_size_y = ANTUMBRA_IMAGE_GROUP) in;
 
-#include "../common/shadow_data.glsl"
+#include "../interface/shared/shadow_data.h"
 #include "../common/shadow_sampling.glsl"
 
 layout(set = 0, binding = 0) uniform sampler2DArray atlas;

@@ -3,7 +3,7 @@
 #ifndef ANTUMBRA_DEBUG_PALETTE_GLSL
 #define ANTUMBRA_DEBUG_PALETTE_GLSL
 
-#include "layer_palette.h"
+#include "../interface/shared/layer_palette.h"
 
 const uint kLayerPalette[32] = uint[32](ANTUMBRA_LAYER_PALETTE);
 

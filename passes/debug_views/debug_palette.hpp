@@ -5,7 +5,7 @@
 #include <array>
 #include <cstdint>
 
-#include "layer_palette.h"
+#include "shared/layer_palette.h"
 
 namespace antumbra::passes {
 

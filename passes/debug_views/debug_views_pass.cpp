@@ -32,10 +32,6 @@ struct AtlasViewConstants {
   std::uint32_t layers;
 };
 
-std::uint32_t groups(std::uint32_t size, std::uint32_t local) {
-  return (size + local - 1) / local;
-}
-
 // Square cells, as large as fit: `columns` fixed, or the column count that gives the
 // largest cells for this many faces in this image.
 void grid_layout(VkExtent2D extent, std::uint32_t faces, std::uint32_t fixed_columns,
@@ -88,8 +84,8 @@ void LayerViewPass::execute(fgvk::ExecuteContext& context) {
   const LayerViewConstants constants{params_.dominant ? 1u : 0u, params_.dim, params_.stripe_width,
                                      params_.no_layer_grey};
   vkCmdPushConstants(cmd, compute_.layout, kCompute, 0, sizeof constants, &constants);
-  // 16x16 groups: the shader culls lights per tile against the tile's depth bounds.
-  vkCmdDispatch(cmd, groups(view.extent.width, 16), groups(view.extent.height, 16), 1);
+  // One workgroup per screen tile: the shader culls lights per tile (tile_cull.glsl).
+  dispatch_groups(cmd, view.extent, ANTUMBRA_TILE_SIZE);
 }
 
 void PenumbraViewPass::prepare(fgvk::PrepareContext& context) {
@@ -111,7 +107,7 @@ void PenumbraViewPass::execute(fgvk::ExecuteContext& context) {
       .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, compute_.layout);
   const PenumbraViewConstants constants{params_.max_width, penumbra.layers};
   vkCmdPushConstants(cmd, compute_.layout, kCompute, 0, sizeof constants, &constants);
-  vkCmdDispatch(cmd, groups(view.extent.width, 8), groups(view.extent.height, 8), 1);
+  dispatch_groups(cmd, view.extent, ANTUMBRA_IMAGE_GROUP);
 }
 
 void AtlasViewPass::prepare(fgvk::PrepareContext& context) {
@@ -147,7 +143,7 @@ void AtlasViewPass::execute(fgvk::ExecuteContext& context) {
       .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, compute_.layout);
   const AtlasViewConstants constants{first, faces, columns, cell, atlas.layers};
   vkCmdPushConstants(cmd, compute_.layout, kCompute, 0, sizeof constants, &constants);
-  vkCmdDispatch(cmd, groups(view.extent.width, 8), groups(view.extent.height, 8), 1);
+  dispatch_groups(cmd, view.extent, ANTUMBRA_IMAGE_GROUP);
 }
 
 }  // namespace antumbra::passes

@@ -5,7 +5,8 @@
 // Zero width (no light, or fully lit / no blocker) stays black; any positive width gets
 // a colour of the ramp, so "where is there a penumbra at all" reads at a glance.
 
-layout(local_size_x = 8, local_size_y = 8) in;
+#include "../interface/shared/workgroups.h"
+layout(local_size_x = ANTUMBRA_IMAGE_GROUP, local_size_y = ANTUMBRA_IMAGE_GROUP) in;
 
 #include "debug_palette.glsl"
 

@@ -25,19 +25,19 @@ DeferredLightingPass::DeferredLightingPass(const fg::PlanPass& pass)
 
 void DeferredLightingPass::prepare(fgvk::PrepareContext& context) {
   constexpr VkShaderStageFlags kFrag = VK_SHADER_STAGE_FRAGMENT_BIT;
-  set_layout_ = gpu::DescriptorSetLayoutBuilder()
-                    .uniform_buffer(0, kFrag)
-                    .storage_buffer(1, kFrag)
-                    .combined_image_sampler(2, kFrag)
-                    .combined_image_sampler(3, kFrag)
-                    .combined_image_sampler(4, kFrag)
-                    .build(context.gpu, context.pass.name + ".set");
+  gpu::DescriptorSetLayoutBuilder bindings;
+  bindings.uniform_buffer(0, kFrag)
+      .storage_buffer(1, kFrag)
+      .combined_image_sampler(2, kFrag)
+      .combined_image_sampler(3, kFrag)
+      .combined_image_sampler(4, kFrag);
+  set_layout_ = bindings.build(context.gpu, context.pass.name + ".set");
   const std::array<VkDescriptorSetLayout, 1> sets{set_layout_};
   const std::array<VkPushConstantRange, 1> push{{{kFrag, 0, sizeof(PushConstants)}}};
   layout_ = gpu::create_pipeline_layout(context.gpu, sets, push, context.pass.name + ".layout");
-  pipeline_ =
-      build_fullscreen_pipeline(context, "deferred_lighting/deferred_lighting.frag", layout_,
-                                context.bindings.required_image("hdr").format, shader_files_);
+  pipeline_ = build_fullscreen_pipeline(
+      context, "deferred_lighting/deferred_lighting.frag", bindings, sizeof(PushConstants), layout_,
+      context.bindings.required_image("hdr").format, shader_files_);
 }
 
 void DeferredLightingPass::execute(fgvk::ExecuteContext& context) {

@@ -20,10 +20,12 @@ void GBufferPass::prepare(fgvk::PrepareContext& context) {
   const auto& normal = context.bindings.required_image("normal");
   const auto& albedo = context.bindings.required_image("albedo");
 
-  set_layout_ = gpu::DescriptorSetLayoutBuilder()
-                    .uniform_buffer(0, VK_SHADER_STAGE_VERTEX_BIT)
-                    .storage_buffer(1, VK_SHADER_STAGE_FRAGMENT_BIT)
-                    .build(context.gpu, context.pass.name + ".set");
+  gpu::DescriptorSetLayoutBuilder bindings;
+  bindings.uniform_buffer(0, VK_SHADER_STAGE_VERTEX_BIT)
+      .storage_buffer(1, VK_SHADER_STAGE_FRAGMENT_BIT);
+  check_shader_interface(context.pass.name, vert, bindings, 0);
+  check_shader_interface(context.pass.name, frag, bindings, 0);
+  set_layout_ = bindings.build(context.gpu, context.pass.name + ".set");
   const std::array<VkDescriptorSetLayout, 1> sets{set_layout_};
   layout_ = gpu::create_pipeline_layout(context.gpu, sets, {}, context.pass.name + ".layout");
   const bool cull = params_.cull_back_faces;

@@ -10,13 +10,10 @@
 // at most one light feeds a layer at a pixel; when an over-cap policy made two share
 // a layer, the lower light index wins, so the result is deterministic.
 
-layout(local_size_x = 16, local_size_y = 16) in;
-
-#define TILE_LIGHTS_MAX 256
 #include "../common/frame.glsl"
-#include "../common/layer_table.glsl"
+#include "../interface/shared/layer_table.h"
 #include "../common/lights.glsl"
-#include "../common/shadow_data.glsl"
+#include "../interface/shared/shadow_data.h"
 
 layout(set = 0, binding = 0) uniform Frame { FrameUniforms frame; };
 layout(set = 0, binding = 1) readonly buffer Lights { GpuLight lights[]; };
@@ -58,14 +55,16 @@ layout(push_constant) uniform Params {
 #include "../common/tile_cull.glsl"
 #include "penumbra_common.glsl"
 
+layout(local_size_x = TILE_SIZE, local_size_y = TILE_SIZE) in;
+
 void main() {
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
   ivec2 size = textureSize(g_depth, 0);
   bool inside = all(lessThan(pixel, size));
   float depth = inside ? texelFetch(g_depth, pixel, 0).r : 1.0;
   bool valid = inside && depth < 1.0;
-  tile_cull(depth, valid);
-  if (!inside) return;
+  vec3 view_pos = valid ? view_position((vec2(pixel) + 0.5) * frame.viewport.zw, depth) : vec3(0.0);
+  tile_begin(view_pos, valid, vec2(size));
 
   vec4 penumbra[8];
   uvec4 translucency[8];
@@ -79,14 +78,18 @@ void main() {
   uint owner[32];
   for (int i = 0; i < 32; ++i) owner[i] = 0xFFFFFFFFu;
 
+  vec3 world = vec3(0.0);
+  vec3 n_world = vec3(0.0);
   if (valid) {
-    vec3 view_pos = tile_view_position(vec2(pixel) + 0.5, depth);
-    vec3 world = (frame.inv_view * vec4(view_pos, 1.0)).xyz;
+    world = (frame.inv_view * vec4(view_pos, 1.0)).xyz;
     vec3 n_view = normalize(texelFetch(g_normal, pixel, 0).xyz);
-    vec3 n_world = normalize(mat3(frame.inv_view) * n_view);
-    uint count = tile_overflow ? frame.counts.x : min(tile_count, uint(TILE_LIGHTS_MAX));
-    for (uint k = 0u; k < count; ++k) {
-      uint li = tile_overflow ? k : tile_lights[k];
+    n_world = normalize(mat3(frame.inv_view) * n_view);
+  }
+  uint next = 0u;
+  while (tile_next_batch(next)) {
+    if (!valid) continue;
+    for (uint k = 0u; k < tile_count; ++k) {
+      uint li = tile_lights[k];
       if (li >= ANTUMBRA_MAX_SHADOW_LIGHTS) continue;
       uint layer = layer_of[li];
       if (layer >= max_layers || layer >= 32u) continue;
@@ -113,6 +116,7 @@ void main() {
       esm[slot][channel] = s.esm;
     }
   }
+  if (!inside) return;
 
   imageStore(hard_out, pixel, uvec4(hard_bits));
   uint slots = (max_layers + 3u) / 4u;

@@ -96,7 +96,7 @@ void LayeredPenumbraPass::execute(fgvk::ExecuteContext& context) {
       params_.search_taps,      params_.esm_constant,
   };
   vkCmdPushConstants(cmd, compute_.layout, kCompute, 0, sizeof constants, &constants);
-  vkCmdDispatch(cmd, (depth.extent.width + 15) / 16, (depth.extent.height + 15) / 16, 1);
+  dispatch_groups(cmd, depth.extent, ANTUMBRA_TILE_SIZE);
 }
 
 }  // namespace antumbra::passes

@@ -7,12 +7,12 @@
 #include <nlohmann/json.hpp>
 
 #include "antumbra/gpu/context.hpp"
+#include "antumbra/layering/scene_spheres.hpp"
 #include "antumbra/scene/scene.hpp"
 #include "common/frame_data.hpp"
 #include "common/frame_resources.hpp"
 #include "common/layer_table.hpp"
 #include "common/pass_support.hpp"
-#include "light_layering/core/scene_spheres.hpp"
 
 namespace antumbra::passes {
 

@@ -10,8 +10,8 @@
 #include "antumbra/fg/param_table.hpp"
 #include "antumbra/fgvk/pass.hpp"
 #include "antumbra/gpu/resources.hpp"
-#include "light_layering/core/layer_assignment.hpp"
-#include "light_layering/core/layer_cap.hpp"
+#include "antumbra/layering/layer_assignment.hpp"
+#include "antumbra/layering/layer_cap.hpp"
 
 namespace antumbra::passes {
 

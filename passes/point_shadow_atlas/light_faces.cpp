@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "common/light_bounds.hpp"
+#include "antumbra/scene/light_bounds.hpp"
 
 namespace antumbra::passes::light_faces {
 namespace {
@@ -73,8 +73,8 @@ shadow_faces::FacePyramid spot_pyramid(const glm::vec3& position, const glm::vec
 }
 
 bool spot_may_be_visible(const shadow_faces::Frustum& camera, const scene::PointLight& light) {
-  const LightBound bound =
-      spot_bounding_sphere(light.position, light.direction, light.range, light.spot_outer);
+  const scene::LightBound bound =
+      scene::spot_bounding_sphere(light.position, light.direction, light.range, light.spot_outer);
   if (!shadow_faces::sphere_may_intersect(camera, bound.centre, bound.radius)) return false;
   if (light.spot_outer > kMaxSpotPyramidDegrees || glm::length(light.direction) <= 0.0f) {
     return true;

@@ -32,7 +32,7 @@ glm::mat4 spot_view_proj(const glm::vec3& position, const glm::vec3& direction, 
 
 // The region a spot light can light, as a convex volume for the culling tests: the square
 // pyramid circumscribing its outer cone (side planes at the outer half-angle), cut at
-// `range` along the axis. It holds the lit spherical sector (common/light_bounds.hpp).
+// `range` along the axis. It holds the lit spherical sector (antumbra/scene/light_bounds.hpp).
 // Only for outer half-angles below kMaxSpotPyramidDegrees (wider cones: the sphere).
 inline constexpr float kMaxSpotPyramidDegrees = 75.0f;
 shadow_faces::FacePyramid spot_pyramid(const glm::vec3& position, const glm::vec3& direction,

@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "antumbra/base/text.hpp"
 #include "antumbra/gpu/context.hpp"
 #include "antumbra/gpu/pipelines.hpp"
 #include "antumbra/gpu/vk_check.hpp"
@@ -185,18 +186,13 @@ void PointShadowAtlasPass::execute(fgvk::ExecuteContext& context) {
   upload(context, frame, slot);
 
   if (!frame.unshadowed.empty()) {
-    std::string names;
-    for (const auto& name : frame.unshadowed) {
-      if (!names.empty()) names += ", ";
-      names += name;
-    }
     context.report.add(
         {context.pass.name, codes::shadow_atlas::kLightsUnshadowed, base::Severity::warning,
          std::to_string(frame.unshadowed.size()) +
              " shadow-casting light(s) do not fit the atlas (" + std::to_string(settings_.layers) +
              " layers: 6 per point light, 1 per spot or sun) and cast no "
              "shadows: " +
-             names,
+             base::name_list(frame.unshadowed),
          base::Json{{"lights", frame.unshadowed}, {"layers", settings_.layers}}});
   }
   const AtlasStats& s = frame.stats;

@@ -2,12 +2,13 @@
 #ifndef ANTUMBRA_MIN_COMMON_GLSL
 #define ANTUMBRA_MIN_COMMON_GLSL
 
-#include "../common/shadow_data.glsl"
+#include "../interface/shared/shadow_data.h"
 
 // Each workgroup loops over a span x span region, so a layer takes a few workgroups:
 // skipped (cached) layers then cost almost nothing, even on CPU implementations where
 // every launched workgroup has a fixed cost.
-#define GROUP 16
+#include "../interface/shared/workgroups.h"
+#define GROUP ANTUMBRA_MIN_FILTER_GROUP
 
 layout(set = 0, binding = 0) readonly buffer Shadows {
   ShadowHeader shadow_header;

@@ -5,6 +5,7 @@
 #include "antumbra/gpu/commands.hpp"
 #include "antumbra/gpu/context.hpp"
 #include "antumbra/gpu/pipelines.hpp"
+#include "shared/workgroups.h"
 
 namespace antumbra::passes {
 namespace {
@@ -16,7 +17,7 @@ struct PushConstants {
   std::uint32_t span;
 };
 
-constexpr std::uint32_t kGroup = 16;         // min_common.glsl's GROUP
+constexpr std::uint32_t kGroup = ANTUMBRA_MIN_FILTER_GROUP;  // min_common.glsl's GROUP
 constexpr std::uint32_t kGroupsPerAxis = 2;  // per layer: 2x2 workgroups loop over the face
 constexpr VkShaderStageFlags kCompute = VK_SHADER_STAGE_COMPUTE_BIT;
 constexpr VkPipelineStageFlags2 kComputeStage = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;

@@ -22,9 +22,11 @@
 #include "../common/lights.glsl"
 #include "reference_faces.glsl"
 
-layout(local_size_x = 8, local_size_y = 8) in;
+#include "../interface/shared/workgroups.h"
+layout(local_size_x = ANTUMBRA_IMAGE_GROUP, local_size_y = ANTUMBRA_IMAGE_GROUP) in;
 
 layout(set = 0, binding = 0) uniform Frame { FrameUniforms frame; };
+#include "../common/view_space.glsl"
 layout(set = 0, binding = 1, std430) readonly buffer Lights { GpuLight lights[]; };
 layout(set = 0, binding = 2) uniform sampler2D g_depth;
 layout(set = 0, binding = 3) uniform sampler2D g_normal;
@@ -62,8 +64,7 @@ void main() {
   float depth = texelFetch(g_depth, ivec2(pixel), 0).r;
   if (depth >= 1.0) return;
   vec2 uv = (vec2(pixel) + 0.5) / vec2(image_size);
-  vec4 view = frame.inv_proj * vec4(uv * 2.0 - 1.0, depth, 1.0);
-  vec3 p = (frame.inv_view * vec4(view.xyz / view.w, 1.0)).xyz;
+  vec3 p = (frame.inv_view * vec4(view_position(uv, depth), 1.0)).xyz;
   vec3 n = normalize(mat3(frame.inv_view) * normalize(texelFetch(g_normal, ivec2(pixel), 0).xyz));
   uint pixels = image_size.x * image_size.y;
   uint pixel_index = pixel.y * image_size.x + pixel.x;

@@ -5,7 +5,8 @@
 // Defines: HDR_FORMAT, HAS_PENUMBRA.
 #include "../common/frame.glsl"
 
-layout(local_size_x = 8, local_size_y = 8) in;
+#include "../interface/shared/workgroups.h"
+layout(local_size_x = ANTUMBRA_IMAGE_GROUP, local_size_y = ANTUMBRA_IMAGE_GROUP) in;
 
 layout(set = 0, binding = 0) uniform Frame { FrameUniforms frame; };
 layout(set = 0, binding = 1) uniform sampler2D g_depth;

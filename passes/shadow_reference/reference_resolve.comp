@@ -1,7 +1,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 // End of a light batch: each light's averaged coloured visibility multiplies the same
-// shading as deferred-lighting / tiled-lighting (tiled_lighting/shading.glsl), per
+// shading as deferred-lighting / tiled-lighting (common/shading.glsl), per
 // channel, summed into the per-pixel accumulator (rgb radiance, a = lights in penumbra).
 // A light counts as in penumbra where its sample set is split: the fraction of samples
 // no opaque caster blocks, or the fraction neither blocked nor tinted, is strictly
@@ -10,11 +10,13 @@
 // pane's flat coloured shadow is not a penumbra but its edges are.
 #include "../common/frame.glsl"
 #include "../common/lights.glsl"
-#include "../tiled_lighting/shading.glsl"
+#include "../common/shading.glsl"
 
-layout(local_size_x = 8, local_size_y = 8) in;
+#include "../interface/shared/workgroups.h"
+layout(local_size_x = ANTUMBRA_IMAGE_GROUP, local_size_y = ANTUMBRA_IMAGE_GROUP) in;
 
 layout(set = 0, binding = 0) uniform Frame { FrameUniforms frame; };
+#include "../common/view_space.glsl"
 layout(set = 0, binding = 1, std430) readonly buffer Lights { GpuLight lights[]; };
 layout(set = 0, binding = 2) uniform sampler2D g_depth;
 layout(set = 0, binding = 3) uniform sampler2D g_normal;
@@ -37,8 +39,7 @@ void main() {
   float depth = texelFetch(g_depth, ivec2(pixel), 0).r;
   if (depth >= 1.0) return;
   vec2 uv = (vec2(pixel) + 0.5) / vec2(image_size);
-  vec4 view = frame.inv_proj * vec4(uv * 2.0 - 1.0, depth, 1.0);
-  Surface surface = make_surface(view.xyz / view.w, texelFetch(g_normal, ivec2(pixel), 0),
+  Surface surface = make_surface(view_position(uv, depth), texelFetch(g_normal, ivec2(pixel), 0),
                                  texelFetch(g_albedo, ivec2(pixel), 0));
   uint pixels = image_size.x * image_size.y;
   uint pixel_index = pixel.y * image_size.x + pixel.x;

@@ -14,7 +14,6 @@ inline constexpr VkFormat kFaceFormat = VK_FORMAT_D32_SFLOAT;
 // needs millimetres at a few metres).
 inline constexpr VkFormat kTintFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
 inline constexpr std::uint32_t kFacesPerLight = 6;
-inline constexpr std::uint32_t kGroupSize = 8;  // local_size_x/y of the compute shaders
 // Visibility strictly inside (kPenumbraLow, kPenumbraHigh) counts as penumbra.
 inline constexpr float kPenumbraLow = 0.02f;
 inline constexpr float kPenumbraHigh = 0.98f;

@@ -23,8 +23,7 @@ constexpr VkAccessFlags2 kStorageRW =
     VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
 
 void dispatch_pixels(VkCommandBuffer cmd, VkExtent2D extent) {
-  vkCmdDispatch(cmd, (extent.width + reference::kGroupSize - 1) / reference::kGroupSize,
-                (extent.height + reference::kGroupSize - 1) / reference::kGroupSize, 1);
+  dispatch_groups(cmd, extent, ANTUMBRA_IMAGE_GROUP);
 }
 
 gpu::ImageBarrier faces_barrier(VkImage image, VkImageLayout from, VkImageLayout to) {

@@ -14,7 +14,7 @@
 #ifndef ANTUMBRA_TILED_SHADOW_FILTER_GLSL
 #define ANTUMBRA_TILED_SHADOW_FILTER_GLSL
 
-#include "../common/shadow_data.glsl"
+#include "../interface/shared/shadow_data.h"
 #include "../common/shadow_sampling.glsl"
 
 // A receiver in one atlas face, with what the filters need beyond ShadowCoord.

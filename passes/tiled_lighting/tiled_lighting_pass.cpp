@@ -13,8 +13,6 @@
 namespace antumbra::passes {
 namespace {
 
-constexpr std::uint32_t kTileSize = 16;  // TILE_SIZE in tiled_lighting.comp
-
 struct PushConstants {
   float exposure;
   float ambient_scale;
@@ -169,8 +167,7 @@ void TiledLightingPass::execute(fgvk::ExecuteContext& context) {
                                 params_.lighting.specular, params_.light_size_scale,
                                 hdr.extent.width,          hdr.extent.height};
   vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof constants, &constants);
-  vkCmdDispatch(cmd, (hdr.extent.width + kTileSize - 1) / kTileSize,
-                (hdr.extent.height + kTileSize - 1) / kTileSize, 1);
+  dispatch_groups(cmd, hdr.extent, ANTUMBRA_TILE_SIZE);
 }
 
 }  // namespace antumbra::passes

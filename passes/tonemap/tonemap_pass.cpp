@@ -28,14 +28,15 @@ TonemapPass::TonemapPass(const fg::PlanPass& pass) : params_(param_table().read(
 
 void TonemapPass::prepare(fgvk::PrepareContext& context) {
   constexpr VkShaderStageFlags kFrag = VK_SHADER_STAGE_FRAGMENT_BIT;
-  set_layout_ = gpu::DescriptorSetLayoutBuilder().combined_image_sampler(0, kFrag).build(
-      context.gpu, context.pass.name + ".set");
+  gpu::DescriptorSetLayoutBuilder bindings;
+  bindings.combined_image_sampler(0, kFrag);
+  set_layout_ = bindings.build(context.gpu, context.pass.name + ".set");
   const std::array<VkDescriptorSetLayout, 1> sets{set_layout_};
   const std::array<VkPushConstantRange, 1> push{{{kFrag, 0, sizeof(PushConstants)}}};
   layout_ = gpu::create_pipeline_layout(context.gpu, sets, push, context.pass.name + ".layout");
-  pipeline_ =
-      build_fullscreen_pipeline(context, "tonemap/tonemap.frag", layout_,
-                                context.bindings.required_image("ldr").format, shader_files_);
+  pipeline_ = build_fullscreen_pipeline(
+      context, "tonemap/tonemap.frag", bindings, sizeof(PushConstants), layout_,
+      context.bindings.required_image("ldr").format, shader_files_);
 }
 
 void TonemapPass::execute(fgvk::ExecuteContext& context) {

@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "antumbra/fg/compiler.hpp"
+#include "antumbra/layering/layer_assignment.hpp"
 #include "debug_views/debug_palette.hpp"
-#include "light_layering/core/layer_assignment.hpp"
 #include "register_builtin_passes.hpp"
 #include "render_test_support.hpp"
 

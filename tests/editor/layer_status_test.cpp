@@ -7,8 +7,8 @@
 
 #include "antumbra/editor/layer_status.hpp"
 #include "antumbra/editor/scene_document.hpp"
+#include "antumbra/layering/scene_spheres.hpp"
 #include "editor_test_support.hpp"
-#include "light_layering/core/scene_spheres.hpp"
 
 namespace antumbra::editor {
 namespace {

@@ -8,11 +8,11 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
-#include <thread>
 
 #include "antumbra/editor/graph_document.hpp"
 #include "antumbra/editor/recovery_file.hpp"
 #include "antumbra/editor/scene_document.hpp"
+#include "antumbra/layering/layer_cap.hpp"
 #include "gpu_test_support.hpp"
 #include "register_builtin_passes.hpp"
 #include "render_test_support.hpp"
@@ -40,7 +40,8 @@ class EditorStateGpu : public RenderTest {
     EXPECT_TRUE(scene.ok() && document.ok());
     auto state = std::make_unique<EditorState>(session, std::move(scene.value()),
                                                std::move(document.value()),
-                                               editor::lookup_in(registry_.reflection()));
+                                               editor::lookup_in(registry_.reflection()),
+                                               /*poll_interval_ms=*/0.0);
     EXPECT_TRUE(state->start());
     return state;
   }
@@ -54,11 +55,10 @@ class EditorStateGpu : public RenderTest {
     std::ofstream(file, std::ios::binary | std::ios::trunc) << text;
   }
 
-  // The watcher polls modification times a few times a second: make the change visible
-  // to it (a later mtime) and give the poll interval time to pass.
+  // The watcher compares modification times: make the change visible to it (a later mtime);
+  // the state was made with a poll interval of 0, so this poll looks at once.
   static void poll_after_change(EditorState& state, const fs::path& changed) {
     fs::last_write_time(changed, fs::last_write_time(changed) + std::chrono::seconds(2));
-    std::this_thread::sleep_for(std::chrono::milliseconds(300));
     state.poll_files();
   }
 
@@ -72,7 +72,7 @@ TEST_F(EditorStateGpu, UndoFollowsOneOrderAcrossSceneAndGraph) {
   const auto c = static_cast<std::size_t>(state->scene().find_light("lamp c"));
   state->scene_edited(state->scene().set_position(c, {1.5f, 2.0f, 0.0f}));
   EXPECT_TRUE(state->report().over_cap());
-  state->set_param(state->layering_pass(), "maxLayers", 4);
+  state->set_param(state->layering_pass(), layering::kLayerCap.name, 4);
   EXPECT_EQ(state->graph_cap(), 4);
   EXPECT_FALSE(state->report().over_cap());
   EXPECT_FALSE(state->diagnostics().has_errors());

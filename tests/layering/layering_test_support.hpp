@@ -11,7 +11,7 @@
 
 #include <glm/trigonometric.hpp>
 
-#include "light_layering/core/layer_assignment.hpp"
+#include "antumbra/layering/layer_assignment.hpp"
 
 namespace antumbra::layering::testing {
 

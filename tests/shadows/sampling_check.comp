@@ -4,7 +4,7 @@
 // CPU mirror (shadow_faces.cpp) can be compared with it.
 layout(local_size_x = 64) in;
 
-#include "common/shadow_data.glsl"
+#include "interface/shared/shadow_data.h"
 
 layout(set = 0, binding = 0) readonly buffer Shadows {
   ShadowHeader shadow_header;

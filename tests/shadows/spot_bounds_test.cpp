@@ -1,5 +1,5 @@
 // Spot lights are culled and layered by their cone, not their range sphere: the cone's
-// bounding sphere (common/light_bounds.hpp), the atlas's spot-face culling
+// bounding sphere (antumbra/scene/light_bounds.hpp), the atlas's spot-face culling
 // (light_faces::spot_may_be_visible) and the light-layering spheres
 // (layering::gather_light_spheres). CPU only.
 #include <gtest/gtest.h>
@@ -9,10 +9,10 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "common/light_bounds.hpp"
-#include "light_layering/core/conflict_graph.hpp"
-#include "light_layering/core/layer_assignment.hpp"
-#include "light_layering/core/scene_spheres.hpp"
+#include "antumbra/layering/conflict_graph.hpp"
+#include "antumbra/layering/layer_assignment.hpp"
+#include "antumbra/layering/scene_spheres.hpp"
+#include "antumbra/scene/light_bounds.hpp"
 #include "point_shadow_atlas/atlas_planner.hpp"
 #include "point_shadow_atlas/light_faces.hpp"
 #include "point_shadow_atlas/shadow_faces.hpp"
@@ -50,7 +50,7 @@ TEST(SpotBounds, SphereHoldsApexRimAndCapAndIsTight) {
   lf::perpendicular_basis(axis, s, t);
   const float range = 6.0f;
   for (const float outer : {2.0f, 10.0f, 25.0f, 40.0f, 45.0f, 50.0f, 70.0f, 89.0f}) {
-    const auto b = passes::spot_bounding_sphere(apex, axis, range, outer);
+    const auto b = scene::spot_bounding_sphere(apex, axis, range, outer);
     const float a = glm::radians(outer);
     const float slack = 1e-5f * range;
     EXPECT_LE(glm::distance(b.centre, apex), b.radius + slack) << outer;
@@ -83,20 +83,20 @@ TEST(SpotBounds, SphereHoldsApexRimAndCapAndIsTight) {
     }
   }
   // Narrow cones: about half the range sphere's radius.
-  EXPECT_LT(passes::spot_bounding_sphere(apex, axis, range, 20.0f).radius, 0.54f * range);
-  EXPECT_LT(passes::spot_bounding_sphere(apex, axis, range, 45.0f).radius, 0.71f * range);
+  EXPECT_LT(scene::spot_bounding_sphere(apex, axis, range, 20.0f).radius, 0.54f * range);
+  EXPECT_LT(scene::spot_bounding_sphere(apex, axis, range, 45.0f).radius, 0.71f * range);
 }
 
 TEST(SpotBounds, PointAndSunBoundsAreUnchanged) {
   scene::PointLight point;
   point.position = {1.0f, 2.0f, 3.0f};
   point.range = 7.0f;
-  const auto b = passes::light_bounding_sphere(point);
+  const auto b = scene::light_bounding_sphere(point);
   EXPECT_EQ(b.centre, point.position);
   EXPECT_EQ(b.radius, 7.0f);
   scene::PointLight sun;
   sun.type = scene::LightType::directional;
-  EXPECT_TRUE(std::isinf(passes::light_bounding_sphere(sun).radius));
+  EXPECT_TRUE(std::isinf(scene::light_bounding_sphere(sun).radius));
 }
 
 TEST(SpotBounds, SpotFaceCulledWhenTheViewMissesTheConeButNotTheSphere) {

@@ -13,11 +13,13 @@
 namespace antumbra::editor_app {
 
 EditorState::EditorState(runtime::RenderSession& session, editor::SceneDocument scene,
-                         editor::GraphDocument graph, editor::PassDescLookup lookup)
+                         editor::GraphDocument graph, editor::PassDescLookup lookup,
+                         double poll_interval_ms)
     : session_(session),
       scene_(std::move(scene)),
       graph_(std::move(graph)),
-      lookup_(std::move(lookup)) {
+      lookup_(std::move(lookup)),
+      poll_interval_ms_(poll_interval_ms) {
 }
 
 bool EditorState::start() {
@@ -51,8 +53,7 @@ void EditorState::watch_files() {
 }
 
 void EditorState::poll_files() {
-  constexpr double kPollMs = 250.0;
-  if (since_poll_.elapsed_ms() < kPollMs) return;
+  if (since_poll_.elapsed_ms() < poll_interval_ms_) return;
   since_poll_.restart();
   const auto changed = watcher_.poll();
   if (changed.empty()) return;

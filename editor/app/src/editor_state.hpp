@@ -25,8 +25,13 @@ enum class DocKind { scene, graph };
 class EditorState {
  public:
   // `lookup` (the pass reflection) must outlive the state: reloaded graphs use it.
+  // How often poll_files() looks at the files on disk: a few times a second by default
+  // (modification times are cheap, but not free at 60 Hz); tests poll on every call.
+  static constexpr double kDefaultPollMs = 250.0;
+
   EditorState(runtime::RenderSession& session, editor::SceneDocument scene,
-              editor::GraphDocument graph, editor::PassDescLookup lookup);
+              editor::GraphDocument graph, editor::PassDescLookup lookup,
+              double poll_interval_ms = kDefaultPollMs);
 
   // The first load of the graph and the scene; false (diagnostics printed) on errors.
   bool start();
@@ -135,6 +140,7 @@ class EditorState {
   std::vector<runtime::PassTiming> timings_;
   watch::FileWatcher watcher_;
   gpu::CpuTimer since_poll_;
+  double poll_interval_ms_ = kDefaultPollMs;
   std::optional<gpu::CpuTimer> since_change_;  // a change seen on disk, not yet on screen
 };
 

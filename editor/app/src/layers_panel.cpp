@@ -6,8 +6,8 @@
 #include <imgui.h>
 
 #include "antumbra/editor/fix_suggestion.hpp"
+#include "antumbra/layering/layer_cap.hpp"
 #include "layer_colours.hpp"
-#include "light_layering/core/layer_cap.hpp"
 #include "panels.hpp"
 
 namespace antumbra::editor_app {

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "antumbra/base/diagnostic_codes.hpp"
+#include "antumbra/base/text.hpp"
 #include "antumbra/fg/registry.hpp"
 
 namespace antumbra::editor {
@@ -160,14 +161,6 @@ std::vector<std::string> names_of(const Map& map) {
   return names;
 }
 
-// Built by appending: GCC 12 warns (-Wrestrict, a false positive) on "'" + s.
-std::string quoted(const std::string& text) {
-  std::string out(1, '\'');
-  out += text;
-  out += '\'';
-  return out;
-}
-
 void check_step(const base::JsonDocument& script, const Json& step, const std::string& pointer,
                 base::Diagnostics& out) {
   const auto error = [&](const std::string& message, const std::string& at, bool at_key) {
@@ -204,7 +197,7 @@ void check_step(const base::JsonDocument& script, const Json& step, const std::s
   for (const auto& [key, value] : step.items()) {
     const std::string key_pointer = pointer + "/" + key;
     if (std::find(allowed.begin(), allowed.end(), key) == allowed.end()) {
-      error(quoted(name.get<std::string>()) + " has no key " + quoted(key) +
+      error(base::quote_name(name.get<std::string>()) + " has no key " + base::quote_name(key) +
                 fg::did_you_mean(key, allowed),
             key_pointer, true);
       continue;
@@ -220,7 +213,8 @@ void check_step(const base::JsonDocument& script, const Json& step, const std::s
   }
   for (const Key& key : action->second.keys) {
     if (key.required && !step.contains(key.name)) {
-      error(quoted(name.get<std::string>()) + " needs " + quoted(key.name), pointer, false);
+      error(base::quote_name(name.get<std::string>()) + " needs " + base::quote_name(key.name),
+            pointer, false);
     }
   }
 }

@@ -15,8 +15,8 @@
 #include <glm/geometric.hpp>
 
 #include "antumbra/editor/scene_document.hpp"
-#include "common/shadow_data.hpp"
-#include "light_layering/core/scene_spheres.hpp"
+#include "antumbra/layering/scene_spheres.hpp"
+#include "shared/limits.h"
 
 namespace antumbra::editor {
 namespace {
@@ -33,7 +33,7 @@ class FitCheck {
   // A fresh frame's colouring (no history) of these lights fits the cap: nothing
   // overflows and the uncapped colouring needs no more than the cap.
   bool fits(std::span<const scene::PointLight> lights, int& needed) {
-    layering::gather_light_spheres(lights, passes::kMaxShadowLights, spheres_, scene_index_);
+    layering::gather_light_spheres(lights, shared::kMaxShadowLights, spheres_, scene_index_);
     const auto& a =
         layering_.assign(builder_.build_world_sphere(spheres_), spheres_, options_, nullptr);
     needed = a.layers_needed;
@@ -256,7 +256,7 @@ FixSuggestion suggest_fix(std::span<const scene::PointLight> lights,
   out.needed = true;
   std::vector<LightSphere> spheres;
   std::vector<std::uint32_t> scene_index;
-  layering::gather_light_spheres(lights, passes::kMaxShadowLights, spheres, scene_index);
+  layering::gather_light_spheres(lights, shared::kMaxShadowLights, spheres, scene_index);
   const layering::ConflictGraph graph = layering::build_world_sphere_graph(spheres);
   const layering::LayerAssignment assignment = layering::assign_layers(graph, spheres, options);
   Search s{check, work, spheres, scene_index, graph, search};

@@ -6,8 +6,8 @@
 
 #include "antumbra/base/diagnostic_codes.hpp"
 #include "antumbra/fg/graph_desc.hpp"
-#include "light_layering/core/layer_assignment.hpp"
-#include "light_layering/core/layer_cap.hpp"
+#include "antumbra/layering/layer_assignment.hpp"
+#include "antumbra/layering/layer_cap.hpp"
 
 namespace antumbra::editor {
 namespace {

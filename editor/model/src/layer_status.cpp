@@ -4,8 +4,8 @@
 #include <utility>
 
 #include "antumbra/editor/scene_document.hpp"
-#include "common/shadow_data.hpp"
-#include "light_layering/core/scene_spheres.hpp"
+#include "antumbra/layering/scene_spheres.hpp"
+#include "shared/limits.h"
 
 namespace antumbra::editor {
 namespace {
@@ -79,7 +79,7 @@ LayerReport analyse_layers(std::span<const scene::PointLight> lights,
                            const layering::LayeringOptions& options) {
   std::vector<layering::LightSphere> spheres;
   std::vector<std::uint32_t> scene_index;
-  layering::gather_light_spheres(lights, passes::kMaxShadowLights, spheres, scene_index);
+  layering::gather_light_spheres(lights, shared::kMaxShadowLights, spheres, scene_index);
   const layering::ConflictGraph graph = layering::build_world_sphere_graph(spheres);
   const layering::LayerAssignment assignment = layering::assign_layers(graph, spheres, options);
   return make_report(lights, spheres, scene_index, graph, assignment, options.max_layers);
@@ -94,7 +94,7 @@ const LayerReport& LayerStatus::update(const SceneDocument& document) {
   if (report_key_ == now) return report_;
   std::vector<layering::LightSphere> spheres;
   std::vector<std::uint32_t> scene_index;
-  layering::gather_light_spheres(document.lights(), passes::kMaxShadowLights, spheres, scene_index);
+  layering::gather_light_spheres(document.lights(), shared::kMaxShadowLights, spheres, scene_index);
   const layering::LayerAssignment& assignment = layering_.update_world_sphere(spheres, options_);
   report_ = make_report(document.lights(), spheres, scene_index, layering_.graph(), assignment,
                         options_.max_layers);

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "antumbra/base/diagnostic_codes.hpp"
+#include "antumbra/base/text.hpp"
 
 namespace antumbra::scene::detail {
 namespace {
@@ -38,13 +39,6 @@ std::string format_number(double v) {
   std::ostringstream out;
   out << v;
   return out.str();
-}
-
-std::string quote(std::string_view s) {
-  std::string out(1, '\'');  // appended, not operator+: GCC 12 -Wrestrict false positive
-  out.append(s);
-  out += '\'';
-  return out;
 }
 
 }  // namespace
@@ -127,9 +121,9 @@ bool JsonReader::check_object(const Json& value, const std::string& pointer, std
   if (!check_type(value, pointer, Json::value_t::object)) return false;
   for (const auto& [key, unused] : value.items()) {
     if (std::find(known.begin(), known.end(), key) != known.end()) continue;
-    std::string message = "unknown key " + quote(key) + " in " + std::string(what);
+    std::string message = "unknown key " + base::quote_name(key) + " in " + std::string(what);
     if (const std::string hint = closest_match(key, known); !hint.empty()) {
-      message += "; did you mean " + quote(hint) + "?";
+      message += "; did you mean " + base::quote_name(hint) + "?";
     }
     error(codes::scene::kUnknownKey, std::move(message), base::pointer_append(pointer, key), true);
   }
@@ -141,7 +135,8 @@ const Json* JsonReader::member(const Json& object, const std::string& pointer, s
   if (object.is_object()) {
     if (const auto it = object.find(std::string(key)); it != object.end()) return &*it;
   }
-  if (required) error(codes::scene::kMissingKey, "missing required key " + quote(key), pointer);
+  if (required)
+    error(codes::scene::kMissingKey, "missing required key " + base::quote_name(key), pointer);
   return nullptr;
 }
 
@@ -184,7 +179,8 @@ std::optional<float> JsonReader::get_float(const Json& object, const std::string
   const double d = v->get<double>();
   if (!range.contains(d)) {
     error(codes::scene::kOutOfRange,
-          quote(key) + " is " + format_number(d) + " but must be " + range.describe(), p);
+          base::quote_name(key) + " is " + format_number(d) + " but must be " + range.describe(),
+          p);
     return std::nullopt;
   }
   return static_cast<float>(d);
@@ -206,7 +202,8 @@ std::optional<int> JsonReader::get_int(const Json& object, const std::string& po
   const double d = v->get<double>();
   if (!range.contains(d)) {
     error(codes::scene::kOutOfRange,
-          quote(key) + " is " + format_number(d) + " but must be " + range.describe(), p);
+          base::quote_name(key) + " is " + format_number(d) + " but must be " + range.describe(),
+          p);
     return std::nullopt;
   }
   return static_cast<int>(d);

@@ -1,4 +1,4 @@
-#include "colouring.hpp"
+#include "antumbra/layering/colouring.hpp"
 
 #include <algorithm>
 #include <bit>

@@ -1,4 +1,4 @@
-#include "conflict_graph.hpp"
+#include "antumbra/layering/conflict_graph.hpp"
 
 #include <algorithm>
 #include <bit>

@@ -1,4 +1,4 @@
-#include "layer_assignment.hpp"
+#include "antumbra/layering/layer_assignment.hpp"
 
 #include <algorithm>
 #include <bit>
@@ -7,10 +7,10 @@
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 
+#include "antumbra/base/text.hpp"
+
 namespace antumbra::layering {
 namespace {
-
-constexpr std::size_t kNamesInMessage = 8;
 
 int distinct_regular_colours(std::span<const int> colours, std::uint32_t reserved) {
   std::uint64_t low = 0;  // colours < 64 are counted in a bitset, the rest by maximum
@@ -24,17 +24,6 @@ int distinct_regular_colours(std::span<const int> colours, std::uint32_t reserve
     }
   }
   return std::popcount(low & ~std::uint64_t{reserved}) + high;
-}
-
-std::string names_for_message(std::span<const std::string> names) {
-  std::string out;
-  for (std::size_t i = 0; i < names.size() && i < kNamesInMessage; ++i) {
-    if (i > 0) out += ", ";
-    out += '\'' + names[i] + '\'';
-  }
-  if (names.size() > kNamesInMessage)
-    out += " and " + std::to_string(names.size() - kNamesInMessage) + " more";
-  return out;
 }
 
 }  // namespace
@@ -191,7 +180,7 @@ void Layering::add_warnings(const ConflictGraph& graph, std::span<const LightSph
     for (std::uint32_t i : w.lights) w.light_names.push_back(lights[i].name);
     w.message = std::to_string(w.lights.size()) + " own-layer light(s) found no free layer (" +
                 std::to_string(cap) +
-                " allowed) and fall back to hard shadows: " + names_for_message(w.light_names);
+                " allowed) and fall back to hard shadows: " + base::name_list(w.light_names);
     result_.warnings.push_back(std::move(w));
   }
   if (overflow.empty()) return;
@@ -223,7 +212,7 @@ void Layering::add_warnings(const ConflictGraph& graph, std::span<const LightSph
               (policy == CapPolicy::fallback
                    ? " light(s) fall back to hard/PCF shadows: "
                    : " light(s) share a layer with an overlapping light (least-conflict): ") +
-              names_for_message(w.light_names);
+              base::name_list(w.light_names);
   result_.warnings.push_back(std::move(w));
 }
 

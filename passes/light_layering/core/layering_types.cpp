@@ -1,4 +1,4 @@
-#include "layering_types.hpp"
+#include "antumbra/layering/layering_types.hpp"
 
 #include <algorithm>
 #include <array>

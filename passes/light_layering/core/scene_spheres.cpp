@@ -1,9 +1,9 @@
-#include "light_layering/core/scene_spheres.hpp"
+#include "antumbra/layering/scene_spheres.hpp"
 
 #include <functional>
 #include <limits>
 
-#include "common/light_bounds.hpp"
+#include "antumbra/scene/light_bounds.hpp"
 
 namespace antumbra::layering {
 
@@ -20,11 +20,11 @@ void gather_light_spheres(std::span<const scene::PointLight> lights, std::size_t
     const scene::PointLight& light = lights[i];
     if (!light.casts_shadows) continue;
     // The sun lights everything: an infinite sphere (the core handles it) on a layer of
-    // its own. A spot light is its cone's bounding sphere (common/light_bounds.hpp):
+    // its own. A spot light is its cone's bounding sphere (antumbra/scene/light_bounds.hpp):
     // conservative, as it holds space beside the cone, but spots whose range spheres
     // overlap while their cones do not no longer conflict.
     const bool sun = light.type == scene::LightType::directional;
-    const passes::LightBound bound = passes::light_bounding_sphere(light);
+    const scene::LightBound bound = scene::light_bounding_sphere(light);
     spheres.push_back({light_id(light.name), light.name, sun ? light.position : bound.centre,
                        sun ? std::numeric_limits<float>::infinity() : bound.radius, sun});
     scene_index.push_back(i);

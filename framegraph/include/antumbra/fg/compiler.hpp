@@ -29,10 +29,13 @@ struct CompileOptions {
 Result<Plan> compile(const GraphDesc& graph, const Registry& registry,
                      const CompileOptions& options = {});
 
-// load_json_file + parse_graph + compile.
+// parse_graph + compile of a parsed document (or the parse's diagnostics).
+Result<Plan> compile_document(Result<JsonDocument> doc, const Registry& registry,
+                              const CompileOptions& options = {});
+// load_json_file + compile_document.
 Result<Plan> compile_file(const std::string& path, const Registry& registry,
                           const CompileOptions& options = {});
-// parse_json + parse_graph + compile, for text already in memory (editor, tests).
+// parse_json + compile_document, for text already in memory (editor, tests).
 Result<Plan> compile_text(std::string_view text, const std::string& file, const Registry& registry,
                           const CompileOptions& options = {});
 

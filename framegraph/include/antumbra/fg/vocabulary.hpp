@@ -6,6 +6,7 @@
 #include "antumbra/base/diagnostic_codes.hpp"
 #include "antumbra/base/diagnostics.hpp"
 #include "antumbra/base/json_document.hpp"
+#include "antumbra/base/text.hpp"
 
 namespace antumbra::fg {
 
@@ -16,8 +17,10 @@ using base::Json;
 using base::JsonDocument;
 using base::JsonParseOptions;
 using base::load_json_file;
+using base::name_list;
 using base::parse_json;
 using base::pointer_append;
+using base::quote_name;
 using base::Result;
 using base::Severity;
 using base::TextPosition;

@@ -11,8 +11,8 @@
 
 #include <glm/vec3.hpp>
 
+#include "antumbra/layering/layer_assignment.hpp"
 #include "antumbra/scene/scene.hpp"
-#include "light_layering/core/layer_assignment.hpp"
 
 namespace antumbra::editor {
 

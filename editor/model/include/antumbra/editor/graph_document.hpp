@@ -99,7 +99,7 @@ class GraphDocument {
 
 // The name of the graph's light-layering pass (the first), empty when it has none.
 [[nodiscard]] std::string layering_pass(const GraphDocument& graph);
-// The layer cap of that pass (light_layering/core/layer_cap.hpp), its default when the
+// The layer cap of that pass (antumbra/layering/layer_cap.hpp), its default when the
 // graph has no light-layering pass or the file's value is not an integer.
 [[nodiscard]] int layer_cap(const GraphDocument& graph);
 

@@ -15,8 +15,8 @@
 #include <glm/vec2.hpp>
 
 #include "antumbra/editor/fix_suggestion.hpp"
+#include "antumbra/layering/layer_assignment.hpp"
 #include "antumbra/scene/scene.hpp"
-#include "light_layering/core/layer_assignment.hpp"
 
 namespace antumbra::editor {
 

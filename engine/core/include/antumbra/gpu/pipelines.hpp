@@ -49,6 +49,9 @@ class DescriptorSetLayoutBuilder {
   }
   // push = true (the default style) sets VK_..._PUSH_DESCRIPTOR_BIT_KHR.
   DescriptorSetLayout build(Context& context, std::string_view name, bool push = true) const;
+  [[nodiscard]] const std::vector<VkDescriptorSetLayoutBinding>& bindings() const {
+    return bindings_;
+  }
 
  private:
   std::vector<VkDescriptorSetLayoutBinding> bindings_;

@@ -1,7 +1,8 @@
 #pragma once
 // Bounding spheres of the region a light can light, for culling (point-shadow-atlas
 // faces, tiled lighting) and for the light-layering conflict criteria. Vulkan-free,
-// header-only; the GLSL twin is light_bounding_sphere() in lights.glsl (keep in step).
+// header-only; the shaders' light_bounding_sphere() (passes/common/lights.glsl) computes
+// the same sphere from a GpuLight.
 //
 //  - Point light: its range sphere.
 //  - Spot light: the shading is exactly zero beyond `range` (light_attenuation) and
@@ -28,7 +29,7 @@
 
 #include "antumbra/scene/scene.hpp"
 
-namespace antumbra::passes {
+namespace antumbra::scene {
 
 struct LightBound {
   glm::vec3 centre{0.0f};
@@ -62,7 +63,7 @@ inline LightBound spot_bounding_sphere(const glm::vec3& position, const glm::vec
 
 // The sphere to cull or layer `light` by (see above); directional lights get an
 // infinite radius around the origin.
-inline LightBound light_bounding_sphere(const scene::PointLight& light) {
+inline LightBound light_bounding_sphere(const PointLight& light) {
   switch (light.type) {
     case scene::LightType::spot:
       return spot_bounding_sphere(light.position, light.direction, light.range, light.spot_outer);
@@ -74,4 +75,4 @@ inline LightBound light_bounding_sphere(const scene::PointLight& light) {
   return {light.position, light.range};
 }
 
-}  // namespace antumbra::passes
+}  // namespace antumbra::scene

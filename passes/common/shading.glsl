@@ -1,10 +1,11 @@
-// The per-light shading of deferred-lighting (deferred_lighting.frag), factored into a
-// function: the same Blinn-Phong lobe, windowed inverse-square attenuation and range
-// cut, so tiled lighting with shadows off matches the untiled reference.
-#ifndef ANTUMBRA_TILED_SHADING_GLSL
-#define ANTUMBRA_TILED_SHADING_GLSL
+// The per-light shading of every lighting pass (deferred-lighting, tiled-lighting and its
+// shadow baselines, shadow-reference): one Blinn-Phong lobe, windowed inverse-square
+// attenuation and range cut, so tiled lighting with shadows off matches the untiled pass
+// and the reference shades exactly like the techniques it judges.
+#ifndef ANTUMBRA_SHADING_GLSL
+#define ANTUMBRA_SHADING_GLSL
 
-#include "../common/lights.glsl"
+#include "lights.glsl"
 
 struct Surface {
   vec3 p;          // view-space position

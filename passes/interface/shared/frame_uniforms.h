@@ -5,13 +5,9 @@
 #ifndef ANTUMBRA_FRAME_UNIFORMS_H
 #define ANTUMBRA_FRAME_UNIFORMS_H
 
-#ifdef __cplusplus
-#include <glm/glm.hpp>
-namespace antumbra::passes::shared {
-using mat4 = glm::mat4;
-using vec4 = glm::vec4;
-using uvec4 = glm::uvec4;
-#endif
+#include "glsl_cpp.h"
+
+ANTUMBRA_SHARED_BEGIN
 
 struct FrameUniforms {
   mat4 view;
@@ -26,8 +22,6 @@ struct FrameUniforms {
   vec4 projection;    // x = proj[0][0], y = proj[1][1] (focal lengths), z = near, w = far
 };
 
-#ifdef __cplusplus
-}  // namespace antumbra::passes::shared
-#endif
+ANTUMBRA_SHARED_END
 
 #endif

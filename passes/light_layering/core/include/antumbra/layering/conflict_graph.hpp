@@ -10,7 +10,7 @@
 
 #include <glm/mat4x4.hpp>
 
-#include "layering_types.hpp"
+#include "antumbra/layering/layering_types.hpp"
 
 namespace antumbra::layering {
 

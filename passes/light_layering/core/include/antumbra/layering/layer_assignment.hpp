@@ -11,13 +11,15 @@
 
 #include <nlohmann/json_fwd.hpp>
 
-#include "colouring.hpp"
-#include "conflict_graph.hpp"
-#include "layering_types.hpp"
+#include "antumbra/layering/colouring.hpp"
+#include "antumbra/layering/conflict_graph.hpp"
+#include "antumbra/layering/layering_types.hpp"
+#include "shared/limits.h"
 
 namespace antumbra::layering {
 
-inline constexpr int kMaxLayers = 32;      // one R32UI bit per layer in the penumbra pass
+inline constexpr int kMaxLayers =
+    shared::kMaxLayers;                    // one R32UI bit per layer in the penumbra pass
 inline constexpr int kFallbackLayer = -1;  // shadow drawn by the hard/PCF path instead
 
 struct LayeringOptions {

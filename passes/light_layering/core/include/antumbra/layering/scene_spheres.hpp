@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "antumbra/layering/layering_types.hpp"
 #include "antumbra/scene/scene.hpp"
-#include "light_layering/core/layering_types.hpp"
 
 namespace antumbra::layering {
 
@@ -20,7 +20,7 @@ namespace antumbra::layering {
 
 // Fills `spheres` (cleared first) with the shadow-casting lights among the first
 // `max_lights` of `lights`: point lights as their lit sphere, spot lights as the bounding
-// sphere of their cone (common/light_bounds.hpp, conservative), the directional sun as an
+// sphere of their cone (antumbra/scene/light_bounds.hpp, conservative), the directional sun as an
 // infinite sphere on a layer of its own (docs/technique.md 1, step 3). `scene_index[s]` is the
 // index in `lights` of sphere s.
 void gather_light_spheres(std::span<const scene::PointLight> lights, std::size_t max_lights,

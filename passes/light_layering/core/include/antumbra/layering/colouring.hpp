@@ -8,7 +8,7 @@
 #include <span>
 #include <vector>
 
-#include "layering_types.hpp"
+#include "antumbra/layering/layering_types.hpp"
 
 namespace antumbra::layering {
 

@@ -1,0 +1,52 @@
+// Shadow data shared by the shadow-map producer (point-shadow-atlas) and every consumer
+// (penumbra, lighting, baselines, debug views), std430, written by point-shadow-atlas into
+// its `shadowData` buffer. Layout of the buffer:
+//   ShadowHeader header;
+//   ShadowLight  lights[ANTUMBRA_MAX_SHADOW_LIGHTS];   indexed by scene light index
+//   ShadowFace   faces[];                              indexed by atlas layer
+// (byte offsets for C++: common/shadow_data.hpp).
+#ifndef ANTUMBRA_SHADOW_DATA_H
+#define ANTUMBRA_SHADOW_DATA_H
+
+#include "glsl_cpp.h"
+#include "limits.h"
+
+// Light types (ShadowLight.direction_type.w, GpuLight.direction_type.w).
+#define ANTUMBRA_LIGHT_POINT 0.0
+#define ANTUMBRA_LIGHT_SPOT 1.0
+#define ANTUMBRA_LIGHT_DIRECTIONAL 2.0
+
+ANTUMBRA_SHARED_BEGIN
+
+struct ShadowHeader {
+  uvec4 counts ANTUMBRA_INIT(uvec4(0u));  // x light count, y atlas layers, z face size
+                                          // (texels), w frame index
+};
+
+// A light's face count follows from its type: point 6 (cube faces at first + 0..5),
+// spot 1 (a perspective face along its axis), directional 1 (an orthographic map).
+// Directional lights have no position: position_range holds a point on the near plane
+// of their box and its depth (far - near), params.y = 0, and depth is linear in metres.
+struct ShadowLight {
+  // World-space position, range (= far plane of its faces).
+  vec4 position_range ANTUMBRA_INIT(vec4(0.0f));
+  // x light size (radius; directional: tan(angular radius)), y near plane, z first atlas
+  // layer or -1 (none), w 1 when the light's colour layers hold translucent tints.
+  vec4 params ANTUMBRA_INIT(vec4(0.0f, 0.0f, -1.0f, 0.0f));
+  // xyz unit world direction the light shines along, w type (ANTUMBRA_LIGHT_*).
+  vec4 direction_type ANTUMBRA_INIT(vec4(0.0f, -1.0f, 0.0f, ANTUMBRA_LIGHT_POINT));
+  // x metres per unit of face clip xy: point 1 (times distance), spot tan(half fov)
+  // (times distance), directional half width.
+  vec4 projection ANTUMBRA_INIT(vec4(1.0f, 0.0f, 0.0f, 0.0f));
+};
+
+struct ShadowFace {
+  mat4 view_proj ANTUMBRA_INIT(mat4(1.0f));  // world -> face clip space (Vulkan depth 0..1)
+  // x light index, y face (0..5: +X -X +Y -Y +Z -Z; 0 for spot/sun), z valid (0/1),
+  // w drawn this frame (0/1; derived data must be redone).
+  uvec4 info ANTUMBRA_INIT(uvec4(0u));
+};
+
+ANTUMBRA_SHARED_END
+
+#endif

@@ -1,0 +1,15 @@
+// Compute workgroup sizes, included by the shaders (their local_size) and by the passes
+// that dispatch them (passes/common/pass_support.hpp dispatch_groups), so the two cannot
+// disagree. Valid GLSL and C++.
+#ifndef ANTUMBRA_WORKGROUPS_H
+#define ANTUMBRA_WORKGROUPS_H
+
+// Screen tiles of the light-culling passes (common/tile_cull.glsl): tiled-lighting and
+// its shadow baselines, layered-penumbra, layer-view.
+#define ANTUMBRA_TILE_SIZE 16
+// Per-pixel image passes: anisotropic-blur, atlas-view, penumbra-view, shadow-reference.
+#define ANTUMBRA_IMAGE_GROUP 8
+// shadow-min-filter's square groups (min_common.glsl).
+#define ANTUMBRA_MIN_FILTER_GROUP 16
+
+#endif
