@@ -247,6 +247,169 @@ std::optional<FloatImage> reference_mask(const std::optional<FloatImage>& penumb
   return mask;
 }
 
+// Before minutes of rendering (lavapipe), not after. False (after saying why) when the
+// folder for the error maps cannot be made.
+bool create_error_map_folder(const std::string& out) {
+  if (std::error_code failure;
+      !out.empty() && !std::filesystem::create_directories(out, failure) && failure) {
+    std::fprintf(stderr, "antumbra quality: cannot create %s: %s\n", out.c_str(),
+                 failure.message().c_str());
+    return false;
+  }
+  return true;
+}
+
+// What quality reads from disk, all of it checked before the GPU is touched.
+struct QualityInputs {
+  std::string reference_path;
+  std::string scene_path;
+  fg::GraphDesc reference;
+  std::vector<fg::GraphDesc> graphs;  // in the order of --graph
+  scene::Scene scene;
+};
+
+// False (after printing the diagnostics) when a graph or the scene does not load.
+bool load_quality_inputs(const QualityOptions& options, const runtime::DataPaths& paths,
+                         QualityInputs& inputs) {
+  inputs.reference_path =
+      options.reference.empty() ? (paths.graphs() / "reference.json").string() : options.reference;
+  inputs.scene_path =
+      options.scene.empty() ? (paths.scenes() / "atrium.json").string() : options.scene;
+  auto reference =
+      load_for_quality(inputs.reference_path, options.resource, {"penumbraCount", "depth"});
+  if (!reference) return false;
+  inputs.reference = std::move(*reference);
+  for (const auto& path : options.graphs) {
+    auto graph = load_for_quality(path, options.resource, {});
+    if (!graph) return false;
+    inputs.graphs.push_back(std::move(*graph));
+  }
+  auto scene = scene::load_scene_file(inputs.scene_path);
+  for (const auto& d : scene.diagnostics())
+    std::fprintf(stderr, "%s\n", base::format_text(d).c_str());
+  if (!scene.ok()) return false;
+  inputs.scene = std::move(scene.value());
+  return true;
+}
+
+// One frame of `graph`; its `resource` read back. Nothing when the graph does not load
+// (its diagnostics printed).
+std::optional<FloatImage> render_hdr(runtime::RenderSession& session, const fg::GraphDesc& graph,
+                                     const std::string& path, const std::string& resource,
+                                     double& ms) {
+  const auto diagnostics = session.load_graph(graph);
+  for (const auto& d : diagnostics) {
+    if (d.severity != base::Severity::note)
+      std::fprintf(stderr, "%s\n", base::format_text(d).c_str());
+  }
+  if (diagnostics.has_errors()) {
+    std::fprintf(stderr, "antumbra quality: %s does not load\n", path.c_str());
+    return std::nullopt;
+  }
+  gpu::CpuTimer clock;
+  session.render(1, nullptr);
+  ms = clock.elapsed_ms();
+  const auto* image = session.executor().gpu_image(resource);
+  const auto* bound = session.executor().image(resource);
+  return to_float_image(gpu::read_image(session.gpu(), *image, bound->layout));
+}
+
+// Nothing when the loaded graph has no resource of that name.
+std::optional<FloatImage> read_back(runtime::RenderSession& session, const char* name) {
+  const auto* image = session.executor().gpu_image(name);
+  if (image == nullptr) return std::nullopt;
+  return to_float_image(
+      gpu::read_image(session.gpu(), *image, session.executor().image(name)->layout));
+}
+
+// The reference's frame and the regions every technique is measured over.
+struct ReferenceFrame {
+  FloatImage hdr;
+  std::optional<FloatImage> mask;
+  std::vector<MaskRegion> regions;
+  double ms = 0.0;
+};
+
+// Renders the reference while its graph is loaded, so that its penumbra and depth
+// resources can still be read back for the region mask.
+std::optional<ReferenceFrame> render_reference(runtime::RenderSession& session,
+                                               const QualityOptions& options,
+                                               const QualityInputs& inputs,
+                                               const scene::Camera& camera) {
+  double reference_ms = 0.0;
+  auto reference_hdr =
+      render_hdr(session, inputs.reference, inputs.reference_path, options.resource, reference_ms);
+  if (!reference_hdr) return std::nullopt;
+  const auto mask =
+      reference_mask(read_back(session, "penumbraCount"), read_back(session, "depth"), camera);
+  auto regions = regions_for("", mask.has_value()).value();
+  if (mask && mask->channels >= 2) regions.push_back(MaskRegion::silhouette);
+  return ReferenceFrame{std::move(*reference_hdr), std::move(mask), std::move(regions),
+                        reference_ms};
+}
+
+// Per technique: its JSON result (JSON reports) and its signed error (error maps).
+struct TechniqueResults {
+  nlohmann::json graphs = nlohmann::json::array();
+  std::vector<std::vector<float>> errors;
+};
+
+// Renders the technique graph `index` and measures it against the reference. False when
+// it does not load.
+bool compare_technique(runtime::RenderSession& session, const QualityOptions& options,
+                       const QualityInputs& inputs, std::size_t index,
+                       const ReferenceFrame& reference, const std::string& label, bool json,
+                       TechniqueResults& results) {
+  double ms = 0.0;
+  const auto hdr =
+      render_hdr(session, inputs.graphs[index], options.graphs[index], options.resource, ms);
+  if (!hdr) return false;
+  const auto comparisons = compare_images(
+      reference.hdr, *hdr, reference.mask ? &*reference.mask : nullptr, reference.regions);
+  if (!options.out.empty()) results.errors.push_back(signed_error(reference.hdr, *hdr));
+  if (json) {
+    results.graphs.push_back({{"graph", options.graphs[index]},
+                              {"renderMs", ms},
+                              {"regions", metrics_json(comparisons)}});
+  } else {
+    for (const auto& c : comparisons) print_row(label, c);
+  }
+  return true;
+}
+
+// False (after saying why) when a map cannot be written.
+bool write_quality_error_maps(const QualityOptions& options, const std::vector<std::string>& labels,
+                              unsigned width, unsigned height, bool json, TechniqueResults& results,
+                              ErrorMaps& maps) {
+  try {
+    maps = write_error_maps(options.out, labels, results.errors, width, height);
+  } catch (const std::runtime_error& e) {
+    std::fprintf(stderr, "antumbra quality: %s\n", e.what());
+    return false;
+  }
+  for (std::size_t i = 0; json && i < maps.files.size(); ++i) {
+    results.graphs[i]["errorMap"] = maps.files[i].string();
+  }
+  return true;
+}
+
+void print_quality_json(runtime::RenderSession& session, const QualityInputs& inputs,
+                        const ReferenceFrame& reference, unsigned width, unsigned height,
+                        const TechniqueResults& results, const ErrorMaps& maps,
+                        const base::Diagnostics& report_diagnostics) {
+  nlohmann::json report{{"device", session.gpu().device_name()},
+                        {"reference", inputs.reference_path},
+                        {"referenceMs", reference.ms},
+                        {"scene", inputs.scene_path},
+                        {"width", width},
+                        {"height", height},
+                        {"signal", kMetricNote},
+                        {"graphs", results.graphs},
+                        {"diagnostics", report_diagnostics.to_json()}};
+  if (!maps.files.empty()) report["errorMapScale"] = maps.scale;
+  std::printf("%s\n", report.dump(2).c_str());
+}
+
 }  // namespace
 
 int run_quality(const QualityOptions& options) {
@@ -263,119 +426,42 @@ int run_quality(const QualityOptions& options) {
     std::fprintf(stderr, "%s\n", base::format_text(*warning).c_str());
     report_diagnostics.add(std::move(*warning));
   }
-  // Before minutes of rendering (lavapipe), not after.
-  if (std::error_code failure; !options.out.empty() &&
-                               !std::filesystem::create_directories(options.out, failure) &&
-                               failure) {
-    std::fprintf(stderr, "antumbra quality: cannot create %s: %s\n", options.out.c_str(),
-                 failure.message().c_str());
-    return runtime::kExitRuntime;
-  }
+  if (!create_error_map_folder(options.out)) return runtime::kExitRuntime;
   const runtime::DataPaths paths = runtime::find_data_paths();
-  const std::string reference_path =
-      options.reference.empty() ? (paths.graphs() / "reference.json").string() : options.reference;
-  const std::string scene_path =
-      options.scene.empty() ? (paths.scenes() / "atrium.json").string() : options.scene;
-  auto reference = load_for_quality(reference_path, options.resource, {"penumbraCount", "depth"});
-  if (!reference) return runtime::kExitDiagnostics;
-  std::vector<fg::GraphDesc> graphs;
-  for (const auto& path : options.graphs) {
-    auto graph = load_for_quality(path, options.resource, {});
-    if (!graph) return runtime::kExitDiagnostics;
-    graphs.push_back(std::move(*graph));
-  }
-  auto scene = scene::load_scene_file(scene_path);
-  for (const auto& d : scene.diagnostics())
-    std::fprintf(stderr, "%s\n", base::format_text(d).c_str());
-  if (!scene.ok()) return runtime::kExitDiagnostics;
+  QualityInputs inputs;
+  if (!load_quality_inputs(options, paths, inputs)) return runtime::kExitDiagnostics;
 
   runtime::SessionOptions session_options;
   session_options.device = options.device;
   session_options.validation = options.validation;
   session_options.viewport = {width, height};
   runtime::RenderSession session(paths, session_options);
-  const scene::Camera camera = scene->camera;
-  session.set_scene(std::move(scene.value()));
+  const scene::Camera camera = inputs.scene.camera;
+  session.set_scene(std::move(inputs.scene));
 
-  auto render = [&](const fg::GraphDesc& graph, const std::string& path,
-                    double& ms) -> std::optional<FloatImage> {
-    const auto diagnostics = session.load_graph(graph);
-    for (const auto& d : diagnostics) {
-      if (d.severity != base::Severity::note)
-        std::fprintf(stderr, "%s\n", base::format_text(d).c_str());
-    }
-    if (diagnostics.has_errors()) {
-      std::fprintf(stderr, "antumbra quality: %s does not load\n", path.c_str());
-      return std::nullopt;
-    }
-    gpu::CpuTimer clock;
-    session.render(1, nullptr);
-    ms = clock.elapsed_ms();
-    const auto* image = session.executor().gpu_image(options.resource);
-    const auto* bound = session.executor().image(options.resource);
-    return to_float_image(gpu::read_image(session.gpu(), *image, bound->layout));
-  };
-
-  double reference_ms = 0.0;
-  const auto reference_hdr = render(*reference, reference_path, reference_ms);
-  if (!reference_hdr) return runtime::kExitDiagnostics;
-  const auto read_back = [&](const char* name) -> std::optional<FloatImage> {
-    const auto* image = session.executor().gpu_image(name);
-    if (image == nullptr) return std::nullopt;
-    return to_float_image(
-        gpu::read_image(session.gpu(), *image, session.executor().image(name)->layout));
-  };
-  const auto mask = reference_mask(read_back("penumbraCount"), read_back("depth"), camera);
-  auto regions = regions_for("", mask.has_value()).value();
-  if (mask && mask->channels >= 2) regions.push_back(MaskRegion::silhouette);
-
-  nlohmann::json results = nlohmann::json::array();
+  const auto reference = render_reference(session, options, inputs, camera);
+  if (!reference) return runtime::kExitDiagnostics;
   if (!json) {
     std::printf("device: %s; reference %s rendered in %.0f ms at %ux%u\n",
-                session.gpu().device_name().c_str(), reference_path.c_str(), reference_ms, width,
-                height);
+                session.gpu().device_name().c_str(), inputs.reference_path.c_str(), reference->ms,
+                width, height);
     print_header();
   }
   const auto labels = unique_labels(options.graphs);
-  std::vector<std::vector<float>> errors;
-  for (std::size_t i = 0; i < graphs.size(); ++i) {
-    double ms = 0.0;
-    const auto hdr = render(graphs[i], options.graphs[i], ms);
-    if (!hdr) return runtime::kExitDiagnostics;
-    const auto comparisons = compare_images(*reference_hdr, *hdr, mask ? &*mask : nullptr, regions);
-    if (!options.out.empty()) errors.push_back(signed_error(*reference_hdr, *hdr));
-    const std::string& label = labels[i];
-    if (json) {
-      results.push_back(
-          {{"graph", options.graphs[i]}, {"renderMs", ms}, {"regions", metrics_json(comparisons)}});
-    } else {
-      for (const auto& c : comparisons) print_row(label, c);
+  TechniqueResults results;
+  for (std::size_t i = 0; i < inputs.graphs.size(); ++i) {
+    if (!compare_technique(session, options, inputs, i, *reference, labels[i], json, results)) {
+      return runtime::kExitDiagnostics;
     }
   }
   ErrorMaps maps;
-  if (!options.out.empty()) {
-    try {
-      maps = write_error_maps(options.out, labels, errors, width, height);
-    } catch (const std::runtime_error& e) {
-      std::fprintf(stderr, "antumbra quality: %s\n", e.what());
-      return runtime::kExitRuntime;
-    }
-    for (std::size_t i = 0; json && i < maps.files.size(); ++i) {
-      results[i]["errorMap"] = maps.files[i].string();
-    }
+  if (!options.out.empty() &&
+      !write_quality_error_maps(options, labels, width, height, json, results, maps)) {
+    return runtime::kExitRuntime;
   }
   if (json) {
-    nlohmann::json report{{"device", session.gpu().device_name()},
-                          {"reference", reference_path},
-                          {"referenceMs", reference_ms},
-                          {"scene", scene_path},
-                          {"width", width},
-                          {"height", height},
-                          {"signal", kMetricNote},
-                          {"graphs", results},
-                          {"diagnostics", report_diagnostics.to_json()}};
-    if (!maps.files.empty()) report["errorMapScale"] = maps.scale;
-    std::printf("%s\n", report.dump(2).c_str());
+    print_quality_json(session, inputs, *reference, width, height, results, maps,
+                       report_diagnostics);
   } else {
     std::printf("(%s)\n", kMetricNote);
     print_error_maps(maps);

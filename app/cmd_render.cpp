@@ -73,106 +73,115 @@ nlohmann::json render_report_json(const runtime::RenderSession& session, const s
           {"diagnostics", all}};
 }
 
-}  // namespace
+// A run that fails still answers a tool that asked for JSON: {"ok": false, diagnostics}.
+int fail_render(const base::Diagnostics& diagnostics, int code, bool json,
+                const std::string& graph_path) {
+  print_diagnostics(diagnostics);
+  if (json) {
+    std::printf("%s\n", nlohmann::json{{"ok", false},
+                                       {"graph", graph_path},
+                                       {"exitCode", code},
+                                       {"diagnostics", diagnostics.to_json()}}
+                            .dump(2)
+                            .c_str());
+  }
+  return code;
+}
 
-int run_render(const RenderOptions& options) {
-  unsigned width = 0;
-  unsigned height = 0;
-  if (!parse_size(options.size, width, height)) {
-    std::fprintf(stderr, "antumbra render: --size must be WxH with 1..16384, got \"%s\"\n",
-                 options.size.c_str());
+// What a render reads from disk, checked before the GPU is touched.
+struct RenderInputs {
+  std::string graph_path;
+  std::string scene_path;
+  fg::GraphDesc graph;
+  scene::Scene scene;
+};
+
+// Wall-clock milliseconds of the CPU stages of one render, in the order they run.
+struct StageTimes {
+  double parse_ms = 0.0;
+  double device_ms = 0.0;
+  double compile_ms = 0.0;
+  double upload_ms = 0.0;
+  double render_ms = 0.0;
+  double write_ms = 0.0;
+};
+
+// --output names a resource that becomes the graph's output: it is kept alive (never
+// aliased) and only the passes that feed it run. False (after saying why) when the graph
+// has no such resource.
+bool apply_output_resource(const RenderOptions& options, const std::string& graph_path,
+                           fg::GraphDesc& graph) {
+  if (options.output.empty()) return true;
+  if (graph.find_resource(options.output) < 0) {
+    std::vector<std::string> names;
+    for (const auto& r : graph.resources) names.push_back(r.name);
+    std::fprintf(stderr, "antumbra render: --output \"%s\" is not a resource of %s%s\n",
+                 options.output.c_str(), graph_path.c_str(),
+                 fg::did_you_mean(options.output, names).c_str());
+    return false;
+  }
+  graph.output = options.output;
+  return true;
+}
+
+// User input first, so a broken file fails fast without touching the GPU. Returns the
+// exit code of the failure, or kExitOk with `inputs` filled.
+int load_render_inputs(const RenderOptions& options, bool json, RenderInputs& inputs) {
+  auto document = base::load_json_file(inputs.graph_path);
+  if (!document.ok()) {
+    return fail_render(document.diagnostics(), runtime::exit_code_for(document.diagnostics()), json,
+                       inputs.graph_path);
+  }
+  auto graph = fg::parse_graph(document.value());
+  if (!graph.ok()) {
+    return fail_render(graph.diagnostics(), runtime::kExitDiagnostics, json, inputs.graph_path);
+  }
+  if (!apply_output_resource(options, inputs.graph_path, graph.value())) {
     return runtime::kExitUsage;
   }
-  const runtime::DataPaths paths = runtime::find_data_paths();
-  const std::string graph_path =
-      options.graph.empty() ? (paths.graphs() / "layered-ssss.json").string() : options.graph;
-  const std::string scene_path =
-      options.scene.empty() ? (paths.scenes() / "atrium.json").string() : options.scene;
-  gpu::CpuTimer stage;
-  const bool json = options.format == "json";
-  // A run that fails still answers a tool that asked for JSON: {"ok": false, diagnostics}.
-  const auto fail = [&](const base::Diagnostics& diagnostics, int code) {
-    print_diagnostics(diagnostics);
-    if (json) {
-      std::printf("%s\n", nlohmann::json{{"ok", false},
-                                         {"graph", graph_path},
-                                         {"exitCode", code},
-                                         {"diagnostics", diagnostics.to_json()}}
-                              .dump(2)
-                              .c_str());
-    }
-    return code;
-  };
-
-  // User input first, so a broken file fails fast without touching the GPU.
-  auto document = base::load_json_file(graph_path);
-  if (!document.ok())
-    return fail(document.diagnostics(), runtime::exit_code_for(document.diagnostics()));
-  auto graph = fg::parse_graph(document.value());
-  if (!graph.ok()) return fail(graph.diagnostics(), runtime::kExitDiagnostics);
-  if (!options.output.empty()) {
-    if (graph->find_resource(options.output) < 0) {
-      std::vector<std::string> names;
-      for (const auto& r : graph->resources) names.push_back(r.name);
-      std::fprintf(stderr, "antumbra render: --output \"%s\" is not a resource of %s%s\n",
-                   options.output.c_str(), graph_path.c_str(),
-                   fg::did_you_mean(options.output, names).c_str());
-      return runtime::kExitUsage;
-    }
-    // The requested resource becomes the graph's output: it is kept alive (never
-    // aliased) and only the passes that feed it run.
-    graph->output = options.output;
+  auto scene = scene::load_scene_file(inputs.scene_path);
+  if (!scene.ok()) {
+    return fail_render(scene.diagnostics(), runtime::exit_code_for(scene.diagnostics()), json,
+                       inputs.graph_path);
   }
-  auto scene = scene::load_scene_file(scene_path);
-  if (!scene.ok()) return fail(scene.diagnostics(), runtime::exit_code_for(scene.diagnostics()));
   print_diagnostics(scene.diagnostics());
-  const double parse_ms = stage.elapsed_ms();
+  inputs.graph = std::move(graph.value());
+  inputs.scene = std::move(scene.value());
+  return runtime::kExitOk;
+}
 
-  stage.restart();
+runtime::SessionOptions session_options_for(const RenderOptions& options, unsigned width,
+                                            unsigned height) {
   runtime::SessionOptions session_options;
   session_options.device = options.device;
   session_options.validation = options.validation;
   session_options.viewport = {width, height};
-  runtime::RenderSession session(paths, session_options);
-  const double device_ms = stage.elapsed_ms();
-  if (!json) {
-    std::printf("device: %s%s\n", session.gpu().device_name().c_str(),
-                options.validation ? " (validation + synchronization validation on)" : "");
-  }
+  return session_options;
+}
 
-  stage.restart();
-  const auto diagnostics = session.load_graph(graph.value());
-  if (diagnostics.has_errors()) {
-    // A valid graph this device cannot hold (memory, limits) is a runtime failure, as the
-    // README promises (3), not a problem in the file (1).
-    return fail(diagnostics, diagnostics.find(codes::graph::kRealiseFailed) != nullptr
-                                 ? runtime::kExitRuntime
-                                 : runtime::kExitDiagnostics);
-  }
-  print_diagnostics(diagnostics);
-  const double compile_ms = stage.elapsed_ms();
+// A valid graph this device cannot hold (memory, limits) is a runtime failure, as the
+// README promises (3), not a problem in the file (1).
+int graph_load_exit_code(const base::Diagnostics& diagnostics) {
+  return diagnostics.find(codes::graph::kRealiseFailed) != nullptr ? runtime::kExitRuntime
+                                                                   : runtime::kExitDiagnostics;
+}
 
-  stage.restart();
-  session.set_scene(std::move(scene.value()));
-  const double upload_ms = stage.elapsed_ms();
+const fg::PlanResource& output_resource(const runtime::RenderSession& session) {
+  return session.executor().plan().resources.at(
+      static_cast<std::size_t>(session.executor().plan().output));
+}
 
-  runtime::TraceWriter trace;
-  stage.restart();
-  session.render(options.frames, options.trace.empty() ? nullptr : &trace);
-  const double render_ms = stage.elapsed_ms();
-
-  stage.restart();
-  const std::string resource =
-      session.executor()
-          .plan()
-          .resources.at(static_cast<std::size_t>(session.executor().plan().output))
-          .name;
+void write_render_images(runtime::RenderSession& session, const RenderOptions& options,
+                         const std::string& resource) {
   const auto out_dir = std::filesystem::path(options.out).parent_path();
   if (!out_dir.empty()) std::filesystem::create_directories(out_dir);
   session.write_image(resource, options.out);
   if (!options.hdr_out.empty()) session.write_image(resource, options.hdr_out);
-  const double write_ms = stage.elapsed_ms();
+}
 
+void print_render_report(runtime::RenderSession& session, const RenderOptions& options,
+                         const std::string& resource, const base::Diagnostics& diagnostics,
+                         const StageTimes& times, bool json) {
   if (json) {
     std::printf("%s\n", render_report_json(session, session.gpu().device_name(), options, resource,
                                            diagnostics)
@@ -186,32 +195,31 @@ int run_render(const RenderOptions& options) {
     std::printf(
         "cpu stages: parse %.1f ms, device %.1f ms, compile+realise %.1f ms, upload %.1f ms, "
         "render %.1f ms, write %.1f ms\n",
-        parse_ms, device_ms, compile_ms, upload_ms, render_ms, write_ms);
+        times.parse_ms, times.device_ms, times.compile_ms, times.upload_ms, times.render_ms,
+        times.write_ms);
     // The resource's own size: a half-resolution buffer is written as it is.
-    const auto& written = session.executor().plan().resources.at(
-        static_cast<std::size_t>(session.executor().plan().output));
+    const auto& written = output_resource(session);
     std::printf("wrote %s (%s, %ux%u)\n", options.out.c_str(), resource.c_str(),
                 written.extent.width, written.extent.height);
   }
+}
 
-  if (!options.trace.empty()) {
-    double t = 0.0;
-    for (const auto& [name, ms] : {std::pair{"parse", parse_ms},
-                                   {"device", device_ms},
-                                   {"compile", compile_ms},
-                                   {"upload", upload_ms}}) {
-      trace.add({name, "cpu", t * 1000.0, ms * 1000.0, 1});
-      t += ms;
-    }
-    trace.write(options.trace);
+// The CPU stages before the frames go on the trace's CPU thread, one after the other.
+void write_trace(runtime::TraceWriter& trace, const StageTimes& times, const std::string& path) {
+  double t = 0.0;
+  for (const auto& [name, ms] : {std::pair{"parse", times.parse_ms},
+                                 {"device", times.device_ms},
+                                 {"compile", times.compile_ms},
+                                 {"upload", times.upload_ms}}) {
+    trace.add({name, "cpu", t * 1000.0, ms * 1000.0, 1});
+    t += ms;
   }
-  if (options.watch) {
-    std::fflush(stdout);
-    runtime::WatchOptions watch{graph_path, scene_path, options.output, options.out,
-                                options.watch_seconds};
-    const int code = runtime::run_watch_loop(session, watch);
-    if (code != runtime::kExitOk) return code;
-  }
+  trace.write(path);
+}
+
+// After a successful render: validation errors, then --werror's warnings, decide.
+int render_exit_code(runtime::RenderSession& session, const RenderOptions& options,
+                     const base::Diagnostics& diagnostics) {
   if (options.validation && session.gpu().validation_error_count() > 0) {
     std::fprintf(stderr, "antumbra render: %zu validation error(s)\n",
                  session.gpu().validation_error_count());
@@ -224,6 +232,72 @@ int run_render(const RenderOptions& options) {
     return runtime::kExitDiagnostics;
   }
   return runtime::kExitOk;
+}
+
+}  // namespace
+
+int run_render(const RenderOptions& options) {
+  unsigned width = 0;
+  unsigned height = 0;
+  if (!parse_size(options.size, width, height)) {
+    std::fprintf(stderr, "antumbra render: --size must be WxH with 1..16384, got \"%s\"\n",
+                 options.size.c_str());
+    return runtime::kExitUsage;
+  }
+  const runtime::DataPaths paths = runtime::find_data_paths();
+  RenderInputs inputs;
+  inputs.graph_path =
+      options.graph.empty() ? (paths.graphs() / "layered-ssss.json").string() : options.graph;
+  inputs.scene_path =
+      options.scene.empty() ? (paths.scenes() / "atrium.json").string() : options.scene;
+  gpu::CpuTimer stage;
+  const bool json = options.format == "json";
+  if (const int code = load_render_inputs(options, json, inputs); code != runtime::kExitOk) {
+    return code;
+  }
+  StageTimes times;
+  times.parse_ms = stage.elapsed_ms();
+
+  stage.restart();
+  runtime::RenderSession session(paths, session_options_for(options, width, height));
+  times.device_ms = stage.elapsed_ms();
+  if (!json) {
+    std::printf("device: %s%s\n", session.gpu().device_name().c_str(),
+                options.validation ? " (validation + synchronization validation on)" : "");
+  }
+
+  stage.restart();
+  const auto diagnostics = session.load_graph(inputs.graph);
+  if (diagnostics.has_errors()) {
+    return fail_render(diagnostics, graph_load_exit_code(diagnostics), json, inputs.graph_path);
+  }
+  print_diagnostics(diagnostics);
+  times.compile_ms = stage.elapsed_ms();
+
+  stage.restart();
+  session.set_scene(std::move(inputs.scene));
+  times.upload_ms = stage.elapsed_ms();
+
+  runtime::TraceWriter trace;
+  stage.restart();
+  session.render(options.frames, options.trace.empty() ? nullptr : &trace);
+  times.render_ms = stage.elapsed_ms();
+
+  stage.restart();
+  const std::string resource = output_resource(session).name;
+  write_render_images(session, options, resource);
+  times.write_ms = stage.elapsed_ms();
+
+  print_render_report(session, options, resource, diagnostics, times, json);
+  if (!options.trace.empty()) write_trace(trace, times, options.trace);
+  if (options.watch) {
+    std::fflush(stdout);
+    runtime::WatchOptions watch{inputs.graph_path, inputs.scene_path, options.output, options.out,
+                                options.watch_seconds};
+    const int code = runtime::run_watch_loop(session, watch);
+    if (code != runtime::kExitOk) return code;
+  }
+  return render_exit_code(session, options, diagnostics);
 }
 
 }  // namespace antumbra::app

@@ -482,25 +482,99 @@ std::string describe_step(const Json& step) {
   return s;
 }
 
+// Without --headless the edit runs in a window, which has no script.
+int run_windowed(const EditOptions& options) {
+  if (!options.script.empty()) {
+    std::fprintf(stderr, "antumbra edit: --script runs headless; add --headless\n");
+    return runtime::kExitUsage;
+  }
+  editor_app::WindowedOptions windowed{options.graph, options.scene, options.device,
+                                       options.validation, options.frames};
+  windowed.screenshot = options.out;
+  windowed.select = options.select;
+  windowed.frame_log = options.frame_log;
+  if (!parse_size(options.size, windowed.width, windowed.height)) {
+    std::fprintf(stderr, "antumbra edit: --size must be WxH, got \"%s\"\n", options.size.c_str());
+    return runtime::kExitUsage;
+  }
+  return editor_app::run_windowed_editor(windowed);
+}
+
+// The whole script before anything runs: a typo fails here, not silently later. Returns
+// the exit code of the failure, or kExitOk with `script` loaded.
+int load_script(const std::string& path, std::optional<base::JsonDocument>& script) {
+  auto loaded = base::load_json_file(path);
+  if (!loaded.ok()) {
+    print(loaded.diagnostics());
+    return runtime::exit_code_for(loaded.diagnostics());
+  }
+  const base::Diagnostics problems = editor::check_edit_script(loaded.value());
+  if (!problems.empty()) {
+    print(problems);
+    std::printf("%zu problem(s) in the script; nothing was run\n", problems.size());
+    return runtime::kExitDiagnostics;
+  }
+  script = std::move(loaded.value());
+  return runtime::kExitOk;
+}
+
+// Every step runs, even after one failed, so one run reports every broken step. Returns
+// how many failed.
+int run_script_steps(EditRun& run, const base::JsonDocument& script,
+                     const std::string& script_path) {
+  int failures = 0;
+  const auto& steps = script.root()["steps"];
+  for (std::size_t i = 0; i < steps.size(); ++i) {
+    const std::string pointer = "/steps/" + std::to_string(i);
+    const auto location = script.position(pointer);
+    std::printf("step %zu (%s:%d): %s\n", i, script_path.c_str(), location.line,
+                describe_step(steps[i]).c_str());
+    try {
+      run.run_step(steps[i]);
+    } catch (const StepError& e) {
+      ++failures;
+      std::printf("%s:%d:%d: error[%s]: step %zu failed: %s (at %s)\n", script_path.c_str(),
+                  location.line, location.column, codes::editor::kStepFailed, i, e.message.c_str(),
+                  pointer.c_str());
+    } catch (const Json::exception& e) {
+      ++failures;
+      std::printf("%s:%d:%d: error[%s]: step %zu is malformed: %s (at %s)\n", script_path.c_str(),
+                  location.line, location.column, codes::editor::kScriptMalformed, i, e.what(),
+                  pointer.c_str());
+    }
+    std::fflush(stdout);
+  }
+  return failures;
+}
+
+void write_graph_output(runtime::RenderSession& session, const std::string& path) {
+  session.write_image(session.executor()
+                          .plan()
+                          .resources.at(static_cast<std::size_t>(session.executor().plan().output))
+                          .name,
+                      path);
+}
+
+void print_edit_summary(const runtime::RenderSession& session, const EditRun& run, unsigned width,
+                        unsigned height, int failures) {
+  const auto timings = session.pass_timings();
+  double gpu_ms = 0.0;
+  for (const auto& t : timings) gpu_ms += t.gpu_ms;
+  std::printf(
+      "editor frame (%ux%u): %.2f ms wall median (edit + layer status + render + wait), "
+      "%.3f ms GPU (sum of pass medians)\n",
+      width, height, run.median_frame_ms(), gpu_ms);
+  for (const auto& file : run.unsaved()) {
+    std::printf("warning: unsaved changes to %s were not saved (no \"save\" step after them)\n",
+                file.c_str());
+  }
+  std::printf("%d step(s) failed\n", failures);
+}
+
 }  // namespace
 
 int run_edit(const EditOptions& options) {
-  if (!options.headless) {
-    if (!options.script.empty()) {
-      std::fprintf(stderr, "antumbra edit: --script runs headless; add --headless\n");
-      return runtime::kExitUsage;
-    }
-    editor_app::WindowedOptions windowed{options.graph, options.scene, options.device,
-                                         options.validation, options.frames};
-    windowed.screenshot = options.out;
-    windowed.select = options.select;
-    windowed.frame_log = options.frame_log;
-    if (!parse_size(options.size, windowed.width, windowed.height)) {
-      std::fprintf(stderr, "antumbra edit: --size must be WxH, got \"%s\"\n", options.size.c_str());
-      return runtime::kExitUsage;
-    }
-    return editor_app::run_windowed_editor(windowed);
-  }
+  if (!options.headless) return run_windowed(options);
   if (options.script.empty() && options.frames <= 0) {
     std::fprintf(stderr, "antumbra edit --headless needs --script FILE or --frames N\n");
     return runtime::kExitUsage;
@@ -520,19 +594,9 @@ int run_edit(const EditOptions& options) {
   // User input first: a bad script, scene or graph fails before the device starts.
   std::optional<base::JsonDocument> script;
   if (!options.script.empty()) {
-    auto loaded = base::load_json_file(options.script);
-    if (!loaded.ok()) {
-      print(loaded.diagnostics());
-      return runtime::exit_code_for(loaded.diagnostics());
+    if (const int code = load_script(options.script, script); code != runtime::kExitOk) {
+      return code;
     }
-    // The whole script before anything runs: a typo fails here, not silently later.
-    const base::Diagnostics problems = editor::check_edit_script(loaded.value());
-    if (!problems.empty()) {
-      print(problems);
-      std::printf("%zu problem(s) in the script; nothing was run\n", problems.size());
-      return runtime::kExitDiagnostics;
-    }
-    script = std::move(loaded.value());
   }
   const fgvk::PassRegistry registry = passes::builtin_pass_registry();
   auto lookup = editor::lookup_in(registry.reflection());
@@ -555,51 +619,10 @@ int run_edit(const EditOptions& options) {
       session, std::move(scene.value()), std::move(graph.value()), lookup,
       options.script.empty() ? fs::current_path() : fs::absolute(options.script).parent_path());
   if (!run.start()) return runtime::kExitDiagnostics;
-  int failures = 0;
-  if (script) {
-    const auto& steps = script->root()["steps"];
-    for (std::size_t i = 0; i < steps.size(); ++i) {
-      const std::string pointer = "/steps/" + std::to_string(i);
-      const auto location = script->position(pointer);
-      std::printf("step %zu (%s:%d): %s\n", i, options.script.c_str(), location.line,
-                  describe_step(steps[i]).c_str());
-      try {
-        run.run_step(steps[i]);
-      } catch (const StepError& e) {
-        ++failures;
-        std::printf("%s:%d:%d: error[%s]: step %zu failed: %s (at %s)\n", options.script.c_str(),
-                    location.line, location.column, codes::editor::kStepFailed, i,
-                    e.message.c_str(), pointer.c_str());
-      } catch (const Json::exception& e) {
-        ++failures;
-        std::printf("%s:%d:%d: error[%s]: step %zu is malformed: %s (at %s)\n",
-                    options.script.c_str(), location.line, location.column,
-                    codes::editor::kScriptMalformed, i, e.what(), pointer.c_str());
-      }
-      std::fflush(stdout);
-    }
-  }
+  const int failures = script ? run_script_steps(run, *script, options.script) : 0;
   if (options.frames > 0) run.render(options.frames);
-  if (!options.out.empty()) {
-    session.write_image(
-        session.executor()
-            .plan()
-            .resources.at(static_cast<std::size_t>(session.executor().plan().output))
-            .name,
-        options.out);
-  }
-  const auto timings = session.pass_timings();
-  double gpu_ms = 0.0;
-  for (const auto& t : timings) gpu_ms += t.gpu_ms;
-  std::printf(
-      "editor frame (%ux%u): %.2f ms wall median (edit + layer status + render + wait), "
-      "%.3f ms GPU (sum of pass medians)\n",
-      width, height, run.median_frame_ms(), gpu_ms);
-  for (const auto& file : run.unsaved()) {
-    std::printf("warning: unsaved changes to %s were not saved (no \"save\" step after them)\n",
-                file.c_str());
-  }
-  std::printf("%d step(s) failed\n", failures);
+  if (!options.out.empty()) write_graph_output(session, options.out);
+  print_edit_summary(session, run, width, height, failures);
   return failures == 0 ? runtime::kExitOk : runtime::kExitDiagnostics;
 }
 

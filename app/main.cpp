@@ -13,6 +13,29 @@
 
 namespace {
 
+// The spellings of `plan --format` from before the option existed.
+struct DeprecatedPlanFlags {
+  bool dot = false;
+  bool json = false;
+  bool text = false;
+};
+
+int run_plan_with_deprecated_flags(antumbra::app::PlanOptions plan,
+                                   const DeprecatedPlanFlags& flags, bool format_given) {
+  const char* flag = flags.dot ? "dot" : (flags.text ? "text" : (flags.json ? "json" : nullptr));
+  if (flag != nullptr) {
+    // Silently letting one of two contradicting choices win would hide a script's bug.
+    if (format_given && plan.format != flag) {
+      std::fprintf(stderr, "antumbra plan: --%s contradicts --format %s\n", flag,
+                   plan.format.c_str());
+      return antumbra::runtime::kExitUsage;
+    }
+    std::fprintf(stderr, "antumbra plan: --%s is deprecated; use --format %s\n", flag, flag);
+    plan.format = flag;
+  }
+  return antumbra::app::run_plan(plan);
+}
+
 int dispatch(int argc, char** argv) {
   using namespace antumbra::app;
   CLI::App cli{"Antumbra: a JSON frame graph for many-light soft shadows on Vulkan 1.3"};
@@ -66,12 +89,10 @@ int dispatch(int argc, char** argv) {
   // The spellings from before --format, kept so that existing scripts keep working.
   auto* plan_format =
       plan_cmd->add_option_group("deprecated", "Spellings of --format kept for old scripts");
-  bool plan_dot = false;
-  bool plan_json = false;
-  bool plan_text = false;
-  plan_format->add_flag("--dot", plan_dot, "Same as --format dot (deprecated)");
-  plan_format->add_flag("--json", plan_json, "Same as --format json (deprecated)");
-  plan_format->add_flag("--text", plan_text, "Same as --format text (deprecated)");
+  DeprecatedPlanFlags plan_flags;
+  plan_format->add_flag("--dot", plan_flags.dot, "Same as --format dot (deprecated)");
+  plan_format->add_flag("--json", plan_flags.json, "Same as --format json (deprecated)");
+  plan_format->add_flag("--text", plan_flags.text, "Same as --format text (deprecated)");
   plan_format->require_option(0, 1);
   plan_cmd->add_option("--size", plan.size, "Viewport WxH the plan is compiled for")
       ->capture_default_str();
@@ -183,18 +204,7 @@ int dispatch(int argc, char** argv) {
   if (render_cmd->parsed()) return run_render(render);
   if (validate_cmd->parsed()) return run_validate(validate);
   if (plan_cmd->parsed()) {
-    const char* flag = plan_dot ? "dot" : (plan_text ? "text" : (plan_json ? "json" : nullptr));
-    if (flag != nullptr) {
-      // Silently letting one of two contradicting choices win would hide a script's bug.
-      if (plan_cmd->count("--format") > 0 && plan.format != flag) {
-        std::fprintf(stderr, "antumbra plan: --%s contradicts --format %s\n", flag,
-                     plan.format.c_str());
-        return antumbra::runtime::kExitUsage;
-      }
-      std::fprintf(stderr, "antumbra plan: --%s is deprecated; use --format %s\n", flag, flag);
-      plan.format = flag;
-    }
-    return run_plan(plan);
+    return run_plan_with_deprecated_flags(plan, plan_flags, plan_cmd->count("--format") > 0);
   }
   if (passes_cmd->parsed()) return run_passes(passes);
   if (devices_cmd->parsed()) return run_devices(devices_device, devices_validation);

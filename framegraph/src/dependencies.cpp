@@ -24,6 +24,113 @@ void normalize(std::vector<DepEdge>& edges) {
   edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
 }
 
+// What the walk over the passes, in file order, knows of each resource so far.
+struct AccessState {
+  std::vector<int> last_writer;
+  std::vector<std::vector<int>> readers;  // readers since the last write
+  std::vector<DepEdge> persistent_reads;  // reads of last frame's contents
+};
+
+// Says who writes a resource after pass `i` reads it, if anyone: the fix is usually to
+// reorder.
+std::string later_writer_hint(const GraphDesc& graph, const std::vector<ResolvedPass>& passes,
+                              std::size_t i, int resource) {
+  std::string hint;
+  for (std::size_t j = i + 1; j < passes.size() && hint.empty(); ++j) {
+    for (const BoundPort& w : passes[j].writes) {
+      if (w.resource == resource && passes[j].enabled) {
+        hint = "; " + quote_name(graph.passes[j].name) +
+               " writes it later (move it earlier, or make the resource persistent to read "
+               "the previous "
+               "frame)";
+        break;
+      }
+    }
+  }
+  return hint;
+}
+
+void add_read_edges(const GraphDesc& graph, const std::vector<ResolvedPass>& passes, std::size_t i,
+                    AccessState& access, std::vector<DepEdge>& edges, Diagnostics& diags) {
+  const int to = static_cast<int>(i);
+  for (const BoundPort& read : passes[i].reads) {
+    const auto r = static_cast<std::size_t>(read.resource);
+    if (access.last_writer[r] >= 0) {
+      add_edge(edges, {access.last_writer[r], to, EdgeKind::read_after_write, read.resource});
+    } else if (graph.resources[r].persistent) {
+      access.persistent_reads.push_back({-1, to, EdgeKind::read_after_write, read.resource});
+    } else {
+      const std::string hint = later_writer_hint(graph, passes, i, read.resource);
+      diags.add(graph.document.make(codes::kReadNeverWritten, Severity::error,
+                                    "pass " + quote_name(graph.passes[i].name) + " reads " +
+                                        quote_name(graph.resources[r].name) +
+                                        " but no earlier pass writes it" + hint,
+                                    read.pointer));
+    }
+    access.readers[r].push_back(to);
+  }
+}
+
+void add_write_edges(const ResolvedPass& rp, int to, AccessState& access,
+                     std::vector<DepEdge>& edges) {
+  for (const BoundPort& write : rp.writes) {
+    const auto r = static_cast<std::size_t>(write.resource);
+    if (access.last_writer[r] >= 0)
+      add_edge(edges, {access.last_writer[r], to, EdgeKind::write_after_write, write.resource});
+    for (int reader : access.readers[r]) {
+      if (reader != to) add_edge(edges, {reader, to, EdgeKind::write_after_read, write.resource});
+    }
+    access.readers[r].clear();
+    access.last_writer[r] = to;
+  }
+}
+
+// A persistent read consumes what the frame's last writer left behind.
+void link_persistent_reads(const GraphDesc& graph, const std::vector<ResolvedPass>& passes,
+                           const AccessState& access, std::vector<DepEdge>& previous_frame,
+                           Diagnostics& diags) {
+  for (DepEdge e : access.persistent_reads) {
+    const auto r = static_cast<std::size_t>(e.resource);
+    if (access.last_writer[r] < 0) {
+      const auto& pass = graph.passes[static_cast<std::size_t>(e.to)];
+      const auto* read = &passes[static_cast<std::size_t>(e.to)].reads.front();
+      for (const auto& b : passes[static_cast<std::size_t>(e.to)].reads) {
+        if (b.resource == e.resource) read = &b;
+      }
+      diags.add(graph.document.make(codes::kReadNeverWritten, Severity::error,
+                                    "pass " + quote_name(pass.name) + " reads persistent " +
+                                        quote_name(graph.resources[r].name) +
+                                        " but no pass ever writes it",
+                                    read->pointer));
+      continue;
+    }
+    e.from = access.last_writer[r];
+    add_edge(previous_frame, e);
+  }
+}
+
+// Explicit ordering: "after": ["x"] makes x run first.
+void add_after_edges(const GraphDesc& graph, const std::vector<ResolvedPass>& passes,
+                     std::vector<DepEdge>& edges, Diagnostics& diags) {
+  std::vector<std::string> names;
+  for (const auto& p : graph.passes) names.push_back(p.name);
+  for (std::size_t i = 0; i < passes.size(); ++i) {
+    if (!passes[i].enabled) continue;
+    const auto& pass = graph.passes[i];
+    for (std::size_t k = 0; k < pass.after.size(); ++k) {
+      const int j = graph.find_pass(pass.after[k]);
+      if (j < 0) {
+        diags.add(graph.document.make(codes::kUnknownAfter, Severity::error,
+                                      "\"after\" names unknown pass " + quote_name(pass.after[k]) +
+                                          did_you_mean(pass.after[k], names),
+                                      pointer_append(pass.pointer + "/after", k)));
+      } else if (passes[static_cast<std::size_t>(j)].enabled) {
+        add_edge(edges, {j, static_cast<int>(i), EdgeKind::after, -1});
+      }
+    }
+  }
+}
+
 }  // namespace
 
 std::string_view to_string(EdgeKind kind) {
@@ -44,91 +151,14 @@ DependencyGraph build_dependencies(const GraphDesc& graph, const std::vector<Res
                                    Diagnostics& diags) {
   DependencyGraph deps;
   const std::size_t n_res = graph.resources.size();
-  std::vector<int> last_writer(n_res, -1);
-  std::vector<std::vector<int>> readers(n_res);  // readers since the last write
-  std::vector<DepEdge> persistent_reads;         // reads of last frame's contents
-
-  for (std::size_t i = 0; i < passes.size(); ++i) {
-    const ResolvedPass& rp = passes[i];
-    if (!rp.enabled) continue;
-    const int to = static_cast<int>(i);
-    for (const BoundPort& read : rp.reads) {
-      const auto r = static_cast<std::size_t>(read.resource);
-      if (last_writer[r] >= 0) {
-        add_edge(deps.edges, {last_writer[r], to, EdgeKind::read_after_write, read.resource});
-      } else if (graph.resources[r].persistent) {
-        persistent_reads.push_back({-1, to, EdgeKind::read_after_write, read.resource});
-      } else {
-        // Say who writes it later, if anyone: the fix is usually to reorder.
-        std::string hint;
-        for (std::size_t j = i + 1; j < passes.size() && hint.empty(); ++j) {
-          for (const BoundPort& w : passes[j].writes) {
-            if (w.resource == read.resource && passes[j].enabled) {
-              hint = "; " + quote_name(graph.passes[j].name) +
-                     " writes it later (move it earlier, or make the resource persistent to read "
-                     "the previous "
-                     "frame)";
-              break;
-            }
-          }
-        }
-        diags.add(graph.document.make(codes::kReadNeverWritten, Severity::error,
-                                      "pass " + quote_name(graph.passes[i].name) + " reads " +
-                                          quote_name(graph.resources[r].name) +
-                                          " but no earlier pass writes it" + hint,
-                                      read.pointer));
-      }
-      readers[r].push_back(to);
-    }
-    for (const BoundPort& write : rp.writes) {
-      const auto r = static_cast<std::size_t>(write.resource);
-      if (last_writer[r] >= 0)
-        add_edge(deps.edges, {last_writer[r], to, EdgeKind::write_after_write, write.resource});
-      for (int reader : readers[r]) {
-        if (reader != to)
-          add_edge(deps.edges, {reader, to, EdgeKind::write_after_read, write.resource});
-      }
-      readers[r].clear();
-      last_writer[r] = to;
-    }
-  }
-  // A persistent read consumes what the frame's last writer left behind.
-  for (DepEdge e : persistent_reads) {
-    const auto r = static_cast<std::size_t>(e.resource);
-    if (last_writer[r] < 0) {
-      const auto& pass = graph.passes[static_cast<std::size_t>(e.to)];
-      const auto* read = &passes[static_cast<std::size_t>(e.to)].reads.front();
-      for (const auto& b : passes[static_cast<std::size_t>(e.to)].reads) {
-        if (b.resource == e.resource) read = &b;
-      }
-      diags.add(graph.document.make(codes::kReadNeverWritten, Severity::error,
-                                    "pass " + quote_name(pass.name) + " reads persistent " +
-                                        quote_name(graph.resources[r].name) +
-                                        " but no pass ever writes it",
-                                    read->pointer));
-      continue;
-    }
-    e.from = last_writer[r];
-    add_edge(deps.previous_frame, e);
-  }
-  // Explicit ordering: "after": ["x"] makes x run first.
-  std::vector<std::string> names;
-  for (const auto& p : graph.passes) names.push_back(p.name);
+  AccessState access{std::vector<int>(n_res, -1), std::vector<std::vector<int>>(n_res), {}};
   for (std::size_t i = 0; i < passes.size(); ++i) {
     if (!passes[i].enabled) continue;
-    const auto& pass = graph.passes[i];
-    for (std::size_t k = 0; k < pass.after.size(); ++k) {
-      const int j = graph.find_pass(pass.after[k]);
-      if (j < 0) {
-        diags.add(graph.document.make(codes::kUnknownAfter, Severity::error,
-                                      "\"after\" names unknown pass " + quote_name(pass.after[k]) +
-                                          did_you_mean(pass.after[k], names),
-                                      pointer_append(pass.pointer + "/after", k)));
-      } else if (passes[static_cast<std::size_t>(j)].enabled) {
-        add_edge(deps.edges, {j, static_cast<int>(i), EdgeKind::after, -1});
-      }
-    }
+    add_read_edges(graph, passes, i, access, deps.edges, diags);
+    add_write_edges(passes[i], static_cast<int>(i), access, deps.edges);
   }
+  link_persistent_reads(graph, passes, access, deps.previous_frame, diags);
+  add_after_edges(graph, passes, deps.edges, diags);
   normalize(deps.edges);
   normalize(deps.previous_frame);
   return deps;

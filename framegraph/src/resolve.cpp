@@ -92,6 +92,172 @@ std::string format_list(const std::vector<Format>& formats) {
   return join(names);
 }
 
+// The pass whose ports are being bound: what its errors name and where they go.
+struct BindingContext {
+  const GraphDesc& graph;
+  const PassInstanceDesc& pass;
+  const PassDesc& desc;
+  const std::vector<std::string>& resource_names;  // for "did you mean"
+  Diagnostics& diags;
+
+  void error(const char* code, const std::string& message, const std::string& pointer,
+             bool at_key = false) const {
+    diags.add(graph.document.make(code, Severity::error, message, pointer, at_key));
+  }
+};
+
+// The port a binding names, when the pass type has it on that side; else nothing (the
+// error reported).
+const PortDesc* find_bound_port(const BindingContext& context, const PortBindingDesc& b,
+                                PortDirection direction) {
+  const bool input = direction == PortDirection::input;
+  const PortDesc* port = context.desc.find_port(b.port);
+  if (port == nullptr) {
+    const auto same_side = port_names(context.desc, direction);
+    context.error(codes::kUnknownPort,
+                  "pass type " + quote_name(context.pass.type) + " has no " +
+                      (input ? "input" : "output") + " port " + quote_name(b.port) +
+                      did_you_mean(b.port, same_side) +
+                      (same_side.empty() ? "" : " (ports: " + join(same_side) + ")"),
+                  b.pointer, true);
+    return nullptr;
+  }
+  if (port->direction != direction) {
+    context.error(codes::kPortDirection,
+                  quote_name(b.port) + " is an " + (input ? "output" : "input") + " port of " +
+                      quote_name(context.pass.type) + "; list it under \"" +
+                      (input ? "out" : "in") + "\"",
+                  b.pointer, true);
+    return nullptr;
+  }
+  return port;
+}
+
+// Whether an image port takes the resource's format and layer count; every mismatch is
+// reported, not only the first.
+bool image_fits_port(const BindingContext& context, const PortDesc& port, const ResourceDesc& res,
+                     const std::string& pointer) {
+  const std::string& type = context.pass.type;
+  bool ok = true;
+  if (res.kind == ResourceKind::image && !port.formats.empty() &&
+      std::find(port.formats.begin(), port.formats.end(), res.format) == port.formats.end()) {
+    context.error(codes::kFormatRejected,
+                  "port " + quote_name(port.name) + " of " + quote_name(type) +
+                      " does not accept format " + quote_name(to_string(res.format)) + " of " +
+                      quote_name(res.name) + " (accepts " + format_list(port.formats) + ")",
+                  pointer);
+    ok = false;
+  }
+  if (res.kind == ResourceKind::image &&
+      (res.layers < port.min_layers || (port.max_layers != 0 && res.layers > port.max_layers))) {
+    context.error(
+        codes::kLayersRejected,
+        "port " + quote_name(port.name) + " of " + quote_name(type) + " takes " +
+            std::to_string(port.min_layers) + ".." +
+            (port.max_layers == 0 ? std::string("any") : std::to_string(port.max_layers)) +
+            " layers, but " + quote_name(res.name) + " has " + std::to_string(res.layers),
+        pointer);
+    ok = false;
+  }
+  return ok;
+}
+
+// Binds the "in" or "out" list of the pass; a binding with an error is left out.
+void bind_list(const BindingContext& context, const std::vector<PortBindingDesc>& list,
+               PortDirection direction, std::vector<BoundPort>& target) {
+  const GraphDesc& graph = context.graph;
+  for (const PortBindingDesc& b : list) {
+    const PortDesc* port = find_bound_port(context, b, direction);
+    if (port == nullptr) continue;
+    const int r = graph.find_resource(b.resource);
+    if (r < 0) {
+      context.error(codes::kUnknownResource,
+                    "unknown resource " + quote_name(b.resource) +
+                        did_you_mean(b.resource, context.resource_names),
+                    b.pointer);
+      continue;
+    }
+    const ResourceDesc& res = graph.resources[static_cast<std::size_t>(r)];
+    if (res.kind != port->kind) {
+      context.error(codes::kPortKind,
+                    "port " + quote_name(port->name) + " of " + quote_name(context.pass.type) +
+                        " takes an " + std::string(to_string(port->kind)) + " but " +
+                        quote_name(res.name) + " is a " + std::string(to_string(res.kind)),
+                    b.pointer);
+      continue;
+    }
+    if (image_fits_port(context, *port, res, b.pointer)) {
+      target.push_back(BoundPort{port, r, b.pointer});
+    }
+  }
+}
+
+// Every required port needs a resource (unknown ones were reported while binding).
+void check_required_ports(const BindingContext& context) {
+  const PassInstanceDesc& pass = context.pass;
+  for (const PortDesc& port : context.desc.ports) {
+    const bool input = port.direction == PortDirection::input;
+    const auto& list = input ? pass.inputs : pass.outputs;
+    const bool named =
+        std::any_of(list.begin(), list.end(), [&](const auto& b) { return b.port == port.name; });
+    if (port.optional || named) continue;
+    context.error(codes::kPortUnbound,
+                  "pass " + quote_name(pass.name) + " (" + pass.type + ") leaves required " +
+                      (input ? "input" : "output") + " port " + quote_name(port.name) + " unbound",
+                  pass.pointer + (input ? "/in" : "/out"));
+  }
+}
+
+// A pass must not write one resource twice, nor read what it writes.
+void check_write_conflicts(const BindingContext& context, const ResolvedPass& rp) {
+  const PassInstanceDesc& pass = context.pass;
+  for (std::size_t w = 0; w < rp.writes.size(); ++w) {
+    const std::string& name =
+        context.graph.resources[static_cast<std::size_t>(rp.writes[w].resource)].name;
+    for (std::size_t v = 0; v < w; ++v) {
+      if (rp.writes[v].resource == rp.writes[w].resource) {
+        context.error(codes::kDoubleWrite,
+                      "pass " + quote_name(pass.name) + " writes " + quote_name(name) +
+                          " through both " + quote_name(rp.writes[v].port->name) + " and " +
+                          quote_name(rp.writes[w].port->name),
+                      rp.writes[w].pointer);
+      }
+    }
+    for (const BoundPort& read : rp.reads) {
+      if (read.resource == rp.writes[w].resource) {
+        context.error(codes::kReadWriteSamePass,
+                      "pass " + quote_name(pass.name) + " reads " + quote_name(name) + " through " +
+                          quote_name(read.port->name) + " and writes it through " +
+                          quote_name(rp.writes[w].port->name) +
+                          "; use a second resource (ping-pong)",
+                      rp.writes[w].pointer);
+      }
+    }
+  }
+}
+
+// Attachments rendered together must have one size.
+void check_size_groups(const BindingContext& context, const ResolvedPass& rp) {
+  const auto& resources = context.graph.resources;
+  std::map<std::string, const BoundPort*> groups;
+  for (const auto* list : {&rp.reads, &rp.writes}) {
+    for (const BoundPort& b : *list) {
+      if (b.port->size_group.empty()) continue;
+      auto [it, inserted] = groups.emplace(b.port->size_group, &b);
+      if (inserted) continue;
+      const ResourceDesc& first = resources[static_cast<std::size_t>(it->second->resource)];
+      const ResourceDesc& res = resources[static_cast<std::size_t>(b.resource)];
+      if (!(first.size == res.size)) {
+        context.error(codes::kSizeMismatch,
+                      "attachments of size group " + quote_name(b.port->size_group) +
+                          " differ: " + quote_name(res.name) + " is " + describe_size(res.size) +
+                          " but " + quote_name(first.name) + " is " + describe_size(first.size),
+                      b.pointer);
+      }
+    }
+  }
+}
+
 }  // namespace
 
 std::vector<ResolvedPass> resolve_passes(const GraphDesc& graph, const Registry& registry,
@@ -140,140 +306,20 @@ std::vector<ResolvedPass> resolve_passes(const GraphDesc& graph, const Registry&
 }
 
 void bind_ports(const GraphDesc& graph, std::vector<ResolvedPass>& passes, Diagnostics& diags) {
-  const JsonDocument& doc = graph.document;
   std::vector<std::string> resource_names;
   for (const auto& r : graph.resources) resource_names.push_back(r.name);
 
   for (ResolvedPass& rp : passes) {
     if (rp.desc == nullptr) continue;
-    const PassInstanceDesc& pass = graph.passes[static_cast<std::size_t>(rp.source_index)];
-    const PassDesc& desc = *rp.desc;
-    const auto error = [&](const char* code, const std::string& message, const std::string& pointer,
-                           bool at_key = false) {
-      diags.add(doc.make(code, Severity::error, message, pointer, at_key));
-    };
-    const auto bind = [&](const std::vector<PortBindingDesc>& list, PortDirection direction,
-                          std::vector<BoundPort>& target) {
-      const bool input = direction == PortDirection::input;
-      for (const PortBindingDesc& b : list) {
-        const PortDesc* port = desc.find_port(b.port);
-        if (port == nullptr) {
-          const auto same_side = port_names(desc, direction);
-          error(codes::kUnknownPort,
-                "pass type " + quote_name(pass.type) + " has no " + (input ? "input" : "output") +
-                    " port " + quote_name(b.port) + did_you_mean(b.port, same_side) +
-                    (same_side.empty() ? "" : " (ports: " + join(same_side) + ")"),
-                b.pointer, true);
-          continue;
-        }
-        if (port->direction != direction) {
-          error(codes::kPortDirection,
-                quote_name(b.port) + " is an " + (input ? "output" : "input") + " port of " +
-                    quote_name(pass.type) + "; list it under \"" + (input ? "out" : "in") + "\"",
-                b.pointer, true);
-          continue;
-        }
-        const int r = graph.find_resource(b.resource);
-        if (r < 0) {
-          error(codes::kUnknownResource,
-                "unknown resource " + quote_name(b.resource) +
-                    did_you_mean(b.resource, resource_names),
-                b.pointer);
-          continue;
-        }
-        const ResourceDesc& res = graph.resources[static_cast<std::size_t>(r)];
-        if (res.kind != port->kind) {
-          error(codes::kPortKind,
-                "port " + quote_name(port->name) + " of " + quote_name(pass.type) + " takes an " +
-                    std::string(to_string(port->kind)) + " but " + quote_name(res.name) + " is a " +
-                    std::string(to_string(res.kind)),
-                b.pointer);
-          continue;
-        }
-        bool ok = true;
-        if (res.kind == ResourceKind::image && !port->formats.empty() &&
-            std::find(port->formats.begin(), port->formats.end(), res.format) ==
-                port->formats.end()) {
-          error(codes::kFormatRejected,
-                "port " + quote_name(port->name) + " of " + quote_name(pass.type) +
-                    " does not accept format " + quote_name(to_string(res.format)) + " of " +
-                    quote_name(res.name) + " (accepts " + format_list(port->formats) + ")",
-                b.pointer);
-          ok = false;
-        }
-        if (res.kind == ResourceKind::image &&
-            (res.layers < port->min_layers ||
-             (port->max_layers != 0 && res.layers > port->max_layers))) {
-          error(
-              codes::kLayersRejected,
-              "port " + quote_name(port->name) + " of " + quote_name(pass.type) + " takes " +
-                  std::to_string(port->min_layers) + ".." +
-                  (port->max_layers == 0 ? std::string("any") : std::to_string(port->max_layers)) +
-                  " layers, but " + quote_name(res.name) + " has " + std::to_string(res.layers),
-              b.pointer);
-          ok = false;
-        }
-        if (ok) target.push_back(BoundPort{port, r, b.pointer});
-      }
-    };
+    const BindingContext context{graph, graph.passes[static_cast<std::size_t>(rp.source_index)],
+                                 *rp.desc, resource_names, diags};
     rp.reads.clear();
     rp.writes.clear();
-    bind(pass.inputs, PortDirection::input, rp.reads);
-    bind(pass.outputs, PortDirection::output, rp.writes);
-
-    // Every required port needs a resource (unknown ones were reported above).
-    for (const PortDesc& port : desc.ports) {
-      const bool input = port.direction == PortDirection::input;
-      const auto& list = input ? pass.inputs : pass.outputs;
-      const bool named =
-          std::any_of(list.begin(), list.end(), [&](const auto& b) { return b.port == port.name; });
-      if (port.optional || named) continue;
-      error(codes::kPortUnbound,
-            "pass " + quote_name(pass.name) + " (" + pass.type + ") leaves required " +
-                (input ? "input" : "output") + " port " + quote_name(port.name) + " unbound",
-            pass.pointer + (input ? "/in" : "/out"));
-    }
-    // A pass must not write one resource twice, nor read what it writes.
-    for (std::size_t w = 0; w < rp.writes.size(); ++w) {
-      const std::string& name =
-          graph.resources[static_cast<std::size_t>(rp.writes[w].resource)].name;
-      for (std::size_t v = 0; v < w; ++v) {
-        if (rp.writes[v].resource == rp.writes[w].resource) {
-          error(codes::kDoubleWrite,
-                "pass " + quote_name(pass.name) + " writes " + quote_name(name) + " through both " +
-                    quote_name(rp.writes[v].port->name) + " and " +
-                    quote_name(rp.writes[w].port->name),
-                rp.writes[w].pointer);
-        }
-      }
-      for (const BoundPort& read : rp.reads) {
-        if (read.resource == rp.writes[w].resource) {
-          error(codes::kReadWriteSamePass,
-                "pass " + quote_name(pass.name) + " reads " + quote_name(name) + " through " +
-                    quote_name(read.port->name) + " and writes it through " +
-                    quote_name(rp.writes[w].port->name) + "; use a second resource (ping-pong)",
-                rp.writes[w].pointer);
-        }
-      }
-    }
-    // Attachments rendered together must have one size.
-    std::map<std::string, const BoundPort*> groups;
-    for (const auto* list : {&rp.reads, &rp.writes}) {
-      for (const BoundPort& b : *list) {
-        if (b.port->size_group.empty()) continue;
-        auto [it, inserted] = groups.emplace(b.port->size_group, &b);
-        if (inserted) continue;
-        const ResourceDesc& first = graph.resources[static_cast<std::size_t>(it->second->resource)];
-        const ResourceDesc& res = graph.resources[static_cast<std::size_t>(b.resource)];
-        if (!(first.size == res.size)) {
-          error(codes::kSizeMismatch,
-                "attachments of size group " + quote_name(b.port->size_group) +
-                    " differ: " + quote_name(res.name) + " is " + describe_size(res.size) +
-                    " but " + quote_name(first.name) + " is " + describe_size(first.size),
-                b.pointer);
-        }
-      }
-    }
+    bind_list(context, context.pass.inputs, PortDirection::input, rp.reads);
+    bind_list(context, context.pass.outputs, PortDirection::output, rp.writes);
+    check_required_ports(context);
+    check_write_conflicts(context, rp);
+    check_size_groups(context, rp);
   }
 }
 

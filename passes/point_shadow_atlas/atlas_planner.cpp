@@ -13,6 +13,28 @@ void AtlasPlanner::invalidate() {
   for (auto& layer : layers_) layer.valid = false;
 }
 
+namespace {
+
+// The light as the shaders read it, before the planner gives it layers (params.z) and
+// fits the sun's box.
+ShadowLight shadow_light(const scene::PointLight& light, float range, float near) {
+  ShadowLight out{};
+  out.position_range = glm::vec4(light.position, range);
+  out.params = glm::vec4(light.size, near, -1.0f, 0.0f);
+  out.direction_type = glm::vec4(light.direction, kLightTypePoint);
+  if (light.type == scene::LightType::spot) {
+    out.direction_type.w = kLightTypeSpot;
+    out.projection.x = light_faces::spot_tan_half_fov(light.spot_outer);
+  } else if (light.type == scene::LightType::directional) {
+    // Sun size is an angular radius in degrees; penumbrae use its tangent.
+    out.direction_type.w = kLightTypeDirectional;
+    out.params = glm::vec4(std::tan(glm::radians(light.size)), 0.0f, -1.0f, 0.0f);
+  }
+  return out;
+}
+
+}  // namespace
+
 const AtlasFrame& AtlasPlanner::plan(const scene::Scene& scene, const glm::mat4& camera_view_proj,
                                      std::uint64_t geometry_version, std::uint32_t frame_index,
                                      const AtlasSettings& settings) {
@@ -41,17 +63,7 @@ const AtlasFrame& AtlasPlanner::plan(const scene::Scene& scene, const glm::mat4&
     const bool directional = light.type == scene::LightType::directional;
     const float range = directional ? 0.0f : light.range;
     const float near = std::min(settings.near_plane, 0.5f * range);
-    out.position_range = glm::vec4(light.position, range);
-    out.params = glm::vec4(light.size, near, -1.0f, 0.0f);
-    out.direction_type = glm::vec4(light.direction, kLightTypePoint);
-    if (light.type == scene::LightType::spot) {
-      out.direction_type.w = kLightTypeSpot;
-      out.projection.x = lf::spot_tan_half_fov(light.spot_outer);
-    } else if (directional) {
-      // Sun size is an angular radius in degrees; penumbrae use its tangent.
-      out.direction_type.w = kLightTypeDirectional;
-      out.params = glm::vec4(std::tan(glm::radians(light.size)), 0.0f, -1.0f, 0.0f);
-    }
+    out = shadow_light(light, range, near);
     if (!light.casts_shadows) continue;
     const std::uint32_t face_count = light.type == scene::LightType::point ? sf::kFaceCount : 1u;
     if (next_layer + face_count > layer_count) {
@@ -79,7 +91,6 @@ const AtlasFrame& AtlasPlanner::plan(const scene::Scene& scene, const glm::mat4&
     }
     for (std::uint32_t face = 0; face < face_count; ++face) {
       const std::uint32_t layer = first + face;
-      LayerState& state = layers_[layer];
       ShadowFace& out_face = frame_.faces[layer];
       if (light.type == scene::LightType::point) {
         out_face.view_proj = sf::face_view_proj(light.position, face, near, light.range);
@@ -88,26 +99,8 @@ const AtlasFrame& AtlasPlanner::plan(const scene::Scene& scene, const glm::mat4&
             lf::spot_view_proj(light.position, light.direction, out.projection.x, near, range);
       }
       out_face.info = {i, face, 0u, 0u};
-      ++frame_.stats.total;
-      const FaceKey key{out_face.view_proj, geometry_version};
-      const bool current = settings.cache && state.valid && state.key == key;
-      if ((visible & (1u << face)) == 0u) {
-        // Not drawn: the layer keeps whatever it held, valid only if it still matches.
-        ++frame_.stats.culled;
-        state.valid = state.valid && state.key == key;
-        out_face.info.z = state.valid ? 1u : 0u;
-        continue;
-      }
-      out_face.info.z = 1u;
-      if (current) {
-        ++frame_.stats.cached;
-        continue;
-      }
-      ++frame_.stats.rendered;
-      frame_.render_layers.push_back(layer);
-      out_face.info.w = 1u;  // consumers that cache derived data redo this layer
-      state.valid = true;
-      state.key = key;
+      plan_layer(layer, (visible & (1u << face)) != 0u,
+                 FaceKey{out_face.view_proj, geometry_version}, settings.cache);
     }
   }
   // Layers no light owns this frame hold nothing useful any more.
@@ -115,6 +108,31 @@ const AtlasFrame& AtlasPlanner::plan(const scene::Scene& scene, const glm::mat4&
     layers_[layer].valid = false;
   }
   return frame_;
+}
+
+// Static caching: a visible face is drawn only when its layer does not hold it already.
+void AtlasPlanner::plan_layer(std::uint32_t layer, bool visible, const FaceKey& key, bool cache) {
+  LayerState& state = layers_[layer];
+  ShadowFace& out_face = frame_.faces[layer];
+  ++frame_.stats.total;
+  const bool current = cache && state.valid && state.key == key;
+  if (!visible) {
+    // Not drawn: the layer keeps whatever it held, valid only if it still matches.
+    ++frame_.stats.culled;
+    state.valid = state.valid && state.key == key;
+    out_face.info.z = state.valid ? 1u : 0u;
+    return;
+  }
+  out_face.info.z = 1u;
+  if (current) {
+    ++frame_.stats.cached;
+    return;
+  }
+  ++frame_.stats.rendered;
+  frame_.render_layers.push_back(layer);
+  out_face.info.w = 1u;  // consumers that cache derived data redo this layer
+  state.valid = true;
+  state.key = key;
 }
 
 }  // namespace antumbra::passes

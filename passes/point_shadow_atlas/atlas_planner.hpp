@@ -70,6 +70,8 @@ class AtlasPlanner {
     bool valid = false;
     FaceKey key;
   };
+  // Decides whether one face's layer is drawn, kept (cached) or left (culled) this frame.
+  void plan_layer(std::uint32_t layer, bool visible, const FaceKey& key, bool cache);
   std::vector<LayerState> layers_;
   bool contents_known_ = false;
   AtlasFrame frame_;

@@ -128,6 +128,18 @@ void PointShadowAtlasPass::prepare(fgvk::PrepareContext& context) {
             .build(context.gpu, context.pass.name + ".colour");
   }
 
+  create_layer_views(context, atlas, colour);
+  planner_.invalidate();
+  drawing_key_ = key.value();
+  atlas_image_ = atlas.image;
+  colour_image_ = colour != nullptr ? colour->image : VK_NULL_HANDLE;
+}
+
+// Without gl_Layer from the vertex stage each face is its own rendering, which needs a
+// view of its one layer.
+void PointShadowAtlasPass::create_layer_views(fgvk::PrepareContext& context,
+                                              const fgvk::BoundImage& atlas,
+                                              const fgvk::BoundImage* colour) {
   depth_layer_views_.clear();
   colour_layer_views_.clear();
   if (!layered_) {
@@ -142,10 +154,6 @@ void PointShadowAtlasPass::prepare(fgvk::PrepareContext& context) {
       }
     }
   }
-  planner_.invalidate();
-  drawing_key_ = key.value();
-  atlas_image_ = atlas.image;
-  colour_image_ = colour != nullptr ? colour->image : VK_NULL_HANDLE;
 }
 
 void PointShadowAtlasPass::adopt(fgvk::Pass& previous) {

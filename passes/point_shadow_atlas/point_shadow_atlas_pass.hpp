@@ -56,6 +56,8 @@ class PointShadowAtlasPass final : public fgvk::Pass {
     gpu::Buffer draws;    // FaceDraw per face to render (shadow_atlas.vert)
     gpu::Buffer staging;  // shadowData contents, copied into the graph buffer
   };
+  void create_layer_views(fgvk::PrepareContext& context, const fgvk::BoundImage& atlas,
+                          const fgvk::BoundImage* colour);
   void upload(fgvk::ExecuteContext& context, const AtlasFrame& frame, SlotBuffers& slot);
   // Which shadowed lights have a translucent caster within range (their colour layers
   // are kept; the others are never cleared nor read).

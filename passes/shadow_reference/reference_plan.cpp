@@ -169,6 +169,140 @@ SunFit fit_sun(const glm::vec3& direction, std::span<const glm::vec3> receivers,
   return fit;
 }
 
+namespace {
+
+// Opaque casters block (depth); translucent ones tint (colour), per triangle.
+struct Casters {
+  std::vector<std::uint32_t> opaque;
+  std::vector<std::uint32_t> translucent;
+  scene::Aabb bounds;
+};
+
+Casters sort_casters(const scene::Scene& scene, const std::vector<glm::vec3>& positions,
+                     const std::vector<std::uint32_t>& indices,
+                     std::span<const std::uint32_t> vertex_materials) {
+  Casters casters;
+  for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
+    const std::uint32_t v = indices[t];
+    bool tints = false;
+    if (v < vertex_materials.size() && vertex_materials[v] < scene.materials.size()) {
+      tints = scene.materials[vertex_materials[v]].translucent;
+    }
+    auto& list = tints ? casters.translucent : casters.opaque;
+    list.insert(list.end(), {indices[t], indices[t + 1], indices[t + 2]});
+    for (std::size_t k = 0; k < 3; ++k) casters.bounds.expand(positions[indices[t + k]]);
+  }
+  return casters;
+}
+
+void add_list(ReferencePlan& plan, const std::vector<std::uint32_t>& tris, std::uint32_t& first,
+              std::uint32_t& count) {
+  first = static_cast<std::uint32_t>(plan.indices.size());
+  count = static_cast<std::uint32_t>(tris.size());
+  plan.indices.insert(plan.indices.end(), tris.begin(), tris.end());
+}
+
+// What the suns' maps are fitted around: the visible part of the scene, computed once, by
+// the first sun that needs it.
+struct SunReceivers {
+  std::vector<glm::vec3> points;
+  bool known = false;
+};
+
+// The sun: a disc of angular radius `size` degrees; every sample direction gets its own
+// orthographic map around the visible receivers, and every caster may block.
+void plan_sun(ReferencePlan& plan, std::uint32_t l, const scene::PointLight& light,
+              const Casters& casters, const glm::mat4& camera_view_proj,
+              const PlanSettings& settings, SunReceivers& receivers) {
+  const std::size_t base = std::size_t{l} * plan.samples;
+  const bool shadows = light.casts_shadows && !casters.bounds.empty();
+  const auto sun = sun_directions(light.direction, light.size, plan.samples);
+  if (shadows && !receivers.known) {
+    receivers.points = visible_region(camera_view_proj, casters.bounds);
+    receivers.known = true;
+  }
+  if (shadows && plan.matrices.empty()) {
+    plan.matrices.assign(plan.points.size(), glm::mat4(1.0f));
+  }
+  for (std::uint32_t k = 0; k < plan.samples; ++k) {
+    float half_width = -1.0f;
+    if (shadows) {
+      const SunFit fit =
+          fit_sun(sun[k], receivers.points, casters.bounds, static_cast<float>(settings.face_size));
+      plan.matrices[base + k] = fit.view_proj;
+      half_width = fit.half_width;
+    }
+    plan.points[base + k].position_far = {sun[k], half_width};
+  }
+  if (!shadows) return;
+  add_list(plan, casters.opaque, plan.index_first[l], plan.index_count[l]);
+  add_list(plan, casters.translucent, plan.tint_first[l], plan.tint_count[l]);
+}
+
+// A point or spot light: samples on its sphere; faces reach the receivers' whole lit
+// sphere from any point of the light.
+void plan_local_light(ReferencePlan& plan, std::uint32_t l, const scene::PointLight& light,
+                      const Casters& casters, const std::vector<glm::vec3>& positions,
+                      const std::vector<glm::vec3>& directions) {
+  const std::size_t base = std::size_t{l} * plan.samples;
+  const float far = light.range + light.size;
+  const bool shadows = light.casts_shadows && light.range > 0.0f;
+  for (std::uint32_t k = 0; k < plan.samples; ++k) {
+    const glm::vec3 p = light.position + directions[k] * light.size;
+    plan.points[base + k].position_far = {p, shadows ? far : -1.0f};
+  }
+  if (!shadows) return;
+  add_list(plan, triangles_near(positions, casters.opaque, light.position, far),
+           plan.index_first[l], plan.index_count[l]);
+  add_list(plan, triangles_near(positions, casters.translucent, light.position, far),
+           plan.tint_first[l], plan.tint_count[l]);
+}
+
+// Consecutive visible faces share one instanced draw.
+void add_face_runs(Batch& batch, std::uint32_t sample, std::uint32_t slot, std::uint32_t mask) {
+  for (std::uint32_t f = 0; f < shadow_faces::kFaceCount;) {
+    if ((mask & (1u << f)) == 0) {
+      ++f;
+      continue;
+    }
+    FaceRun run{sample, slot, f, 0};
+    while (f < shadow_faces::kFaceCount && (mask & (1u << f)) != 0) {
+      ++run.face_count;
+      ++f;
+    }
+    batch.runs.push_back(run);
+  }
+}
+
+// The lights first .. first + count - 1, drawn together.
+Batch make_batch(const ReferencePlan& plan, const scene::Scene& scene,
+                 const shadow_faces::Frustum& frustum, const PlanSettings& settings,
+                 std::uint32_t first, std::uint32_t count) {
+  Batch batch;
+  batch.first_light = first;
+  batch.light_count = count;
+  for (std::uint32_t slot = 0; slot < batch.light_count; ++slot) {
+    batch.tinted = batch.tinted || plan.tint_count[first + slot] > 0;
+  }
+  for (std::uint32_t k = 0; k < plan.samples; ++k) {
+    for (std::uint32_t slot = 0; slot < batch.light_count; ++slot) {
+      const std::uint32_t l = first + slot;
+      if (plan.index_count[l] == 0 && plan.tint_count[l] == 0) continue;
+      if (scene.lights[l].type == scene::LightType::directional) {
+        batch.runs.push_back({k, slot, 0, 1});  // one map, fitted to the view
+        continue;
+      }
+      const glm::vec4 pf = plan.points[std::size_t{l} * plan.samples + k].position_far;
+      const std::uint32_t mask =
+          settings.cull_faces ? shadow_faces::visible_faces(frustum, glm::vec3(pf), pf.w) : 0x3Fu;
+      add_face_runs(batch, k, slot, mask);
+    }
+  }
+  return batch;
+}
+
+}  // namespace
+
 ReferencePlan build_plan(const scene::Scene& scene, const std::vector<glm::vec3>& positions,
                          const std::vector<std::uint32_t>& indices,
                          const glm::mat4& camera_view_proj, const PlanSettings& settings,
@@ -179,113 +313,27 @@ ReferencePlan build_plan(const scene::Scene& scene, const std::vector<glm::vec3>
   const auto directions = fibonacci_sphere(plan.samples);
   const auto frustum = shadow_faces::camera_frustum(camera_view_proj);
   const auto light_count = static_cast<std::uint32_t>(scene.lights.size());
-
-  // Opaque casters block (depth); translucent ones tint (colour), per triangle.
-  std::vector<std::uint32_t> opaque;
-  std::vector<std::uint32_t> translucent;
-  scene::Aabb geometry_bounds;
-  for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
-    const std::uint32_t v = indices[t];
-    bool tints = false;
-    if (v < vertex_materials.size() && vertex_materials[v] < scene.materials.size()) {
-      tints = scene.materials[vertex_materials[v]].translucent;
-    }
-    auto& list = tints ? translucent : opaque;
-    list.insert(list.end(), {indices[t], indices[t + 1], indices[t + 2]});
-    for (std::size_t k = 0; k < 3; ++k) geometry_bounds.expand(positions[indices[t + k]]);
-  }
-  std::vector<glm::vec3> receivers;  // the sun's, computed once when needed
-  bool receivers_known = false;
+  const Casters casters = sort_casters(scene, positions, indices, vertex_materials);
+  SunReceivers receivers;
 
   plan.points.resize(std::size_t{light_count} * plan.samples);
   plan.index_first.resize(light_count, 0);
   plan.index_count.resize(light_count, 0);
   plan.tint_first.resize(light_count, 0);
   plan.tint_count.resize(light_count, 0);
-  auto add_list = [&](const std::vector<std::uint32_t>& tris, std::uint32_t& first,
-                      std::uint32_t& count) {
-    first = static_cast<std::uint32_t>(plan.indices.size());
-    count = static_cast<std::uint32_t>(tris.size());
-    plan.indices.insert(plan.indices.end(), tris.begin(), tris.end());
-  };
   for (std::uint32_t l = 0; l < light_count; ++l) {
     const auto& light = scene.lights[l];
-    const std::size_t base = std::size_t{l} * plan.samples;
     if (light.type == scene::LightType::directional) {
-      // The sun: a disc of angular radius `size` degrees; every sample direction gets its
-      // own orthographic map around the visible receivers, and every caster may block.
-      const bool shadows = light.casts_shadows && !geometry_bounds.empty();
-      const auto sun = sun_directions(light.direction, light.size, plan.samples);
-      if (shadows && !receivers_known) {
-        receivers = visible_region(camera_view_proj, geometry_bounds);
-        receivers_known = true;
-      }
-      if (shadows && plan.matrices.empty()) {
-        plan.matrices.assign(plan.points.size(), glm::mat4(1.0f));
-      }
-      for (std::uint32_t k = 0; k < plan.samples; ++k) {
-        float half_width = -1.0f;
-        if (shadows) {
-          const SunFit fit =
-              fit_sun(sun[k], receivers, geometry_bounds, static_cast<float>(settings.face_size));
-          plan.matrices[base + k] = fit.view_proj;
-          half_width = fit.half_width;
-        }
-        plan.points[base + k].position_far = {sun[k], half_width};
-      }
-      if (!shadows) continue;
-      add_list(opaque, plan.index_first[l], plan.index_count[l]);
-      add_list(translucent, plan.tint_first[l], plan.tint_count[l]);
-      continue;
+      plan_sun(plan, l, light, casters, camera_view_proj, settings, receivers);
+    } else {
+      plan_local_light(plan, l, light, casters, positions, directions);
     }
-    // Faces reach the receivers' whole lit sphere from any point of the light.
-    const float far = light.range + light.size;
-    const bool shadows = light.casts_shadows && light.range > 0.0f;
-    for (std::uint32_t k = 0; k < plan.samples; ++k) {
-      const glm::vec3 p = light.position + directions[k] * light.size;
-      plan.points[base + k].position_far = {p, shadows ? far : -1.0f};
-    }
-    if (!shadows) continue;
-    add_list(triangles_near(positions, opaque, light.position, far), plan.index_first[l],
-             plan.index_count[l]);
-    add_list(triangles_near(positions, translucent, light.position, far), plan.tint_first[l],
-             plan.tint_count[l]);
   }
 
   for (std::uint32_t first = 0; first < light_count; first += plan.lights_per_batch) {
-    Batch batch;
-    batch.first_light = first;
-    batch.light_count = std::min(plan.lights_per_batch, light_count - first);
-    for (std::uint32_t slot = 0; slot < batch.light_count; ++slot) {
-      batch.tinted = batch.tinted || plan.tint_count[first + slot] > 0;
-    }
+    Batch batch = make_batch(plan, scene, frustum, settings, first,
+                             std::min(plan.lights_per_batch, light_count - first));
     plan.any_tinted = plan.any_tinted || batch.tinted;
-    for (std::uint32_t k = 0; k < plan.samples; ++k) {
-      for (std::uint32_t slot = 0; slot < batch.light_count; ++slot) {
-        const std::uint32_t l = first + slot;
-        if (plan.index_count[l] == 0 && plan.tint_count[l] == 0) continue;
-        if (scene.lights[l].type == scene::LightType::directional) {
-          batch.runs.push_back({k, slot, 0, 1});  // one map, fitted to the view
-          continue;
-        }
-        const glm::vec4 pf = plan.points[std::size_t{l} * plan.samples + k].position_far;
-        const std::uint32_t mask =
-            settings.cull_faces ? shadow_faces::visible_faces(frustum, glm::vec3(pf), pf.w) : 0x3Fu;
-        // Consecutive visible faces share one instanced draw.
-        for (std::uint32_t f = 0; f < shadow_faces::kFaceCount;) {
-          if ((mask & (1u << f)) == 0) {
-            ++f;
-            continue;
-          }
-          FaceRun run{k, slot, f, 0};
-          while (f < shadow_faces::kFaceCount && (mask & (1u << f)) != 0) {
-            ++run.face_count;
-            ++f;
-          }
-          batch.runs.push_back(run);
-        }
-      }
-    }
     plan.batches.push_back(std::move(batch));
   }
   return plan;

@@ -50,8 +50,14 @@ void ShadowReferencePass::prepare(fgvk::PrepareContext& context) {
   has_penumbra_ = b.image("penumbraCount") != nullptr;
   layered_ = context.gpu.features().shader_output_layer;
   shader_files_.clear();
-  const std::string& name = context.pass.name;
+  prepare_raster_pipelines(context);
+  prepare_compute_pipelines(context, hdr.format);
+  key_.reset();  // new pipelines or bindings: accumulate again
+}
 
+// The sample faces: opaque casters' depth, translucent casters' tints.
+void ShadowReferencePass::prepare_raster_pipelines(fgvk::PrepareContext& context) {
+  const std::string& name = context.pass.name;
   std::vector<gpu::ShaderDefine> depth_defines;
   if (layered_) depth_defines.push_back({"LAYERED", ""});
   std::vector<gpu::ShaderDefine> colour_defines = depth_defines;
@@ -105,7 +111,12 @@ void ShadowReferencePass::prepare(fgvk::PrepareContext& context) {
           .color_formats({reference::kTintFormat})
           .tint_blend(0)
           .build(context.gpu, name + ".colour");
+}
 
+// Per pixel: accumulate the samples' visibility, resolve each batch, write the result.
+void ShadowReferencePass::prepare_compute_pipelines(fgvk::PrepareContext& context,
+                                                    VkFormat hdr_format) {
+  const std::string& name = context.pass.name;
   auto compute = [&](const char* file, const gpu::DescriptorSetLayoutBuilder& builder,
                      std::uint32_t push_bytes, const std::vector<gpu::ShaderDefine>& defines,
                      gpu::DescriptorSetLayout& set, gpu::PipelineLayout& layout,
@@ -150,10 +161,9 @@ void ShadowReferencePass::prepare(fgvk::PrepareContext& context) {
       .storage_image(4, kComp);
   if (has_penumbra_) final_builder.storage_image(5, kComp);
   compute("reference_final.comp", final_builder, sizeof(reference::FinalPush),
-          {{"HDR_FORMAT", hdr.format == VK_FORMAT_R32G32B32A32_SFLOAT ? "rgba32f" : "rgba16f"},
+          {{"HDR_FORMAT", hdr_format == VK_FORMAT_R32G32B32A32_SFLOAT ? "rgba32f" : "rgba16f"},
            {"HAS_PENUMBRA", has_penumbra_ ? "1" : "0"}},
           final_set_, final_layout_, final_pipeline_);
-  key_.reset();  // new pipelines or bindings: accumulate again
 }
 
 ShadowReferencePass::Key ShadowReferencePass::make_key(const fgvk::ExecuteContext& context) const {
@@ -217,7 +227,15 @@ void ShadowReferencePass::rebuild(fgvk::ExecuteContext& context, const Key& key)
                         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, name + ".matrices");
   index_list_ = host_buffer(gpu, plan_.indices.data(), plan_.indices.size() * sizeof(std::uint32_t),
                             VK_BUFFER_USAGE_INDEX_BUFFER_BIT, name + ".indices");
+  allocate_targets(context, key);
+}
 
+// The visibility sums, the accumulator and the face layers, sized for the plan's
+// batches; kept while they are large enough.
+void ShadowReferencePass::allocate_targets(fgvk::ExecuteContext& context, const Key& key) {
+  const scene::Scene& scene = *context.frame.scene;
+  gpu::Context& gpu = context.gpu;
+  const std::string& name = context.pass.name;
   const VkDeviceSize pixels = VkDeviceSize{key.extent.width} * key.extent.height;
   const std::uint32_t slots = std::max<std::uint32_t>(
       1, std::min<std::uint32_t>(plan_.lights_per_batch,

@@ -61,10 +61,14 @@ class ShadowReferencePass final : public fgvk::Pass {
     std::vector<float> lights;
     bool operator==(const Key& other) const;
   };
+  void prepare_raster_pipelines(fgvk::PrepareContext& context);
+  void prepare_compute_pipelines(fgvk::PrepareContext& context, VkFormat hdr_format);
   Key make_key(const fgvk::ExecuteContext& context) const;
   void rebuild(fgvk::ExecuteContext& context, const Key& key);
+  void allocate_targets(fgvk::ExecuteContext& context, const Key& key);
   void record_samples(fgvk::ExecuteContext& context);
   void record_batch(fgvk::ExecuteContext& context, const reference::Batch& batch);
+  void record_resolve(fgvk::ExecuteContext& context, const reference::Batch& batch);
   void render_faces(fgvk::ExecuteContext& context, const reference::Batch& batch,
                     std::uint32_t sample, std::size_t& run);
   void tints_to_sampled(VkCommandBuffer cmd);

@@ -80,7 +80,6 @@ void ShadowReferencePass::record_batch(fgvk::ExecuteContext& context,
   const auto& b = context.bindings;
   const auto& depth = b.required_image("depth");
   const auto& normal = b.required_image("normal");
-  const auto& albedo = b.required_image("albedo");
   const VkExtent2D extent = b.required_image("hdr").extent;
   const VkSampler nearest = context.samplers.nearest_clamp;
 
@@ -144,7 +143,20 @@ void ShadowReferencePass::record_batch(fgvk::ExecuteContext& context,
     vkCmdPushConstants(cmd, accumulate_layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
     dispatch_pixels(cmd, extent);
   }
+  record_resolve(context, batch);
+}
 
+// Adds the batch's lights, shaded with the visibility its samples accumulated, to the
+// accumulator.
+void ShadowReferencePass::record_resolve(fgvk::ExecuteContext& context,
+                                         const reference::Batch& batch) {
+  const VkCommandBuffer cmd = context.cmd;
+  const auto& b = context.bindings;
+  const auto& depth = b.required_image("depth");
+  const auto& normal = b.required_image("normal");
+  const auto& albedo = b.required_image("albedo");
+  const VkExtent2D extent = b.required_image("hdr").extent;
+  const VkSampler nearest = context.samplers.nearest_clamp;
   gpu::memory_barrier(cmd, kCompute, kStorageRW, kCompute, kStorageRW);
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, resolve_pipeline_);
   gpu::PushDescriptors()
@@ -167,28 +179,43 @@ void ShadowReferencePass::record_batch(fgvk::ExecuteContext& context,
   dispatch_pixels(cmd, extent);
 }
 
+namespace {
+
+// What one sample's face renderings draw into; the caller sets the image views and the
+// layer count. Not copyable: `rendering` points at the attachments beside it.
+struct FaceRendering {
+  FaceRendering(VkExtent2D face_extent, bool tinted) {
+    depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+    depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+    depth.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    depth.clearValue.depthStencil = {1.0f, 0};
+    // Colour layers (tinted batches): cleared to white, panes multiply into them.
+    colour.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+    colour.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+    colour.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    colour.clearValue.color = {{1.0f, 1.0f, 1.0f, 1.0f}};
+    rendering.renderArea = {{0, 0}, face_extent};
+    rendering.pDepthAttachment = &depth;
+    if (tinted) {
+      rendering.colorAttachmentCount = 1;
+      rendering.pColorAttachments = &colour;
+    }
+  }
+  FaceRendering(const FaceRendering&) = delete;
+  FaceRendering& operator=(const FaceRendering&) = delete;
+
+  VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+  VkRenderingAttachmentInfo colour{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+  VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
+};
+
+}  // namespace
+
 void ShadowReferencePass::render_faces(fgvk::ExecuteContext& context, const reference::Batch& batch,
                                        std::uint32_t sample, std::size_t& run) {
   const VkCommandBuffer cmd = context.cmd;
   const VkExtent2D face_extent{params_.face_size, params_.face_size};
-  VkRenderingAttachmentInfo attachment{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-  attachment.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
-  attachment.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-  attachment.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-  attachment.clearValue.depthStencil = {1.0f, 0};
-  // Colour layers (tinted batches): cleared to white, panes multiply into them.
-  VkRenderingAttachmentInfo colour{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-  colour.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-  colour.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-  colour.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-  colour.clearValue.color = {{1.0f, 1.0f, 1.0f, 1.0f}};
-  VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
-  rendering.renderArea = {{0, 0}, face_extent};
-  rendering.pDepthAttachment = &attachment;
-  if (batch.tinted) {
-    rendering.colorAttachmentCount = 1;
-    rendering.pColorAttachments = &colour;
-  }
+  FaceRendering target(face_extent, batch.tinted);
 
   auto bind = [&](VkPipeline pipeline) {
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
@@ -223,10 +250,10 @@ void ShadowReferencePass::render_faces(fgvk::ExecuteContext& context, const refe
   if (layered_) {
     // One rendering clears every layer and draws each run as instanced faces: opaque
     // casters first, then (tinted batches) the panes against their depth.
-    attachment.imageView = faces_.view();
-    colour.imageView = tints_.view();
-    rendering.layerCount = faces_.layers();
-    vkCmdBeginRendering(cmd, &rendering);
+    target.depth.imageView = faces_.view();
+    target.colour.imageView = tints_.view();
+    target.rendering.layerCount = faces_.layers();
+    vkCmdBeginRendering(cmd, &target.rendering);
     bind(opaque);
     for (std::size_t i = begin; i < run; ++i) {
       draw(batch.runs[i], batch.runs[i].first_face, batch.runs[i].face_count, false);
@@ -242,11 +269,11 @@ void ShadowReferencePass::render_faces(fgvk::ExecuteContext& context, const refe
   }
   // Without gl_Layer from the vertex stage: one rendering per layer (every layer is
   // cleared, drawn ones get their face).
-  rendering.layerCount = 1;
+  target.rendering.layerCount = 1;
   for (std::uint32_t layer = 0; layer < faces_.layers(); ++layer) {
-    attachment.imageView = faces_.layer_view(layer);
-    if (batch.tinted) colour.imageView = tints_.layer_view(layer);
-    vkCmdBeginRendering(cmd, &rendering);
+    target.depth.imageView = faces_.layer_view(layer);
+    if (batch.tinted) target.colour.imageView = tints_.layer_view(layer);
+    vkCmdBeginRendering(cmd, &target.rendering);
     const std::uint32_t slot = layer / reference::kFacesPerLight;
     const std::uint32_t face = layer % reference::kFacesPerLight;
     for (const bool tint : {false, true}) {

@@ -3,8 +3,8 @@
 namespace antumbra::fg::testing {
 namespace {
 
-PortDesc port(std::string name, PortDirection direction, Access access, Stage stage, std::vector<Format> formats,
-              std::string description = {}) {
+PortDesc port(std::string name, PortDirection direction, Access access, Stage stage,
+              std::vector<Format> formats, std::string description = {}) {
   PortDesc p;
   p.name = std::move(name);
   p.direction = direction;
@@ -36,16 +36,17 @@ ParamDesc integer(std::string name, int def, int lo, int hi) {
 constexpr auto kIn = PortDirection::input;
 constexpr auto kOut = PortDirection::output;
 
-}  // namespace
-
-Registry make_fake_registry() {
-  Registry registry;
-
-  PassDesc gbuffer{"gbuffer", "Rasterises the scene into depth, normals and albedo.", {}, {}, false};
+// The built-in deferred chain they are modelled on: G-buffer, lighting, tone mapping.
+void add_deferred_passes(Registry& registry) {
+  PassDesc gbuffer{
+      "gbuffer", "Rasterises the scene into depth, normals and albedo.", {}, {}, false};
   gbuffer.ports = {
-      port("depth", kOut, Access::depth_attachment, Stage::graphics, {Format::d32f, Format::d16}, "scene depth"),
-      port("normal", kOut, Access::color_attachment, Stage::graphics, {Format::rgba16f}, "view-space normals"),
-      port("albedo", kOut, Access::color_attachment, Stage::graphics, {Format::rgba8}, "base colour"),
+      port("depth", kOut, Access::depth_attachment, Stage::graphics, {Format::d32f, Format::d16},
+           "scene depth"),
+      port("normal", kOut, Access::color_attachment, Stage::graphics, {Format::rgba16f},
+           "view-space normals"),
+      port("albedo", kOut, Access::color_attachment, Stage::graphics, {Format::rgba8},
+           "base colour"),
   };
   for (auto& p : gbuffer.ports) p.size_group = "gbuffer";
   ParamDesc cull;
@@ -61,7 +62,8 @@ Registry make_fake_registry() {
       port("normal", kIn, Access::sampled, Stage::fragment, {Format::rgba16f}),
       port("albedo", kIn, Access::sampled, Stage::fragment, {Format::rgba8}),
       port("lights", kIn, Access::storage_read, Stage::fragment, {}),
-      port("hdr", kOut, Access::color_attachment, Stage::graphics, {Format::rgba16f, Format::rgba32f}),
+      port("hdr", kOut, Access::color_attachment, Stage::graphics,
+           {Format::rgba16f, Format::rgba32f}),
   };
   lighting.ports[3].kind = ResourceKind::buffer;
   lighting.ports[3].optional = true;
@@ -72,7 +74,8 @@ Registry make_fake_registry() {
   PassDesc tonemap{"tonemap", "Maps HDR to display range.", {}, {}, false};
   tonemap.ports = {
       port("hdr", kIn, Access::sampled, Stage::fragment, {Format::rgba16f, Format::rgba32f}),
-      port("ldr", kOut, Access::color_attachment, Stage::graphics, {Format::rgba8, Format::rgba8_srgb}),
+      port("ldr", kOut, Access::color_attachment, Stage::graphics,
+           {Format::rgba8, Format::rgba8_srgb}),
   };
   ParamDesc op;
   op.name = "operator";
@@ -82,7 +85,10 @@ Registry make_fake_registry() {
   op.description = "tone curve";
   tonemap.params = {op, number("exposure", 1.0, 0.0, 16.0)};
   registry.add(std::move(tonemap));
+}
 
+// Image-to-image passes: optional inputs (a generator), fan-out to two outputs.
+void add_image_passes(Registry& registry) {
   PassDesc blur{"blur", "Separable compute blur.", {}, {}, false};
   blur.ports = {port("src", kIn, Access::sampled, Stage::compute, {}),
                 port("dst", kOut, Access::storage_write, Stage::compute, {})};
@@ -97,8 +103,19 @@ Registry make_fake_registry() {
   composite.ports[1].optional = true;
   registry.add(std::move(composite));
 
+  PassDesc split{"split", "Writes two copies of an image.", {}, {}, false};
+  split.ports = {port("src", kIn, Access::sampled, Stage::fragment, {}),
+                 port("a", kOut, Access::color_attachment, Stage::graphics, {}),
+                 port("b", kOut, Access::color_attachment, Stage::graphics, {})};
+  registry.add(std::move(split));
+}
+
+// The shapes the layer-count and buffer checks need: a layered depth output, a buffer
+// output.
+void add_shadow_and_light_passes(Registry& registry) {
   PassDesc atlas{"shadow-atlas", "Renders point-light faces into a layered atlas.", {}, {}, false};
-  atlas.ports = {port("atlas", kOut, Access::depth_attachment, Stage::graphics, {Format::d16, Format::d32f})};
+  atlas.ports = {
+      port("atlas", kOut, Access::depth_attachment, Stage::graphics, {Format::d16, Format::d32f})};
   atlas.ports[0].min_layers = 6;
   atlas.ports[0].max_layers = 0;
   atlas.params = {integer("faceSize", 512, 64, 4096)};
@@ -113,16 +130,23 @@ Registry make_fake_registry() {
   label.default_value = "lights";
   lights.params = {label};
   registry.add(std::move(lights));
+}
 
-  PassDesc split{"split", "Writes two copies of an image.", {}, {}, false};
-  split.ports = {port("src", kIn, Access::sampled, Stage::fragment, {}),
-                 port("a", kOut, Access::color_attachment, Stage::graphics, {}),
-                 port("b", kOut, Access::color_attachment, Stage::graphics, {})};
-  registry.add(std::move(split));
-
+// Culling keeps it for its side effects alone: it writes no resource.
+void add_side_effect_passes(Registry& registry) {
   PassDesc readback{"readback", "Copies an image to the host.", {}, {}, true};
   readback.ports = {port("src", kIn, Access::transfer_src, Stage::transfer, {})};
   registry.add(std::move(readback));
+}
+
+}  // namespace
+
+Registry make_fake_registry() {
+  Registry registry;
+  add_deferred_passes(registry);
+  add_image_passes(registry);
+  add_shadow_and_light_passes(registry);
+  add_side_effect_passes(registry);
   return registry;
 }
 

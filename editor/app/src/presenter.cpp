@@ -130,67 +130,87 @@ bool Presenter::present(const fgvk::BoundImage* source,
   Slot& slot = slots_[slot_];
   if (slot.timeline_value != 0) gpu_.wait_for(slot.timeline_value);
 
+  const std::optional<std::uint32_t> index = acquire_image(slot);
+  if (!index) return false;
+
+  gpu::check(vkResetCommandPool(gpu_.device(), slot.pool, 0), "vkResetCommandPool");
+  VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+  begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+  gpu::check(vkBeginCommandBuffer(slot.cmd, &begin), "vkBeginCommandBuffer");
+  const VkImage image = swapchain_.image(*index);
+  {
+    gpu::CommandLabel label(gpu_, slot.cmd, "editor: blit graph output");
+    record_blit(slot.cmd, source, image);
+  }
+  record_ui(slot.cmd, *index, draw_ui);
+  std::optional<gpu::Buffer> readback;
+  if (!screenshot.empty()) readback = record_readback(slot.cmd, image);
+  gpu::check(vkEndCommandBuffer(slot.cmd), "vkEndCommandBuffer");
+
+  submit(slot, *index);
+  slot_ = (slot_ + 1) % kFramesInFlight;
+  queue_present(*index);
+  ++presented_;
+
+  if (readback) save_screenshot(*readback, slot.timeline_value, screenshot);
+  return true;
+}
+
+std::optional<std::uint32_t> Presenter::acquire_image(const Slot& slot) {
   std::uint32_t index = 0;
   const VkResult acquired = vkAcquireNextImageKHR(gpu_.device(), swapchain_.handle(), UINT64_MAX,
                                                   slot.acquired, VK_NULL_HANDLE, &index);
   if (acquired == VK_ERROR_OUT_OF_DATE_KHR) {
     // Nothing was signalled: rebuild and let the caller try again next frame.
     stale_ = true;
-    return false;
+    return std::nullopt;
   }
   if (acquired == VK_SUBOPTIMAL_KHR) {
     stale_ = true;  // still presentable: draw this one, rebuild before the next
   } else {
     gpu::check(acquired, "vkAcquireNextImageKHR");
   }
+  return index;
+}
 
-  gpu::check(vkResetCommandPool(gpu_.device(), slot.pool, 0), "vkResetCommandPool");
-  VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
-  begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-  gpu::check(vkBeginCommandBuffer(slot.cmd, &begin), "vkBeginCommandBuffer");
-  const VkImage image = swapchain_.image(index);
-  {
-    gpu::CommandLabel label(gpu_, slot.cmd, "editor: blit graph output");
-    record_blit(slot.cmd, source, image);
-  }
-  {
-    gpu::CommandLabel label(gpu_, slot.cmd, "editor: ui");
-    VkRenderPassBeginInfo pass{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
-    pass.renderPass = swapchain_.render_pass();
-    pass.framebuffer = swapchain_.framebuffer(index);
-    pass.renderArea = {{0, 0}, swapchain_.extent()};
-    vkCmdBeginRenderPass(slot.cmd, &pass, VK_SUBPASS_CONTENTS_INLINE);
-    draw_ui(slot.cmd);
-    vkCmdEndRenderPass(slot.cmd);
-  }
-  std::optional<gpu::Buffer> readback;
+void Presenter::record_ui(VkCommandBuffer cmd, std::uint32_t index,
+                          const std::function<void(VkCommandBuffer)>& draw_ui) {
+  gpu::CommandLabel label(gpu_, cmd, "editor: ui");
+  VkRenderPassBeginInfo pass{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
+  pass.renderPass = swapchain_.render_pass();
+  pass.framebuffer = swapchain_.framebuffer(index);
+  pass.renderArea = {{0, 0}, swapchain_.extent()};
+  vkCmdBeginRenderPass(cmd, &pass, VK_SUBPASS_CONTENTS_INLINE);
+  draw_ui(cmd);
+  vkCmdEndRenderPass(cmd);
+}
+
+gpu::Buffer Presenter::record_readback(VkCommandBuffer cmd, VkImage image) {
   const VkExtent2D extent = swapchain_.extent();
-  if (!screenshot.empty()) {
-    if (!swapchain_.readable()) throw std::runtime_error("this swapchain cannot be read back");
-    readback = gpu::Buffer::create(gpu_, VkDeviceSize{4} * extent.width * extent.height,
-                                   VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryUsage::readback,
-                                   "editor.screenshot");
-    // The render pass's external dependency made the UI writes available to transfers.
-    gpu::image_barrier(
-        slot.cmd,
-        {image, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-         VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_NONE,
-         VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_READ_BIT, kColorLayer0});
-    VkBufferImageCopy copy{};
-    copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-    copy.imageExtent = {extent.width, extent.height, 1};
-    vkCmdCopyImageToBuffer(slot.cmd, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, *readback, 1,
-                           &copy);
-    gpu::image_barrier(
-        slot.cmd, {image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR,
-                   VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_NONE,
-                   VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_NONE, kColorLayer0});
-    gpu::buffer_barrier(slot.cmd, *readback, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
-                        VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT,
-                        VK_ACCESS_2_HOST_READ_BIT);
-  }
-  gpu::check(vkEndCommandBuffer(slot.cmd), "vkEndCommandBuffer");
+  if (!swapchain_.readable()) throw std::runtime_error("this swapchain cannot be read back");
+  gpu::Buffer readback = gpu::Buffer::create(gpu_, VkDeviceSize{4} * extent.width * extent.height,
+                                             VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                             gpu::MemoryUsage::readback, "editor.screenshot");
+  // The render pass's external dependency made the UI writes available to transfers.
+  gpu::image_barrier(
+      cmd, {image, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+            VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_NONE,
+            VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_READ_BIT, kColorLayer0});
+  VkBufferImageCopy copy{};
+  copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+  copy.imageExtent = {extent.width, extent.height, 1};
+  vkCmdCopyImageToBuffer(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback, 1, &copy);
+  gpu::image_barrier(cmd,
+                     {image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR,
+                      VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_NONE,
+                      VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_NONE, kColorLayer0});
+  gpu::buffer_barrier(cmd, readback, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+                      VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT,
+                      VK_ACCESS_2_HOST_READ_BIT);
+  return readback;
+}
 
+void Presenter::submit(Slot& slot, std::uint32_t index) {
   gpu::SubmitExtras extras;
   VkSemaphoreSubmitInfo wait{VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO};
   wait.semaphore = slot.acquired;
@@ -201,8 +221,9 @@ bool Presenter::present(const fgvk::BoundImage* source,
   signal.stageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
   extras.signals.push_back(signal);
   slot.timeline_value = gpu_.submit(slot.cmd, extras);
-  slot_ = (slot_ + 1) % kFramesInFlight;
+}
 
+void Presenter::queue_present(std::uint32_t index) {
   VkPresentInfoKHR present{VK_STRUCTURE_TYPE_PRESENT_INFO_KHR};
   const VkSemaphore ready = swapchain_.present_ready(index);
   const VkSwapchainKHR chain = swapchain_.handle();
@@ -217,17 +238,17 @@ bool Presenter::present(const fgvk::BoundImage* source,
   } else {
     gpu::check(presented, "vkQueuePresentKHR");
   }
-  ++presented_;
+}
 
-  if (readback) {
-    gpu_.wait_for(slot.timeline_value);
-    const auto host =
-        gpu::convert_texels(swapchain_.format(), extent.width, extent.height, readback->mapped());
-    if (!gpu::write_png(screenshot, host)) {
-      throw std::runtime_error("cannot write the screenshot " + screenshot);
-    }
+void Presenter::save_screenshot(const gpu::Buffer& readback, std::uint64_t timeline_value,
+                                const std::string& path) {
+  gpu_.wait_for(timeline_value);
+  const VkExtent2D extent = swapchain_.extent();
+  const auto host =
+      gpu::convert_texels(swapchain_.format(), extent.width, extent.height, readback.mapped());
+  if (!gpu::write_png(path, host)) {
+    throw std::runtime_error("cannot write the screenshot " + path);
   }
-  return true;
 }
 
 }  // namespace antumbra::editor_app

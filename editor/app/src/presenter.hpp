@@ -8,6 +8,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 
 #include <vulkan/vulkan.h>
@@ -15,6 +16,7 @@
 #include "antumbra/fgvk/pass.hpp"
 #include "antumbra/gpu/context.hpp"
 #include "antumbra/gpu/handle.hpp"
+#include "antumbra/gpu/resources.hpp"
 #include "swapchain.hpp"
 #include "window.hpp"
 
@@ -51,8 +53,17 @@ class Presenter {
   };
 
   void rebuild(VkExtent2D extent);
+  // Nothing when the swapchain is out of date: it is rebuilt before the next frame.
+  std::optional<std::uint32_t> acquire_image(const Slot& slot);
   void record_blit(VkCommandBuffer cmd, const fgvk::BoundImage* source, VkImage target);
-  void write_screenshot(VkCommandBuffer cmd, VkImage image, const std::string& path);
+  void record_ui(VkCommandBuffer cmd, std::uint32_t index,
+                 const std::function<void(VkCommandBuffer)>& draw_ui);
+  // Copies the presented image into a host-visible buffer, read once the frame is done.
+  gpu::Buffer record_readback(VkCommandBuffer cmd, VkImage image);
+  void submit(Slot& slot, std::uint32_t index);
+  void queue_present(std::uint32_t index);
+  void save_screenshot(const gpu::Buffer& readback, std::uint64_t timeline_value,
+                       const std::string& path);
 
   gpu::Context& gpu_;
   Window& window_;

@@ -27,6 +27,15 @@ VkSurfaceFormatKHR choose_format(VkPhysicalDevice device, VkSurfaceKHR surface) 
   return formats.front();
 }
 
+// The surface decides the size when it has one; otherwise the window's size, within
+// what the surface accepts.
+VkExtent2D fit_extent(VkExtent2D extent, const VkSurfaceCapabilitiesKHR& caps) {
+  if (caps.currentExtent.width != UINT32_MAX) return caps.currentExtent;
+  extent.width = std::clamp(extent.width, caps.minImageExtent.width, caps.maxImageExtent.width);
+  extent.height = std::clamp(extent.height, caps.minImageExtent.height, caps.maxImageExtent.height);
+  return extent;
+}
+
 }  // namespace
 
 Swapchain::Swapchain(gpu::Context& gpu, VkSurfaceKHR surface, VkExtent2D extent)
@@ -108,17 +117,26 @@ void Swapchain::recreate(VkExtent2D extent) {
   VkSurfaceCapabilitiesKHR caps{};
   gpu::check(vkGetPhysicalDeviceSurfaceCapabilitiesKHR(gpu_.physical_device(), surface_, &caps),
              "vkGetPhysicalDeviceSurfaceCapabilitiesKHR");
-  if (caps.currentExtent.width != UINT32_MAX) {
-    extent = caps.currentExtent;
-  } else {
-    extent.width = std::clamp(extent.width, caps.minImageExtent.width, caps.maxImageExtent.width);
-    extent.height =
-        std::clamp(extent.height, caps.minImageExtent.height, caps.maxImageExtent.height);
-  }
+  extent = fit_extent(extent, caps);
   min_image_count_ = caps.minImageCount + 1;
   if (caps.maxImageCount != 0) min_image_count_ = std::min(min_image_count_, caps.maxImageCount);
   readable_ = (caps.supportedUsageFlags & VK_IMAGE_USAGE_TRANSFER_SRC_BIT) != 0;
+  const VkSwapchainKHR created = create_swapchain(extent, caps);
 
+  // Old per-image objects first, then the old swapchain (retired by the new one).
+  framebuffers_.clear();
+  views_.clear();
+  present_ready_.clear();
+  ++generation_;
+  const std::string prefix = "editor.swapchain" + std::to_string(generation_);
+  swapchain_ = gpu::Swapchain(gpu_, created, prefix);
+  gpu_.collect_garbage();  // the device is idle: the retired objects go now
+  extent_ = extent;
+  create_image_objects(created, prefix);
+}
+
+VkSwapchainKHR Swapchain::create_swapchain(VkExtent2D extent,
+                                           const VkSurfaceCapabilitiesKHR& caps) {
   VkSwapchainCreateInfoKHR info{VK_STRUCTURE_TYPE_SWAPCHAIN_CREATE_INFO_KHR};
   info.surface = surface_;
   info.minImageCount = min_image_count_;
@@ -140,17 +158,10 @@ void Swapchain::recreate(VkExtent2D extent) {
   info.oldSwapchain = swapchain_.get();
   VkSwapchainKHR created = VK_NULL_HANDLE;
   gpu::check(vkCreateSwapchainKHR(gpu_.device(), &info, nullptr, &created), "vkCreateSwapchainKHR");
+  return created;
+}
 
-  // Old per-image objects first, then the old swapchain (retired by the new one).
-  framebuffers_.clear();
-  views_.clear();
-  present_ready_.clear();
-  ++generation_;
-  const std::string prefix = "editor.swapchain" + std::to_string(generation_);
-  swapchain_ = gpu::Swapchain(gpu_, created, prefix);
-  gpu_.collect_garbage();  // the device is idle: the retired objects go now
-  extent_ = extent;
-
+void Swapchain::create_image_objects(VkSwapchainKHR created, const std::string& prefix) {
   std::uint32_t count = 0;
   gpu::check(vkGetSwapchainImagesKHR(gpu_.device(), created, &count, nullptr),
              "vkGetSwapchainImagesKHR");
@@ -174,8 +185,8 @@ void Swapchain::recreate(VkExtent2D extent) {
     fb_info.renderPass = render_pass_.get();
     fb_info.attachmentCount = 1;
     fb_info.pAttachments = &view;
-    fb_info.width = extent.width;
-    fb_info.height = extent.height;
+    fb_info.width = extent_.width;
+    fb_info.height = extent_.height;
     fb_info.layers = 1;
     VkFramebuffer framebuffer = VK_NULL_HANDLE;
     gpu::check(vkCreateFramebuffer(gpu_.device(), &fb_info, nullptr, &framebuffer),

@@ -6,6 +6,7 @@
 // it for the new size; the surface format (and so the render pass) never changes.
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include <vulkan/vulkan.h>
@@ -42,6 +43,9 @@ class Swapchain {
 
  private:
   void create_render_pass();
+  VkSwapchainKHR create_swapchain(VkExtent2D extent, const VkSurfaceCapabilitiesKHR& caps);
+  // Views, framebuffers and present semaphores of the new swapchain's images.
+  void create_image_objects(VkSwapchainKHR created, const std::string& prefix);
 
   gpu::Context& gpu_;
   VkSurfaceKHR surface_;

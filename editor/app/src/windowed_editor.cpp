@@ -167,6 +167,202 @@ std::optional<Documents> load_documents(const WindowedOptions& options,
   return Documents{std::move(scene.value()), std::move(graph.value())};
 }
 
+// False (after saying why) when no window can be opened, e.g. without a display.
+bool open_window(const WindowedOptions& options, std::optional<Window>& window) {
+  try {
+    window.emplace(static_cast<int>(options.width), static_cast<int>(options.height),
+                   "antumbra edit");
+  } catch (const std::runtime_error& e) {
+    std::fprintf(stderr, "antumbra edit: %s (without a display, use --headless)\n", e.what());
+    return false;
+  }
+  return true;
+}
+
+runtime::SessionOptions session_options_for(const WindowedOptions& options, const Window& window) {
+  runtime::SessionOptions session_options;
+  session_options.device = options.device;
+  session_options.validation = options.validation;
+  session_options.viewport = {options.width, options.height};
+  session_options.instance_extensions = window.required_instance_extensions();
+  session_options.present = true;
+  return session_options;
+}
+
+// --select: false (after saying why) when the scene has no light of that name.
+bool select_light(EditorState& state, const std::string& name) {
+  const int light = state.scene().find_light(name);
+  if (light < 0) {
+    std::fprintf(stderr, "antumbra edit: --select: the scene has no light named '%s'\n",
+                 name.c_str());
+    return false;
+  }
+  state.scene().select(light);
+  return true;
+}
+
+// The editor's frames, from the window's first frame until it closes or --frames were
+// presented. Everything it refers to outlives it.
+class FrameLoop {
+ public:
+  FrameLoop(const WindowedOptions& options, Window& window, runtime::RenderSession& session,
+            Presenter& presenter, ImguiLayer& ui, EditorState& state, fs::path scene_file,
+            fs::path graph_file)
+      : options_(options),
+        window_(window),
+        session_(session),
+        presenter_(presenter),
+        ui_(ui),
+        state_(state),
+        scene_file_(std::move(scene_file)),
+        graph_file_(std::move(graph_file)) {}
+
+  void run() {
+    while (!quit_) {
+      window_.poll_events();
+      const bool close_requested = window_.should_close();
+      if (close_requested) {
+        window_.set_should_close(false);
+        if (!state_.dirty()) break;
+        prompt_ = true;  // ask first; the modal decides
+      }
+      if (!presenter_.ready()) {
+        wait_while_minimised();
+        continue;
+      }
+      if (paused_) std::printf("editor: window restored, rendering resumed\n");
+      paused_ = false;
+      follow_window_size(state_, presenter_.swapchain().extent(), resize_);
+      gpu::CpuTimer frame_clock;
+      build_ui(close_requested);
+      render_and_present(frame_clock);
+      finish_frame();
+    }
+  }
+
+  [[nodiscard]] int presented() const { return presented_; }
+  [[nodiscard]] bool presented_all_frames() const {
+    return options_.frames > 0 && presented_ >= options_.frames;
+  }
+  // UI + edits + render + present, per presented frame.
+  [[nodiscard]] const std::vector<double>& frame_ms() const { return frame_ms_; }
+
+ private:
+  void wait_while_minimised() {
+    if (!paused_) std::printf("editor: window minimised, rendering paused\n");
+    paused_ = true;
+    window_.wait_events();  // nothing to draw until it is restored
+  }
+
+  void build_ui(bool close_requested) {
+    ui_.begin_frame(window_);
+    const std::vector<KeyPress> presses = window_.take_key_presses();
+    handle_shortcuts(state_, presses, window_);
+    update_viewport(presses);
+    draw_lights_panel(state_);
+    draw_layers_panel(state_);
+    draw_graph_panel(state_);
+    draw_status_bar(state_);
+    switch (draw_close_prompt(state_, close_requested && prompt_)) {
+      case CloseChoice::close:
+        quit_ = true;
+        break;
+      case CloseChoice::cancel:
+        prompt_ = false;
+        break;
+      case CloseChoice::none:
+        break;
+    }
+    state_.end_frame(ImGui::IsAnyItemActive() || viewport_.dragging());
+    ui_.end_frame();
+  }
+
+  void update_viewport(const std::vector<KeyPress>& presses) {
+    const fgvk::BoundImage* shown = session_.executor().image(state_.shown_resource());
+    const VkExtent2D view = session_.viewport();
+    const VkExtent2D window_extent = presenter_.swapchain().extent();
+    const VkExtent2D shown_extent = shown != nullptr ? shown->extent : view;
+    viewport_.update(state_, presses, size_of(view), size_of(shown_extent), size_of(window_extent));
+  }
+
+  void render_and_present(const gpu::CpuTimer& frame_clock) {
+    session_.render(1, nullptr);
+    const bool last = options_.frames > 0 && presented_ + 1 >= options_.frames;
+    // The window as presented where the swapchain can be read, else the graph's image.
+    const bool from_window = presenter_.swapchain().readable();
+    const fgvk::BoundImage* shown = session_.executor().image(state_.shown_resource());
+    if (presenter_.present(
+            shown, [&](VkCommandBuffer cmd) { ui_.draw(cmd); },
+            last && from_window ? options_.screenshot : std::string())) {
+      if (last && !from_window && !options_.screenshot.empty()) {
+        session_.write_image(state_.shown_resource(), options_.screenshot);
+      }
+      ++presented_;
+      frame_ms_.push_back(frame_clock.elapsed_ms());
+      state_.frame_presented();
+      if (presented_ == 1) std::printf("editor: first frame presented\n");
+      if (options_.frame_log) std::printf("editor: frame %d\n", presented_);
+      // Scripts that drive the window wait for these lines.
+      if (presented_ == 1 || options_.frame_log) std::fflush(stdout);
+    }
+  }
+
+  void finish_frame() {
+    state_.autosave();
+    state_.poll_files();
+    if (presented_ % kTimingWindowFrames == 5) state_.refresh_timings();  // first after warm-up
+    if (const auto now = window_title(state_, scene_file_, graph_file_); now != title_) {
+      title_ = now;
+      window_.set_title(title_);
+    }
+    if (presented_all_frames()) quit_ = true;
+  }
+
+  const WindowedOptions& options_;
+  Window& window_;
+  runtime::RenderSession& session_;
+  Presenter& presenter_;
+  ImguiLayer& ui_;
+  EditorState& state_;
+  fs::path scene_file_;
+  fs::path graph_file_;
+  ViewportView viewport_;
+  PendingResize resize_;
+  std::string title_;
+  int presented_ = 0;
+  bool prompt_ = false;
+  bool quit_ = false;
+  bool paused_ = false;
+  std::vector<double> frame_ms_;
+};
+
+// A run that stopped after --frames keeps unsaved edits for a later session (and says
+// so); a run the user closed has already decided about them in the prompt.
+void close_documents(EditorState& state, const FrameLoop& loop) {
+  if (loop.presented_all_frames()) {
+    for (const auto& line : state.close_keeping_unsaved()) {
+      std::printf("editor: warning: %s\n", line.c_str());
+    }
+  } else {
+    state.close();
+  }
+}
+
+void print_summary(runtime::RenderSession& session, const Presenter& presenter,
+                   const FrameLoop& loop, const WindowedOptions& options) {
+  std::printf("editor: %d frame(s) presented, %u swapchain rebuild(s)\n", loop.presented(),
+              presenter.recreations());
+  std::vector<double> frame_ms = loop.frame_ms();
+  if (!frame_ms.empty()) {
+    std::sort(frame_ms.begin(), frame_ms.end());
+    std::printf("editor frame (%ux%u graph): %.2f ms wall median (UI + render + present)\n",
+                session.viewport().width, session.viewport().height, frame_ms[frame_ms.size() / 2]);
+  }
+  if (!options.screenshot.empty() && loop.presented_all_frames()) {
+    std::printf("screenshot: %s\n", options.screenshot.c_str());
+  }
+}
+
 }  // namespace
 
 int run_windowed_editor(const WindowedOptions& options) {
@@ -177,20 +373,8 @@ int run_windowed_editor(const WindowedOptions& options) {
   const fs::path graph_file = documents->graph.file();
 
   std::optional<Window> window;
-  try {
-    window.emplace(static_cast<int>(options.width), static_cast<int>(options.height),
-                   "antumbra edit");
-  } catch (const std::runtime_error& e) {
-    std::fprintf(stderr, "antumbra edit: %s (without a display, use --headless)\n", e.what());
-    return runtime::kExitRuntime;
-  }
-  runtime::SessionOptions session_options;
-  session_options.device = options.device;
-  session_options.validation = options.validation;
-  session_options.viewport = {options.width, options.height};
-  session_options.instance_extensions = window->required_instance_extensions();
-  session_options.present = true;
-  runtime::RenderSession session(runtime::find_data_paths(), session_options);
+  if (!open_window(options, window)) return runtime::kExitRuntime;
+  runtime::RenderSession session(runtime::find_data_paths(), session_options_for(options, *window));
   std::printf("device: %s%s\n", session.gpu().device_name().c_str(),
               options.validation ? " (validation + synchronization validation on)" : "");
 
@@ -201,115 +385,15 @@ int run_windowed_editor(const WindowedOptions& options) {
   EditorState state(session, std::move(documents->scene), std::move(documents->graph),
                     editor::lookup_in(registry.reflection()));
   if (!state.start()) return runtime::kExitDiagnostics;
-  if (!options.select.empty()) {
-    const int light = state.scene().find_light(options.select);
-    if (light < 0) {
-      std::fprintf(stderr, "antumbra edit: --select: the scene has no light named '%s'\n",
-                   options.select.c_str());
-      return runtime::kExitUsage;
-    }
-    state.scene().select(light);
+  if (!options.select.empty() && !select_light(state, options.select)) {
+    return runtime::kExitUsage;
   }
 
-  ViewportView viewport;
-  PendingResize resize;
-  std::string title;
-  int presented = 0;
-  bool prompt = false;
-  bool quit = false;
-  bool paused = false;
-  std::vector<double> frame_ms;  // UI + edits + render + present, per presented frame
-  while (!quit) {
-    window->poll_events();
-    const bool close_requested = window->should_close();
-    if (close_requested) {
-      window->set_should_close(false);
-      if (!state.dirty()) break;
-      prompt = true;  // ask first; the modal decides
-    }
-    if (!presenter.ready()) {
-      if (!paused) std::printf("editor: window minimised, rendering paused\n");
-      paused = true;
-      window->wait_events();  // nothing to draw until it is restored
-      continue;
-    }
-    if (paused) std::printf("editor: window restored, rendering resumed\n");
-    paused = false;
-    follow_window_size(state, presenter.swapchain().extent(), resize);
-    gpu::CpuTimer frame_clock;
-    ui.begin_frame(*window);
-    const std::vector<KeyPress> presses = window->take_key_presses();
-    handle_shortcuts(state, presses, *window);
-    {
-      const fgvk::BoundImage* shown = session.executor().image(state.shown_resource());
-      const VkExtent2D view = session.viewport();
-      const VkExtent2D window_extent = presenter.swapchain().extent();
-      const VkExtent2D shown_extent = shown != nullptr ? shown->extent : view;
-      viewport.update(state, presses, size_of(view), size_of(shown_extent), size_of(window_extent));
-    }
-    draw_lights_panel(state);
-    draw_layers_panel(state);
-    draw_graph_panel(state);
-    draw_status_bar(state);
-    switch (draw_close_prompt(state, close_requested && prompt)) {
-      case CloseChoice::close:
-        quit = true;
-        break;
-      case CloseChoice::cancel:
-        prompt = false;
-        break;
-      case CloseChoice::none:
-        break;
-    }
-    state.end_frame(ImGui::IsAnyItemActive() || viewport.dragging());
-    ui.end_frame();
-
-    session.render(1, nullptr);
-    const bool last = options.frames > 0 && presented + 1 >= options.frames;
-    // The window as presented where the swapchain can be read, else the graph's image.
-    const bool from_window = presenter.swapchain().readable();
-    const fgvk::BoundImage* shown = session.executor().image(state.shown_resource());
-    if (presenter.present(
-            shown, [&](VkCommandBuffer cmd) { ui.draw(cmd); },
-            last && from_window ? options.screenshot : std::string())) {
-      if (last && !from_window && !options.screenshot.empty()) {
-        session.write_image(state.shown_resource(), options.screenshot);
-      }
-      ++presented;
-      frame_ms.push_back(frame_clock.elapsed_ms());
-      state.frame_presented();
-      if (presented == 1) std::printf("editor: first frame presented\n");
-      if (options.frame_log) std::printf("editor: frame %d\n", presented);
-      // Scripts that drive the window wait for these lines.
-      if (presented == 1 || options.frame_log) std::fflush(stdout);
-    }
-    state.autosave();
-    state.poll_files();
-    if (presented % kTimingWindowFrames == 5) state.refresh_timings();  // first after warm-up
-    if (const auto now = window_title(state, scene_file, graph_file); now != title) {
-      title = now;
-      window->set_title(title);
-    }
-    if (options.frames > 0 && presented >= options.frames) quit = true;
-  }
-  if (options.frames > 0 && presented >= options.frames) {
-    for (const auto& line : state.close_keeping_unsaved()) {
-      std::printf("editor: warning: %s\n", line.c_str());
-    }
-  } else {
-    state.close();
-  }
+  FrameLoop loop(options, *window, session, presenter, ui, state, scene_file, graph_file);
+  loop.run();
+  close_documents(state, loop);
   session.gpu().wait_idle();
-  std::printf("editor: %d frame(s) presented, %u swapchain rebuild(s)\n", presented,
-              presenter.recreations());
-  if (!frame_ms.empty()) {
-    std::sort(frame_ms.begin(), frame_ms.end());
-    std::printf("editor frame (%ux%u graph): %.2f ms wall median (UI + render + present)\n",
-                session.viewport().width, session.viewport().height, frame_ms[frame_ms.size() / 2]);
-  }
-  if (!options.screenshot.empty() && options.frames > 0 && presented >= options.frames) {
-    std::printf("screenshot: %s\n", options.screenshot.c_str());
-  }
+  print_summary(session, presenter, loop, options);
   if (options.validation) {
     const std::size_t errors = session.gpu().validation_error_count();
     std::printf("validation: %zu error(s), %zu warning(s)\n", errors,

@@ -43,6 +43,71 @@ void add_unique(std::vector<const char*>& list, const char* name) {
   }
 }
 
+void require_vulkan_1_3() {
+  std::uint32_t loader_version = 0;
+  if (vkEnumerateInstanceVersion(&loader_version) != VK_SUCCESS ||
+      loader_version < VK_API_VERSION_1_3) {
+    throw NoVulkanDeviceError("the Vulkan loader does not offer Vulkan 1.3");
+  }
+}
+
+// Validation asked for but not installed fails loudly: a run without it would look clean.
+std::vector<const char*> instance_layers(bool validation) {
+  std::vector<const char*> layers;
+  if (validation) {
+    if (!has_layer(kValidationLayer)) {
+      throw ValidationLayerMissingError(
+          "validation requested but VK_LAYER_KHRONOS_validation is not installed "
+          "(Debian: apt install vulkan-validationlayers)");
+    }
+    layers.push_back(kValidationLayer);
+  }
+  return layers;
+}
+
+struct InstanceExtensions {
+  std::vector<const char*> names;
+  VkInstanceCreateFlags flags = 0;
+  bool debug_utils = false;
+};
+
+// The caller's extensions (e.g. GLFW's surface extensions), plus debug utils (object
+// names, labels, the messenger) and portability enumeration where the loader has them.
+InstanceExtensions choose_instance_extensions(const std::vector<std::string>& requested) {
+  InstanceExtensions extensions;
+  for (const auto& name : requested) add_unique(extensions.names, name.c_str());
+  extensions.debug_utils = has_instance_extension(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+  if (extensions.debug_utils) add_unique(extensions.names, VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+  if (has_instance_extension(VK_KHR_PORTABILITY_ENUMERATION_EXTENSION_NAME)) {
+    add_unique(extensions.names, VK_KHR_PORTABILITY_ENUMERATION_EXTENSION_NAME);
+    extensions.flags |= VK_INSTANCE_CREATE_ENUMERATE_PORTABILITY_BIT_KHR;
+  }
+  return extensions;
+}
+
+VkDebugUtilsMessengerCreateInfoEXT messenger_create_info(
+    PFN_vkDebugUtilsMessengerCallbackEXT callback, void* user) {
+  VkDebugUtilsMessengerCreateInfoEXT messenger_info{
+      VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
+  messenger_info.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT |
+                                   VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
+  messenger_info.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT |
+                               VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
+                               VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
+  messenger_info.pfnUserCallback = callback;
+  messenger_info.pUserData = user;
+  return messenger_info;
+}
+
+void load_debug_utils_functions(VkInstance instance, ExtensionFunctions& ext) {
+  ext.set_object_name = reinterpret_cast<PFN_vkSetDebugUtilsObjectNameEXT>(
+      vkGetInstanceProcAddr(instance, "vkSetDebugUtilsObjectNameEXT"));
+  ext.cmd_begin_label = reinterpret_cast<PFN_vkCmdBeginDebugUtilsLabelEXT>(
+      vkGetInstanceProcAddr(instance, "vkCmdBeginDebugUtilsLabelEXT"));
+  ext.cmd_end_label = reinterpret_cast<PFN_vkCmdEndDebugUtilsLabelEXT>(
+      vkGetInstanceProcAddr(instance, "vkCmdEndDebugUtilsLabelEXT"));
+}
+
 }  // namespace
 
 Context::Context(const ContextOptions& options) {
@@ -111,30 +176,11 @@ bool Context::is_cpu() const {
 }
 
 void Context::create_instance(const ContextOptions& options) {
-  std::uint32_t loader_version = 0;
-  if (vkEnumerateInstanceVersion(&loader_version) != VK_SUCCESS ||
-      loader_version < VK_API_VERSION_1_3) {
-    throw NoVulkanDeviceError("the Vulkan loader does not offer Vulkan 1.3");
-  }
+  require_vulkan_1_3();
   validation_ = options.validation;
-  std::vector<const char*> layers;
-  if (validation_) {
-    if (!has_layer(kValidationLayer)) {
-      throw ValidationLayerMissingError(
-          "validation requested but VK_LAYER_KHRONOS_validation is not installed "
-          "(Debian: apt install vulkan-validationlayers)");
-    }
-    layers.push_back(kValidationLayer);
-  }
-  std::vector<const char*> extensions;
-  for (const auto& name : options.instance_extensions) add_unique(extensions, name.c_str());
-  debug_utils_ = has_instance_extension(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
-  if (debug_utils_) add_unique(extensions, VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
-  VkInstanceCreateFlags flags = 0;
-  if (has_instance_extension(VK_KHR_PORTABILITY_ENUMERATION_EXTENSION_NAME)) {
-    add_unique(extensions, VK_KHR_PORTABILITY_ENUMERATION_EXTENSION_NAME);
-    flags |= VK_INSTANCE_CREATE_ENUMERATE_PORTABILITY_BIT_KHR;
-  }
+  const std::vector<const char*> layers = instance_layers(validation_);
+  const InstanceExtensions extensions = choose_instance_extensions(options.instance_extensions);
+  debug_utils_ = extensions.debug_utils;
 
   VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
   app.pApplicationName = options.app_name.c_str();
@@ -143,15 +189,8 @@ void Context::create_instance(const ContextOptions& options) {
 
   // The messenger is chained into instance creation too, so messages from
   // vkCreateInstance/vkDestroyInstance are counted as well.
-  VkDebugUtilsMessengerCreateInfoEXT messenger_info{
-      VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
-  messenger_info.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT |
-                                   VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
-  messenger_info.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT |
-                               VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
-                               VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
-  messenger_info.pfnUserCallback = &Context::debug_callback;
-  messenger_info.pUserData = this;
+  VkDebugUtilsMessengerCreateInfoEXT messenger_info =
+      messenger_create_info(&Context::debug_callback, this);
 
   const VkValidationFeatureEnableEXT enables[] = {
       VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT};
@@ -160,12 +199,12 @@ void Context::create_instance(const ContextOptions& options) {
   features.pEnabledValidationFeatures = enables;
 
   VkInstanceCreateInfo info{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
-  info.flags = flags;
+  info.flags = extensions.flags;
   info.pApplicationInfo = &app;
   info.enabledLayerCount = static_cast<std::uint32_t>(layers.size());
   info.ppEnabledLayerNames = layers.data();
-  info.enabledExtensionCount = static_cast<std::uint32_t>(extensions.size());
-  info.ppEnabledExtensionNames = extensions.data();
+  info.enabledExtensionCount = static_cast<std::uint32_t>(extensions.names.size());
+  info.ppEnabledExtensionNames = extensions.names.data();
   const void* chain = nullptr;
   if (validation_ && debug_utils_) {
     messenger_info.pNext = chain;
@@ -190,14 +229,7 @@ void Context::create_instance(const ContextOptions& options) {
     check(create(instance_, &messenger_info, nullptr, &messenger_),
           "vkCreateDebugUtilsMessengerEXT");
   }
-  if (debug_utils_) {
-    ext_.set_object_name = reinterpret_cast<PFN_vkSetDebugUtilsObjectNameEXT>(
-        vkGetInstanceProcAddr(instance_, "vkSetDebugUtilsObjectNameEXT"));
-    ext_.cmd_begin_label = reinterpret_cast<PFN_vkCmdBeginDebugUtilsLabelEXT>(
-        vkGetInstanceProcAddr(instance_, "vkCmdBeginDebugUtilsLabelEXT"));
-    ext_.cmd_end_label = reinterpret_cast<PFN_vkCmdEndDebugUtilsLabelEXT>(
-        vkGetInstanceProcAddr(instance_, "vkCmdEndDebugUtilsLabelEXT"));
-  }
+  if (debug_utils_) load_debug_utils_functions(instance_, ext_);
 }
 
 void Context::select_physical_device(const ContextOptions& options) {

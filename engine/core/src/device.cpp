@@ -4,52 +4,55 @@
 
 namespace antumbra::gpu {
 
-void Context::create_device(const ContextOptions& options) {
-  VkPhysicalDeviceVulkan13Features s13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
-  VkPhysicalDeviceVulkan12Features s12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES, &s13};
-  VkPhysicalDeviceVulkan11Features s11{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_FEATURES, &s12};
-  VkPhysicalDeviceFeatures2 supported{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &s11};
-  vkGetPhysicalDeviceFeatures2(physical_device_, &supported);
-  const VkPhysicalDeviceFeatures& s = supported.features;
+namespace {
 
-  VkPhysicalDeviceVulkan13Features e13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
-  VkPhysicalDeviceVulkan12Features e12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES, &e13};
-  VkPhysicalDeviceVulkan11Features e11{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_FEATURES, &e12};
-  VkPhysicalDeviceFeatures2 enabled{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &e11};
-  VkPhysicalDeviceFeatures& e = enabled.features;
+// The structs vkGetPhysicalDeviceFeatures2 fills and vkCreateDevice reads, chained by
+// pNext into the object itself, hence not copyable.
+struct FeatureChain {
+  FeatureChain() = default;
+  FeatureChain(const FeatureChain&) = delete;
+  FeatureChain& operator=(const FeatureChain&) = delete;
 
-  // Required (checked during selection).
-  e13.dynamicRendering = VK_TRUE;
-  e13.synchronization2 = VK_TRUE;
-  e13.maintenance4 = s13.maintenance4;  // vkGetDeviceImageMemoryRequirements for aliasing
-  e12.timelineSemaphore = VK_TRUE;
+  VkPhysicalDeviceVulkan13Features v13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+  VkPhysicalDeviceVulkan12Features v12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES, &v13};
+  VkPhysicalDeviceVulkan11Features v11{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_FEATURES, &v12};
+  VkPhysicalDeviceFeatures2 features2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &v11};
+};
 
-  // Optional: enable what is there and remember it.
+// Optional: enable what is there and remember it.
+void enable_optional_features(const FeatureChain& supported, FeatureChain& enabled,
+                              DeviceFeatures& features) {
+  const VkPhysicalDeviceFeatures& s = supported.features2.features;
+  const VkPhysicalDeviceVulkan11Features& s11 = supported.v11;
+  const VkPhysicalDeviceVulkan12Features& s12 = supported.v12;
+  VkPhysicalDeviceFeatures& e = enabled.features2.features;
+  VkPhysicalDeviceVulkan11Features& e11 = enabled.v11;
+  VkPhysicalDeviceVulkan12Features& e12 = enabled.v12;
   auto take = [](VkBool32 available, VkBool32& enable) {
     enable = available;
     return available == VK_TRUE;
   };
-  features_.sampler_anisotropy = take(s.samplerAnisotropy, e.samplerAnisotropy);
-  features_.storage_image_write_without_format =
+  features.sampler_anisotropy = take(s.samplerAnisotropy, e.samplerAnisotropy);
+  features.storage_image_write_without_format =
       take(s.shaderStorageImageWriteWithoutFormat, e.shaderStorageImageWriteWithoutFormat);
-  features_.storage_image_read_without_format =
+  features.storage_image_read_without_format =
       take(s.shaderStorageImageReadWithoutFormat, e.shaderStorageImageReadWithoutFormat);
-  features_.geometry_shader = take(s.geometryShader, e.geometryShader);
-  features_.image_cube_array = take(s.imageCubeArray, e.imageCubeArray);
-  features_.fill_mode_non_solid = take(s.fillModeNonSolid, e.fillModeNonSolid);
-  features_.multi_draw_indirect = take(s.multiDrawIndirect, e.multiDrawIndirect);
+  features.geometry_shader = take(s.geometryShader, e.geometryShader);
+  features.image_cube_array = take(s.imageCubeArray, e.imageCubeArray);
+  features.fill_mode_non_solid = take(s.fillModeNonSolid, e.fillModeNonSolid);
+  features.multi_draw_indirect = take(s.multiDrawIndirect, e.multiDrawIndirect);
   take(s.independentBlend, e.independentBlend);
   take(s.depthClamp, e.depthClamp);
   take(s.fragmentStoresAndAtomics, e.fragmentStoresAndAtomics);
   take(s.vertexPipelineStoresAndAtomics, e.vertexPipelineStoresAndAtomics);
   take(s.drawIndirectFirstInstance, e.drawIndirectFirstInstance);
   take(s.shaderImageGatherExtended, e.shaderImageGatherExtended);
-  features_.multiview = take(s11.multiview, e11.multiview);
-  features_.shader_draw_parameters = take(s11.shaderDrawParameters, e11.shaderDrawParameters);
-  features_.host_query_reset = take(s12.hostQueryReset, e12.hostQueryReset);
-  features_.shader_output_layer = take(s12.shaderOutputLayer, e12.shaderOutputLayer);
+  features.multiview = take(s11.multiview, e11.multiview);
+  features.shader_draw_parameters = take(s11.shaderDrawParameters, e11.shaderDrawParameters);
+  features.host_query_reset = take(s12.hostQueryReset, e12.hostQueryReset);
+  features.shader_output_layer = take(s12.shaderOutputLayer, e12.shaderOutputLayer);
   take(s12.shaderOutputViewportIndex, e12.shaderOutputViewportIndex);
-  features_.scalar_block_layout = take(s12.scalarBlockLayout, e12.scalarBlockLayout);
+  features.scalar_block_layout = take(s12.scalarBlockLayout, e12.scalarBlockLayout);
   take(s12.drawIndirectCount, e12.drawIndirectCount);
   take(s12.samplerFilterMinmax, e12.samplerFilterMinmax);
   const bool indexing = s12.descriptorIndexing && s12.runtimeDescriptorArray &&
@@ -62,7 +65,23 @@ void Context::create_device(const ContextOptions& options) {
     e12.shaderSampledImageArrayNonUniformIndexing = VK_TRUE;
     e12.descriptorBindingVariableDescriptorCount = s12.descriptorBindingVariableDescriptorCount;
   }
-  features_.descriptor_indexing = indexing;
+  features.descriptor_indexing = indexing;
+}
+
+}  // namespace
+
+void Context::create_device(const ContextOptions& options) {
+  FeatureChain supported;
+  vkGetPhysicalDeviceFeatures2(physical_device_, &supported.features2);
+  FeatureChain enabled;
+
+  // Required (checked during selection).
+  enabled.v13.dynamicRendering = VK_TRUE;
+  enabled.v13.synchronization2 = VK_TRUE;
+  // maintenance4: vkGetDeviceImageMemoryRequirements, for aliasing.
+  enabled.v13.maintenance4 = supported.v13.maintenance4;
+  enabled.v12.timelineSemaphore = VK_TRUE;
+  enable_optional_features(supported, enabled, features_);
 
   const float priority = 1.0f;
   VkDeviceQueueCreateInfo queue_info{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
@@ -75,7 +94,7 @@ void Context::create_device(const ContextOptions& options) {
   std::vector<const char*> extensions;
   for (const auto& name : extension_names) extensions.push_back(name.c_str());
 
-  VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO, &enabled};
+  VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO, &enabled.features2};
   info.queueCreateInfoCount = 1;
   info.pQueueCreateInfos = &queue_info;
   info.enabledExtensionCount = static_cast<std::uint32_t>(extensions.size());

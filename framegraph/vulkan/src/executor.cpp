@@ -39,6 +39,30 @@ gpu::ImageDesc image_desc(const fg::PlanResource& r) {
   return desc;
 }
 
+// Creates a resource the live plan cannot hand over: placed in the transient heap when
+// aliased, else allocated on its own. Returns the bytes allocated outside the heap.
+std::uint64_t create_resource(gpu::Context& gpu, const fg::PlanResource& r,
+                              const gpu::MemoryHeap& heap, RealisedResource& out) {
+  if (r.kind == fg::ResourceKind::buffer) {
+    const auto usage = buffer_usage(r);
+    out.buffer =
+        r.aliased
+            ? gpu::Buffer::create_placed(gpu, r.buffer_size, usage, heap, r.heap_offset, r.name)
+            : gpu::Buffer::create(gpu, r.buffer_size, usage, gpu::MemoryUsage::gpu_only, r.name);
+    out.bound_buffer = {out.buffer.handle(), r.buffer_size};
+    return r.aliased ? 0 : out.buffer.allocation().size;
+  }
+  const auto desc = image_desc(r);
+  out.image = r.aliased ? gpu::Image::create_placed(gpu, desc, heap, r.heap_offset)
+                        : gpu::Image::create(gpu, desc);
+  out.image_bytes = r.aliased ? 0 : gpu::Image::memory_requirements(gpu, desc).size;
+  out.depth = fg::is_depth_format(r.format);
+  out.bound_image = {
+      out.image.handle(), out.image.view(), out.image.array_view(),   desc.format, r.format,
+      desc.extent,        r.layers,         VK_IMAGE_LAYOUT_UNDEFINED};
+  return out.image_bytes;
+}
+
 }  // namespace
 
 struct Executor::State {
@@ -92,12 +116,23 @@ const fg::Plan& Executor::plan() const {
 void Executor::load(fg::Plan plan) {
   auto state = std::make_unique<State>();
   state->plan = std::move(plan);
-  const auto& resources = state->plan.resources;
+  create_transient_heap(*state);
+  const std::vector<int> kept = realise_resources(*state);
+  create_passes(*state);
+  prepare_passes(*state);
+  // Everything is created: the load cannot fail any more.
+  adopt_predecessors(*state);
+  // Only now, with everything created, replace the live state; the old objects go
+  // to deferred destruction and die once no frame in flight uses them.
+  hand_over_kept_resources(*state, kept);
+  state_ = std::move(state);
+}
 
-  // The transient heap: memory types every aliased resource accepts.
+// The transient heap: memory types every aliased resource accepts.
+void Executor::create_transient_heap(State& state) const {
   std::uint32_t type_bits = ~0u;
   std::uint64_t heap_end = 0;
-  for (const auto& r : resources) {
+  for (const auto& r : state.plan.resources) {
     if (!r.aliased || r.first_use < 0) continue;
     const VkMemoryRequirements req =
         r.kind == fg::ResourceKind::buffer
@@ -112,21 +147,24 @@ void Executor::load(fg::Plan plan) {
   }
   if (heap_end > 0) {
     if (type_bits == 0) throw std::runtime_error("aliased resources share no memory type");
-    state->heap =
-        gpu::create_heap(gpu_, std::max<std::uint64_t>(heap_end, state->plan.aliasing.heap_bytes),
-                         type_bits, state->plan.name + ".transient_heap");
-    state->bytes += state->heap.size();
+    state.heap =
+        gpu::create_heap(gpu_, std::max<std::uint64_t>(heap_end, state.plan.aliasing.heap_bytes),
+                         type_bits, state.plan.name + ".transient_heap");
+    state.bytes += state.heap.size();
   }
+}
 
-  state->resources.resize(resources.size());
-  // Resources the live plan realised with the same description are handed over at the
-  // swap, contents included (no reallocation, persistent images keep what they hold);
-  // until then the new state only borrows their handles, so a failed load leaves the
-  // live state untouched.
+// Resources the live plan realised with the same description are handed over at the
+// swap, contents included (no reallocation, persistent images keep what they hold);
+// until then the new state only borrows their handles, so a failed load leaves the
+// live state untouched. Returns, per resource, the live resource it takes over or -1.
+std::vector<int> Executor::realise_resources(State& state) const {
+  const auto& resources = state.plan.resources;
+  state.resources.resize(resources.size());
   std::vector<int> kept(resources.size(), -1);
   for (std::size_t i = 0; i < resources.size(); ++i) {
     const auto& r = resources[i];
-    auto& out = state->resources[i];
+    auto& out = state.resources[i];
     if (r.first_use < 0 && !r.is_output) continue;  // declared but unused: nothing to realise
     if (const int old = live_match(r); old >= 0) {
       const auto& live = state_->resources[static_cast<std::size_t>(old)];
@@ -134,37 +172,24 @@ void Executor::load(fg::Plan plan) {
       out.bound_buffer = live.bound_buffer;
       out.bound_image = live.bound_image;
       out.depth = live.depth;
-      state->bytes +=
+      state.bytes +=
           r.kind == fg::ResourceKind::buffer ? live.buffer.allocation().size : live.image_bytes;
       continue;
     }
-    if (r.kind == fg::ResourceKind::buffer) {
-      const auto usage = buffer_usage(r);
-      out.buffer = r.aliased ? gpu::Buffer::create_placed(gpu_, r.buffer_size, usage, state->heap,
-                                                          r.heap_offset, r.name)
-                             : gpu::Buffer::create(gpu_, r.buffer_size, usage,
-                                                   gpu::MemoryUsage::gpu_only, r.name);
-      out.bound_buffer = {out.buffer.handle(), r.buffer_size};
-      if (!r.aliased) state->bytes += out.buffer.allocation().size;
-      continue;
-    }
-    const auto desc = image_desc(r);
-    out.image = r.aliased ? gpu::Image::create_placed(gpu_, desc, state->heap, r.heap_offset)
-                          : gpu::Image::create(gpu_, desc);
-    out.image_bytes = r.aliased ? 0 : gpu::Image::memory_requirements(gpu_, desc).size;
-    state->bytes += out.image_bytes;
-    out.depth = fg::is_depth_format(r.format);
-    out.bound_image = {
-        out.image.handle(), out.image.view(), out.image.array_view(),   desc.format, r.format,
-        desc.extent,        r.layers,         VK_IMAGE_LAYOUT_UNDEFINED};
+    state.bytes += create_resource(gpu_, r, state.heap, out);
   }
+  return kept;
+}
 
-  for (const auto& pass : state->plan.passes) {
+// One factory-made pass per plan pass, with the bindings its ports resolve to.
+void Executor::create_passes(State& state) const {
+  const auto& resources = state.plan.resources;
+  for (const auto& pass : state.plan.passes) {
     std::vector<PassBindings::Entry> entries;
     for (const auto& b : pass.bindings) {
       PassBindings::Entry e{b.port};
       if (b.resource >= 0) {
-        auto& rr = state->resources[static_cast<std::size_t>(b.resource)];
+        auto& rr = state.resources[static_cast<std::size_t>(b.resource)];
         if (resources[static_cast<std::size_t>(b.resource)].kind == fg::ResourceKind::buffer) {
           e.buffer = &rr.bound_buffer;
         } else {
@@ -173,42 +198,47 @@ void Executor::load(fg::Plan plan) {
       }
       entries.push_back(std::move(e));
     }
-    state->bindings.emplace_back(std::move(entries));
+    state.bindings.emplace_back(std::move(entries));
     const PassFactory factory = registry_.factory(pass.type);
     if (factory == nullptr) throw std::runtime_error("no runtime for pass type " + pass.type);
-    state->passes.push_back(factory(pass));
+    state.passes.push_back(factory(pass));
   }
-  for (std::size_t i = 0; i < state->passes.size(); ++i) {
-    PrepareContext context{gpu_,         shaders_,       state->plan.passes[i], state->bindings[i],
+}
+
+void Executor::prepare_passes(State& state) {
+  for (std::size_t i = 0; i < state.passes.size(); ++i) {
+    PrepareContext context{gpu_,         shaders_,       state.plan.passes[i], state.bindings[i],
                            shader_root_, pipeline_cache_};
-    state->passes[i]->prepare(context);
+    state.passes[i]->prepare(context);
   }
-  // Everything is created: the load cannot fail any more. Offer each pass its
-  // predecessor (same name and type) so caches over kept images survive the swap.
-  if (state_) {
-    for (std::size_t i = 0; i < state->passes.size(); ++i) {
-      const auto& pass = state->plan.passes[i];
-      const auto* old = state_->plan.find_pass(pass.name);
-      if (old == nullptr || old->type != pass.type) continue;
-      const auto index = static_cast<std::size_t>(old - state_->plan.passes.data());
-      if (index < state_->passes.size()) state->passes[i]->adopt(*state_->passes[index]);
-    }
+}
+
+// Offers each pass its predecessor (same name and type) so caches over kept images
+// survive the swap.
+void Executor::adopt_predecessors(State& state) const {
+  if (!state_) return;
+  for (std::size_t i = 0; i < state.passes.size(); ++i) {
+    const auto& pass = state.plan.passes[i];
+    const auto* old = state_->plan.find_pass(pass.name);
+    if (old == nullptr || old->type != pass.type) continue;
+    const auto index = static_cast<std::size_t>(old - state_->plan.passes.data());
+    if (index < state_->passes.size()) state.passes[i]->adopt(*state_->passes[index]);
   }
-  // Only now, with everything created, replace the live state; the old objects go
-  // to deferred destruction and die once no frame in flight uses them.
-  state->kept = 0;
+}
+
+void Executor::hand_over_kept_resources(State& state, const std::vector<int>& kept) {
+  state.kept = 0;
   for (std::size_t i = 0; i < kept.size(); ++i) {
     if (kept[i] < 0) continue;
     auto& live = state_->resources[static_cast<std::size_t>(kept[i])];
-    auto& out = state->resources[i];
+    auto& out = state.resources[i];
     out.image = std::move(live.image);
     out.buffer = std::move(live.buffer);
     out.image_bytes = live.image_bytes;
     out.state = live.state;
     out.bound_image.layout = live.bound_image.layout;
-    ++state->kept;
+    ++state.kept;
   }
-  state_ = std::move(state);
 }
 
 int Executor::live_match(const fg::PlanResource& resource) const {

@@ -67,19 +67,10 @@ inline float overlap_volume(glm::vec3 pa, float ra, glm::vec3 pb, float rb) {
          (d * d + 2.0f * d * (ra + rb) - 3.0f * diff * diff) / (12.0f * d);
 }
 
-}  // namespace
-
-float sphere_overlap_volume(glm::vec3 pa, float ra, glm::vec3 pb, float rb) {
-  return overlap_volume(pa, ra, pb, rb);
-}
-
-const ConflictGraph& GraphBuilder::build_world_sphere(std::span<const LightSphere> lights) {
-  const auto n = static_cast<std::uint32_t>(lights.size());
-  edges_.clear();
-  big_lights_.clear();
-  // Cell edge = 1.5 mean lit diameters: a typical sphere covers 1..2 cells per axis. The
-  // pair test is branch-free and cheap, so fewer, fuller cells win: at 1024 lights of mean
-  // degree 8 the build took 265 / 233 / 172 / 171 us for 0.75 / 1 / 1.5 / 2 diameters.
+// Cell edge = 1.5 mean lit diameters: a typical sphere covers 1..2 cells per axis. The
+// pair test is branch-free and cheap, so fewer, fuller cells win: at 1024 lights of mean
+// degree 8 the build took 265 / 233 / 172 / 171 us for 0.75 / 1 / 1.5 / 2 diameters.
+float grid_cell_size(std::span<const LightSphere> lights) {
   double range_sum = 0.0;
   std::uint32_t finite = 0;
   for (const LightSphere& l : lights) {
@@ -88,9 +79,66 @@ const ConflictGraph& GraphBuilder::build_world_sphere(std::span<const LightSpher
       ++finite;
     }
   }
-  const float cell = finite > 0 ? static_cast<float>(3.0 * range_sum / finite) : 1.0f;
-  const float inv_cell = 1.0f / cell;
+  return finite > 0 ? static_cast<float>(3.0 * range_sum / finite) : 1.0f;
+}
 
+// Calls fn for every cell of the inclusive span lo..hi (none when hi < lo).
+template <class Fn>
+void for_each_cell(glm::ivec3 lo, glm::ivec3 hi, Fn&& fn) {
+  for (int z = lo.z; z <= hi.z; ++z)
+    for (int y = lo.y; y <= hi.y; ++y)
+      for (int x = lo.x; x <= hi.x; ++x) fn(glm::ivec3(x, y, z));
+}
+
+}  // namespace
+
+float sphere_overlap_volume(glm::vec3 pa, float ra, glm::vec3 pb, float rb) {
+  return overlap_volume(pa, ra, pb, rb);
+}
+
+// The bounds of the tile ranges of the lights on screen.
+struct GraphBuilder::TileExtent {
+  glm::ivec2 lo{std::numeric_limits<int>::max()};
+  glm::ivec2 hi{std::numeric_limits<int>::min()};
+  double span_sum = 0.0;  // width + height of every light's range, in tiles
+  std::uint32_t on_screen = 0;
+};
+
+// Lights are binned into squares of `bin` tiles: two lights share a tile exactly when
+// their tile ranges overlap, so the bins only accelerate the search.
+struct GraphBuilder::TileBins {
+  glm::ivec2 lo;     // the first tile of bin (0, 0)
+  int bin = 1;       // tiles per bin side
+  glm::ivec2 count;  // bins per axis
+
+  [[nodiscard]] std::size_t size() const {
+    return static_cast<std::size_t>(count.x) * static_cast<std::size_t>(count.y);
+  }
+  // The bins a tile range reaches, inclusive.
+  [[nodiscard]] glm::ivec4 range_of(const glm::ivec4& r) const {
+    return glm::ivec4((r.x - lo.x) / bin, (r.y - lo.y) / bin, (r.z - lo.x) / bin,
+                      (r.w - lo.y) / bin);
+  }
+};
+
+const ConflictGraph& GraphBuilder::build_world_sphere(std::span<const LightSphere> lights) {
+  const auto n = static_cast<std::uint32_t>(lights.size());
+  edges_.clear();
+  big_lights_.clear();
+  const float cell = grid_cell_size(lights);
+  const float inv_cell = 1.0f / cell;
+  const std::size_t entry_count = assign_cells(lights, inv_cell);
+  const std::size_t buckets = sort_into_buckets(lights, entry_count);
+  collect_cell_pairs(buckets);
+  collect_big_light_pairs(lights);
+  finish_graph(n);
+  return graph_;
+}
+
+// Each light's span of grid cells; a light too big for the grid goes to big_lights_.
+// Returns the number of (light, cell) entries.
+std::size_t GraphBuilder::assign_cells(std::span<const LightSphere> lights, float inv_cell) {
+  const auto n = static_cast<std::uint32_t>(lights.size());
   cell_min_.resize(n);
   cell_max_.resize(n);
   std::size_t entry_count = 0;
@@ -115,25 +163,25 @@ const ConflictGraph& GraphBuilder::build_world_sphere(std::span<const LightSpher
     cell_max_[i] = hi;
     entry_count += static_cast<std::size_t>(span.x * span.y * span.z);
   }
+  return entry_count;
+}
 
-  // Counting sort of (light, cell) entries into hash buckets: no per-cell allocation.
+// Counting sort of (light, cell) entries into hash buckets: no per-cell allocation.
+// Returns the number of buckets.
+std::size_t GraphBuilder::sort_into_buckets(std::span<const LightSphere> lights,
+                                            std::size_t entry_count) {
+  const auto n = static_cast<std::uint32_t>(lights.size());
   const std::size_t buckets = bucket_count_for(entry_count);
   const auto mask = static_cast<std::uint32_t>(buckets - 1);
   bucket_start_.assign(buckets + 1, 0);
-  auto for_each_cell = [&](std::uint32_t i, auto&& fn) {
-    const glm::ivec3 lo = cell_min_[i];
-    const glm::ivec3 hi = cell_max_[i];
-    for (int z = lo.z; z <= hi.z; ++z)
-      for (int y = lo.y; y <= hi.y; ++y)
-        for (int x = lo.x; x <= hi.x; ++x) fn(glm::ivec3(x, y, z));
-  };
   for (std::uint32_t i = 0; i < n; ++i)
-    for_each_cell(i, [&](glm::ivec3 c) { ++bucket_start_[hash_cell(c, mask) + 1]; });
+    for_each_cell(cell_min_[i], cell_max_[i],
+                  [&](glm::ivec3 c) { ++bucket_start_[hash_cell(c, mask) + 1]; });
   for (std::size_t b = 0; b < buckets; ++b) bucket_start_[b + 1] += bucket_start_[b];
   entries_.resize(entry_count);
   for (std::uint32_t i = 0; i < n; ++i) {
     const LightSphere& l = lights[i];
-    for_each_cell(i, [&](glm::ivec3 c) {
+    for_each_cell(cell_min_[i], cell_max_[i], [&](glm::ivec3 c) {
       // first: bit k set when this is the light's first cell along axis k. Two lights that
       // share cell c have c as their first shared cell iff (first_a | first_b) == 7.
       const glm::ivec3 lo = cell_min_[i];
@@ -146,7 +194,10 @@ const ConflictGraph& GraphBuilder::build_world_sphere(std::span<const LightSpher
   // The fill advanced each start to the next bucket's start; shift back.
   for (std::size_t b = buckets; b > 0; --b) bucket_start_[b] = bucket_start_[b - 1];
   bucket_start_[0] = 0;
+  return buckets;
+}
 
+void GraphBuilder::collect_cell_pairs(std::size_t buckets) {
   std::uint32_t largest_bucket = 0;
   for (std::size_t b = 0; b < buckets; ++b)
     largest_bucket = std::max(largest_bucket, bucket_start_[b + 1] - bucket_start_[b]);
@@ -176,6 +227,11 @@ const ConflictGraph& GraphBuilder::build_world_sphere(std::span<const LightSpher
       }
     }
   }
+}
+
+// Big lights are tested against every other light.
+void GraphBuilder::collect_big_light_pairs(std::span<const LightSphere> lights) {
+  const auto n = static_cast<std::uint32_t>(lights.size());
   for (std::size_t k = 0; k < big_lights_.size(); ++k) {
     const std::uint32_t i = big_lights_[k];
     for (std::uint32_t j = 0; j < n; ++j) {
@@ -192,24 +248,39 @@ const ConflictGraph& GraphBuilder::build_world_sphere(std::span<const LightSpher
       edges_.push_back(Edge{i, j, w});
     }
   }
-  finish_graph(n);
-  return graph_;
 }
 
 const ConflictGraph& GraphBuilder::build_screen_tile(std::span<const ScreenRect> rects,
                                                      const TileParams& params) {
   const auto n = static_cast<std::uint32_t>(rects.size());
   edges_.clear();
+  const TileExtent extent = assign_tile_ranges(rects, params);
+  if (extent.on_screen == 0) {
+    finish_graph(n);
+    return graph_;
+  }
+  // bin = 1 would be per-tile lists; bins near the mean footprint keep per-bin lists short
+  // when footprints are large (hundreds of tiles each).
+  TileBins bins;
+  bins.lo = extent.lo;
+  bins.bin = std::max(1, static_cast<int>(extent.span_sum / (2.0 * extent.on_screen)));
+  bins.count = (extent.hi - extent.lo) / bins.bin + 1;
+  bin_lights(bins);
+  collect_tile_pairs(bins);
+  finish_graph(n);
+  return graph_;
+}
+
+// Inclusive tile range per light (x0, y0, x1, y1); x1 < x0 means off screen.
+GraphBuilder::TileExtent GraphBuilder::assign_tile_ranges(std::span<const ScreenRect> rects,
+                                                          const TileParams& params) {
+  const auto n = static_cast<std::uint32_t>(rects.size());
   const float tile = static_cast<float>(std::max(params.tile_size, 1));
   const bool clamp = params.viewport.x > 0 && params.viewport.y > 0;
   const glm::ivec2 tiles_on_screen =
       (params.viewport + std::max(params.tile_size, 1) - 1) / std::max(params.tile_size, 1);
-  // Inclusive tile range per light (x0, y0, x1, y1); x1 < x0 means off screen.
   tile_range_.resize(n);
-  glm::ivec2 lo(std::numeric_limits<int>::max());
-  glm::ivec2 hi(std::numeric_limits<int>::min());
-  double span_sum = 0.0;
-  std::uint32_t on_screen = 0;
+  TileExtent extent;
   for (std::uint32_t i = 0; i < n; ++i) {
     glm::ivec4 r(0, 0, -1, -1);
     if (!rects[i].empty()) {
@@ -229,50 +300,44 @@ const ConflictGraph& GraphBuilder::build_screen_tile(std::span<const ScreenRect>
     if (r.z < r.x || r.w < r.y) r = glm::ivec4(0, 0, -1, -1);
     tile_range_[i] = r;
     if (r.z >= r.x) {
-      lo = glm::min(lo, glm::ivec2(r.x, r.y));
-      hi = glm::max(hi, glm::ivec2(r.z, r.w));
-      span_sum += static_cast<double>(r.z - r.x + 1) + static_cast<double>(r.w - r.y + 1);
-      ++on_screen;
+      extent.lo = glm::min(extent.lo, glm::ivec2(r.x, r.y));
+      extent.hi = glm::max(extent.hi, glm::ivec2(r.z, r.w));
+      extent.span_sum += static_cast<double>(r.z - r.x + 1) + static_cast<double>(r.w - r.y + 1);
+      ++extent.on_screen;
     }
   }
-  if (on_screen == 0) {
-    finish_graph(n);
-    return graph_;
-  }
-  // Lights are binned into squares of `bin` tiles: two lights share a tile exactly when
-  // their tile ranges overlap, so the bins only accelerate the search. bin = 1 would be
-  // per-tile lists; bins near the mean footprint keep per-bin lists short when footprints
-  // are large (hundreds of tiles each).
-  const int bin = std::max(1, static_cast<int>(span_sum / (2.0 * on_screen)));
-  const glm::ivec2 bins = (hi - lo) / bin + 1;
-  const std::size_t bin_count = static_cast<std::size_t>(bins.x) * static_cast<std::size_t>(bins.y);
-  auto bin_range = [&](const glm::ivec4& r) {
-    return glm::ivec4((r.x - lo.x) / bin, (r.y - lo.y) / bin, (r.z - lo.x) / bin,
-                      (r.w - lo.y) / bin);
-  };
+  return extent;
+}
+
+// Counting sort of the on-screen lights into the bins their tile ranges reach.
+void GraphBuilder::bin_lights(const TileBins& bins) {
+  const auto n = static_cast<std::uint32_t>(tile_range_.size());
+  const std::size_t bin_count = bins.size();
   bucket_start_.assign(bin_count + 1, 0);
   for (std::uint32_t i = 0; i < n; ++i) {
     if (tile_range_[i].z < tile_range_[i].x) continue;
-    const glm::ivec4 b = bin_range(tile_range_[i]);
+    const glm::ivec4 b = bins.range_of(tile_range_[i]);
     for (int y = b.y; y <= b.w; ++y)
       for (int x = b.x; x <= b.z; ++x)
-        ++bucket_start_[static_cast<std::size_t>(y * bins.x + x) + 1];
+        ++bucket_start_[static_cast<std::size_t>(y * bins.count.x + x) + 1];
   }
   for (std::size_t b = 0; b < bin_count; ++b) bucket_start_[b + 1] += bucket_start_[b];
   tile_lights_.resize(bucket_start_[bin_count]);
   for (std::uint32_t i = 0; i < n; ++i) {
     if (tile_range_[i].z < tile_range_[i].x) continue;
-    const glm::ivec4 b = bin_range(tile_range_[i]);
+    const glm::ivec4 b = bins.range_of(tile_range_[i]);
     for (int y = b.y; y <= b.w; ++y)
       for (int x = b.x; x <= b.z; ++x)
-        tile_lights_[bucket_start_[static_cast<std::size_t>(y * bins.x + x)]++] = i;
+        tile_lights_[bucket_start_[static_cast<std::size_t>(y * bins.count.x + x)]++] = i;
   }
   for (std::size_t b = bin_count; b > 0; --b) bucket_start_[b] = bucket_start_[b - 1];
   bucket_start_[0] = 0;
+}
 
-  for (int by = 0; by < bins.y; ++by) {
-    for (int bx = 0; bx < bins.x; ++bx) {
-      const std::size_t b = static_cast<std::size_t>(by * bins.x + bx);
+void GraphBuilder::collect_tile_pairs(const TileBins& bins) {
+  for (int by = 0; by < bins.count.y; ++by) {
+    for (int bx = 0; bx < bins.count.x; ++bx) {
+      const std::size_t b = static_cast<std::size_t>(by * bins.count.x + bx);
       for (std::uint32_t x = bucket_start_[b]; x < bucket_start_[b + 1]; ++x) {
         const glm::ivec4 ra = tile_range_[tile_lights_[x]];
         for (std::uint32_t y = x + 1; y < bucket_start_[b + 1]; ++y) {
@@ -281,15 +346,13 @@ const ConflictGraph& GraphBuilder::build_screen_tile(std::span<const ScreenRect>
                              std::min(ra.w, rb.w));
           if (o.z < o.x || o.w < o.y) continue;
           // Report the pair only from the bin holding the first shared tile.
-          if (bin_range(o).x != bx || bin_range(o).y != by) continue;
+          if (bins.range_of(o).x != bx || bins.range_of(o).y != by) continue;
           edges_.push_back(Edge{tile_lights_[x], tile_lights_[y],
                                 static_cast<float>((o.z - o.x + 1) * (o.w - o.y + 1))});
         }
       }
     }
   }
-  finish_graph(n);
-  return graph_;
 }
 
 void GraphBuilder::finish_graph(std::size_t vertex_count) {

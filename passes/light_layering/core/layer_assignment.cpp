@@ -98,33 +98,14 @@ const LayerAssignment& Layering::assign(const ConflictGraph& graph,
   const auto first = colourer_.colour(graph, options.order, colours_, limits);
   overflow_.assign(first.begin(), first.end());
 
-  if (previous != nullptr && !overflow_.empty()) {
-    // Keeping old layers can paint the colouring into a corner; a fresh colouring that
-    // overflows less is worth one frame of layer changes.
-    retry_colours_.assign(n, kUncoloured);
-    for (std::uint32_t i = 0; i < n; ++i)
-      if (lights[i].own_layer) retry_colours_[i] = colours_[i];
-    const auto retry = colourer_.colour(graph, options.order, retry_colours_, limits);
-    if (retry.size() < overflow_.size()) {
-      colours_.swap(retry_colours_);
-      overflow_.assign(retry.begin(), retry.end());
-      result_.kept_from_previous = 0;
-    }
-  }
+  if (previous != nullptr && !overflow_.empty())
+    retry_without_history(graph, lights, options, limits);
 
   // Needed layers = own layers + colours of a fresh, uncapped colouring of the others. A
   // capped run without history and without overflow is exactly that colouring.
-  int regular_colours = 0;
-  if (previous == nullptr && overflow_.empty()) {
-    regular_colours = distinct_regular_colours(colours_, reserved);
-  } else {
-    retry_colours_.assign(n, kUncoloured);
-    for (std::uint32_t i = 0; i < n; ++i)
-      if (lights[i].own_layer) retry_colours_[i] = kExcluded;
-    (void)colourer_.colour(graph, options.order, retry_colours_);
-    regular_colours = colour_count(retry_colours_);
-  }
-  result_.layers_needed = own_count + regular_colours;
+  const bool colouring_is_fresh = previous == nullptr && overflow_.empty();
+  result_.layers_needed =
+      own_count + count_regular_colours(graph, lights, options, reserved, colouring_is_fresh);
 
   result_.layer.resize(n);
   result_.fallback.resize(n);
@@ -135,6 +116,36 @@ const LayerAssignment& Layering::assign(const ConflictGraph& graph,
   result_.layers_used = colour_count(result_.layer);
   add_warnings(graph, lights, overflow_, cap, reserved, options.policy);
   return result_;
+}
+
+// Keeping old layers can paint the colouring into a corner; a fresh colouring that
+// overflows less is worth one frame of layer changes.
+void Layering::retry_without_history(const ConflictGraph& graph,
+                                     std::span<const LightSphere> lights,
+                                     const LayeringOptions& options, const ColourLimits& limits) {
+  const auto n = static_cast<std::uint32_t>(lights.size());
+  retry_colours_.assign(n, kUncoloured);
+  for (std::uint32_t i = 0; i < n; ++i)
+    if (lights[i].own_layer) retry_colours_[i] = colours_[i];
+  const auto retry = colourer_.colour(graph, options.order, retry_colours_, limits);
+  if (retry.size() < overflow_.size()) {
+    colours_.swap(retry_colours_);
+    overflow_.assign(retry.begin(), retry.end());
+    result_.kept_from_previous = 0;
+  }
+}
+
+// Colours of a fresh, uncapped colouring of the lights without an own layer.
+int Layering::count_regular_colours(const ConflictGraph& graph, std::span<const LightSphere> lights,
+                                    const LayeringOptions& options, std::uint32_t reserved,
+                                    bool colouring_is_fresh) {
+  if (colouring_is_fresh) return distinct_regular_colours(colours_, reserved);
+  const auto n = static_cast<std::uint32_t>(lights.size());
+  retry_colours_.assign(n, kUncoloured);
+  for (std::uint32_t i = 0; i < n; ++i)
+    if (lights[i].own_layer) retry_colours_[i] = kExcluded;
+  (void)colourer_.colour(graph, options.order, retry_colours_);
+  return colour_count(retry_colours_);
 }
 
 void Layering::keep_previous_layers(const ConflictGraph& graph, std::span<const LightSphere> lights,

@@ -72,6 +72,13 @@ class Executor {
   struct State;
   // Index of the live resource `resource` may take over, or -1.
   [[nodiscard]] int live_match(const fg::PlanResource& resource) const;
+  // The steps of load(), in order; each works on the state being built.
+  void create_transient_heap(State& state) const;
+  std::vector<int> realise_resources(State& state) const;
+  void create_passes(State& state) const;
+  void prepare_passes(State& state);
+  void adopt_predecessors(State& state) const;
+  void hand_over_kept_resources(State& state, const std::vector<int>& kept);
   void record_barriers(VkCommandBuffer cmd, const std::vector<fg::PlanBarrier>& barriers);
 
   gpu::Context& gpu_;

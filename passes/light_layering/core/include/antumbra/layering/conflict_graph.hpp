@@ -40,6 +40,18 @@ class GraphBuilder {
     std::uint32_t light;
     std::uint32_t first;  // bit k: first cell of the light's span along axis k
   };
+  struct TileExtent;  // defined in conflict_graph.cpp
+  struct TileBins;
+
+  // The steps of build_world_sphere, in order.
+  std::size_t assign_cells(std::span<const LightSphere> lights, float inv_cell);
+  std::size_t sort_into_buckets(std::span<const LightSphere> lights, std::size_t entry_count);
+  void collect_cell_pairs(std::size_t buckets);
+  void collect_big_light_pairs(std::span<const LightSphere> lights);
+  // The steps of build_screen_tile, in order.
+  TileExtent assign_tile_ranges(std::span<const ScreenRect> rects, const TileParams& params);
+  void bin_lights(const TileBins& bins);
+  void collect_tile_pairs(const TileBins& bins);
   void finish_graph(std::size_t vertex_count);
 
   ConflictGraph graph_;

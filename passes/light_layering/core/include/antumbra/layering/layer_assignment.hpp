@@ -100,6 +100,12 @@ class Layering {
   void forget_previous() { previous_ = {}; }
 
  private:
+  void retry_without_history(const ConflictGraph& graph, std::span<const LightSphere> lights,
+                             const LayeringOptions& options, const ColourLimits& limits);
+  // `colouring_is_fresh`: colours_ already is a fresh colouring without overflow.
+  int count_regular_colours(const ConflictGraph& graph, std::span<const LightSphere> lights,
+                            const LayeringOptions& options, std::uint32_t reserved,
+                            bool colouring_is_fresh);
   void keep_previous_layers(const ConflictGraph& graph, std::span<const LightSphere> lights,
                             const PreviousAssignment& previous, int cap, std::uint32_t reserved);
   void add_warnings(const ConflictGraph& graph, std::span<const LightSphere> lights,
