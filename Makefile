@@ -6,7 +6,7 @@ JOBS       ?= $(shell nproc)
 CMAKE_ARGS ?=
 DEMO_ARGS  ?= --size 1280x720 --out out/atrium.png
 
-.PHONY: all deps configure build demo test test-asan fuzz bench lint clean
+.PHONY: all deps configure build demo test test-asan fuzz bench lint format-check clean
 
 all: build
 
@@ -52,6 +52,10 @@ fuzz: deps
 # project's own sources; clean results are cached outside the clone (scripts/lint.py).
 lint: configure
 	@python3 scripts/lint.py --build $(BUILD) --jobs $(JOBS)
+
+# The clang-format half of lint alone (seconds; no configure needed).
+format-check:
+	@python3 scripts/lint.py --format-only
 
 bench: build
 	$(BUILD)/bench/antumbra_bench_graph

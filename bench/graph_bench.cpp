@@ -35,16 +35,16 @@ std::string synthetic_graph(int n) {
     resources += ",\n" + image(out, i);
     if (i % 2 == 0) {
       const std::string& back = chain[chain.size() >= 4 ? chain.size() - 4 : 0];
-      passes += ",\n{\"name\": \"p" + id + "\", \"type\": \"composite\", \"in\": {\"a\": \"" + prev +
-                "\", \"b\": \"" + back + "\"}, \"out\": {\"out\": \"" + out + "\"}}";
+      passes += ",\n{\"name\": \"p" + id + "\", \"type\": \"composite\", \"in\": {\"a\": \"" +
+                prev + "\", \"b\": \"" + back + "\"}, \"out\": {\"out\": \"" + out + "\"}}";
     } else {
       passes += ",\n{\"name\": \"p" + id + "\", \"type\": \"blur\", \"params\": {\"radius\": 3}, " +
                 "\"in\": {\"src\": \"" + prev + "\"}, \"out\": {\"dst\": \"" + out + "\"}}";
     }
     chain.push_back(out);
   }
-  return "{\"version\": 1, \"name\": \"synthetic\", \"resources\": {" + resources + "},\n\"passes\": [" +
-         passes + "],\n\"output\": \"" + chain.back() + "\"}";
+  return "{\"version\": 1, \"name\": \"synthetic\", \"resources\": {" + resources +
+         "},\n\"passes\": [" + passes + "],\n\"output\": \"" + chain.back() + "\"}";
 }
 
 const Registry& registry() {

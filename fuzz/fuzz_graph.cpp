@@ -35,8 +35,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       const PlanResource& b = p.resources[j];
       if (!b.aliased) continue;
       const bool live = a.first_use <= b.last_use && b.first_use <= a.last_use;
-      const bool overlap =
-          a.heap_offset < b.heap_offset + b.footprint.size && b.heap_offset < a.heap_offset + a.footprint.size;
+      const bool overlap = a.heap_offset < b.heap_offset + b.footprint.size &&
+                           b.heap_offset < a.heap_offset + a.footprint.size;
       if (live && overlap) __builtin_trap();
     }
   }

@@ -139,14 +139,19 @@ std::string to_text(const PlanDiff& d) {
 }
 
 Json to_json(const PlanDiff& d) {
-  return Json{
-      {"passesAdded", d.passes_added},           {"passesRemoved", d.passes_removed},
-      {"passesChanged", d.passes_changed},       {"passesCulled", d.passes_culled},
-      {"passesUnculled", d.passes_unculled},     {"passesRebuilt", d.passes_rebuilt},
-      {"resourcesAdded", d.resources_added},
-      {"resourcesRemoved", d.resources_removed}, {"resourcesReallocated", d.resources_reallocated},
-      {"resourcesKept", d.resources_kept},       {"resourcesTransient", d.resources_transient},
-      {"barriersBefore", d.barriers_before},     {"barriersAfter", d.barriers_after}};
+  return Json{{"passesAdded", d.passes_added},
+              {"passesRemoved", d.passes_removed},
+              {"passesChanged", d.passes_changed},
+              {"passesCulled", d.passes_culled},
+              {"passesUnculled", d.passes_unculled},
+              {"passesRebuilt", d.passes_rebuilt},
+              {"resourcesAdded", d.resources_added},
+              {"resourcesRemoved", d.resources_removed},
+              {"resourcesReallocated", d.resources_reallocated},
+              {"resourcesKept", d.resources_kept},
+              {"resourcesTransient", d.resources_transient},
+              {"barriersBefore", d.barriers_before},
+              {"barriersAfter", d.barriers_after}};
 }
 
 }  // namespace antumbra::fg

@@ -45,7 +45,9 @@ const FormatInfo& info(Format format) {
 
 }  // namespace
 
-std::string_view to_string(Format format) { return info(format).name; }
+std::string_view to_string(Format format) {
+  return info(format).name;
+}
 
 std::optional<Format> parse_format(std::string_view name) {
   for (const auto& f : kFormats) {
@@ -69,7 +71,9 @@ bool is_depth_format(Format format) {
   return format == Format::d16 || format == Format::d32f || format == Format::d24s8;
 }
 
-std::uint32_t bytes_per_texel(Format format) { return info(format).bytes; }
+std::uint32_t bytes_per_texel(Format format) {
+  return info(format).bytes;
+}
 
 std::string_view to_string(ResourceKind kind) {
   return kind == ResourceKind::image ? "image" : "buffer";
@@ -77,18 +81,30 @@ std::string_view to_string(ResourceKind kind) {
 
 std::string_view to_string(Access access) {
   switch (access) {
-    case Access::none: return "none";
-    case Access::sampled: return "sampled";
-    case Access::storage_read: return "storage_read";
-    case Access::storage_write: return "storage_write";
-    case Access::storage_read_write: return "storage_read_write";
-    case Access::color_attachment: return "color_attachment";
-    case Access::depth_attachment: return "depth_attachment";
-    case Access::depth_read: return "depth_read";
-    case Access::uniform_read: return "uniform_read";
-    case Access::transfer_src: return "transfer_src";
-    case Access::transfer_dst: return "transfer_dst";
-    case Access::present: return "present";
+    case Access::none:
+      return "none";
+    case Access::sampled:
+      return "sampled";
+    case Access::storage_read:
+      return "storage_read";
+    case Access::storage_write:
+      return "storage_write";
+    case Access::storage_read_write:
+      return "storage_read_write";
+    case Access::color_attachment:
+      return "color_attachment";
+    case Access::depth_attachment:
+      return "depth_attachment";
+    case Access::depth_read:
+      return "depth_read";
+    case Access::uniform_read:
+      return "uniform_read";
+    case Access::transfer_src:
+      return "transfer_src";
+    case Access::transfer_dst:
+      return "transfer_dst";
+    case Access::present:
+      return "present";
   }
   return "none";
 }
@@ -123,35 +139,49 @@ bool is_read(Access access) {
 
 std::string_view to_string(Stage stage) {
   switch (stage) {
-    case Stage::none: return "none";
-    case Stage::vertex: return "vertex";
-    case Stage::fragment: return "fragment";
-    case Stage::compute: return "compute";
-    case Stage::graphics: return "graphics";
-    case Stage::transfer: return "transfer";
-    case Stage::host: return "host";
+    case Stage::none:
+      return "none";
+    case Stage::vertex:
+      return "vertex";
+    case Stage::fragment:
+      return "fragment";
+    case Stage::compute:
+      return "compute";
+    case Stage::graphics:
+      return "graphics";
+    case Stage::transfer:
+      return "transfer";
+    case Stage::host:
+      return "host";
   }
   return "none";
 }
 
 std::string_view to_string(ParamType type) {
   switch (type) {
-    case ParamType::boolean: return "boolean";
-    case ParamType::integer: return "integer";
-    case ParamType::number: return "number";
-    case ParamType::enumeration: return "enumeration";
-    case ParamType::string: return "string";
+    case ParamType::boolean:
+      return "boolean";
+    case ParamType::integer:
+      return "integer";
+    case ParamType::number:
+      return "number";
+    case ParamType::enumeration:
+      return "enumeration";
+    case ParamType::string:
+      return "string";
   }
   return "number";
 }
 
 const PortDesc* PassDesc::find_port(std::string_view name) const {
-  auto it = std::find_if(ports.begin(), ports.end(), [&](const PortDesc& p) { return p.name == name; });
+  auto it =
+      std::find_if(ports.begin(), ports.end(), [&](const PortDesc& p) { return p.name == name; });
   return it == ports.end() ? nullptr : &*it;
 }
 
 const ParamDesc* PassDesc::find_param(std::string_view name) const {
-  auto it = std::find_if(params.begin(), params.end(), [&](const ParamDesc& p) { return p.name == name; });
+  auto it = std::find_if(params.begin(), params.end(),
+                         [&](const ParamDesc& p) { return p.name == name; });
   return it == params.end() ? nullptr : &*it;
 }
 

@@ -18,7 +18,8 @@ void Registry::add(PassDesc desc) {
   seen.clear();
   for (const auto& param : desc.params) {
     if (!seen.insert(param.name).second) {
-      throw std::invalid_argument("pass type '" + desc.type + "' repeats param '" + param.name + "'");
+      throw std::invalid_argument("pass type '" + desc.type + "' repeats param '" + param.name +
+                                  "'");
     }
   }
   std::string type = desc.type;
@@ -41,7 +42,9 @@ std::vector<std::string> Registry::types() const {
 
 std::size_t edit_distance(std::string_view a, std::string_view b) {
   // Case-insensitive: "Exposure" for "exposure" is the same typo class as a swap.
-  const auto lower = [](char c) { return static_cast<char>(std::tolower(static_cast<unsigned char>(c))); };
+  const auto lower = [](char c) {
+    return static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  };
   const std::size_t n = a.size();
   const std::size_t m = b.size();
   std::vector<std::size_t> prev2(m + 1), prev(m + 1), cur(m + 1);
@@ -51,7 +54,8 @@ std::size_t edit_distance(std::string_view a, std::string_view b) {
     for (std::size_t j = 1; j <= m; ++j) {
       const std::size_t cost = lower(a[i - 1]) == lower(b[j - 1]) ? 0 : 1;
       cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + cost});
-      if (i > 1 && j > 1 && lower(a[i - 1]) == lower(b[j - 2]) && lower(a[i - 2]) == lower(b[j - 1])) {
+      if (i > 1 && j > 1 && lower(a[i - 1]) == lower(b[j - 2]) &&
+          lower(a[i - 2]) == lower(b[j - 1])) {
         cur[j] = std::min(cur[j], prev2[j - 2] + 1);
       }
     }
@@ -61,7 +65,8 @@ std::size_t edit_distance(std::string_view a, std::string_view b) {
   return prev[m];
 }
 
-std::optional<std::string> suggest(std::string_view name, const std::vector<std::string>& candidates) {
+std::optional<std::string> suggest(std::string_view name,
+                                   const std::vector<std::string>& candidates) {
   // Allow roughly one edit per three characters, at least one and at most three.
   const std::size_t limit = std::clamp<std::size_t>((name.size() + 2) / 3, 1, 3);
   std::optional<std::string> best;

@@ -16,7 +16,9 @@ std::uint64_t align_up(std::uint64_t value, std::uint64_t alignment) {
   return (value + alignment - 1) / alignment * alignment;
 }
 
-bool is_transient(const PlanResource& r) { return !r.persistent && !r.is_output && r.first_use >= 0; }
+bool is_transient(const PlanResource& r) {
+  return !r.persistent && !r.is_output && r.first_use >= 0;
+}
 
 bool lifetimes_overlap(const PlanResource& a, const PlanResource& b) {
   return a.first_use <= b.last_use && b.first_use <= a.last_use;
@@ -57,7 +59,8 @@ void compute_lifetimes(Plan& plan) {
       PlanResource& r = plan.resources[static_cast<std::size_t>(b.resource)];
       if (r.first_use < 0) r.first_use = static_cast<int>(p);
       r.last_use = static_cast<int>(p);
-      if (std::find(r.usages.begin(), r.usages.end(), b.access) == r.usages.end()) r.usages.push_back(b.access);
+      if (std::find(r.usages.begin(), r.usages.end(), b.access) == r.usages.end())
+        r.usages.push_back(b.access);
     }
   }
   if (plan.output >= 0 && !plan.passes.empty()) {
@@ -128,7 +131,8 @@ int previous_alias(const Plan& plan, std::size_t r) {
     if (o == r || !other.aliased || other.last_use >= me.first_use) continue;
     const bool shares = other.heap_offset < me.heap_offset + me.footprint.size &&
                         me.heap_offset < other.heap_offset + other.footprint.size;
-    if (shares && (best < 0 || other.last_use > plan.resources[static_cast<std::size_t>(best)].last_use)) {
+    if (shares &&
+        (best < 0 || other.last_use > plan.resources[static_cast<std::size_t>(best)].last_use)) {
       best = static_cast<int>(o);
     }
   }
@@ -176,7 +180,8 @@ void plan_barriers(Plan& plan) {
       PlanBarrier barrier{b.resource, from.access, from.stage, b.access, b.stage, discard, -1};
       if (discard) {
         barrier.previous_alias = previous_alias(plan, r);
-        if (barrier.previous_alias >= 0) barrier.from_stage = last_stage(plan, barrier.previous_alias);
+        if (barrier.previous_alias >= 0)
+          barrier.from_stage = last_stage(plan, barrier.previous_alias);
       }
       pass.barriers.push_back(barrier);
       state[r] = {b.access, b.stage};
@@ -185,7 +190,8 @@ void plan_barriers(Plan& plan) {
   plan.final_barriers.clear();
   if (plan.output >= 0) {
     const State from = state[static_cast<std::size_t>(plan.output)];
-    plan.final_barriers.push_back({plan.output, from.access, from.stage, Access::present, Stage::none, false, -1});
+    plan.final_barriers.push_back(
+        {plan.output, from.access, from.stage, Access::present, Stage::none, false, -1});
   }
 }
 

@@ -10,10 +10,18 @@ constexpr const char* kNamePattern = "^[A-Za-z][A-Za-z0-9_.-]*$";
 Json param_schema(const ParamDesc& p) {
   Json j = Json::object();
   switch (p.type) {
-    case ParamType::boolean: j["type"] = "boolean"; break;
-    case ParamType::integer: j["type"] = "integer"; break;
-    case ParamType::number: j["type"] = "number"; break;
-    case ParamType::string: j["type"] = "string"; break;
+    case ParamType::boolean:
+      j["type"] = "boolean";
+      break;
+    case ParamType::integer:
+      j["type"] = "integer";
+      break;
+    case ParamType::number:
+      j["type"] = "number";
+      break;
+    case ParamType::string:
+      j["type"] = "string";
+      break;
     case ParamType::enumeration:
       j["type"] = "string";
       j["enum"] = p.choices;
@@ -39,10 +47,12 @@ Json ports_schema(const PassDesc& desc, PortDirection direction) {
       for (Format f : port.formats) text += " " + std::string(to_string(f));
     }
     text += ")";
-    properties[port.name] = Json{{"type", "string"}, {"pattern", kNamePattern}, {"description", text}};
+    properties[port.name] =
+        Json{{"type", "string"}, {"pattern", kNamePattern}, {"description", text}};
     if (!port.optional) required.push_back(port.name);
   }
-  Json j = Json{{"type", "object"}, {"properties", std::move(properties)}, {"additionalProperties", false}};
+  Json j = Json{
+      {"type", "object"}, {"properties", std::move(properties)}, {"additionalProperties", false}};
   if (!required.empty()) j["required"] = std::move(required);
   return j;
 }
@@ -51,54 +61,65 @@ Json pass_branch(const PassDesc& desc) {
   Json params = Json::object();
   for (const ParamDesc& p : desc.params) params[p.name] = param_schema(p);
   Json then = Json::object();
-  then["properties"] = Json{
-      {"params", Json{{"type", "object"}, {"properties", std::move(params)}, {"additionalProperties", false}}},
-      {"in", ports_schema(desc, PortDirection::input)},
-      {"out", ports_schema(desc, PortDirection::output)}};
+  then["properties"] = Json{{"params", Json{{"type", "object"},
+                                            {"properties", std::move(params)},
+                                            {"additionalProperties", false}}},
+                            {"in", ports_schema(desc, PortDirection::input)},
+                            {"out", ports_schema(desc, PortDirection::output)}};
   if (!desc.description.empty()) then["description"] = desc.description;
   Json branch = Json::object();
-  branch["if"] = Json{{"properties", Json{{"type", Json{{"const", desc.type}}}}}, {"required", Json::array({"type"})}};
+  branch["if"] = Json{{"properties", Json{{"type", Json{{"const", desc.type}}}}},
+                      {"required", Json::array({"type"})}};
   branch["then"] = std::move(then);
   return branch;
 }
 
 Json resource_schema() {
-  Json size = Json{{"oneOf", Json::array({
-                        Json{{"type", "string"}, {"pattern", "^viewport(/[1-9][0-9]?)?$"}},
-                        Json{{"type", "array"},
-                             {"items", Json{{"type", "integer"}, {"minimum", 1}, {"maximum", 16384}}},
-                             {"minItems", 2},
-                             {"maxItems", 2}},
-                        Json{{"type", "object"},
-                             {"properties",
-                              Json{{"scale", Json{{"oneOf", Json::array({
-                                                                Json{{"type", "number"}, {"exclusiveMinimum", 0}, {"maximum", 8}},
-                                                                Json{{"type", "array"},
-                                                                     {"items", Json{{"type", "number"}, {"exclusiveMinimum", 0}, {"maximum", 8}}},
-                                                                     {"minItems", 2},
-                                                                     {"maxItems", 2}},
-                                                            })}}}}},
-                             {"required", Json::array({"scale"})},
-                             {"additionalProperties", false}},
-                    })}};
+  Json size = Json{
+      {"oneOf",
+       Json::array({
+           Json{{"type", "string"}, {"pattern", "^viewport(/[1-9][0-9]?)?$"}},
+           Json{{"type", "array"},
+                {"items", Json{{"type", "integer"}, {"minimum", 1}, {"maximum", 16384}}},
+                {"minItems", 2},
+                {"maxItems", 2}},
+           Json{{"type", "object"},
+                {"properties",
+                 Json{{"scale",
+                       Json{{"oneOf",
+                             Json::array({
+                                 Json{{"type", "number"}, {"exclusiveMinimum", 0}, {"maximum", 8}},
+                                 Json{{"type", "array"},
+                                      {"items", Json{{"type", "number"},
+                                                     {"exclusiveMinimum", 0},
+                                                     {"maximum", 8}}},
+                                      {"minItems", 2},
+                                      {"maxItems", 2}},
+                             })}}}}},
+                {"required", Json::array({"scale"})},
+                {"additionalProperties", false}},
+       })}};
   Json formats = Json::array();
   for (Format f : all_formats()) formats.push_back(to_string(f));
-  Json image = Json{{"properties",
-                     Json{{"kind", Json{{"const", "image"}}},
-                          {"format", Json{{"enum", std::move(formats)}}},
-                          {"size", std::move(size)},
-                          {"layers", Json{{"type", "integer"}, {"minimum", 1}, {"maximum", 2048}, {"default", 1}}},
-                          {"persistent", Json{{"type", "boolean"}, {"default", false}}},
-                          {"description", Json{{"type", "string"}}}}},
-                    {"required", Json::array({"kind", "format", "size"})},
-                    {"additionalProperties", false}};
-  Json buffer = Json{{"properties",
-                      Json{{"kind", Json{{"const", "buffer"}}},
-                           {"size", Json{{"type", "integer"}, {"minimum", 1}, {"maximum", 4294967296ULL}}},
-                           {"persistent", Json{{"type", "boolean"}, {"default", false}}},
-                           {"description", Json{{"type", "string"}}}}},
-                     {"required", Json::array({"kind", "size"})},
-                     {"additionalProperties", false}};
+  Json image = Json{
+      {"properties",
+       Json{
+           {"kind", Json{{"const", "image"}}},
+           {"format", Json{{"enum", std::move(formats)}}},
+           {"size", std::move(size)},
+           {"layers", Json{{"type", "integer"}, {"minimum", 1}, {"maximum", 2048}, {"default", 1}}},
+           {"persistent", Json{{"type", "boolean"}, {"default", false}}},
+           {"description", Json{{"type", "string"}}}}},
+      {"required", Json::array({"kind", "format", "size"})},
+      {"additionalProperties", false}};
+  Json buffer =
+      Json{{"properties",
+            Json{{"kind", Json{{"const", "buffer"}}},
+                 {"size", Json{{"type", "integer"}, {"minimum", 1}, {"maximum", 4294967296ULL}}},
+                 {"persistent", Json{{"type", "boolean"}, {"default", false}}},
+                 {"description", Json{{"type", "string"}}}}},
+           {"required", Json::array({"kind", "size"})},
+           {"additionalProperties", false}};
   return Json{{"type", "object"}, {"oneOf", Json::array({std::move(image), std::move(buffer)})}};
 }
 
@@ -120,7 +141,8 @@ Json generate_schema(const Registry& registry) {
       {"params", Json{{"type", "object"}}},
       {"in", Json{{"type", "object"}}},
       {"out", Json{{"type", "object"}}},
-      {"after", Json{{"type", "array"}, {"items", Json{{"type", "string"}, {"pattern", kNamePattern}}}}},
+      {"after",
+       Json{{"type", "array"}, {"items", Json{{"type", "string"}, {"pattern", kNamePattern}}}}},
       {"sideEffects", Json{{"type", "boolean"}}},
       {"enabled", Json{{"type", "boolean"}, {"default", true}}}};
   pass["required"] = Json::array({"name", "type"});
@@ -132,16 +154,17 @@ Json generate_schema(const Registry& registry) {
   schema["$id"] = "https://antumbra.dev/schema/framegraph.schema.json";
   schema["title"] = "Antumbra frame graph";
   schema["type"] = "object";
-  schema["properties"] = Json{
-      {"$schema", Json{{"type", "string"}}},
-      {"version", Json{{"const", kGraphVersion}}},
-      {"name", Json{{"type", "string"}}},
-      {"description", Json{{"type", "string"}}},
-      {"resources", Json{{"type", "object"},
-                         {"propertyNames", Json{{"pattern", kNamePattern}}},
-                         {"additionalProperties", Json{{"$ref", "#/$defs/resource"}}}}},
-      {"passes", Json{{"type", "array"}, {"minItems", 1}, {"items", Json{{"$ref", "#/$defs/pass"}}}}},
-      {"output", Json{{"type", "string"}, {"pattern", kNamePattern}}}};
+  schema["properties"] =
+      Json{{"$schema", Json{{"type", "string"}}},
+           {"version", Json{{"const", kGraphVersion}}},
+           {"name", Json{{"type", "string"}}},
+           {"description", Json{{"type", "string"}}},
+           {"resources", Json{{"type", "object"},
+                              {"propertyNames", Json{{"pattern", kNamePattern}}},
+                              {"additionalProperties", Json{{"$ref", "#/$defs/resource"}}}}},
+           {"passes",
+            Json{{"type", "array"}, {"minItems", 1}, {"items", Json{{"$ref", "#/$defs/pass"}}}}},
+           {"output", Json{{"type", "string"}, {"pattern", kNamePattern}}}};
   schema["required"] = Json::array({"version", "resources", "passes", "output"});
   schema["additionalProperties"] = false;
   schema["$defs"] = Json{{"resource", resource_schema()}, {"pass", std::move(pass)}};

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "light_faces.hpp"
-#include "shadow_faces.hpp"
+#include "common/light_faces.hpp"
+#include "common/shadow_faces.hpp"
 
 namespace antumbra::passes {
 

@@ -47,6 +47,14 @@ VkRenderingAttachmentInfo attachment(VkImageView view, VkImageLayout layout, boo
   return a;
 }
 
+// Faces and materials for the vertex stage, materials (translucent tints) for the fragment.
+gpu::DescriptorSetLayoutBuilder atlas_bindings() {
+  gpu::DescriptorSetLayoutBuilder bindings;
+  bindings.storage_buffer(0, VK_SHADER_STAGE_VERTEX_BIT)
+      .storage_buffer(1, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT);
+  return bindings;
+}
+
 }  // namespace
 
 PointShadowAtlasPass::PointShadowAtlasPass(const fg::PlanPass& pass)
@@ -85,10 +93,9 @@ void PointShadowAtlasPass::prepare(fgvk::PrepareContext& context) {
   auto depth_vert = load_shader(context, "point_shadow_atlas/shadow_atlas.vert", shader_files_,
                                 depth_defines, &key);
 
-  set_layout_ = gpu::DescriptorSetLayoutBuilder()
-                    .storage_buffer(0, VK_SHADER_STAGE_VERTEX_BIT)
-                    .storage_buffer(1, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT)
-                    .build(context.gpu, context.pass.name + ".set");
+  const gpu::DescriptorSetLayoutBuilder bindings = atlas_bindings();
+  check_shader_interface(context.pass.name, depth_vert, bindings, 0);
+  set_layout_ = bindings.build(context.gpu, context.pass.name + ".set");
   const std::array<VkDescriptorSetLayout, 1> sets{set_layout_};
   layout_ = gpu::create_pipeline_layout(context.gpu, sets, {}, context.pass.name + ".layout");
 
@@ -118,6 +125,8 @@ void PointShadowAtlasPass::prepare(fgvk::PrepareContext& context) {
                                    colour_defines, &key);
     auto colour_frag =
         load_shader(context, "point_shadow_atlas/shadow_colour.frag", shader_files_, {}, &key);
+    check_shader_interface(context.pass.name, colour_vert, bindings, 0);
+    check_shader_interface(context.pass.name, colour_frag, bindings, 0);
     colour_pipeline_ =
         base()
             .vertex_attribute(1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(GpuVertex, normal))

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <limits>
 
-#include "point_shadow_atlas/light_faces.hpp"
-#include "point_shadow_atlas/shadow_faces.hpp"
+#include "common/light_faces.hpp"
+#include "common/shadow_faces.hpp"
 
 namespace antumbra::passes::reference {
 

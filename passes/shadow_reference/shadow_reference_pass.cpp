@@ -67,11 +67,14 @@ void ShadowReferencePass::prepare_raster_pipelines(fgvk::PrepareContext& context
   auto colour_vert =
       load_shader(context, "shadow_reference/reference_depth.vert", shader_files_, colour_defines);
   auto colour_frag = load_shader(context, "shadow_reference/reference_colour.frag", shader_files_);
-  depth_set_ = gpu::DescriptorSetLayoutBuilder()
-                   .storage_buffer(0, VK_SHADER_STAGE_VERTEX_BIT)
-                   .storage_buffer(1, VK_SHADER_STAGE_VERTEX_BIT)
-                   .storage_buffer(2, VK_SHADER_STAGE_FRAGMENT_BIT)
-                   .build(context.gpu, name + ".depth.set");
+  gpu::DescriptorSetLayoutBuilder depth_bindings;
+  depth_bindings.storage_buffer(0, VK_SHADER_STAGE_VERTEX_BIT)
+      .storage_buffer(1, VK_SHADER_STAGE_VERTEX_BIT)
+      .storage_buffer(2, VK_SHADER_STAGE_FRAGMENT_BIT);
+  check_shader_interface(name, vert, depth_bindings, sizeof(reference::DepthPush));
+  check_shader_interface(name, colour_vert, depth_bindings, sizeof(reference::DepthPush));
+  check_shader_interface(name, colour_frag, depth_bindings, 0);
+  depth_set_ = depth_bindings.build(context.gpu, name + ".depth.set");
   const std::array<VkDescriptorSetLayout, 1> depth_sets{depth_set_};
   const std::array<VkPushConstantRange, 1> depth_push{
       {{VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(reference::DepthPush)}}};
@@ -123,6 +126,7 @@ void ShadowReferencePass::prepare_compute_pipelines(fgvk::PrepareContext& contex
                      gpu::Pipeline& pipeline) {
     auto module =
         load_shader(context, std::string("shadow_reference/") + file, shader_files_, defines);
+    check_shader_interface(name, module, builder, push_bytes);
     set = builder.build(context.gpu, name + "." + file + ".set");
     const std::array<VkDescriptorSetLayout, 1> sets{set};
     const std::array<VkPushConstantRange, 1> push{{{kComp, 0, push_bytes}}};

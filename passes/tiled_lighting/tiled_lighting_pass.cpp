@@ -121,6 +121,7 @@ void TiledLightingPass::prepare(fgvk::PrepareContext& context) {
   };
   shader_files_.clear();
   auto module = load_shader(context, "tiled_lighting/tiled_lighting.comp", shader_files_, defines);
+  check_shader_interface(context.pass.name, module, builder, sizeof(PushConstants));
   pipeline_ = gpu::create_compute_pipeline(context.gpu, layout_, module,
                                            context.pass.name + ".pipeline", context.pipeline_cache);
 }

@@ -21,7 +21,8 @@ scene::Scene two_boxes() {
   auto b = scene::make_box(glm::vec3(2.0f));
   b.material = 1;
   s.meshes = {a, b};
-  s.lights.push_back({"l0", scene::LightType::point, glm::vec3(0, 2, 0), glm::vec3(1), 5.0f, 4.0f, 0.2f});
+  s.lights.push_back(
+      {"l0", scene::LightType::point, glm::vec3(0, 2, 0), glm::vec3(1), 5.0f, 4.0f, 0.2f});
   return s;
 }
 

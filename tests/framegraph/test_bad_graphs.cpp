@@ -22,8 +22,8 @@ std::vector<Expectation> load_expectations() {
   if (!doc.ok()) throw std::runtime_error(doc.diagnostics().to_text());
   std::vector<Expectation> out;
   for (const auto& e : doc->root()) {
-    out.push_back({e["file"].get<std::string>(), e["code"].get<std::string>(), e["pointer"].get<std::string>(),
-                   e["line"].get<int>()});
+    out.push_back({e["file"].get<std::string>(), e["code"].get<std::string>(),
+                   e["pointer"].get<std::string>(), e["line"].get<int>()});
   }
   return out;
 }

@@ -24,8 +24,8 @@
 #include "antumbra/scene/scene_file.hpp"
 #include "common/gpu_scene.hpp"
 #include "common/shadow_data.hpp"
+#include "common/shadow_faces.hpp"
 #include "gpu_test_support.hpp"
-#include "point_shadow_atlas/shadow_faces.hpp"
 #include "register_builtin_passes.hpp"
 
 using namespace antumbra;

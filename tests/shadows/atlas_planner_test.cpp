@@ -10,8 +10,8 @@
 #include <gtest/gtest.h>
 
 #include "antumbra/scene/scene_file.hpp"
+#include "common/shadow_faces.hpp"
 #include "point_shadow_atlas/point_shadow_atlas_pass.hpp"
-#include "point_shadow_atlas/shadow_faces.hpp"
 
 using namespace antumbra;
 using passes::AtlasPlanner;

@@ -7,8 +7,8 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "point_shadow_atlas/light_faces.hpp"
-#include "point_shadow_atlas/shadow_faces.hpp"
+#include "common/light_faces.hpp"
+#include "common/shadow_faces.hpp"
 
 namespace lf = antumbra::passes::light_faces;
 namespace sf = antumbra::passes::shadow_faces;

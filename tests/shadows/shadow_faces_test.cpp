@@ -1,7 +1,7 @@
 // Face matrices, cube-face selection and the conservative face culling of
 // point-shadow-atlas (passes/point_shadow_atlas/shadow_faces.*). CPU only.
 
-#include "point_shadow_atlas/shadow_faces.hpp"
+#include "common/shadow_faces.hpp"
 
 #include <random>
 

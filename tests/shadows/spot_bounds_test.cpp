@@ -13,9 +13,9 @@
 #include "antumbra/layering/layer_assignment.hpp"
 #include "antumbra/layering/scene_spheres.hpp"
 #include "antumbra/scene/light_bounds.hpp"
+#include "common/light_faces.hpp"
+#include "common/shadow_faces.hpp"
 #include "point_shadow_atlas/atlas_planner.hpp"
-#include "point_shadow_atlas/light_faces.hpp"
-#include "point_shadow_atlas/shadow_faces.hpp"
 
 namespace antumbra {
 namespace {

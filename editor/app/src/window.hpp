@@ -77,10 +77,10 @@ class Window {
   GLFWwindow* window_ = nullptr;
   std::vector<KeyPress> presses_;
   std::deque<MouseButtonEvent> mouse_events_;
-  QueuedMouse shown_mouse_;  // the buttons as ImGui last saw them through the queue
-  std::uint64_t sequence_ = 0;                 // the next event's place in the order
+  QueuedMouse shown_mouse_;     // the buttons as ImGui last saw them through the queue
+  std::uint64_t sequence_ = 0;  // the next event's place in the order
   std::optional<std::uint64_t> delivered_now_;  // the mouse event replayed this frame
-  double cursor_x_ = 0.0;    // the cursor in event order (window coordinates)
+  double cursor_x_ = 0.0;                       // the cursor in event order (window coordinates)
   double cursor_y_ = 0.0;
 };
 

@@ -5,21 +5,13 @@
 #include <cstdio>
 
 #include "antumbra/base/diagnostic_codes.hpp"
+#include "antumbra/base/text.hpp"
 #include "antumbra/fg/graph_desc.hpp"
 #include "antumbra/layering/layer_assignment.hpp"
 #include "antumbra/layering/layer_cap.hpp"
 
 namespace antumbra::editor {
 namespace {
-
-std::string in_quotes(std::string_view name) {
-  std::string out;
-  out.reserve(name.size() + 2);
-  out += '\'';
-  out.append(name);
-  out += '\'';
-  return out;
-}
 
 std::string number_text(double value) {
   char buffer[32];
@@ -36,7 +28,7 @@ std::string range_text(const fg::ParamDesc& d) {
 // `note` saying so.
 std::optional<std::string> check_value(const fg::ParamDesc& d, base::Json& value,
                                        RangePolicy policy, std::string& note) {
-  const std::string who = "parameter " + in_quotes(d.name);
+  const std::string who = "parameter " + base::quote_name(d.name);
   switch (d.type) {
     case fg::ParamType::boolean:
       if (!value.is_boolean()) return who + " expects true or false";
@@ -48,7 +40,7 @@ std::optional<std::string> check_value(const fg::ParamDesc& d, base::Json& value
       if (!value.is_string()) return who + " expects one of its choices as a string";
       const auto s = value.get<std::string>();
       if (std::find(d.choices.begin(), d.choices.end(), s) != d.choices.end()) return std::nullopt;
-      return who + " cannot be " + in_quotes(s) + fg::did_you_mean(s, d.choices);
+      return who + " cannot be " + base::quote_name(s) + fg::did_you_mean(s, d.choices);
     }
     case fg::ParamType::integer:
     case fg::ParamType::number:
@@ -161,20 +153,20 @@ std::optional<ParamView> GraphDocument::param(std::string_view pass, std::string
 EditResult GraphDocument::set_param(std::string_view pass, std::string_view name,
                                     const base::Json& value, RangePolicy policy) {
   const int index = find_pass(pass);
-  if (index < 0) return EditResult::refused("there is no pass " + in_quotes(pass));
+  if (index < 0) return EditResult::refused("there is no pass " + base::quote_name(pass));
   const base::Json& object = json()["passes"][static_cast<std::size_t>(index)];
   const std::string type = object.value("type", "");
   const fg::PassDesc* desc = lookup_ ? lookup_(type) : nullptr;
   if (desc == nullptr) {
-    return EditResult::refused("pass type " + in_quotes(type) +
+    return EditResult::refused("pass type " + base::quote_name(type) +
                                " is unknown, so its parameters cannot be checked");
   }
   const fg::ParamDesc* d = desc->find_param(name);
   if (d == nullptr) {
     std::vector<std::string> names;
     for (const fg::ParamDesc& p : desc->params) names.push_back(p.name);
-    return EditResult::refused(in_quotes(type) + " has no parameter " + in_quotes(name) +
-                               fg::did_you_mean(name, names));
+    return EditResult::refused(base::quote_name(type) + " has no parameter " +
+                               base::quote_name(name) + fg::did_you_mean(name, names));
   }
   base::Json checked = value;
   std::string note;
@@ -201,7 +193,7 @@ EditResult GraphDocument::set_param(std::string_view pass, std::string_view name
 
 EditResult GraphDocument::reset_param(std::string_view pass, std::string_view name) {
   const int index = find_pass(pass);
-  if (index < 0) return EditResult::refused("there is no pass " + in_quotes(pass));
+  if (index < 0) return EditResult::refused("there is no pass " + base::quote_name(pass));
   const base::Json& object = json()["passes"][static_cast<std::size_t>(index)];
   const auto params = object.find("params");
   if (params == object.end() || !params->contains(std::string(name))) return {};

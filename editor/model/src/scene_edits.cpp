@@ -3,6 +3,7 @@
 #include <cmath>
 #include <utility>
 
+#include "antumbra/base/text.hpp"
 #include "antumbra/editor/scene_document.hpp"
 #include "light_json.hpp"
 
@@ -13,16 +14,6 @@ using detail::tidy;
 
 bool finite(glm::vec3 v) {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
-
-// Built by appending: GCC 12 warns (-Wrestrict, a false positive) on "'" + s + "'".
-std::string in_quotes(std::string_view name) {
-  std::string out;
-  out.reserve(name.size() + 2);
-  out += '\'';
-  out.append(name);
-  out += '\'';
-  return out;
 }
 
 // Collects the new value of each key (nullopt: remove) so that a key touched twice, e.g.
@@ -81,7 +72,7 @@ EditResult SceneDocument::apply(std::size_t light, const LightChanges& c, std::s
   if (c.name && *c.name != now.name) {
     if (c.name->empty()) return EditResult::refused("a light name must not be empty");
     if (find_light(*c.name) >= 0)
-      return EditResult::refused("another light is already named " + in_quotes(*c.name));
+      return EditResult::refused("another light is already named " + base::quote_name(*c.name));
     pending.set(detail::kName, Json(*c.name));
   }
   if (c.type && *c.type != now.type) {
@@ -142,15 +133,16 @@ EditResult SceneDocument::apply(std::size_t light, const LightChanges& c, std::s
     pending.set(detail::kCastsShadows, Json(*c.casts_shadows));
 
   const std::string pointer = base::pointer_append("/lights", light);
-  Command command{description.empty() ? "Edit " + in_quotes(now.name) : std::move(description),
-                  pending.edits(file_.root()["lights"][light], pointer), static_cast<int>(light),
-                  static_cast<int>(light)};
+  Command command{
+      description.empty() ? "Edit " + base::quote_name(now.name) : std::move(description),
+      pending.edits(file_.root()["lights"][light], pointer), static_cast<int>(light),
+      static_cast<int>(light)};
   if (command.edits.empty()) return {};  // nothing changes: no undo step, not dirty
   return run(std::move(command));
 }
 
 EditResult SceneDocument::set_name(std::size_t light, std::string name) {
-  std::string description = label("Rename", light) + " to " + in_quotes(name);
+  std::string description = label("Rename", light) + " to " + base::quote_name(name);
   return apply(light, {.name = std::move(name)}, std::move(description));
 }
 
@@ -160,7 +152,8 @@ EditResult SceneDocument::set_type(std::size_t light, scene::LightType type) {
 }
 
 std::string SceneDocument::label(std::string_view verb, std::size_t light) const {
-  return std::string(verb) + " " + in_quotes(light < lights_.size() ? lights_[light].name : "?");
+  return std::string(verb) + " " +
+         base::quote_name(light < lights_.size() ? lights_[light].name : "?");
 }
 
 EditResult SceneDocument::set_position(std::size_t light, glm::vec3 position) {
@@ -216,7 +209,7 @@ EditResult SceneDocument::add_light(scene::LightType type, glm::vec3 position) {
   light[detail::kCastsShadows] = true;
 
   const auto index = static_cast<int>(lights_.size());
-  Command command{"Add " + in_quotes(name), {}, selected_, index};
+  Command command{"Add " + base::quote_name(name), {}, selected_, index};
   if (file_.root().contains("lights")) {
     command.edits.push_back(JsonEdit::insert("/lights", lights_.size(), std::move(light)));
   } else {
@@ -233,10 +226,11 @@ EditResult SceneDocument::duplicate_light(std::size_t light) {
   const std::string name = unique_name(lights_[light].name + " copy");
   copy[detail::kName] = name;
   const auto index = static_cast<int>(light + 1);
-  return run({"Duplicate " + in_quotes(lights_[light].name) + " as " + in_quotes(name),
-              {JsonEdit::insert("/lights", light + 1, std::move(copy))},
-              static_cast<int>(light),
-              index});
+  return run(
+      {"Duplicate " + base::quote_name(lights_[light].name) + " as " + base::quote_name(name),
+       {JsonEdit::insert("/lights", light + 1, std::move(copy))},
+       static_cast<int>(light),
+       index});
 }
 
 EditResult SceneDocument::delete_light(std::size_t light) {
@@ -247,7 +241,7 @@ EditResult SceneDocument::delete_light(std::size_t light) {
   } else if (after > static_cast<int>(light)) {
     --after;
   }
-  return run({"Delete " + in_quotes(lights_[light].name),
+  return run({"Delete " + base::quote_name(lights_[light].name),
               {JsonEdit::erase("/lights", light, file_.root()["lights"][light])},
               static_cast<int>(light),
               after});

@@ -147,9 +147,9 @@ HostImage read_image(Context& context, const Image& image, VkImageLayout layout,
   Buffer readback = Buffer::create(context, size, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                                    MemoryUsage::readback, "readback." + image.desc().name);
   // Depth images copy their depth aspect; colour images their colour aspect.
-  const VkImageAspectFlags aspect =
-      is_depth_format(format) ? VkImageAspectFlags{VK_IMAGE_ASPECT_DEPTH_BIT}
-                              : VkImageAspectFlags{VK_IMAGE_ASPECT_COLOR_BIT};
+  const VkImageAspectFlags aspect = is_depth_format(format)
+                                        ? VkImageAspectFlags{VK_IMAGE_ASPECT_DEPTH_BIT}
+                                        : VkImageAspectFlags{VK_IMAGE_ASPECT_COLOR_BIT};
   const VkImageSubresourceRange range{aspect, 0, 1, layer, 1};
   context.submit_immediate([&](VkCommandBuffer cmd) {
     CommandLabel label(context, cmd, "read_image");

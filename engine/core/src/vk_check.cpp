@@ -60,8 +60,7 @@ const char* device_type_name(VkPhysicalDeviceType type) {
 }
 
 namespace {
-std::string make_message(VkResult result, const std::string& what,
-                         const SourceLocation& location) {
+std::string make_message(VkResult result, const std::string& what, const SourceLocation& location) {
   return what + " failed: " + result_name(result) + " (" + std::to_string(result) + ") at " +
          location.file_name() + ":" + std::to_string(location.line());
 }

@@ -15,7 +15,7 @@ struct GpuLight {
   vec4 position_range ANTUMBRA_INIT(vec4(0.0f));   // view-space position, range
   vec4 color_intensity ANTUMBRA_INIT(vec4(0.0f));  // linear rgb, intensity
   vec4 world_size ANTUMBRA_INIT(vec4(0.0f));       // world-space position, light size (radius)
-  vec4 direction_type ANTUMBRA_INIT(vec4(0.0f));   // view-space unit direction it shines along, type
+  vec4 direction_type ANTUMBRA_INIT(vec4(0.0f));  // view-space unit direction it shines along, type
   vec4 cone ANTUMBRA_INIT(vec4(0.0f));  // spot: x cos(outer half-angle), y cos(inner half-angle)
 };
 

@@ -19,7 +19,7 @@ struct BoundPort {
 struct ResolvedPass {
   int source_index = -1;  // index into GraphDesc::passes
   const PassDesc* desc = nullptr;
-  Json params = Json::object();  // every parameter, defaults filled in
+  Json params = Json::object();   // every parameter, defaults filled in
   std::vector<BoundPort> reads;   // bindings of input ports
   std::vector<BoundPort> writes;  // bindings of output ports
   bool side_effects = false;
@@ -56,7 +56,8 @@ DependencyGraph build_dependencies(const GraphDesc& graph, const std::vector<Res
                                    Diagnostics& diags);
 
 // Kahn's algorithm over enabled passes; returns the edges left when a cycle blocks it.
-std::vector<DepEdge> find_cycle_edges(const DependencyGraph& deps, const std::vector<ResolvedPass>& passes);
+std::vector<DepEdge> find_cycle_edges(const DependencyGraph& deps,
+                                      const std::vector<ResolvedPass>& passes);
 
 // Passes whose writes reach the output (or that have side effects): true = keep.
 std::vector<bool> cull_passes(const DependencyGraph& deps, const std::vector<ResolvedPass>& passes,

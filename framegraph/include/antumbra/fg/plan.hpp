@@ -37,17 +37,17 @@ struct PlanResource {
   ResourceKind kind = ResourceKind::image;
   Format format = Format::undefined;
   SizeSpec size;
-  Extent2D extent;           // resolved against the viewport the plan was compiled for
+  Extent2D extent;  // resolved against the viewport the plan was compiled for
   std::uint32_t layers = 1;
   std::uint64_t buffer_size = 0;  // bytes, for buffers
-  bool persistent = false;   // keeps contents across frames (never aliased)
-  bool is_output = false;    // the graph's output
+  bool persistent = false;        // keeps contents across frames (never aliased)
+  bool is_output = false;         // the graph's output
   // Lifetime in execution order (indices into Plan::passes); -1 if unused.
   int first_use = -1;
   int last_use = -1;
   std::vector<Access> usages;  // every distinct access, for usage flags
   // Aliasing: transient resources share one heap at these offsets.
-  bool aliased = false;        // placed in the shared transient heap
+  bool aliased = false;  // placed in the shared transient heap
   std::uint64_t heap_offset = 0;
   Footprint footprint;
 };
@@ -93,11 +93,11 @@ struct Plan {
   std::string file;
   Extent2D viewport;
   std::vector<PlanResource> resources;
-  std::vector<PlanPass> passes;           // executed passes, in order
-  std::vector<std::string> culled_passes;  // names, in description order
+  std::vector<PlanPass> passes;              // executed passes, in order
+  std::vector<std::string> culled_passes;    // names, in description order
   std::vector<std::string> disabled_passes;  // "enabled": false, in description order
-  int output = -1;                        // index into resources
-  std::vector<PlanBarrier> final_barriers;  // after the last pass (output -> present)
+  int output = -1;                           // index into resources
+  std::vector<PlanBarrier> final_barriers;   // after the last pass (output -> present)
   AliasingReport aliasing;
 
   [[nodiscard]] int find_resource(std::string_view name) const;

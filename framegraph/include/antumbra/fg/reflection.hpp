@@ -99,7 +99,6 @@ struct ParamDesc {
   std::string description;
 };
 
-class Diagnostics;
 struct GraphDesc;
 struct Plan;
 struct PlanPass;

@@ -34,7 +34,8 @@ std::size_t edit_distance(std::string_view a, std::string_view b);
 
 // The candidate closest to `name` when it is close enough to be a plausible typo;
 // ties go to the first candidate in the given order.
-std::optional<std::string> suggest(std::string_view name, const std::vector<std::string>& candidates);
+std::optional<std::string> suggest(std::string_view name,
+                                   const std::vector<std::string>& candidates);
 
 // "; did you mean 'x'?" or "" -- appended to "unknown ..." messages.
 std::string did_you_mean(std::string_view name, const std::vector<std::string>& candidates);
