@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "antumbra/base/diagnostic_codes.hpp"
 #include "antumbra/base/json_document.hpp"
 #include "antumbra/fg/graph_desc.hpp"
 #include "antumbra/gpu/image_io.hpp"
@@ -183,8 +184,6 @@ std::optional<fg::GraphDesc> load_for_quality(const std::string& path, const std
 // the technique.
 constexpr unsigned kStableRankingWidth = 960;
 constexpr unsigned kStableRankingHeight = 540;
-// App-level code (not a graph diagnostic): the size is too small to rank techniques.
-constexpr const char* kRankingUnreliable = "QU001";
 
 std::optional<base::Diagnostic> size_warning(unsigned width, unsigned height) {
   if (std::uint64_t{width} * height >= std::uint64_t{kStableRankingWidth} * kStableRankingHeight) {
@@ -196,7 +195,8 @@ std::optional<base::Diagnostic> size_warning(unsigned width, unsigned height) {
                 "to %ux%u; use --size %ux%u (or as many pixels) or larger to rank them",
                 width, height, kStableRankingWidth, kStableRankingHeight, kStableRankingWidth,
                 kStableRankingHeight);
-  return base::Diagnostic{kRankingUnreliable, base::Severity::warning, message, "", "", 0, 0};
+  return base::Diagnostic{
+      codes::quality::kRankingUnreliable, base::Severity::warning, message, "", "", 0, 0};
 }
 
 // File stems name the error maps; a repeated stem gets its position appended.

@@ -389,7 +389,7 @@ class EditRun {
   [[nodiscard]] bool frame_reports_layer_warning() const {
     const auto& messages = session_.last_report().messages();
     return std::any_of(messages.begin(), messages.end(),
-                       [](const auto& m) { return m.code == "LY001"; });
+                       [](const auto& m) { return m.code == codes::layering::kOverCap; });
   }
 
   void check(const std::string& what, const Json& step) {

@@ -96,7 +96,7 @@ struct PrepareContext {
 // emits them and the editor lists them; they never stop the frame.
 struct PassMessage {
   std::string pass;  // the pass instance's name
-  std::string code;  // stable, e.g. "LY001"
+  std::string code;  // stable, from base/diagnostic_codes.hpp (e.g. layering::kOverCap)
   base::Severity severity = base::Severity::warning;
   std::string message;
   base::Json details;  // machine-readable payload
