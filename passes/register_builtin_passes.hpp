@@ -4,8 +4,9 @@
 
 namespace antumbra::passes {
 
-// The explicit table of built-in pass types: adding a pass type is one line in
-// register_builtin_passes.cpp and a folder under passes/.
+// The built-in pass types. The definition is generated from the antumbra_add_pass() lines
+// of passes/CMakeLists.txt: adding a pass type is a folder under passes/ and one line there
+// (docs/adding-a-pass.md).
 void register_builtin_passes(fgvk::PassRegistry& registry);
 
 // Convenience for tools and tests that only need reflection.

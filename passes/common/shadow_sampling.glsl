@@ -1,9 +1,9 @@
 // Shadow lookups in the point-shadow-atlas (passes/point_shadow_atlas) for point, spot
-// and directional lights, for compute and fragment consumers. Needs shadow_data.glsl's
+// and directional lights, for compute and fragment consumers. Needs shadow_data.h's
 // structs; the buffers and the atlas sampler stay the includer's (declare them however
 // the pass binds them).
 //
-// Conventions (mirrored by passes/point_shadow_atlas/shadow_faces.cpp, tested there):
+// Conventions (mirrored by passes/common/shadow_faces.cpp, tested there):
 //  - face k of a point light (0..5 = +X -X +Y -Y +Z -Z, the Vulkan cube-map orientation)
 //    lives at atlas layer ShadowLight.params.z + k; params.z < 0: the light has no faces;
 //    a spot or directional light has its one face at params.z (light_faces.hpp);

@@ -74,7 +74,7 @@ fg::PassDesc PointShadowAtlasPass::describe() {
        .access = Access::transfer_dst,
        .stage = Stage::transfer,
        .description = "Header, ShadowLight per scene light and ShadowFace per layer "
-                      "(passes/common/shadow_data.glsl); at least shadow_data_bytes(layers)."},
+                      "(passes/interface/shared/shadow_data.h); at least shadow_data_bytes(layers)."},
   };
   desc.params = param_table().descs();
   desc.check = &check;

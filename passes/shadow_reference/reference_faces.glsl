@@ -1,6 +1,6 @@
 // Cube-face projection of the shadow reference, computed from a point instead of read
 // from a matrix table (thousands of sample points per light would need megabytes of
-// matrices). Mirrors passes/point_shadow_atlas/shadow_faces.cpp face_basis() and
+// matrices). Mirrors passes/common/shadow_faces.cpp face_basis() and
 // face_view_proj(): faces 0..5 = +X -X +Y -Y +Z -Z, clip = (s.d, t.d, a w + c, w = f.d),
 // depth = z / w = 0 at `near`, 1 at `far`, uv = clip.xy / w * 0.5 + 0.5.
 #ifndef ANTUMBRA_REFERENCE_FACES_GLSL

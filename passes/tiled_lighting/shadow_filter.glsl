@@ -1,6 +1,6 @@
 // Per-light shadow lookups in the point-shadow atlas for the hard / PCF / PCSS modes
 // (and the layered mode's fallback). Expects `atlas` (sampler2DArray, nearest, clamp)
-// and the ShadowData buffer (shadow_data.glsl) bound by the includer, and the defines
+// and the ShadowData buffer (interface/shared/shadow_data.h) bound by the includer, and the defines
 // KERNEL (PCF/PCSS filter taps per side) and BLOCKER_SEARCH (PCSS search taps per side).
 //
 // Depth comparison uses a receiver plane: the face-clip depth of the receiver's tangent

@@ -29,7 +29,7 @@ std::vector<fg::PortDesc> atlas_ports(bool optional) {
        .access = Access::storage_read,
        .stage = Stage::compute,
        .optional = optional,
-       .description = "Per-light atlas slots and face matrices (shadow_data.glsl)."},
+       .description = "Per-light atlas slots and face matrices (interface/shared/shadow_data.h)."},
   };
 }
 
@@ -173,7 +173,7 @@ fg::PassDesc TiledLightingPass::describe() {
                         .stage = Stage::compute,
                         .optional = true,
                         .description =
-                            "Light -> shadow layer table (light-layering, layer_table.glsl); "
+                            "Light -> shadow layer table (light-layering, interface/shared/layer_table.h); "
                             "shadows = layered."});
   desc.ports.push_back(
       compute_array_input("shadow", {Format::rgba16f, Format::rgba8, Format::rgba32f}, 1, 8,

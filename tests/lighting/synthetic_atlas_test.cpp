@@ -1,7 +1,7 @@
 // shadow-hard / shadow-pcf / shadow-pcss over a synthetic point-shadow atlas: a test
 // pass ray-casts the scene (floor + a box between the light and the floor) into six
 // 64x64 cube faces on the CPU and uploads them with the face matrices, following the
-// shadow_data.glsl contract. Checks, along a floor line from under the box (umbra) to
+// shadow_data.h contract. Checks, along a floor line from under the box (umbra) to
 // open floor: umbra dark, open floor fully lit (no acne), the hard edge where the
 // geometry puts it and binary, PCF and PCSS with intermediate values at the penumbra.
 

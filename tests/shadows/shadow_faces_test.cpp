@@ -1,5 +1,5 @@
 // Face matrices, cube-face selection and the conservative face culling of
-// point-shadow-atlas (passes/point_shadow_atlas/shadow_faces.*). CPU only.
+// point-shadow-atlas (passes/common/shadow_faces.*). CPU only.
 
 #include "common/shadow_faces.hpp"
 

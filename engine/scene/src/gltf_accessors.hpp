@@ -16,7 +16,7 @@
 
 namespace antumbra::scene::detail {
 
-// A problem found in the glTF: a code from scene_codes.hpp, a message and a JSON
+// A problem found in the glTF: a code from base/diagnostic_codes.hpp (codes::scene), a message and a JSON
 // Pointer into the glTF document.
 struct GltfIssue {
   const char* code = nullptr;
