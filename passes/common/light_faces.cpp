@@ -6,22 +6,7 @@
 #include "antumbra/scene/light_bounds.hpp"
 
 namespace antumbra::passes::light_faces {
-namespace {
-
-// Rows (applied to world points) into a column-major matrix.
-glm::mat4 from_rows(const glm::vec4& rx, const glm::vec4& ry, const glm::vec4& rz,
-                    const glm::vec4& rw) {
-  glm::mat4 m(0.0f);
-  for (int col = 0; col < 4; ++col) {
-    m[col][0] = rx[col];
-    m[col][1] = ry[col];
-    m[col][2] = rz[col];
-    m[col][3] = rw[col];
-  }
-  return m;
-}
-
-}  // namespace
+namespace {}  // namespace
 
 void perpendicular_basis(const glm::vec3& forward, glm::vec3& s, glm::vec3& t) {
   const glm::vec3 helper =
@@ -46,7 +31,7 @@ glm::mat4 spot_view_proj(const glm::vec3& position, const glm::vec3& direction, 
   const glm::vec4 rx(s / tan_half_fov, -glm::dot(s, position) / tan_half_fov);
   const glm::vec4 ry(t / tan_half_fov, -glm::dot(t, position) / tan_half_fov);
   const glm::vec4 rw(f, -glm::dot(f, position));
-  return from_rows(rx, ry, a * rw + glm::vec4(0.0f, 0.0f, 0.0f, c), rw);
+  return shadow_faces::from_rows(rx, ry, a * rw + glm::vec4(0.0f, 0.0f, 0.0f, c), rw);
 }
 
 shadow_faces::FacePyramid spot_pyramid(const glm::vec3& position, const glm::vec3& direction,
@@ -135,7 +120,7 @@ DirectionalFit fit_directional(const glm::vec3& direction, const glm::mat4& came
   const glm::vec4 rx(s / radius, -cs / radius);
   const glm::vec4 ry(t / radius, -ct / radius);
   const glm::vec4 rz(f / fit.depth, -depth_min / fit.depth);
-  fit.view_proj = from_rows(rx, ry, rz, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+  fit.view_proj = shadow_faces::from_rows(rx, ry, rz, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
   return fit;
 }
 

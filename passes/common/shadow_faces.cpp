@@ -42,6 +42,18 @@ std::uint32_t cube_face(const glm::vec3& d) {
   return d.z >= 0.0f ? 4u : 5u;
 }
 
+glm::mat4 from_rows(const glm::vec4& rx, const glm::vec4& ry, const glm::vec4& rz,
+                    const glm::vec4& rw) {
+  glm::mat4 m(0.0f);
+  for (int col = 0; col < 4; ++col) {
+    m[col][0] = rx[col];
+    m[col][1] = ry[col];
+    m[col][2] = rz[col];
+    m[col][3] = rw[col];
+  }
+  return m;
+}
+
 glm::mat4 face_view_proj(const glm::vec3& light, std::uint32_t face, float near, float far) {
   const FaceBasis b = face_basis(face);
   // Rows of the matrix (applied to p - light): x = s.d, y = t.d, w = forward.d and
@@ -52,14 +64,7 @@ glm::mat4 face_view_proj(const glm::vec3& light, std::uint32_t face, float near,
   const glm::vec4 ry(b.t, -glm::dot(b.t, light));
   const glm::vec4 rw(b.forward, -glm::dot(b.forward, light));
   const glm::vec4 rz = a * rw + glm::vec4(0.0f, 0.0f, 0.0f, c);
-  glm::mat4 m(0.0f);
-  for (int col = 0; col < 4; ++col) {
-    m[col][0] = rx[col];
-    m[col][1] = ry[col];
-    m[col][2] = rz[col];
-    m[col][3] = rw[col];
-  }
-  return m;
+  return from_rows(rx, ry, rz, rw);
 }
 
 FaceSample project(const glm::mat4& view_proj, const glm::vec3& p) {

@@ -37,6 +37,11 @@ std::uint32_t cube_face(const glm::vec3& d);
 // depth = clip.z / clip.w in [0, 1] from `near` to `far` (not reversed, Vulkan).
 glm::mat4 face_view_proj(const glm::vec3& light, std::uint32_t face, float near, float far);
 
+// The matrix whose rows are rx, ry, rz, rw (GLM stores columns): the face and light
+// projections are written row by row.
+glm::mat4 from_rows(const glm::vec4& rx, const glm::vec4& ry, const glm::vec4& rz,
+                    const glm::vec4& rw);
+
 // Face uv (0..1, v down as texel rows), depth (0..1) and linear axis distance of `p`.
 struct FaceSample {
   glm::vec2 uv{0.0f};
