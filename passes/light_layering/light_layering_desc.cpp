@@ -33,7 +33,8 @@ fg::PassDesc LightLayeringPass::describe() {
        .kind = fg::ResourceKind::buffer,
        .access = fg::Access::transfer_dst,
        .stage = fg::Stage::transfer,
-       .description = "LayerTableHeader + one uint per scene light (interface/shared/layer_table.h)."},
+       .description =
+           "LayerTableHeader + one uint per scene light (interface/shared/layer_table.h)."},
   };
   desc.params = param_table().descs();
   desc.check = &check;

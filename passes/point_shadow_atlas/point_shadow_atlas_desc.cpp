@@ -73,8 +73,9 @@ fg::PassDesc PointShadowAtlasPass::describe() {
        .kind = ResourceKind::buffer,
        .access = Access::transfer_dst,
        .stage = Stage::transfer,
-       .description = "Header, ShadowLight per scene light and ShadowFace per layer "
-                      "(passes/interface/shared/shadow_data.h); at least shadow_data_bytes(layers)."},
+       .description =
+           "Header, ShadowLight per scene light and ShadowFace per layer "
+           "(passes/interface/shared/shadow_data.h); at least shadow_data_bytes(layers)."},
   };
   desc.params = param_table().descs();
   desc.check = &check;

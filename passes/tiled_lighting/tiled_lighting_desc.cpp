@@ -167,14 +167,15 @@ fg::PassDesc TiledLightingPass::describe() {
       "lists) of every scene point light, with an optional shadow term per light.";
   desc.ports = lighting_ports();
   for (auto& port : atlas_ports(true)) desc.ports.push_back(std::move(port));
-  desc.ports.push_back({.name = "layerTable",
-                        .kind = ResourceKind::buffer,
-                        .access = Access::storage_read,
-                        .stage = Stage::compute,
-                        .optional = true,
-                        .description =
-                            "Light -> shadow layer table (light-layering, interface/shared/layer_table.h); "
-                            "shadows = layered."});
+  desc.ports.push_back(
+      {.name = "layerTable",
+       .kind = ResourceKind::buffer,
+       .access = Access::storage_read,
+       .stage = Stage::compute,
+       .optional = true,
+       .description =
+           "Light -> shadow layer table (light-layering, interface/shared/layer_table.h); "
+           "shadows = layered."});
   desc.ports.push_back(
       compute_array_input("shadow", {Format::rgba16f, Format::rgba8, Format::rgba32f}, 1, 8,
                           "Blurred layered shadow (1 lit .. 0 shadowed): layer L in channel L%4 of "

@@ -16,8 +16,8 @@
 
 namespace antumbra::scene::detail {
 
-// A problem found in the glTF: a code from base/diagnostic_codes.hpp (codes::scene), a message and a JSON
-// Pointer into the glTF document.
+// A problem found in the glTF: a code from base/diagnostic_codes.hpp (codes::scene), a message and
+// a JSON Pointer into the glTF document.
 struct GltfIssue {
   const char* code = nullptr;
   std::string message;

@@ -1,6 +1,7 @@
 #pragma once
 // The JSON scene format (version 1) and its loader. Problems in the file come back as
-// located diagnostics (codes in base/diagnostic_codes.hpp, codes::scene), never as exceptions or crashes.
+// located diagnostics (codes in base/diagnostic_codes.hpp, codes::scene), never as exceptions or
+// crashes.
 //
 // Format summary (every key not listed is an error, with a "did you mean"):
 //   version   (required) integer, 1
