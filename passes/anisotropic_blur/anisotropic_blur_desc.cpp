@@ -1,25 +1,21 @@
 #include "anisotropic_blur_pass.hpp"
 #include "common/layer_checks.hpp"
 #include "common/lighting_reflection.hpp"
+#include "common/plan_checks.hpp"
 
 #include "antumbra/base/diagnostic_codes.hpp"
+#include "common/ports.hpp"
 
 namespace antumbra::passes {
 namespace {
-
-int bound(const fg::PlanPass& pass, std::string_view port) {
-  for (const auto& b : pass.bindings) {
-    if (b.port == port) return b.resource;
-  }
-  return -1;
-}
 
 // Exactly one source, and the output holds as many layers as the penumbra it follows.
 void check(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& graph,
            base::Diagnostics& diagnostics) {
   const auto& source_desc = graph.passes[static_cast<std::size_t>(pass.source_index)];
-  const int inputs = (bound(pass, "hardShadow") >= 0 ? 1 : 0) + (bound(pass, "esm") >= 0 ? 1 : 0) +
-                     (bound(pass, "source") >= 0 ? 1 : 0);
+  const int inputs = (bound_index(pass, port::kHardShadow) >= 0 ? 1 : 0) +
+                     (bound_index(pass, port::kEsm) >= 0 ? 1 : 0) +
+                     (bound_index(pass, port::kSource) >= 0 ? 1 : 0);
   if (inputs != 1) {
     diagnostics.add(graph.document.make(
         codes::graph::kPortUnbound, base::Severity::error,
@@ -28,8 +24,8 @@ void check(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& 
             "'source' (second direction)",
         source_desc.pointer + "/in"));
   }
-  const int penumbra = bound(pass, "penumbra");
-  const int shadow = bound(pass, "shadow");
+  const int penumbra = bound_index(pass, port::kPenumbra);
+  const int shadow = bound_index(pass, port::kShadow);
   if (penumbra >= 0 && shadow >= 0 &&
       plan.resources[static_cast<std::size_t>(shadow)].layers <
           plan.resources[static_cast<std::size_t>(penumbra)].layers) {
@@ -56,23 +52,24 @@ fg::PassDesc AnisotropicBlurPass::describe() {
       "layer, sized by its penumbra (run it twice: horizontal from the hard-shadow bits, then "
       "vertical from the first result).";
   desc.ports = {
-      compute_input("depth", {Format::d32f, Format::d16}, "G-buffer depth (full resolution)."),
-      compute_input("normal", {Format::rgba16f, Format::rgba32f}, "G-buffer view-space normal."),
-      compute_array_input("penumbra", {Format::rgba16f}, 1, 8,
+      compute_input(port::kDepth, {Format::d32f, Format::d16}, "G-buffer depth (full resolution)."),
+      compute_input(port::kNormal, {Format::rgba16f, Format::rgba32f},
+                    "G-buffer view-space normal."),
+      compute_array_input(port::kPenumbra, {Format::rgba16f}, 1, 8,
                           "Penumbra widths from layered-penumbra (same resolution as the output)."),
-      {.name = "hardShadow",
+      {.name = port::kHardShadow,
        .access = Access::sampled,
        .stage = Stage::compute,
        .formats = {Format::r32ui},
        .optional = true,
        .description = "Full-resolution hard-shadow bits: the first direction's input."},
-      compute_array_input("esm", {Format::rgba8}, 1, 8,
+      compute_array_input(port::kEsm, {Format::rgba8}, 1, 8,
                           "Full-resolution ESM visibility (layered-penumbra's `esm`): the first "
                           "direction's input instead of the hard-shadow bits.",
                           true),
-      compute_array_input("source", {Format::rgba16f}, 1, 8,
+      compute_array_input(port::kSource, {Format::rgba16f}, 1, 8,
                           "The first direction's result: the second direction's input.", true),
-      {.name = "shadow",
+      {.name = port::kShadow,
        .direction = PortDirection::output,
        .access = Access::storage_write,
        .stage = Stage::compute,

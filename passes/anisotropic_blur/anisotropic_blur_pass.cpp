@@ -7,6 +7,7 @@
 #include "antumbra/gpu/pipelines.hpp"
 #include "common/frame_resources.hpp"
 #include "common/pass_support.hpp"
+#include "common/ports.hpp"
 
 namespace antumbra::passes {
 namespace {
@@ -30,8 +31,8 @@ AnisotropicBlurPass::AnisotropicBlurPass(const fg::PlanPass& pass)
 }
 
 void AnisotropicBlurPass::prepare(fgvk::PrepareContext& context) {
-  from_hard_bits_ = context.bindings.image("hardShadow") != nullptr;
-  from_esm_ = context.bindings.image("esm") != nullptr;
+  from_hard_bits_ = context.bindings.image(port::kHardShadow) != nullptr;
+  from_esm_ = context.bindings.image(port::kEsm) != nullptr;
   std::vector<gpu::ShaderDefine> defines;
   if (from_hard_bits_) defines.push_back({"FROM_HARD_BITS", "1"});
   if (from_esm_) defines.push_back({"FROM_ESM", "1"});
@@ -49,12 +50,12 @@ void AnisotropicBlurPass::prepare(fgvk::PrepareContext& context) {
 
 void AnisotropicBlurPass::execute(fgvk::ExecuteContext& context) {
   const auto& b = context.bindings;
-  const auto& depth = b.required_image("depth");
-  const auto& normal = b.required_image("normal");
-  const auto& penumbra = b.required_image("penumbra");
-  const auto& shadow = b.required_image("shadow");
-  const auto& input =
-      b.required_image(from_hard_bits_ ? "hardShadow" : (from_esm_ ? "esm" : "source"));
+  const auto& depth = b.required_image(port::kDepth);
+  const auto& normal = b.required_image(port::kNormal);
+  const auto& penumbra = b.required_image(port::kPenumbra);
+  const auto& shadow = b.required_image(port::kShadow);
+  const auto& input = b.required_image(from_hard_bits_ ? port::kHardShadow
+                                                       : (from_esm_ ? port::kEsm : port::kSource));
   const VkSampler nearest = context.samplers.nearest_clamp;
 
   const VkCommandBuffer cmd = context.cmd;

@@ -6,8 +6,7 @@
 
 namespace antumbra::passes {
 
-LayerCap find_layer_cap(const fg::PlanPass& pass, const fg::Plan& plan,
-                        std::string_view layer_port) {
+LayerCap find_layer_cap(const fg::PlanPass& pass, const fg::Plan& plan, fg::PortId layer_port) {
   const int table = bound_index(pass, layer_port);
   if (table < 0) return {};
   for (const auto& other : plan.passes) {
@@ -23,8 +22,7 @@ LayerCap find_layer_cap(const fg::PlanPass& pass, const fg::Plan& plan,
 }
 
 void check_layer_storage(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& graph,
-                         const LayerCap& cap, std::string_view port,
-                         base::Diagnostics& diagnostics) {
+                         const LayerCap& cap, fg::PortId port, base::Diagnostics& diagnostics) {
   const int image = bound_index(pass, port);
   if (cap.source_index < 0 || image < 0) return;
   const auto& resource = plan.resources[static_cast<std::size_t>(image)];

@@ -16,12 +16,10 @@ struct LayerCap {
   int max_layers = 0;
   int source_index = -1;
 };
-LayerCap find_layer_cap(const fg::PlanPass& pass, const fg::Plan& plan,
-                        std::string_view layer_port);
+LayerCap find_layer_cap(const fg::PlanPass& pass, const fg::Plan& plan, fg::PortId layer_port);
 
 // Adds FG090 when `cap` needs more than 4 * layers of the image bound to `port`.
 void check_layer_storage(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& graph,
-                         const LayerCap& cap, std::string_view port,
-                         base::Diagnostics& diagnostics);
+                         const LayerCap& cap, fg::PortId port, base::Diagnostics& diagnostics);
 
 }  // namespace antumbra::passes

@@ -1,4 +1,5 @@
 #include "lighting_reflection.hpp"
+#include "common/ports.hpp"
 
 namespace antumbra::passes {
 
@@ -7,7 +8,7 @@ using fg::Format;
 using fg::PortDirection;
 using fg::Stage;
 
-fg::PortDesc compute_input(std::string name, std::vector<fg::Format> formats,
+fg::PortDesc compute_input(fg::PortId name, std::vector<fg::Format> formats,
                            std::string description, std::string size_group) {
   return {.name = std::move(name),
           .access = Access::sampled,
@@ -17,7 +18,7 @@ fg::PortDesc compute_input(std::string name, std::vector<fg::Format> formats,
           .description = std::move(description)};
 }
 
-fg::PortDesc compute_array_input(std::string name, std::vector<fg::Format> formats,
+fg::PortDesc compute_array_input(fg::PortId name, std::vector<fg::Format> formats,
                                  std::uint32_t min_layers, std::uint32_t max_layers,
                                  std::string description, bool optional) {
   return {.name = std::move(name),
@@ -30,7 +31,7 @@ fg::PortDesc compute_array_input(std::string name, std::vector<fg::Format> forma
           .description = std::move(description)};
 }
 
-fg::PortDesc compute_buffer_input(std::string name, std::string description) {
+fg::PortDesc compute_buffer_input(fg::PortId name, std::string description) {
   return {.name = std::move(name),
           .kind = fg::ResourceKind::buffer,
           .access = Access::storage_read,
@@ -40,13 +41,13 @@ fg::PortDesc compute_buffer_input(std::string name, std::string description) {
 
 std::vector<fg::PortDesc> lighting_ports() {
   return {
-      compute_input("depth", {Format::d32f, Format::d16, Format::d24s8}, "G-buffer depth.",
+      compute_input(port::kDepth, {Format::d32f, Format::d16, Format::d24s8}, "G-buffer depth.",
                     "screen"),
-      compute_input("normal", {Format::rgba16f, Format::rgba32f},
+      compute_input(port::kNormal, {Format::rgba16f, Format::rgba32f},
                     "G-buffer view-space normal and roughness.", "screen"),
-      compute_input("albedo", {Format::rgba8, Format::rgba16f}, "G-buffer albedo and metallic.",
-                    "screen"),
-      {.name = "hdr",
+      compute_input(port::kAlbedo, {Format::rgba8, Format::rgba16f},
+                    "G-buffer albedo and metallic.", "screen"),
+      {.name = port::kHdr,
        .direction = PortDirection::output,
        .access = Access::storage_write,
        .stage = Stage::compute,

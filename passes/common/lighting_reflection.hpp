@@ -12,16 +12,16 @@ namespace antumbra::passes {
 
 // An image input read through a sampler by a compute shader: the most common port of
 // the screen-space passes (G-buffer depth and normals above all).
-fg::PortDesc compute_input(std::string name, std::vector<fg::Format> formats,
+fg::PortDesc compute_input(fg::PortId name, std::vector<fg::Format> formats,
                            std::string description, std::string size_group = {});
 
 // A layered image (texture array: shadow faces, layered screen images) sampled in
 // compute, with at least `min_layers` and at most `max_layers` (0: any number) layers.
-fg::PortDesc compute_array_input(std::string name, std::vector<fg::Format> formats,
+fg::PortDesc compute_array_input(fg::PortId name, std::vector<fg::Format> formats,
                                  std::uint32_t min_layers, std::uint32_t max_layers,
                                  std::string description, bool optional = false);
 // A buffer read as a storage buffer in compute (shadowData, layerTable).
-fg::PortDesc compute_buffer_input(std::string name, std::string description);
+fg::PortDesc compute_buffer_input(fg::PortId name, std::string description);
 
 // depth, normal, albedo sampled in compute; hdr written as a storage image.
 std::vector<fg::PortDesc> lighting_ports();

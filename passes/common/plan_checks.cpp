@@ -2,15 +2,15 @@
 
 namespace antumbra::passes {
 
-int bound_index(const fg::PlanPass& pass, std::string_view port) {
+int bound_index(const fg::PlanPass& pass, fg::PortId port) {
   for (const auto& b : pass.bindings) {
-    if (b.port == port) return b.resource;
+    if (b.port == port.name()) return b.resource;
   }
   return -1;
 }
 
 const fg::PlanResource* bound_resource(const fg::PlanPass& pass, const fg::Plan& plan,
-                                       std::string_view port) {
+                                       fg::PortId port) {
   const int index = bound_index(pass, port);
   return index < 0 ? nullptr : &plan.resources[static_cast<std::size_t>(index)];
 }

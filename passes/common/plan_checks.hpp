@@ -14,10 +14,10 @@
 namespace antumbra::passes {
 
 // The index of the resource bound to `port` of `pass`, or -1 when the port is unbound.
-int bound_index(const fg::PlanPass& pass, std::string_view port);
+int bound_index(const fg::PlanPass& pass, fg::PortId port);
 // The resource bound to `port`, or nullptr.
 const fg::PlanResource* bound_resource(const fg::PlanPass& pass, const fg::Plan& plan,
-                                       std::string_view port);
+                                       fg::PortId port);
 
 // An error about `pass`, at "/passes/<its index>" + `suffix` in the graph file (e.g.
 // "/params/shadows", "/in/layerTable"), prefixed with the pass's name and type.

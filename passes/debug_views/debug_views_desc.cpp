@@ -1,4 +1,5 @@
 #include "common/lighting_reflection.hpp"
+#include "common/ports.hpp"
 #include "debug_views_pass.hpp"
 
 namespace antumbra::passes {
@@ -12,7 +13,7 @@ using fg::Stage;
 
 // Every view writes an rgba8 storage image (any size: `render --output` saves it).
 fg::PortDesc view_port(std::string description) {
-  return {.name = "view",
+  return {.name = port::kView,
           .direction = PortDirection::output,
           .access = Access::storage_write,
           .stage = Stage::compute,
@@ -30,10 +31,10 @@ fg::PassDesc LayerViewPass::describe() {
       "reaches, mixed by attenuation; red/white stripes where two lights share a layer (over "
       "the cap); a dimmed grey-scale of the surface elsewhere.";
   desc.ports = {
-      compute_input("depth", {Format::d32f, Format::d16}, "G-buffer depth.", "screen"),
-      compute_input("normal", {Format::rgba16f, Format::rgba32f},
+      compute_input(port::kDepth, {Format::d32f, Format::d16}, "G-buffer depth.", "screen"),
+      compute_input(port::kNormal, {Format::rgba16f, Format::rgba32f},
                     "G-buffer view-space normal (shades the grey-scale surface).", "screen"),
-      compute_buffer_input("layerTable", "Light -> screen layer (light-layering)."),
+      compute_buffer_input(port::kLayerTable, "Light -> screen layer (light-layering)."),
       view_port("Layer colours over the dimmed surface (same size as depth)."),
   };
   desc.ports.back().size_group = "screen";
@@ -48,7 +49,7 @@ fg::PassDesc PenumbraViewPass::describe() {
       "Debug view: the widest penumbra over every screen layer of a pixel in false colour "
       "(black where the width is zero, a colour ramp up to maxWidth).";
   desc.ports = {
-      compute_array_input("penumbra", {Format::rgba16f}, 1, 8,
+      compute_array_input(port::kPenumbra, {Format::rgba16f}, 1, 8,
                           "Penumbra widths from layered-penumbra (4 layers per texel)."),
       view_port("False-colour widths (nearest-scaled to its own size)."),
   };
@@ -63,9 +64,9 @@ fg::PassDesc AtlasViewPass::describe() {
       "Debug view: shadow-atlas faces tiled into a grid, depth linearised with each light's "
       "near plane and range when shadowData is bound (bright = near the light), raw otherwise.";
   desc.ports = {
-      compute_array_input("atlas", {Format::d32f, Format::d16}, 1, 0,
+      compute_array_input(port::kAtlas, {Format::d32f, Format::d16}, 1, 0,
                           "Shadow faces, one per array layer (point-shadow-atlas)."),
-      {.name = "shadowData",
+      {.name = port::kShadowData,
        .kind = ResourceKind::buffer,
        .access = Access::storage_read,
        .stage = Stage::compute,

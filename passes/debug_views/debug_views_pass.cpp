@@ -6,6 +6,7 @@
 #include "antumbra/gpu/context.hpp"
 #include "antumbra/gpu/pipelines.hpp"
 #include "common/frame_resources.hpp"
+#include "common/ports.hpp"
 
 namespace antumbra::passes {
 namespace {
@@ -67,16 +68,16 @@ void LayerViewPass::prepare(fgvk::PrepareContext& context) {
 
 void LayerViewPass::execute(fgvk::ExecuteContext& context) {
   const auto& b = context.bindings;
-  const auto& depth = b.required_image("depth");
-  const auto& normal = b.required_image("normal");
-  const auto& view = b.required_image("view");
+  const auto& depth = b.required_image(port::kDepth);
+  const auto& normal = b.required_image(port::kNormal);
+  const auto& view = b.required_image(port::kView);
   const VkSampler nearest = context.samplers.nearest_clamp;
   const VkCommandBuffer cmd = context.cmd;
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, compute_.pipeline);
   gpu::PushDescriptors()
       .uniform_buffer(0, context.frame.frame_uniforms)
       .storage_buffer(1, context.frame.lights)
-      .storage_buffer(2, b.buffer("layerTable")->buffer)
+      .storage_buffer(2, b.buffer(port::kLayerTable)->buffer)
       .combined_image_sampler(3, depth.view, nearest, depth.layout)
       .combined_image_sampler(4, normal.view, nearest, normal.layout)
       .storage_image(5, view.view, view.layout)
@@ -96,8 +97,8 @@ void PenumbraViewPass::prepare(fgvk::PrepareContext& context) {
 }
 
 void PenumbraViewPass::execute(fgvk::ExecuteContext& context) {
-  const auto& penumbra = context.bindings.required_image("penumbra");
-  const auto& view = context.bindings.required_image("view");
+  const auto& penumbra = context.bindings.required_image(port::kPenumbra);
+  const auto& view = context.bindings.required_image(port::kView);
   const VkCommandBuffer cmd = context.cmd;
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, compute_.pipeline);
   gpu::PushDescriptors()
@@ -111,7 +112,7 @@ void PenumbraViewPass::execute(fgvk::ExecuteContext& context) {
 }
 
 void AtlasViewPass::prepare(fgvk::PrepareContext& context) {
-  linearise_ = context.bindings.buffer("shadowData") != nullptr;
+  linearise_ = context.bindings.buffer(port::kShadowData) != nullptr;
   std::vector<gpu::ShaderDefine> defines;
   if (linearise_) defines.push_back({"HAS_SHADOW_DATA", "1"});
   auto shader = load_shader(context, "debug_views/atlas_view.comp", shader_files_, defines);
@@ -124,8 +125,8 @@ void AtlasViewPass::prepare(fgvk::PrepareContext& context) {
 
 void AtlasViewPass::execute(fgvk::ExecuteContext& context) {
   const auto& b = context.bindings;
-  const auto& atlas = b.required_image("atlas");
-  const auto& view = b.required_image("view");
+  const auto& atlas = b.required_image(port::kAtlas);
+  const auto& view = b.required_image(port::kView);
   const auto first = params_.first_face;
   const std::uint32_t available = atlas.layers > first ? atlas.layers - first : 1u;
   const std::uint32_t faces = std::min(params_.faces, available);
@@ -138,7 +139,7 @@ void AtlasViewPass::execute(fgvk::ExecuteContext& context) {
   gpu::PushDescriptors descriptors;
   descriptors.combined_image_sampler(0, atlas.array_view, context.samplers.nearest_clamp,
                                      atlas.layout);
-  if (linearise_) descriptors.storage_buffer(1, b.buffer("shadowData")->buffer);
+  if (linearise_) descriptors.storage_buffer(1, b.buffer(port::kShadowData)->buffer);
   descriptors.storage_image(2, view.view, view.layout)
       .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, compute_.layout);
   const AtlasViewConstants constants{first, faces, columns, cell, atlas.layers};

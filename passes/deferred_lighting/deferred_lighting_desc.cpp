@@ -1,6 +1,7 @@
 #include "deferred_lighting_pass.hpp"
 
 #include "common/lighting_reflection.hpp"
+#include "common/ports.hpp"
 
 namespace antumbra::passes {
 
@@ -14,25 +15,25 @@ fg::PassDesc DeferredLightingPass::describe() {
   desc.description =
       "Shades every scene point light over the G-buffer (untiled, no shadows) into an HDR image.";
   desc.ports = {
-      {.name = "depth",
+      {.name = port::kDepth,
        .access = Access::sampled,
        .stage = Stage::fragment,
        .formats = {Format::d32f, Format::d16, Format::d24s8},
        .size_group = "screen",
        .description = "G-buffer depth."},
-      {.name = "normal",
+      {.name = port::kNormal,
        .access = Access::sampled,
        .stage = Stage::fragment,
        .formats = {Format::rgba16f, Format::rgba32f},
        .size_group = "screen",
        .description = "G-buffer view-space normal and roughness."},
-      {.name = "albedo",
+      {.name = port::kAlbedo,
        .access = Access::sampled,
        .stage = Stage::fragment,
        .formats = {Format::rgba8, Format::rgba16f},
        .size_group = "screen",
        .description = "G-buffer albedo and metallic."},
-      {.name = "hdr",
+      {.name = port::kHdr,
        .direction = PortDirection::output,
        .access = Access::color_attachment,
        .stage = Stage::fragment,

@@ -7,6 +7,7 @@
 #include "common/frame_resources.hpp"
 #include "common/fullscreen_pass.hpp"
 #include "common/pass_support.hpp"
+#include "common/ports.hpp"
 
 namespace antumbra::passes {
 namespace {
@@ -37,15 +38,15 @@ void DeferredLightingPass::prepare(fgvk::PrepareContext& context) {
   layout_ = gpu::create_pipeline_layout(context.gpu, sets, push, context.pass.name + ".layout");
   pipeline_ = build_fullscreen_pipeline(
       context, "deferred_lighting/deferred_lighting.frag", bindings, sizeof(PushConstants), layout_,
-      context.bindings.required_image("hdr").format, shader_files_);
+      context.bindings.required_image(port::kHdr).format, shader_files_);
 }
 
 void DeferredLightingPass::execute(fgvk::ExecuteContext& context) {
   const auto& b = context.bindings;
-  const auto& depth = b.required_image("depth");
-  const auto& normal = b.required_image("normal");
-  const auto& albedo = b.required_image("albedo");
-  const auto& hdr = b.required_image("hdr");
+  const auto& depth = b.required_image(port::kDepth);
+  const auto& normal = b.required_image(port::kNormal);
+  const auto& albedo = b.required_image(port::kAlbedo);
+  const auto& hdr = b.required_image(port::kHdr);
   const VkSampler nearest = context.samplers.nearest_clamp;
   const VkCommandBuffer cmd = context.cmd;
 

@@ -1,3 +1,4 @@
+#include "common/ports.hpp"
 #include "gbuffer_pass.hpp"
 
 namespace antumbra::passes {
@@ -12,21 +13,21 @@ fg::PassDesc GBufferPass::describe() {
   desc.description =
       "Rasterises the scene into depth, view-space normals (+ roughness) and albedo (+ metallic).";
   desc.ports = {
-      {.name = "depth",
+      {.name = port::kDepth,
        .direction = PortDirection::output,
        .access = Access::depth_attachment,
        .stage = Stage::graphics,
        .formats = {Format::d32f, Format::d16, Format::d24s8},
        .size_group = "gbuffer",
        .description = "Scene depth (0 near .. 1 far)."},
-      {.name = "normal",
+      {.name = port::kNormal,
        .direction = PortDirection::output,
        .access = Access::color_attachment,
        .stage = Stage::fragment,
        .formats = {Format::rgba16f, Format::rgba32f},
        .size_group = "gbuffer",
        .description = "View-space normal in xyz, roughness in w."},
-      {.name = "albedo",
+      {.name = port::kAlbedo,
        .direction = PortDirection::output,
        .access = Access::color_attachment,
        .stage = Stage::fragment,

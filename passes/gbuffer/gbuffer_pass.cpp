@@ -7,6 +7,7 @@
 #include "common/frame_data.hpp"
 #include "common/frame_resources.hpp"
 #include "common/pass_support.hpp"
+#include "common/ports.hpp"
 
 namespace antumbra::passes {
 
@@ -16,9 +17,9 @@ GBufferPass::GBufferPass(const fg::PlanPass& pass) : params_(param_table().read(
 void GBufferPass::prepare(fgvk::PrepareContext& context) {
   auto vert = load_shader(context, "gbuffer/gbuffer.vert", shader_files_);
   auto frag = load_shader(context, "gbuffer/gbuffer.frag", shader_files_);
-  const auto& depth = context.bindings.required_image("depth");
-  const auto& normal = context.bindings.required_image("normal");
-  const auto& albedo = context.bindings.required_image("albedo");
+  const auto& depth = context.bindings.required_image(port::kDepth);
+  const auto& normal = context.bindings.required_image(port::kNormal);
+  const auto& albedo = context.bindings.required_image(port::kAlbedo);
 
   gpu::DescriptorSetLayoutBuilder bindings;
   bindings.uniform_buffer(0, VK_SHADER_STAGE_VERTEX_BIT)
@@ -46,9 +47,9 @@ void GBufferPass::prepare(fgvk::PrepareContext& context) {
 }
 
 void GBufferPass::execute(fgvk::ExecuteContext& context) {
-  const auto& depth = context.bindings.required_image("depth");
-  const auto& normal = context.bindings.required_image("normal");
-  const auto& albedo = context.bindings.required_image("albedo");
+  const auto& depth = context.bindings.required_image(port::kDepth);
+  const auto& normal = context.bindings.required_image(port::kNormal);
+  const auto& albedo = context.bindings.required_image(port::kAlbedo);
 
   std::array<VkRenderingAttachmentInfo, 2> colors{};
   const std::array<const fgvk::BoundImage*, 2> targets{&normal, &albedo};

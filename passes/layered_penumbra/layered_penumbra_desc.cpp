@@ -1,5 +1,6 @@
 #include "common/layer_checks.hpp"
 #include "common/lighting_reflection.hpp"
+#include "common/ports.hpp"
 #include "layered_penumbra_pass.hpp"
 
 namespace antumbra::passes {
@@ -7,10 +8,10 @@ namespace {
 
 void check(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& graph,
            base::Diagnostics& diagnostics) {
-  const LayerCap cap = find_layer_cap(pass, plan, "layerTable");
-  check_layer_storage(pass, plan, graph, cap, "penumbra", diagnostics);
-  check_layer_storage(pass, plan, graph, cap, "translucency", diagnostics);
-  check_layer_storage(pass, plan, graph, cap, "esm", diagnostics);
+  const LayerCap cap = find_layer_cap(pass, plan, port::kLayerTable);
+  check_layer_storage(pass, plan, graph, cap, port::kPenumbra, diagnostics);
+  check_layer_storage(pass, plan, graph, cap, port::kTranslucency, diagnostics);
+  check_layer_storage(pass, plan, graph, cap, port::kEsm, diagnostics);
 }
 
 }  // namespace
@@ -28,22 +29,22 @@ fg::PassDesc LayeredPenumbraPass::describe() {
       "fetch) in every light's shadow faces (one dispatch, texture arrays), hard-shadow bits and "
       "translucent shadow colour.";
   desc.ports = {
-      compute_input("depth", {Format::d32f, Format::d16}, "G-buffer depth.", "screen"),
-      compute_input("normal", {Format::rgba16f, Format::rgba32f}, "G-buffer view-space normal.",
-                    "screen"),
-      compute_array_input("atlas", {Format::d32f, Format::d16}, 6, 0,
+      compute_input(port::kDepth, {Format::d32f, Format::d16}, "G-buffer depth.", "screen"),
+      compute_input(port::kNormal, {Format::rgba16f, Format::rgba32f},
+                    "G-buffer view-space normal.", "screen"),
+      compute_array_input(port::kAtlas, {Format::d32f, Format::d16}, 6, 0,
                           "Shadow faces of every light (point-shadow-atlas)."),
       compute_array_input(
-          "colour", {Format::rgba8}, 6, 0,
+          port::kColour, {Format::rgba8}, 6, 0,
           "Translucent shadow colour beside the atlas; enables the translucency output.", true),
       compute_array_input(
-          "minDepth", {Format::r32f}, 1, 0,
+          port::kMinDepth, {Format::r32f}, 1, 0,
           "Min-filtered faces (shadow-min-filter): when bound, one fetch gives the "
           "blocker depth and the blocker search (searchScale, searchTaps) is skipped.",
           true),
-      compute_buffer_input("shadowData", "Face matrices and per-light shadow data."),
-      compute_buffer_input("layerTable", "Light -> screen layer (light-layering)."),
-      {.name = "penumbra",
+      compute_buffer_input(port::kShadowData, "Face matrices and per-light shadow data."),
+      compute_buffer_input(port::kLayerTable, "Light -> screen layer (light-layering)."),
+      {.name = port::kPenumbra,
        .direction = PortDirection::output,
        .access = Access::storage_write,
        .stage = Stage::compute,
@@ -52,14 +53,14 @@ fg::PassDesc LayeredPenumbraPass::describe() {
        .max_layers = 8,
        .description =
            "Penumbra width (world units) of 4 layers per texel; full or half resolution."},
-      {.name = "hardShadow",
+      {.name = port::kHardShadow,
        .direction = PortDirection::output,
        .access = Access::storage_write,
        .stage = Stage::compute,
        .formats = {Format::r32ui},
        .size_group = "screen",
        .description = "One in-shadow bit per layer (up to 32)."},
-      {.name = "translucency",
+      {.name = port::kTranslucency,
        .direction = PortDirection::output,
        .access = Access::storage_write,
        .stage = Stage::compute,
@@ -71,7 +72,7 @@ fg::PassDesc LayeredPenumbraPass::describe() {
        .description = "Shadow colour per layer packed r<<24|g<<16|b<<8|a, 4 layers per texel."},
   };
   desc.ports.push_back(
-      {.name = "esm",
+      {.name = port::kEsm,
        .direction = PortDirection::output,
        .access = Access::storage_write,
        .stage = Stage::compute,

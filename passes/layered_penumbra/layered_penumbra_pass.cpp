@@ -6,6 +6,7 @@
 #include "antumbra/gpu/pipelines.hpp"
 #include "common/frame_resources.hpp"
 #include "common/pass_support.hpp"
+#include "common/ports.hpp"
 
 namespace antumbra::passes {
 namespace {
@@ -28,13 +29,13 @@ LayeredPenumbraPass::LayeredPenumbraPass(const fg::PlanPass& pass)
 }
 
 void LayeredPenumbraPass::prepare(fgvk::PrepareContext& context) {
-  colour_ = context.bindings.image("colour") != nullptr &&
-            context.bindings.image("translucency") != nullptr;
-  min_filter_ = context.bindings.image("minDepth") != nullptr;
+  colour_ = context.bindings.image(port::kColour) != nullptr &&
+            context.bindings.image(port::kTranslucency) != nullptr;
+  min_filter_ = context.bindings.image(port::kMinDepth) != nullptr;
   std::vector<gpu::ShaderDefine> defines;
   if (colour_) defines.push_back({"HAS_COLOUR", "1"});
   if (min_filter_) defines.push_back({"MIN_FILTER", "1"});
-  esm_ = context.bindings.image("esm") != nullptr;
+  esm_ = context.bindings.image(port::kEsm) != nullptr;
   if (esm_) defines.push_back({"HAS_ESM", "1"});
   auto shader =
       load_shader(context, "layered_penumbra/layered_penumbra.comp", shader_files_, defines);
@@ -56,35 +57,35 @@ void LayeredPenumbraPass::prepare(fgvk::PrepareContext& context) {
 
 void LayeredPenumbraPass::execute(fgvk::ExecuteContext& context) {
   const auto& b = context.bindings;
-  const auto& depth = b.required_image("depth");
-  const auto& normal = b.required_image("normal");
-  const auto& atlas = b.required_image("atlas");
-  const auto& penumbra = b.required_image("penumbra");
-  const auto& hard = b.required_image("hardShadow");
+  const auto& depth = b.required_image(port::kDepth);
+  const auto& normal = b.required_image(port::kNormal);
+  const auto& atlas = b.required_image(port::kAtlas);
+  const auto& penumbra = b.required_image(port::kPenumbra);
+  const auto& hard = b.required_image(port::kHardShadow);
   const VkSampler nearest = context.samplers.nearest_clamp;
 
   gpu::PushDescriptors descriptors;
   descriptors.uniform_buffer(0, context.frame.frame_uniforms)
       .storage_buffer(1, context.frame.lights)
-      .storage_buffer(2, b.buffer("shadowData")->buffer)
-      .storage_buffer(3, b.buffer("layerTable")->buffer)
+      .storage_buffer(2, b.buffer(port::kShadowData)->buffer)
+      .storage_buffer(3, b.buffer(port::kLayerTable)->buffer)
       .combined_image_sampler(4, depth.view, nearest, depth.layout)
       .combined_image_sampler(5, normal.view, nearest, normal.layout)
       .combined_image_sampler(6, atlas.array_view, nearest, atlas.layout)
       .storage_image(7, penumbra.array_view, penumbra.layout)
       .storage_image(8, hard.view, hard.layout);
   if (colour_) {
-    const auto& colour = b.required_image("colour");
-    const auto& translucency = b.required_image("translucency");
+    const auto& colour = b.required_image(port::kColour);
+    const auto& translucency = b.required_image(port::kTranslucency);
     descriptors.combined_image_sampler(9, colour.array_view, nearest, colour.layout)
         .storage_image(10, translucency.array_view, translucency.layout);
   }
   if (min_filter_) {
-    const auto& min_depth = b.required_image("minDepth");
+    const auto& min_depth = b.required_image(port::kMinDepth);
     descriptors.combined_image_sampler(11, min_depth.array_view, nearest, min_depth.layout);
   }
   if (esm_) {
-    const auto& esm = b.required_image("esm");
+    const auto& esm = b.required_image(port::kEsm);
     descriptors.storage_image(12, esm.array_view, esm.layout);
   }
   const VkCommandBuffer cmd = context.cmd;

@@ -1,5 +1,6 @@
 #include "common/layer_table.hpp"
 #include "common/plan_checks.hpp"
+#include "common/ports.hpp"
 #include "light_layering_pass.hpp"
 
 namespace antumbra::passes {
@@ -9,7 +10,7 @@ namespace {
 // The table must hold a layer per light the engine supports: a compiler check (validate).
 void check(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& graph,
            base::Diagnostics& diagnostics) {
-  const auto* table = bound_resource(pass, plan, "layerTable");
+  const auto* table = bound_resource(pass, plan, port::kLayerTable);
   if (table == nullptr || table->buffer_size >= kLayerTableBytes) return;
   add_pass_error(graph, pass, codes::layering::kLayerTableTooSmall,
                  "the layerTable buffer '" + table->name + "' holds " +
@@ -28,7 +29,7 @@ fg::PassDesc LightLayeringPass::describe() {
       "Colours the shadow-casting lights into at most maxLayers screen-space shadow layers "
       "(lights of one layer never overlap) and uploads the light -> layer table.";
   desc.ports = {
-      {.name = "layerTable",
+      {.name = port::kLayerTable,
        .direction = fg::PortDirection::output,
        .kind = fg::ResourceKind::buffer,
        .access = fg::Access::transfer_dst,

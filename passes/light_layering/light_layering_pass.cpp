@@ -13,6 +13,7 @@
 #include "common/frame_resources.hpp"
 #include "common/layer_table.hpp"
 #include "common/pass_support.hpp"
+#include "common/ports.hpp"
 
 namespace antumbra::passes {
 
@@ -76,7 +77,7 @@ void LightLayeringPass::execute(fgvk::ExecuteContext& context) {
     const int layer = assignment->layer[s];
     layers[scene_index_[s]] = layer < 0 ? kNoLayer : static_cast<std::uint32_t>(layer);
   }
-  const auto* table = context.bindings.buffer("layerTable");
+  const auto* table = context.bindings.buffer(port::kLayerTable);
   const VkBufferCopy region{0, 0, kLayerTableBytes};
   vkCmdCopyBuffer(context.cmd, staging, table->buffer, 1, &region);
 

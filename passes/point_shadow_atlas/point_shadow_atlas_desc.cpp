@@ -1,4 +1,5 @@
 #include "common/plan_checks.hpp"
+#include "common/ports.hpp"
 #include "common/shadow_data.hpp"
 #include "point_shadow_atlas_pass.hpp"
 
@@ -8,9 +9,9 @@ namespace {
 // Buffer and colour-map sizes against the atlas: compiler checks, so validate sees them.
 void check(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& graph,
            base::Diagnostics& diagnostics) {
-  const auto* atlas = bound_resource(pass, plan, "atlas");
-  const auto* colour = bound_resource(pass, plan, "colour");
-  const auto* data = bound_resource(pass, plan, "shadowData");
+  const auto* atlas = bound_resource(pass, plan, port::kAtlas);
+  const auto* colour = bound_resource(pass, plan, port::kColour);
+  const auto* data = bound_resource(pass, plan, port::kShadowData);
   if (atlas == nullptr) return;  // a required port: the compiler has reported it
   const std::size_t needed = shadow_data_bytes(atlas->layers);
   if (data != nullptr && data->buffer_size < needed) {
@@ -46,7 +47,7 @@ fg::PassDesc PointShadowAtlasPass::describe() {
       "the camera cannot see, re-renders only faces whose light or geometry changed, and "
       "writes the per-light/per-face shadowData table.";
   desc.ports = {
-      {.name = "atlas",
+      {.name = port::kAtlas,
        .direction = PortDirection::output,
        .access = Access::depth_attachment,
        .stage = Stage::graphics,
@@ -56,7 +57,7 @@ fg::PassDesc PointShadowAtlasPass::describe() {
        .size_group = "atlas",
        .description = "Face depths (0 near .. 1 at the light's range); declare it persistent "
                       "so that cached faces survive between frames."},
-      {.name = "colour",
+      {.name = port::kColour,
        .direction = PortDirection::output,
        .access = Access::color_attachment,
        .stage = Stage::graphics,
@@ -68,7 +69,7 @@ fg::PassDesc PointShadowAtlasPass::describe() {
        .description = "Shadow colour per face: product of the transmittances of the translucent "
                       "casters along the ray (white = clear); translucent casters then stay out "
                       "of the depth atlas. Same size and layers as `atlas`, persistent too."},
-      {.name = "shadowData",
+      {.name = port::kShadowData,
        .direction = PortDirection::output,
        .kind = ResourceKind::buffer,
        .access = Access::transfer_dst,

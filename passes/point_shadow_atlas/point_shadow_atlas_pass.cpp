@@ -15,6 +15,7 @@
 #include "common/frame_data.hpp"
 #include "common/frame_resources.hpp"
 #include "common/pass_support.hpp"
+#include "common/ports.hpp"
 
 namespace antumbra::passes {
 namespace {
@@ -66,8 +67,8 @@ PointShadowAtlasPass::PointShadowAtlasPass(const fg::PlanPass& pass)
 }
 
 void PointShadowAtlasPass::prepare(fgvk::PrepareContext& context) {
-  const auto& atlas = context.bindings.required_image("atlas");
-  const auto* colour = context.bindings.image("colour");
+  const auto& atlas = context.bindings.required_image(port::kAtlas);
+  const auto* colour = context.bindings.image(port::kColour);
   // shadowData and colour sizes are compiler checks (point_shadow_atlas_desc.cpp).
   settings_.layers = atlas.layers;
   settings_.face_size = atlas.extent.width;
@@ -178,8 +179,8 @@ void PointShadowAtlasPass::adopt(fgvk::Pass& previous) {
 }
 
 void PointShadowAtlasPass::execute(fgvk::ExecuteContext& context) {
-  const auto& atlas = context.bindings.required_image("atlas");
-  const auto* colour = context.bindings.image("colour");
+  const auto& atlas = context.bindings.required_image(port::kAtlas);
+  const auto* colour = context.bindings.image(port::kColour);
   const scene::Scene& scene = *context.frame.scene;
   if (atlas.image != atlas_image_ ||
       (colour != nullptr ? colour->image : VK_NULL_HANDLE) != colour_image_) {
@@ -260,7 +261,7 @@ void PointShadowAtlasPass::upload(fgvk::ExecuteContext& context, const AtlasFram
   std::memcpy(out + kShadowFacesOffset, frame.faces.data(),
               frame.faces.size() * sizeof(ShadowFace));
   const VkBufferCopy region{0, 0, bytes};
-  vkCmdCopyBuffer(context.cmd, slot.staging, context.bindings.buffer("shadowData")->buffer, 1,
+  vkCmdCopyBuffer(context.cmd, slot.staging, context.bindings.buffer(port::kShadowData)->buffer, 1,
                   &region);
 
   auto* draws = reinterpret_cast<FaceDraw*>(slot.draws.mapped());
@@ -329,8 +330,8 @@ void PointShadowAtlasPass::draw_scene(fgvk::ExecuteContext& context, VkBuffer dr
 
 void PointShadowAtlasPass::draw_layered(fgvk::ExecuteContext& context, const AtlasFrame& frame,
                                         VkBuffer draws) {
-  const auto& atlas = context.bindings.required_image("atlas");
-  const auto* colour = context.bindings.image("colour");
+  const auto& atlas = context.bindings.required_image(port::kAtlas);
+  const auto* colour = context.bindings.image(port::kColour);
   VkClearValue depth_clear{};
   depth_clear.depthStencil = {1.0f, 0};
   VkClearValue colour_clear{};
@@ -386,7 +387,7 @@ void PointShadowAtlasPass::draw_layered(fgvk::ExecuteContext& context, const Atl
 
 void PointShadowAtlasPass::draw_per_face(fgvk::ExecuteContext& context, const AtlasFrame& frame,
                                          VkBuffer draws) {
-  const auto& atlas = context.bindings.required_image("atlas");
+  const auto& atlas = context.bindings.required_image(port::kAtlas);
   VkClearValue depth_clear{};
   depth_clear.depthStencil = {1.0f, 0};
   VkClearValue colour_clear{};

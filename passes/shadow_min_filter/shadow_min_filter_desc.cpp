@@ -1,26 +1,19 @@
 #include "antumbra/base/diagnostic_codes.hpp"
 #include "antumbra/fg/graph_desc.hpp"
 #include "common/lighting_reflection.hpp"
+#include "common/plan_checks.hpp"
+#include "common/ports.hpp"
 #include "shadow_min_filter_pass.hpp"
 
 namespace antumbra::passes {
 namespace {
 
-const fg::PlanResource* bound_image(const fg::PlanPass& pass, const fg::Plan& plan,
-                                    std::string_view port) {
-  for (const auto& b : pass.bindings) {
-    if (b.port == port && b.resource >= 0)
-      return &plan.resources[static_cast<std::size_t>(b.resource)];
-  }
-  return nullptr;
-}
-
 // The map must cover every atlas layer, and each of its texels a whole, gatherable
 // block of atlas texels (factor 1 or even, the same on both axes).
 void check(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& graph,
            base::Diagnostics& diagnostics) {
-  const auto* atlas = bound_image(pass, plan, "atlas");
-  const auto* out = bound_image(pass, plan, "minDepth");
+  const auto* atlas = bound_resource(pass, plan, port::kAtlas);
+  const auto* out = bound_resource(pass, plan, port::kMinDepth);
   if (atlas == nullptr || out == nullptr) return;
   const auto& desc = graph.passes[static_cast<std::size_t>(pass.source_index)];
   const auto fail = [&](const std::string& what) {
@@ -60,10 +53,11 @@ fg::PassDesc ShadowMinFilterPass::describe() {
       "Low-resolution, separably min-filtered copy of every shadow face: the nearest blocker "
       "around a lookup in one fetch, replacing the penumbra pass's blocker search.";
   desc.ports = {
-      compute_array_input("atlas", {Format::d32f, Format::d16}, 1, 0,
+      compute_array_input(port::kAtlas, {Format::d32f, Format::d16}, 1, 0,
                           "Shadow faces of every light (point-shadow-atlas)."),
-      compute_buffer_input("shadowData", "Which faces are owned and which were drawn this frame."),
-      {.name = "minDepth",
+      compute_buffer_input(port::kShadowData,
+                           "Which faces are owned and which were drawn this frame."),
+      {.name = port::kMinDepth,
        .direction = PortDirection::output,
        .access = Access::storage_write,
        .stage = Stage::compute,

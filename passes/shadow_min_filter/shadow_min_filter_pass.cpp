@@ -5,6 +5,7 @@
 #include "antumbra/gpu/commands.hpp"
 #include "antumbra/gpu/context.hpp"
 #include "antumbra/gpu/pipelines.hpp"
+#include "common/ports.hpp"
 #include "shared/workgroups.h"
 
 namespace antumbra::passes {
@@ -46,9 +47,9 @@ void ShadowMinFilterPass::prepare(fgvk::PrepareContext& context) {
 
 void ShadowMinFilterPass::execute(fgvk::ExecuteContext& context) {
   const auto& b = context.bindings;
-  const auto& atlas = b.required_image("atlas");
-  const auto& out = b.required_image("minDepth");
-  const VkBuffer shadow_data = b.buffer("shadowData")->buffer;
+  const auto& atlas = b.required_image(port::kAtlas);
+  const auto& out = b.required_image(port::kMinDepth);
+  const VkBuffer shadow_data = b.buffer(port::kShadowData)->buffer;
   const VkCommandBuffer cmd = context.cmd;
 
   if (!coarse_ || coarse_.extent().width != out.extent.width ||

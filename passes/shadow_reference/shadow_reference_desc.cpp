@@ -1,4 +1,5 @@
 #include "common/lighting_reflection.hpp"
+#include "common/ports.hpp"
 #include "shadow_reference_pass.hpp"
 
 namespace antumbra::passes {
@@ -22,7 +23,7 @@ fg::PassDesc ShadowReferencePass::describe() {
       "surface. Slow, offline, deterministic.";
   desc.ports = lighting_ports();
   desc.ports.back().description = "Linear HDR radiance with reference soft shadows.";
-  desc.ports.push_back({.name = "penumbraCount",
+  desc.ports.push_back({.name = port::kPenumbraCount,
                         .direction = PortDirection::output,
                         .access = Access::storage_write,
                         .stage = Stage::compute,

@@ -11,6 +11,7 @@
 #include "common/frame_data.hpp"
 #include "common/frame_resources.hpp"
 #include "common/pass_support.hpp"
+#include "common/ports.hpp"
 #include "reference_shared.hpp"
 
 namespace antumbra::passes {
@@ -46,8 +47,8 @@ ShadowReferencePass::ShadowReferencePass(const fg::PlanPass& pass)
 
 void ShadowReferencePass::prepare(fgvk::PrepareContext& context) {
   const auto& b = context.bindings;
-  const auto& hdr = b.required_image("hdr");
-  has_penumbra_ = b.image("penumbraCount") != nullptr;
+  const auto& hdr = b.required_image(port::kHdr);
+  has_penumbra_ = b.image(port::kPenumbraCount) != nullptr;
   layered_ = context.gpu.features().shader_output_layer;
   shader_files_.clear();
   prepare_raster_pipelines(context);
@@ -173,7 +174,7 @@ void ShadowReferencePass::prepare_compute_pipelines(fgvk::PrepareContext& contex
 ShadowReferencePass::Key ShadowReferencePass::make_key(const fgvk::ExecuteContext& context) const {
   Key key;
   key.geometry_version = context.frame.geometry_version;
-  key.extent = context.bindings.required_image("hdr").extent;
+  key.extent = context.bindings.required_image(port::kHdr).extent;
   const scene::Scene& scene = *context.frame.scene;
   const VkExtent2D viewport = context.frame.viewport;
   const float aspect =

@@ -8,6 +8,7 @@
 #include "antumbra/gpu/pipelines.hpp"
 #include "common/frame_resources.hpp"
 #include "common/pass_support.hpp"
+#include "common/ports.hpp"
 #include "reference_shared.hpp"
 #include "shadow_reference_pass.hpp"
 
@@ -78,9 +79,9 @@ void ShadowReferencePass::record_batch(fgvk::ExecuteContext& context,
                                        const reference::Batch& batch) {
   const VkCommandBuffer cmd = context.cmd;
   const auto& b = context.bindings;
-  const auto& depth = b.required_image("depth");
-  const auto& normal = b.required_image("normal");
-  const VkExtent2D extent = b.required_image("hdr").extent;
+  const auto& depth = b.required_image(port::kDepth);
+  const auto& normal = b.required_image(port::kNormal);
+  const VkExtent2D extent = b.required_image(port::kHdr).extent;
   const VkSampler nearest = context.samplers.nearest_clamp;
 
   // The previous batch's resolve has read the visibility sums before they are cleared.
@@ -152,10 +153,10 @@ void ShadowReferencePass::record_resolve(fgvk::ExecuteContext& context,
                                          const reference::Batch& batch) {
   const VkCommandBuffer cmd = context.cmd;
   const auto& b = context.bindings;
-  const auto& depth = b.required_image("depth");
-  const auto& normal = b.required_image("normal");
-  const auto& albedo = b.required_image("albedo");
-  const VkExtent2D extent = b.required_image("hdr").extent;
+  const auto& depth = b.required_image(port::kDepth);
+  const auto& normal = b.required_image(port::kNormal);
+  const auto& albedo = b.required_image(port::kAlbedo);
+  const VkExtent2D extent = b.required_image(port::kHdr).extent;
   const VkSampler nearest = context.samplers.nearest_clamp;
   gpu::memory_barrier(cmd, kCompute, kStorageRW, kCompute, kStorageRW);
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, resolve_pipeline_);
@@ -293,9 +294,9 @@ void ShadowReferencePass::render_faces(fgvk::ExecuteContext& context, const refe
 void ShadowReferencePass::record_final(fgvk::ExecuteContext& context) {
   const VkCommandBuffer cmd = context.cmd;
   const auto& b = context.bindings;
-  const auto& depth = b.required_image("depth");
-  const auto& albedo = b.required_image("albedo");
-  const auto& hdr = b.required_image("hdr");
+  const auto& depth = b.required_image(port::kDepth);
+  const auto& albedo = b.required_image(port::kAlbedo);
+  const auto& hdr = b.required_image(port::kHdr);
   const VkSampler nearest = context.samplers.nearest_clamp;
   // The accumulator was written by this frame's resolves or an earlier frame's.
   gpu::memory_barrier(cmd, kCompute | kTransfer, kStorageRW | VK_ACCESS_2_TRANSFER_WRITE_BIT,
@@ -308,7 +309,7 @@ void ShadowReferencePass::record_final(fgvk::ExecuteContext& context) {
       .storage_buffer(3, accum_)
       .storage_image(4, hdr.view, hdr.layout);
   if (has_penumbra_) {
-    const auto& penumbra = b.required_image("penumbraCount");
+    const auto& penumbra = b.required_image(port::kPenumbraCount);
     descriptors.storage_image(5, penumbra.view, penumbra.layout);
   }
   descriptors.push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, final_layout_);

@@ -1,6 +1,7 @@
 #include "common/layer_table.hpp"
 #include "common/lighting_reflection.hpp"
 #include "common/plan_checks.hpp"
+#include "common/ports.hpp"
 #include "common/shadow_data.hpp"
 #include "tiled_lighting_pass.hpp"
 
@@ -15,7 +16,7 @@ using fg::Stage;
 
 std::vector<fg::PortDesc> atlas_ports(bool optional) {
   return {
-      {.name = "atlas",
+      {.name = port::kAtlas,
        .access = Access::sampled,
        .stage = Stage::compute,
        .formats = {Format::d32f, Format::d16},
@@ -24,7 +25,7 @@ std::vector<fg::PortDesc> atlas_ports(bool optional) {
        .optional = optional,
        .description = "Point-shadow atlas: face k of light slot s at layer 6s+k "
                       "(point-shadow-atlas)."},
-      {.name = "shadowData",
+      {.name = port::kShadowData,
        .kind = ResourceKind::buffer,
        .access = Access::storage_read,
        .stage = Stage::compute,
@@ -117,8 +118,8 @@ void check(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& 
   const auto error = [&](const char* code, const std::string& message, const std::string& at) {
     add_pass_error(graph, pass, code, message, at, diagnostics);
   };
-  const auto* atlas = bound_resource(pass, plan, "atlas");
-  const auto* shadow_data = bound_resource(pass, plan, "shadowData");
+  const auto* atlas = bound_resource(pass, plan, port::kAtlas);
+  const auto* shadow_data = bound_resource(pass, plan, port::kShadowData);
   if ((atlas == nullptr) != (shadow_data == nullptr)) {
     error(codes::lighting::kAtlasWithoutData, "bind both `atlas` and `shadowData`, or neither",
           atlas == nullptr ? "/in/shadowData" : "/in/atlas");
@@ -141,8 +142,8 @@ void check(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& 
           "/in/shadowData");
   }
   if (mode != ShadowMode::layered) return;
-  const auto* table = bound_resource(pass, plan, "layerTable");
-  const auto* shadow = bound_resource(pass, plan, "shadow");
+  const auto* table = bound_resource(pass, plan, port::kLayerTable);
+  const auto* shadow = bound_resource(pass, plan, port::kShadow);
   if (table == nullptr || shadow == nullptr) {
     error(codes::lighting::kLayeredInputs,
           std::string("shadows = layered needs the `layerTable` and `shadow` inputs; `") +
@@ -168,7 +169,7 @@ fg::PassDesc TiledLightingPass::describe() {
   desc.ports = lighting_ports();
   for (auto& port : atlas_ports(true)) desc.ports.push_back(std::move(port));
   desc.ports.push_back(
-      {.name = "layerTable",
+      {.name = port::kLayerTable,
        .kind = ResourceKind::buffer,
        .access = Access::storage_read,
        .stage = Stage::compute,
@@ -177,17 +178,17 @@ fg::PassDesc TiledLightingPass::describe() {
            "Light -> shadow layer table (light-layering, interface/shared/layer_table.h); "
            "shadows = layered."});
   desc.ports.push_back(
-      compute_array_input("shadow", {Format::rgba16f, Format::rgba8, Format::rgba32f}, 1, 8,
+      compute_array_input(port::kShadow, {Format::rgba16f, Format::rgba8, Format::rgba32f}, 1, 8,
                           "Blurred layered shadow (1 lit .. 0 shadowed): layer L in channel L%4 of "
                           "array layer L/4; shadows = layered.",
                           true));
   desc.ports.push_back(
-      compute_array_input("colour", {Format::rgba32ui}, 1, 8,
+      compute_array_input(port::kColour, {Format::rgba32ui}, 1, 8,
                           "Layered shadow colour of translucent occluders, rgba8 packed "
                           "r<<24|g<<16|b<<8|a per channel like `shadow`; shadows = layered.",
                           true));
   desc.ports.push_back(
-      {.name = "hardShadow",
+      {.name = port::kHardShadow,
        .access = Access::sampled,
        .stage = Stage::compute,
        .formats = {Format::r32ui},

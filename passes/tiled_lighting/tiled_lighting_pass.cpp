@@ -8,6 +8,7 @@
 #include "common/frame_resources.hpp"
 #include "common/layer_table.hpp"
 #include "common/pass_support.hpp"
+#include "common/ports.hpp"
 #include "common/shadow_data.hpp"
 
 namespace antumbra::passes {
@@ -80,12 +81,12 @@ void TiledLightingPass::prepare(fgvk::PrepareContext& context) {
   // What must be bound for the mode is checked by the compiler (tiled_lighting_desc.cpp):
   // a plan that reaches here has it.
   const auto& b = context.bindings;
-  const auto* atlas = b.image("atlas");
+  const auto* atlas = b.image(port::kAtlas);
   // Layered mode uses the atlas only as the fallback of layer-less lights; other modes
   // ignore an atlas bound without a use (it is still read-declared, which is harmless).
   has_atlas_ = atlas != nullptr && mode_ != ShadowMode::none;
-  has_colour_ = mode_ == ShadowMode::layered && b.image("colour") != nullptr;
-  has_hard_bits_ = mode_ == ShadowMode::layered && b.image("hardShadow") != nullptr;
+  has_colour_ = mode_ == ShadowMode::layered && b.image(port::kColour) != nullptr;
+  has_hard_bits_ = mode_ == ShadowMode::layered && b.image(port::kHardShadow) != nullptr;
 
   constexpr VkShaderStageFlags kComp = VK_SHADER_STAGE_COMPUTE_BIT;
   gpu::DescriptorSetLayoutBuilder builder;
@@ -106,12 +107,12 @@ void TiledLightingPass::prepare(fgvk::PrepareContext& context) {
   const std::array<VkPushConstantRange, 1> push{{{kComp, 0, sizeof(PushConstants)}}};
   layout_ = gpu::create_pipeline_layout(context.gpu, sets, push, context.pass.name + ".layout");
 
-  const auto hdr_format = b.required_image("hdr").format;
+  const auto hdr_format = b.required_image(port::kHdr).format;
   const std::vector<gpu::ShaderDefine> defines{
       {"SHADOW_MODE", std::to_string(static_cast<int>(mode_))},
       {"HAS_ATLAS", has_atlas_ ? "1" : "0"},
       {"ATLAS_D16",
-       has_atlas_ && b.required_image("atlas").format == VK_FORMAT_D16_UNORM ? "1" : "0"},
+       has_atlas_ && b.required_image(port::kAtlas).format == VK_FORMAT_D16_UNORM ? "1" : "0"},
       {"HAS_COLOUR", has_colour_ ? "1" : "0"},
       {"HAS_HARD_BITS", has_hard_bits_ ? "1" : "0"},
       {"FALLBACK_PCF", params_.pcf_fallback ? "1" : "0"},
@@ -128,10 +129,10 @@ void TiledLightingPass::prepare(fgvk::PrepareContext& context) {
 
 void TiledLightingPass::execute(fgvk::ExecuteContext& context) {
   const auto& b = context.bindings;
-  const auto& depth = b.required_image("depth");
-  const auto& normal = b.required_image("normal");
-  const auto& albedo = b.required_image("albedo");
-  const auto& hdr = b.required_image("hdr");
+  const auto& depth = b.required_image(port::kDepth);
+  const auto& normal = b.required_image(port::kNormal);
+  const auto& albedo = b.required_image(port::kAlbedo);
+  const auto& hdr = b.required_image(port::kHdr);
   const VkSampler nearest = context.samplers.nearest_clamp;
   const VkCommandBuffer cmd = context.cmd;
 
@@ -144,21 +145,21 @@ void TiledLightingPass::execute(fgvk::ExecuteContext& context) {
       .combined_image_sampler(kAlbedo, albedo.view, nearest, albedo.layout)
       .storage_image(kHdr, hdr.view, hdr.layout);
   if (has_atlas_) {
-    const auto& atlas = b.required_image("atlas");
+    const auto& atlas = b.required_image(port::kAtlas);
     descriptors.combined_image_sampler(kAtlas, atlas.array_view, nearest, atlas.layout)
-        .storage_buffer(kShadowData, b.buffer("shadowData")->buffer);
+        .storage_buffer(kShadowData, b.buffer(port::kShadowData)->buffer);
   }
   if (mode_ == ShadowMode::layered) {
-    const auto& shadow = b.required_image("shadow");
-    descriptors.storage_buffer(kLayerTable, b.buffer("layerTable")->buffer)
+    const auto& shadow = b.required_image(port::kShadow);
+    descriptors.storage_buffer(kLayerTable, b.buffer(port::kLayerTable)->buffer)
         .combined_image_sampler(kShadow, shadow.array_view, context.samplers.linear_clamp,
                                 shadow.layout);
     if (has_colour_) {
-      const auto& colour = b.required_image("colour");
+      const auto& colour = b.required_image(port::kColour);
       descriptors.combined_image_sampler(kColour, colour.array_view, nearest, colour.layout);
     }
     if (has_hard_bits_) {
-      const auto& bits = b.required_image("hardShadow");
+      const auto& bits = b.required_image(port::kHardShadow);
       descriptors.combined_image_sampler(kHardBits, bits.view, nearest, bits.layout);
     }
   }

@@ -1,3 +1,4 @@
+#include "common/ports.hpp"
 #include "tonemap_pass.hpp"
 
 namespace antumbra::passes {
@@ -11,13 +12,13 @@ fg::PassDesc TonemapPass::describe() {
   desc.type = "tonemap";
   desc.description = "Maps HDR radiance to display sRGB with a tone curve.";
   desc.ports = {
-      {.name = "hdr",
+      {.name = port::kHdr,
        .access = Access::sampled,
        .stage = Stage::fragment,
        .formats = {Format::rgba16f, Format::rgba32f, Format::r11g11b10f},
        .size_group = "screen",
        .description = "Linear HDR input."},
-      {.name = "ldr",
+      {.name = port::kLdr,
        .direction = PortDirection::output,
        .access = Access::color_attachment,
        .stage = Stage::fragment,

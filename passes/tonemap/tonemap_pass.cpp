@@ -7,6 +7,7 @@
 #include "common/frame_resources.hpp"
 #include "common/fullscreen_pass.hpp"
 #include "common/pass_support.hpp"
+#include "common/ports.hpp"
 
 namespace antumbra::passes {
 namespace {
@@ -36,12 +37,12 @@ void TonemapPass::prepare(fgvk::PrepareContext& context) {
   layout_ = gpu::create_pipeline_layout(context.gpu, sets, push, context.pass.name + ".layout");
   pipeline_ = build_fullscreen_pipeline(
       context, "tonemap/tonemap.frag", bindings, sizeof(PushConstants), layout_,
-      context.bindings.required_image("ldr").format, shader_files_);
+      context.bindings.required_image(port::kLdr).format, shader_files_);
 }
 
 void TonemapPass::execute(fgvk::ExecuteContext& context) {
-  const auto& hdr = context.bindings.required_image("hdr");
-  const auto& ldr = context.bindings.required_image("ldr");
+  const auto& hdr = context.bindings.required_image(port::kHdr);
+  const auto& ldr = context.bindings.required_image(port::kLdr);
   const VkCommandBuffer cmd = context.cmd;
   begin_fullscreen(cmd, ldr);
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_);

@@ -15,6 +15,7 @@
 #include "antumbra/fg/param_table.hpp"
 #include "common/layer_table.hpp"
 #include "common/pass_support.hpp"
+#include "common/ports.hpp"
 #include "executor_harness.hpp"
 #include "lighting_test_support.hpp"
 
@@ -35,14 +36,14 @@ class LayerFillPass final : public fgvk::Pass {
     fg::PassDesc desc;
     desc.type = "test-layer-fill";
     desc.ports = {
-        {.name = "shadow",
+        {.name = passes::port::kShadow,
          .direction = fg::PortDirection::output,
          .access = fg::Access::transfer_dst,
          .stage = fg::Stage::transfer,
          .formats = {fg::Format::rgba16f},
          .min_layers = 2,
          .max_layers = 2},
-        {.name = "layerTable",
+        {.name = passes::port::kLayerTable,
          .direction = fg::PortDirection::output,
          .kind = fg::ResourceKind::buffer,
          .access = fg::Access::transfer_dst,
@@ -70,7 +71,7 @@ class LayerFillPass final : public fgvk::Pass {
   void execute(fgvk::ExecuteContext& context) override {
     const float a = params_.a;
     const float b = params_.b;
-    const auto& shadow = context.bindings.required_image("shadow");
+    const auto& shadow = context.bindings.required_image(passes::port::kShadow);
     const std::array<VkClearColorValue, 2> values{
         {{{a, kDecoy, kDecoy, kDecoy}}, {{kDecoy, b, kDecoy, kDecoy}}}};
     for (std::uint32_t layer = 0; layer < 2; ++layer) {
@@ -82,7 +83,7 @@ class LayerFillPass final : public fgvk::Pass {
     table[1] = 6;  // layers used
     table[4] = kLayerOfLight0;
     table[5] = params_.light1_has_layer ? kLayerOfLight1 : passes::kNoLayer;
-    vkCmdUpdateBuffer(context.cmd, context.bindings.buffer("layerTable")->buffer, 0,
+    vkCmdUpdateBuffer(context.cmd, context.bindings.buffer(passes::port::kLayerTable)->buffer, 0,
                       passes::kLayerTableBytes, table.data());
   }
 

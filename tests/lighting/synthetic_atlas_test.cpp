@@ -15,6 +15,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "antumbra/gpu/resources.hpp"
+#include "common/ports.hpp"
 #include "common/shadow_data.hpp"
 #include "executor_harness.hpp"
 #include "lighting_test_support.hpp"
@@ -64,14 +65,14 @@ class AtlasFillPass final : public fgvk::Pass {
     fg::PassDesc desc;
     desc.type = "test-atlas-fill";
     desc.ports = {
-        {.name = "atlas",
+        {.name = passes::port::kAtlas,
          .direction = fg::PortDirection::output,
          .access = fg::Access::transfer_dst,
          .stage = fg::Stage::transfer,
          .formats = {fg::Format::d32f},
          .min_layers = 6,
          .max_layers = 6},
-        {.name = "shadowData",
+        {.name = passes::port::kShadowData,
          .direction = fg::PortDirection::output,
          .kind = fg::ResourceKind::buffer,
          .access = fg::Access::transfer_dst,
@@ -123,13 +124,13 @@ class AtlasFillPass final : public fgvk::Pass {
   }
 
   void execute(fgvk::ExecuteContext& context) override {
-    const auto& atlas = context.bindings.required_image("atlas");
+    const auto& atlas = context.bindings.required_image(passes::port::kAtlas);
     VkBufferImageCopy region{};
     region.imageSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 0, 6};
     region.imageExtent = {kFace, kFace, 1};
     vkCmdCopyBufferToImage(context.cmd, staging_.handle(), atlas.image, atlas.layout, 1, &region);
     // vkCmdUpdateBuffer takes at most 64 KiB a call; shadowData is larger.
-    const VkBuffer shadow_data = context.bindings.buffer("shadowData")->buffer;
+    const VkBuffer shadow_data = context.bindings.buffer(passes::port::kShadowData)->buffer;
     const VkDeviceSize bytes = data_.size() * 4;
     for (VkDeviceSize offset = 0; offset < bytes; offset += 65536) {
       vkCmdUpdateBuffer(context.cmd, shadow_data, offset,
@@ -152,7 +153,7 @@ class DepthUsagePass final : public fgvk::Pass {
   static fg::PassDesc describe() {
     fg::PassDesc desc;
     desc.type = "test-depth-usage";
-    desc.ports = {{.name = "atlas",
+    desc.ports = {{.name = passes::port::kAtlas,
                    .access = fg::Access::depth_read,
                    .stage = fg::Stage::graphics,
                    .formats = {fg::Format::d32f},

@@ -18,21 +18,22 @@ PassFactory PassRegistry::factory(std::string_view type) const {
   return it == factories_.end() ? nullptr : it->second;
 }
 
-const BoundImage* PassBindings::image(std::string_view port) const {
+const PassBindings::Entry& PassBindings::entry(fg::PortId port) const {
   for (const auto& e : entries_) {
-    if (e.port == port) return e.image;
+    if (e.port == port.name()) return e;
   }
-  return nullptr;
+  throw std::logic_error("port " + std::string(port) + " is not a port of this pass");
 }
 
-const BoundBuffer* PassBindings::buffer(std::string_view port) const {
-  for (const auto& e : entries_) {
-    if (e.port == port) return e.buffer;
-  }
-  return nullptr;
+const BoundImage* PassBindings::image(fg::PortId port) const {
+  return entry(port).image;
 }
 
-const BoundImage& PassBindings::required_image(std::string_view port) const {
+const BoundBuffer* PassBindings::buffer(fg::PortId port) const {
+  return entry(port).buffer;
+}
+
+const BoundImage& PassBindings::required_image(fg::PortId port) const {
   const BoundImage* found = image(port);
   if (found == nullptr)
     throw std::logic_error("port " + std::string(port) + " is not bound to an image");

@@ -71,6 +71,22 @@ std::string_view to_string(Stage stage);
 
 enum class PortDirection : std::uint8_t { input, output };
 
+// A port's name as a compile-time constant. A pass names its ports through such constants
+// in its description and in its runtime, and the runtime's binding lookups
+// (fgvk::PassBindings) accept nothing else, so a misspelt port is a build error instead
+// of an unbound resource at run time (docs/adding-a-pass.md).
+class PortId {
+ public:
+  constexpr explicit PortId(std::string_view name) : name_(name) {}
+  [[nodiscard]] constexpr std::string_view name() const { return name_; }
+  // So that a description can say `.name = port::kDepth`.
+  operator std::string() const { return std::string(name_); }  // NOLINT(*-explicit-*)
+  friend constexpr bool operator==(PortId a, PortId b) { return a.name_ == b.name_; }
+
+ private:
+  std::string_view name_;
+};
+
 struct PortDesc {
   std::string name;
   PortDirection direction = PortDirection::input;

@@ -65,13 +65,18 @@ class PassBindings {
   explicit PassBindings(std::vector<Entry> entries) : entries_(std::move(entries)) {}
   PassBindings() = default;
 
-  [[nodiscard]] const BoundImage* image(std::string_view port) const;
-  [[nodiscard]] const BoundBuffer* buffer(std::string_view port) const;
+  // Ports are named by constants shared with the pass's description (fg::PortId), and a
+  // port the pass does not declare throws std::logic_error: a pass that asks for it has a
+  // bug, which must not pass for an unbound optional port.
+  [[nodiscard]] const BoundImage* image(fg::PortId port) const;
+  [[nodiscard]] const BoundBuffer* buffer(fg::PortId port) const;
   // The image of a required port: throws std::logic_error when unbound, because the
   // graph compiler has already guaranteed required ports are bound.
-  [[nodiscard]] const BoundImage& required_image(std::string_view port) const;
+  [[nodiscard]] const BoundImage& required_image(fg::PortId port) const;
 
  private:
+  [[nodiscard]] const Entry& entry(fg::PortId port) const;
+
   std::vector<Entry> entries_;
 };
 
