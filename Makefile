@@ -6,7 +6,7 @@ JOBS       ?= $(shell nproc)
 CMAKE_ARGS ?=
 DEMO_ARGS  ?= --size 1280x720 --out out/atrium.png
 
-.PHONY: all deps configure build demo test test-asan fuzz bench lint format-check clean
+.PHONY: all deps configure build demo test test-asan fuzz bench lint format-check reference clean
 
 all: build
 
@@ -56,6 +56,11 @@ lint: configure
 # The clang-format half of lint alone (seconds; no configure needed).
 format-check:
 	@python3 scripts/lint.py --format-only
+
+# Copies the schema and pass reference the build generated from the registered passes
+# into data/schema/ and docs/ (tests fail while the committed copies differ).
+reference: configure
+	@cmake --build $(BUILD) -j$(JOBS) --target antumbra_update_reference
 
 bench: build
 	$(BUILD)/bench/antumbra_bench_graph

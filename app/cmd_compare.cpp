@@ -53,7 +53,7 @@ void print_header() {
               "ssim");
 }
 
-const char* kMetricNote =
+constexpr const char* kMetricNote =
     "metrics on Rec.709 luminance clamped to [0,1]; PSNR peak 1.0 (capped at 100 dB); SSIM "
     "11x11 Gaussian (sigma 1.5), C1=0.01^2, C2=0.03^2";
 

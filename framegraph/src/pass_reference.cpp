@@ -122,6 +122,7 @@ std::string md_code(std::string_view text) {
 
 std::string md_code_list(const std::vector<std::string>& items) {
   std::vector<std::string> coded;
+  coded.reserve(items.size());
   for (const auto& item : items) coded.push_back(md_code(item));
   return join(coded, ", ");
 }
@@ -238,9 +239,9 @@ std::string pass_reference_markdown(const PassDesc& desc) {
 std::string pass_reference_markdown(const Registry& registry) {
   std::string out =
       "# Pass reference\n\n"
-      "Generated from the pass registry by `antumbra passes --format markdown > docs/passes.md`;\n"
-      "do not edit it by hand. A CPU test fails when it is out of date: regenerate it with\n"
-      "that command (or run the test with `ANTUMBRA_UPDATE_GOLDEN=1`).\n\n"
+      "Generated from the pass registry by every build (also `antumbra passes --format\n"
+      "markdown`); do not edit it by hand. A CPU test fails when it differs from the build's\n"
+      "copy: `make reference` updates it.\n\n"
       "| pass type | description |\n"
       "| --- | --- |\n";
   for (const auto& [name, desc] : registry.passes()) {

@@ -88,6 +88,7 @@ std::vector<std::string> port_names(const PassDesc& desc, PortDirection directio
 
 std::string format_list(const std::vector<Format>& formats) {
   std::vector<std::string> names;
+  names.reserve(formats.size());
   for (Format f : formats) names.emplace_back(to_string(f));
   return join(names);
 }

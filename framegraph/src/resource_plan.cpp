@@ -8,7 +8,7 @@
 namespace antumbra::fg {
 namespace {
 
-constexpr std::uint64_t kImageAlignment = 64 * 1024;
+constexpr std::uint64_t kImageAlignment = std::uint64_t{64} * 1024;
 constexpr std::uint64_t kBufferAlignment = 256;
 
 std::uint64_t align_up(std::uint64_t value, std::uint64_t alignment) {

@@ -28,8 +28,7 @@ gpu::Buffer upload_device_buffer(gpu::Context& gpu, const std::vector<T>& data,
 
 }  // namespace
 
-GpuScene::GpuScene(gpu::Context& gpu, const scene::Scene& scene, std::uint32_t frames_in_flight)
-    : gpu_(gpu) {
+GpuScene::GpuScene(gpu::Context& gpu, const scene::Scene& scene, std::uint32_t frames_in_flight) {
   const auto geometry = merge_scene_geometry(scene);
   vertices_ = upload_device_buffer(
       gpu, geometry.vertices,

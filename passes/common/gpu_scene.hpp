@@ -28,7 +28,6 @@ class GpuScene {
     gpu::Buffer uniforms;
     gpu::Buffer lights;
   };
-  gpu::Context& gpu_;
   gpu::Buffer vertices_;
   gpu::Buffer indices_;
   gpu::Buffer materials_;

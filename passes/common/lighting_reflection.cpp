@@ -10,7 +10,7 @@ using fg::Stage;
 
 fg::PortDesc compute_input(fg::PortId name, std::vector<fg::Format> formats,
                            std::string description, std::string size_group) {
-  return {.name = std::move(name),
+  return {.name = name,
           .access = Access::sampled,
           .stage = Stage::compute,
           .formats = std::move(formats),
@@ -21,7 +21,7 @@ fg::PortDesc compute_input(fg::PortId name, std::vector<fg::Format> formats,
 fg::PortDesc compute_array_input(fg::PortId name, std::vector<fg::Format> formats,
                                  std::uint32_t min_layers, std::uint32_t max_layers,
                                  std::string description, bool optional) {
-  return {.name = std::move(name),
+  return {.name = name,
           .access = Access::sampled,
           .stage = Stage::compute,
           .formats = std::move(formats),
@@ -32,7 +32,7 @@ fg::PortDesc compute_array_input(fg::PortId name, std::vector<fg::Format> format
 }
 
 fg::PortDesc compute_buffer_input(fg::PortId name, std::string description) {
-  return {.name = std::move(name),
+  return {.name = name,
           .kind = fg::ResourceKind::buffer,
           .access = Access::storage_read,
           .stage = Stage::compute,

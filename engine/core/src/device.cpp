@@ -92,6 +92,7 @@ void Context::create_device(const ContextOptions& options) {
   const auto extension_names =
       required_device_extensions(options.device_extensions, !options.headless);
   std::vector<const char*> extensions;
+  extensions.reserve(extension_names.size());
   for (const auto& name : extension_names) extensions.push_back(name.c_str());
 
   VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO, &enabled.features2};

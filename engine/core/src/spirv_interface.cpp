@@ -9,38 +9,32 @@ namespace {
 
 // The few SPIR-V opcodes, decorations and storage classes the interface needs
 // (SPIR-V 1.6 specification, sections 3.20, 3.7 and 3.32).
-enum Op : std::uint32_t {
-  kOpName = 5,
-  kOpTypeInt = 21,
-  kOpTypeFloat = 22,
-  kOpTypeVector = 23,
-  kOpTypeMatrix = 24,
-  kOpTypeImage = 25,
-  kOpTypeSampler = 26,
-  kOpTypeSampledImage = 27,
-  kOpTypeArray = 28,
-  kOpTypeRuntimeArray = 29,
-  kOpTypeStruct = 30,
-  kOpTypePointer = 32,
-  kOpConstant = 43,
-  kOpVariable = 59,
-  kOpDecorate = 71,
-  kOpMemberDecorate = 72,
-};
-enum Decoration : std::uint32_t {
-  kBufferBlock = 3,
-  kArrayStride = 6,
-  kMatrixStride = 7,
-  kBinding = 33,
-  kDescriptorSet = 34,
-  kOffset = 35,
-};
-enum StorageClass : std::uint32_t {
-  kUniformConstant = 0,
-  kUniform = 2,
-  kPushConstant = 9,
-  kStorageBuffer = 12,
-};
+constexpr std::uint32_t kOpName = 5;
+constexpr std::uint32_t kOpTypeInt = 21;
+constexpr std::uint32_t kOpTypeFloat = 22;
+constexpr std::uint32_t kOpTypeVector = 23;
+constexpr std::uint32_t kOpTypeMatrix = 24;
+constexpr std::uint32_t kOpTypeImage = 25;
+constexpr std::uint32_t kOpTypeSampler = 26;
+constexpr std::uint32_t kOpTypeSampledImage = 27;
+constexpr std::uint32_t kOpTypeArray = 28;
+constexpr std::uint32_t kOpTypeRuntimeArray = 29;
+constexpr std::uint32_t kOpTypeStruct = 30;
+constexpr std::uint32_t kOpTypePointer = 32;
+constexpr std::uint32_t kOpConstant = 43;
+constexpr std::uint32_t kOpVariable = 59;
+constexpr std::uint32_t kOpDecorate = 71;
+constexpr std::uint32_t kOpMemberDecorate = 72;
+constexpr std::uint32_t kBufferBlock = 3;
+constexpr std::uint32_t kArrayStride = 6;
+constexpr std::uint32_t kMatrixStride = 7;
+constexpr std::uint32_t kBinding = 33;
+constexpr std::uint32_t kDescriptorSet = 34;
+constexpr std::uint32_t kOffset = 35;
+constexpr std::uint32_t kUniformConstant = 0;
+constexpr std::uint32_t kUniform = 2;
+constexpr std::uint32_t kPushConstant = 9;
+constexpr std::uint32_t kStorageBuffer = 12;
 
 struct Type {
   std::uint32_t op = 0;

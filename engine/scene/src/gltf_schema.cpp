@@ -140,7 +140,7 @@ void check(const json& value, std::string_view pattern, const std::string& point
       }
     } else if (value.is_object()) {
       for (const auto& [key, member] : value.items()) {
-        check(member, rest, pointer + "/" + key, rule, errors, warnings);
+        check(member, rest, pointer + '/' + key, rule, errors, warnings);
       }
     }
   } else if (value.is_object()) {

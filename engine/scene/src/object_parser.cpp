@@ -76,7 +76,7 @@ bool parse_repeat(JsonReader& r, const Json& value, const std::string& p, Placem
     out.offsets = std::move(offsets);
     out.suffixes = std::move(suffixes);
   }
-  for (auto& s : out.suffixes) s = "[" + s + "]";
+  for (auto& s : out.suffixes) s = '[' + s + ']';
   return true;
 }
 

@@ -44,6 +44,7 @@ struct PassInstanceDesc {
   std::string pointer;  // "/passes/<i>"
 };
 
+// NOLINTNEXTLINE(bugprone-exception-escape): nlohmann::json's noexcept move is reported.
 struct GraphDesc {
   int version = kGraphVersion;
   std::string name;

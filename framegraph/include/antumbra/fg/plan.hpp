@@ -73,6 +73,7 @@ struct PlanBarrier {
   int previous_alias = -1;
 };
 
+// NOLINTNEXTLINE(bugprone-exception-escape): nlohmann::json's noexcept move is reported.
 struct PlanPass {
   std::string name;
   std::string type;
