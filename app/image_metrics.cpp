@@ -31,7 +31,7 @@ float byte_swapped(float value) {
 std::vector<double> blur(const std::vector<double>& in, std::uint32_t width, std::uint32_t height) {
   std::array<double, 2 * kSsimRadius + 1> kernel{};
   for (int i = -kSsimRadius; i <= kSsimRadius; ++i) {
-    kernel[static_cast<std::size_t>(i + kSsimRadius)] =
+    kernel[static_cast<std::size_t>(i) + kSsimRadius] =
         std::exp(-(i * i) / (2.0 * kSsimSigma * kSsimSigma));
   }
   const int w = static_cast<int>(width);
@@ -46,7 +46,7 @@ std::vector<double> blur(const std::vector<double>& in, std::uint32_t width, std
           const int sx = horizontal ? x + i : x;
           const int sy = horizontal ? y : y + i;
           if (sx < 0 || sy < 0 || sx >= w || sy >= h) continue;
-          const double k = kernel[static_cast<std::size_t>(i + kSsimRadius)];
+          const double k = kernel[static_cast<std::size_t>(i) + kSsimRadius];
           sum += k * src[static_cast<std::size_t>(sy) * width + static_cast<std::size_t>(sx)];
           weights += k;
         }
@@ -289,6 +289,7 @@ std::vector<Comparison> compare_images(const FloatImage& a, const FloatImage& b,
   const auto lb = display_luminance(b);
   const auto ssim = ssim_map(la, lb, a.width, a.height);
   std::vector<Comparison> out;
+  out.reserve(regions.size());
   for (const MaskRegion region : regions) {
     out.push_back({region, compute_metrics(la, lb, ssim, region_mask(region, mask, la.size()))});
   }

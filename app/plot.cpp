@@ -34,7 +34,7 @@ struct Canvas {
     y1 = std::clamp(y1, 0, height);
     for (int y = y0; y < y1; ++y) {
       for (int x = x0; x < x1; ++x) {
-        std::copy(c.begin(), c.end(), &rgb[static_cast<std::size_t>((y * width + x) * 3)]);
+        std::copy(c.begin(), c.end(), &rgb[(static_cast<std::size_t>(y) * width + x) * 3]);
       }
     }
   }
@@ -47,7 +47,7 @@ struct Canvas {
                                           nullptr, buffer.data(), static_cast<int>(buffer.size()));
     const auto* v = reinterpret_cast<const float*>(buffer.data());
     for (int q = 0; q < quads; ++q) {
-      const float* quad = v + q * 16;  // 4 vertices x 4 floats
+      const float* quad = v + static_cast<std::ptrdiff_t>(q) * 16;  // 4 vertices x 4 floats
       fill(static_cast<int>(quad[0]), static_cast<int>(quad[1]), static_cast<int>(quad[8]),
            static_cast<int>(quad[9]), kInk);
     }

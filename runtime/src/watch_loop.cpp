@@ -92,6 +92,7 @@ int run_watch_loop(RenderSession& session, const WatchOptions& options) {
     if (graph_changed) {
       auto diff = fg::diff_plans(before, session.executor().plan());
       std::vector<std::string> files;
+      files.reserve(changed.size());
       for (const auto& f : changed) files.push_back(f.string());
       diff.passes_rebuilt = session.executor().passes_reading(files);
       std::printf("  %s\n", fg::to_text(diff).c_str());

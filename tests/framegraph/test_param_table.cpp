@@ -133,6 +133,19 @@ TEST(ParamKey, ReadsOnlyTheDeclaredType) {
   EXPECT_EQ(base::read_param(Json{{"maxLayers", 3}}, kCap), 3);
   EXPECT_EQ(base::read_param(Json{{"maxLayers", 2.5}}, kCap), std::nullopt);
   EXPECT_EQ(base::read_param(Json{{"other", 3}}, kCap), std::nullopt);
+  EXPECT_EQ(base::read_param(Json{{"maxLayers", "3"}}, kCap), std::nullopt);
+}
+
+// The compiler's type check accepts a whole number written 6.0 for an integer parameter,
+// so every reader (the pass's table, the editor's and the layer checks' keys) reads 6.
+TEST(ParamKey, WholeNumbersWrittenAsFloatsAreIntegers) {
+  constexpr base::ParamKey<int> kCap{"maxLayers"};
+  EXPECT_EQ(base::read_param(Json{{"maxLayers", 6.0}}, kCap), 6);
+  EXPECT_EQ(base::read_param(Json{{"maxLayers", -2.0}}, kCap), -2);
+  EXPECT_EQ(base::read_param(Json{{"maxLayers", 1e12}}, kCap), std::nullopt);  // not an int
+  EXPECT_EQ(base::json_as<std::uint8_t>(Json(300)), std::nullopt);
+  EXPECT_EQ(base::json_as<std::uint32_t>(Json(-1)), std::nullopt);
+  EXPECT_EQ(base::json_as<double>(Json(2)), 2.0);
 }
 
 }  // namespace

@@ -19,8 +19,8 @@ using base::Json;
 enum class Kind { number, integer, boolean, string, vec2, vec3, at, any, string_or_null, plane };
 
 const std::vector<std::string>& plane_names() {
-  static const std::vector<std::string> names{"horizontal", "vertical"};
-  return names;
+  static const std::vector<std::string> kNames{"horizontal", "vertical"};
+  return kNames;
 }
 
 struct Key {
@@ -34,7 +34,7 @@ struct Action {
 };
 
 const std::map<std::string, Action, std::less<>>& do_actions() {
-  static const std::map<std::string, Action, std::less<>> actions = {
+  static const std::map<std::string, Action, std::less<>> kActions = {
       {"frames", {{{"count", Kind::integer}}}},
       {"set-light",
        {{{"light", Kind::string, true},
@@ -73,11 +73,11 @@ const std::map<std::string, Action, std::less<>>& do_actions() {
          {"steps", Kind::integer},
          {"tolerance", Kind::number}}}},
   };
-  return actions;
+  return kActions;
 }
 
 const std::map<std::string, Action, std::less<>>& expectations() {
-  static const std::map<std::string, Action, std::less<>> actions = {
+  static const std::map<std::string, Action, std::less<>> kActions = {
       {"warning", {}},
       {"no-warning", {}},
       {"layers-needed", {{{"value", Kind::integer, true}}}},
@@ -92,7 +92,7 @@ const std::map<std::string, Action, std::less<>>& expectations() {
          {"tolerance", Kind::number}}}},
       {"dirty", {{{"value", Kind::boolean, true}}}},
   };
-  return actions;
+  return kActions;
 }
 
 bool numbers(const Json& v, std::size_t count) {
@@ -194,8 +194,13 @@ void check_step(const base::JsonDocument& script, const Json& step, const std::s
   }
   std::vector<std::string> allowed{verb, "comment"};
   for (const Key& key : action->second.keys) allowed.emplace_back(key.name);
-  for (const auto& [key, value] : step.items()) {
-    const std::string key_pointer = pointer + "/" + key;
+  for (const auto& item : step.items()) {
+    // Not a structured binding: clang (clang-tidy) cannot capture one in the lambda below.
+    const std::string& key = item.key();
+    const base::Json& value = item.value();
+    std::string key_pointer = pointer;
+    key_pointer += '/';
+    key_pointer += key;
     if (std::find(allowed.begin(), allowed.end(), key) == allowed.end()) {
       error(base::quote_name(name.get<std::string>()) + " has no key " + base::quote_name(key) +
                 fg::did_you_mean(key, allowed),
@@ -208,7 +213,7 @@ void check_step(const base::JsonDocument& script, const Json& step, const std::s
       const std::string hint = spec->kind == Kind::plane && value.is_string()
                                    ? fg::did_you_mean(value.get<std::string>(), plane_names())
                                    : std::string();
-      error("'" + key + "' must be " + expected(spec->kind) + hint, key_pointer, false);
+      error(base::quote_name(key) + " must be " + expected(spec->kind) + hint, key_pointer, false);
     }
   }
   for (const Key& key : action->second.keys) {

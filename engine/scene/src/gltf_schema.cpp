@@ -140,7 +140,10 @@ void check(const json& value, std::string_view pattern, const std::string& point
       }
     } else if (value.is_object()) {
       for (const auto& [key, member] : value.items()) {
-        check(member, rest, pointer + '/' + key, rule, errors, warnings);
+        std::string member_pointer = pointer;
+        member_pointer += '/';
+        member_pointer += key;
+        check(member, rest, member_pointer, rule, errors, warnings);
       }
     }
   } else if (value.is_object()) {

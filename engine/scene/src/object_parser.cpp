@@ -76,7 +76,10 @@ bool parse_repeat(JsonReader& r, const Json& value, const std::string& p, Placem
     out.offsets = std::move(offsets);
     out.suffixes = std::move(suffixes);
   }
-  for (auto& s : out.suffixes) s = '[' + s + ']';
+  for (auto& s : out.suffixes) {
+    s.insert(0, 1, '[');
+    s.push_back(']');
+  }
   return true;
 }
 

@@ -328,7 +328,7 @@ void GraphBuilder::bin_lights(const TileBins& bins) {
     const glm::ivec4 b = bins.range_of(tile_range_[i]);
     for (int y = b.y; y <= b.w; ++y)
       for (int x = b.x; x <= b.z; ++x)
-        tile_lights_[bucket_start_[static_cast<std::size_t>(y * bins.count.x + x)]++] = i;
+        tile_lights_[bucket_start_[static_cast<std::size_t>(y) * bins.count.x + x]++] = i;
   }
   for (std::size_t b = bin_count; b > 0; --b) bucket_start_[b] = bucket_start_[b - 1];
   bucket_start_[0] = 0;
@@ -337,7 +337,7 @@ void GraphBuilder::bin_lights(const TileBins& bins) {
 void GraphBuilder::collect_tile_pairs(const TileBins& bins) {
   for (int by = 0; by < bins.count.y; ++by) {
     for (int bx = 0; bx < bins.count.x; ++bx) {
-      const std::size_t b = static_cast<std::size_t>(by * bins.count.x + bx);
+      const std::size_t b = static_cast<std::size_t>(by) * bins.count.x + bx;
       for (std::uint32_t x = bucket_start_[b]; x < bucket_start_[b + 1]; ++x) {
         const glm::ivec4 ra = tile_range_[tile_lights_[x]];
         for (std::uint32_t y = x + 1; y < bucket_start_[b + 1]; ++y) {

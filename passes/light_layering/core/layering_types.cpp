@@ -6,16 +6,16 @@
 namespace antumbra::layering {
 namespace {
 
-template <typename Enum, std::size_t N>
-std::optional<Enum> parse_name(const std::array<std::pair<Enum, std::string_view>, N>& names,
+template <typename Enum, std::size_t kN>
+std::optional<Enum> parse_name(const std::array<std::pair<Enum, std::string_view>, kN>& names,
                                std::string_view name) {
   for (const auto& [value, text] : names)
     if (text == name) return value;
   return std::nullopt;
 }
 
-template <typename Enum, std::size_t N>
-std::string_view name_of(const std::array<std::pair<Enum, std::string_view>, N>& names,
+template <typename Enum, std::size_t kN>
+std::string_view name_of(const std::array<std::pair<Enum, std::string_view>, kN>& names,
                          Enum value) {
   for (const auto& [v, text] : names)
     if (v == value) return text;

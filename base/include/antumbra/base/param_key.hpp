@@ -2,6 +2,7 @@
 // A parameter's name with its C++ type, for code outside the pass that owns the parameter
 // (the layer checks, the editor and edit scripts read the layer cap through one key).
 
+#include <limits>
 #include <optional>
 #include <type_traits>
 
@@ -14,14 +15,23 @@ struct ParamKey {
   const char* name;
 };
 
-// `value` as T, or nullopt when it is of another JSON type (an integer parameter written
-// 2.5 is not an int).
+// `value` as T, or nullopt when it is of another JSON type or does not fit T (an integer
+// parameter written 2.5 is not an int; written 3.0 it is 3, as the graph compiler's type
+// check says). The one conversion of parameter values: fg::ParamTable reads passes'
+// parameters through it too.
 template <class T>
 std::optional<T> json_as(const Json& value) {
   if constexpr (std::is_same_v<T, bool>) {
     if (value.is_boolean()) return value.template get<bool>();
   } else if constexpr (std::is_integral_v<T>) {
-    if (value.is_number_integer()) return value.template get<T>();
+    if (value.is_number_integer() || value.is_number_float()) {
+      const double number = value.template get<double>();
+      const bool fits = number >= static_cast<double>(std::numeric_limits<T>::lowest()) &&
+                        number <= static_cast<double>(std::numeric_limits<T>::max());
+      if (fits && number == static_cast<double>(static_cast<T>(number))) {
+        return value.is_number_integer() ? value.template get<T>() : static_cast<T>(number);
+      }
+    }
   } else if constexpr (std::is_floating_point_v<T>) {
     if (value.is_number()) return value.template get<T>();
   } else {

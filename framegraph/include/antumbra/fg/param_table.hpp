@@ -17,6 +17,7 @@
 #include <utility>
 #include <vector>
 
+#include "antumbra/base/param_key.hpp"
 #include "antumbra/fg/reflection.hpp"
 
 namespace antumbra::fg {
@@ -110,18 +111,7 @@ class ParamTable {
 
   template <class T>
   static T convert(const std::string& name, const Json& value) {
-    if constexpr (std::is_same_v<T, bool>) {
-      if (value.is_boolean()) return value.get<bool>();
-    } else if constexpr (std::is_integral_v<T>) {
-      if (value.is_number_integer()) return value.get<T>();
-      // A whole number written as 3.0 is an integer to the compiler's type check.
-      if (value.is_number() && value.get<double>() == static_cast<double>(value.get<T>()))
-        return value.get<T>();
-    } else if constexpr (std::is_floating_point_v<T>) {
-      if (value.is_number()) return value.get<T>();
-    } else {
-      if (value.is_string()) return value.get<T>();
-    }
+    if (auto converted = base::json_as<T>(value)) return *std::move(converted);
     fail(name, "value " + value.dump() + " does not fit its C++ type");
   }
 

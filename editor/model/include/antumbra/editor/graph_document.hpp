@@ -22,6 +22,7 @@ namespace antumbra::editor {
 using PassDescLookup = std::function<const fg::PassDesc*(std::string_view type)>;
 [[nodiscard]] PassDescLookup lookup_in(const fg::Registry& registry);
 
+// NOLINTNEXTLINE(bugprone-exception-escape): nlohmann::json's noexcept move is reported.
 struct ParamView {
   std::string name;
   bool declared = false;  // false: in the file but not in the reflection (kept, read-only)
