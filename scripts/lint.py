@@ -20,6 +20,7 @@ import os
 import shlex
 import subprocess
 import sys
+import time
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -104,6 +105,7 @@ def check_tidy(build, jobs, cache):
     failures = 0
     cached = 0
     warnings = 0
+    started = time.monotonic()
     with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
         futures = [pool.submit(tidy_one, e, build, cache, salt) for e in entries]
         for done, future in enumerate(concurrent.futures.as_completed(futures), 1):
@@ -118,7 +120,8 @@ def check_tidy(build, jobs, cache):
                 print(f"lint: clang-tidy [{done}/{len(entries)}] {name}: "
                       f"{'clean' if ok else 'FAILED'}", flush=True)
     print(f"lint: clang-tidy: {len(entries)} translation units ({cached} unchanged since their "
-          f"last run), {failures} with errors, {warnings} warnings")
+          f"last run), {failures} with findings, {warnings} warnings, "
+          f"{time.monotonic() - started:.0f} s")
     return failures == 0
 
 
