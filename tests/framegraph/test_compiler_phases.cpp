@@ -9,6 +9,7 @@ namespace antumbra::fg {
 namespace {
 
 // A graph description built in code: passes are (name, type, {port->res} in, out).
+// NOLINTNEXTLINE(bugprone-exception-escape): nlohmann::json's noexcept move is reported.
 struct Builder {
   GraphDesc g;
   Builder& image(const std::string& name, Format f, bool persistent = false) {
@@ -21,8 +22,8 @@ struct Builder {
     return *this;
   }
   Builder& pass(const std::string& name, const std::string& type,
-                std::vector<std::pair<std::string, std::string>> in,
-                std::vector<std::pair<std::string, std::string>> out,
+                const std::vector<std::pair<std::string, std::string>>& in,
+                const std::vector<std::pair<std::string, std::string>>& out,
                 std::vector<std::string> after = {}) {
     PassInstanceDesc p;
     p.name = name;
@@ -221,7 +222,7 @@ TEST(AliasingPhase, OverlappingLifetimesNeverShareAndRespectAlignment) {
     PlanResource r;
     r.name = "r" + std::to_string(i);
     r.kind = ResourceKind::buffer;
-    r.buffer_size = 1000u * static_cast<unsigned>(i + 1);
+    r.buffer_size = std::uint64_t{1000} * static_cast<unsigned>(i + 1);
     r.first_use = spans[i][0];
     r.last_use = spans[i][1];
     plan.resources.push_back(r);

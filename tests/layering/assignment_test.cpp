@@ -75,6 +75,7 @@ TEST(CapPolicy, LeastConflictPicksTheLayerOfSmallestOverlap) {
   // K5 on a line under a cap of 4: one light overflows and must join the layer of the light
   // it overlaps least (the farthest one, all ranges being equal).
   std::vector<LightSphere> lights;
+  lights.reserve(5);
   for (int i = 0; i < 5; ++i)
     lights.push_back(testing::make_light(static_cast<std::uint64_t>(i), {i * i, 0, 0}, 20.0f));
   const ConflictGraph graph = build_world_sphere_graph(lights);

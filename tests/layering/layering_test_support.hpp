@@ -35,7 +35,7 @@ inline std::vector<LightSphere> fig6_lights() {
   std::vector<LightSphere> lights{make_light(1, {0.0f, 0.0f, 0.0f}, 3.0f)};
   for (int k = 0; k < 5; ++k) {
     const float a = glm::radians(60.0f * static_cast<float>(k));
-    lights.push_back(make_light(static_cast<std::uint64_t>(k + 2),
+    lights.push_back(make_light(static_cast<std::uint64_t>(k) + 2,
                                 {4.0f * std::cos(a), 0.0f, 4.0f * std::sin(a)}, 2.2f));
   }
   return lights;
@@ -85,7 +85,7 @@ inline ConflictGraph lattice_graph(std::uint32_t w, std::uint32_t h) {
       if (x + 1 < w) e.emplace_back(y * w + x, y * w + x + 1);
       if (y + 1 < h) e.emplace_back(y * w + x, (y + 1) * w + x);
     }
-  return graph_of(w * h, e);
+  return graph_of(static_cast<std::size_t>(w) * h, e);
 }
 
 inline constexpr Order kAllOrders[] = {Order::dsatur, Order::smallest_last, Order::largest_first,

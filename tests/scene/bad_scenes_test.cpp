@@ -19,7 +19,8 @@ struct BadScene {
   const char* message_contains = "";
 };
 
-void PrintTo(const BadScene& s, std::ostream* os) {
+// GoogleTest looks the printer up by this name.
+void PrintTo(const BadScene& s, std::ostream* os) {  // NOLINT(readability-identifier-naming)
   *os << s.file;
 }
 
