@@ -340,7 +340,7 @@ std::optional<ReferenceFrame> render_reference(runtime::RenderSession& session,
   auto reference_hdr =
       render_hdr(session, inputs.reference, inputs.reference_path, options.resource, reference_ms);
   if (!reference_hdr) return std::nullopt;
-  const auto mask =
+  auto mask =
       reference_mask(read_back(session, "penumbraCount"), read_back(session, "depth"), camera);
   auto regions = regions_for("", mask.has_value()).value();
   if (mask && mask->channels >= 2) regions.push_back(MaskRegion::silhouette);

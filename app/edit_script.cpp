@@ -437,7 +437,7 @@ class EditRun {
                         step["text"].get<std::string>() + "\""};
       }
     } else if (what == "selected") {
-      const auto want = step.at("light");
+      const auto& want = step.at("light");
       const std::string name = want.is_null() ? "nothing" : "'" + want.get<std::string>() + "'";
       if (selected_name() != name) throw StepError{"selected " + selected_name() + ", not " + name};
     } else if (what == "light-at") {

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "antumbra/base/json_document.hpp"
 #include "antumbra/fg/compiler.hpp"
 #include "fake_registry.hpp"
 
@@ -15,36 +16,49 @@ namespace {
 // composite also reads a resource four links back), and every tenth pass a dead
 // end that the compiler culls.
 std::string synthetic_graph(int n) {
-  const auto image = [](const std::string& name, int i) {
-    return "\"" + name + "\": {\"kind\": \"image\", \"format\": \"rgba16f\", \"size\": " +
-           (i % 3 == 0 ? "\"viewport/2\"" : "\"viewport\"") + "}";
+  base::Json resources = base::Json::object();
+  base::Json passes = base::Json::array();
+  const auto add_image = [&](const std::string& name, int i) {
+    resources[name] = {
+        {"kind", "image"}, {"format", "rgba16f"}, {"size", i % 3 == 0 ? "viewport/2" : "viewport"}};
   };
-  std::string resources = image("r0", 0);
-  std::string passes = "{\"name\": \"p0\", \"type\": \"composite\", \"out\": {\"out\": \"r0\"}}";
+  add_image("r0", 0);
+  passes.push_back({{"name", "p0"}, {"type", "composite"}, {"out", {{"out", "r0"}}}});
   std::vector<std::string> chain{"r0"};
   for (int i = 1; i < n; ++i) {
     const std::string id = std::to_string(i);
     const std::string& prev = chain.back();
     if (i % 10 == 9) {
-      resources += ",\n" + image("dead" + id, i);
-      passes += ",\n{\"name\": \"p" + id + "\", \"type\": \"blur\", \"in\": {\"src\": \"" + prev +
-                "\"}, \"out\": {\"dst\": \"dead" + id + "\"}}";
+      add_image("dead" + id, i);
+      passes.push_back({{"name", "p" + id},
+                        {"type", "blur"},
+                        {"in", {{"src", prev}}},
+                        {"out", {{"dst", "dead" + id}}}});
       continue;
     }
     const std::string out = "r" + id;
-    resources += ",\n" + image(out, i);
+    add_image(out, i);
     if (i % 2 == 0) {
       const std::string& back = chain[chain.size() >= 4 ? chain.size() - 4 : 0];
-      passes += ",\n{\"name\": \"p" + id + "\", \"type\": \"composite\", \"in\": {\"a\": \"" +
-                prev + "\", \"b\": \"" + back + "\"}, \"out\": {\"out\": \"" + out + "\"}}";
+      passes.push_back({{"name", "p" + id},
+                        {"type", "composite"},
+                        {"in", {{"a", prev}, {"b", back}}},
+                        {"out", {{"out", out}}}});
     } else {
-      passes += ",\n{\"name\": \"p" + id + "\", \"type\": \"blur\", \"params\": {\"radius\": 3}, " +
-                "\"in\": {\"src\": \"" + prev + "\"}, \"out\": {\"dst\": \"" + out + "\"}}";
+      passes.push_back({{"name", "p" + id},
+                        {"type", "blur"},
+                        {"params", {{"radius", 3}}},
+                        {"in", {{"src", prev}}},
+                        {"out", {{"dst", out}}}});
     }
     chain.push_back(out);
   }
-  return "{\"version\": 1, \"name\": \"synthetic\", \"resources\": {" + resources +
-         "},\n\"passes\": [" + passes + "],\n\"output\": \"" + chain.back() + "\"}";
+  const base::Json graph = {{"version", 1},
+                            {"name", "synthetic"},
+                            {"resources", resources},
+                            {"passes", passes},
+                            {"output", chain.back()}};
+  return graph.dump(1);
 }
 
 const Registry& registry() {

@@ -19,7 +19,7 @@ using namespace antumbra::render_testing;
 
 namespace {
 
-const char* kGraph = "data/graphs/debug-views.json";
+constexpr const char* kGraph = "data/graphs/debug-views.json";
 const std::vector<std::string> kViews = {"layerView", "penumbraView", "atlasView"};
 
 std::uint32_t rgb_at(const Image8& image, std::uint32_t x, std::uint32_t y) {

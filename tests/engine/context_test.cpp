@@ -101,7 +101,7 @@ TEST(DeviceSelection, IndexOutOfRange) {
 TEST(DeviceSelection, IndexZeroAndNameSubstringWork) {
   try {
     Context by_index(testing::validation_options("0"));
-    const std::string name = by_index.device_name();
+    const std::string& name = by_index.device_name();
     Context by_name(testing::validation_options(name.substr(0, 4)));
     EXPECT_FALSE(by_name.device_name().empty());
   } catch (const NoVulkanDeviceError& error) {

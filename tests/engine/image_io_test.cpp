@@ -57,7 +57,7 @@ TEST(WriteImage, PngAndPfmFiles) {
   HostImage image;
   image.width = 4;
   image.height = 2;
-  image.texels.assign(4 * 2 * 4, 2.0f);  // clamped to 1 in PNG, kept in PFM
+  image.texels.assign(std::size_t{4} * 2 * 4, 2.0f);  // clamped to 1 in PNG, kept in PFM
   ASSERT_TRUE(write_png(dir.path() / "a.png", image));
   ASSERT_TRUE(write_pfm(dir.path() / "a.pfm", image));
   std::ifstream png(dir.path() / "a.png", std::ios::binary);
@@ -65,7 +65,7 @@ TEST(WriteImage, PngAndPfmFiles) {
   png.read(signature, 8);
   EXPECT_EQ(std::string(signature + 1, 3), "PNG");
   EXPECT_EQ(std::filesystem::file_size(dir.path() / "a.pfm"),
-            std::string("PF\n4 2\n-1.0\n").size() + 4 * 2 * 3 * sizeof(float));
+            std::string("PF\n4 2\n-1.0\n").size() + std::size_t{4} * 2 * 3 * sizeof(float));
 }
 
 }  // namespace

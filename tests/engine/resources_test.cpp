@@ -57,6 +57,7 @@ TEST_F(GpuTest, HostVisibleBuffersAreMappedAndUploadsReachGpuBuffers) {
 TEST_F(GpuTest, SubAllocatorSharesBlocks) {
   const std::size_t blocks = ctx().allocator().block_count();
   std::vector<Buffer> buffers;
+  buffers.reserve(8);
   for (int i = 0; i < 8; ++i) {
     buffers.push_back(Buffer::create(ctx(), 1000, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
                                      MemoryUsage::upload, "test.small"));

@@ -33,7 +33,7 @@ fs::path artifact_dir() {
   std::string name = info != nullptr ? std::string(info->test_suite_name()) + "." + info->name()
                                      : std::string("unknown");
   std::replace(name.begin(), name.end(), '/', '_');
-  const fs::path dir = fs::path(ANTUMBRA_TEST_BINARY_DIR) / "gpu_test_output" / name;
+  fs::path dir = fs::path(ANTUMBRA_TEST_BINARY_DIR) / "gpu_test_output" / name;
   fs::create_directories(dir);
   return dir;
 }

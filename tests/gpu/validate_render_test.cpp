@@ -41,7 +41,7 @@ std::vector<Mutant> mutants_of(const base::Json& graph, const fg::Registry& regi
     const std::string name = pass.value("name", std::to_string(i));
     if (pass.contains("in")) {
       for (const auto& [port, unused] : pass["in"].items()) {
-        add(name + ": in." + port + " unbound",
+        add(std::string(name).append(": in.").append(port).append(" unbound"),
             [&, port = port](base::Json& g) { g["passes"][i]["in"].erase(port); });
       }
     }

@@ -126,7 +126,8 @@ TEST_F(TiledLightingTest, ThousandLightsMatchCpuReference) {
   // around the centre, all overlapping the central tiles.
   for (int i = 0; i < 768; ++i) {
     const float x = -8.0f + 0.5f * static_cast<float>(i % 32);
-    const float z = -6.0f + 0.5f * static_cast<float>(i / 32);
+    const float z =
+        -6.0f + 0.5f * static_cast<float>(i / 32);  // NOLINT(bugprone-integer-division): rows
     const glm::vec3 color(0.3f + 0.7f * float(i % 3 == 0), 0.3f + 0.7f * float(i % 3 == 1),
                           0.3f + 0.7f * float(i % 3 == 2));
     add_light(scene, {x, 0.3f + 0.05f * float(i % 5), z}, color, 0.5f, 1.2f);

@@ -62,6 +62,7 @@ TEST(Metrics, SilhouettePixelsAreThoseNearADepthStep) {
   }
   // A floor receding smoothly (1 % a pixel) has no silhouette, however far it goes.
   std::vector<float> slope;
+  slope.reserve(40);
   for (int x = 0; x < 40; ++x) slope.push_back(1.0f * std::pow(1.01f, static_cast<float>(x)));
   const auto none = silhouette_mask(depth_of(slope, 40, 0.1f, 100.0f), 0.1f, 100.0f, 2);
   for (const auto v : none) EXPECT_EQ(v, 0);

@@ -48,7 +48,8 @@ struct BadGltf {
   const char* pointer;
 };
 
-void PrintTo(const BadGltf& b, std::ostream* os) {
+// GoogleTest looks the printer up by this name.
+void PrintTo(const BadGltf& b, std::ostream* os) {  // NOLINT(readability-identifier-naming)
   *os << b.file;
 }
 

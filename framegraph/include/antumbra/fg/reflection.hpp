@@ -105,6 +105,7 @@ struct PortDesc {
 enum class ParamType : std::uint8_t { boolean, integer, number, enumeration, string };
 std::string_view to_string(ParamType type);
 
+// NOLINTNEXTLINE(bugprone-exception-escape): nlohmann::json's noexcept move is reported.
 struct ParamDesc {
   std::string name;
   ParamType type = ParamType::number;
