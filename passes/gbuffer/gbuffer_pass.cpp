@@ -8,6 +8,7 @@
 #include "common/frame_resources.hpp"
 #include "common/pass_support.hpp"
 #include "common/ports.hpp"
+#include "gbuffer_interface.h"
 
 namespace antumbra::passes {
 
@@ -22,8 +23,8 @@ void GBufferPass::prepare(fgvk::PrepareContext& context) {
   const auto& albedo = context.bindings.required_image(port::kAlbedo);
 
   gpu::DescriptorSetLayoutBuilder bindings;
-  bindings.uniform_buffer(0, VK_SHADER_STAGE_VERTEX_BIT)
-      .storage_buffer(1, VK_SHADER_STAGE_FRAGMENT_BIT);
+  bindings.uniform_buffer(shared::kGbufferFrame, VK_SHADER_STAGE_VERTEX_BIT)
+      .storage_buffer(shared::kGbufferMaterials, VK_SHADER_STAGE_FRAGMENT_BIT);
   check_shader_interface(context.pass.name, vert, bindings, 0);
   check_shader_interface(context.pass.name, frag, bindings, 0);
   set_layout_ = bindings.build(context.gpu, context.pass.name + ".set");
@@ -81,8 +82,8 @@ void GBufferPass::execute(fgvk::ExecuteContext& context) {
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_);
     set_viewport(cmd, depth.extent);
     gpu::PushDescriptors()
-        .uniform_buffer(0, context.frame.frame_uniforms)
-        .storage_buffer(1, context.frame.materials)
+        .uniform_buffer(shared::kGbufferFrame, context.frame.frame_uniforms)
+        .storage_buffer(shared::kGbufferMaterials, context.frame.materials)
         .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_);
     const VkDeviceSize offset = 0;
     vkCmdBindVertexBuffers(cmd, 0, 1, &context.frame.vertices, &offset);

@@ -16,6 +16,7 @@
 #include "common/frame_resources.hpp"
 #include "common/pass_support.hpp"
 #include "common/ports.hpp"
+#include "point_shadow_atlas_interface.h"
 
 namespace antumbra::passes {
 namespace {
@@ -51,8 +52,9 @@ VkRenderingAttachmentInfo attachment(VkImageView view, VkImageLayout layout, boo
 // Faces and materials for the vertex stage, materials (translucent tints) for the fragment.
 gpu::DescriptorSetLayoutBuilder atlas_bindings() {
   gpu::DescriptorSetLayoutBuilder bindings;
-  bindings.storage_buffer(0, VK_SHADER_STAGE_VERTEX_BIT)
-      .storage_buffer(1, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT);
+  bindings.storage_buffer(shared::kAtlasFaces, VK_SHADER_STAGE_VERTEX_BIT)
+      .storage_buffer(shared::kAtlasMaterials,
+                      VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT);
   return bindings;
 }
 
@@ -320,8 +322,8 @@ void PointShadowAtlasPass::draw_scene(fgvk::ExecuteContext& context, VkBuffer dr
     if (pipeline == VK_NULL_HANDLE) continue;
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
     gpu::PushDescriptors()
-        .storage_buffer(0, draws)
-        .storage_buffer(1, context.frame.materials)
+        .storage_buffer(shared::kAtlasFaces, draws)
+        .storage_buffer(shared::kAtlasMaterials, context.frame.materials)
         .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_);
     // Instance = face entry (firstInstance offsets gl_InstanceIndex in the fallback).
     vkCmdDrawIndexed(cmd, context.frame.index_count, count, 0, 0, first);
