@@ -31,20 +31,21 @@ void GBufferPass::prepare(fgvk::PrepareContext& context) {
   const std::array<VkDescriptorSetLayout, 1> sets{set_layout_};
   layout_ = gpu::create_pipeline_layout(context.gpu, sets, {}, context.pass.name + ".layout");
   const bool cull = params_.cull_back_faces;
-  pipeline_ = gpu::GraphicsPipelineBuilder()
-                  .shader(VK_SHADER_STAGE_VERTEX_BIT, vert)
-                  .shader(VK_SHADER_STAGE_FRAGMENT_BIT, frag)
-                  .vertex_binding(0, sizeof(GpuVertex))
-                  .vertex_attribute(0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(GpuVertex, position))
-                  .vertex_attribute(1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(GpuVertex, normal))
-                  .vertex_attribute(2, 0, VK_FORMAT_R32_UINT, offsetof(GpuVertex, material))
-                  .cull(cull ? VK_CULL_MODE_BACK_BIT : VK_CULL_MODE_NONE)
-                  .depth(true, true, VK_COMPARE_OP_LESS)
-                  .color_formats({normal.format, albedo.format})
-                  .depth_format(depth.format)
-                  .layout(layout_)
-                  .cache(context.pipeline_cache)
-                  .build(context.gpu, context.pass.name + ".pipeline");
+  gpu::GraphicsPipelineBuilder builder;
+  builder.shader(VK_SHADER_STAGE_VERTEX_BIT, vert)
+      .shader(VK_SHADER_STAGE_FRAGMENT_BIT, frag)
+      .vertex_binding(0, sizeof(GpuVertex))
+      .vertex_attribute(0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(GpuVertex, position))
+      .vertex_attribute(1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(GpuVertex, normal))
+      .vertex_attribute(2, 0, VK_FORMAT_R32_UINT, offsetof(GpuVertex, material))
+      .cull(cull ? VK_CULL_MODE_BACK_BIT : VK_CULL_MODE_NONE)
+      .depth(true, true, VK_COMPARE_OP_LESS)
+      .color_formats({normal.format, albedo.format})
+      .depth_format(depth.format)
+      .layout(layout_)
+      .cache(context.pipeline_cache);
+  check_vertex_inputs(context.pass.name, vert, builder.vertex_attributes());
+  pipeline_ = builder.build(context.gpu, context.pass.name + ".pipeline");
 }
 
 void GBufferPass::execute(fgvk::ExecuteContext& context) {

@@ -121,6 +121,7 @@ void PointShadowAtlasPass::prepare(fgvk::PrepareContext& context) {
       .depth(true, true, VK_COMPARE_OP_LESS)
       .depth_bias(params_.depth_bias, params_.slope_bias);
   if (colour_map_) depth.color_write_mask(0, 0);
+  check_vertex_inputs(context.pass.name, depth_vert, depth.vertex_attributes());
   depth_pipeline_ = depth.build(context.gpu, context.pass.name + ".depth");
   colour_pipeline_ = {};
   if (colour_) {
@@ -130,14 +131,14 @@ void PointShadowAtlasPass::prepare(fgvk::PrepareContext& context) {
         load_shader(context, "point_shadow_atlas/shadow_colour.frag", shader_files_, {}, &key);
     check_shader_interface(context.pass.name, colour_vert, bindings, 0);
     check_shader_interface(context.pass.name, colour_frag, bindings, 0);
-    colour_pipeline_ =
-        base()
-            .vertex_attribute(1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(GpuVertex, normal))
-            .shader(VK_SHADER_STAGE_VERTEX_BIT, colour_vert)
-            .shader(VK_SHADER_STAGE_FRAGMENT_BIT, colour_frag)
-            .depth(true, false, VK_COMPARE_OP_LESS_OR_EQUAL)
-            .tint_blend(0)
-            .build(context.gpu, context.pass.name + ".colour");
+    auto tint = base();
+    tint.vertex_attribute(1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(GpuVertex, normal))
+        .shader(VK_SHADER_STAGE_VERTEX_BIT, colour_vert)
+        .shader(VK_SHADER_STAGE_FRAGMENT_BIT, colour_frag)
+        .depth(true, false, VK_COMPARE_OP_LESS_OR_EQUAL)
+        .tint_blend(0);
+    check_vertex_inputs(context.pass.name, colour_vert, tint.vertex_attributes());
+    colour_pipeline_ = tint.build(context.gpu, context.pass.name + ".colour");
   }
 
   create_layer_views(context, atlas, colour);

@@ -100,22 +100,23 @@ void ShadowReferencePass::prepare_raster_pipelines(fgvk::PrepareContext& context
         .depth_bias(params_.raster_bias, params_.slope_bias);
     return builder;
   };
+  check_vertex_inputs(name, vert, depth().vertex_attributes());
   depth_pipeline_ = depth().build(context.gpu, name + ".depth");
   depth_tint_pipeline_ = depth()
                              .color_formats({reference::kTintFormat})
                              .color_write_mask(0, 0)
                              .build(context.gpu, name + ".depth.tinted");
   // Translucent casters: tested against the opaque depth, multiplied into white.
-  colour_pipeline_ =
-      raster()
-          .shader(VK_SHADER_STAGE_VERTEX_BIT, colour_vert)
-          .shader(VK_SHADER_STAGE_FRAGMENT_BIT, colour_frag)
-          .vertex_attribute(1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(GpuVertex, normal))
-          .vertex_attribute(2, 0, VK_FORMAT_R32_UINT, offsetof(GpuVertex, material))
-          .depth(true, false, VK_COMPARE_OP_LESS_OR_EQUAL)
-          .color_formats({reference::kTintFormat})
-          .tint_blend(0)
-          .build(context.gpu, name + ".colour");
+  auto colour = raster();
+  colour.shader(VK_SHADER_STAGE_VERTEX_BIT, colour_vert)
+      .shader(VK_SHADER_STAGE_FRAGMENT_BIT, colour_frag)
+      .vertex_attribute(1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(GpuVertex, normal))
+      .vertex_attribute(2, 0, VK_FORMAT_R32_UINT, offsetof(GpuVertex, material))
+      .depth(true, false, VK_COMPARE_OP_LESS_OR_EQUAL)
+      .color_formats({reference::kTintFormat})
+      .tint_blend(0);
+  check_vertex_inputs(name, colour_vert, colour.vertex_attributes());
+  colour_pipeline_ = colour.build(context.gpu, name + ".colour");
 }
 
 // Per pixel: accumulate the samples' visibility, resolve each batch, write the result.
