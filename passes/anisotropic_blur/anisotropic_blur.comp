@@ -19,30 +19,21 @@
 layout(local_size_x = ANTUMBRA_IMAGE_GROUP, local_size_y = ANTUMBRA_IMAGE_GROUP) in;
 
 #include "../common/frame.glsl"
+#include "anisotropic_blur_interface.h"
 
-layout(set = 0, binding = 0) uniform Frame { FrameUniforms frame; };
+layout(set = 0, binding = kBlurFrame) uniform Frame { FrameUniforms frame; };
 #include "../common/view_space.glsl"
-layout(set = 0, binding = 1) uniform sampler2D g_depth;
-layout(set = 0, binding = 2) uniform sampler2D g_normal;
-layout(set = 0, binding = 3) uniform sampler2DArray penumbra;
+layout(set = 0, binding = kBlurDepth) uniform sampler2D g_depth;
+layout(set = 0, binding = kBlurNormal) uniform sampler2D g_normal;
+layout(set = 0, binding = kBlurPenumbra) uniform sampler2DArray penumbra;
 #if defined(FROM_HARD_BITS)
-layout(set = 0, binding = 4) uniform usampler2D hard_bits;
+layout(set = 0, binding = kBlurInput) uniform usampler2D hard_bits;
 #elif defined(FROM_ESM)
-layout(set = 0, binding = 4) uniform sampler2DArray esm;  // full resolution, 4 layers per texel
+layout(set = 0, binding = kBlurInput) uniform sampler2DArray esm;  // full resolution, 4 layers per texel
 #else
-layout(set = 0, binding = 4) uniform sampler2DArray source;
+layout(set = 0, binding = kBlurInput) uniform sampler2DArray source;
 #endif
-layout(set = 0, binding = 5, rgba16f) uniform writeonly image2DArray shadow_out;
-
-layout(push_constant) uniform Params {
-  vec2 direction;         // unit step in output pixels
-  float depth_threshold;  // relative linear-depth difference that rejects a tap
-  float max_radius;       // output pixels
-  uint half_taps;         // (kernel - 1) / 2
-  uint slots;             // array layers of the output (4 shadow layers each)
-  uint layers;            // shadow layers in use
-  float normal_threshold; // cosine between normals below which a tap is rejected
-};
+layout(set = 0, binding = kBlurShadowOut, rgba16f) uniform writeonly image2DArray shadow_out;
 
 vec3 view_normal(ivec2 full_pixel) {
   return normalize(texelFetch(g_normal, full_pixel, 0).xyz);

@@ -84,7 +84,7 @@ fg::PassDesc AnisotropicBlurPass::describe() {
 }
 
 const fg::ParamTable<AnisotropicBlurParams>& AnisotropicBlurPass::param_table() {
-  static const auto table =
+  static const auto kTable =
       fg::ParamTable<AnisotropicBlurParams>()
           .choice({.name = "direction",
                    .type = fg::ParamType::enumeration,
@@ -129,7 +129,7 @@ const fg::ParamTable<AnisotropicBlurParams>& AnisotropicBlurPass::param_table() 
                 .description =
                     "Rotate the direction by 26.6 degrees (against banding on vertical walls)."},
                &AnisotropicBlurParams::rotated);
-  return table;
+  return kTable;
 }
 
 }  // namespace antumbra::passes

@@ -3,6 +3,7 @@
 #include <array>
 #include <cmath>
 
+#include "anisotropic_blur_interface.h"
 #include "antumbra/gpu/context.hpp"
 #include "antumbra/gpu/pipelines.hpp"
 #include "common/frame_resources.hpp"
@@ -12,15 +13,7 @@
 namespace antumbra::passes {
 namespace {
 
-struct PushConstants {
-  float direction[2];
-  float depth_threshold;
-  float max_radius;
-  std::uint32_t half_taps;
-  std::uint32_t slots;
-  std::uint32_t layers;
-  float normal_threshold;
-};
+using shared::AnisotropicBlurPush;
 
 constexpr VkShaderStageFlags kCompute = VK_SHADER_STAGE_COMPUTE_BIT;
 
@@ -39,13 +32,13 @@ void AnisotropicBlurPass::prepare(fgvk::PrepareContext& context) {
   auto shader =
       load_shader(context, "anisotropic_blur/anisotropic_blur.comp", shader_files_, defines);
   gpu::DescriptorSetLayoutBuilder builder;
-  builder.uniform_buffer(0, kCompute)
-      .combined_image_sampler(1, kCompute)
-      .combined_image_sampler(2, kCompute)
-      .combined_image_sampler(3, kCompute)
-      .combined_image_sampler(4, kCompute)
-      .storage_image(5, kCompute);
-  compute_ = build_compute_pipeline(context, shader, builder, sizeof(PushConstants));
+  builder.uniform_buffer(shared::kBlurFrame, kCompute)
+      .combined_image_sampler(shared::kBlurDepth, kCompute)
+      .combined_image_sampler(shared::kBlurNormal, kCompute)
+      .combined_image_sampler(shared::kBlurPenumbra, kCompute)
+      .combined_image_sampler(shared::kBlurInput, kCompute)
+      .storage_image(shared::kBlurShadowOut, kCompute);
+  compute_ = build_compute_pipeline(context, shader, builder, sizeof(AnisotropicBlurPush));
 }
 
 void AnisotropicBlurPass::execute(fgvk::ExecuteContext& context) {
@@ -61,13 +54,13 @@ void AnisotropicBlurPass::execute(fgvk::ExecuteContext& context) {
   const VkCommandBuffer cmd = context.cmd;
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, compute_.pipeline);
   gpu::PushDescriptors()
-      .uniform_buffer(0, context.frame.frame_uniforms)
-      .combined_image_sampler(1, depth.view, nearest, depth.layout)
-      .combined_image_sampler(2, normal.view, nearest, normal.layout)
-      .combined_image_sampler(3, penumbra.array_view, nearest, penumbra.layout)
-      .combined_image_sampler(4, from_hard_bits_ ? input.view : input.array_view, nearest,
-                              input.layout)
-      .storage_image(5, shadow.array_view, shadow.layout)
+      .uniform_buffer(shared::kBlurFrame, context.frame.frame_uniforms)
+      .combined_image_sampler(shared::kBlurDepth, depth.view, nearest, depth.layout)
+      .combined_image_sampler(shared::kBlurNormal, normal.view, nearest, normal.layout)
+      .combined_image_sampler(shared::kBlurPenumbra, penumbra.array_view, nearest, penumbra.layout)
+      .combined_image_sampler(shared::kBlurInput, from_hard_bits_ ? input.view : input.array_view,
+                              nearest, input.layout)
+      .storage_image(shared::kBlurShadowOut, shadow.array_view, shadow.layout)
       .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, compute_.layout);
 
   const bool vertical = params_.vertical;
@@ -81,7 +74,7 @@ void AnisotropicBlurPass::execute(fgvk::ExecuteContext& context) {
     dx = rx;
     dy = ry;
   }
-  const PushConstants constants{
+  const AnisotropicBlurPush constants{
       {dx, dy},      params_.depth_threshold, params_.max_radius,      (params_.kernel - 1) / 2,
       shadow.layers, penumbra.layers * 4,     params_.normal_threshold};
   vkCmdPushConstants(cmd, compute_.layout, kCompute, 0, sizeof constants, &constants);

@@ -58,29 +58,29 @@ std::vector<fg::PortDesc> lighting_ports() {
 }
 
 const fg::ParamTable<LightingParams>& lighting_param_table() {
-  static const auto table = fg::ParamTable<LightingParams>()
-                                .add({.name = "exposure",
-                                      .type = fg::ParamType::number,
-                                      .default_value = 1.0,
-                                      .min = 0.0,
-                                      .max = 16.0,
-                                      .description = "Scale applied to the shaded radiance."},
-                                     &LightingParams::exposure)
-                                .add({.name = "ambient",
-                                      .type = fg::ParamType::number,
-                                      .default_value = 1.0,
-                                      .min = 0.0,
-                                      .max = 16.0,
-                                      .description = "Scale of the scene's ambient term."},
-                                     &LightingParams::ambient)
-                                .add({.name = "specular",
-                                      .type = fg::ParamType::number,
-                                      .default_value = 0.25,
-                                      .min = 0.0,
-                                      .max = 4.0,
-                                      .description = "Strength of the Blinn-Phong specular lobe."},
-                                     &LightingParams::specular);
-  return table;
+  static const auto kTable = fg::ParamTable<LightingParams>()
+                                 .add({.name = "exposure",
+                                       .type = fg::ParamType::number,
+                                       .default_value = 1.0,
+                                       .min = 0.0,
+                                       .max = 16.0,
+                                       .description = "Scale applied to the shaded radiance."},
+                                      &LightingParams::exposure)
+                                 .add({.name = "ambient",
+                                       .type = fg::ParamType::number,
+                                       .default_value = 1.0,
+                                       .min = 0.0,
+                                       .max = 16.0,
+                                       .description = "Scale of the scene's ambient term."},
+                                      &LightingParams::ambient)
+                                 .add({.name = "specular",
+                                       .type = fg::ParamType::number,
+                                       .default_value = 0.25,
+                                       .min = 0.0,
+                                       .max = 4.0,
+                                       .description = "Strength of the Blinn-Phong specular lobe."},
+                                      &LightingParams::specular);
+  return kTable;
 }
 
 }  // namespace antumbra::passes

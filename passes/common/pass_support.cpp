@@ -82,6 +82,75 @@ void check_shader_interface(std::string_view pass, const Shader& shader,
   }
 }
 
+namespace {
+
+// The components and numeric type a vertex attribute of `format` feeds its input with
+// (normalised formats read as float); components 0 for a format the table does not know.
+struct FormatInput {
+  std::uint32_t components = 0;
+  gpu::SpirvScalar scalar = gpu::SpirvScalar::other;
+};
+
+FormatInput format_input(VkFormat format) {
+  using gpu::SpirvScalar;
+  constexpr SpirvScalar kFloat = SpirvScalar::float32;
+  constexpr SpirvScalar kUint = SpirvScalar::uint32;
+  constexpr SpirvScalar kSint = SpirvScalar::sint32;
+  struct Row {
+    VkFormat format;
+    FormatInput input;
+  };
+  static constexpr std::array<Row, 21> kRows{{
+      {VK_FORMAT_R32_SFLOAT, {1, kFloat}},          {VK_FORMAT_R32G32_SFLOAT, {2, kFloat}},
+      {VK_FORMAT_R32G32B32_SFLOAT, {3, kFloat}},    {VK_FORMAT_R32G32B32A32_SFLOAT, {4, kFloat}},
+      {VK_FORMAT_R16_SFLOAT, {1, kFloat}},          {VK_FORMAT_R16G16_SFLOAT, {2, kFloat}},
+      {VK_FORMAT_R16G16B16A16_SFLOAT, {4, kFloat}}, {VK_FORMAT_R16G16_UNORM, {2, kFloat}},
+      {VK_FORMAT_R16G16B16A16_SNORM, {4, kFloat}},  {VK_FORMAT_R8_UNORM, {1, kFloat}},
+      {VK_FORMAT_R8G8_UNORM, {2, kFloat}},          {VK_FORMAT_R8G8B8A8_UNORM, {4, kFloat}},
+      {VK_FORMAT_R8G8B8A8_SNORM, {4, kFloat}},      {VK_FORMAT_R32_UINT, {1, kUint}},
+      {VK_FORMAT_R32G32_UINT, {2, kUint}},          {VK_FORMAT_R32G32B32_UINT, {3, kUint}},
+      {VK_FORMAT_R32G32B32A32_UINT, {4, kUint}},    {VK_FORMAT_R32_SINT, {1, kSint}},
+      {VK_FORMAT_R32G32_SINT, {2, kSint}},          {VK_FORMAT_R32G32B32_SINT, {3, kSint}},
+      {VK_FORMAT_R32G32B32A32_SINT, {4, kSint}},
+  }};
+  const auto it = std::find_if(kRows.begin(), kRows.end(),
+                               [&](const Row& row) { return row.format == format; });
+  return it == kRows.end() ? FormatInput{} : it->input;
+}
+
+}  // namespace
+
+void check_vertex_inputs(std::string_view pass, const Shader& shader,
+                         std::span<const VkVertexInputAttributeDescription> attributes) {
+  for (const gpu::SpirvVertexInput& input : shader.interface.vertex_inputs) {
+    const std::string shader_type = gpu::glsl_type_name(input.scalar, input.components);
+    const std::string what = shader.file + ": vertex input location " +
+                             std::to_string(input.location) +
+                             (input.name.empty() ? "" : " ('" + input.name + "')");
+    const auto it = std::find_if(attributes.begin(), attributes.end(),
+                                 [&](const auto& a) { return a.location == input.location; });
+    if (it == attributes.end()) {
+      interface_error(pass, shader,
+                      what + " is a " + shader_type +
+                          " in the shader and has no vertex attribute in the C++ pipeline");
+    }
+    const FormatInput fed = format_input(it->format);
+    if (fed.components == 0) {
+      interface_error(pass, shader,
+                      what + ": the C++ attribute's format (VkFormat " +
+                          std::to_string(static_cast<int>(it->format)) +
+                          ") is not one the check knows; add it to format_input()");
+    }
+    if (input.components != fed.components || input.scalar != fed.scalar) {
+      interface_error(pass, shader,
+                      what + " is a " + shader_type + " in the shader, a " +
+                          gpu::glsl_type_name(fed.scalar, fed.components) +
+                          " in the C++ vertex attribute (VkFormat " +
+                          std::to_string(static_cast<int>(it->format)) + ")");
+    }
+  }
+}
+
 ComputePipeline build_compute_pipeline(fgvk::PrepareContext& context, const Shader& shader,
                                        const gpu::DescriptorSetLayoutBuilder& bindings,
                                        std::uint32_t push_constant_bytes) {

@@ -1,6 +1,7 @@
 #pragma once
 // Small helpers every pass uses: shader loading with diagnostics, fullscreen draws.
 
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -40,6 +41,15 @@ Shader load_shader(fgvk::PrepareContext& context, std::string_view relative,
 void check_shader_interface(std::string_view pass, const Shader& shader,
                             const gpu::DescriptorSetLayoutBuilder& layout,
                             std::uint32_t push_constant_bytes);
+
+// Checks a vertex shader's inputs against the pipeline's vertex attributes: every input
+// location has an attribute whose format gives the same number of components of the same
+// numeric type (float, int, uint). Fewer or more components are legal Vulkan (padded or
+// dropped) but never meant here. Attributes the shader does not read are allowed (the
+// shadow atlas's depth pass skips the normal). A mismatch throws fgvk::PassError with a
+// diagnostic (SH010) at the shader's file naming the pass, the location and both types.
+void check_vertex_inputs(std::string_view pass, const Shader& shader,
+                         std::span<const VkVertexInputAttributeDescription> attributes);
 
 // A compute pipeline with one push-descriptor set and a push-constant block; the shader
 // is checked against both first (check_shader_interface).

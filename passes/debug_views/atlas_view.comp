@@ -10,24 +10,18 @@ layout(local_size_x = ANTUMBRA_IMAGE_GROUP, local_size_y = ANTUMBRA_IMAGE_GROUP)
 
 #include "../interface/shared/shadow_data.h"
 #include "../common/shadow_sampling.glsl"
+#define ANTUMBRA_ATLAS_VIEW_SHADER
+#include "debug_views_interface.h"
 
-layout(set = 0, binding = 0) uniform sampler2DArray atlas;
+layout(set = 0, binding = kAtlasViewAtlas) uniform sampler2DArray atlas;
 #ifdef HAS_SHADOW_DATA
-layout(set = 0, binding = 1) readonly buffer Shadows {
+layout(set = 0, binding = kAtlasViewShadowData) readonly buffer Shadows {
   ShadowHeader shadow_header;
   ShadowLight shadow_lights[ANTUMBRA_MAX_SHADOW_LIGHTS];
   ShadowFace faces[];
 };
 #endif
-layout(set = 0, binding = 2, rgba8) uniform writeonly image2D view_out;
-
-layout(push_constant) uniform Params {
-  uint first_face;
-  uint face_count;
-  uint columns;
-  uint cell;        // cell size in output pixels
-  uint layers;      // array layers of the atlas
-};
+layout(set = 0, binding = kAtlasViewOut, rgba8) uniform writeonly image2D view_out;
 
 void main() {
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);

@@ -79,7 +79,7 @@ fg::PassDesc AtlasViewPass::describe() {
 }
 
 const fg::ParamTable<LayerViewParams>& LayerViewPass::param_table() {
-  static const auto table =
+  static const auto kTable =
       fg::ParamTable<LayerViewParams>()
           .choice({.name = "weighting",
                    .type = fg::ParamType::enumeration,
@@ -113,11 +113,11 @@ const fg::ParamTable<LayerViewParams>& LayerViewPass::param_table() {
                .max = 1.0,
                .description = "Grey level of lights without a layer (no shadow, or over the cap)."},
               &LayerViewParams::no_layer_grey);
-  return table;
+  return kTable;
 }
 
 const fg::ParamTable<PenumbraViewParams>& PenumbraViewPass::param_table() {
-  static const auto table = fg::ParamTable<PenumbraViewParams>().add(
+  static const auto kTable = fg::ParamTable<PenumbraViewParams>().add(
       {.name = "maxWidth",
        .type = fg::ParamType::number,
        .default_value = 0.25,
@@ -125,11 +125,11 @@ const fg::ParamTable<PenumbraViewParams>& PenumbraViewPass::param_table() {
        .max = 100.0,
        .description = "Penumbra width (world units) shown at the top of the ramp."},
       &PenumbraViewParams::max_width);
-  return table;
+  return kTable;
 }
 
 const fg::ParamTable<AtlasViewParams>& AtlasViewPass::param_table() {
-  static const auto table =
+  static const auto kTable =
       fg::ParamTable<AtlasViewParams>()
           .add({.name = "firstFace",
                 .type = fg::ParamType::integer,
@@ -152,7 +152,7 @@ const fg::ParamTable<AtlasViewParams>& AtlasViewPass::param_table() {
                 .max = 64.0,
                 .description = "Grid columns; 0 picks the count that gives the largest cells."},
                &AtlasViewParams::columns);
-  return table;
+  return kTable;
 }
 
 }  // namespace antumbra::passes

@@ -7,31 +7,16 @@
 #include "antumbra/gpu/pipelines.hpp"
 #include "common/frame_resources.hpp"
 #include "common/ports.hpp"
+#include "debug_views_interface.h"
 
 namespace antumbra::passes {
 namespace {
 
 constexpr VkShaderStageFlags kCompute = VK_SHADER_STAGE_COMPUTE_BIT;
 
-struct LayerViewConstants {
-  std::uint32_t dominant;
-  float dim;
-  float stripe_px;
-  float no_layer;
-};
-
-struct PenumbraViewConstants {
-  float max_width;
-  std::uint32_t layers;
-};
-
-struct AtlasViewConstants {
-  std::uint32_t first_face;
-  std::uint32_t face_count;
-  std::uint32_t columns;
-  std::uint32_t cell;
-  std::uint32_t layers;
-};
+using shared::AtlasViewPush;
+using shared::LayerViewPush;
+using shared::PenumbraViewPush;
 
 // Square cells, as large as fit: `columns` fixed, or the column count that gives the
 // largest cells for this many faces in this image.
@@ -57,13 +42,13 @@ void grid_layout(VkExtent2D extent, std::uint32_t faces, std::uint32_t fixed_col
 void LayerViewPass::prepare(fgvk::PrepareContext& context) {
   auto shader = load_shader(context, "debug_views/layer_view.comp", shader_files_);
   gpu::DescriptorSetLayoutBuilder builder;
-  builder.uniform_buffer(0, kCompute)
-      .storage_buffer(1, kCompute)
-      .storage_buffer(2, kCompute)
-      .combined_image_sampler(3, kCompute)
-      .combined_image_sampler(4, kCompute)
-      .storage_image(5, kCompute);
-  compute_ = build_compute_pipeline(context, shader, builder, sizeof(LayerViewConstants));
+  builder.uniform_buffer(shared::kLayerViewFrame, kCompute)
+      .storage_buffer(shared::kLayerViewLights, kCompute)
+      .storage_buffer(shared::kLayerViewLayerTable, kCompute)
+      .combined_image_sampler(shared::kLayerViewDepth, kCompute)
+      .combined_image_sampler(shared::kLayerViewNormal, kCompute)
+      .storage_image(shared::kLayerViewOut, kCompute);
+  compute_ = build_compute_pipeline(context, shader, builder, sizeof(LayerViewPush));
 }
 
 void LayerViewPass::execute(fgvk::ExecuteContext& context) {
@@ -75,15 +60,15 @@ void LayerViewPass::execute(fgvk::ExecuteContext& context) {
   const VkCommandBuffer cmd = context.cmd;
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, compute_.pipeline);
   gpu::PushDescriptors()
-      .uniform_buffer(0, context.frame.frame_uniforms)
-      .storage_buffer(1, context.frame.lights)
-      .storage_buffer(2, b.buffer(port::kLayerTable)->buffer)
-      .combined_image_sampler(3, depth.view, nearest, depth.layout)
-      .combined_image_sampler(4, normal.view, nearest, normal.layout)
-      .storage_image(5, view.view, view.layout)
+      .uniform_buffer(shared::kLayerViewFrame, context.frame.frame_uniforms)
+      .storage_buffer(shared::kLayerViewLights, context.frame.lights)
+      .storage_buffer(shared::kLayerViewLayerTable, b.buffer(port::kLayerTable)->buffer)
+      .combined_image_sampler(shared::kLayerViewDepth, depth.view, nearest, depth.layout)
+      .combined_image_sampler(shared::kLayerViewNormal, normal.view, nearest, normal.layout)
+      .storage_image(shared::kLayerViewOut, view.view, view.layout)
       .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, compute_.layout);
-  const LayerViewConstants constants{params_.dominant ? 1u : 0u, params_.dim, params_.stripe_width,
-                                     params_.no_layer_grey};
+  const LayerViewPush constants{params_.dominant ? 1u : 0u, params_.dim, params_.stripe_width,
+                                params_.no_layer_grey};
   vkCmdPushConstants(cmd, compute_.layout, kCompute, 0, sizeof constants, &constants);
   // One workgroup per screen tile: the shader culls lights per tile (tile_cull.glsl).
   dispatch_groups(cmd, view.extent, ANTUMBRA_TILE_SIZE);
@@ -92,8 +77,9 @@ void LayerViewPass::execute(fgvk::ExecuteContext& context) {
 void PenumbraViewPass::prepare(fgvk::PrepareContext& context) {
   auto shader = load_shader(context, "debug_views/penumbra_view.comp", shader_files_);
   gpu::DescriptorSetLayoutBuilder builder;
-  builder.combined_image_sampler(0, kCompute).storage_image(1, kCompute);
-  compute_ = build_compute_pipeline(context, shader, builder, sizeof(PenumbraViewConstants));
+  builder.combined_image_sampler(shared::kPenumbraViewPenumbra, kCompute)
+      .storage_image(shared::kPenumbraViewOut, kCompute);
+  compute_ = build_compute_pipeline(context, shader, builder, sizeof(PenumbraViewPush));
 }
 
 void PenumbraViewPass::execute(fgvk::ExecuteContext& context) {
@@ -102,11 +88,11 @@ void PenumbraViewPass::execute(fgvk::ExecuteContext& context) {
   const VkCommandBuffer cmd = context.cmd;
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, compute_.pipeline);
   gpu::PushDescriptors()
-      .combined_image_sampler(0, penumbra.array_view, context.samplers.nearest_clamp,
-                              penumbra.layout)
-      .storage_image(1, view.view, view.layout)
+      .combined_image_sampler(shared::kPenumbraViewPenumbra, penumbra.array_view,
+                              context.samplers.nearest_clamp, penumbra.layout)
+      .storage_image(shared::kPenumbraViewOut, view.view, view.layout)
       .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, compute_.layout);
-  const PenumbraViewConstants constants{params_.max_width, penumbra.layers};
+  const PenumbraViewPush constants{params_.max_width, penumbra.layers};
   vkCmdPushConstants(cmd, compute_.layout, kCompute, 0, sizeof constants, &constants);
   dispatch_groups(cmd, view.extent, ANTUMBRA_IMAGE_GROUP);
 }
@@ -117,10 +103,10 @@ void AtlasViewPass::prepare(fgvk::PrepareContext& context) {
   if (linearise_) defines.push_back({"HAS_SHADOW_DATA", "1"});
   auto shader = load_shader(context, "debug_views/atlas_view.comp", shader_files_, defines);
   gpu::DescriptorSetLayoutBuilder builder;
-  builder.combined_image_sampler(0, kCompute);
-  if (linearise_) builder.storage_buffer(1, kCompute);
-  builder.storage_image(2, kCompute);
-  compute_ = build_compute_pipeline(context, shader, builder, sizeof(AtlasViewConstants));
+  builder.combined_image_sampler(shared::kAtlasViewAtlas, kCompute);
+  if (linearise_) builder.storage_buffer(shared::kAtlasViewShadowData, kCompute);
+  builder.storage_image(shared::kAtlasViewOut, kCompute);
+  compute_ = build_compute_pipeline(context, shader, builder, sizeof(AtlasViewPush));
 }
 
 void AtlasViewPass::execute(fgvk::ExecuteContext& context) {
@@ -137,12 +123,13 @@ void AtlasViewPass::execute(fgvk::ExecuteContext& context) {
   const VkCommandBuffer cmd = context.cmd;
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, compute_.pipeline);
   gpu::PushDescriptors descriptors;
-  descriptors.combined_image_sampler(0, atlas.array_view, context.samplers.nearest_clamp,
-                                     atlas.layout);
-  if (linearise_) descriptors.storage_buffer(1, b.buffer(port::kShadowData)->buffer);
-  descriptors.storage_image(2, view.view, view.layout)
+  descriptors.combined_image_sampler(shared::kAtlasViewAtlas, atlas.array_view,
+                                     context.samplers.nearest_clamp, atlas.layout);
+  if (linearise_)
+    descriptors.storage_buffer(shared::kAtlasViewShadowData, b.buffer(port::kShadowData)->buffer);
+  descriptors.storage_image(shared::kAtlasViewOut, view.view, view.layout)
       .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, compute_.layout);
-  const AtlasViewConstants constants{first, faces, columns, cell, atlas.layers};
+  const AtlasViewPush constants{first, faces, columns, cell, atlas.layers};
   vkCmdPushConstants(cmd, compute_.layout, kCompute, 0, sizeof constants, &constants);
   dispatch_groups(cmd, view.extent, ANTUMBRA_IMAGE_GROUP);
 }

@@ -13,23 +13,18 @@
 #include "../common/lights.glsl"
 #include "../interface/shared/shadow_data.h"
 #include "debug_palette.glsl"
+#define ANTUMBRA_LAYER_VIEW_SHADER
+#include "debug_views_interface.h"
 
-layout(set = 0, binding = 0) uniform Frame { FrameUniforms frame; };
-layout(set = 0, binding = 1) readonly buffer Lights { GpuLight lights[]; };
-layout(set = 0, binding = 2) readonly buffer Layers {
+layout(set = 0, binding = kLayerViewFrame) uniform Frame { FrameUniforms frame; };
+layout(set = 0, binding = kLayerViewLights) readonly buffer Lights { GpuLight lights[]; };
+layout(set = 0, binding = kLayerViewLayerTable) readonly buffer Layers {
   LayerTableHeader layer_header;
   uint layer_of[ANTUMBRA_MAX_SHADOW_LIGHTS];
 };
-layout(set = 0, binding = 3) uniform sampler2D g_depth;
-layout(set = 0, binding = 4) uniform sampler2D g_normal;
-layout(set = 0, binding = 5, rgba8) uniform writeonly image2D view_out;
-
-layout(push_constant) uniform Params {
-  uint dominant;     // 1: flat colour of the strongest light's layer (exact palette colours)
-  float dim;         // brightness of the grey-scale surface
-  float stripe_px;   // width of the over-cap stripes
-  float no_layer;    // grey level of lights without a layer (no shadow / over the cap)
-};
+layout(set = 0, binding = kLayerViewDepth) uniform sampler2D g_depth;
+layout(set = 0, binding = kLayerViewNormal) uniform sampler2D g_normal;
+layout(set = 0, binding = kLayerViewOut, rgba8) uniform writeonly image2D view_out;
 
 #include "../common/tile_cull.glsl"
 

@@ -9,14 +9,11 @@
 layout(local_size_x = ANTUMBRA_IMAGE_GROUP, local_size_y = ANTUMBRA_IMAGE_GROUP) in;
 
 #include "debug_palette.glsl"
+#define ANTUMBRA_PENUMBRA_VIEW_SHADER
+#include "debug_views_interface.h"
 
-layout(set = 0, binding = 0) uniform sampler2DArray penumbra;
-layout(set = 0, binding = 1, rgba8) uniform writeonly image2D view_out;
-
-layout(push_constant) uniform Params {
-  float max_width;  // width shown at the top of the ramp
-  uint layers;      // array layers of the penumbra image
-};
+layout(set = 0, binding = kPenumbraViewPenumbra) uniform sampler2DArray penumbra;
+layout(set = 0, binding = kPenumbraViewOut, rgba8) uniform writeonly image2D view_out;
 
 void main() {
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);

@@ -3,20 +3,15 @@
 #include "../common/frame.glsl"
 #include "../common/lights.glsl"
 #include "../common/shading.glsl"
+#include "deferred_lighting_interface.h"
 
 // Untiled deferred shading of every scene light (point, spot, directional), no shadows:
 // the reference lighting that shadow techniques multiply into.
-layout(set = 0, binding = 0) uniform Frame { FrameUniforms frame; };
-layout(set = 0, binding = 1) readonly buffer Lights { GpuLight lights[]; };
-layout(set = 0, binding = 2) uniform sampler2D g_depth;
-layout(set = 0, binding = 3) uniform sampler2D g_normal;
-layout(set = 0, binding = 4) uniform sampler2D g_albedo;
-
-layout(push_constant) uniform Params {
-  float exposure;
-  float ambient_scale;
-  float specular;
-};
+layout(set = 0, binding = kDeferredFrame) uniform Frame { FrameUniforms frame; };
+layout(set = 0, binding = kDeferredLights) readonly buffer Lights { GpuLight lights[]; };
+layout(set = 0, binding = kDeferredDepth) uniform sampler2D g_depth;
+layout(set = 0, binding = kDeferredNormal) uniform sampler2D g_normal;
+layout(set = 0, binding = kDeferredAlbedo) uniform sampler2D g_albedo;
 
 layout(location = 0) in vec2 in_uv;
 layout(location = 0) out vec4 out_color;

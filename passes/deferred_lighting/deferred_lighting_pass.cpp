@@ -8,15 +8,12 @@
 #include "common/fullscreen_pass.hpp"
 #include "common/pass_support.hpp"
 #include "common/ports.hpp"
+#include "deferred_lighting_interface.h"
 
 namespace antumbra::passes {
 namespace {
 
-struct PushConstants {
-  float exposure;
-  float ambient_scale;
-  float specular;
-};
+using shared::DeferredLightingPush;
 
 }  // namespace
 
@@ -27,18 +24,18 @@ DeferredLightingPass::DeferredLightingPass(const fg::PlanPass& pass)
 void DeferredLightingPass::prepare(fgvk::PrepareContext& context) {
   constexpr VkShaderStageFlags kFrag = VK_SHADER_STAGE_FRAGMENT_BIT;
   gpu::DescriptorSetLayoutBuilder bindings;
-  bindings.uniform_buffer(0, kFrag)
-      .storage_buffer(1, kFrag)
-      .combined_image_sampler(2, kFrag)
-      .combined_image_sampler(3, kFrag)
-      .combined_image_sampler(4, kFrag);
+  bindings.uniform_buffer(shared::kDeferredFrame, kFrag)
+      .storage_buffer(shared::kDeferredLights, kFrag)
+      .combined_image_sampler(shared::kDeferredDepth, kFrag)
+      .combined_image_sampler(shared::kDeferredNormal, kFrag)
+      .combined_image_sampler(shared::kDeferredAlbedo, kFrag);
   set_layout_ = bindings.build(context.gpu, context.pass.name + ".set");
   const std::array<VkDescriptorSetLayout, 1> sets{set_layout_};
-  const std::array<VkPushConstantRange, 1> push{{{kFrag, 0, sizeof(PushConstants)}}};
+  const std::array<VkPushConstantRange, 1> push{{{kFrag, 0, sizeof(DeferredLightingPush)}}};
   layout_ = gpu::create_pipeline_layout(context.gpu, sets, push, context.pass.name + ".layout");
   pipeline_ = build_fullscreen_pipeline(
-      context, "deferred_lighting/deferred_lighting.frag", bindings, sizeof(PushConstants), layout_,
-      context.bindings.required_image(port::kHdr).format, shader_files_);
+      context, "deferred_lighting/deferred_lighting.frag", bindings, sizeof(DeferredLightingPush),
+      layout_, context.bindings.required_image(port::kHdr).format, shader_files_);
 }
 
 void DeferredLightingPass::execute(fgvk::ExecuteContext& context) {
@@ -53,13 +50,13 @@ void DeferredLightingPass::execute(fgvk::ExecuteContext& context) {
   begin_fullscreen(cmd, hdr);
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_);
   gpu::PushDescriptors()
-      .uniform_buffer(0, context.frame.frame_uniforms)
-      .storage_buffer(1, context.frame.lights)
-      .combined_image_sampler(2, depth.view, nearest, depth.layout)
-      .combined_image_sampler(3, normal.view, nearest, normal.layout)
-      .combined_image_sampler(4, albedo.view, nearest, albedo.layout)
+      .uniform_buffer(shared::kDeferredFrame, context.frame.frame_uniforms)
+      .storage_buffer(shared::kDeferredLights, context.frame.lights)
+      .combined_image_sampler(shared::kDeferredDepth, depth.view, nearest, depth.layout)
+      .combined_image_sampler(shared::kDeferredNormal, normal.view, nearest, normal.layout)
+      .combined_image_sampler(shared::kDeferredAlbedo, albedo.view, nearest, albedo.layout)
       .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_);
-  const PushConstants constants{params_.exposure, params_.ambient, params_.specular};
+  const DeferredLightingPush constants{params_.exposure, params_.ambient, params_.specular};
   vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof constants, &constants);
   end_fullscreen(cmd);
 }

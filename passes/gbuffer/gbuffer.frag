@@ -1,8 +1,9 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #include "../common/material.glsl"
+#include "gbuffer_interface.h"
 
-layout(set = 0, binding = 1) readonly buffer Materials { GpuMaterial materials[]; };
+layout(set = 0, binding = kGbufferMaterials) readonly buffer Materials { GpuMaterial materials[]; };
 
 layout(location = 0) in vec3 in_view_normal;
 layout(location = 1) flat in uint in_material;

@@ -40,13 +40,13 @@ fg::PassDesc GBufferPass::describe() {
 }
 
 const fg::ParamTable<GBufferParams>& GBufferPass::param_table() {
-  static const auto table = fg::ParamTable<GBufferParams>().add(
+  static const auto kTable = fg::ParamTable<GBufferParams>().add(
       {.name = "cullBackFaces",
        .type = fg::ParamType::boolean,
        .default_value = false,
        .description = "Cull back faces (off: thin panes and planes are visible from both sides)."},
       &GBufferParams::cull_back_faces);
-  return table;
+  return kTable;
 }
 
 }  // namespace antumbra::passes

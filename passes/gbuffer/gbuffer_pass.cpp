@@ -8,6 +8,7 @@
 #include "common/frame_resources.hpp"
 #include "common/pass_support.hpp"
 #include "common/ports.hpp"
+#include "gbuffer_interface.h"
 
 namespace antumbra::passes {
 
@@ -22,28 +23,29 @@ void GBufferPass::prepare(fgvk::PrepareContext& context) {
   const auto& albedo = context.bindings.required_image(port::kAlbedo);
 
   gpu::DescriptorSetLayoutBuilder bindings;
-  bindings.uniform_buffer(0, VK_SHADER_STAGE_VERTEX_BIT)
-      .storage_buffer(1, VK_SHADER_STAGE_FRAGMENT_BIT);
+  bindings.uniform_buffer(shared::kGbufferFrame, VK_SHADER_STAGE_VERTEX_BIT)
+      .storage_buffer(shared::kGbufferMaterials, VK_SHADER_STAGE_FRAGMENT_BIT);
   check_shader_interface(context.pass.name, vert, bindings, 0);
   check_shader_interface(context.pass.name, frag, bindings, 0);
   set_layout_ = bindings.build(context.gpu, context.pass.name + ".set");
   const std::array<VkDescriptorSetLayout, 1> sets{set_layout_};
   layout_ = gpu::create_pipeline_layout(context.gpu, sets, {}, context.pass.name + ".layout");
   const bool cull = params_.cull_back_faces;
-  pipeline_ = gpu::GraphicsPipelineBuilder()
-                  .shader(VK_SHADER_STAGE_VERTEX_BIT, vert)
-                  .shader(VK_SHADER_STAGE_FRAGMENT_BIT, frag)
-                  .vertex_binding(0, sizeof(GpuVertex))
-                  .vertex_attribute(0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(GpuVertex, position))
-                  .vertex_attribute(1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(GpuVertex, normal))
-                  .vertex_attribute(2, 0, VK_FORMAT_R32_UINT, offsetof(GpuVertex, material))
-                  .cull(cull ? VK_CULL_MODE_BACK_BIT : VK_CULL_MODE_NONE)
-                  .depth(true, true, VK_COMPARE_OP_LESS)
-                  .color_formats({normal.format, albedo.format})
-                  .depth_format(depth.format)
-                  .layout(layout_)
-                  .cache(context.pipeline_cache)
-                  .build(context.gpu, context.pass.name + ".pipeline");
+  gpu::GraphicsPipelineBuilder builder;
+  builder.shader(VK_SHADER_STAGE_VERTEX_BIT, vert)
+      .shader(VK_SHADER_STAGE_FRAGMENT_BIT, frag)
+      .vertex_binding(0, sizeof(GpuVertex))
+      .vertex_attribute(0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(GpuVertex, position))
+      .vertex_attribute(1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(GpuVertex, normal))
+      .vertex_attribute(2, 0, VK_FORMAT_R32_UINT, offsetof(GpuVertex, material))
+      .cull(cull ? VK_CULL_MODE_BACK_BIT : VK_CULL_MODE_NONE)
+      .depth(true, true, VK_COMPARE_OP_LESS)
+      .color_formats({normal.format, albedo.format})
+      .depth_format(depth.format)
+      .layout(layout_)
+      .cache(context.pipeline_cache);
+  check_vertex_inputs(context.pass.name, vert, builder.vertex_attributes());
+  pipeline_ = builder.build(context.gpu, context.pass.name + ".pipeline");
 }
 
 void GBufferPass::execute(fgvk::ExecuteContext& context) {
@@ -81,8 +83,8 @@ void GBufferPass::execute(fgvk::ExecuteContext& context) {
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_);
     set_viewport(cmd, depth.extent);
     gpu::PushDescriptors()
-        .uniform_buffer(0, context.frame.frame_uniforms)
-        .storage_buffer(1, context.frame.materials)
+        .uniform_buffer(shared::kGbufferFrame, context.frame.frame_uniforms)
+        .storage_buffer(shared::kGbufferMaterials, context.frame.materials)
         .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_);
     const VkDeviceSize offset = 0;
     vkCmdBindVertexBuffers(cmd, 0, 1, &context.frame.vertices, &offset);

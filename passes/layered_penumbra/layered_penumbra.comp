@@ -14,42 +14,34 @@
 #include "../interface/shared/layer_table.h"
 #include "../common/lights.glsl"
 #include "../interface/shared/shadow_data.h"
+#include "layered_penumbra_interface.h"
 
-layout(set = 0, binding = 0) uniform Frame { FrameUniforms frame; };
-layout(set = 0, binding = 1) readonly buffer Lights { GpuLight lights[]; };
-layout(set = 0, binding = 2) readonly buffer Shadows {
+layout(set = 0, binding = kPenumbraFrame) uniform Frame { FrameUniforms frame; };
+layout(set = 0, binding = kPenumbraLights) readonly buffer Lights { GpuLight lights[]; };
+layout(set = 0, binding = kPenumbraShadowData) readonly buffer Shadows {
   ShadowHeader shadow_header;
   ShadowLight shadow_lights[ANTUMBRA_MAX_SHADOW_LIGHTS];
   ShadowFace faces[];
 };
-layout(set = 0, binding = 3) readonly buffer Layers {
+layout(set = 0, binding = kPenumbraLayerTable) readonly buffer Layers {
   LayerTableHeader layer_header;
   uint layer_of[ANTUMBRA_MAX_SHADOW_LIGHTS];
 };
-layout(set = 0, binding = 4) uniform sampler2D g_depth;
-layout(set = 0, binding = 5) uniform sampler2D g_normal;
-layout(set = 0, binding = 6) uniform sampler2DArray atlas;
-layout(set = 0, binding = 7, rgba16f) uniform writeonly image2DArray penumbra_out;
-layout(set = 0, binding = 8, r32ui) uniform writeonly uimage2D hard_out;
+layout(set = 0, binding = kPenumbraDepth) uniform sampler2D g_depth;
+layout(set = 0, binding = kPenumbraNormal) uniform sampler2D g_normal;
+layout(set = 0, binding = kPenumbraAtlas) uniform sampler2DArray atlas;
+layout(set = 0, binding = kPenumbraOut, rgba16f) uniform writeonly image2DArray penumbra_out;
+layout(set = 0, binding = kPenumbraHardOut, r32ui) uniform writeonly uimage2D hard_out;
 #ifdef HAS_COLOUR
-layout(set = 0, binding = 9) uniform sampler2DArray colour_atlas;
-layout(set = 0, binding = 10, rgba32ui) uniform writeonly uimage2DArray translucency_out;
+layout(set = 0, binding = kPenumbraColourAtlas) uniform sampler2DArray colour_atlas;
+layout(set = 0, binding = kPenumbraTranslucencyOut, rgba32ui) uniform writeonly uimage2DArray translucency_out;
 #endif
 #ifdef MIN_FILTER
-layout(set = 0, binding = 11) uniform sampler2DArray min_depth;
+layout(set = 0, binding = kPenumbraMinDepth) uniform sampler2DArray min_depth;
 #endif
 #ifdef HAS_ESM
-layout(set = 0, binding = 12, rgba8) uniform writeonly image2DArray esm_out;
+layout(set = 0, binding = kPenumbraEsmOut, rgba8) uniform writeonly image2DArray esm_out;
 #endif
-
-layout(push_constant) uniform Params {
-  uint max_layers;      // screen layers in use (<= 32)
-  uint penumbra_shift;  // 1 when the penumbra image is half resolution
-  float light_size_scale;
-  float search_scale;   // blocker-search radius as a multiple of the light's size in uv
-  uint search_taps;     // per axis (odd), e.g. 5
-  float esm_constant;   // c of exp(-c (d_receiver - d_occluder)), depths over the range
-};
 
 #include "../common/shadow_sampling.glsl"
 #include "../common/tile_cull.glsl"

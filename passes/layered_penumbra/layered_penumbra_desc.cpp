@@ -90,7 +90,7 @@ fg::PassDesc LayeredPenumbraPass::describe() {
 }
 
 const fg::ParamTable<LayeredPenumbraParams>& LayeredPenumbraPass::param_table() {
-  static const auto table =
+  static const auto kTable =
       fg::ParamTable<LayeredPenumbraParams>()
           .add({.name = "lightSizeScale",
                 .type = fg::ParamType::number,
@@ -121,7 +121,7 @@ const fg::ParamTable<LayeredPenumbraParams>& LayeredPenumbraPass::param_table() 
                 .max = 400.0,
                 .description = "ESM sharpness c (depth difference in units of the light's range)."},
                &LayeredPenumbraParams::esm_constant);
-  return table;
+  return kTable;
 }
 
 }  // namespace antumbra::passes

@@ -7,18 +7,12 @@
 #include "common/frame_resources.hpp"
 #include "common/pass_support.hpp"
 #include "common/ports.hpp"
+#include "layered_penumbra_interface.h"
 
 namespace antumbra::passes {
 namespace {
 
-struct PushConstants {
-  std::uint32_t max_layers;
-  std::uint32_t penumbra_shift;
-  float light_size_scale;
-  float search_scale;
-  std::uint32_t search_taps;
-  float esm_constant;
-};
+using shared::LayeredPenumbraPush;
 
 constexpr VkShaderStageFlags kCompute = VK_SHADER_STAGE_COMPUTE_BIT;
 
@@ -40,19 +34,21 @@ void LayeredPenumbraPass::prepare(fgvk::PrepareContext& context) {
   auto shader =
       load_shader(context, "layered_penumbra/layered_penumbra.comp", shader_files_, defines);
   gpu::DescriptorSetLayoutBuilder builder;
-  builder.uniform_buffer(0, kCompute)
-      .storage_buffer(1, kCompute)
-      .storage_buffer(2, kCompute)
-      .storage_buffer(3, kCompute)
-      .combined_image_sampler(4, kCompute)
-      .combined_image_sampler(5, kCompute)
-      .combined_image_sampler(6, kCompute)
-      .storage_image(7, kCompute)
-      .storage_image(8, kCompute);
-  if (colour_) builder.combined_image_sampler(9, kCompute).storage_image(10, kCompute);
-  if (min_filter_) builder.combined_image_sampler(11, kCompute);
-  if (esm_) builder.storage_image(12, kCompute);
-  compute_ = build_compute_pipeline(context, shader, builder, sizeof(PushConstants));
+  builder.uniform_buffer(shared::kPenumbraFrame, kCompute)
+      .storage_buffer(shared::kPenumbraLights, kCompute)
+      .storage_buffer(shared::kPenumbraShadowData, kCompute)
+      .storage_buffer(shared::kPenumbraLayerTable, kCompute)
+      .combined_image_sampler(shared::kPenumbraDepth, kCompute)
+      .combined_image_sampler(shared::kPenumbraNormal, kCompute)
+      .combined_image_sampler(shared::kPenumbraAtlas, kCompute)
+      .storage_image(shared::kPenumbraOut, kCompute)
+      .storage_image(shared::kPenumbraHardOut, kCompute);
+  if (colour_)
+    builder.combined_image_sampler(shared::kPenumbraColourAtlas, kCompute)
+        .storage_image(shared::kPenumbraTranslucencyOut, kCompute);
+  if (min_filter_) builder.combined_image_sampler(shared::kPenumbraMinDepth, kCompute);
+  if (esm_) builder.storage_image(shared::kPenumbraEsmOut, kCompute);
+  compute_ = build_compute_pipeline(context, shader, builder, sizeof(LayeredPenumbraPush));
 }
 
 void LayeredPenumbraPass::execute(fgvk::ExecuteContext& context) {
@@ -65,33 +61,37 @@ void LayeredPenumbraPass::execute(fgvk::ExecuteContext& context) {
   const VkSampler nearest = context.samplers.nearest_clamp;
 
   gpu::PushDescriptors descriptors;
-  descriptors.uniform_buffer(0, context.frame.frame_uniforms)
-      .storage_buffer(1, context.frame.lights)
-      .storage_buffer(2, b.buffer(port::kShadowData)->buffer)
-      .storage_buffer(3, b.buffer(port::kLayerTable)->buffer)
-      .combined_image_sampler(4, depth.view, nearest, depth.layout)
-      .combined_image_sampler(5, normal.view, nearest, normal.layout)
-      .combined_image_sampler(6, atlas.array_view, nearest, atlas.layout)
-      .storage_image(7, penumbra.array_view, penumbra.layout)
-      .storage_image(8, hard.view, hard.layout);
+  descriptors.uniform_buffer(shared::kPenumbraFrame, context.frame.frame_uniforms)
+      .storage_buffer(shared::kPenumbraLights, context.frame.lights)
+      .storage_buffer(shared::kPenumbraShadowData, b.buffer(port::kShadowData)->buffer)
+      .storage_buffer(shared::kPenumbraLayerTable, b.buffer(port::kLayerTable)->buffer)
+      .combined_image_sampler(shared::kPenumbraDepth, depth.view, nearest, depth.layout)
+      .combined_image_sampler(shared::kPenumbraNormal, normal.view, nearest, normal.layout)
+      .combined_image_sampler(shared::kPenumbraAtlas, atlas.array_view, nearest, atlas.layout)
+      .storage_image(shared::kPenumbraOut, penumbra.array_view, penumbra.layout)
+      .storage_image(shared::kPenumbraHardOut, hard.view, hard.layout);
   if (colour_) {
     const auto& colour = b.required_image(port::kColour);
     const auto& translucency = b.required_image(port::kTranslucency);
-    descriptors.combined_image_sampler(9, colour.array_view, nearest, colour.layout)
-        .storage_image(10, translucency.array_view, translucency.layout);
+    descriptors
+        .combined_image_sampler(shared::kPenumbraColourAtlas, colour.array_view, nearest,
+                                colour.layout)
+        .storage_image(shared::kPenumbraTranslucencyOut, translucency.array_view,
+                       translucency.layout);
   }
   if (min_filter_) {
     const auto& min_depth = b.required_image(port::kMinDepth);
-    descriptors.combined_image_sampler(11, min_depth.array_view, nearest, min_depth.layout);
+    descriptors.combined_image_sampler(shared::kPenumbraMinDepth, min_depth.array_view, nearest,
+                                       min_depth.layout);
   }
   if (esm_) {
     const auto& esm = b.required_image(port::kEsm);
-    descriptors.storage_image(12, esm.array_view, esm.layout);
+    descriptors.storage_image(shared::kPenumbraEsmOut, esm.array_view, esm.layout);
   }
   const VkCommandBuffer cmd = context.cmd;
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, compute_.pipeline);
   descriptors.push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, compute_.layout);
-  const PushConstants constants{
+  const LayeredPenumbraPush constants{
       penumbra.layers * 4u,     penumbra.extent.width < depth.extent.width ? 1u : 0u,
       params_.light_size_scale, params_.search_scale,
       params_.search_taps,      params_.esm_constant,

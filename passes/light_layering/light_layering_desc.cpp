@@ -46,7 +46,7 @@ const fg::ParamTable<LightLayeringParams>& LightLayeringPass::param_table() {
   using layering::CapPolicy;
   using layering::Criterion;
   using layering::Order;
-  static const auto table =
+  static const auto kTable =
       fg::ParamTable<LightLayeringParams>()
           .add({.name = layering::kLayerCap.name,
                 .type = fg::ParamType::integer,
@@ -92,7 +92,7 @@ const fg::ParamTable<LightLayeringParams>& LightLayeringPass::param_table() {
                 .description = "Maximum blur radius in pixels added around each light's "
                                "screen footprint (screen-tile criterion)."},
                &LightLayeringParams::dilation);
-  return table;
+  return kTable;
 }
 
 }  // namespace antumbra::passes

@@ -84,7 +84,7 @@ fg::PassDesc PointShadowAtlasPass::describe() {
 }
 
 const fg::ParamTable<PointShadowAtlasParams>& PointShadowAtlasPass::param_table() {
-  static const auto table =
+  static const auto kTable =
       fg::ParamTable<PointShadowAtlasParams>()
           .add({.name = "nearPlane",
                 .type = fg::ParamType::number,
@@ -144,7 +144,7 @@ const fg::ParamTable<PointShadowAtlasParams>& PointShadowAtlasPass::param_table(
                     "One instanced draw writing gl_Layer where the device supports it; off "
                     "forces the fallback of one draw per face into a single-layer view."},
                &PointShadowAtlasParams::layered_draw);
-  return table;
+  return kTable;
 }
 
 }  // namespace antumbra::passes

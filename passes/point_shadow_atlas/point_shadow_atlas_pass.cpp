@@ -16,6 +16,7 @@
 #include "common/frame_resources.hpp"
 #include "common/pass_support.hpp"
 #include "common/ports.hpp"
+#include "point_shadow_atlas_interface.h"
 
 namespace antumbra::passes {
 namespace {
@@ -51,8 +52,9 @@ VkRenderingAttachmentInfo attachment(VkImageView view, VkImageLayout layout, boo
 // Faces and materials for the vertex stage, materials (translucent tints) for the fragment.
 gpu::DescriptorSetLayoutBuilder atlas_bindings() {
   gpu::DescriptorSetLayoutBuilder bindings;
-  bindings.storage_buffer(0, VK_SHADER_STAGE_VERTEX_BIT)
-      .storage_buffer(1, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT);
+  bindings.storage_buffer(shared::kAtlasFaces, VK_SHADER_STAGE_VERTEX_BIT)
+      .storage_buffer(shared::kAtlasMaterials,
+                      VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT);
   return bindings;
 }
 
@@ -119,6 +121,7 @@ void PointShadowAtlasPass::prepare(fgvk::PrepareContext& context) {
       .depth(true, true, VK_COMPARE_OP_LESS)
       .depth_bias(params_.depth_bias, params_.slope_bias);
   if (colour_map_) depth.color_write_mask(0, 0);
+  check_vertex_inputs(context.pass.name, depth_vert, depth.vertex_attributes());
   depth_pipeline_ = depth.build(context.gpu, context.pass.name + ".depth");
   colour_pipeline_ = {};
   if (colour_) {
@@ -128,14 +131,14 @@ void PointShadowAtlasPass::prepare(fgvk::PrepareContext& context) {
         load_shader(context, "point_shadow_atlas/shadow_colour.frag", shader_files_, {}, &key);
     check_shader_interface(context.pass.name, colour_vert, bindings, 0);
     check_shader_interface(context.pass.name, colour_frag, bindings, 0);
-    colour_pipeline_ =
-        base()
-            .vertex_attribute(1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(GpuVertex, normal))
-            .shader(VK_SHADER_STAGE_VERTEX_BIT, colour_vert)
-            .shader(VK_SHADER_STAGE_FRAGMENT_BIT, colour_frag)
-            .depth(true, false, VK_COMPARE_OP_LESS_OR_EQUAL)
-            .tint_blend(0)
-            .build(context.gpu, context.pass.name + ".colour");
+    auto tint = base();
+    tint.vertex_attribute(1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(GpuVertex, normal))
+        .shader(VK_SHADER_STAGE_VERTEX_BIT, colour_vert)
+        .shader(VK_SHADER_STAGE_FRAGMENT_BIT, colour_frag)
+        .depth(true, false, VK_COMPARE_OP_LESS_OR_EQUAL)
+        .tint_blend(0);
+    check_vertex_inputs(context.pass.name, colour_vert, tint.vertex_attributes());
+    colour_pipeline_ = tint.build(context.gpu, context.pass.name + ".colour");
   }
 
   create_layer_views(context, atlas, colour);
@@ -320,8 +323,8 @@ void PointShadowAtlasPass::draw_scene(fgvk::ExecuteContext& context, VkBuffer dr
     if (pipeline == VK_NULL_HANDLE) continue;
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
     gpu::PushDescriptors()
-        .storage_buffer(0, draws)
-        .storage_buffer(1, context.frame.materials)
+        .storage_buffer(shared::kAtlasFaces, draws)
+        .storage_buffer(shared::kAtlasMaterials, context.frame.materials)
         .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_);
     // Instance = face entry (firstInstance offsets gl_InstanceIndex in the fallback).
     vkCmdDrawIndexed(cmd, context.frame.index_count, count, 0, 0, first);

@@ -5,6 +5,7 @@
 #extension GL_ARB_shader_viewport_layer_array : require
 #endif
 #include "../common/material.glsl"
+#include "point_shadow_atlas_interface.h"
 
 // One instance per face to render: the whole atlas update is one instanced draw of the
 // merged world-space scene (LAYERED), or one draw per face with firstInstance = face
@@ -14,8 +15,8 @@ struct FaceDraw {
   uvec4 info;  // x atlas layer
 };
 
-layout(set = 0, binding = 0) readonly buffer Faces { FaceDraw faces[]; };
-layout(set = 0, binding = 1) readonly buffer Materials { GpuMaterial materials[]; };
+layout(set = 0, binding = kAtlasFaces) readonly buffer Faces { FaceDraw faces[]; };
+layout(set = 0, binding = kAtlasMaterials) readonly buffer Materials { GpuMaterial materials[]; };
 
 layout(location = 0) in vec3 in_position;
 layout(location = 2) in uint in_material;

@@ -1,6 +1,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #include "../common/material.glsl"
+#include "point_shadow_atlas_interface.h"
 
 // Translucent casters multiply their tint into the colour map's rgb (cleared to white,
 // blend dst * src), so stacked panes along a light ray compose; alpha keeps the nearest
@@ -9,7 +10,7 @@
 // per ray: only its surfaces turned towards the light (where rays enter) write, so a
 // closed pane (a thin box, as scenes build them) is not applied at both its faces; an
 // open one-sided pane tints only from its front (shadow-reference does the same).
-layout(set = 0, binding = 1) readonly buffer Materials { GpuMaterial materials[]; };
+layout(set = 0, binding = kAtlasMaterials) readonly buffer Materials { GpuMaterial materials[]; };
 
 layout(location = 0) flat in uint in_material;
 layout(location = 1) in float in_away;

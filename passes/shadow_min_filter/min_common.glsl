@@ -3,6 +3,7 @@
 #define ANTUMBRA_MIN_COMMON_GLSL
 
 #include "../interface/shared/shadow_data.h"
+#include "shadow_min_filter_interface.h"
 
 // Each workgroup loops over a span x span region, so a layer takes a few workgroups:
 // skipped (cached) layers then cost almost nothing, even on CPU implementations where
@@ -10,17 +11,10 @@
 #include "../interface/shared/workgroups.h"
 #define GROUP ANTUMBRA_MIN_FILTER_GROUP
 
-layout(set = 0, binding = 0) readonly buffer Shadows {
+layout(set = 0, binding = kMinShadowData) readonly buffer Shadows {
   ShadowHeader shadow_header;
   ShadowLight shadow_lights[ANTUMBRA_MAX_SHADOW_LIGHTS];
   ShadowFace faces[];
-};
-
-layout(push_constant) uniform Params {
-  uint factor;     // atlas texels per output texel, per axis (1 or even)
-  uint radius;     // separable min radius in output texels
-  uint force_all;  // 1: every owned layer (first frame, new images); 0: drawn ones only
-  uint span;       // output texels per workgroup side (a multiple of GROUP)
 };
 
 // A statically cached face keeps its filtered result; only faces the atlas drew this

@@ -9,8 +9,8 @@
 
 layout(local_size_x = GROUP, local_size_y = GROUP) in;
 
-layout(set = 0, binding = 1) uniform sampler2DArray atlas;
-layout(set = 0, binding = 2, r32f) uniform writeonly image2DArray coarse;
+layout(set = 0, binding = kMinInput) uniform sampler2DArray atlas;
+layout(set = 0, binding = kMinOutput, r32f) uniform writeonly image2DArray coarse;
 
 float nearest_under(ivec2 p, uint layer) {
   ivec2 base = p * int(factor);

@@ -11,8 +11,8 @@
 
 layout(local_size_x = GROUP, local_size_y = GROUP) in;
 
-layout(set = 0, binding = 1) uniform sampler2DArray coarse;
-layout(set = 0, binding = 2, r32f) uniform writeonly image2DArray min_out;
+layout(set = 0, binding = kMinInput) uniform sampler2DArray coarse;
+layout(set = 0, binding = kMinOutput, r32f) uniform writeonly image2DArray min_out;
 
 shared float tile[TILE][TILE];
 shared float rows[TILE][GROUP];

@@ -74,7 +74,7 @@ fg::PassDesc ShadowMinFilterPass::describe() {
 }
 
 const fg::ParamTable<ShadowMinFilterParams>& ShadowMinFilterPass::param_table() {
-  static const auto table = fg::ParamTable<ShadowMinFilterParams>().add(
+  static const auto kTable = fg::ParamTable<ShadowMinFilterParams>().add(
       {.name = "radius",
        .type = fg::ParamType::integer,
        .default_value = 3,
@@ -82,7 +82,7 @@ const fg::ParamTable<ShadowMinFilterParams>& ShadowMinFilterPass::param_table() 
        .max = 8.0,
        .description = "Half width of the min filter in output texels ((2r+1)^2 texels)."},
       &ShadowMinFilterParams::radius);
-  return table;
+  return kTable;
 }
 
 }  // namespace antumbra::passes

@@ -6,17 +6,13 @@
 #include "antumbra/gpu/context.hpp"
 #include "antumbra/gpu/pipelines.hpp"
 #include "common/ports.hpp"
+#include "shadow_min_filter_interface.h"
 #include "shared/workgroups.h"
 
 namespace antumbra::passes {
 namespace {
 
-struct PushConstants {
-  std::uint32_t factor;
-  std::uint32_t radius;
-  std::uint32_t force_all;
-  std::uint32_t span;
-};
+using shared::ShadowMinFilterPush;
 
 constexpr std::uint32_t kGroup = ANTUMBRA_MIN_FILTER_GROUP;  // min_common.glsl's GROUP
 constexpr std::uint32_t kGroupsPerAxis = 2;  // per layer: 2x2 workgroups loop over the face
@@ -26,9 +22,9 @@ constexpr VkPipelineStageFlags2 kComputeStage = VK_PIPELINE_STAGE_2_COMPUTE_SHAD
 // Both dispatches: shadowData, the sampled input, the storage output.
 gpu::DescriptorSetLayoutBuilder bindings() {
   gpu::DescriptorSetLayoutBuilder builder;
-  builder.storage_buffer(0, kCompute)
-      .combined_image_sampler(1, kCompute)
-      .storage_image(2, kCompute);
+  builder.storage_buffer(shared::kMinShadowData, kCompute)
+      .combined_image_sampler(shared::kMinInput, kCompute)
+      .storage_image(shared::kMinOutput, kCompute);
   return builder;
 }
 
@@ -41,8 +37,8 @@ ShadowMinFilterPass::ShadowMinFilterPass(const fg::PlanPass& pass)
 void ShadowMinFilterPass::prepare(fgvk::PrepareContext& context) {
   auto down = load_shader(context, "shadow_min_filter/min_downsample.comp", shader_files_);
   auto separable = load_shader(context, "shadow_min_filter/min_separable.comp", shader_files_);
-  downsample_ = build_compute_pipeline(context, down, bindings(), sizeof(PushConstants));
-  separable_ = build_compute_pipeline(context, separable, bindings(), sizeof(PushConstants));
+  downsample_ = build_compute_pipeline(context, down, bindings(), sizeof(ShadowMinFilterPush));
+  separable_ = build_compute_pipeline(context, separable, bindings(), sizeof(ShadowMinFilterPush));
 }
 
 void ShadowMinFilterPass::execute(fgvk::ExecuteContext& context) {
@@ -85,7 +81,7 @@ void ShadowMinFilterPass::execute(fgvk::ExecuteContext& context) {
   const std::uint32_t groups_x = (out.extent.width + span - 1) / span;
   const std::uint32_t groups_y = (out.extent.height + span - 1) / span;
   filtered_for_ = out.image;
-  const PushConstants constants{
+  const ShadowMinFilterPush constants{
       atlas.extent.width / std::max(out.extent.width, 1u),
       params_.radius,
       force_all ? 1u : 0u,
@@ -95,9 +91,9 @@ void ShadowMinFilterPass::execute(fgvk::ExecuteContext& context) {
   const VkSampler nearest = context.samplers.nearest_clamp;
 
   gpu::PushDescriptors down;
-  down.storage_buffer(0, shadow_data)
-      .combined_image_sampler(1, atlas.array_view, nearest, atlas.layout)
-      .storage_image(2, coarse_.array_view(), VK_IMAGE_LAYOUT_GENERAL);
+  down.storage_buffer(shared::kMinShadowData, shadow_data)
+      .combined_image_sampler(shared::kMinInput, atlas.array_view, nearest, atlas.layout)
+      .storage_image(shared::kMinOutput, coarse_.array_view(), VK_IMAGE_LAYOUT_GENERAL);
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, downsample_.pipeline);
   down.push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, downsample_.layout);
   vkCmdPushConstants(cmd, downsample_.layout, kCompute, 0, sizeof constants, &constants);
@@ -110,9 +106,10 @@ void ShadowMinFilterPass::execute(fgvk::ExecuteContext& context) {
   gpu::image_barrier(cmd, coarse_barrier);
 
   gpu::PushDescriptors sep;
-  sep.storage_buffer(0, shadow_data)
-      .combined_image_sampler(1, coarse_.array_view(), nearest, VK_IMAGE_LAYOUT_GENERAL)
-      .storage_image(2, out.array_view, out.layout);
+  sep.storage_buffer(shared::kMinShadowData, shadow_data)
+      .combined_image_sampler(shared::kMinInput, coarse_.array_view(), nearest,
+                              VK_IMAGE_LAYOUT_GENERAL)
+      .storage_image(shared::kMinOutput, out.array_view, out.layout);
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, separable_.pipeline);
   sep.push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, separable_.layout);
   vkCmdPushConstants(cmd, separable_.layout, kCompute, 0, sizeof constants, &constants);

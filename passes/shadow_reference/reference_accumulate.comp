@@ -21,36 +21,24 @@
 #include "../common/frame.glsl"
 #include "../common/lights.glsl"
 #include "reference_faces.glsl"
+#define ANTUMBRA_REFERENCE_ACCUMULATE_SHADER
+#include "reference_interface.h"
 
 #include "../interface/shared/workgroups.h"
 layout(local_size_x = ANTUMBRA_IMAGE_GROUP, local_size_y = ANTUMBRA_IMAGE_GROUP) in;
 
-layout(set = 0, binding = 0) uniform Frame { FrameUniforms frame; };
+layout(set = 0, binding = kRefAccumulateFrame) uniform Frame { FrameUniforms frame; };
 #include "../common/view_space.glsl"
-layout(set = 0, binding = 1, std430) readonly buffer Lights { GpuLight lights[]; };
-layout(set = 0, binding = 2) uniform sampler2D g_depth;
-layout(set = 0, binding = 3) uniform sampler2D g_normal;
-layout(set = 0, binding = 4) uniform sampler2DArray faces;
-layout(set = 0, binding = 5, std430) readonly buffer Points { vec4 points[]; };
+layout(set = 0, binding = kRefAccumulateLights, std430) readonly buffer Lights { GpuLight lights[]; };
+layout(set = 0, binding = kRefAccumulateDepth) uniform sampler2D g_depth;
+layout(set = 0, binding = kRefAccumulateNormal) uniform sampler2D g_normal;
+layout(set = 0, binding = kRefAccumulateFaces) uniform sampler2DArray faces;
+layout(set = 0, binding = kRefAccumulatePoints, std430) readonly buffer Points { vec4 points[]; };
 // Per (slot, pixel) two vec4: (weight * rgb visibility, weight) and
 // (weight * opaque visibility, weight * untinted visibility, 0, 0).
-layout(set = 0, binding = 6, std430) buffer Visibility { vec4 visibility[]; };
-layout(set = 0, binding = 7) uniform sampler2DArray tints;
-layout(set = 0, binding = 8, std430) readonly buffer Matrices { mat4 matrices[]; };
-
-layout(push_constant) uniform Params {
-  uvec2 image_size;
-  uint sample_index;
-  uint samples;
-  uint first_light;
-  uint light_count;  // lights in this batch
-  float near;
-  float normal_offset;  // texels
-  float face_size;
-  uint weighting;  // 0 projected, 1 uniform
-  float depth_bias;
-  uint tinted;  // 1: the batch's colour layers hold this sample's tints
-};
+layout(set = 0, binding = kRefAccumulateVisibility, std430) buffer Visibility { vec4 visibility[]; };
+layout(set = 0, binding = kRefAccumulateTints) uniform sampler2DArray tints;
+layout(set = 0, binding = kRefAccumulateMatrices, std430) readonly buffer Matrices { mat4 matrices[]; };
 
 // A tint this close to white is no tint.
 const float kUntinted = 0.998;

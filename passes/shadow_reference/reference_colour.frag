@@ -1,6 +1,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #include "../common/material.glsl"
+#include "reference_interface.h"
 
 // Translucent casters of one sample, depth-tested against its opaque depth (no write):
 // their tints multiply into the rgb of colour layers cleared to white, and alpha keeps
@@ -14,7 +15,7 @@
 // enters) tint, so a closed pane (a thin box, as scenes build them) is not counted at
 // both its faces. An open, one-sided pane tints only from its front. The tint of one pane
 // is mix(1, transmittance.rgb, transmittance.a), as the atlas's colour map stores it.
-layout(set = 0, binding = 2, std430) readonly buffer Materials { GpuMaterial materials[]; };
+layout(set = 0, binding = kRefDepthMaterials, std430) readonly buffer Materials { GpuMaterial materials[]; };
 
 layout(location = 0) in vec3 in_world;
 layout(location = 1) in vec3 in_normal;

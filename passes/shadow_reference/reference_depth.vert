@@ -5,21 +5,15 @@
 #extension GL_ARB_shader_viewport_layer_array : require
 #endif
 #include "reference_faces.glsl"
+#define ANTUMBRA_REFERENCE_DEPTH_SHADER
+#include "reference_interface.h"
 
 // One light's triangle list seen from one sample: a point of its sphere (one instance per
 // cube face: gl_InstanceIndex = face, firstInstance = the run's first face), or one of
 // the sun's directions (`ortho`: its orthographic map, face 0). Depth of the opaque
 // casters, or with COLOUR the translucent casters for reference_colour.frag.
-layout(set = 0, binding = 0, std430) readonly buffer Points { vec4 points[]; };
-layout(set = 0, binding = 1, std430) readonly buffer Matrices { mat4 matrices[]; };
-
-layout(push_constant) uniform Params {
-  uint point;       // index into points (and matrices): xyz sample position, w far plane;
-                    // ortho: xyz the sun direction, w its map's half width
-  uint layer_base;  // first layer of the light's six faces
-  float near;
-  uint ortho;  // 1: the sun's orthographic map in matrices[point]
-};
+layout(set = 0, binding = kRefDepthPoints, std430) readonly buffer Points { vec4 points[]; };
+layout(set = 0, binding = kRefDepthMatrices, std430) readonly buffer Matrices { mat4 matrices[]; };
 
 layout(location = 0) in vec3 in_position;
 #ifdef COLOUR

@@ -4,24 +4,20 @@
 // exposure (background as tiled-lighting draws it), and the penumbra light count.
 // Defines: HDR_FORMAT, HAS_PENUMBRA.
 #include "../common/frame.glsl"
+#define ANTUMBRA_REFERENCE_FINAL_SHADER
+#include "reference_interface.h"
 
 #include "../interface/shared/workgroups.h"
 layout(local_size_x = ANTUMBRA_IMAGE_GROUP, local_size_y = ANTUMBRA_IMAGE_GROUP) in;
 
-layout(set = 0, binding = 0) uniform Frame { FrameUniforms frame; };
-layout(set = 0, binding = 1) uniform sampler2D g_depth;
-layout(set = 0, binding = 2) uniform sampler2D g_albedo;
-layout(set = 0, binding = 3, std430) readonly buffer Accum { vec4 accum[]; };
-layout(set = 0, binding = 4, HDR_FORMAT) uniform writeonly image2D out_hdr;
+layout(set = 0, binding = kRefFinalFrame) uniform Frame { FrameUniforms frame; };
+layout(set = 0, binding = kRefFinalDepth) uniform sampler2D g_depth;
+layout(set = 0, binding = kRefFinalAlbedo) uniform sampler2D g_albedo;
+layout(set = 0, binding = kRefFinalAccum, std430) readonly buffer Accum { vec4 accum[]; };
+layout(set = 0, binding = kRefFinalHdr, HDR_FORMAT) uniform writeonly image2D out_hdr;
 #if HAS_PENUMBRA
-layout(set = 0, binding = 5, r32f) uniform writeonly image2D out_penumbra;
+layout(set = 0, binding = kRefFinalPenumbra, r32f) uniform writeonly image2D out_penumbra;
 #endif
-
-layout(push_constant) uniform Params {
-  uvec2 image_size;
-  float exposure;
-  float ambient_scale;
-};
 
 void main() {
   uvec2 pixel = gl_GlobalInvocationID.xy;

@@ -11,27 +11,20 @@
 #include "../common/frame.glsl"
 #include "../common/lights.glsl"
 #include "../common/shading.glsl"
+#define ANTUMBRA_REFERENCE_RESOLVE_SHADER
+#include "reference_interface.h"
 
 #include "../interface/shared/workgroups.h"
 layout(local_size_x = ANTUMBRA_IMAGE_GROUP, local_size_y = ANTUMBRA_IMAGE_GROUP) in;
 
-layout(set = 0, binding = 0) uniform Frame { FrameUniforms frame; };
+layout(set = 0, binding = kRefResolveFrame) uniform Frame { FrameUniforms frame; };
 #include "../common/view_space.glsl"
-layout(set = 0, binding = 1, std430) readonly buffer Lights { GpuLight lights[]; };
-layout(set = 0, binding = 2) uniform sampler2D g_depth;
-layout(set = 0, binding = 3) uniform sampler2D g_normal;
-layout(set = 0, binding = 4) uniform sampler2D g_albedo;
-layout(set = 0, binding = 5, std430) readonly buffer Visibility { vec4 visibility[]; };
-layout(set = 0, binding = 6, std430) buffer Accum { vec4 accum[]; };
-
-layout(push_constant) uniform Params {
-  uvec2 image_size;
-  uint first_light;
-  uint light_count;
-  float specular;
-  float penumbra_low;   // visibility strictly between these two counts as penumbra
-  float penumbra_high;
-};
+layout(set = 0, binding = kRefResolveLights, std430) readonly buffer Lights { GpuLight lights[]; };
+layout(set = 0, binding = kRefResolveDepth) uniform sampler2D g_depth;
+layout(set = 0, binding = kRefResolveNormal) uniform sampler2D g_normal;
+layout(set = 0, binding = kRefResolveAlbedo) uniform sampler2D g_albedo;
+layout(set = 0, binding = kRefResolveVisibility, std430) readonly buffer Visibility { vec4 visibility[]; };
+layout(set = 0, binding = kRefResolveAccum, std430) buffer Accum { vec4 accum[]; };
 
 void main() {
   uvec2 pixel = gl_GlobalInvocationID.xy;

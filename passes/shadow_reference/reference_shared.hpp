@@ -1,6 +1,6 @@
 #pragma once
-// Constants and push-constant blocks shared by the shadow-reference pass's C++ and its
-// shaders (layouts match the `Params` blocks of the .vert/.comp files beside it).
+// Constants of the shadow-reference pass's C++ (its push-constant blocks and binding
+// numbers, shared with the shaders, are in reference_interface.h).
 
 #include <cstdint>
 
@@ -17,44 +17,5 @@ inline constexpr std::uint32_t kFacesPerLight = 6;
 // Visibility strictly inside (kPenumbraLow, kPenumbraHigh) counts as penumbra.
 inline constexpr float kPenumbraLow = 0.02f;
 inline constexpr float kPenumbraHigh = 0.98f;
-
-struct DepthPush {  // reference_depth.vert
-  std::uint32_t point;
-  std::uint32_t layer_base;
-  float near;
-  std::uint32_t ortho;
-};
-
-struct AccumulatePush {  // reference_accumulate.comp
-  std::uint32_t width;
-  std::uint32_t height;
-  std::uint32_t sample_index;
-  std::uint32_t samples;
-  std::uint32_t first_light;
-  std::uint32_t light_count;
-  float near;
-  float normal_offset;
-  float face_size;
-  std::uint32_t weighting;
-  float depth_bias;
-  std::uint32_t tinted;
-};
-
-struct ResolvePush {  // reference_resolve.comp
-  std::uint32_t width;
-  std::uint32_t height;
-  std::uint32_t first_light;
-  std::uint32_t light_count;
-  float specular;
-  float penumbra_low;
-  float penumbra_high;
-};
-
-struct FinalPush {  // reference_final.comp
-  std::uint32_t width;
-  std::uint32_t height;
-  float exposure;
-  float ambient_scale;
-};
 
 }  // namespace antumbra::passes::reference

@@ -40,7 +40,7 @@ fg::PassDesc ShadowReferencePass::describe() {
 }
 
 const fg::ParamTable<ShadowReferenceParams>& ShadowReferencePass::param_table() {
-  static const auto table =
+  static const auto kTable =
       fg::ParamTable<ShadowReferenceParams>()
           .add({.name = "samples",
                 .type = fg::ParamType::integer,
@@ -115,7 +115,7 @@ const fg::ParamTable<ShadowReferenceParams>& ShadowReferencePass::param_table() 
                     "Skip faces whose frustum misses the camera's (never changes the image)."},
                &ShadowReferenceParams::cull_faces)
           .include(&ShadowReferenceParams::lighting, lighting_param_table());
-  return table;
+  return kTable;
 }
 
 }  // namespace antumbra::passes

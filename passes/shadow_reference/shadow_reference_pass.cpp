@@ -12,6 +12,7 @@
 #include "common/frame_resources.hpp"
 #include "common/pass_support.hpp"
 #include "common/ports.hpp"
+#include "reference_interface.h"
 #include "reference_shared.hpp"
 
 namespace antumbra::passes {
@@ -69,16 +70,16 @@ void ShadowReferencePass::prepare_raster_pipelines(fgvk::PrepareContext& context
       load_shader(context, "shadow_reference/reference_depth.vert", shader_files_, colour_defines);
   auto colour_frag = load_shader(context, "shadow_reference/reference_colour.frag", shader_files_);
   gpu::DescriptorSetLayoutBuilder depth_bindings;
-  depth_bindings.storage_buffer(0, VK_SHADER_STAGE_VERTEX_BIT)
-      .storage_buffer(1, VK_SHADER_STAGE_VERTEX_BIT)
-      .storage_buffer(2, VK_SHADER_STAGE_FRAGMENT_BIT);
-  check_shader_interface(name, vert, depth_bindings, sizeof(reference::DepthPush));
-  check_shader_interface(name, colour_vert, depth_bindings, sizeof(reference::DepthPush));
+  depth_bindings.storage_buffer(shared::kRefDepthPoints, VK_SHADER_STAGE_VERTEX_BIT)
+      .storage_buffer(shared::kRefDepthMatrices, VK_SHADER_STAGE_VERTEX_BIT)
+      .storage_buffer(shared::kRefDepthMaterials, VK_SHADER_STAGE_FRAGMENT_BIT);
+  check_shader_interface(name, vert, depth_bindings, sizeof(shared::ReferenceDepthPush));
+  check_shader_interface(name, colour_vert, depth_bindings, sizeof(shared::ReferenceDepthPush));
   check_shader_interface(name, colour_frag, depth_bindings, 0);
   depth_set_ = depth_bindings.build(context.gpu, name + ".depth.set");
   const std::array<VkDescriptorSetLayout, 1> depth_sets{depth_set_};
   const std::array<VkPushConstantRange, 1> depth_push{
-      {{VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(reference::DepthPush)}}};
+      {{VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(shared::ReferenceDepthPush)}}};
   depth_layout_ =
       gpu::create_pipeline_layout(context.gpu, depth_sets, depth_push, name + ".depth.layout");
   auto raster = [&]() {
@@ -99,22 +100,23 @@ void ShadowReferencePass::prepare_raster_pipelines(fgvk::PrepareContext& context
         .depth_bias(params_.raster_bias, params_.slope_bias);
     return builder;
   };
+  check_vertex_inputs(name, vert, depth().vertex_attributes());
   depth_pipeline_ = depth().build(context.gpu, name + ".depth");
   depth_tint_pipeline_ = depth()
                              .color_formats({reference::kTintFormat})
                              .color_write_mask(0, 0)
                              .build(context.gpu, name + ".depth.tinted");
   // Translucent casters: tested against the opaque depth, multiplied into white.
-  colour_pipeline_ =
-      raster()
-          .shader(VK_SHADER_STAGE_VERTEX_BIT, colour_vert)
-          .shader(VK_SHADER_STAGE_FRAGMENT_BIT, colour_frag)
-          .vertex_attribute(1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(GpuVertex, normal))
-          .vertex_attribute(2, 0, VK_FORMAT_R32_UINT, offsetof(GpuVertex, material))
-          .depth(true, false, VK_COMPARE_OP_LESS_OR_EQUAL)
-          .color_formats({reference::kTintFormat})
-          .tint_blend(0)
-          .build(context.gpu, name + ".colour");
+  auto colour = raster();
+  colour.shader(VK_SHADER_STAGE_VERTEX_BIT, colour_vert)
+      .shader(VK_SHADER_STAGE_FRAGMENT_BIT, colour_frag)
+      .vertex_attribute(1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(GpuVertex, normal))
+      .vertex_attribute(2, 0, VK_FORMAT_R32_UINT, offsetof(GpuVertex, material))
+      .depth(true, false, VK_COMPARE_OP_LESS_OR_EQUAL)
+      .color_formats({reference::kTintFormat})
+      .tint_blend(0);
+  check_vertex_inputs(name, colour_vert, colour.vertex_attributes());
+  colour_pipeline_ = colour.build(context.gpu, name + ".colour");
 }
 
 // Per pixel: accumulate the samples' visibility, resolve each batch, write the result.
@@ -137,35 +139,36 @@ void ShadowReferencePass::prepare_compute_pipelines(fgvk::PrepareContext& contex
   };
   compute("reference_accumulate.comp",
           gpu::DescriptorSetLayoutBuilder()
-              .uniform_buffer(0, kComp)
-              .storage_buffer(1, kComp)
-              .combined_image_sampler(2, kComp)
-              .combined_image_sampler(3, kComp)
-              .combined_image_sampler(4, kComp)
-              .storage_buffer(5, kComp)
-              .storage_buffer(6, kComp)
-              .combined_image_sampler(7, kComp)
-              .storage_buffer(8, kComp),
-          sizeof(reference::AccumulatePush), {}, accumulate_set_, accumulate_layout_,
+              .uniform_buffer(shared::kRefAccumulateFrame, kComp)
+              .storage_buffer(shared::kRefAccumulateLights, kComp)
+              .combined_image_sampler(shared::kRefAccumulateDepth, kComp)
+              .combined_image_sampler(shared::kRefAccumulateNormal, kComp)
+              .combined_image_sampler(shared::kRefAccumulateFaces, kComp)
+              .storage_buffer(shared::kRefAccumulatePoints, kComp)
+              .storage_buffer(shared::kRefAccumulateVisibility, kComp)
+              .combined_image_sampler(shared::kRefAccumulateTints, kComp)
+              .storage_buffer(shared::kRefAccumulateMatrices, kComp),
+          sizeof(shared::ReferenceAccumulatePush), {}, accumulate_set_, accumulate_layout_,
           accumulate_pipeline_);
   compute("reference_resolve.comp",
           gpu::DescriptorSetLayoutBuilder()
-              .uniform_buffer(0, kComp)
-              .storage_buffer(1, kComp)
-              .combined_image_sampler(2, kComp)
-              .combined_image_sampler(3, kComp)
-              .combined_image_sampler(4, kComp)
-              .storage_buffer(5, kComp)
-              .storage_buffer(6, kComp),
-          sizeof(reference::ResolvePush), {}, resolve_set_, resolve_layout_, resolve_pipeline_);
+              .uniform_buffer(shared::kRefResolveFrame, kComp)
+              .storage_buffer(shared::kRefResolveLights, kComp)
+              .combined_image_sampler(shared::kRefResolveDepth, kComp)
+              .combined_image_sampler(shared::kRefResolveNormal, kComp)
+              .combined_image_sampler(shared::kRefResolveAlbedo, kComp)
+              .storage_buffer(shared::kRefResolveVisibility, kComp)
+              .storage_buffer(shared::kRefResolveAccum, kComp),
+          sizeof(shared::ReferenceResolvePush), {}, resolve_set_, resolve_layout_,
+          resolve_pipeline_);
   gpu::DescriptorSetLayoutBuilder final_builder;
-  final_builder.uniform_buffer(0, kComp)
-      .combined_image_sampler(1, kComp)
-      .combined_image_sampler(2, kComp)
-      .storage_buffer(3, kComp)
-      .storage_image(4, kComp);
-  if (has_penumbra_) final_builder.storage_image(5, kComp);
-  compute("reference_final.comp", final_builder, sizeof(reference::FinalPush),
+  final_builder.uniform_buffer(shared::kRefFinalFrame, kComp)
+      .combined_image_sampler(shared::kRefFinalDepth, kComp)
+      .combined_image_sampler(shared::kRefFinalAlbedo, kComp)
+      .storage_buffer(shared::kRefFinalAccum, kComp)
+      .storage_image(shared::kRefFinalHdr, kComp);
+  if (has_penumbra_) final_builder.storage_image(shared::kRefFinalPenumbra, kComp);
+  compute("reference_final.comp", final_builder, sizeof(shared::ReferenceFinalPush),
           {{"HDR_FORMAT", hdr_format == VK_FORMAT_R32G32B32A32_SFLOAT ? "rgba32f" : "rgba16f"},
            {"HAS_PENUMBRA", has_penumbra_ ? "1" : "0"}},
           final_set_, final_layout_, final_pipeline_);

@@ -9,6 +9,7 @@
 #include "common/frame_resources.hpp"
 #include "common/pass_support.hpp"
 #include "common/ports.hpp"
+#include "reference_interface.h"
 #include "reference_shared.hpp"
 #include "shadow_reference_pass.hpp"
 
@@ -124,23 +125,29 @@ void ShadowReferencePass::record_batch(fgvk::ExecuteContext& context,
 
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, accumulate_pipeline_);
     gpu::PushDescriptors()
-        .uniform_buffer(0, context.frame.frame_uniforms)
-        .storage_buffer(1, context.frame.lights)
-        .combined_image_sampler(2, depth.view, nearest, depth.layout)
-        .combined_image_sampler(3, normal.view, nearest, normal.layout)
-        .combined_image_sampler(4, faces_.array_view(), nearest,
+        .uniform_buffer(shared::kRefAccumulateFrame, context.frame.frame_uniforms)
+        .storage_buffer(shared::kRefAccumulateLights, context.frame.lights)
+        .combined_image_sampler(shared::kRefAccumulateDepth, depth.view, nearest, depth.layout)
+        .combined_image_sampler(shared::kRefAccumulateNormal, normal.view, nearest, normal.layout)
+        .combined_image_sampler(shared::kRefAccumulateFaces, faces_.array_view(), nearest,
                                 VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
-        .storage_buffer(5, points_)
-        .storage_buffer(6, visibility_)
-        .combined_image_sampler(7, tints_.array_view(), nearest,
+        .storage_buffer(shared::kRefAccumulatePoints, points_)
+        .storage_buffer(shared::kRefAccumulateVisibility, visibility_)
+        .combined_image_sampler(shared::kRefAccumulateTints, tints_.array_view(), nearest,
                                 VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)
-        .storage_buffer(8, matrices_)
+        .storage_buffer(shared::kRefAccumulateMatrices, matrices_)
         .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, accumulate_layout_);
-    const reference::AccumulatePush push{
-        extent.width,       extent.height,         k,
-        plan_.samples,      batch.first_light,     batch.light_count,
-        params_.near_plane, params_.normal_offset, float(params_.face_size),
-        params_.weighting,  params_.depth_bias,    batch.tinted ? 1u : 0u};
+    const shared::ReferenceAccumulatePush push{{extent.width, extent.height},
+                                               k,
+                                               plan_.samples,
+                                               batch.first_light,
+                                               batch.light_count,
+                                               params_.near_plane,
+                                               params_.normal_offset,
+                                               float(params_.face_size),
+                                               params_.weighting,
+                                               params_.depth_bias,
+                                               batch.tinted ? 1u : 0u};
     vkCmdPushConstants(cmd, accumulate_layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
     dispatch_pixels(cmd, extent);
   }
@@ -161,21 +168,17 @@ void ShadowReferencePass::record_resolve(fgvk::ExecuteContext& context,
   gpu::memory_barrier(cmd, kCompute, kStorageRW, kCompute, kStorageRW);
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, resolve_pipeline_);
   gpu::PushDescriptors()
-      .uniform_buffer(0, context.frame.frame_uniforms)
-      .storage_buffer(1, context.frame.lights)
-      .combined_image_sampler(2, depth.view, nearest, depth.layout)
-      .combined_image_sampler(3, normal.view, nearest, normal.layout)
-      .combined_image_sampler(4, albedo.view, nearest, albedo.layout)
-      .storage_buffer(5, visibility_)
-      .storage_buffer(6, accum_)
+      .uniform_buffer(shared::kRefResolveFrame, context.frame.frame_uniforms)
+      .storage_buffer(shared::kRefResolveLights, context.frame.lights)
+      .combined_image_sampler(shared::kRefResolveDepth, depth.view, nearest, depth.layout)
+      .combined_image_sampler(shared::kRefResolveNormal, normal.view, nearest, normal.layout)
+      .combined_image_sampler(shared::kRefResolveAlbedo, albedo.view, nearest, albedo.layout)
+      .storage_buffer(shared::kRefResolveVisibility, visibility_)
+      .storage_buffer(shared::kRefResolveAccum, accum_)
       .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, resolve_layout_);
-  const reference::ResolvePush push{extent.width,
-                                    extent.height,
-                                    batch.first_light,
-                                    batch.light_count,
-                                    params_.lighting.specular,
-                                    reference::kPenumbraLow,
-                                    reference::kPenumbraHigh};
+  const shared::ReferenceResolvePush push{batch.first_light,         batch.light_count,
+                                          params_.lighting.specular, reference::kPenumbraLow,
+                                          reference::kPenumbraHigh,  {extent.width, extent.height}};
   vkCmdPushConstants(cmd, resolve_layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
   dispatch_pixels(cmd, extent);
 }
@@ -222,9 +225,9 @@ void ShadowReferencePass::render_faces(fgvk::ExecuteContext& context, const refe
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
     set_viewport(cmd, face_extent);
     gpu::PushDescriptors()
-        .storage_buffer(0, points_)
-        .storage_buffer(1, matrices_)
-        .storage_buffer(2, context.frame.materials)
+        .storage_buffer(shared::kRefDepthPoints, points_)
+        .storage_buffer(shared::kRefDepthMatrices, matrices_)
+        .storage_buffer(shared::kRefDepthMaterials, context.frame.materials)
         .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, depth_layout_);
     const VkDeviceSize offset = 0;
     vkCmdBindVertexBuffers(cmd, 0, 1, &context.frame.vertices, &offset);
@@ -237,9 +240,9 @@ void ShadowReferencePass::render_faces(fgvk::ExecuteContext& context, const refe
     const std::uint32_t index_count = tint ? plan_.tint_count[light] : plan_.index_count[light];
     if (index_count == 0) return;
     const bool ortho = context.frame.scene->lights[light].type == scene::LightType::directional;
-    const reference::DepthPush push{light * plan_.samples + sample,
-                                    r.slot * reference::kFacesPerLight, params_.near_plane,
-                                    ortho ? 1u : 0u};
+    const shared::ReferenceDepthPush push{light * plan_.samples + sample,
+                                          r.slot * reference::kFacesPerLight, params_.near_plane,
+                                          ortho ? 1u : 0u};
     vkCmdPushConstants(cmd, depth_layout_, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof push, &push);
     vkCmdDrawIndexed(cmd, index_count, count,
                      tint ? plan_.tint_first[light] : plan_.index_first[light], 0, first_face);
@@ -303,18 +306,18 @@ void ShadowReferencePass::record_final(fgvk::ExecuteContext& context) {
                       kCompute, VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, final_pipeline_);
   gpu::PushDescriptors descriptors;
-  descriptors.uniform_buffer(0, context.frame.frame_uniforms)
-      .combined_image_sampler(1, depth.view, nearest, depth.layout)
-      .combined_image_sampler(2, albedo.view, nearest, albedo.layout)
-      .storage_buffer(3, accum_)
-      .storage_image(4, hdr.view, hdr.layout);
+  descriptors.uniform_buffer(shared::kRefFinalFrame, context.frame.frame_uniforms)
+      .combined_image_sampler(shared::kRefFinalDepth, depth.view, nearest, depth.layout)
+      .combined_image_sampler(shared::kRefFinalAlbedo, albedo.view, nearest, albedo.layout)
+      .storage_buffer(shared::kRefFinalAccum, accum_)
+      .storage_image(shared::kRefFinalHdr, hdr.view, hdr.layout);
   if (has_penumbra_) {
     const auto& penumbra = b.required_image(port::kPenumbraCount);
-    descriptors.storage_image(5, penumbra.view, penumbra.layout);
+    descriptors.storage_image(shared::kRefFinalPenumbra, penumbra.view, penumbra.layout);
   }
   descriptors.push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, final_layout_);
-  const reference::FinalPush push{hdr.extent.width, hdr.extent.height, params_.lighting.exposure,
-                                  params_.lighting.ambient};
+  const shared::ReferenceFinalPush push{
+      {hdr.extent.width, hdr.extent.height}, params_.lighting.exposure, params_.lighting.ambient};
   vkCmdPushConstants(cmd, final_layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
   dispatch_pixels(cmd, hdr.extent);
 }

@@ -8,18 +8,20 @@
 #ifndef ANTUMBRA_TILED_LAYERED_GLSL
 #define ANTUMBRA_TILED_LAYERED_GLSL
 
+#include "tiled_lighting_interface.h"
+
 #define MAX_SHADOW_TEXELS 8  // 32 layers (light-layering's largest cap)
 
-layout(set = 0, binding = 8, std430) readonly buffer LayerTable {
+layout(set = 0, binding = kTiledLayerTable, std430) readonly buffer LayerTable {
   LayerTableHeader layer_header;
   uint layer_of[];
 };
-layout(set = 0, binding = 9) uniform sampler2DArray shadow_layers;
+layout(set = 0, binding = kTiledShadow) uniform sampler2DArray shadow_layers;
 #if HAS_COLOUR
-layout(set = 0, binding = 10) uniform usampler2DArray colour_layers;
+layout(set = 0, binding = kTiledColour) uniform usampler2DArray colour_layers;
 #endif
 #if HAS_HARD_BITS
-layout(set = 0, binding = 11) uniform usampler2D hard_bits;  // bit L: layer L in shadow
+layout(set = 0, binding = kTiledHardBits) uniform usampler2D hard_bits;  // bit L: layer L in shadow
 #endif
 
 // A low-resolution texel was blurred on this pixel's surface when its representative

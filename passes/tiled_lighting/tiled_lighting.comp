@@ -12,32 +12,25 @@
 #include "../common/frame.glsl"
 #include "../common/lights.glsl"
 #include "../common/shading.glsl"
+#include "tiled_lighting_interface.h"
 
-layout(set = 0, binding = 0) uniform Frame { FrameUniforms frame; };
-layout(set = 0, binding = 1, std430) readonly buffer Lights { GpuLight lights[]; };
-layout(set = 0, binding = 2) uniform sampler2D g_depth;
-layout(set = 0, binding = 3) uniform sampler2D g_normal;
-layout(set = 0, binding = 4) uniform sampler2D g_albedo;
-layout(set = 0, binding = 5, HDR_FORMAT) uniform writeonly image2D out_hdr;
+layout(set = 0, binding = kTiledFrame) uniform Frame { FrameUniforms frame; };
+layout(set = 0, binding = kTiledLights, std430) readonly buffer Lights { GpuLight lights[]; };
+layout(set = 0, binding = kTiledDepth) uniform sampler2D g_depth;
+layout(set = 0, binding = kTiledNormal) uniform sampler2D g_normal;
+layout(set = 0, binding = kTiledAlbedo) uniform sampler2D g_albedo;
+layout(set = 0, binding = kTiledHdr, HDR_FORMAT) uniform writeonly image2D out_hdr;
 
 #if HAS_ATLAS
 #include "../interface/shared/shadow_data.h"
-layout(set = 0, binding = 6) uniform sampler2DArray atlas;
-layout(set = 0, binding = 7, std430) readonly buffer ShadowData {
+layout(set = 0, binding = kTiledAtlas) uniform sampler2DArray atlas;
+layout(set = 0, binding = kTiledShadowData, std430) readonly buffer ShadowData {
   ShadowHeader shadow_header;
   ShadowLight shadow_lights[ANTUMBRA_MAX_SHADOW_LIGHTS];
   ShadowFace shadow_faces[];
 };
 #include "shadow_filter.glsl"
 #endif
-
-layout(push_constant) uniform Params {
-  float exposure;
-  float ambient_scale;
-  float specular;
-  float light_size_scale;
-  uvec2 image_size;
-};
 
 #include "../common/tile_cull.glsl"
 

@@ -232,14 +232,14 @@ fg::PassDesc TiledLightingPass::describe_pcss() {
 }
 
 const fg::ParamTable<TiledLightingParams>& TiledLightingPass::param_table(std::string_view type) {
-  static const Table tiled = tiled_table();
-  static const Table hard = lighting_table();
-  static const Table pcf = pcf_table();
-  static const Table pcss = pcss_table();
-  if (type == kHardType) return hard;
-  if (type == kPcfType) return pcf;
-  if (type == kPcssType) return pcss;
-  return tiled;
+  static const Table kTiled = tiled_table();
+  static const Table kHard = lighting_table();
+  static const Table kPcf = pcf_table();
+  static const Table kPcss = pcss_table();
+  if (type == kHardType) return kHard;
+  if (type == kPcfType) return kPcf;
+  if (type == kPcssType) return kPcss;
+  return kTiled;
 }
 
 }  // namespace antumbra::passes

@@ -10,34 +10,12 @@
 #include "common/pass_support.hpp"
 #include "common/ports.hpp"
 #include "common/shadow_data.hpp"
+#include "tiled_lighting_interface.h"
 
 namespace antumbra::passes {
 namespace {
 
-struct PushConstants {
-  float exposure;
-  float ambient_scale;
-  float specular;
-  float light_size_scale;
-  std::uint32_t width;
-  std::uint32_t height;
-};
-
-// Binding numbers of tiled_lighting.comp / layered.glsl.
-enum Binding : std::uint32_t {
-  kFrame = 0,
-  kLights = 1,
-  kDepth = 2,
-  kNormal = 3,
-  kAlbedo = 4,
-  kHdr = 5,
-  kAtlas = 6,
-  kShadowData = 7,
-  kLayerTable = 8,
-  kShadow = 9,
-  kColour = 10,
-  kHardBits = 11,
-};
+using shared::TiledLightingPush;
 
 }  // namespace
 
@@ -90,21 +68,24 @@ void TiledLightingPass::prepare(fgvk::PrepareContext& context) {
 
   constexpr VkShaderStageFlags kComp = VK_SHADER_STAGE_COMPUTE_BIT;
   gpu::DescriptorSetLayoutBuilder builder;
-  builder.uniform_buffer(kFrame, kComp)
-      .storage_buffer(kLights, kComp)
-      .combined_image_sampler(kDepth, kComp)
-      .combined_image_sampler(kNormal, kComp)
-      .combined_image_sampler(kAlbedo, kComp)
-      .storage_image(kHdr, kComp);
-  if (has_atlas_) builder.combined_image_sampler(kAtlas, kComp).storage_buffer(kShadowData, kComp);
+  builder.uniform_buffer(shared::kTiledFrame, kComp)
+      .storage_buffer(shared::kTiledLights, kComp)
+      .combined_image_sampler(shared::kTiledDepth, kComp)
+      .combined_image_sampler(shared::kTiledNormal, kComp)
+      .combined_image_sampler(shared::kTiledAlbedo, kComp)
+      .storage_image(shared::kTiledHdr, kComp);
+  if (has_atlas_)
+    builder.combined_image_sampler(shared::kTiledAtlas, kComp)
+        .storage_buffer(shared::kTiledShadowData, kComp);
   if (mode_ == ShadowMode::layered) {
-    builder.storage_buffer(kLayerTable, kComp).combined_image_sampler(kShadow, kComp);
-    if (has_colour_) builder.combined_image_sampler(kColour, kComp);
-    if (has_hard_bits_) builder.combined_image_sampler(kHardBits, kComp);
+    builder.storage_buffer(shared::kTiledLayerTable, kComp)
+        .combined_image_sampler(shared::kTiledShadow, kComp);
+    if (has_colour_) builder.combined_image_sampler(shared::kTiledColour, kComp);
+    if (has_hard_bits_) builder.combined_image_sampler(shared::kTiledHardBits, kComp);
   }
   set_layout_ = builder.build(context.gpu, context.pass.name + ".set");
   const std::array<VkDescriptorSetLayout, 1> sets{set_layout_};
-  const std::array<VkPushConstantRange, 1> push{{{kComp, 0, sizeof(PushConstants)}}};
+  const std::array<VkPushConstantRange, 1> push{{{kComp, 0, sizeof(TiledLightingPush)}}};
   layout_ = gpu::create_pipeline_layout(context.gpu, sets, push, context.pass.name + ".layout");
 
   const auto hdr_format = b.required_image(port::kHdr).format;
@@ -122,7 +103,7 @@ void TiledLightingPass::prepare(fgvk::PrepareContext& context) {
   };
   shader_files_.clear();
   auto module = load_shader(context, "tiled_lighting/tiled_lighting.comp", shader_files_, defines);
-  check_shader_interface(context.pass.name, module, builder, sizeof(PushConstants));
+  check_shader_interface(context.pass.name, module, builder, sizeof(TiledLightingPush));
   pipeline_ = gpu::create_compute_pipeline(context.gpu, layout_, module,
                                            context.pass.name + ".pipeline", context.pipeline_cache);
 }
@@ -138,36 +119,39 @@ void TiledLightingPass::execute(fgvk::ExecuteContext& context) {
 
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
   gpu::PushDescriptors descriptors;
-  descriptors.uniform_buffer(kFrame, context.frame.frame_uniforms)
-      .storage_buffer(kLights, context.frame.lights)
-      .combined_image_sampler(kDepth, depth.view, nearest, depth.layout)
-      .combined_image_sampler(kNormal, normal.view, nearest, normal.layout)
-      .combined_image_sampler(kAlbedo, albedo.view, nearest, albedo.layout)
-      .storage_image(kHdr, hdr.view, hdr.layout);
+  descriptors.uniform_buffer(shared::kTiledFrame, context.frame.frame_uniforms)
+      .storage_buffer(shared::kTiledLights, context.frame.lights)
+      .combined_image_sampler(shared::kTiledDepth, depth.view, nearest, depth.layout)
+      .combined_image_sampler(shared::kTiledNormal, normal.view, nearest, normal.layout)
+      .combined_image_sampler(shared::kTiledAlbedo, albedo.view, nearest, albedo.layout)
+      .storage_image(shared::kTiledHdr, hdr.view, hdr.layout);
   if (has_atlas_) {
     const auto& atlas = b.required_image(port::kAtlas);
-    descriptors.combined_image_sampler(kAtlas, atlas.array_view, nearest, atlas.layout)
-        .storage_buffer(kShadowData, b.buffer(port::kShadowData)->buffer);
+    descriptors.combined_image_sampler(shared::kTiledAtlas, atlas.array_view, nearest, atlas.layout)
+        .storage_buffer(shared::kTiledShadowData, b.buffer(port::kShadowData)->buffer);
   }
   if (mode_ == ShadowMode::layered) {
     const auto& shadow = b.required_image(port::kShadow);
-    descriptors.storage_buffer(kLayerTable, b.buffer(port::kLayerTable)->buffer)
-        .combined_image_sampler(kShadow, shadow.array_view, context.samplers.linear_clamp,
-                                shadow.layout);
+    descriptors.storage_buffer(shared::kTiledLayerTable, b.buffer(port::kLayerTable)->buffer)
+        .combined_image_sampler(shared::kTiledShadow, shadow.array_view,
+                                context.samplers.linear_clamp, shadow.layout);
     if (has_colour_) {
       const auto& colour = b.required_image(port::kColour);
-      descriptors.combined_image_sampler(kColour, colour.array_view, nearest, colour.layout);
+      descriptors.combined_image_sampler(shared::kTiledColour, colour.array_view, nearest,
+                                         colour.layout);
     }
     if (has_hard_bits_) {
       const auto& bits = b.required_image(port::kHardShadow);
-      descriptors.combined_image_sampler(kHardBits, bits.view, nearest, bits.layout);
+      descriptors.combined_image_sampler(shared::kTiledHardBits, bits.view, nearest, bits.layout);
     }
   }
   descriptors.push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
 
-  const PushConstants constants{params_.lighting.exposure, params_.lighting.ambient,
-                                params_.lighting.specular, params_.light_size_scale,
-                                hdr.extent.width,          hdr.extent.height};
+  const TiledLightingPush constants{params_.lighting.exposure,
+                                    params_.lighting.ambient,
+                                    params_.lighting.specular,
+                                    params_.light_size_scale,
+                                    {hdr.extent.width, hdr.extent.height}};
   vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof constants, &constants);
   dispatch_groups(cmd, hdr.extent, ANTUMBRA_TILE_SIZE);
 }

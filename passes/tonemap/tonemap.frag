@@ -1,13 +1,10 @@
 #version 460
+#extension GL_GOOGLE_include_directive : require
 // HDR -> display: exposure, a tone curve, then sRGB encoding when the target is a
 // UNORM image (an *_srgb target encodes in hardware).
-layout(set = 0, binding = 0) uniform sampler2D hdr;
+#include "tonemap_interface.h"
 
-layout(push_constant) uniform Params {
-  float exposure;
-  uint tone_operator;  // 0 aces, 1 reinhard, 2 linear
-  uint encode_srgb;
-};
+layout(set = 0, binding = kTonemapHdr) uniform sampler2D hdr;
 
 layout(location = 0) in vec2 in_uv;
 layout(location = 0) out vec4 out_color;

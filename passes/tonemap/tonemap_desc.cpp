@@ -31,7 +31,7 @@ fg::PassDesc TonemapPass::describe() {
 }
 
 const fg::ParamTable<TonemapParams>& TonemapPass::param_table() {
-  static const auto table =
+  static const auto kTable =
       fg::ParamTable<TonemapParams>()
           .choice({.name = "operator",
                    .type = fg::ParamType::enumeration,
@@ -47,7 +47,7 @@ const fg::ParamTable<TonemapParams>& TonemapPass::param_table() {
                 .max = 16.0,
                 .description = "Exposure multiplier before the curve."},
                &TonemapParams::exposure);
-  return table;
+  return kTable;
 }
 
 }  // namespace antumbra::passes

@@ -8,15 +8,12 @@
 #include "common/fullscreen_pass.hpp"
 #include "common/pass_support.hpp"
 #include "common/ports.hpp"
+#include "tonemap_interface.h"
 
 namespace antumbra::passes {
 namespace {
 
-struct PushConstants {
-  float exposure;
-  std::uint32_t tone_operator;
-  std::uint32_t encode_srgb;
-};
+using shared::TonemapPush;
 
 bool is_srgb_format(VkFormat format) {
   return format == VK_FORMAT_R8G8B8A8_SRGB || format == VK_FORMAT_B8G8R8A8_SRGB;
@@ -30,13 +27,13 @@ TonemapPass::TonemapPass(const fg::PlanPass& pass) : params_(param_table().read(
 void TonemapPass::prepare(fgvk::PrepareContext& context) {
   constexpr VkShaderStageFlags kFrag = VK_SHADER_STAGE_FRAGMENT_BIT;
   gpu::DescriptorSetLayoutBuilder bindings;
-  bindings.combined_image_sampler(0, kFrag);
+  bindings.combined_image_sampler(shared::kTonemapHdr, kFrag);
   set_layout_ = bindings.build(context.gpu, context.pass.name + ".set");
   const std::array<VkDescriptorSetLayout, 1> sets{set_layout_};
-  const std::array<VkPushConstantRange, 1> push{{{kFrag, 0, sizeof(PushConstants)}}};
+  const std::array<VkPushConstantRange, 1> push{{{kFrag, 0, sizeof(TonemapPush)}}};
   layout_ = gpu::create_pipeline_layout(context.gpu, sets, push, context.pass.name + ".layout");
   pipeline_ = build_fullscreen_pipeline(
-      context, "tonemap/tonemap.frag", bindings, sizeof(PushConstants), layout_,
+      context, "tonemap/tonemap.frag", bindings, sizeof(TonemapPush), layout_,
       context.bindings.required_image(port::kLdr).format, shader_files_);
 }
 
@@ -47,10 +44,11 @@ void TonemapPass::execute(fgvk::ExecuteContext& context) {
   begin_fullscreen(cmd, ldr);
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_);
   gpu::PushDescriptors()
-      .combined_image_sampler(0, hdr.view, context.samplers.nearest_clamp, hdr.layout)
+      .combined_image_sampler(shared::kTonemapHdr, hdr.view, context.samplers.nearest_clamp,
+                              hdr.layout)
       .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_);
-  const PushConstants constants{params_.exposure, static_cast<std::uint32_t>(params_.tone_operator),
-                                is_srgb_format(ldr.format) ? 0u : 1u};
+  const TonemapPush constants{params_.exposure, static_cast<std::uint32_t>(params_.tone_operator),
+                              is_srgb_format(ldr.format) ? 0u : 1u};
   vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof constants, &constants);
   end_fullscreen(cmd);
 }

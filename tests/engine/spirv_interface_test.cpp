@@ -66,6 +66,44 @@ void main() {
   EXPECT_EQ(found.push_constant_bytes, 92u);
 }
 
+TEST(SpirvInterface, ReadsVertexInputsByLocationWithoutBuiltIns) {
+  testing::TempDir dir;
+  const auto found = interface_of(dir.path(), "probe.vert", R"(#version 460
+layout(location = 2) in uint in_material;
+layout(location = 0) in vec3 in_position;
+layout(location = 1) in ivec2 in_cell;
+layout(location = 3) in float in_weight;
+layout(location = 0) flat out uint out_material;
+void main() {
+  out_material = in_material + uint(gl_VertexIndex + gl_InstanceIndex + in_cell.x);
+  gl_Position = vec4(in_position * in_weight, 1.0);
+}
+)");
+  ASSERT_EQ(found.vertex_inputs.size(), 4u);  // gl_VertexIndex, gl_InstanceIndex: no location
+  const auto& in = found.vertex_inputs;
+  EXPECT_EQ(in[0].location, 0u);
+  EXPECT_EQ(in[0].components, 3u);
+  EXPECT_EQ(in[0].scalar, SpirvScalar::float32);
+  EXPECT_EQ(in[0].name, "in_position");
+  EXPECT_EQ(in[1].components, 2u);
+  EXPECT_EQ(in[1].scalar, SpirvScalar::sint32);
+  EXPECT_EQ(in[2].components, 1u);
+  EXPECT_EQ(in[2].scalar, SpirvScalar::uint32);
+  EXPECT_EQ(in[3].components, 1u);
+  EXPECT_EQ(in[3].scalar, SpirvScalar::float32);
+  EXPECT_EQ(glsl_type_name(SpirvScalar::float32, 3), "vec3");
+  EXPECT_EQ(glsl_type_name(SpirvScalar::uint32, 1), "uint");
+  EXPECT_EQ(glsl_type_name(SpirvScalar::sint32, 2), "ivec2");
+
+  // A fragment shader's inputs are not vertex inputs.
+  const auto frag = interface_of(dir.path(), "probe.frag", R"(#version 460
+layout(location = 0) in vec3 in_normal;
+layout(location = 0) out vec4 out_colour;
+void main() { out_colour = vec4(in_normal, 1.0); }
+)");
+  EXPECT_TRUE(frag.vertex_inputs.empty());
+}
+
 TEST(SpirvInterface, NoPushConstantsIsZeroAndGarbageThrows) {
   testing::TempDir dir;
   const auto found = interface_of(dir.path(), "plain.comp",

@@ -10,6 +10,7 @@ namespace {
 // The few SPIR-V opcodes, decorations and storage classes the interface needs
 // (SPIR-V 1.6 specification, sections 3.20, 3.7 and 3.32).
 constexpr std::uint32_t kOpName = 5;
+constexpr std::uint32_t kOpEntryPoint = 15;
 constexpr std::uint32_t kOpTypeInt = 21;
 constexpr std::uint32_t kOpTypeFloat = 22;
 constexpr std::uint32_t kOpTypeVector = 23;
@@ -28,10 +29,12 @@ constexpr std::uint32_t kOpMemberDecorate = 72;
 constexpr std::uint32_t kBufferBlock = 3;
 constexpr std::uint32_t kArrayStride = 6;
 constexpr std::uint32_t kMatrixStride = 7;
+constexpr std::uint32_t kLocation = 30;
 constexpr std::uint32_t kBinding = 33;
 constexpr std::uint32_t kDescriptorSet = 34;
 constexpr std::uint32_t kOffset = 35;
 constexpr std::uint32_t kUniformConstant = 0;
+constexpr std::uint32_t kInput = 1;
 constexpr std::uint32_t kUniform = 2;
 constexpr std::uint32_t kPushConstant = 9;
 constexpr std::uint32_t kStorageBuffer = 12;
@@ -45,7 +48,7 @@ struct Module {
   std::unordered_map<std::uint32_t, Type> types;
   std::unordered_map<std::uint32_t, std::uint32_t> constants;  // id -> first value word
   std::unordered_map<std::uint32_t, std::string> names;
-  std::unordered_map<std::uint32_t, std::uint32_t> binding, set, array_stride;
+  std::unordered_map<std::uint32_t, std::uint32_t> binding, set, array_stride, location;
   std::unordered_map<std::uint32_t, bool> buffer_block;
   // (struct id, member) -> offset / matrix stride
   std::unordered_map<std::uint64_t, std::uint32_t> member_offset, member_matrix_stride;
@@ -53,6 +56,7 @@ struct Module {
     std::uint32_t id, pointer_type, storage;
   };
   std::vector<Variable> variables;
+  bool vertex = false;  // an entry point's execution model is Vertex (0)
 };
 
 std::uint64_t member_key(std::uint32_t id, std::uint32_t member) {
@@ -82,8 +86,12 @@ void read_instruction(Module& m, std::uint32_t op, std::span<const std::uint32_t
     case kOpVariable:
       if (w.size() >= 3) m.variables.push_back({w[1], w[0], w[2]});
       break;
+    case kOpEntryPoint:
+      if (!w.empty() && w[0] == 0) m.vertex = true;
+      break;
     case kOpDecorate:
       if (w.size() >= 2) {
+        if (w[1] == kLocation && w.size() >= 3) m.location[w[0]] = w[2];
         if (w[1] == kBinding && w.size() >= 3) m.binding[w[0]] = w[2];
         if (w[1] == kDescriptorSet && w.size() >= 3) m.set[w[0]] = w[2];
         if (w[1] == kArrayStride && w.size() >= 3) m.array_stride[w[0]] = w[2];
@@ -189,6 +197,27 @@ VkDescriptorType descriptor_type(const Module& m, std::uint32_t storage, std::ui
   return VK_DESCRIPTOR_TYPE_MAX_ENUM;
 }
 
+// A vertex input of type `id`: its component count and their numeric type. Only 32-bit
+// scalars and vectors of them are described; anything else (16/64-bit, matrices, arrays)
+// stays components 0, scalar other, which no attribute format matches.
+SpirvVertexInput vertex_input(const Module& m, std::uint32_t id) {
+  SpirvVertexInput input;
+  const Type* t = find_type(m, id);
+  std::uint32_t components = 1;
+  if (t != nullptr && t->op == kOpTypeVector) {
+    components = t->operands.at(1);
+    t = find_type(m, t->operands.at(0));
+  }
+  if (t == nullptr || (t->op != kOpTypeFloat && t->op != kOpTypeInt) || t->operands.at(0) != 32) {
+    return input;
+  }
+  input.scalar = t->op == kOpTypeFloat    ? SpirvScalar::float32
+                 : t->operands.at(1) != 0 ? SpirvScalar::sint32
+                                          : SpirvScalar::uint32;
+  input.components = components;
+  return input;
+}
+
 }  // namespace
 
 SpirvInterface reflect_spirv(std::span<const std::uint32_t> words) {
@@ -200,6 +229,16 @@ SpirvInterface reflect_spirv(std::span<const std::uint32_t> words) {
     const std::uint32_t pointee = pointer->operands.at(1);
     if (v.storage == kPushConstant) {
       out.push_constant_bytes = std::max(out.push_constant_bytes, type_size(m, pointee));
+      continue;
+    }
+    if (v.storage == kInput) {
+      const auto location = m.location.find(v.id);
+      if (!m.vertex || location == m.location.end()) continue;  // built-ins have none
+      SpirvVertexInput input = vertex_input(m, pointee);
+      input.location = location->second;
+      const auto name = m.names.find(v.id);
+      if (name != m.names.end()) input.name = name->second;
+      out.vertex_inputs.push_back(std::move(input));
       continue;
     }
     if (v.storage != kUniformConstant && v.storage != kUniform && v.storage != kStorageBuffer)
@@ -216,6 +255,8 @@ SpirvInterface reflect_spirv(std::span<const std::uint32_t> words) {
              ? name->second
              : (block_name != m.names.end() ? block_name->second : std::string())});
   }
+  std::sort(out.vertex_inputs.begin(), out.vertex_inputs.end(),
+            [](const auto& a, const auto& b) { return a.location < b.location; });
   return out;
 }
 
@@ -236,6 +277,20 @@ std::string descriptor_type_name(VkDescriptorType type) {
     default:
       return "descriptor type " + std::to_string(static_cast<int>(type));
   }
+}
+
+std::string glsl_type_name(SpirvScalar scalar, std::uint32_t components) {
+  if (scalar == SpirvScalar::other || components == 0) return "non-32-bit or composite type";
+  const char* scalar_name = scalar == SpirvScalar::float32  ? "float"
+                            : scalar == SpirvScalar::sint32 ? "int"
+                            : scalar == SpirvScalar::uint32 ? "uint"
+                                                            : "?";
+  if (components == 1) return scalar_name;
+  const char* prefix = scalar == SpirvScalar::float32  ? ""
+                       : scalar == SpirvScalar::sint32 ? "i"
+                       : scalar == SpirvScalar::uint32 ? "u"
+                                                       : "?";
+  return std::string(prefix) + "vec" + std::to_string(components);
 }
 
 }  // namespace antumbra::gpu

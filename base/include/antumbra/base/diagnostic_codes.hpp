@@ -136,8 +136,8 @@ inline constexpr const char* kCompile = "SH001";         // glslang compile erro
 inline constexpr const char* kUnknownStage = "SH002";    // no stage given, unknown extension
 inline constexpr const char* kLink = "SH003";            // glslang link / SPIR-V generation
 inline constexpr const char* kCompileWarning = "SH004";  // glslang warning
-// A shader's reflected descriptor bindings or push-constant size disagree with the
-// pass's C++ declaration (passes/common/shader_interface.hpp).
+// A shader's reflected descriptor bindings, push-constant size or vertex inputs disagree
+// with the pass's C++ declaration (passes/common/pass_support.hpp).
 inline constexpr const char* kInterfaceMismatch = "SH010";
 }  // namespace shader
 

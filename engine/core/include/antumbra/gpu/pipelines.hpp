@@ -125,6 +125,10 @@ class GraphicsPipelineBuilder {
   GraphicsPipelineBuilder& layout(VkPipelineLayout layout);
   GraphicsPipelineBuilder& cache(VkPipelineCache cache);
   Pipeline build(Context& context, std::string_view name) const;
+  // What vertex_attribute() declared, for checking against the vertex shader's inputs.
+  [[nodiscard]] const std::vector<VkVertexInputAttributeDescription>& vertex_attributes() const {
+    return attributes_;
+  }
 
  private:
   std::vector<VkPipelineShaderStageCreateInfo> stages_;

@@ -1,0 +1,100 @@
+// The shadow-reference pass's shader interfaces (reference_depth.vert, reference_colour.frag,
+// reference_accumulate.comp, reference_resolve.comp, reference_final.comp), valid GLSL and
+// C++: their push-constant blocks and binding numbers, written once for the shaders, the
+// set layouts and the descriptor writes (docs/architecture.md, "One source for CPU and
+// GPU"). Its other constants (formats, penumbra thresholds) are in reference_shared.hpp.
+//
+// A stage has one push-constant block, so each shader defines its ANTUMBRA_REFERENCE_*
+// selector before including this and gets only its own block (reference_colour.frag has
+// none); C++ sees all four.
+#ifndef ANTUMBRA_REFERENCE_INTERFACE_H
+#define ANTUMBRA_REFERENCE_INTERFACE_H
+
+#include "../interface/shared/glsl_cpp.h"
+
+ANTUMBRA_SHARED_BEGIN
+
+// The sample rasterisation: reference_depth.vert (both variants) and
+// reference_colour.frag.
+ANTUMBRA_BINDING(kRefDepthPoints, 0)
+ANTUMBRA_BINDING(kRefDepthMatrices, 1)
+ANTUMBRA_BINDING(kRefDepthMaterials, 2)
+// reference_accumulate.comp
+ANTUMBRA_BINDING(kRefAccumulateFrame, 0)
+ANTUMBRA_BINDING(kRefAccumulateLights, 1)
+ANTUMBRA_BINDING(kRefAccumulateDepth, 2)
+ANTUMBRA_BINDING(kRefAccumulateNormal, 3)
+ANTUMBRA_BINDING(kRefAccumulateFaces, 4)
+ANTUMBRA_BINDING(kRefAccumulatePoints, 5)
+ANTUMBRA_BINDING(kRefAccumulateVisibility, 6)
+ANTUMBRA_BINDING(kRefAccumulateTints, 7)
+ANTUMBRA_BINDING(kRefAccumulateMatrices, 8)
+// reference_resolve.comp
+ANTUMBRA_BINDING(kRefResolveFrame, 0)
+ANTUMBRA_BINDING(kRefResolveLights, 1)
+ANTUMBRA_BINDING(kRefResolveDepth, 2)
+ANTUMBRA_BINDING(kRefResolveNormal, 3)
+ANTUMBRA_BINDING(kRefResolveAlbedo, 4)
+ANTUMBRA_BINDING(kRefResolveVisibility, 5)
+ANTUMBRA_BINDING(kRefResolveAccum, 6)
+// reference_final.comp (the penumbra count only with HAS_PENUMBRA)
+ANTUMBRA_BINDING(kRefFinalFrame, 0)
+ANTUMBRA_BINDING(kRefFinalDepth, 1)
+ANTUMBRA_BINDING(kRefFinalAlbedo, 2)
+ANTUMBRA_BINDING(kRefFinalAccum, 3)
+ANTUMBRA_BINDING(kRefFinalHdr, 4)
+ANTUMBRA_BINDING(kRefFinalPenumbra, 5)
+
+// reference_depth.vert
+#if defined(__cplusplus) || defined(ANTUMBRA_REFERENCE_DEPTH_SHADER)
+ANTUMBRA_PUSH_CONSTANTS(ReferenceDepthPush) {
+  uint point;       // index into points (and matrices): xyz sample position, w far plane;
+                    // ortho: xyz the sun direction, w its map's half width
+  uint layer_base;  // first layer of the light's six faces
+  float near;
+  uint ortho;  // 1: the sun's orthographic map in matrices[point]
+};
+#endif
+
+// reference_accumulate.comp
+#if defined(__cplusplus) || defined(ANTUMBRA_REFERENCE_ACCUMULATE_SHADER)
+ANTUMBRA_PUSH_CONSTANTS(ReferenceAccumulatePush) {
+  uvec2 image_size;
+  uint sample_index;
+  uint samples;
+  uint first_light;
+  uint light_count;  // lights in this batch
+  float near;
+  float normal_offset;  // texels
+  float face_size;
+  uint weighting;  // 0 projected, 1 uniform
+  float depth_bias;
+  uint tinted;  // 1: the batch's colour layers hold this sample's tints
+};
+#endif
+
+// reference_resolve.comp. image_size comes last: first, its 8-byte std430 alignment would
+// leave C++ (which rounds sizeof up to it) 4 bytes longer than the 28-byte block.
+#if defined(__cplusplus) || defined(ANTUMBRA_REFERENCE_RESOLVE_SHADER)
+ANTUMBRA_PUSH_CONSTANTS(ReferenceResolvePush) {
+  uint first_light;
+  uint light_count;
+  float specular;
+  float penumbra_low;  // visibility strictly between these two counts as penumbra
+  float penumbra_high;
+  uvec2 image_size;
+};
+#endif
+
+// reference_final.comp
+#if defined(__cplusplus) || defined(ANTUMBRA_REFERENCE_FINAL_SHADER)
+ANTUMBRA_PUSH_CONSTANTS(ReferenceFinalPush) {
+  uvec2 image_size;
+  float exposure;
+  float ambient_scale;
+};
+#endif
+
+ANTUMBRA_SHARED_END
+
+#endif

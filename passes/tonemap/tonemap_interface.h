@@ -1,0 +1,21 @@
+// The tonemap pass's shader interface (tonemap.frag), valid GLSL and C++: its push-constant
+// block and binding numbers, written once for the shader, the set layout and the
+// descriptor writes (docs/architecture.md, "One source for CPU and GPU").
+#ifndef ANTUMBRA_TONEMAP_INTERFACE_H
+#define ANTUMBRA_TONEMAP_INTERFACE_H
+
+#include "../interface/shared/glsl_cpp.h"
+
+ANTUMBRA_SHARED_BEGIN
+
+ANTUMBRA_BINDING(kTonemapHdr, 0)
+
+ANTUMBRA_PUSH_CONSTANTS(TonemapPush) {
+  float exposure;
+  uint tone_operator;  // 0 aces, 1 reinhard, 2 linear (ToneOperator)
+  uint encode_srgb;
+};
+
+ANTUMBRA_SHARED_END
+
+#endif
