@@ -118,36 +118,43 @@ FormatInput format_input(VkFormat format) {
   return it == kRows.end() ? FormatInput{} : it->input;
 }
 
+// One vertex input of `shader` against the pipeline's attributes.
+void check_vertex_input(std::string_view pass, const Shader& shader,
+                        const gpu::SpirvVertexInput& input,
+                        std::span<const VkVertexInputAttributeDescription> attributes) {
+  const std::string shader_type = gpu::glsl_type_name(input.scalar, input.components);
+  const std::string what = shader.file + ": vertex input location " +
+                           std::to_string(input.location) +
+                           (input.name.empty() ? "" : " ('" + input.name + "')");
+  const auto it = std::find_if(attributes.begin(), attributes.end(),
+                               [&](const auto& a) { return a.location == input.location; });
+  if (it == attributes.end()) {
+    interface_error(pass, shader,
+                    what + " is a " + shader_type +
+                        " in the shader and has no vertex attribute in the C++ pipeline");
+  }
+  const FormatInput fed = format_input(it->format);
+  if (fed.components == 0) {
+    interface_error(pass, shader,
+                    what + ": the C++ attribute's format (VkFormat " +
+                        std::to_string(static_cast<int>(it->format)) +
+                        ") is not one the check knows; add it to format_input()");
+  }
+  if (input.components != fed.components || input.scalar != fed.scalar) {
+    interface_error(pass, shader,
+                    what + " is a " + shader_type + " in the shader, a " +
+                        gpu::glsl_type_name(fed.scalar, fed.components) +
+                        " in the C++ vertex attribute (VkFormat " +
+                        std::to_string(static_cast<int>(it->format)) + ")");
+  }
+}
+
 }  // namespace
 
 void check_vertex_inputs(std::string_view pass, const Shader& shader,
                          std::span<const VkVertexInputAttributeDescription> attributes) {
   for (const gpu::SpirvVertexInput& input : shader.interface.vertex_inputs) {
-    const std::string shader_type = gpu::glsl_type_name(input.scalar, input.components);
-    const std::string what = shader.file + ": vertex input location " +
-                             std::to_string(input.location) +
-                             (input.name.empty() ? "" : " ('" + input.name + "')");
-    const auto it = std::find_if(attributes.begin(), attributes.end(),
-                                 [&](const auto& a) { return a.location == input.location; });
-    if (it == attributes.end()) {
-      interface_error(pass, shader,
-                      what + " is a " + shader_type +
-                          " in the shader and has no vertex attribute in the C++ pipeline");
-    }
-    const FormatInput fed = format_input(it->format);
-    if (fed.components == 0) {
-      interface_error(pass, shader,
-                      what + ": the C++ attribute's format (VkFormat " +
-                          std::to_string(static_cast<int>(it->format)) +
-                          ") is not one the check knows; add it to format_input()");
-    }
-    if (input.components != fed.components || input.scalar != fed.scalar) {
-      interface_error(pass, shader,
-                      what + " is a " + shader_type + " in the shader, a " +
-                          gpu::glsl_type_name(fed.scalar, fed.components) +
-                          " in the C++ vertex attribute (VkFormat " +
-                          std::to_string(static_cast<int>(it->format)) + ")");
-    }
+    check_vertex_input(pass, shader, input, attributes);
   }
 }
 

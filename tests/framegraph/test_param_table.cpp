@@ -25,10 +25,10 @@ struct Params {
 };
 
 const ParamTable<Shared>& shared_table() {
-  static const auto table = ParamTable<Shared>().add(
+  static const auto kTable = ParamTable<Shared>().add(
       {.name = "scale", .type = ParamType::number, .default_value = 2.0, .min = 0.0, .max = 4.0},
       &Shared::scale);
-  return table;
+  return kTable;
 }
 
 ParamTable<Params> table() {
