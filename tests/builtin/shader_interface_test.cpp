@@ -97,7 +97,7 @@ TEST(ShaderInterface, WrongTypeMissingBindingAndPushSizeAreLocatedErrors) {
   expect_has(push, "the push-constant block is 8 bytes in the shader, 12 in C++");
 }
 
-const char* kVertexProbe = R"(#version 460
+constexpr const char* kVertexProbe = R"(#version 460
 layout(location = 0) in vec3 in_position;
 layout(location = 2) in uint in_material;
 layout(location = 0) flat out uint out_material;

@@ -58,13 +58,13 @@ class LayerFillPass final : public fgvk::Pass {
     bool light1_has_layer = true;
   };
   static const fg::ParamTable<Params>& param_table() {
-    static const auto table =
+    static const auto kTable =
         fg::ParamTable<Params>()
             .add({.name = "a", .type = fg::ParamType::number, .default_value = 1.0}, &Params::a)
             .add({.name = "b", .type = fg::ParamType::number, .default_value = 1.0}, &Params::b)
             .add({.name = "light1HasLayer", .type = fg::ParamType::boolean, .default_value = true},
                  &Params::light1_has_layer);
-    return table;
+    return kTable;
   }
   explicit LayerFillPass(const fg::PlanPass& pass) : params_(param_table().read(pass.params)) {}
   void prepare(fgvk::PrepareContext& /*context*/) override {}
