@@ -136,8 +136,9 @@ TEST(ParamKey, ReadsOnlyTheDeclaredType) {
   EXPECT_EQ(base::read_param(Json{{"maxLayers", "3"}}, kCap), std::nullopt);
 }
 
-// The compiler's type check accepts a whole number written 6.0 for an integer parameter,
-// so every reader (the pass's table, the editor's and the layer checks' keys) reads 6.
+// A whole number written 6.0 reads as 6 for every reader (the pass's table, the editor's
+// and the layer checks' keys), although the compiler refuses it (FG032); values outside
+// the C++ type never read.
 TEST(ParamKey, WholeNumbersWrittenAsFloatsAreIntegers) {
   constexpr base::ParamKey<int> kCap{"maxLayers"};
   EXPECT_EQ(base::read_param(Json{{"maxLayers", 6.0}}, kCap), 6);

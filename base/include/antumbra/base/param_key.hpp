@@ -16,9 +16,10 @@ struct ParamKey {
 };
 
 // `value` as T, or nullopt when it is of another JSON type or does not fit T (an integer
-// parameter written 2.5 is not an int; written 3.0 it is 3, as the graph compiler's type
-// check says). The one conversion of parameter values: fg::ParamTable reads passes'
-// parameters through it too.
+// parameter written 2.5 is not an int, 300 is not a uint8). A whole number written 3.0
+// reads as 3: the graph compiler's type check is stricter (FG032 refuses it), but a reader
+// of a document the compiler has not accepted yet, such as the editor, sees what the user
+// meant. The one conversion of parameter values: fg::ParamTable reads through it too.
 template <class T>
 std::optional<T> json_as(const Json& value) {
   if constexpr (std::is_same_v<T, bool>) {
