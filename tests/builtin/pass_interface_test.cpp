@@ -11,11 +11,10 @@
 #include <vector>
 
 #include "anisotropic_blur/anisotropic_blur_interface.h"
-#include "antumbra/gpu/shader_compiler.hpp"
-#include "antumbra/gpu/spirv_interface.hpp"
 #include "debug_views/debug_views_interface.h"
 #include "deferred_lighting/deferred_lighting_interface.h"
 #include "layered_penumbra/layered_penumbra_interface.h"
+#include "shader_reflection.hpp"
 #include "shadow_min_filter/shadow_min_filter_interface.h"
 #include "shadow_reference/reference_interface.h"
 #include "tiled_lighting/tiled_lighting_interface.h"
@@ -36,15 +35,7 @@ static_assert(offsetof(shared::ReferenceResolvePush, image_size) == 24);
 
 gpu::SpirvInterface reflect(const std::string& relative,
                             const std::vector<gpu::ShaderDefine>& defines = {}) {
-  const fs::path dir = fs::temp_directory_path() / "antumbra_pass_interface_test";
-  gpu::ShaderCompilerOptions options;
-  options.cache_dir = dir / "cache";
-  gpu::ShaderCompiler compiler(options);
-  auto result = compiler.compile(
-      {fs::path(ANTUMBRA_SOURCE_DIR) / "passes" / relative, std::nullopt, defines, "main"});
-  EXPECT_TRUE(result.ok()) << relative << ": " << result.diagnostics().to_text();
-  if (!result.ok()) return {};
-  return gpu::reflect_spirv(result->spirv);
+  return testing::compile_and_reflect(fs::path(ANTUMBRA_SOURCE_DIR) / "passes" / relative, defines);
 }
 
 // The binding the shader declares under `name` (its variable's or block's name).

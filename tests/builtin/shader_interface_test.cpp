@@ -12,6 +12,7 @@
 #include "antumbra/base/diagnostic_codes.hpp"
 #include "antumbra/gpu/shader_compiler.hpp"
 #include "common/pass_support.hpp"
+#include "shader_reflection.hpp"
 
 namespace antumbra::passes {
 namespace {
@@ -22,12 +23,7 @@ Shader compile(const std::string& text, const std::string& file = "probe.comp") 
   const fs::path dir = fs::temp_directory_path() / "antumbra_shader_interface_test";
   fs::create_directories(dir);
   std::ofstream(dir / file) << text;
-  gpu::ShaderCompilerOptions options;
-  options.cache_dir = dir / "cache";
-  gpu::ShaderCompiler compiler(options);
-  auto result = compiler.compile({dir / file, std::nullopt, {}, "main"});
-  EXPECT_TRUE(result.ok()) << result.diagnostics().to_text();
-  return {{}, gpu::reflect_spirv(result->spirv), file};
+  return {{}, testing::compile_and_reflect(dir / file), file};
 }
 
 constexpr const char* kProbe = R"(#version 460
