@@ -119,7 +119,8 @@ Plan assemble(const GraphDesc& graph, const std::vector<ResolvedPass>& passes,
     pass.params = rp.params;
     // Bindings follow the pass type's port order, whatever order the file used.
     for (const PortDesc& port : rp.desc->ports) {
-      PlanBinding binding{port.name, -1, port.access, port.stage};
+      const PortUse use = rp.desc->use_of(port, rp.params);
+      PlanBinding binding{port.name, -1, use.access, use.stage};
       for (const auto* list : {&rp.reads, &rp.writes}) {
         for (const BoundPort& b : *list) {
           if (b.port == &port) binding.resource = remap[static_cast<std::size_t>(b.resource)];

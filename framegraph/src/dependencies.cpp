@@ -220,7 +220,10 @@ std::vector<bool> cull_passes(const DependencyGraph& deps, const std::vector<Res
   // keep its contents (an attachment that loads); storage_write discards them.
   const auto keeps_contents = [&](const DepEdge& e) {
     for (const BoundPort& w : passes[static_cast<std::size_t>(e.to)].writes) {
-      if (w.resource == e.resource) return w.port->access != Access::storage_write;
+      if (w.resource == e.resource) {
+        const ResolvedPass& writer = passes[static_cast<std::size_t>(e.to)];
+        return writer.desc->use_of(*w.port, writer.params).access != Access::storage_write;
+      }
     }
     return true;
   };

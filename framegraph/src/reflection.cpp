@@ -173,6 +173,13 @@ std::string_view to_string(ParamType type) {
   return "number";
 }
 
+PortUse PassDesc::use_of(const PortDesc& port, const Json& values) const {
+  if (port_use != nullptr) {
+    if (auto use = port_use(port, values)) return *use;
+  }
+  return {port.access, port.stage};
+}
+
 const PortDesc* PassDesc::find_port(std::string_view name) const {
   auto it =
       std::find_if(ports.begin(), ports.end(), [&](const PortDesc& p) { return p.name == name; });

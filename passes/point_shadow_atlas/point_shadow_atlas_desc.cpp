@@ -1,3 +1,6 @@
+#include <optional>
+#include <string>
+
 #include "common/plan_checks.hpp"
 #include "common/ports.hpp"
 #include "common/shadow_data.hpp"
@@ -22,6 +25,15 @@ void check(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& 
                        std::to_string(needed) + " (shadow_data_bytes(layers))",
                    "/out/shadowData", diagnostics);
   }
+  const auto rasterizer = pass.params.find("rasterizer");
+  if (rasterizer != pass.params.end() && *rasterizer == "compute" &&
+      atlas->format != fg::Format::d32f) {
+    add_pass_error(graph, pass, codes::shadow_atlas::kComputeFormat,
+                   "rasterizer \"compute\" writes 32-bit float depth; the atlas '" + atlas->name +
+                       "' is " + std::string(fg::to_string(atlas->format)) +
+                       ": make it d32f or use rasterizer \"hardware\"",
+                   "/params/rasterizer", diagnostics);
+  }
   if (colour != nullptr && colour->layers < atlas->layers) {
     add_pass_error(graph, pass, codes::shadow_atlas::kColourLayers,
                    "the colour map '" + colour->name + "' has " + std::to_string(colour->layers) +
@@ -29,6 +41,17 @@ void check(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& 
                        "; give both the same layer count",
                    "/out/colour", diagnostics);
   }
+}
+
+// The compute rasteriser fills the atlas and the colour map by copies from its own
+// buffers (compute_raster.hpp), so the graph's barriers must prepare them for transfers.
+std::optional<fg::PortUse> port_use(const fg::PortDesc& port, const fg::Json& params) {
+  const auto rasterizer = params.find("rasterizer");
+  if (rasterizer == params.end() || *rasterizer != "compute") return std::nullopt;
+  if (port.name == port::kAtlas.name() || port.name == port::kColour.name()) {
+    return fg::PortUse{fg::Access::transfer_dst, fg::Stage::transfer};
+  }
+  return std::nullopt;
 }
 
 }  // namespace
@@ -56,7 +79,8 @@ fg::PassDesc PointShadowAtlasPass::describe() {
        .max_layers = 0,
        .size_group = "atlas",
        .description = "Face depths (0 near .. 1 at the light's range); declare it persistent "
-                      "so that cached faces survive between frames."},
+                      "so that cached faces survive between frames. With rasterizer \"compute\": "
+                      "d32f, written by copies (transfer_dst)."},
       {.name = port::kColour,
        .direction = PortDirection::output,
        .access = Access::color_attachment,
@@ -68,7 +92,8 @@ fg::PassDesc PointShadowAtlasPass::describe() {
        .size_group = "atlas",
        .description = "Shadow colour per face: product of the transmittances of the translucent "
                       "casters along the ray (white = clear); translucent casters then stay out "
-                      "of the depth atlas. Same size and layers as `atlas`, persistent too."},
+                      "of the depth atlas. Same size and layers as `atlas`, persistent too. With "
+                      "rasterizer \"compute\": written by copies (transfer_dst)."},
       {.name = port::kShadowData,
        .direction = PortDirection::output,
        .kind = ResourceKind::buffer,
@@ -80,6 +105,7 @@ fg::PassDesc PointShadowAtlasPass::describe() {
   };
   desc.params = param_table().descs();
   desc.check = &check;
+  desc.port_use = &port_use;
   return desc;
 }
 
@@ -143,7 +169,18 @@ const fg::ParamTable<PointShadowAtlasParams>& PointShadowAtlasPass::param_table(
                 .description =
                     "One instanced draw writing gl_Layer where the device supports it; off "
                     "forces the fallback of one draw per face into a single-layer view."},
-               &PointShadowAtlasParams::layered_draw);
+               &PointShadowAtlasParams::layered_draw)
+          .choice({.name = "rasterizer",
+                   .type = fg::ParamType::enumeration,
+                   .default_value = "hardware",
+                   .choices = {"hardware", "compute"},
+                   .description =
+                       "Who draws the faces: \"hardware\" renders them (vertex shader, depth "
+                       "attachment); \"compute\" culls scene clusters per face and rasterises "
+                       "them in compute shaders (atomic min into a buffer copied into the "
+                       "atlas), for GPUs with few raster units (docs/technique.md)."},
+                  &PointShadowAtlasParams::rasterizer,
+                  {ShadowRasterizer::hardware, ShadowRasterizer::compute});
   return kTable;
 }
 

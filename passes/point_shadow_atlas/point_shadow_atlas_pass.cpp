@@ -76,8 +76,39 @@ void PointShadowAtlasPass::prepare(fgvk::PrepareContext& context) {
   settings_.face_size = atlas.extent.width;
   colour_map_ = colour != nullptr;
   colour_ = colour_map_ && params_.translucent_colour;
-  layered_ = params_.layered_draw && context.gpu.features().shader_output_layer;
+  const bool compute = params_.rasterizer == ShadowRasterizer::compute;
+  layered_ = !compute && params_.layered_draw && context.gpu.features().shader_output_layer;
 
+  shader_files_.clear();
+  gpu::Fnv1a64 key;
+  const float shape[] = {params_.depth_bias, params_.slope_bias, settings_.near_plane,
+                         settings_.sun_max_distance};
+  const std::uint32_t flags[] = {settings_.layers,
+                                 settings_.face_size,
+                                 settings_.cull_faces,
+                                 settings_.cache,
+                                 layered_,
+                                 colour_,
+                                 colour_map_,
+                                 compute};
+  key.update(shape, sizeof shape).update(flags, sizeof flags);
+  depth_pipeline_ = {};
+  colour_pipeline_ = {};
+  if (compute) {
+    compute_.prepare(context, shader_files_, key);
+  } else {
+    prepare_hardware(context, atlas, colour, key);
+  }
+  create_layer_views(context, atlas, colour);
+  planner_.invalidate();
+  drawing_key_ = key.value();
+  atlas_image_ = atlas.image;
+  colour_image_ = colour != nullptr ? colour->image : VK_NULL_HANDLE;
+}
+
+void PointShadowAtlasPass::prepare_hardware(fgvk::PrepareContext& context,
+                                            const fgvk::BoundImage& atlas,
+                                            const fgvk::BoundImage* colour, gpu::Fnv1a64& key) {
   std::vector<gpu::ShaderDefine> depth_defines;
   std::vector<gpu::ShaderDefine> colour_defines{{"COLOUR_PASS", ""}};
   if (layered_) {
@@ -85,14 +116,6 @@ void PointShadowAtlasPass::prepare(fgvk::PrepareContext& context) {
     colour_defines.push_back({"LAYERED", ""});
   }
   if (colour_) depth_defines.push_back({"SKIP_TRANSLUCENT", ""});
-  shader_files_.clear();
-  gpu::Fnv1a64 key;
-  const float shape[] = {params_.depth_bias, params_.slope_bias, settings_.near_plane,
-                         settings_.sun_max_distance};
-  const std::uint32_t flags[] = {
-      settings_.layers, settings_.face_size, settings_.cull_faces, settings_.cache, layered_,
-      colour_,          colour_map_};
-  key.update(shape, sizeof shape).update(flags, sizeof flags);
   auto depth_vert = load_shader(context, "point_shadow_atlas/shadow_atlas.vert", shader_files_,
                                 depth_defines, &key);
 
@@ -123,7 +146,6 @@ void PointShadowAtlasPass::prepare(fgvk::PrepareContext& context) {
   if (colour_map_) depth.color_write_mask(0, 0);
   check_vertex_inputs(context.pass.name, depth_vert, depth.vertex_attributes());
   depth_pipeline_ = depth.build(context.gpu, context.pass.name + ".depth");
-  colour_pipeline_ = {};
   if (colour_) {
     auto colour_vert = load_shader(context, "point_shadow_atlas/shadow_atlas.vert", shader_files_,
                                    colour_defines, &key);
@@ -140,12 +162,6 @@ void PointShadowAtlasPass::prepare(fgvk::PrepareContext& context) {
     check_vertex_inputs(context.pass.name, colour_vert, tint.vertex_attributes());
     colour_pipeline_ = tint.build(context.gpu, context.pass.name + ".colour");
   }
-
-  create_layer_views(context, atlas, colour);
-  planner_.invalidate();
-  drawing_key_ = key.value();
-  atlas_image_ = atlas.image;
-  colour_image_ = colour != nullptr ? colour->image : VK_NULL_HANDLE;
 }
 
 // Without gl_Layer from the vertex stage each face is its own rendering, which needs a
@@ -155,7 +171,7 @@ void PointShadowAtlasPass::create_layer_views(fgvk::PrepareContext& context,
                                               const fgvk::BoundImage* colour) {
   depth_layer_views_.clear();
   colour_layer_views_.clear();
-  if (!layered_) {
+  if (!layered_ && params_.rasterizer == ShadowRasterizer::hardware) {
     for (std::uint32_t layer = 0; layer < atlas.layers; ++layer) {
       const std::string suffix = ".layer" + std::to_string(layer);
       depth_layer_views_.push_back(layer_view(context.gpu, atlas, layer, VK_IMAGE_ASPECT_DEPTH_BIT,
@@ -217,18 +233,25 @@ void PointShadowAtlasPass::execute(fgvk::ExecuteContext& context) {
          base::Json{{"lights", frame.unshadowed}, {"layers", settings_.layers}}});
   }
   const AtlasStats& s = frame.stats;
-  context.report.add({context.pass.name, codes::shadow_atlas::kFaceStats, base::Severity::note,
-                      "shadow faces: " + std::to_string(s.total) + " total, " +
-                          std::to_string(s.culled) + " culled, " + std::to_string(s.rendered) +
-                          " rendered, " + std::to_string(s.cached) + " cached",
-                      base::Json{{"total", s.total},
-                                 {"culled", s.culled},
-                                 {"rendered", s.rendered},
-                                 {"cached", s.cached},
-                                 {"layered", layered_}}});
+  context.report.add(
+      {context.pass.name, codes::shadow_atlas::kFaceStats, base::Severity::note,
+       "shadow faces: " + std::to_string(s.total) + " total, " + std::to_string(s.culled) +
+           " culled, " + std::to_string(s.rendered) + " rendered, " + std::to_string(s.cached) +
+           " cached",
+       base::Json{{"total", s.total},
+                  {"culled", s.culled},
+                  {"rendered", s.rendered},
+                  {"cached", s.cached},
+                  {"layered", layered_},
+                  {"rasterizer",
+                   params_.rasterizer == ShadowRasterizer::compute ? "compute" : "hardware"}}});
 
   if (frame.render_layers.empty() && !frame.clear_all) return;
-  if (layered_) {
+  if (params_.rasterizer == ShadowRasterizer::compute) {
+    compute_.execute(
+        context, frame, tinted_,
+        {.depth_bias = params_.depth_bias, .slope_bias = params_.slope_bias, .tint = colour_});
+  } else if (layered_) {
     draw_layered(context, frame, slot.draws);
   } else {
     draw_per_face(context, frame, slot.draws);

@@ -21,8 +21,13 @@
 #include "antumbra/gpu/resources.hpp"
 #include "antumbra/scene/scene.hpp"
 #include "atlas_planner.hpp"
+#include "compute_raster.hpp"
 
 namespace antumbra::passes {
+
+// Who draws the faces: fixed-function rasterisation (vertex shader + depth attachment) or
+// the compute rasteriser (compute_raster.hpp), which suits GPUs whose raster units are few.
+enum class ShadowRasterizer { hardware, compute };
 
 struct PointShadowAtlasParams {
   float near_plane = 0.05f;
@@ -33,6 +38,7 @@ struct PointShadowAtlasParams {
   bool cache = true;
   bool translucent_colour = true;
   bool layered_draw = true;
+  ShadowRasterizer rasterizer = ShadowRasterizer::hardware;
 };
 
 class PointShadowAtlasPass final : public fgvk::Pass {
@@ -50,6 +56,7 @@ class PointShadowAtlasPass final : public fgvk::Pass {
 
   [[nodiscard]] const AtlasStats& stats() const { return planner_.last().stats; }
   [[nodiscard]] bool layered() const { return layered_; }
+  [[nodiscard]] ShadowRasterizer rasterizer() const { return params_.rasterizer; }
 
  private:
   struct SlotBuffers {
@@ -65,6 +72,8 @@ class PointShadowAtlasPass final : public fgvk::Pass {
   [[nodiscard]] bool layer_tinted(const AtlasFrame& frame, std::uint32_t layer) const;
   void draw_layered(fgvk::ExecuteContext& context, const AtlasFrame& frame, VkBuffer draws);
   void draw_per_face(fgvk::ExecuteContext& context, const AtlasFrame& frame, VkBuffer draws);
+  void prepare_hardware(fgvk::PrepareContext& context, const fgvk::BoundImage& atlas,
+                        const fgvk::BoundImage* colour, gpu::Fnv1a64& key);
   void draw_scene(fgvk::ExecuteContext& context, VkBuffer draws, std::uint32_t first,
                   std::uint32_t count);
 
@@ -81,6 +90,7 @@ class PointShadowAtlasPass final : public fgvk::Pass {
   VkImage colour_image_ = VK_NULL_HANDLE;
 
   AtlasPlanner planner_;
+  ComputeRasterizer compute_;
   std::vector<SlotBuffers> slots_;
   gpu::DescriptorSetLayout set_layout_;
   gpu::PipelineLayout layout_;

@@ -132,6 +132,11 @@ VkImageUsageFlags image_usage(const fg::PlanResource& resource) {
     switch (access) {
       case fg::Access::sampled:
         usage |= VK_IMAGE_USAGE_SAMPLED_BIT;
+        // Sampled depth waits in DEPTH_STENCIL_READ_ONLY_OPTIMAL (sync_state), which needs
+        // attachment usage even when only copies write it (a compute-rasterised atlas).
+        if (fg::is_depth_format(resource.format)) {
+          usage |= VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT;
+        }
         break;
       case fg::Access::storage_read:
       case fg::Access::storage_write:

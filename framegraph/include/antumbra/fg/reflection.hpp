@@ -126,6 +126,16 @@ struct PlanPass;
 using PassCheck = void (*)(const PlanPass& pass, const Plan& plan, const GraphDesc& graph,
                            Diagnostics& diagnostics);
 
+// How a pass touches a port under given parameters, where a parameter changes it (a
+// compute path that fills a depth attachment by copies instead of rendering it). The
+// barrier plan and the resource's usage follow what this returns.
+struct PortUse {
+  Access access = Access::none;
+  Stage stage = Stage::none;
+};
+// `params` holds every parameter, defaults filled in. Nothing: the port's declared use.
+using PortUseFn = std::optional<PortUse> (*)(const PortDesc& port, const Json& params);
+
 struct PassDesc {
   std::string type;  // registry name, e.g. "gbuffer"
   std::string description;
@@ -133,7 +143,10 @@ struct PassDesc {
   std::vector<ParamDesc> params;
   bool side_effects = false;  // never culled (e.g. writes to the host)
   PassCheck check = nullptr;
+  PortUseFn port_use = nullptr;
 
+  // The port's access and stage under parameter `values` (port_use, else as declared).
+  [[nodiscard]] PortUse use_of(const PortDesc& port, const Json& values) const;
   [[nodiscard]] const PortDesc* find_port(std::string_view name) const;
   [[nodiscard]] const ParamDesc* find_param(std::string_view name) const;
 };

@@ -1,0 +1,348 @@
+#include "compute_raster.hpp"
+
+#include <algorithm>
+#include <array>
+#include <initializer_list>
+
+#include "antumbra/gpu/commands.hpp"
+#include "antumbra/gpu/context.hpp"
+#include "antumbra/gpu/pipelines.hpp"
+#include "common/frame_resources.hpp"
+#include "common/ports.hpp"
+#include "common/shadow_data.hpp"
+
+namespace antumbra::passes {
+namespace {
+
+// Scratch bounds per chunk: depth texels and work items. A frame that asks for more
+// faces is rasterised in several rounds through the same buffers.
+constexpr VkDeviceSize kMaxScratchBytes = VkDeviceSize{256} << 20;
+constexpr VkDeviceSize kMaxItems = VkDeviceSize{16} << 20;
+constexpr std::uint32_t kClearDepthBits = 0x3F800000u;  // 1.0f
+constexpr std::uint32_t kClearTint = 0xFFFFFFFFu;       // white, nearest distance 1
+
+std::uint32_t regions_per_face(std::uint32_t size) {
+  const std::uint32_t per_axis =
+      (size + (1u << shared::kRasterRegionShift) - 1u) >> shared::kRasterRegionShift;
+  return per_axis * per_axis;
+}
+
+gpu::DescriptorSetLayoutBuilder raster_bindings() {
+  gpu::DescriptorSetLayoutBuilder b;
+  for (const std::uint32_t binding :
+       {shared::kRasterClusters, shared::kRasterIndices, shared::kRasterVertices,
+        shared::kRasterFaces, shared::kRasterCounters, shared::kRasterItems, shared::kRasterDepth,
+        shared::kRasterTint, shared::kRasterMaterials}) {
+    b.storage_buffer(binding, VK_SHADER_STAGE_COMPUTE_BIT);
+  }
+  return b;
+}
+
+// Every earlier use of the pass's own buffers (shader reads and writes, copies, the
+// indirect arguments) before `dst`.
+void after_all(VkCommandBuffer cmd, std::initializer_list<VkBuffer> buffers,
+               VkPipelineStageFlags2 dst_stage, VkAccessFlags2 dst_access) {
+  for (VkBuffer buffer : buffers) {
+    gpu::buffer_barrier(cmd, buffer,
+                        VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT |
+                            VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT |
+                            VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT,
+                        VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT |
+                            VK_ACCESS_2_TRANSFER_READ_BIT | VK_ACCESS_2_TRANSFER_WRITE_BIT |
+                            VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT,
+                        dst_stage, dst_access);
+  }
+}
+
+constexpr VkAccessFlags2 kStorageReadWrite =
+    VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
+
+}  // namespace
+
+void ComputeRasterizer::prepare(fgvk::PrepareContext& context,
+                                std::vector<std::string>& shader_files, gpu::Fnv1a64& key) {
+  const gpu::DescriptorSetLayoutBuilder bindings = raster_bindings();
+  const auto push = static_cast<std::uint32_t>(sizeof(shared::RasterPush));
+  const auto build = [&](const char* file) {
+    const Shader shader = load_shader(context, file, shader_files, {}, &key);
+    return build_compute_pipeline(context, shader, bindings, push);
+  };
+  cull_ = build("point_shadow_atlas/shadow_cull.comp");
+  args_ = build("point_shadow_atlas/shadow_raster_args.comp");
+  raster_ = build("point_shadow_atlas/shadow_raster.comp");
+  geometry_version_ = ~0ull;
+}
+
+void ComputeRasterizer::upload_geometry(fgvk::ExecuteContext& context) {
+  if (context.frame.geometry_version == geometry_version_) return;
+  const RasterGeometry geometry = build_raster_geometry(*context.frame.scene);
+  const auto create = [&](const auto& data, const char* name) {
+    using T = typename std::decay_t<decltype(data)>::value_type;
+    const VkDeviceSize bytes = std::max<VkDeviceSize>(sizeof(T), data.size() * sizeof(T));
+    auto buffer = gpu::Buffer::create(context.gpu, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                      gpu::MemoryUsage::gpu_only, context.pass.name + name);
+    // Init-time upload (waits for the GPU): only when the scene's geometry changes.
+    if (!data.empty()) buffer.upload(context.gpu, data.data(), data.size() * sizeof(T));
+    return buffer;
+  };
+  clusters_ = create(geometry.clusters, ".clusters");
+  indices_ = create(geometry.indices, ".clusterIndices");
+  cluster_count_ = static_cast<std::uint32_t>(geometry.clusters.size());
+  translucent_clusters_ = geometry.translucent_clusters;
+  geometry_version_ = context.frame.geometry_version;
+  chunk_faces_ = 0;  // the item capacity depends on the cluster count
+}
+
+void ComputeRasterizer::ensure_scratch(fgvk::ExecuteContext& context, std::uint32_t faces,
+                                       std::uint32_t size) {
+  const VkDeviceSize face_bytes = VkDeviceSize{size} * size * 4;
+  const VkDeviceSize items_per_face =
+      std::max<VkDeviceSize>(1, VkDeviceSize{cluster_count_} * regions_per_face(size));
+  // Each buffer is bound whole, so none may pass maxStorageBufferRange (128 MiB on
+  // lavapipe); the depth scratch holds one face more than a chunk (the cleared face).
+  const VkDeviceSize range = context.gpu.limits().maxStorageBufferRange;
+  const VkDeviceSize scratch = std::min(kMaxScratchBytes, range) / face_bytes;
+  const VkDeviceSize items = std::min(kMaxItems, range / 8) / items_per_face;
+  const auto fit = static_cast<std::uint32_t>(
+      std::clamp<VkDeviceSize>(std::min(scratch > 0 ? scratch - 1 : 0, items), 1, 65535));
+  const std::uint32_t wanted = std::clamp(faces, 1u, fit);
+  if (chunk_faces_ >= wanted && scratch_size_ == size) return;
+  chunk_faces_ = wanted;
+  scratch_size_ = size;
+  capacity_depth_ = static_cast<std::uint32_t>(items_per_face * chunk_faces_);
+  capacity_tint_ = static_cast<std::uint32_t>(VkDeviceSize{translucent_clusters_} *
+                                              regions_per_face(size) * chunk_faces_);
+  const std::string& name = context.pass.name;
+  // One more face than a chunk holds: the cleared face copied into untouched layers.
+  const VkDeviceSize bytes = face_bytes * (chunk_faces_ + 1);
+  depth_ =
+      gpu::Buffer::create(context.gpu, bytes,
+                          VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
+                              VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                          gpu::MemoryUsage::gpu_only, name + ".rasterDepth");
+  tint_ = capacity_tint_ == 0
+              ? gpu::Buffer{}
+              : gpu::Buffer::create(context.gpu, face_bytes * chunk_faces_,
+                                    VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
+                                        VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
+                                        VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                    gpu::MemoryUsage::gpu_only, name + ".rasterTint");
+  counters_ =
+      gpu::Buffer::create(context.gpu, shared::kRasterCountersSize,
+                          VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT |
+                              VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                          gpu::MemoryUsage::gpu_only, name + ".rasterCounters");
+  items_ = gpu::Buffer::create(
+      context.gpu, std::max<VkDeviceSize>(8, VkDeviceSize{capacity_depth_ + capacity_tint_} * 8),
+      VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, gpu::MemoryUsage::gpu_only, name + ".rasterItems");
+}
+
+void ComputeRasterizer::execute(fgvk::ExecuteContext& context, const AtlasFrame& frame,
+                                const std::vector<bool>& tinted,
+                                const ComputeRasterSettings& settings) {
+  stats_ = {};
+  const std::vector<std::uint32_t>& layers = frame.render_layers;
+  if (layers.empty() && !frame.clear_all) return;
+  upload_geometry(context);
+  const std::uint32_t size = frame.header.counts.z;
+  ensure_scratch(context, static_cast<std::uint32_t>(layers.size()), size);
+  stats_.clusters = cluster_count_;
+
+  if (faces_.size() < context.frame.frames_in_flight) faces_.resize(context.frame.frames_in_flight);
+  gpu::Buffer& records = faces_[context.frame.slot];
+  const VkDeviceSize record_bytes =
+      sizeof(shared::RasterFace) * std::max<std::size_t>(layers.size(), 1);
+  if (!records || records.size() < record_bytes) {
+    // Appended, not operator+(string&&, ...): GCC 12 warns falsely (-Wrestrict).
+    std::string name = context.pass.name;
+    name += ".rasterFaces.";
+    name += std::to_string(context.frame.slot);
+    records = gpu::Buffer::create(context.gpu, record_bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                  gpu::MemoryUsage::upload, name);
+  }
+  auto* out = reinterpret_cast<shared::RasterFace*>(records.mapped());
+  const VkDeviceSize face_texels = VkDeviceSize{size} * size;
+  for (std::size_t i = 0; i < layers.size(); ++i) {
+    const ShadowFace& face = frame.faces[layers[i]];
+    const std::uint32_t light = face.info.x;
+    const ShadowLight& l = frame.lights.at(light);
+    const bool ortho = l.direction_type.w == kLightTypeDirectional;
+    shared::RasterFace& r = out[i];
+    r.view_proj = face.view_proj;
+    r.light = glm::vec4(glm::vec3(l.position_range), l.position_range.w);
+    r.params = glm::vec4(l.params.y, ortho ? 1.0f : 0.0f, static_cast<float>(size), 0.0f);
+    r.info = {layers[i], static_cast<std::uint32_t>((i % chunk_faces_) * face_texels), size,
+              settings.tint && light < tinted.size() && tinted[light] ? 1u : 0u};
+  }
+  for (std::size_t first = 0; first < layers.size(); first += chunk_faces_) {
+    const Chunk chunk{
+        static_cast<std::uint32_t>(first),
+        static_cast<std::uint32_t>(std::min<std::size_t>(chunk_faces_, layers.size() - first))};
+    record_chunk(context, frame, chunk, chunk.first, tinted, settings);
+    copy_out(context, frame, chunk, tinted);
+    ++stats_.chunks;
+  }
+  if (frame.clear_all) fill_untouched(context, frame);
+}
+
+void ComputeRasterizer::record_chunk(fgvk::ExecuteContext& context, const AtlasFrame& frame,
+                                     const Chunk& chunk, std::uint32_t face_offset,
+                                     const std::vector<bool>& tinted,
+                                     const ComputeRasterSettings& settings) {
+  const VkCommandBuffer cmd = context.cmd;
+  const std::uint32_t size = scratch_size_;
+  const VkDeviceSize face_bytes = VkDeviceSize{size} * size * 4;
+  bool any_tint = false;
+  for (std::uint32_t i = 0; i < chunk.count; ++i) {
+    const std::uint32_t light = frame.faces[frame.render_layers[chunk.first + i]].info.x;
+    any_tint = any_tint || (settings.tint && light < tinted.size() && tinted[light]);
+  }
+  any_tint = any_tint && tint_;
+
+  // Clear the scratch this chunk uses, once the previous round has read it.
+  after_all(cmd, {depth_, counters_}, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+            VK_ACCESS_2_TRANSFER_WRITE_BIT);
+  after_all(cmd, {items_}, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+            VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+  if (tint_) {
+    after_all(cmd, {tint_}, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
+  }
+  vkCmdFillBuffer(cmd, depth_, 0, face_bytes * chunk.count, kClearDepthBits);
+  if (any_tint) vkCmdFillBuffer(cmd, tint_, 0, face_bytes * chunk.count, kClearTint);
+  vkCmdFillBuffer(cmd, counters_, 0, VK_WHOLE_SIZE, 0u);
+  const auto to_compute = [&](std::initializer_list<VkBuffer> buffers, VkPipelineStageFlags2 src,
+                              VkAccessFlags2 src_access, VkPipelineStageFlags2 dst,
+                              VkAccessFlags2 dst_access) {
+    for (VkBuffer b : buffers) gpu::buffer_barrier(cmd, b, src, src_access, dst, dst_access);
+  };
+  to_compute({depth_, counters_}, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+             VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+             kStorageReadWrite);
+  if (any_tint) {
+    to_compute({tint_}, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+               VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, kStorageReadWrite);
+  }
+
+  shared::RasterPush push{};
+  push.face_first = face_offset;
+  push.face_count = chunk.count;
+  push.cluster_count = cluster_count_;
+  push.tint_mode = settings.tint ? 1u : 0u;
+  push.capacity_depth = capacity_depth_;
+  push.capacity_tint = capacity_tint_;
+  push.depth_bias = settings.depth_bias;
+  push.slope_bias = settings.slope_bias;
+  const auto bind = [&](const ComputePipeline& pipeline) {
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.pipeline);
+    gpu::PushDescriptors()
+        .storage_buffer(shared::kRasterClusters, clusters_)
+        .storage_buffer(shared::kRasterIndices, indices_)
+        .storage_buffer(shared::kRasterVertices, context.frame.vertices)
+        .storage_buffer(shared::kRasterFaces, faces_[context.frame.slot])
+        .storage_buffer(shared::kRasterCounters, counters_)
+        .storage_buffer(shared::kRasterItems, items_)
+        .storage_buffer(shared::kRasterDepth, depth_)
+        .storage_buffer(shared::kRasterTint, tint_ ? tint_.handle() : depth_.handle())
+        .storage_buffer(shared::kRasterMaterials, context.frame.materials)
+        .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.layout);
+    vkCmdPushConstants(cmd, pipeline.layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
+  };
+
+  context.gpu.begin_label(cmd, context.pass.name + ".cull");
+  bind(cull_);
+  if (cluster_count_ > 0) {
+    vkCmdDispatch(cmd, group_count(cluster_count_, shared::kCullGroup), chunk.count, 1);
+  }
+  to_compute({counters_, items_}, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+             VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+             kStorageReadWrite);
+  bind(args_);
+  vkCmdDispatch(cmd, 1, 1, 1);
+  to_compute({counters_}, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, kStorageReadWrite,
+             VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+             VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
+  context.gpu.end_label(cmd);
+
+  context.gpu.begin_label(cmd, context.pass.name + ".rasterDepth");
+  push.list = shared::kListDepth;
+  bind(raster_);
+  vkCmdDispatchIndirect(cmd, counters_, shared::kRasterArgsOffset);
+  context.gpu.end_label(cmd);
+  if (any_tint) {
+    to_compute({depth_}, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, kStorageReadWrite,
+               VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, kStorageReadWrite);
+    context.gpu.begin_label(cmd, context.pass.name + ".rasterTint");
+    push.list = shared::kListTint;
+    bind(raster_);
+    vkCmdDispatchIndirect(cmd, counters_, shared::kRasterArgsOffset + 12);
+    context.gpu.end_label(cmd);
+    to_compute({tint_}, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, kStorageReadWrite,
+               VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
+  }
+  to_compute({depth_}, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, kStorageReadWrite,
+             VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
+}
+
+void ComputeRasterizer::copy_out(fgvk::ExecuteContext& context, const AtlasFrame& frame,
+                                 const Chunk& chunk, const std::vector<bool>& tinted) {
+  const auto& atlas = context.bindings.required_image(port::kAtlas);
+  const auto* colour = context.bindings.image(port::kColour);
+  const std::uint32_t size = scratch_size_;
+  const VkDeviceSize face_bytes = VkDeviceSize{size} * size * 4;
+  std::vector<VkBufferImageCopy> depth_regions;
+  std::vector<VkBufferImageCopy> tint_regions;
+  depth_regions.reserve(chunk.count);
+  for (std::uint32_t i = 0; i < chunk.count; ++i) {
+    const std::uint32_t layer = frame.render_layers[chunk.first + i];
+    VkBufferImageCopy region{};
+    region.bufferOffset = face_bytes * i;
+    region.imageSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, layer, 1};
+    region.imageExtent = {size, size, 1};
+    depth_regions.push_back(region);
+    const std::uint32_t light = frame.faces[layer].info.x;
+    if (colour != nullptr && tint_ && light < tinted.size() && tinted[light]) {
+      region.imageSubresource.aspectMask = VK_IMAGE_ASPECT_COLOR_BIT;
+      tint_regions.push_back(region);
+    }
+  }
+  context.gpu.begin_label(context.cmd, context.pass.name + ".copy");
+  vkCmdCopyBufferToImage(context.cmd, depth_, atlas.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                         static_cast<std::uint32_t>(depth_regions.size()), depth_regions.data());
+  if (!tint_regions.empty()) {
+    vkCmdCopyBufferToImage(context.cmd, tint_, colour->image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                           static_cast<std::uint32_t>(tint_regions.size()), tint_regions.data());
+  }
+  context.gpu.end_label(context.cmd);
+}
+
+// First frame (or new images): layers nobody draws still need defined depth (far).
+void ComputeRasterizer::fill_untouched(fgvk::ExecuteContext& context, const AtlasFrame& frame) {
+  const auto& atlas = context.bindings.required_image(port::kAtlas);
+  const std::uint32_t size = scratch_size_;
+  const VkDeviceSize face_bytes = VkDeviceSize{size} * size * 4;
+  const VkDeviceSize cleared = face_bytes * chunk_faces_;
+  std::vector<bool> drawn(atlas.layers, false);
+  for (const std::uint32_t layer : frame.render_layers) {
+    if (layer < drawn.size()) drawn[layer] = true;
+  }
+  std::vector<VkBufferImageCopy> regions;
+  for (std::uint32_t layer = 0; layer < atlas.layers; ++layer) {
+    if (drawn[layer]) continue;
+    VkBufferImageCopy region{};
+    region.bufferOffset = cleared;
+    region.imageSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, layer, 1};
+    region.imageExtent = {size, size, 1};
+    regions.push_back(region);
+  }
+  if (regions.empty()) return;
+  after_all(context.cmd, {depth_}, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+            VK_ACCESS_2_TRANSFER_WRITE_BIT);
+  vkCmdFillBuffer(context.cmd, depth_, cleared, face_bytes, kClearDepthBits);
+  gpu::buffer_barrier(context.cmd, depth_, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+                      VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT,
+                      VK_ACCESS_2_TRANSFER_READ_BIT);
+  vkCmdCopyBufferToImage(context.cmd, depth_, atlas.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                         static_cast<std::uint32_t>(regions.size()), regions.data());
+}
+
+}  // namespace antumbra::passes

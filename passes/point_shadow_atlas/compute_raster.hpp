@@ -1,0 +1,78 @@
+#pragma once
+// point-shadow-atlas's compute path (parameter rasterizer = "compute"): rasterises the
+// faces the planner asks for with compute shaders into private buffers, then copies them
+// into the atlas (and the colour map) layers, so that every consumer reads the same
+// images as from the hardware path (docs/technique.md, "Compute shadow rasteriser").
+// The graph sees the atlas and colour ports as transfer_dst under this path
+// (point_shadow_atlas_desc.cpp); every barrier here is on the pass's own buffers.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "antumbra/fgvk/pass.hpp"
+#include "antumbra/gpu/hash.hpp"
+#include "antumbra/gpu/resources.hpp"
+#include "atlas_planner.hpp"
+#include "common/pass_support.hpp"
+#include "raster_clusters.hpp"
+
+namespace antumbra::passes {
+
+struct ComputeRasterSettings {
+  float depth_bias = 2.0f;
+  float slope_bias = 1.75f;
+  bool tint = false;  // translucent casters tint the colour map instead of casting depth
+};
+
+struct ComputeRasterStats {
+  std::uint32_t clusters = 0;
+  std::uint32_t chunks = 0;  // rasterise-and-copy rounds this frame (scratch memory bound)
+};
+
+class ComputeRasterizer {
+ public:
+  void prepare(fgvk::PrepareContext& context, std::vector<std::string>& shader_files,
+               gpu::Fnv1a64& key);
+  // Records the rasterisation of frame.render_layers (and, when the contents are unknown,
+  // 1.0 into every other layer). `tinted`: per scene light, whether its colour layers hold
+  // tints (the planner's light index).
+  void execute(fgvk::ExecuteContext& context, const AtlasFrame& frame,
+               const std::vector<bool>& tinted, const ComputeRasterSettings& settings);
+  [[nodiscard]] const ComputeRasterStats& stats() const { return stats_; }
+
+ private:
+  struct Chunk {
+    std::uint32_t first = 0;  // into frame.render_layers
+    std::uint32_t count = 0;
+  };
+  void upload_geometry(fgvk::ExecuteContext& context);
+  void ensure_scratch(fgvk::ExecuteContext& context, std::uint32_t faces, std::uint32_t size);
+  void record_chunk(fgvk::ExecuteContext& context, const AtlasFrame& frame, const Chunk& chunk,
+                    std::uint32_t face_offset, const std::vector<bool>& tinted,
+                    const ComputeRasterSettings& settings);
+  void copy_out(fgvk::ExecuteContext& context, const AtlasFrame& frame, const Chunk& chunk,
+                const std::vector<bool>& tinted);
+  void fill_untouched(fgvk::ExecuteContext& context, const AtlasFrame& frame);
+
+  ComputePipeline cull_;
+  ComputePipeline args_;
+  ComputePipeline raster_;
+  gpu::Buffer clusters_;
+  gpu::Buffer indices_;
+  std::uint32_t cluster_count_ = 0;
+  std::uint32_t translucent_clusters_ = 0;
+  std::uint64_t geometry_version_ = ~0ull;
+  std::uint32_t chunk_faces_ = 0;  // faces the scratch holds, plus one cleared face
+  std::uint32_t scratch_size_ = 0;
+  gpu::Buffer depth_;
+  gpu::Buffer tint_;
+  gpu::Buffer counters_;
+  gpu::Buffer items_;
+  std::uint32_t capacity_depth_ = 0;
+  std::uint32_t capacity_tint_ = 0;
+  std::vector<gpu::Buffer> faces_;  // RasterFace records per frame-in-flight slot
+  ComputeRasterStats stats_;
+};
+
+}  // namespace antumbra::passes

@@ -1,0 +1,77 @@
+// The compute shadow rasteriser's interface (shadow_cull.comp, shadow_raster_args.comp,
+// shadow_raster.comp), valid GLSL and C++: the cluster and face records, the push
+// constants and the binding numbers, written once (docs/architecture.md, "One source for
+// CPU and GPU"; the algorithm: docs/technique.md, "Compute shadow rasteriser").
+#ifndef ANTUMBRA_COMPUTE_RASTER_INTERFACE_H
+#define ANTUMBRA_COMPUTE_RASTER_INTERFACE_H
+
+#include "../interface/shared/glsl_cpp.h"
+
+ANTUMBRA_SHARED_BEGIN
+
+// Threads per cull workgroup (one cluster each) and per raster workgroup (one triangle
+// each: a cluster has at most 128, scene::kMaxClusterTriangles).
+const uint kCullGroup = 64;
+const uint kRasterGroup = 128;
+// Square screen regions a work item covers: a cluster whose projection spans several
+// regions becomes one item per region, so no workgroup loops over a whole 1024^2 face
+// for one large triangle.
+const uint kRasterRegionShift = 8;
+// Work lists: opaque casters into depth, translucent casters into the tint.
+const uint kListDepth = 0;
+const uint kListTint = 1;
+// A dispatch's x is capped (Vulkan guarantees 65535); larger lists spill into y.
+const uint kMaxGroupsX = 65535;
+
+const uint kClusterTranslucent = 1;  // RasterCluster.info.z: its material tints
+const uint kClusterClosed = 2;       // its mesh is closed: back-facing clusters are hidden
+
+// One cluster of at most kRasterGroup triangles of the merged world-space scene.
+struct RasterCluster {
+  vec4 sphere;    // xyz centre, w radius (contains every vertex)
+  vec4 cone;      // xyz unit axis, w half angle in radians (>= pi/2: faces every way)
+  vec4 mesh_min;  // xyz: bounds of the cluster's mesh (a light inside a closed mesh
+  vec4 mesh_max;  // sees its back faces, so back-face culling needs the light outside)
+  uvec4 info;     // x first index (into the cluster index list), y triangles, z flags,
+                  // w material
+};
+
+// One shadow face rasterised this chunk.
+struct RasterFace {
+  mat4 view_proj;  // ShadowFace.view_proj
+  vec4 light;      // xyz light position (perspective faces), w the face's far distance
+  vec4 params;     // x near distance, y 1 = orthographic (the sun), z face size (float)
+  uvec4 info;      // x atlas layer, y scratch offset (texels), z face size, w 1 = tinted
+};
+
+// Header of the counters buffer; the dispatch arguments follow at kRasterArgsOffset.
+const uint kRasterCountersBytes = 16;  // uint counts[2] (per list), overflow, unused
+const uint kRasterArgsOffset = 16;     // VkDispatchIndirectCommand per list
+const uint kRasterCountersSize = 48;
+
+ANTUMBRA_PUSH_CONSTANTS(RasterPush) {
+  uint face_first;      // this chunk's first entry in the face records
+  uint face_count;      // faces of this chunk
+  uint cluster_count;   // clusters of the scene
+  uint tint_mode;       // 1: translucent clusters go to the tint list, not into depth
+  uint list;            // shadow_raster.comp: which list this dispatch works through
+  uint capacity_depth;  // items each list holds (the tint list starts after the depth list)
+  uint capacity_tint;
+  float depth_bias;  // constant factor, in units of the float depth's resolution
+  float slope_bias;  // factor of the depth slope per texel
+  uint unused;
+};
+
+ANTUMBRA_BINDING(kRasterClusters, 0)
+ANTUMBRA_BINDING(kRasterIndices, 1)   // uint vertex indices in cluster order
+ANTUMBRA_BINDING(kRasterVertices, 2)  // GpuVertex[] (28 bytes: 7 words)
+ANTUMBRA_BINDING(kRasterFaces, 3)
+ANTUMBRA_BINDING(kRasterCounters, 4)
+ANTUMBRA_BINDING(kRasterItems, 5)  // uvec2: cluster, face | region << 16
+ANTUMBRA_BINDING(kRasterDepth, 6)  // uint per texel: float bits of the depth (atomicMin)
+ANTUMBRA_BINDING(kRasterTint, 7)   // uint per texel: RGBA8 tint (rgb product, a nearest)
+ANTUMBRA_BINDING(kRasterMaterials, 8)
+
+ANTUMBRA_SHARED_END
+
+#endif

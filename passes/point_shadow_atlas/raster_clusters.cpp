@@ -1,0 +1,102 @@
+#include "raster_clusters.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+
+#include "antumbra/scene/clusters.hpp"
+
+namespace antumbra::passes {
+namespace {
+
+struct CellKey {
+  std::int64_t x, y, z;
+  bool operator==(const CellKey&) const = default;
+};
+
+struct CellHash {
+  std::size_t operator()(const CellKey& k) const {
+    return static_cast<std::size_t>(k.x * 73856093 ^ k.y * 19349663 ^ k.z * 83492791);
+  }
+};
+
+}  // namespace
+
+bool mesh_is_closed(const scene::Mesh& mesh) {
+  if (mesh.indices.empty()) return false;
+  // Split vertices (flat normals, seams) share positions, up to rounding (a sphere's seam
+  // is sin(2 pi) against sin(0)): weld them on a grid a millionth of the mesh's size. A
+  // gap that small could let no light through a texel anyway.
+  const scene::Aabb bounds = mesh.local_bounds();
+  const glm::vec3 extent = bounds.extent();
+  const float cell = std::max({extent.x, extent.y, extent.z, 1e-20f}) * 1e-6f;
+  std::unordered_map<CellKey, std::uint32_t, CellHash> ids;
+  std::vector<std::uint32_t> welded(mesh.vertices.size());
+  for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
+    const glm::vec3 q = (mesh.vertices[i].position - bounds.min) / cell;
+    if (!std::isfinite(q.x) || !std::isfinite(q.y) || !std::isfinite(q.z)) return false;
+    const CellKey key{std::llround(q.x), std::llround(q.y), std::llround(q.z)};
+    welded[i] = ids.try_emplace(key, static_cast<std::uint32_t>(ids.size())).first->second;
+  }
+  // Directed edge -> uses; a closed, consistently wound surface has each directed edge
+  // once and its reverse once.
+  std::unordered_map<std::uint64_t, int> edges;
+  edges.reserve(mesh.indices.size());
+  const auto key = [](std::uint32_t a, std::uint32_t b) {
+    return (std::uint64_t{a} << 32) | std::uint64_t{b};
+  };
+  for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+    const std::uint32_t v[3] = {welded[mesh.indices[t]], welded[mesh.indices[t + 1]],
+                                welded[mesh.indices[t + 2]]};
+    if (v[0] == v[1] || v[1] == v[2] || v[2] == v[0]) continue;  // degenerate: no edges
+    for (int k = 0; k < 3; ++k) {
+      if (++edges[key(v[k], v[(k + 1) % 3])] > 1) return false;
+    }
+  }
+  return std::all_of(edges.begin(), edges.end(), [&](const auto& entry) {
+    const auto reverse = edges.find(key(static_cast<std::uint32_t>(entry.first & 0xffffffffu),
+                                        static_cast<std::uint32_t>(entry.first >> 32)));
+    return reverse != edges.end() && reverse->second == 1;
+  });
+}
+
+RasterGeometry build_raster_geometry(const scene::Scene& scene) {
+  RasterGeometry out;
+  out.indices.reserve(scene.triangle_count() * 3);
+  std::uint32_t vertex_base = 0;
+  std::vector<glm::vec3> world;
+  for (const auto& mesh : scene.meshes) {
+    world.clear();
+    world.reserve(mesh.vertices.size());
+    for (const auto& v : mesh.vertices) {
+      world.emplace_back(mesh.transform * glm::vec4(v.position, 1.0f));
+    }
+    const auto material = static_cast<std::size_t>(std::max(mesh.material, 0));
+    const bool translucent =
+        material < scene.materials.size() && scene.materials[material].translucent;
+    const std::uint32_t flags = (translucent ? shared::kClusterTranslucent : 0u) |
+                                (mesh_is_closed(mesh) ? shared::kClusterClosed : 0u);
+    const scene::MeshClusters clusters = scene::build_clusters(world, mesh.indices);
+    for (const scene::Cluster& c : clusters.clusters) {
+      shared::RasterCluster gpu{};
+      gpu.sphere = glm::vec4(c.sphere_center, c.sphere_radius);
+      gpu.cone = glm::vec4(c.cone_axis, c.cone_half_angle);
+      gpu.mesh_min = glm::vec4(mesh.bounds.min, 0.0f);
+      gpu.mesh_max = glm::vec4(mesh.bounds.max, 0.0f);
+      gpu.info = {static_cast<std::uint32_t>(out.indices.size()), c.triangle_count, flags,
+                  static_cast<std::uint32_t>(material)};
+      for (std::uint32_t i = 0; i < c.triangle_count; ++i) {
+        const std::uint32_t t = clusters.triangles[c.first_triangle + i];
+        for (std::uint32_t k = 0; k < 3; ++k) {
+          out.indices.push_back(vertex_base + mesh.indices[std::size_t{3} * t + k]);
+        }
+      }
+      out.clusters.push_back(gpu);
+      if (translucent) ++out.translucent_clusters;
+    }
+    vertex_base += static_cast<std::uint32_t>(mesh.vertices.size());
+  }
+  return out;
+}
+
+}  // namespace antumbra::passes

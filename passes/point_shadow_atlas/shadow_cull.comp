@@ -1,0 +1,109 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+#include "compute_raster_interface.h"
+
+// Culls every cluster against every face of the chunk (x: clusters, y: faces) and appends
+// one work item per screen region the cluster's projection touches (docs/technique.md,
+// "Compute shadow rasteriser"). Tests, all conservative: the light's range, the face's
+// frustum and, for a closed mesh seen from outside its bounds, a normal cone facing away.
+
+layout(local_size_x = kCullGroup) in;
+
+layout(std430, binding = kRasterClusters) readonly buffer Clusters { RasterCluster clusters[]; };
+layout(std430, binding = kRasterFaces) readonly buffer Faces { RasterFace faces[]; };
+layout(std430, binding = kRasterCounters) buffer Counters { uint counts[]; };
+layout(std430, binding = kRasterItems) writeonly buffer Items { uvec2 items[]; };
+
+const float kHalfPi = 1.57079632679;
+
+// Every normal within the cone faces away from `eye` for every point of the sphere
+// (scene::cluster_faces_away, the CPU twin tested against brute force).
+bool faces_away(RasterCluster c, vec3 eye) {
+  if (c.info.y == 0u || c.cone.w >= kHalfPi) return false;
+  vec3 v = eye - c.sphere.xyz;
+  float distance = length(v);
+  if (distance <= c.sphere.w) return false;
+  float phi = acos(clamp(dot(c.cone.xyz, v) / distance, -1.0, 1.0));
+  float gap = phi - c.cone.w;
+  if (gap <= kHalfPi) return false;
+  return distance * cos(gap) + c.sphere.w < 0.0;
+}
+
+bool sphere_outside(vec4 plane, vec4 sphere) {
+  float len = length(plane.xyz);
+  return len > 0.0 && dot(plane.xyz, sphere.xyz) + plane.w < -sphere.w * len;
+}
+
+void main() {
+  uint c = gl_GlobalInvocationID.x;
+  uint f = gl_GlobalInvocationID.y;
+  if (c >= cluster_count || f >= face_count) return;
+  RasterCluster cluster = clusters[c];
+  RasterFace face = faces[face_first + f];
+  bool translucent = (cluster.info.z & kClusterTranslucent) != 0u;
+  uint list = kListDepth;
+  if (translucent && tint_mode != 0u) {
+    if (face.info.w == 0u) return;  // an untinted light's colour layers are never read
+    list = kListTint;
+  }
+  bool ortho = face.params.y > 0.5;
+  vec4 sphere = cluster.sphere;
+  if (!ortho && distance(sphere.xyz, face.light.xyz) - sphere.w > face.light.w) return;
+  // Planes of the clip volume 0 <= z <= w, |x|, |y| <= w, in world space (rows of the matrix).
+  mat4 m = transpose(face.view_proj);
+  if (sphere_outside(m[3] + m[0], sphere) || sphere_outside(m[3] - m[0], sphere) ||
+      sphere_outside(m[3] + m[1], sphere) || sphere_outside(m[3] - m[1], sphere) ||
+      sphere_outside(m[2], sphere) || sphere_outside(m[3] - m[2], sphere)) {
+    return;
+  }
+  if (!ortho && (cluster.info.z & kClusterClosed) != 0u) {
+    vec3 l = face.light.xyz;
+    bool inside = all(greaterThanEqual(l, cluster.mesh_min.xyz)) &&
+                  all(lessThanEqual(l, cluster.mesh_max.xyz));
+    if (!inside && faces_away(cluster, l)) return;
+  }
+
+  // Texel rectangle of the sphere's bounding cube; the whole face when a corner lies
+  // behind the near plane (its projection is unbounded).
+  float size = face.params.z;
+  vec2 lo = vec2(0.0);
+  vec2 hi = vec2(size - 1.0);
+  bool bounded = true;
+  vec2 pmin = vec2(1e30);
+  vec2 pmax = vec2(-1e30);
+  for (int i = 0; i < 8; ++i) {
+    vec3 corner = sphere.xyz + sphere.w * vec3((i & 1) != 0 ? 1.0 : -1.0,
+                                               (i & 2) != 0 ? 1.0 : -1.0,
+                                               (i & 4) != 0 ? 1.0 : -1.0);
+    vec4 clip = face.view_proj * vec4(corner, 1.0);
+    if (clip.w <= 1e-6 || clip.z < 0.0) {
+      bounded = false;
+      break;
+    }
+    vec2 p = (clip.xy / clip.w * 0.5 + 0.5) * size;
+    pmin = min(pmin, p);
+    pmax = max(pmax, p);
+  }
+  if (bounded) {
+    lo = clamp(floor(pmin - 1.0), vec2(0.0), vec2(size - 1.0));
+    hi = clamp(ceil(pmax + 1.0), vec2(0.0), vec2(size - 1.0));
+  }
+  uvec2 r0 = uvec2(lo) >> kRasterRegionShift;
+  uvec2 r1 = uvec2(hi) >> kRasterRegionShift;
+  uint regions_x = (uint(size) + (1u << kRasterRegionShift) - 1u) >> kRasterRegionShift;
+  uint count = (r1.x - r0.x + 1u) * (r1.y - r0.y + 1u);
+  uint first = atomicAdd(counts[list], count);
+  uint capacity = list == kListDepth ? capacity_depth : capacity_tint;
+  if (first + count > capacity) {
+    atomicAdd(counts[2], 1u);  // the pass sized the list for the worst case: never
+    return;
+  }
+  uint base = list == kListDepth ? 0u : capacity_depth;
+  uint k = 0u;
+  for (uint ry = r0.y; ry <= r1.y; ++ry) {
+    for (uint rx = r0.x; rx <= r1.x; ++rx) {
+      items[base + first + k] = uvec2(c, f | ((ry * regions_x + rx) << 16));
+      ++k;
+    }
+  }
+}

@@ -1,0 +1,173 @@
+#pragma once
+// The point-shadow-atlas GPU fixture shared by the atlas suites (atlas_gpu_test.cpp,
+// compute_raster_gpu_test.cpp): the atrium through tests/data/shadows/atlas.json on the
+// executor, with readback of atlas and colour-map layers. Header-only, one copy per suite.
+
+#include <array>
+#include <cstring>
+#include <filesystem>
+#include <memory>
+#include <optional>
+
+#include <gtest/gtest.h>
+#include <glm/glm.hpp>
+
+#include "antumbra/base/json_document.hpp"
+#include "antumbra/fg/compiler.hpp"
+#include "antumbra/fgvk/executor.hpp"
+#include "antumbra/gpu/commands.hpp"
+#include "antumbra/gpu/frame_loop.hpp"
+#include "antumbra/gpu/pipelines.hpp"
+#include "antumbra/gpu/resources.hpp"
+#include "antumbra/gpu/shader_compiler.hpp"
+#include "antumbra/scene/scene_file.hpp"
+#include "common/gpu_scene.hpp"
+#include "common/shadow_data.hpp"
+#include "common/shadow_faces.hpp"
+#include "gpu_test_support.hpp"
+#include "register_builtin_passes.hpp"
+
+using namespace antumbra;
+namespace fs = std::filesystem;
+namespace sf = passes::shadow_faces;
+
+namespace {
+
+fs::path source_dir() {
+  return fs::path(ANTUMBRA_TEST_SOURCE_DIR);
+}
+
+constexpr VkExtent2D kViewport{160, 90};
+constexpr std::uint32_t kFace = 256;
+
+scene::Scene atrium() {
+  auto loaded = scene::load_scene_file((source_dir() / "data/scenes/atrium.json").string());
+  if (!loaded.ok()) throw std::runtime_error("cannot load atrium.json");
+  return std::move(loaded.value());
+}
+
+struct Counts {
+  std::uint32_t total = 0, culled = 0, rendered = 0, cached = 0;
+  bool layered = false;
+};
+
+class AtlasGpuTest : public gpu::testing::GpuTest {
+ protected:
+  void SetUp() override {
+    GpuTest::SetUp();
+    if (!context_) return;
+    gpu::ShaderCompilerOptions options;
+    options.include_dirs = {source_dir() / "passes"};
+    options.cache_dir = fs::temp_directory_path() / "antumbra-shadows-spirv";
+    shaders_ = std::make_unique<gpu::ShaderCompiler>(options);
+    registry_ = std::make_unique<fgvk::PassRegistry>(passes::builtin_pass_registry());
+    executor_ = std::make_unique<fgvk::Executor>(ctx(), *shaders_, *registry_,
+                                                 (source_dir() / "passes").string());
+    frames_ = std::make_unique<gpu::FrameLoop>(ctx());
+    scene_ = atrium();
+  }
+  void TearDown() override {
+    if (frames_) frames_->wait_all();
+    gpu_scene_.reset();
+    executor_.reset();
+    frames_.reset();
+    GpuTest::TearDown();
+  }
+
+  // tests/data/shadows/atlas.json with 256 x 256 faces and the given atlas params.
+  void load(const base::Json& params = base::Json::object()) {
+    auto document = base::load_json_file((source_dir() / "tests/data/shadows/atlas.json").string());
+    ASSERT_TRUE(document.ok());
+    auto graph = fg::parse_graph(document.value());
+    ASSERT_TRUE(graph.ok());
+    for (auto& r : graph.value().resources) {
+      if (r.name == "atlas" || r.name == "shadowColour") r.size = {false, 1.0, 1.0, kFace, kFace};
+    }
+    for (auto& p : graph.value().passes) {
+      if (p.name == "shadows") p.params.update(params);
+    }
+    fg::CompileOptions compile_options;
+    compile_options.viewport = {kViewport.width, kViewport.height};
+    compile_options.footprint = executor_->footprint_fn();
+    auto plan = fg::compile(graph.value(), registry_->reflection(), compile_options);
+    ASSERT_TRUE(plan.ok());
+    executor_->load(std::move(plan.value()));
+    gpu_scene_ = std::make_unique<passes::GpuScene>(ctx(), scene_, frames_->frames_in_flight());
+  }
+
+  Counts frame() {
+    VkCommandBuffer cmd = frames_->begin_frame();
+    const auto resources =
+        gpu_scene_->update(frames_->slot(), scene_, kViewport, frames_->frame_number());
+    executor_->record(cmd, resources, nullptr, &report_);
+    frames_->end_frame();
+    Counts c;
+    for (const auto& m : report_.messages()) {
+      if (m.code != "SHD010") continue;
+      c = {m.details["total"].get<std::uint32_t>(), m.details["culled"].get<std::uint32_t>(),
+           m.details["rendered"].get<std::uint32_t>(), m.details["cached"].get<std::uint32_t>(),
+           m.details["layered"].get<bool>()};
+    }
+    return c;
+  }
+
+  // Depth of one atlas layer, one float per texel.
+  std::vector<float> read_layer(std::uint32_t layer) {
+    std::vector<float> texels(std::size_t{kFace} * kFace);
+    read_raw("atlas", VK_IMAGE_ASPECT_DEPTH_BIT, layer, texels.data());
+    return texels;
+  }
+  // One colour-map layer, RGBA8 packed per texel.
+  std::vector<std::uint32_t> read_colour_layer(std::uint32_t layer) {
+    std::vector<std::uint32_t> texels(std::size_t{kFace} * kFace);
+    read_raw("shadowColour", VK_IMAGE_ASPECT_COLOR_BIT, layer, texels.data());
+    return texels;
+  }
+  // 4 bytes per texel of one layer of a graph image, whatever layout the graph left it in.
+  void read_raw(const char* resource, VkImageAspectFlags aspect, std::uint32_t layer, void* out) {
+    frames_->wait_all();
+    const gpu::Image* image = executor_->gpu_image(resource);
+    const VkImageLayout layout = executor_->image(resource)->layout;
+    const VkDeviceSize bytes = VkDeviceSize{kFace} * kFace * 4;
+    auto readback = gpu::Buffer::create(ctx(), bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                        gpu::MemoryUsage::readback, "test.atlas.readback");
+    const VkImageSubresourceRange range{aspect, 0, 1, layer, 1};
+    ctx().submit_immediate([&](VkCommandBuffer cmd) {
+      gpu::image_barrier(cmd, {image->handle(), layout, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                               VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_WRITE_BIT,
+                               VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT, range});
+      VkBufferImageCopy region{};
+      region.imageSubresource = {aspect, 0, layer, 1};
+      region.imageExtent = {kFace, kFace, 1};
+      vkCmdCopyImageToBuffer(cmd, image->handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                             readback.handle(), 1, &region);
+      gpu::image_barrier(cmd, {image->handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, layout,
+                               VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_NONE,
+                               VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+                               VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT, range});
+      gpu::buffer_barrier(cmd, readback.handle(), VK_PIPELINE_STAGE_2_COPY_BIT,
+                          VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT,
+                          VK_ACCESS_2_HOST_READ_BIT);
+    });
+    std::memcpy(out, readback.mapped(), bytes);
+  }
+
+  std::unique_ptr<gpu::ShaderCompiler> shaders_;
+  std::unique_ptr<fgvk::PassRegistry> registry_;
+  std::unique_ptr<fgvk::Executor> executor_;
+  std::unique_ptr<gpu::FrameLoop> frames_;
+  std::unique_ptr<passes::GpuScene> gpu_scene_;
+  fgvk::FrameReport report_;
+  scene::Scene scene_;
+};
+
+// l05 hangs 2.6 m above open floor (top at y = 0) in view of the atrium camera.
+constexpr std::uint32_t kLight = 5;
+constexpr float kLightHeight = 2.6f;
+
+float centre_linear_depth(const std::vector<float>& texels, const scene::PointLight& light) {
+  const float depth = texels[std::size_t{kFace / 2} * kFace + kFace / 2];
+  return sf::linearise(depth, 0.05f, light.range);
+}
+
+}  // namespace

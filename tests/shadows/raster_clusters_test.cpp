@@ -1,0 +1,149 @@
+// The compute shadow rasteriser's CPU side: which meshes count as closed (back-facing
+// clusters may be skipped only there), the cluster geometry it uploads, and the graph's
+// view of its ports (transfer_dst under rasterizer "compute") and its format check.
+
+#include <algorithm>
+#include <array>
+#include <filesystem>
+#include <fstream>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "antumbra/fg/compiler.hpp"
+#include "antumbra/scene/primitives.hpp"
+#include "antumbra/scene/scene_file.hpp"
+#include "common/frame_data.hpp"
+#include "point_shadow_atlas/raster_clusters.hpp"
+#include "register_builtin_passes.hpp"
+
+using namespace antumbra;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path source_dir() {
+  return fs::path(ANTUMBRA_TEST_SOURCE_DIR);
+}
+
+}  // namespace
+
+TEST(RasterClusters, PrimitivesAreClosedAndCutOrFlippedMeshesAreNot) {
+  EXPECT_TRUE(passes::mesh_is_closed(scene::make_box({1.0f, 2.0f, 3.0f})));
+  EXPECT_TRUE(passes::mesh_is_closed(scene::make_sphere(1.0f, 16, 8)));
+  EXPECT_TRUE(passes::mesh_is_closed(scene::make_cylinder(0.5f, 2.0f, 12)));
+  EXPECT_FALSE(passes::mesh_is_closed(scene::make_plane({2.0f, 2.0f})));
+
+  scene::Mesh cut = scene::make_box({1.0f, 1.0f, 1.0f});
+  cut.indices.resize(cut.indices.size() - 3);  // one triangle missing: a hole
+  EXPECT_FALSE(passes::mesh_is_closed(cut));
+
+  scene::Mesh flipped = scene::make_box({1.0f, 1.0f, 1.0f});
+  std::swap(flipped.indices[0], flipped.indices[1]);  // one triangle wound the other way
+  EXPECT_FALSE(passes::mesh_is_closed(flipped));
+
+  EXPECT_FALSE(passes::mesh_is_closed(scene::Mesh{}));
+}
+
+TEST(RasterClusters, AtriumClustersCoverEveryTriangleOnceWithItsFlags) {
+  auto loaded = scene::load_scene_file((source_dir() / "data/scenes/atrium.json").string());
+  ASSERT_TRUE(loaded.ok());
+  const scene::Scene& scene = loaded.value();
+  const passes::RasterGeometry geometry = passes::build_raster_geometry(scene);
+  const passes::MergedGeometry merged = passes::merge_scene_geometry(scene);
+  ASSERT_EQ(geometry.indices.size(), merged.indices.size());
+
+  // The same triangles (as index triples) in another order.
+  const auto triples = [](const std::vector<std::uint32_t>& indices) {
+    std::vector<std::array<std::uint32_t, 3>> out;
+    for (std::size_t i = 0; i + 2 < indices.size(); i += 3) {
+      out.push_back({indices[i], indices[i + 1], indices[i + 2]});
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+  };
+  EXPECT_EQ(triples(geometry.indices), triples(merged.indices));
+
+  std::uint32_t next = 0;
+  std::uint32_t translucent = 0;
+  for (const auto& c : geometry.clusters) {
+    EXPECT_EQ(c.info.x, next) << "clusters are contiguous in the index list";
+    EXPECT_GE(c.info.y, 1u);
+    EXPECT_LE(c.info.y, shared::kRasterGroup);
+    next += 3 * c.info.y;
+    const bool is_translucent = (c.info.z & shared::kClusterTranslucent) != 0u;
+    EXPECT_EQ(is_translucent, scene.materials[c.info.w].translucent);
+    translucent += is_translucent ? 1u : 0u;
+    // Every vertex of the cluster lies in its sphere.
+    for (std::uint32_t i = c.info.x; i < c.info.x + 3 * c.info.y; ++i) {
+      const glm::vec3 p = merged.vertices[geometry.indices[i]].position;
+      EXPECT_LE(glm::length(p - glm::vec3(c.sphere)), c.sphere.w * 1.0001f + 1e-5f);
+    }
+  }
+  EXPECT_EQ(next, geometry.indices.size());
+  EXPECT_EQ(translucent, geometry.translucent_clusters);
+  EXPECT_EQ(translucent, 4u) << "four small glass panes, one cluster each";
+  const auto closed =
+      std::count_if(geometry.clusters.begin(), geometry.clusters.end(),
+                    [](const auto& c) { return (c.info.z & shared::kClusterClosed) != 0u; });
+  EXPECT_GT(closed, 0) << "the atrium's boxes and columns are closed";
+}
+
+namespace {
+
+// tests/data/shadows/atlas.json with the atlas's format and the rasteriser spelt out in
+// the file (so that diagnostics can point at them).
+fg::Result<fg::Plan> compile_atlas_graph(const std::string& rasterizer, const std::string& format) {
+  std::ifstream in(source_dir() / "tests/data/shadows/atlas.json");
+  auto json = nlohmann::json::parse(in);
+  json["resources"]["atlas"]["format"] = format;
+  for (auto& p : json["passes"]) {
+    if (p["name"] == "shadows") p["params"]["rasterizer"] = rasterizer;
+  }
+  const auto registry = passes::builtin_pass_registry();
+  fg::CompileOptions options;
+  options.viewport = {160, 90};
+  return fg::compile_text(json.dump(2), "atlas-" + rasterizer + ".json", registry.reflection(),
+                          options);
+}
+
+const fg::PlanBinding* binding(const fg::Plan& plan, const char* pass, const char* port) {
+  for (const auto& p : plan.passes) {
+    if (p.name != pass) continue;
+    for (const auto& b : p.bindings) {
+      if (b.port == port) return &b;
+    }
+  }
+  return nullptr;
+}
+
+}  // namespace
+
+TEST(RasterClusters, ComputeRasterizerWritesTheAtlasByTransfers) {
+  const auto hardware = compile_atlas_graph("hardware", "d32f");
+  ASSERT_TRUE(hardware.ok()) << hardware.diagnostics().to_text();
+  ASSERT_NE(binding(hardware.value(), "shadows", "atlas"), nullptr);
+  EXPECT_EQ(binding(hardware.value(), "shadows", "atlas")->access, fg::Access::depth_attachment);
+  EXPECT_EQ(binding(hardware.value(), "shadows", "colour")->access, fg::Access::color_attachment);
+
+  const auto compute = compile_atlas_graph("compute", "d32f");
+  ASSERT_TRUE(compute.ok()) << compute.diagnostics().to_text();
+  for (const char* port : {"atlas", "colour"}) {
+    const auto* b = binding(compute.value(), "shadows", port);
+    ASSERT_NE(b, nullptr) << port;
+    EXPECT_EQ(b->access, fg::Access::transfer_dst) << port;
+    EXPECT_EQ(b->stage, fg::Stage::transfer) << port;
+  }
+  EXPECT_EQ(binding(compute.value(), "shadows", "shadowData")->access, fg::Access::transfer_dst);
+}
+
+TEST(RasterClusters, ComputeRasterizerRefusesA16BitAtlas) {
+  EXPECT_TRUE(compile_atlas_graph("hardware", "d16").ok());
+  const auto compute = compile_atlas_graph("compute", "d16");
+  ASSERT_FALSE(compute.ok());
+  const base::Diagnostic* d = compute.diagnostics().find("SHD004");
+  ASSERT_NE(d, nullptr) << compute.diagnostics().to_text();
+  EXPECT_NE(d->message.find("d32f"), std::string::npos) << d->message;
+  EXPECT_NE(d->pointer.find("/params/rasterizer"), std::string::npos) << d->pointer;
+  EXPECT_GT(d->line, 0);
+}
