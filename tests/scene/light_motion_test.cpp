@@ -16,8 +16,10 @@ const std::string kScenes = std::string(ANTUMBRA_SOURCE_DIR) + "/data/scenes/";
 std::vector<PointLight> lights_in_a_row(int count) {
   std::vector<PointLight> lights(static_cast<std::size_t>(count));
   for (int i = 0; i < count; ++i) {
-    lights[static_cast<std::size_t>(i)].name = "l" + std::to_string(i);
-    lights[static_cast<std::size_t>(i)].position = glm::vec3(static_cast<float>(i), 2.0f, 0.0f);
+    PointLight& light = lights[static_cast<std::size_t>(i)];
+    // Digits alone: GCC 12 warns falsely (-Wrestrict) on a literal prefix here.
+    light.name = std::to_string(i);
+    light.position = glm::vec3(static_cast<float>(i), 2.0f, 0.0f);
   }
   return lights;
 }
