@@ -45,8 +45,9 @@ void write_row(std::ostream& out, const BenchResult& r, const std::string& pass,
                const std::string& type, const TimingStats* stats) {
   const auto& s = r.scenario;
   out << csv_field(s.name) << ',' << s.table << ',' << s.technique << ',' << s.kernel << ','
-      << s.width << ',' << s.height << ',' << s.face << ',' << s.lights << ',' << r.status << ','
-      << csv_field(pass) << ',' << csv_field(type) << ',';
+      << s.width << ',' << s.height << ',' << s.face << ',' << s.lights << ',' << s.moving << ','
+      << csv_field(s.scene) << ',' << r.status << ',' << csv_field(pass) << ',' << csv_field(type)
+      << ',';
   if (stats != nullptr) {
     out << stats->median_ms << ',' << stats->p10_ms << ',' << stats->p90_ms << ',' << stats->frames;
   } else {
@@ -63,7 +64,9 @@ nlohmann::json stats_json(const TimingStats& s) {
 }  // namespace
 
 void write_long_csv(std::ostream& out, const std::vector<BenchResult>& results) {
-  out << "scenario,table,technique,kernel,width,height,atlas_face,lights,status,pass,pass_type,"
+  out << "scenario,table,technique,kernel,width,height,atlas_face,lights,moving_lights,scene,"
+         "status,"
+         "pass,pass_type,"
          "median_ms,p10_ms,p90_ms,frames\n";
   for (const auto& r : results) {
     const bool ok = r.status == "ok";
@@ -94,6 +97,9 @@ nlohmann::json results_json(const std::vector<BenchResult>& results) {
                          {"height", s.height},
                          {"atlasFace", s.face},
                          {"lights", s.lights},
+                         {"movingLights", s.moving},
+                         {"scene", s.scene},
+                         {"shadowCache", s.shadow_cache},
                          {"status", r.status},
                          {"detail", r.detail},
                          {"frame", stats_json(r.frame)},

@@ -1,14 +1,15 @@
 #pragma once
 // Named benchmark scenarios: technique x kernel x resolution x light count, laid out
 // like the seed's Table 1 (techniques x kernels x 720p/1080p, 16 lights) and Table 2
-// (1..16 lights), extended to 64, 256 and 1024 lights, at a scale that shrinks the
-// screen and the shadow atlas faces alike (lavapipe). Plain data: tested without a
-// device.
+// (1..16 lights), extended to 64, 256 and 1024 lights, plus the "moving" table (lights
+// on deterministic paths, light_motion.hpp), at a scale that shrinks the screen and the
+// shadow atlas faces alike (lavapipe). Plain data: tested without a device.
 
 #include <string>
 #include <vector>
 
 #include "antumbra/fg/graph_desc.hpp"
+#include "antumbra/scene/light_motion.hpp"
 #include "antumbra/scene/scene.hpp"
 
 namespace antumbra::app {
@@ -21,7 +22,7 @@ struct ParamOverride {
 
 struct Scenario {
   std::string name;       // e.g. "table1/pcss-11/1080p"; the scaled height, e.g. "270p"
-  std::string table;      // "table1", "table2", "lights"
+  std::string table;      // "table1", "table2", "lights", "moving"
   std::string technique;  // e.g. "pcss"
   std::string graph;      // file name under data/graphs/
   int kernel = 0;         // 0 when the technique has none
@@ -29,9 +30,17 @@ struct Scenario {
   unsigned height = 0;
   unsigned face = 0;  // shadow atlas face size in texels, scale applied
   int lights = 16;
-  std::vector<ParamOverride> overrides;
+  std::vector<ParamOverride> overrides;  // per variant (kernel, cache, later the rasteriser)
   bool shadow_cache = false;  // static shadow caching (off: every face re-rendered each frame)
+  std::string scene = "atrium.json";  // file name under data/scenes/
+  int moving = 0;                     // lights that move each frame: the first ones
 };
+
+// The lights of the moving table and, for 1024, the district scene's 64 moving lights
+// (issue 12's target: 1024 lights, 64 moving each frame, >= 1 M triangles).
+inline constexpr int kDistrictLights = 1024;
+inline constexpr int kDistrictMovingLights = 64;
+inline constexpr const char* kDistrictScene = "district.json";
 
 // Every built-in scenario, in a stable order, with screen and atlas faces scaled by
 // `scale` (names carry the scaled height, so two scales never share a name).
@@ -56,6 +65,10 @@ std::vector<std::string> apply_overrides(fg::GraphDesc& graph,
 // device-independent limit of 2046 layers, faces of `face` texels (a derived map keeps
 // its factor of the graph's atlas size).
 void fit_shadow_resources(fg::GraphDesc& graph, int lights, unsigned face);
+
+// How the moving table's lights move (scene::animate_lights), for `scenario.moving`
+// lights; frame 0 is the first warm-up frame of each scenario.
+scene::LightMotion bench_motion(const Scenario& scenario);
 
 // The scene with its lights replaced by `count` lights in a deterministic layout that
 // covers the same area (16 keeps the scene's own lights). Ranges shrink as the count

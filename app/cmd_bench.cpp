@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
@@ -67,10 +68,20 @@ void write_reports(const std::filesystem::path& dir, const std::string& device,
   write_stacked_chart((dir / "bench.png").string(), chart_of(device, results));
 }
 
-void measure(runtime::RenderSession& session, const BenchOptions& options, BenchResult& r) {
-  session.render(options.warmup, nullptr);
+// Moving lights are placed anew before every frame, warm-up included, from one frame count
+// that starts at 0 with each scenario: every run measures the same sequence of frames.
+void measure(runtime::RenderSession& session, const BenchOptions& options,
+             const std::vector<scene::PointLight>& base_lights, BenchResult& r) {
+  runtime::RenderSession::BeforeFrame move;
+  std::uint64_t frame = 0;
+  if (r.scenario.moving > 0) {
+    move = [&, motion = bench_motion(r.scenario)](int /*frame in this call*/) {
+      session.set_lights(scene::animate_lights(base_lights, frame++, motion));
+    };
+  }
+  session.render(options.warmup, nullptr, move);
   session.reset_timings();
-  session.render(options.frames, nullptr);
+  session.render(options.frames, nullptr, move);
   std::vector<std::vector<double>> samples;
   for (const auto& p : session.pass_timings()) {
     r.passes.push_back({p.name, p.type, summarize(p.gpu_samples), p.cpu_ms});
@@ -79,10 +90,33 @@ void measure(runtime::RenderSession& session, const BenchOptions& options, Bench
   r.frame = summarize(frame_samples(samples));
 }
 
+// Scenes by file name under data/scenes/, each loaded once per run.
+class SceneCache {
+ public:
+  explicit SceneCache(std::filesystem::path folder) : folder_(std::move(folder)) {}
+  const base::Result<scene::Scene>& get(const std::string& file) {
+    auto it = scenes_.find(file);
+    if (it == scenes_.end()) {
+      it = scenes_.emplace(file, scene::load_scene_file((folder_ / file).string())).first;
+    }
+    return it->second;
+  }
+
+ private:
+  std::filesystem::path folder_;
+  std::map<std::string, base::Result<scene::Scene>> scenes_;
+};
+
 BenchResult run_scenario(runtime::RenderSession& session, const runtime::DataPaths& paths,
-                         const scene::Scene& base, const Scenario& scenario,
+                         SceneCache& scenes, const Scenario& scenario,
                          const BenchOptions& options) {
   BenchResult r{scenario};
+  const auto& base = scenes.get(scenario.scene);
+  if (!base.ok()) {
+    r.status = "invalid";
+    r.detail = base.diagnostics().to_text();
+    return r;
+  }
   const auto graph_path = paths.graphs() / scenario.graph;
   if (!std::filesystem::exists(graph_path)) {
     r.status = "missing-graph";
@@ -109,8 +143,10 @@ BenchResult run_scenario(runtime::RenderSession& session, const runtime::DataPat
     r.detail = diagnostics.to_text();
     return r;
   }
-  session.set_scene(with_light_count(base, scenario.lights));
-  measure(session, options, r);
+  scene::Scene scene = with_light_count(base.value(), scenario.lights);
+  const std::vector<scene::PointLight> base_lights = scene.lights;
+  session.set_scene(std::move(scene));
+  measure(session, options, base_lights, r);
   return r;
 }
 
@@ -128,9 +164,9 @@ int run_bench(const BenchOptions& options) {
     return runtime::kExitUsage;
   }
   const runtime::DataPaths paths = runtime::find_data_paths();
-  auto base = scene::load_scene_file((paths.scenes() / "atrium.json").string());
-  if (!base.ok()) {
-    std::fprintf(stderr, "%s", base.diagnostics().to_text().c_str());
+  SceneCache scenes(paths.scenes());
+  if (const auto& atrium = scenes.get("atrium.json"); !atrium.ok()) {
+    std::fprintf(stderr, "%s", atrium.diagnostics().to_text().c_str());
     return runtime::kExitDiagnostics;
   }
   runtime::SessionOptions session_options;
@@ -150,7 +186,7 @@ int run_bench(const BenchOptions& options) {
     std::fflush(stderr);
     BenchResult r;
     try {
-      r = run_scenario(session, paths, base.value(), s, options);
+      r = run_scenario(session, paths, scenes, s, options);
     } catch (const std::exception& e) {
       r = BenchResult{s};
       r.status = "error";

@@ -157,11 +157,12 @@ void RenderSession::set_camera(const scene::Camera& camera) {
   scene_->camera = camera;  // written into the frame slot's buffer when a frame starts
 }
 
-void RenderSession::render(int frames, TraceWriter* trace) {
+void RenderSession::render(int frames, TraceWriter* trace, const BeforeFrame& before_frame) {
   if (!scene_ || !executor_->loaded()) throw std::logic_error("render() needs a scene and a graph");
   gpu::CpuTimer clock;
   for (int i = 0; i < frames; ++i) {
     const double frame_start = clock.elapsed_ms();
+    if (before_frame) before_frame(i);
     VkCommandBuffer cmd = frames_->begin_frame();
     gpu_->collect_garbage();
     observer_->gather_gpu();

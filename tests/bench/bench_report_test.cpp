@@ -91,13 +91,17 @@ TEST(LongCsv, OneRowPerScenarioAndPassPlusTheFrame) {
   const auto header = split(lines[0], ',');
   for (const auto& line : lines) EXPECT_EQ(split(line, ',').size(), header.size()) << line;
   EXPECT_EQ(lines[0],
-            "scenario,table,technique,kernel,width,height,atlas_face,lights,status,pass,"
-            "pass_type,median_ms,p10_ms,p90_ms,frames");
+            "scenario,table,technique,kernel,width,height,atlas_face,lights,moving_lights,scene,"
+            "status,pass,pass_type,median_ms,p10_ms,p90_ms,frames");
   EXPECT_EQ(lines[1],
-            "table1/pcss-11/180p,table1,pcss,11,320,180,256,16,ok,gbuffer,gbuffer,1.5,1,2,60");
-  EXPECT_EQ(split(lines[2], ',')[9], "\"odd,name\"");
-  EXPECT_EQ(lines[3], "table1/pcss-11/180p,table1,pcss,11,320,180,256,16,ok,frame,,4.5,4,5.5,60");
-  EXPECT_EQ(lines[4], "table1/ssss-11/180p,table1,pcss,11,320,180,256,16,invalid,frame,,,,,0");
+            "table1/pcss-11/180p,table1,pcss,11,320,180,256,16,0,atrium.json,ok,gbuffer,gbuffer,"
+            "1.5,1,2,60");
+  EXPECT_EQ(split(lines[2], ',')[11], "\"odd,name\"");
+  EXPECT_EQ(
+      lines[3],
+      "table1/pcss-11/180p,table1,pcss,11,320,180,256,16,0,atrium.json,ok,frame,,4.5,4,5.5,60");
+  EXPECT_EQ(lines[4],
+            "table1/ssss-11/180p,table1,pcss,11,320,180,256,16,0,atrium.json,invalid,frame,,,,,0");
 }
 
 TEST(ResultsJson, CarriesTheSameNumbers) {

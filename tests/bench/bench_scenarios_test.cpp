@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "antumbra/base/json_document.hpp"
+#include "antumbra/scene/scene_file.hpp"
 #include "bench_scenarios.hpp"
 
 namespace antumbra::app {
@@ -78,6 +79,73 @@ TEST(BenchScenarios, FitShadowResourcesUsesTheFaceAndKeepsTheMinMapsFactor) {
   EXPECT_EQ(colour.size.width, 256u);
   EXPECT_EQ(min_depth.size.width, 32u);  // the graph's 1024 / 128 = 8 kept
   EXPECT_EQ(min_depth.layers, 24u);
+}
+
+TEST(BenchScenarios, MovingTableHasThreeTechniquesPerLightCount) {
+  const auto moving = select_scenarios(builtin_scenarios(1.0), {"moving/"});
+  ASSERT_EQ(moving.size(), 12u);
+  for (const char* technique : {"hard", "pcss-11", "ssss-11"}) {
+    for (const int lights : {16, 64, 256, 1024}) {
+      const std::string name =
+          std::string("moving/") + technique + "/1080p/" + std::to_string(lights) + "l";
+      const auto& s = named(moving, name);
+      EXPECT_EQ(s.table, "moving");
+      EXPECT_EQ(s.lights, lights);
+      EXPECT_EQ(s.width, 1920u);
+      EXPECT_TRUE(s.shadow_cache) << name;
+      bool cache_override = false;
+      for (const auto& o : s.overrides) {
+        if (o.pass_type == "point-shadow-atlas" && o.param == "cache") {
+          cache_override = o.value.get<bool>();
+        }
+      }
+      EXPECT_TRUE(cache_override) << name;
+      if (lights == 1024) {
+        EXPECT_EQ(s.scene, "district.json");
+        EXPECT_EQ(s.moving, 64);
+      } else {
+        EXPECT_EQ(s.scene, "atrium.json");
+        EXPECT_EQ(s.moving, lights) << "every light moves";
+      }
+    }
+  }
+  EXPECT_EQ(named(moving, "moving/pcss-11/1080p/16l").kernel, 11);
+  // The other tables keep still lights in the atrium.
+  for (const auto& s : builtin_scenarios(1.0)) {
+    if (s.table == "moving") continue;
+    EXPECT_EQ(s.moving, 0) << s.name;
+    EXPECT_EQ(s.scene, "atrium.json") << s.name;
+  }
+}
+
+TEST(BenchScenarios, MovingTableScalesLikeTheOthers) {
+  const auto all = builtin_scenarios(0.25);
+  const auto& s = named(all, "moving/ssss-11/270p/1024l");
+  EXPECT_EQ(s.width, 480u);
+  EXPECT_EQ(s.face, 128u);
+  EXPECT_EQ(bench_motion(s).moving, 64);
+}
+
+TEST(BenchScenarios, MovingScenesHaveTheirLightsAfterTheLightCount) {
+  // What run_scenario renders: the scenario's scene with its light count.
+  for (const char* file : {"atrium.json", "district.json"}) {
+    const auto scene =
+        scene::load_scene_file(std::string(ANTUMBRA_TEST_SOURCE_DIR) + "/data/scenes/" + file);
+    ASSERT_TRUE(scene.ok()) << scene.diagnostics().to_text();
+    for (const auto& s : select_scenarios(builtin_scenarios(1.0), {"moving/ssss-11/"})) {
+      if (s.scene != file) continue;
+      const auto lights = with_light_count(scene.value(), s.lights).lights;
+      ASSERT_EQ(lights.size(), static_cast<std::size_t>(s.lights)) << s.name;
+      // Frame 0 and frame 1 differ in exactly the moving lights.
+      const auto a = scene::animate_lights(lights, 0, bench_motion(s));
+      const auto b = scene::animate_lights(lights, 1, bench_motion(s));
+      int moved = 0;
+      for (std::size_t i = 0; i < lights.size(); ++i) {
+        if (a[i].position != b[i].position) ++moved;
+      }
+      EXPECT_EQ(moved, s.moving) << s.name;
+    }
+  }
 }
 
 }  // namespace

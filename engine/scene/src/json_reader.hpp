@@ -49,6 +49,8 @@ class JsonReader {
              bool at_key = false);
   void warning(const char* code, std::string message, const std::string& pointer,
                bool at_key = false);
+  // Diagnostics located elsewhere (an instanced scene's own file).
+  void append(const base::Diagnostics& other) { diagnostics_.append(other); }
 
   // True when `value` is an object; reports its keys that are not in `known`.
   bool check_object(const Json& value, const std::string& pointer, std::string_view what,

@@ -1,5 +1,5 @@
-// The "objects" array: procedural primitives and glTF files, each with a transform, an
-// optional material and an optional "repeat" grid.
+// The "objects" array: procedural primitives, glTF files and other scene files, each with
+// a transform, an optional material and an optional "repeat" grid.
 #include <cmath>
 #include <filesystem>
 #include <vector>
@@ -16,12 +16,6 @@ namespace antumbra::scene::detail {
 namespace {
 
 constexpr std::string_view kPrimitives[] = {"box", "plane", "cylinder", "sphere", "arch"};
-
-struct Placement {
-  glm::mat4 transform{1.0f};
-  std::vector<glm::vec3> offsets{glm::vec3(0.0f)};  // one per copy
-  std::vector<std::string> suffixes{""};            // "[i]" / "[i,j]" per copy
-};
 
 glm::mat4 compose(const glm::vec3& position, const glm::vec3& rotation_deg,
                   const glm::vec3& scale) {
@@ -173,18 +167,6 @@ std::optional<Mesh> build_primitive(JsonReader& r, const Json& o, const std::str
   return std::nullopt;
 }
 
-void add_copies(ParseContext& ctx, const Mesh& prototype, const Placement& placement,
-                const std::string& name) {
-  for (std::size_t c = 0; c < placement.offsets.size(); ++c) {
-    Mesh mesh = prototype;
-    mesh.name = name + (placement.offsets.size() > 1 ? placement.suffixes[c] : "");
-    mesh.transform = glm::translate(glm::mat4(1.0f), placement.offsets[c]) * placement.transform *
-                     prototype.transform;
-    mesh.update_bounds();
-    ctx.scene.meshes.push_back(std::move(mesh));
-  }
-}
-
 void parse_gltf_object(ParseContext& ctx, const Json& o, const std::string& p,
                        const Placement& placement, std::optional<int> material_override,
                        const std::string& name) {
@@ -227,10 +209,12 @@ void parse_object(ParseContext& ctx, const Json& o, const std::string& p, std::s
   if (!r.check_type(o, p, Json::value_t::object)) return;
   const bool is_primitive = o.contains("primitive");
   const bool is_gltf = o.contains("gltf");
-  if (is_primitive == is_gltf) {
+  const bool is_scene = o.contains("scene");
+  const int kinds = int{is_primitive} + int{is_gltf} + int{is_scene};
+  if (kinds != 1) {
     r.error(codes::scene::kObjectKind,
-            is_gltf ? "an object has either 'primitive' or 'gltf', not both"
-                    : "an object needs a 'primitive' or a 'gltf' key",
+            kinds > 1 ? "an object has one of 'primitive', 'gltf' or 'scene', not several"
+                      : "an object needs a 'primitive', a 'gltf' or a 'scene' key",
             p);
     return;
   }
@@ -251,10 +235,14 @@ void parse_object(ParseContext& ctx, const Json& o, const std::string& p, std::s
     std::vector<std::string_view> keys = {"name",  "position", "rotation",
                                           "scale", "material", "repeat"};
     keys.insert(keys.end(), extra.begin(), extra.end());
-    const std::string what = kind ? "a " + *kind + " object" : std::string("a glTF object");
+    const std::string what = kind       ? "a " + *kind + " object"
+                             : is_scene ? std::string("a scene object")
+                                        : std::string("a glTF object");
     r.check_object(o, p, what, keys);
   };
-  if (!kind) {
+  if (is_scene) {
+    check_keys({"scene"});
+  } else if (!kind) {
     check_keys({"gltf"});
   } else if (*kind == "box" || *kind == "plane") {
     check_keys({"primitive", "size"});
@@ -272,7 +260,14 @@ void parse_object(ParseContext& ctx, const Json& o, const std::string& p, std::s
   const auto material = parse_material_ref(ctx, o, p, 0);
   if (!name || !placement || !material) return;
   const std::string base =
-      name->empty() ? (kind ? *kind : std::string("gltf")) + "#" + std::to_string(index) : *name;
+      name->empty()
+          ? (kind ? *kind : std::string(is_scene ? "scene" : "gltf")) + "#" + std::to_string(index)
+          : *name;
+  if (is_scene) {
+    parse_scene_instance(ctx, o, p, *placement, has_material ? material : std::optional<int>(),
+                         base);
+    return;
+  }
   if (!kind) {
     parse_gltf_object(ctx, o, p, *placement, has_material ? material : std::optional<int>(), base);
     return;
@@ -284,6 +279,18 @@ void parse_object(ParseContext& ctx, const Json& o, const std::string& p, std::s
 }
 
 }  // namespace
+
+void add_copies(ParseContext& ctx, const Mesh& prototype, const Placement& placement,
+                const std::string& name) {
+  for (std::size_t c = 0; c < placement.offsets.size(); ++c) {
+    Mesh mesh = prototype;
+    mesh.name = name + (placement.offsets.size() > 1 ? placement.suffixes[c] : "");
+    mesh.transform = glm::translate(glm::mat4(1.0f), placement.offsets[c]) * placement.transform *
+                     prototype.transform;
+    mesh.update_bounds();
+    ctx.scene.meshes.push_back(std::move(mesh));
+  }
+}
 
 void parse_objects(ParseContext& ctx, const Json& objects, const std::string& pointer) {
   if (!ctx.reader.check_type(objects, pointer, Json::value_t::array)) return;

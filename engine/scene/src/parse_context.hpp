@@ -1,9 +1,13 @@
 #pragma once
-// State shared by the parts of the scene parser (scene_parser.cpp, object_parser.cpp).
+// State shared by the parts of the scene parser (scene_parser.cpp, object_parser.cpp,
+// scene_instance.cpp).
 
 #include <filesystem>
+#include <optional>
 #include <string>
+#include <vector>
 
+#include "antumbra/base/diagnostics.hpp"
 #include "antumbra/scene/scene.hpp"
 #include "json_reader.hpp"
 
@@ -12,10 +16,37 @@ namespace antumbra::scene::detail {
 struct ParseContext {
   JsonReader& reader;
   Scene& scene;
-  std::filesystem::path base_dir;  // glTF paths are relative to the scene file
+  std::filesystem::path base_dir;  // glTF and scene paths are relative to the scene file
+  // Canonical paths of the scene files being parsed, outermost first: a file already on
+  // the chain would instance itself without end.
+  std::vector<std::filesystem::path>& chain;
+  // Lights of instanced scenes. They follow the file's own lights in Scene::lights, so
+  // that /lights/i stays scene light i for the editor.
+  std::vector<PointLight> instanced_lights{};
+};
+
+// Where an object's copies go: its transform and one world offset per "repeat" copy.
+struct Placement {
+  glm::mat4 transform{1.0f};
+  std::vector<glm::vec3> offsets{glm::vec3(0.0f)};  // one per copy
+  std::vector<std::string> suffixes{""};            // "[i]" / "[i,j]" per copy
 };
 
 // Fills ctx.scene.meshes (and glTF materials) from the "objects" array.
 void parse_objects(ParseContext& ctx, const Json& objects, const std::string& pointer);
+
+// One mesh per copy of `placement`, named `name` plus the copy's suffix.
+void add_copies(ParseContext& ctx, const Mesh& prototype, const Placement& placement,
+                const std::string& name);
+
+// An object with a "scene" key: that file's meshes, materials and lights, placed like
+// any object (scene_instance.cpp).
+void parse_scene_instance(ParseContext& ctx, const Json& object, const std::string& pointer,
+                          const Placement& placement, std::optional<int> material_override,
+                          const std::string& name);
+
+// parse_scene() for a document whose file is the last entry of `chain`.
+base::Result<Scene> parse_scene_document(const base::JsonDocument& document,
+                                         std::vector<std::filesystem::path>& chain);
 
 }  // namespace antumbra::scene::detail

@@ -1,8 +1,11 @@
 // Top level of the scene format: version, camera, materials, lights. Objects are in
-// object_parser.cpp.
+// object_parser.cpp, instanced scenes in scene_instance.cpp.
 #include <cmath>
+#include <filesystem>
+#include <iterator>
 #include <limits>
 #include <unordered_map>
+#include <unordered_set>
 
 #include "antumbra/base/diagnostic_codes.hpp"
 #include "antumbra/scene/scene_file.hpp"
@@ -196,10 +199,13 @@ void parse_light(JsonReader& r, const Json& l, const std::string& p, PointLight&
   if (auto v = r.get_bool(l, p, "castsShadows", true)) out.casts_shadows = *v;
 }
 
-void parse_lights(JsonReader& r, const Json& root, Scene& scene) {
+void parse_lights(JsonReader& r, const Json& root, Scene& scene,
+                  const std::vector<PointLight>& instanced) {
   const auto it = root.find("lights");
   if (it == root.end() || !r.check_type(*it, "/lights", Json::value_t::array)) return;
   std::unordered_map<std::string, std::size_t> seen;  // name -> first index
+  std::unordered_set<std::string_view> instanced_names;
+  for (const PointLight& l : instanced) instanced_names.insert(l.name);
   int directional = -1;  // the sun gets its own shadow layer: one per scene
   for (std::size_t i = 0; i < it->size(); ++i) {
     const std::string p = base::pointer_append("/lights", i);
@@ -213,6 +219,10 @@ void parse_lights(JsonReader& r, const Json& root, Scene& scene) {
         r.error(codes::scene::kLightNameDuplicate,
                 "duplicate light name '" + light.name + "' (first used by /lights/" +
                     std::to_string(first->second) + ")",
+                p + "/name");
+      } else if (instanced_names.contains(light.name)) {
+        r.error(codes::scene::kLightNameDuplicate,
+                "duplicate light name '" + light.name + "' (a light of an instanced scene)",
                 p + "/name");
       }
     }
@@ -232,7 +242,10 @@ void parse_lights(JsonReader& r, const Json& root, Scene& scene) {
 
 }  // namespace
 
-base::Result<Scene> parse_scene(const base::JsonDocument& document) {
+namespace detail {
+
+base::Result<Scene> parse_scene_document(const base::JsonDocument& document,
+                                         std::vector<std::filesystem::path>& chain) {
   base::Diagnostics diagnostics;
   JsonReader r(document, diagnostics);
   Scene scene;
@@ -250,14 +263,27 @@ base::Result<Scene> parse_scene(const base::JsonDocument& document) {
   }
   parse_camera(r, root, scene.camera);
   parse_materials(r, root, scene);
+  detail::ParseContext ctx{r, scene, std::filesystem::path(document.file()).parent_path(), chain};
   if (const auto it = root.find("objects"); it != root.end()) {
-    detail::ParseContext ctx{r, scene, std::filesystem::path(document.file()).parent_path()};
     detail::parse_objects(ctx, *it, "/objects");
   }
-  parse_lights(r, root, scene);
+  parse_lights(r, root, scene, ctx.instanced_lights);
+  std::move(ctx.instanced_lights.begin(), ctx.instanced_lights.end(),
+            std::back_inserter(scene.lights));
   scene.bounds = scene.compute_bounds();
   if (diagnostics.has_errors()) return diagnostics;
   return base::Result<Scene>(std::move(scene), std::move(diagnostics));
+}
+
+}  // namespace detail
+
+base::Result<Scene> parse_scene(const base::JsonDocument& document) {
+  std::error_code ec;
+  std::vector<std::filesystem::path> chain;
+  if (!document.file().empty()) {
+    chain.push_back(std::filesystem::weakly_canonical(document.file(), ec));
+  }
+  return detail::parse_scene_document(document, chain);
 }
 
 base::Result<Scene> load_scene_file(const std::string& path) {

@@ -95,9 +95,14 @@ inline constexpr const char* kBadArity = "SC007";            // vec3 with 2 numb
 inline constexpr const char* kUnknownMaterial = "SC010";
 inline constexpr const char* kTransmittanceIgnored = "SC011";  // warning: not translucent
 inline constexpr const char* kUnknownPrimitive = "SC012";
-inline constexpr const char* kObjectKind = "SC013";     // neither or both of primitive/gltf
+inline constexpr const char* kObjectKind = "SC013";     // not one of primitive/gltf/scene
 inline constexpr const char* kBadArchShape = "SC014";   // opening does not fit the arch
 inline constexpr const char* kTooManyCopies = "SC015";  // "repeat" expands past the limit
+// Scene instancing (an object's "scene" key), reported at that key.
+inline constexpr const char* kInstanceFileMissing = "SC016";
+inline constexpr const char* kInstanceCycle = "SC017";       // a file instances itself
+inline constexpr const char* kInstanceInvalid = "SC018";     // its own errors follow, in its file
+inline constexpr const char* kInstanceSunSkipped = "SC019";  // warning: one sun per scene
 
 // Lights and camera (SC020-SC029).
 inline constexpr const char* kLightNameEmpty = "SC020";

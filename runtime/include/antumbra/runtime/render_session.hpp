@@ -3,6 +3,7 @@
 // device, shader compiler, pass registry, executor, scene on the GPU, frame loop.
 // Shared by `render` and (later) `bench` and the editor.
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -60,8 +61,12 @@ class RenderSession {
   // Forget the timings gathered so far (after warm-up frames).
   void reset_timings();
 
+  // Called with the frame's index in this render() call before the frame reads the
+  // scene: per-frame changes (bench's moving lights, through set_lights) without leaving
+  // the loop, so frames stay pipelined as in a real application.
+  using BeforeFrame = std::function<void(int frame)>;
   // Renders `frames` frames; per-pass timings are gathered from every frame.
-  void render(int frames, TraceWriter* trace);
+  void render(int frames, TraceWriter* trace, const BeforeFrame& before_frame = {});
   [[nodiscard]] std::vector<PassTiming> pass_timings() const;
   // What the passes reported about the last rendered frame.
   [[nodiscard]] const fgvk::FrameReport& last_report() const { return report_; }

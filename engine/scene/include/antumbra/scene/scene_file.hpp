@@ -13,16 +13,23 @@
 //             transmittance [r,g,b,a] in [0,1] (default albedo with a = 0.5)}}
 //             the implicit material "default" (index 0) may be redefined
 //   objects   [{primitive: box|plane|cylinder|sphere|arch, <shape keys>} |
-//              {gltf: "path relative to this file (.gltf/.glb)"}]
+//              {gltf: "path relative to this file (.gltf/.glb)"} |
+//              {scene: "another scene file, relative to this file"}]
 //             common keys: name, position, rotation (degrees about X, then Y, then Z),
 //             scale (number or vec3, > 0), material, repeat ({count, offset} or an array
 //             of up to 3 of them: copies on a grid, each offset in world space)
 //             box {size}, plane {size: [x, z]}, cylinder {radius, height, segments},
 //             sphere {radius, segments, rings}, arch {width, height, depth, pierWidth,
 //             crown, style: round|pointed, segments}
+//             scene: its meshes, its materials (named "<path>#<name>") and its point and
+//             spot lights (named "<object name>/<light>[i,j]", ranges scaled with the
+//             object; its camera, ambient and sun are not imported); a file may not
+//             instance itself, directly or through others
 //   lights    [{name (required, unique), type "point", position (required), color [1,1,1],
 //             intensity 1, range 10 (> 0), size 0.2 (>= 0), castsShadows true}]
+//             Scene::lights holds these first, in file order, then instanced scenes' lights.
 
+#include <cstddef>
 #include <string>
 #include <string_view>
 
@@ -35,6 +42,8 @@ namespace antumbra::scene {
 inline constexpr int kSceneFormatVersion = 1;
 // "repeat" may not expand one object into more copies than this.
 inline constexpr int kMaxRepeatCopies = 4096;
+// Scene instancing may not make a scene larger than this (copies of copies multiply).
+inline constexpr std::size_t kMaxSceneTriangles = std::size_t{1} << 26;
 
 // Reads, parses and validates a scene file; glTF paths resolve against its folder.
 base::Result<Scene> load_scene_file(const std::string& path);
