@@ -94,13 +94,21 @@ std::vector<Scenario> builtin_scenarios(double scale) {
     int kernel;
   };
   constexpr Variant kMovingVariants[] = {{"hard", 0}, {"pcss", 11}, {"ssss", 11}};
+  // Each on both shadow rasterisers; the compute rows end in "/compute".
   for (const int lights : {16, 64, 256, kDistrictLights}) {
     for (const Variant& v : kMovingVariants) {
-      Scenario s = make("moving", technique(v.technique), v.kernel, 1080, lights, scale);
-      const bool district = lights == kDistrictLights;
-      s.scene = district ? kDistrictScene : "atrium.json";
-      s.moving = district ? kDistrictMovingLights : lights;
-      out.push_back(std::move(s));
+      for (const char* rasterizer : {"hardware", "compute"}) {
+        Scenario s = make("moving", technique(v.technique), v.kernel, 1080, lights, scale);
+        const bool district = lights == kDistrictLights;
+        s.scene = district ? kDistrictScene : "atrium.json";
+        s.moving = district ? kDistrictMovingLights : lights;
+        s.rasterizer = rasterizer;
+        if (s.rasterizer != "hardware") {
+          s.name += "/" + s.rasterizer;
+          s.overrides.push_back({"point-shadow-atlas", "rasterizer", s.rasterizer});
+        }
+        out.push_back(std::move(s));
+      }
     }
   }
   return out;
@@ -167,6 +175,13 @@ void fit_shadow_resources(fg::GraphDesc& graph, int lights, unsigned face) {
       const std::uint64_t bytes = 16 + 64 * 1024 + 80 * static_cast<std::uint64_t>(layers);
       r.buffer_size = (bytes + 255) / 256 * 256;
     }
+  }
+}
+
+void fit_atlas_format(fg::GraphDesc& graph, const std::string& rasterizer) {
+  if (rasterizer != "compute") return;
+  for (auto& r : graph.resources) {
+    if (r.name == "atlas" && r.kind == fg::ResourceKind::image) r.format = fg::Format::r32f;
   }
 }
 

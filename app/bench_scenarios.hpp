@@ -34,6 +34,8 @@ struct Scenario {
   bool shadow_cache = false;  // static shadow caching (off: every face re-rendered each frame)
   std::string scene = "atrium.json";  // file name under data/scenes/
   int moving = 0;                     // lights that move each frame: the first ones
+  // point-shadow-atlas's rasterizer ("hardware" or "compute"; the moving table has both).
+  std::string rasterizer = "hardware";
 };
 
 // The lights of the moving table and, for 1024, the district scene's 64 moving lights
@@ -65,6 +67,11 @@ std::vector<std::string> apply_overrides(fg::GraphDesc& graph,
 // device-independent limit of 2046 layers, faces of `face` texels (a derived map keeps
 // its factor of the graph's atlas size).
 void fit_shadow_resources(fg::GraphDesc& graph, int lights, unsigned face);
+
+// The atlas format the scenario's rasterizer writes fastest: r32f for "compute" (its
+// resolve shader's storage image; a d32f atlas would be filled by copies), as the graph
+// says otherwise.
+void fit_atlas_format(fg::GraphDesc& graph, const std::string& rasterizer);
 
 // How the moving table's lights move (scene::animate_lights), for `scenario.moving`
 // lights; frame 0 is the first warm-up frame of each scenario.

@@ -137,6 +137,7 @@ BenchResult run_scenario(runtime::RenderSession& session, const runtime::DataPat
     return r;
   }
   fit_shadow_resources(graph.value(), scenario.lights, scenario.face);
+  fit_atlas_format(graph.value(), scenario.rasterizer);
   session.set_viewport({scenario.width, scenario.height});
   if (auto diagnostics = session.load_graph(graph.value()); diagnostics.has_errors()) {
     r.status = "invalid";

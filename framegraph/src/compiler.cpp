@@ -119,13 +119,18 @@ Plan assemble(const GraphDesc& graph, const std::vector<ResolvedPass>& passes,
     pass.params = rp.params;
     // Bindings follow the pass type's port order, whatever order the file used.
     for (const PortDesc& port : rp.desc->ports) {
-      const PortUse use = rp.desc->use_of(port, rp.params);
-      PlanBinding binding{port.name, -1, use.access, use.stage};
+      PlanBinding binding{port.name, -1, port.access, port.stage};
+      Format format = Format::undefined;
       for (const auto* list : {&rp.reads, &rp.writes}) {
         for (const BoundPort& b : *list) {
-          if (b.port == &port) binding.resource = remap[static_cast<std::size_t>(b.resource)];
+          if (b.port != &port) continue;
+          binding.resource = remap[static_cast<std::size_t>(b.resource)];
+          format = graph.resources[static_cast<std::size_t>(b.resource)].format;
         }
       }
+      const PortUse use = rp.desc->use_of(port, rp.params, format);
+      binding.access = use.access;
+      binding.stage = use.stage;
       pass.bindings.push_back(std::move(binding));
     }
     plan.passes.push_back(std::move(pass));

@@ -222,6 +222,7 @@ std::vector<bool> cull_passes(const DependencyGraph& deps, const std::vector<Res
     for (const BoundPort& w : passes[static_cast<std::size_t>(e.to)].writes) {
       if (w.resource == e.resource) {
         const ResolvedPass& writer = passes[static_cast<std::size_t>(e.to)];
+        // (No format here: a format-dependent use is never a discarding storage_write.)
         return writer.desc->use_of(*w.port, writer.params).access != Access::storage_write;
       }
     }

@@ -173,9 +173,9 @@ std::string_view to_string(ParamType type) {
   return "number";
 }
 
-PortUse PassDesc::use_of(const PortDesc& port, const Json& values) const {
+PortUse PassDesc::use_of(const PortDesc& port, const Json& values, Format format) const {
   if (port_use != nullptr) {
-    if (auto use = port_use(port, values)) return *use;
+    if (auto use = port_use(port, values, format)) return *use;
   }
   return {port.access, port.stage};
 }

@@ -64,7 +64,7 @@ fg::PassDesc AtlasViewPass::describe() {
       "Debug view: shadow-atlas faces tiled into a grid, depth linearised with each light's "
       "near plane and range when shadowData is bound (bright = near the light), raw otherwise.";
   desc.ports = {
-      compute_array_input(port::kAtlas, {Format::d32f, Format::d16}, 1, 0,
+      compute_array_input(port::kAtlas, {Format::d32f, Format::d16, Format::r32f}, 1, 0,
                           "Shadow faces, one per array layer (point-shadow-atlas)."),
       {.name = port::kShadowData,
        .kind = ResourceKind::buffer,

@@ -32,7 +32,7 @@ fg::PassDesc LayeredPenumbraPass::describe() {
       compute_input(port::kDepth, {Format::d32f, Format::d16}, "G-buffer depth.", "screen"),
       compute_input(port::kNormal, {Format::rgba16f, Format::rgba32f},
                     "G-buffer view-space normal.", "screen"),
-      compute_array_input(port::kAtlas, {Format::d32f, Format::d16}, 6, 0,
+      compute_array_input(port::kAtlas, {Format::d32f, Format::d16, Format::r32f}, 6, 0,
                           "Shadow faces of every light (point-shadow-atlas)."),
       compute_array_input(
           port::kColour, {Format::rgba8}, 6, 0,

@@ -35,6 +35,7 @@ gpu::DescriptorSetLayoutBuilder raster_bindings() {
         shared::kRasterTint, shared::kRasterMaterials}) {
     b.storage_buffer(binding, VK_SHADER_STAGE_COMPUTE_BIT);
   }
+  b.storage_image(shared::kRasterAtlas, VK_SHADER_STAGE_COMPUTE_BIT);
   return b;
 }
 
@@ -57,6 +58,28 @@ void after_all(VkCommandBuffer cmd, std::initializer_list<VkBuffer> buffers,
 constexpr VkAccessFlags2 kStorageReadWrite =
     VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
 
+void transfer_to_compute(VkCommandBuffer cmd, std::initializer_list<VkBuffer> buffers) {
+  for (VkBuffer b : buffers) {
+    gpu::buffer_barrier(cmd, b, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+                        VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                        kStorageReadWrite);
+  }
+}
+
+void compute_to_compute(VkCommandBuffer cmd, std::initializer_list<VkBuffer> buffers) {
+  for (VkBuffer b : buffers) {
+    gpu::buffer_barrier(cmd, b, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, kStorageReadWrite,
+                        VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, kStorageReadWrite);
+  }
+}
+
+void compute_to_copy(VkCommandBuffer cmd, std::initializer_list<VkBuffer> buffers) {
+  for (VkBuffer b : buffers) {
+    gpu::buffer_barrier(cmd, b, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, kStorageReadWrite,
+                        VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
+  }
+}
+
 }  // namespace
 
 void ComputeRasterizer::prepare(fgvk::PrepareContext& context,
@@ -70,6 +93,7 @@ void ComputeRasterizer::prepare(fgvk::PrepareContext& context,
   cull_ = build("point_shadow_atlas/shadow_cull.comp");
   args_ = build("point_shadow_atlas/shadow_raster_args.comp");
   raster_ = build("point_shadow_atlas/shadow_raster.comp");
+  resolve_ = build("point_shadow_atlas/shadow_raster_resolve.comp");
   geometry_version_ = ~0ull;
 }
 
@@ -144,14 +168,42 @@ void ComputeRasterizer::execute(fgvk::ExecuteContext& context, const AtlasFrame&
   const std::vector<std::uint32_t>& layers = frame.render_layers;
   if (layers.empty() && !frame.clear_all) return;
   upload_geometry(context);
+  const auto& atlas = context.bindings.required_image(port::kAtlas);
+  storage_atlas_ = atlas.format == VK_FORMAT_R32_SFLOAT;
   const std::uint32_t size = frame.header.counts.z;
   ensure_scratch(context, static_cast<std::uint32_t>(layers.size()), size);
   stats_.clusters = cluster_count_;
+  write_records(context, frame, tinted, settings);
+  for (std::size_t first = 0; first < layers.size(); first += chunk_faces_) {
+    const Chunk chunk{
+        static_cast<std::uint32_t>(first),
+        static_cast<std::uint32_t>(std::min<std::size_t>(chunk_faces_, layers.size() - first))};
+    record_chunk(context, frame, chunk, tinted, settings);
+    copy_out(context, frame, chunk, tinted);
+    ++stats_.chunks;
+  }
+  if (frame.clear_all) fill_untouched(context, frame);
+}
 
+// One record per face to draw, then (when the atlas's contents are unknown and it is
+// written by the resolve shader) one per untouched layer, pointing at the cleared face.
+void ComputeRasterizer::write_records(fgvk::ExecuteContext& context, const AtlasFrame& frame,
+                                      const std::vector<bool>& tinted,
+                                      const ComputeRasterSettings& settings) {
+  const std::vector<std::uint32_t>& layers = frame.render_layers;
+  const std::uint32_t size = scratch_size_;
+  untouched_.clear();
+  if (frame.clear_all) {
+    std::vector<bool> drawn(frame.faces.size(), false);
+    for (const std::uint32_t layer : layers) drawn[layer] = true;
+    for (std::uint32_t layer = 0; layer < frame.faces.size(); ++layer) {
+      if (!drawn[layer]) untouched_.push_back(layer);
+    }
+  }
   if (faces_.size() < context.frame.frames_in_flight) faces_.resize(context.frame.frames_in_flight);
   gpu::Buffer& records = faces_[context.frame.slot];
   const VkDeviceSize record_bytes =
-      sizeof(shared::RasterFace) * std::max<std::size_t>(layers.size(), 1);
+      sizeof(shared::RasterFace) * std::max<std::size_t>(layers.size() + untouched_.size(), 1);
   if (!records || records.size() < record_bytes) {
     // Appended, not operator+(string&&, ...): GCC 12 warns falsely (-Wrestrict).
     std::string name = context.pass.name;
@@ -174,57 +226,66 @@ void ComputeRasterizer::execute(fgvk::ExecuteContext& context, const AtlasFrame&
     r.info = {layers[i], static_cast<std::uint32_t>((i % chunk_faces_) * face_texels), size,
               settings.tint && light < tinted.size() && tinted[light] ? 1u : 0u};
   }
-  for (std::size_t first = 0; first < layers.size(); first += chunk_faces_) {
-    const Chunk chunk{
-        static_cast<std::uint32_t>(first),
-        static_cast<std::uint32_t>(std::min<std::size_t>(chunk_faces_, layers.size() - first))};
-    record_chunk(context, frame, chunk, chunk.first, tinted, settings);
-    copy_out(context, frame, chunk, tinted);
-    ++stats_.chunks;
+  for (std::size_t i = 0; i < untouched_.size(); ++i) {
+    shared::RasterFace& r = out[layers.size() + i];
+    r = {};
+    r.info = {untouched_[i], static_cast<std::uint32_t>(chunk_faces_ * face_texels), size, 0u};
   }
-  if (frame.clear_all) fill_untouched(context, frame);
+}
+
+void ComputeRasterizer::bind(fgvk::ExecuteContext& context, const ComputePipeline& pipeline,
+                             const shared::RasterPush& push) {
+  const VkCommandBuffer cmd = context.cmd;
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.pipeline);
+  gpu::PushDescriptors descriptors;
+  descriptors.storage_buffer(shared::kRasterClusters, clusters_)
+      .storage_buffer(shared::kRasterIndices, indices_)
+      .storage_buffer(shared::kRasterVertices, context.frame.vertices)
+      .storage_buffer(shared::kRasterFaces, faces_[context.frame.slot])
+      .storage_buffer(shared::kRasterCounters, counters_)
+      .storage_buffer(shared::kRasterItems, items_)
+      .storage_buffer(shared::kRasterDepth, depth_)
+      .storage_buffer(shared::kRasterTint, tint_ ? tint_.handle() : depth_.handle())
+      .storage_buffer(shared::kRasterMaterials, context.frame.materials);
+  if (&pipeline == &resolve_) {
+    descriptors.storage_image(shared::kRasterAtlas,
+                              context.bindings.required_image(port::kAtlas).view);
+  }
+  descriptors.push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.layout);
+  vkCmdPushConstants(cmd, pipeline.layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
+}
+
+// Clears the scratch a chunk uses, once the previous round has read it.
+void ComputeRasterizer::clear_chunk(VkCommandBuffer cmd, std::uint32_t faces, bool tint) {
+  const VkDeviceSize face_bytes = VkDeviceSize{scratch_size_} * scratch_size_ * 4;
+  after_all(cmd, {depth_, counters_}, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+            VK_ACCESS_2_TRANSFER_WRITE_BIT);
+  after_all(cmd, {items_}, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+            VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+  vkCmdFillBuffer(cmd, depth_, 0, face_bytes * faces, kClearDepthBits);
+  vkCmdFillBuffer(cmd, counters_, 0, VK_WHOLE_SIZE, 0u);
+  transfer_to_compute(cmd, {depth_, counters_});
+  if (tint) {
+    after_all(cmd, {tint_}, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
+    vkCmdFillBuffer(cmd, tint_, 0, face_bytes * faces, kClearTint);
+    transfer_to_compute(cmd, {tint_});
+  }
 }
 
 void ComputeRasterizer::record_chunk(fgvk::ExecuteContext& context, const AtlasFrame& frame,
-                                     const Chunk& chunk, std::uint32_t face_offset,
-                                     const std::vector<bool>& tinted,
+                                     const Chunk& chunk, const std::vector<bool>& tinted,
                                      const ComputeRasterSettings& settings) {
   const VkCommandBuffer cmd = context.cmd;
-  const std::uint32_t size = scratch_size_;
-  const VkDeviceSize face_bytes = VkDeviceSize{size} * size * 4;
   bool any_tint = false;
   for (std::uint32_t i = 0; i < chunk.count; ++i) {
     const std::uint32_t light = frame.faces[frame.render_layers[chunk.first + i]].info.x;
     any_tint = any_tint || (settings.tint && light < tinted.size() && tinted[light]);
   }
   any_tint = any_tint && tint_;
-
-  // Clear the scratch this chunk uses, once the previous round has read it.
-  after_all(cmd, {depth_, counters_}, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
-            VK_ACCESS_2_TRANSFER_WRITE_BIT);
-  after_all(cmd, {items_}, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-            VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
-  if (tint_) {
-    after_all(cmd, {tint_}, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
-  }
-  vkCmdFillBuffer(cmd, depth_, 0, face_bytes * chunk.count, kClearDepthBits);
-  if (any_tint) vkCmdFillBuffer(cmd, tint_, 0, face_bytes * chunk.count, kClearTint);
-  vkCmdFillBuffer(cmd, counters_, 0, VK_WHOLE_SIZE, 0u);
-  const auto to_compute = [&](std::initializer_list<VkBuffer> buffers, VkPipelineStageFlags2 src,
-                              VkAccessFlags2 src_access, VkPipelineStageFlags2 dst,
-                              VkAccessFlags2 dst_access) {
-    for (VkBuffer b : buffers) gpu::buffer_barrier(cmd, b, src, src_access, dst, dst_access);
-  };
-  to_compute({depth_, counters_}, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
-             VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-             kStorageReadWrite);
-  if (any_tint) {
-    to_compute({tint_}, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-               VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, kStorageReadWrite);
-  }
+  clear_chunk(cmd, chunk.count, any_tint);
 
   shared::RasterPush push{};
-  push.face_first = face_offset;
+  push.face_first = chunk.first;
   push.face_count = chunk.count;
   push.cluster_count = cluster_count_;
   push.tint_mode = settings.tint ? 1u : 0u;
@@ -232,55 +293,51 @@ void ComputeRasterizer::record_chunk(fgvk::ExecuteContext& context, const AtlasF
   push.capacity_tint = capacity_tint_;
   push.depth_bias = settings.depth_bias;
   push.slope_bias = settings.slope_bias;
-  const auto bind = [&](const ComputePipeline& pipeline) {
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.pipeline);
-    gpu::PushDescriptors()
-        .storage_buffer(shared::kRasterClusters, clusters_)
-        .storage_buffer(shared::kRasterIndices, indices_)
-        .storage_buffer(shared::kRasterVertices, context.frame.vertices)
-        .storage_buffer(shared::kRasterFaces, faces_[context.frame.slot])
-        .storage_buffer(shared::kRasterCounters, counters_)
-        .storage_buffer(shared::kRasterItems, items_)
-        .storage_buffer(shared::kRasterDepth, depth_)
-        .storage_buffer(shared::kRasterTint, tint_ ? tint_.handle() : depth_.handle())
-        .storage_buffer(shared::kRasterMaterials, context.frame.materials)
-        .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.layout);
-    vkCmdPushConstants(cmd, pipeline.layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
-  };
-
   context.gpu.begin_label(cmd, context.pass.name + ".cull");
-  bind(cull_);
+  bind(context, cull_, push);
   if (cluster_count_ > 0) {
     vkCmdDispatch(cmd, group_count(cluster_count_, shared::kCullGroup), chunk.count, 1);
   }
-  to_compute({counters_, items_}, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-             VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-             kStorageReadWrite);
-  bind(args_);
+  compute_to_compute(cmd, {counters_, items_});
+  bind(context, args_, push);
   vkCmdDispatch(cmd, 1, 1, 1);
-  to_compute({counters_}, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, kStorageReadWrite,
-             VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-             VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
+  gpu::buffer_barrier(
+      cmd, counters_, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, kStorageReadWrite,
+      VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+      VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
   context.gpu.end_label(cmd);
 
   context.gpu.begin_label(cmd, context.pass.name + ".rasterDepth");
   push.list = shared::kListDepth;
-  bind(raster_);
+  bind(context, raster_, push);
   vkCmdDispatchIndirect(cmd, counters_, shared::kRasterArgsOffset);
   context.gpu.end_label(cmd);
+  compute_to_compute(cmd, {depth_});
   if (any_tint) {
-    to_compute({depth_}, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, kStorageReadWrite,
-               VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, kStorageReadWrite);
     context.gpu.begin_label(cmd, context.pass.name + ".rasterTint");
     push.list = shared::kListTint;
-    bind(raster_);
+    bind(context, raster_, push);
     vkCmdDispatchIndirect(cmd, counters_, shared::kRasterArgsOffset + 12);
     context.gpu.end_label(cmd);
-    to_compute({tint_}, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, kStorageReadWrite,
-               VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
+    compute_to_copy(cmd, {tint_});
   }
-  to_compute({depth_}, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, kStorageReadWrite,
-             VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
+  if (storage_atlas_) {
+    resolve(context, push, chunk.first, chunk.count);
+  } else {
+    compute_to_copy(cmd, {depth_});
+  }
+}
+
+// Writes faces [first, first + count) of the records into the r32f atlas.
+void ComputeRasterizer::resolve(fgvk::ExecuteContext& context, shared::RasterPush push,
+                                std::uint32_t first, std::uint32_t count) {
+  context.gpu.begin_label(context.cmd, context.pass.name + ".resolve");
+  push.face_first = first;
+  push.face_count = count;
+  bind(context, resolve_, push);
+  const std::uint32_t groups = group_count(scratch_size_, shared::kResolveGroup);
+  vkCmdDispatch(context.cmd, groups, groups, count);
+  context.gpu.end_label(context.cmd);
 }
 
 void ComputeRasterizer::copy_out(fgvk::ExecuteContext& context, const AtlasFrame& frame,
@@ -298,16 +355,19 @@ void ComputeRasterizer::copy_out(fgvk::ExecuteContext& context, const AtlasFrame
     region.bufferOffset = face_bytes * i;
     region.imageSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, layer, 1};
     region.imageExtent = {size, size, 1};
-    depth_regions.push_back(region);
+    if (!storage_atlas_) depth_regions.push_back(region);
     const std::uint32_t light = frame.faces[layer].info.x;
     if (colour != nullptr && tint_ && light < tinted.size() && tinted[light]) {
       region.imageSubresource.aspectMask = VK_IMAGE_ASPECT_COLOR_BIT;
       tint_regions.push_back(region);
     }
   }
+  if (depth_regions.empty() && tint_regions.empty()) return;
   context.gpu.begin_label(context.cmd, context.pass.name + ".copy");
-  vkCmdCopyBufferToImage(context.cmd, depth_, atlas.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                         static_cast<std::uint32_t>(depth_regions.size()), depth_regions.data());
+  if (!depth_regions.empty()) {
+    vkCmdCopyBufferToImage(context.cmd, depth_, atlas.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                           static_cast<std::uint32_t>(depth_regions.size()), depth_regions.data());
+  }
   if (!tint_regions.empty()) {
     vkCmdCopyBufferToImage(context.cmd, tint_, colour->image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                            static_cast<std::uint32_t>(tint_regions.size()), tint_regions.data());
@@ -317,30 +377,33 @@ void ComputeRasterizer::copy_out(fgvk::ExecuteContext& context, const AtlasFrame
 
 // First frame (or new images): layers nobody draws still need defined depth (far).
 void ComputeRasterizer::fill_untouched(fgvk::ExecuteContext& context, const AtlasFrame& frame) {
+  if (untouched_.empty()) return;
   const auto& atlas = context.bindings.required_image(port::kAtlas);
   const std::uint32_t size = scratch_size_;
   const VkDeviceSize face_bytes = VkDeviceSize{size} * size * 4;
   const VkDeviceSize cleared = face_bytes * chunk_faces_;
-  std::vector<bool> drawn(atlas.layers, false);
-  for (const std::uint32_t layer : frame.render_layers) {
-    if (layer < drawn.size()) drawn[layer] = true;
+  after_all(context.cmd, {depth_}, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+            VK_ACCESS_2_TRANSFER_WRITE_BIT);
+  vkCmdFillBuffer(context.cmd, depth_, cleared, face_bytes, kClearDepthBits);
+  if (storage_atlas_) {
+    transfer_to_compute(context.cmd, {depth_});
+    shared::RasterPush push{};
+    resolve(context, push, static_cast<std::uint32_t>(frame.render_layers.size()),
+            static_cast<std::uint32_t>(untouched_.size()));
+    return;
   }
+  gpu::buffer_barrier(context.cmd, depth_, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+                      VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT,
+                      VK_ACCESS_2_TRANSFER_READ_BIT);
   std::vector<VkBufferImageCopy> regions;
-  for (std::uint32_t layer = 0; layer < atlas.layers; ++layer) {
-    if (drawn[layer]) continue;
+  regions.reserve(untouched_.size());
+  for (const std::uint32_t layer : untouched_) {
     VkBufferImageCopy region{};
     region.bufferOffset = cleared;
     region.imageSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, layer, 1};
     region.imageExtent = {size, size, 1};
     regions.push_back(region);
   }
-  if (regions.empty()) return;
-  after_all(context.cmd, {depth_}, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
-            VK_ACCESS_2_TRANSFER_WRITE_BIT);
-  vkCmdFillBuffer(context.cmd, depth_, cleared, face_bytes, kClearDepthBits);
-  gpu::buffer_barrier(context.cmd, depth_, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
-                      VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT,
-                      VK_ACCESS_2_TRANSFER_READ_BIT);
   vkCmdCopyBufferToImage(context.cmd, depth_, atlas.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                          static_cast<std::uint32_t>(regions.size()), regions.data());
 }

@@ -3,8 +3,10 @@
 // faces the planner asks for with compute shaders into private buffers, then copies them
 // into the atlas (and the colour map) layers, so that every consumer reads the same
 // images as from the hardware path (docs/technique.md, "Compute shadow rasteriser").
-// The graph sees the atlas and colour ports as transfer_dst under this path
-// (point_shadow_atlas_desc.cpp); every barrier here is on the pass's own buffers.
+// An r32f atlas is written by a resolve compute shader (storage image); a d32f atlas and
+// the colour map are filled by copies (transfer_dst; much slower for depth on some GPUs);
+// point_shadow_atlas_desc.cpp tells the graph. Every barrier here is on the pass's own
+// buffers.
 
 #include <cstdint>
 #include <string>
@@ -48,9 +50,15 @@ class ComputeRasterizer {
   };
   void upload_geometry(fgvk::ExecuteContext& context);
   void ensure_scratch(fgvk::ExecuteContext& context, std::uint32_t faces, std::uint32_t size);
+  void write_records(fgvk::ExecuteContext& context, const AtlasFrame& frame,
+                     const std::vector<bool>& tinted, const ComputeRasterSettings& settings);
+  void bind(fgvk::ExecuteContext& context, const ComputePipeline& pipeline,
+            const shared::RasterPush& push);
+  void clear_chunk(VkCommandBuffer cmd, std::uint32_t faces, bool tint);
   void record_chunk(fgvk::ExecuteContext& context, const AtlasFrame& frame, const Chunk& chunk,
-                    std::uint32_t face_offset, const std::vector<bool>& tinted,
-                    const ComputeRasterSettings& settings);
+                    const std::vector<bool>& tinted, const ComputeRasterSettings& settings);
+  void resolve(fgvk::ExecuteContext& context, shared::RasterPush push, std::uint32_t first,
+               std::uint32_t count);
   void copy_out(fgvk::ExecuteContext& context, const AtlasFrame& frame, const Chunk& chunk,
                 const std::vector<bool>& tinted);
   void fill_untouched(fgvk::ExecuteContext& context, const AtlasFrame& frame);
@@ -58,6 +66,9 @@ class ComputeRasterizer {
   ComputePipeline cull_;
   ComputePipeline args_;
   ComputePipeline raster_;
+  ComputePipeline resolve_;
+  bool storage_atlas_ = false;            // r32f atlas: written by resolve_, not copied
+  std::vector<std::uint32_t> untouched_;  // layers filled with far depth (first frame)
   gpu::Buffer clusters_;
   gpu::Buffer indices_;
   std::uint32_t cluster_count_ = 0;

@@ -71,6 +71,10 @@ ANTUMBRA_BINDING(kRasterItems, 5)  // uvec2: cluster, face | region << 16
 ANTUMBRA_BINDING(kRasterDepth, 6)  // uint per texel: float bits of the depth (atomicMin)
 ANTUMBRA_BINDING(kRasterTint, 7)   // uint per texel: RGBA8 tint (rgb product, a nearest)
 ANTUMBRA_BINDING(kRasterMaterials, 8)
+ANTUMBRA_BINDING(kRasterAtlas, 9)  // r32f atlas, image2DArray (shadow_raster_resolve.comp)
+
+// shadow_raster_resolve.comp's square workgroups.
+const uint kResolveGroup = 16;
 
 ANTUMBRA_SHARED_END
 

@@ -26,12 +26,19 @@ void check(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& 
                    "/out/shadowData", diagnostics);
   }
   const auto rasterizer = pass.params.find("rasterizer");
-  if (rasterizer != pass.params.end() && *rasterizer == "compute" &&
-      atlas->format != fg::Format::d32f) {
-    add_pass_error(graph, pass, codes::shadow_atlas::kComputeFormat,
+  const bool compute = rasterizer != pass.params.end() && *rasterizer == "compute";
+  if (compute && atlas->format == fg::Format::d16) {
+    add_pass_error(graph, pass, codes::shadow_atlas::kRasterizerFormat,
                    "rasterizer \"compute\" writes 32-bit float depth; the atlas '" + atlas->name +
-                       "' is " + std::string(fg::to_string(atlas->format)) +
-                       ": make it d32f or use rasterizer \"hardware\"",
+                       "' is d16: make it r32f (written by the compute shader, fastest) or d32f "
+                       "(filled by copies), or use rasterizer \"hardware\"",
+                   "/params/rasterizer", diagnostics);
+  }
+  if (!compute && !fg::is_depth_format(atlas->format)) {
+    add_pass_error(graph, pass, codes::shadow_atlas::kRasterizerFormat,
+                   "rasterizer \"hardware\" renders into a depth attachment; the atlas '" +
+                       atlas->name + "' is " + std::string(fg::to_string(atlas->format)) +
+                       ": make it d32f or d16, or use rasterizer \"compute\"",
                    "/params/rasterizer", diagnostics);
   }
   if (colour != nullptr && colour->layers < atlas->layers) {
@@ -43,11 +50,16 @@ void check(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& 
   }
 }
 
-// The compute rasteriser fills the atlas and the colour map by copies from its own
-// buffers (compute_raster.hpp), so the graph's barriers must prepare them for transfers.
-std::optional<fg::PortUse> port_use(const fg::PortDesc& port, const fg::Json& params) {
+// The compute rasteriser writes an r32f atlas from a compute shader (storage image; it
+// keeps the cached layers, so read-write) and fills a depth atlas and the colour map by
+// copies from its own buffers (compute_raster.hpp); the graph's barriers follow.
+std::optional<fg::PortUse> port_use(const fg::PortDesc& port, const fg::Json& params,
+                                    fg::Format format) {
   const auto rasterizer = params.find("rasterizer");
   if (rasterizer == params.end() || *rasterizer != "compute") return std::nullopt;
+  if (port.name == port::kAtlas.name() && format == fg::Format::r32f) {
+    return fg::PortUse{fg::Access::storage_read_write, fg::Stage::compute};
+  }
   if (port.name == port::kAtlas.name() || port.name == port::kColour.name()) {
     return fg::PortUse{fg::Access::transfer_dst, fg::Stage::transfer};
   }
@@ -74,13 +86,14 @@ fg::PassDesc PointShadowAtlasPass::describe() {
        .direction = PortDirection::output,
        .access = Access::depth_attachment,
        .stage = Stage::graphics,
-       .formats = {Format::d32f, Format::d16},
+       .formats = {Format::d32f, Format::d16, Format::r32f},
        .min_layers = 6,
        .max_layers = 0,
        .size_group = "atlas",
-       .description = "Face depths (0 near .. 1 at the light's range); declare it persistent "
-                      "so that cached faces survive between frames. With rasterizer \"compute\": "
-                      "d32f, written by copies (transfer_dst)."},
+       .description =
+           "Face depths (0 near .. 1 at the light's range); declare it persistent "
+           "so that cached faces survive between frames. r32f with rasterizer \"compute\" "
+           "(written by its compute shader; d32f works too, filled by slower copies)."},
       {.name = port::kColour,
        .direction = PortDirection::output,
        .access = Access::color_attachment,

@@ -53,7 +53,7 @@ fg::PassDesc ShadowMinFilterPass::describe() {
       "Low-resolution, separably min-filtered copy of every shadow face: the nearest blocker "
       "around a lookup in one fetch, replacing the penumbra pass's blocker search.";
   desc.ports = {
-      compute_array_input(port::kAtlas, {Format::d32f, Format::d16}, 1, 0,
+      compute_array_input(port::kAtlas, {Format::d32f, Format::d16, Format::r32f}, 1, 0,
                           "Shadow faces of every light (point-shadow-atlas)."),
       compute_buffer_input(port::kShadowData,
                            "Which faces are owned and which were drawn this frame."),

@@ -19,7 +19,7 @@ std::vector<fg::PortDesc> atlas_ports(bool optional) {
       {.name = port::kAtlas,
        .access = Access::sampled,
        .stage = Stage::compute,
-       .formats = {Format::d32f, Format::d16},
+       .formats = {Format::d32f, Format::d16, Format::r32f},
        .min_layers = 6,
        .max_layers = 0,
        .optional = optional,

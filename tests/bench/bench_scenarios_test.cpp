@@ -81,14 +81,20 @@ TEST(BenchScenarios, FitShadowResourcesUsesTheFaceAndKeepsTheMinMapsFactor) {
   EXPECT_EQ(min_depth.layers, 24u);
 }
 
-TEST(BenchScenarios, MovingTableHasThreeTechniquesPerLightCount) {
+TEST(BenchScenarios, MovingTableHasThreeTechniquesPerLightCountOnBothRasterisers) {
   const auto moving = select_scenarios(builtin_scenarios(1.0), {"moving/"});
-  ASSERT_EQ(moving.size(), 12u);
+  ASSERT_EQ(moving.size(), 24u);
   for (const char* technique : {"hard", "pcss-11", "ssss-11"}) {
     for (const int lights : {16, 64, 256, 1024}) {
       const std::string name =
           std::string("moving/") + technique + "/1080p/" + std::to_string(lights) + "l";
+      const auto& compute = named(moving, name + "/compute");
+      EXPECT_EQ(compute.rasterizer, "compute");
+      ASSERT_FALSE(compute.overrides.empty());
+      EXPECT_EQ(compute.overrides.back().param, "rasterizer");
+      EXPECT_EQ(compute.overrides.back().value, "compute");
       const auto& s = named(moving, name);
+      EXPECT_EQ(s.rasterizer, "hardware");
       EXPECT_EQ(s.table, "moving");
       EXPECT_EQ(s.lights, lights);
       EXPECT_EQ(s.width, 1920u);
@@ -149,4 +155,16 @@ TEST(BenchScenarios, MovingScenesHaveTheirLightsAfterTheLightCount) {
 }
 
 }  // namespace
+TEST(BenchScenarios, ComputeRowsWriteAnR32fAtlas) {
+  fg::GraphDesc graph;
+  fg::ResourceDesc atlas;
+  atlas.name = "atlas";
+  atlas.format = fg::Format::d32f;
+  graph.resources.push_back(atlas);
+  fit_atlas_format(graph, "hardware");
+  EXPECT_EQ(graph.resources[0].format, fg::Format::d32f);
+  fit_atlas_format(graph, "compute");
+  EXPECT_EQ(graph.resources[0].format, fg::Format::r32f);
+}
+
 }  // namespace antumbra::app

@@ -75,13 +75,16 @@ class AtlasGpuTest : public gpu::testing::GpuTest {
   }
 
   // tests/data/shadows/atlas.json with 256 x 256 faces and the given atlas params.
-  void load(const base::Json& params = base::Json::object()) {
+  // `atlas_format`: "d32f" as in the file, or "r32f" for the compute rasteriser's storage path.
+  void load(const base::Json& params = base::Json::object(),
+            fg::Format atlas_format = fg::Format::d32f) {
     auto document = base::load_json_file((source_dir() / "tests/data/shadows/atlas.json").string());
     ASSERT_TRUE(document.ok());
     auto graph = fg::parse_graph(document.value());
     ASSERT_TRUE(graph.ok());
     for (auto& r : graph.value().resources) {
       if (r.name == "atlas" || r.name == "shadowColour") r.size = {false, 1.0, 1.0, kFace, kFace};
+      if (r.name == "atlas") r.format = atlas_format;
     }
     for (auto& p : graph.value().passes) {
       if (p.name == "shadows") p.params.update(params);
@@ -114,7 +117,9 @@ class AtlasGpuTest : public gpu::testing::GpuTest {
   // Depth of one atlas layer, one float per texel.
   std::vector<float> read_layer(std::uint32_t layer) {
     std::vector<float> texels(std::size_t{kFace} * kFace);
-    read_raw("atlas", VK_IMAGE_ASPECT_DEPTH_BIT, layer, texels.data());
+    const bool depth = fg::is_depth_format(executor_->image("atlas")->graph_format);
+    read_raw("atlas", depth ? VK_IMAGE_ASPECT_DEPTH_BIT : VK_IMAGE_ASPECT_COLOR_BIT, layer,
+             texels.data());
     return texels;
   }
   // One colour-map layer, RGBA8 packed per texel.

@@ -68,7 +68,10 @@ Agreement compare_layers(const std::vector<float>& hardware, const std::vector<f
 }
 
 // Its own suite name: gtest refuses one suite name for fixtures of two translation units.
-class ComputeRasterGpuTest : public AtlasGpuTest {};
+class ComputeRasterGpuTest : public AtlasGpuTest {
+ protected:
+  void expect_agreement(fg::Format compute_format);
+};
 
 // The pass's rule: a light whose range reaches a translucent caster's bounds.
 bool tinted_light(const scene::Scene& scene, std::size_t light) {
@@ -84,8 +87,9 @@ bool tinted_light(const scene::Scene& scene, std::size_t light) {
 }  // namespace
 
 // Every face of every light, drawn by both rasterisers: the depths agree off the edges
-// (the hard shadow test then agrees there too) and the edges are a small share.
-TEST_F(ComputeRasterGpuTest, ComputeRasterAgreesWithHardwareExceptAtEdges) {
+// (the hard shadow test then agrees there too) and the edges are a small share. The
+// compute path writes an r32f atlas by its resolve shader and a d32f one by copies.
+void ComputeRasterGpuTest::expect_agreement(fg::Format compute_format) {
   // Unbiased, so that only rasterisation is compared (the bias formulas of GPUs differ).
   const base::Json every_face{
       {"cullFaces", false}, {"cache", false}, {"depthBias", 0.0}, {"slopeBias", 0.0}};
@@ -99,7 +103,7 @@ TEST_F(ComputeRasterGpuTest, ComputeRasterAgreesWithHardwareExceptAtEdges) {
 
   base::Json compute_params = every_face;
   compute_params["rasterizer"] = "compute";
-  load(compute_params);
+  load(compute_params, compute_format);
   const Counts cs = frame();
   ASSERT_EQ(cs.rendered, 96u);
   Agreement total;
@@ -118,6 +122,14 @@ TEST_F(ComputeRasterGpuTest, ComputeRasterAgreesWithHardwareExceptAtEdges) {
       "mismatched (worst %.4f m)\n",
       total.compared, total.shifted, total.mismatched, static_cast<double>(total.worst));
   EXPECT_LT(total.shifted, total.compared / 100) << "edges are a thin share of the faces";
+}
+
+TEST_F(ComputeRasterGpuTest, StorageAtlasAgreesWithHardwareExceptAtEdges) {
+  expect_agreement(fg::Format::r32f);
+}
+
+TEST_F(ComputeRasterGpuTest, CopiedDepthAtlasAgreesWithHardwareExceptAtEdges) {
+  expect_agreement(fg::Format::d32f);
 }
 
 // The four glass panes tint the colour layers of nearby lights the same way.
@@ -158,7 +170,7 @@ TEST_F(ComputeRasterGpuTest, ComputeRasterTintsLikeHardware) {
 }
 
 TEST_F(ComputeRasterGpuTest, ComputeRasterCachesAndRedrawsAMovedLight) {
-  load(base::Json{{"rasterizer", "compute"}});
+  load(base::Json{{"rasterizer", "compute"}}, fg::Format::r32f);
   const Counts first = frame();
   EXPECT_GT(first.rendered, 0u);
   EXPECT_NEAR(centre_linear_depth(read_layer(6 * kLight + 3), scene_.lights[kLight]), kLightHeight,

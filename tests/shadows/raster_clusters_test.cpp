@@ -119,31 +119,41 @@ const fg::PlanBinding* binding(const fg::Plan& plan, const char* pass, const cha
 
 }  // namespace
 
-TEST(RasterClusters, ComputeRasterizerWritesTheAtlasByTransfers) {
+TEST(RasterClusters, ComputeRasterizerWritesAStorageAtlasOrCopiesIntoADepthOne) {
   const auto hardware = compile_atlas_graph("hardware", "d32f");
   ASSERT_TRUE(hardware.ok()) << hardware.diagnostics().to_text();
   ASSERT_NE(binding(hardware.value(), "shadows", "atlas"), nullptr);
   EXPECT_EQ(binding(hardware.value(), "shadows", "atlas")->access, fg::Access::depth_attachment);
   EXPECT_EQ(binding(hardware.value(), "shadows", "colour")->access, fg::Access::color_attachment);
 
-  const auto compute = compile_atlas_graph("compute", "d32f");
-  ASSERT_TRUE(compute.ok()) << compute.diagnostics().to_text();
+  const auto storage = compile_atlas_graph("compute", "r32f");
+  ASSERT_TRUE(storage.ok()) << storage.diagnostics().to_text();
+  const auto* atlas = binding(storage.value(), "shadows", "atlas");
+  ASSERT_NE(atlas, nullptr);
+  EXPECT_EQ(atlas->access, fg::Access::storage_read_write) << "cached layers are kept";
+  EXPECT_EQ(atlas->stage, fg::Stage::compute);
+  EXPECT_EQ(binding(storage.value(), "shadows", "colour")->access, fg::Access::transfer_dst);
+
+  const auto copied = compile_atlas_graph("compute", "d32f");
+  ASSERT_TRUE(copied.ok()) << copied.diagnostics().to_text();
   for (const char* port : {"atlas", "colour"}) {
-    const auto* b = binding(compute.value(), "shadows", port);
+    const auto* b = binding(copied.value(), "shadows", port);
     ASSERT_NE(b, nullptr) << port;
     EXPECT_EQ(b->access, fg::Access::transfer_dst) << port;
     EXPECT_EQ(b->stage, fg::Stage::transfer) << port;
   }
-  EXPECT_EQ(binding(compute.value(), "shadows", "shadowData")->access, fg::Access::transfer_dst);
+  EXPECT_EQ(binding(copied.value(), "shadows", "shadowData")->access, fg::Access::transfer_dst);
 }
 
-TEST(RasterClusters, ComputeRasterizerRefusesA16BitAtlas) {
+TEST(RasterClusters, AtlasFormatMustSuitTheRasteriser) {
   EXPECT_TRUE(compile_atlas_graph("hardware", "d16").ok());
-  const auto compute = compile_atlas_graph("compute", "d16");
-  ASSERT_FALSE(compute.ok());
-  const base::Diagnostic* d = compute.diagnostics().find("SHD004");
-  ASSERT_NE(d, nullptr) << compute.diagnostics().to_text();
-  EXPECT_NE(d->message.find("d32f"), std::string::npos) << d->message;
-  EXPECT_NE(d->pointer.find("/params/rasterizer"), std::string::npos) << d->pointer;
-  EXPECT_GT(d->line, 0);
+  for (const auto& [rasterizer, format] : {std::pair{"compute", "d16"}, {"hardware", "r32f"}}) {
+    const auto plan = compile_atlas_graph(rasterizer, format);
+    ASSERT_FALSE(plan.ok()) << rasterizer << " " << format;
+    const base::Diagnostic* d = plan.diagnostics().find("SHD004");
+    ASSERT_NE(d, nullptr) << plan.diagnostics().to_text();
+    EXPECT_NE(d->message.find(format), std::string::npos) << d->message;
+    EXPECT_NE(d->pointer.find("/params/rasterizer"), std::string::npos) << d->pointer;
+    EXPECT_GT(d->line, 0);
+  }
 }

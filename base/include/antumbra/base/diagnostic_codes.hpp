@@ -169,7 +169,7 @@ inline constexpr const char* kShadowDataTooSmall =
     "SHD001";  // shadowData smaller than the atlas needs
 inline constexpr const char* kLightsUnshadowed = "SHD002";  // warning: lights do not fit the atlas
 inline constexpr const char* kColourLayers = "SHD003";      // colour map has fewer layers
-inline constexpr const char* kComputeFormat = "SHD004";     // compute rasteriser needs d32f
+inline constexpr const char* kRasterizerFormat = "SHD004";  // atlas format vs the rasteriser
 inline constexpr const char* kFaceStats = "SHD010";         // note: faces culled/drawn/cached
 }  // namespace shadow_atlas
 

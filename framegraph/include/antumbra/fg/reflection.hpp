@@ -133,8 +133,10 @@ struct PortUse {
   Access access = Access::none;
   Stage stage = Stage::none;
 };
-// `params` holds every parameter, defaults filled in. Nothing: the port's declared use.
-using PortUseFn = std::optional<PortUse> (*)(const PortDesc& port, const Json& params);
+// `params` holds every parameter, defaults filled in; `format` is the bound resource's
+// (undefined for a buffer or an unbound port). Nothing: the port's declared use.
+using PortUseFn = std::optional<PortUse> (*)(const PortDesc& port, const Json& params,
+                                             Format format);
 
 struct PassDesc {
   std::string type;  // registry name, e.g. "gbuffer"
@@ -145,8 +147,10 @@ struct PassDesc {
   PassCheck check = nullptr;
   PortUseFn port_use = nullptr;
 
-  // The port's access and stage under parameter `values` (port_use, else as declared).
-  [[nodiscard]] PortUse use_of(const PortDesc& port, const Json& values) const;
+  // The port's access and stage under parameter `values` and the bound resource's format
+  // (port_use, else as declared).
+  [[nodiscard]] PortUse use_of(const PortDesc& port, const Json& values,
+                               Format format = Format::undefined) const;
   [[nodiscard]] const PortDesc* find_port(std::string_view name) const;
   [[nodiscard]] const ParamDesc* find_param(std::string_view name) const;
 };
