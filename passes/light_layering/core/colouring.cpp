@@ -17,6 +17,9 @@ std::span<const std::uint32_t> Colourer::colour(const ConflictGraph& graph, Orde
                                                 std::span<int> colours,
                                                 const ColourLimits& limits) {
   overflow_.clear();
+  // A frame that keeps every light's layer leaves nothing to colour: skip the O(V + E)
+  // vertex order and bookkeeping.
+  if (std::find(colours.begin(), colours.end(), kUncoloured) == colours.end()) return overflow_;
   // Every first free colour is <= degree + reserved count; pre-coloured values may be larger.
   int largest_given = -1;
   for (int c : colours) largest_given = std::max(largest_given, c);
