@@ -1,5 +1,5 @@
 // Per-frame CPU cost of light layering: conflict graph + capped, temporally stable
-// colouring, for the world-sphere and screen-tile criteria. Budget: 1024 lights <= 0.5 ms
+// colouring, for the world-sphere and screen-tile criteria. Budget: 1024 lights <= 0.25 ms
 // on one core. Layouts keep a mean degree near 8, i.e. a scene that fits a handful of
 // layers; denser layouts are the artist's problem (the cap warns).
 #include <benchmark/benchmark.h>

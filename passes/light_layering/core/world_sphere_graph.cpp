@@ -2,10 +2,8 @@
 // in every cell its bounding box reaches; a pair is tested only in the cells both reach and
 // reported from the first of them, so no pair is found twice and no all-pairs pass runs.
 #include <algorithm>
-#include <array>
 #include <bit>
 #include <cmath>
-#include <utility>
 
 #include "antumbra/layering/conflict_graph.hpp"
 #include "graph_internal.hpp"
@@ -19,24 +17,6 @@ using detail::lights_something;
 // Cell spans larger than this per axis make a light "big": it is tested against every
 // other light instead of being inserted into hundreds of cells (e.g. a huge area light).
 constexpr int kMaxCellSpan = 6;
-
-// A light's entry in a cell carries 3 "first" bits: bit k is set when the cell is the
-// first of the light's span along axis k. Two lights that share a cell have it as their
-// first shared cell iff their bits OR to 7. Entries are grouped by these bits within a
-// cell, so only the 14 group pairs below are ever tested: about half the same-cell pairs,
-// and no per-pair check of the bits.
-struct GroupPairs {
-  std::array<std::pair<std::uint32_t, std::uint32_t>, 14> pairs{};
-  std::size_t count = 0;
-};
-constexpr GroupPairs kGroupPairs = [] {
-  GroupPairs g;
-  for (std::uint32_t a = 0; a < 8; ++a)
-    for (std::uint32_t b = a; b < 8; ++b)
-      if ((a | b) == 7u) g.pairs[g.count++] = {a, b};
-  return g;
-}();
-static_assert(kGroupPairs.count == kGroupPairs.pairs.size());
 
 int cell_coord(float p, float inv_cell) {
   return static_cast<int>(std::floor(std::clamp(p * inv_cell, -kMaxCellCoord, kMaxCellCoord)));
@@ -173,6 +153,7 @@ void GraphBuilder::sort_into_groups(std::span<const LightSphere> lights, std::si
   const std::size_t entry_count = entry_group_.size();
   grid_spheres_.resize(entry_count);
   grid_lights_.resize(entry_count);
+  grid_first_.resize(entry_count);
   std::size_t e = 0;
   for (std::size_t i = 0; i < cell_min_.size(); ++i) {
     const glm::ivec3 span = glm::max(cell_max_[i] - cell_min_[i] + 1, glm::ivec3(0));
@@ -181,6 +162,7 @@ void GraphBuilder::sort_into_groups(std::span<const LightSphere> lights, std::si
       const std::uint32_t at = group_start_[entry_group_[e++]]++;
       grid_spheres_[at] = sphere;
       grid_lights_[at] = static_cast<std::uint32_t>(i);
+      grid_first_[at] = static_cast<std::uint8_t>(entry_group_[e - 1] & 7u);
     }
   }
   // The fill advanced each start to the next group's start; shift back.
@@ -188,31 +170,39 @@ void GraphBuilder::sort_into_groups(std::span<const LightSphere> lights, std::si
   group_start_[0] = 0;
 }
 
+// A light's entry in a cell carries 3 "first" bits: bit k is set when the cell is the
+// first of the light's span along axis k. Two lights that share a cell have it as their
+// first shared cell iff their bits OR to 7, so each pair is reported once.
+// Entries are sorted by first bits inside a cell, so an entry's partners (bits that
+// complete its own) start no earlier than the group of its complement: one loop per entry
+// over the rest of the cell, long enough that its exit is predictable (a loop per group
+// pair was shorter and mispredicted more than it saved).
 void GraphBuilder::collect_cell_pairs(std::size_t cells) {
   if (candidates_.size() < grid_spheres_.size()) candidates_.resize(grid_spheres_.size());
   for (std::size_t cell = 0; cell < cells; ++cell) {
     const std::uint32_t* start = &group_start_[cell * 8];
-    for (std::size_t k = 0; k < kGroupPairs.count; ++k) {
-      const auto [ga, gb] = kGroupPairs.pairs[k];
-      if (start[ga] == start[ga + 1] || start[gb] == start[gb + 1]) continue;
-      for (std::uint32_t a = start[ga]; a < start[ga + 1]; ++a)
-        collect_range_pairs(a, ga == gb ? a + 1 : start[gb], start[gb + 1]);
+    const std::uint32_t end = start[8];
+    for (std::uint32_t a = start[0]; a < end; ++a) {
+      const std::uint32_t partners = start[~grid_first_[a] & 7u];
+      collect_range_pairs(a, std::max(a + 1, partners), end);
     }
   }
 }
 
-// Entry a against the entries [begin, end) of a group whose first bits complete a's.
+// Entry a against the later entries [begin, end) of its cell.
 void GraphBuilder::collect_range_pairs(std::uint32_t a, std::uint32_t begin, std::uint32_t end) {
   // Branch-free filter into a candidate list: the test fails or passes unpredictably, and a
   // mispredicted branch per pair costs more than the test itself.
   const GridSphere sa = grid_spheres_[a];
+  const std::uint32_t first_a = grid_first_[a];
   std::uint32_t count = 0;
   for (std::uint32_t b = begin; b < end; ++b) {
     const GridSphere& sb = grid_spheres_[b];
     const glm::vec3 d = sa.position - sb.position;
     const float reach = sa.range + sb.range;
     candidates_[count] = b;
-    count += glm::dot(d, d) < reach * reach ? 1u : 0u;
+    const auto first_shared = static_cast<std::uint32_t>((first_a | grid_first_[b]) == 7u);
+    count += first_shared & static_cast<std::uint32_t>(glm::dot(d, d) < reach * reach);
   }
   for (std::uint32_t k = 0; k < count; ++k) {
     const GridSphere& sb = grid_spheres_[candidates_[k]];

@@ -71,6 +71,7 @@ class GraphBuilder {
   std::vector<std::uint32_t> group_start_;  // 8 groups per cell: entries by first bits
   std::vector<GridSphere> grid_spheres_;    // the entries sorted by group
   std::vector<std::uint32_t> grid_lights_;  // parallel: the light of each entry
+  std::vector<std::uint8_t> grid_first_;    // parallel: its first bits
   std::vector<std::uint32_t> candidates_;
   std::vector<std::uint32_t> bucket_start_;  // screen tiles: lights per bin
   std::vector<glm::ivec4> tile_range_;
