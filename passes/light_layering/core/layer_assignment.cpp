@@ -127,7 +127,8 @@ void Layering::retry_without_history(const ConflictGraph& graph,
   retry_colours_.assign(n, kUncoloured);
   for (std::uint32_t i = 0; i < n; ++i)
     if (lights[i].own_layer) retry_colours_[i] = colours_[i];
-  const auto retry = colourer_.colour(graph, options.order, retry_colours_, limits);
+  const auto retry =
+      colourer_.colour(graph, options.order, retry_colours_, limits, OrderReuse::same_graph);
   if (retry.size() < overflow_.size()) {
     colours_.swap(retry_colours_);
     overflow_.assign(retry.begin(), retry.end());
@@ -148,7 +149,7 @@ int Layering::count_regular_colours(const ConflictGraph& graph, std::span<const 
   const auto n = static_cast<std::uint32_t>(lights.size());
   retry_colours_.assign(n, kUncoloured);
   for (std::uint32_t i : own_layer_) retry_colours_[i] = kExcluded;
-  (void)colourer_.colour(graph, options.order, retry_colours_);
+  (void)colourer_.colour(graph, options.order, retry_colours_, {}, OrderReuse::same_graph);
   cache.valid = true;
   cache.order = options.order;
   cache.own_layer.assign(own_layer_.begin(), own_layer_.end());
