@@ -151,18 +151,24 @@ void GraphBuilder::sort_into_groups(std::span<const LightSphere> lights, std::si
   const std::size_t groups = cells * 8;
   for (std::size_t g = 0; g < groups; ++g) group_start_[g + 1] += group_start_[g];
   const std::size_t entry_count = entry_group_.size();
-  grid_spheres_.resize(entry_count);
+  grid_x_.resize(entry_count);
+  grid_y_.resize(entry_count);
+  grid_z_.resize(entry_count);
+  grid_range_.resize(entry_count);
   grid_lights_.resize(entry_count);
   grid_first_.resize(entry_count);
   std::size_t e = 0;
   for (std::size_t i = 0; i < cell_min_.size(); ++i) {
     const glm::ivec3 span = glm::max(cell_max_[i] - cell_min_[i] + 1, glm::ivec3(0));
-    const GridSphere sphere{lights[i].position, lights[i].range};
+    const LightSphere& l = lights[i];
     for (int k = span.x * span.y * span.z; k > 0; --k) {
       const std::uint32_t at = group_start_[entry_group_[e++]]++;
-      grid_spheres_[at] = sphere;
+      grid_x_[at] = l.position.x;
+      grid_y_[at] = l.position.y;
+      grid_z_[at] = l.position.z;
+      grid_range_[at] = l.range;
       grid_lights_[at] = static_cast<std::uint32_t>(i);
-      grid_first_[at] = static_cast<std::uint8_t>(entry_group_[e - 1] & 7u);
+      grid_first_[at] = entry_group_[e - 1] & 7u;
     }
   }
   // The fill advanced each start to the next group's start; shift back.
@@ -178,7 +184,10 @@ void GraphBuilder::sort_into_groups(std::span<const LightSphere> lights, std::si
 // over the rest of the cell, long enough that its exit is predictable (a loop per group
 // pair was shorter and mispredicted more than it saved).
 void GraphBuilder::collect_cell_pairs(std::size_t cells) {
-  if (candidates_.size() < grid_spheres_.size()) candidates_.resize(grid_spheres_.size());
+  if (candidates_.size() < grid_x_.size()) {
+    candidates_.resize(grid_x_.size());
+    pair_hits_.resize(grid_x_.size());
+  }
   for (std::size_t cell = 0; cell < cells; ++cell) {
     const std::uint32_t* start = &group_start_[cell * 8];
     const std::uint32_t end = start[8];
@@ -189,25 +198,43 @@ void GraphBuilder::collect_cell_pairs(std::size_t cells) {
   }
 }
 
-// Entry a against the later entries [begin, end) of its cell.
+// Entry a against the later entries [begin, end) of its cell. The test passes or fails
+// unpredictably, so there is no branch per pair: a flag per pair from a loop the compiler
+// vectorises, then a branch-free compaction of the flags into candidates.
 void GraphBuilder::collect_range_pairs(std::uint32_t a, std::uint32_t begin, std::uint32_t end) {
-  // Branch-free filter into a candidate list: the test fails or passes unpredictably, and a
-  // mispredicted branch per pair costs more than the test itself.
-  const GridSphere sa = grid_spheres_[a];
+  const float ax = grid_x_[a];
+  const float ay = grid_y_[a];
+  const float az = grid_z_[a];
+  const float ar = grid_range_[a];
   const std::uint32_t first_a = grid_first_[a];
-  std::uint32_t count = 0;
-  for (std::uint32_t b = begin; b < end; ++b) {
-    const GridSphere& sb = grid_spheres_[b];
-    const glm::vec3 d = sa.position - sb.position;
-    const float reach = sa.range + sb.range;
-    candidates_[count] = b;
-    const auto first_shared = static_cast<std::uint32_t>((first_a | grid_first_[b]) == 7u);
-    count += first_shared & static_cast<std::uint32_t>(glm::dot(d, d) < reach * reach);
+  const std::uint32_t tested = end - begin;
+  const float* x = grid_x_.data() + begin;
+  const float* y = grid_y_.data() + begin;
+  const float* z = grid_z_.data() + begin;
+  const float* r = grid_range_.data() + begin;
+  const std::uint32_t* first = grid_first_.data() + begin;
+  std::uint32_t* hits = pair_hits_.data();
+  for (std::uint32_t k = 0; k < tested; ++k) {
+    const float dx = ax - x[k];
+    const float dy = ay - y[k];
+    const float dz = az - z[k];
+    const float reach = ar + r[k];
+    // Summed as glm::dot sums, so that the grid and the brute force agree to the bit.
+    const bool near = dx * dx + dy * dy + dz * dz < reach * reach;
+    hits[k] = static_cast<std::uint32_t>(near & ((first_a | first[k]) == 7u));
   }
+  std::uint32_t count = 0;
+  for (std::uint32_t k = 0; k < tested; ++k) {
+    candidates_[count] = begin + k;
+    count += hits[k];
+  }
+  const glm::vec3 pa(ax, ay, az);
   for (std::uint32_t k = 0; k < count; ++k) {
-    const GridSphere& sb = grid_spheres_[candidates_[k]];
-    edges_.push_back(Edge{grid_lights_[a], grid_lights_[candidates_[k]],
-                          detail::overlap_volume(sa.position, sa.range, sb.position, sb.range)});
+    const std::uint32_t b = candidates_[k];
+    edges_.push_back(
+        Edge{grid_lights_[a], grid_lights_[b],
+             detail::overlap_volume(pa, ar, glm::vec3(grid_x_[b], grid_y_[b], grid_z_[b]),
+                                    grid_range_[b])});
   }
 }
 

@@ -39,11 +39,6 @@ class GraphBuilder {
     std::uint32_t stamp = 0;
     std::uint32_t cell = 0;
   };
-  // What the pair test reads of a light, copied into each of its cells (no indirection).
-  struct GridSphere {
-    glm::vec3 position;
-    float range;
-  };
   struct TileExtent;  // defined in screen_tile_graph.cpp
   struct TileBins;
 
@@ -69,9 +64,15 @@ class GraphBuilder {
   std::uint32_t cell_stamp_ = 0;
   std::vector<std::uint32_t> entry_group_;  // per (light, cell) entry, in light order
   std::vector<std::uint32_t> group_start_;  // 8 groups per cell: entries by first bits
-  std::vector<GridSphere> grid_spheres_;    // the entries sorted by group
-  std::vector<std::uint32_t> grid_lights_;  // parallel: the light of each entry
-  std::vector<std::uint8_t> grid_first_;    // parallel: its first bits
+  // The entries sorted by group, as parallel arrays (one per field) that the pair test
+  // reads in a vectorised loop: each light's sphere copied into each of its cells.
+  std::vector<float> grid_x_;
+  std::vector<float> grid_y_;
+  std::vector<float> grid_z_;
+  std::vector<float> grid_range_;
+  std::vector<std::uint32_t> grid_lights_;  // the light of each entry
+  std::vector<std::uint32_t> grid_first_;   // its first bits
+  std::vector<std::uint32_t> pair_hits_;    // per tested pair: 1 = conflict
   std::vector<std::uint32_t> candidates_;
   std::vector<std::uint32_t> bucket_start_;  // screen tiles: lights per bin
   std::vector<glm::ivec4> tile_range_;
