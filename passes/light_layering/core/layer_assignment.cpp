@@ -187,6 +187,13 @@ void Layering::keep_previous_layers(const ConflictGraph& graph, std::span<const 
   // compact, and no other light holds an own-layer light's (reserved) layer.
   for (std::uint32_t v = 0; v < n; ++v) {
     if (colours_[v] < 0 || lights[v].own_layer) continue;
+    // Most lights have no later neighbour of their colour: a branch-free scan says so
+    // without a mispredicted branch per neighbour.
+    std::uint32_t clash = 0;
+    for (std::uint32_t u : graph.adjacent(v))
+      clash |= static_cast<std::uint32_t>(u > v) &
+               static_cast<std::uint32_t>(colours_[u] == colours_[v]);
+    if (clash == 0) continue;
     for (std::uint32_t u : graph.adjacent(v)) {
       if (u <= v || colours_[u] != colours_[v] || lights[u].own_layer) continue;
       const bool v_yields = motion(v) > motion(u);
