@@ -190,6 +190,33 @@ TEST(Temporal, RemovedAndAddedLightsKeepOthersByIdNotIndex) {
   EXPECT_TRUE(second.warnings.empty());
 }
 
+// With history, layers_needed comes from a fresh colouring that Layering skips while the
+// graph's structure and the own-layer lights stay the same; every change must redo it.
+TEST(Temporal, LayersNeededFollowsEveryGraphAndOwnLayerChange) {
+  std::vector<LightSphere> lights{
+      testing::make_light(1, {0, 0, 0}, 1.0f), testing::make_light(2, {1, 0, 0}, 1.0f),
+      testing::make_light(3, {0.5f, 0.8f, 0}, 1.0f), testing::make_light(4, {9, 0, 0}, 1.0f)};
+  const LayeringOptions options{Order::dsatur, kMaxLayers, CapPolicy::least_conflict};
+  Layering layering;
+  auto expect_fresh_count = [&](int expected) {
+    const int needed = layering.update_world_sphere(lights, options).layers_needed;
+    Layering fresh;
+    EXPECT_EQ(needed, fresh.assign(layering.graph(), lights, options, nullptr).layers_needed);
+    EXPECT_EQ(needed, expected);
+  };
+  expect_fresh_count(3);                     // a triangle
+  expect_fresh_count(3);                     // the same frame again: from the skipped colouring
+  lights[3].position = {1.5f, -0.8f, 0.0f};  // the fourth light joins: K4
+  lights[3].range = 1.2f;
+  expect_fresh_count(4);
+  lights[2].own_layer = true;      // same graph; one light of K4 now has its own layer
+  expect_fresh_count(4);           // 1 own + 3 regular
+  lights[3].position = {9, 0, 0};  // back to a triangle, still with the own-layer light
+  expect_fresh_count(3);           // 1 own + 2 regular
+  lights[2].own_layer = false;
+  expect_fresh_count(3);
+}
+
 TEST(Temporal, StaleLayersAboveANewCapAreRecoloured) {
   const auto lights = testing::random_layout(5, 120, 6.0f);
   const ConflictGraph graph = build_world_sphere_graph(lights);

@@ -97,6 +97,44 @@ TEST(Colouring, RandomLayoutsAreProperAndWithinGreedyBound) {
   }
 }
 
+// Half the vertices keep a colour (a frame with history), the rest are coloured.
+std::vector<int> partly_coloured(const ConflictGraph& graph) {
+  const std::vector<int> full = colour(graph, Order::first_fit);
+  std::vector<int> colours(full.size(), kUncoloured);
+  for (std::size_t v = 0; v < colours.size(); v += 2) colours[v] = full[v];
+  return colours;
+}
+
+// OrderReuse::same_graph reuses the vertex order only where the previous call computed it
+// for this order: a call that colours nothing, or another order, must not leave an order
+// that a later same-graph call trusts.
+TEST(Colouring, ReusedOrderEqualsAFreshOne) {
+  const ConflictGraph a = build_world_sphere_graph(testing::random_layout(7, 300, 10.0f));
+  const ConflictGraph b = build_world_sphere_graph(testing::random_layout(8, 300, 10.0f));
+  ASSERT_EQ(a.vertex_count(), b.vertex_count());
+  for (Order order : kAllOrders) {
+    const std::vector<int> expected_full = colour(b, order);
+    std::vector<int> expected_part = partly_coloured(b);
+    (void)Colourer{}.colour(b, order, expected_part);
+
+    Colourer colourer;
+    std::vector<int> colours(a.vertex_count(), kUncoloured);
+    (void)colourer.colour(a, order, colours);  // leaves a's order behind
+    (void)colourer.colour(b, order, colours);  // all coloured: returns before ordering
+    std::vector<int> full(b.vertex_count(), kUncoloured);
+    (void)colourer.colour(b, order, full, {}, OrderReuse::same_graph);
+    EXPECT_EQ(full, expected_full) << to_string(order);
+    for (Order other : kAllOrders) {  // b's order for `other`, then `order` again
+      std::vector<int> scratch(b.vertex_count(), kUncoloured);
+      (void)colourer.colour(b, other, scratch, {}, OrderReuse::same_graph);
+      EXPECT_EQ(scratch, colour(b, other)) << to_string(other) << " after " << to_string(order);
+      std::vector<int> part = partly_coloured(b);
+      (void)colourer.colour(b, order, part, {}, OrderReuse::same_graph);
+      EXPECT_EQ(part, expected_part) << to_string(order) << " after " << to_string(other);
+    }
+  }
+}
+
 // The seed colours in increasing degree order; measure it against the classic orders on
 // random many-light layouts. Kept as a test so that a regression in an order shows up.
 TEST(Colouring, OrderComparisonOnRandomLayouts) {

@@ -31,6 +31,31 @@ TEST(WorldSphereGraph, GridMatchesAllPairsOnRandomLayouts) {
   }
 }
 
+// Weights are compared bit for bit: the grid finds each pair once, in either order, and the
+// lens volume must not depend on which. One builder serves layouts that grow, shrink and
+// jump far apart (sparse cells, negative coordinates), as frames would.
+TEST(WorldSphereGraph, GridWeightsAreExactLensVolumesAcrossReusedBuilds) {
+  GraphBuilder builder;
+  for (std::uint32_t seed = 0; seed < 10; ++seed) {
+    const std::size_t count = seed % 2 == 0 ? 400 : 37;
+    auto lights = testing::random_layout(seed + 100, count, 3.0f + static_cast<float>(seed), 0.6f);
+    for (std::size_t i = 0; i < count; i += 5)  // a far cluster and a mirrored one
+      lights[i].position = (seed % 3 == 0 ? -1.0f : 1.0f) * (lights[i].position + 5000.0f);
+    const ConflictGraph& grid = builder.build_world_sphere(lights);
+    const ConflictGraph reference = build_world_sphere_graph_brute_force(lights);
+    expect_same_edges(grid, reference);
+    ASSERT_GT(grid.edge_count(), count / 4);
+    for (std::uint32_t v = 0; v < grid.vertex_count(); ++v) {
+      for (std::size_t k = 0; k < grid.degree(v); ++k) {
+        const LightSphere& a = lights[v];
+        const LightSphere& b = lights[grid.adjacent(v)[k]];
+        EXPECT_EQ(grid.adjacent_weights(v)[k],
+                  sphere_overlap_volume(a.position, a.range, b.position, b.range));
+      }
+    }
+  }
+}
+
 TEST(WorldSphereGraph, InfiniteRangeConflictsWithEveryLight) {
   auto lights = testing::demo_grid();
   lights.push_back(testing::make_light(1, {0, 50, 0}, INFINITY, true));

@@ -14,9 +14,13 @@ bool is_reserved(const ColourLimits& limits, int c) {
 }  // namespace
 
 std::span<const std::uint32_t> Colourer::colour(const ConflictGraph& graph, Order order,
-                                                std::span<int> colours,
-                                                const ColourLimits& limits) {
+                                                std::span<int> colours, const ColourLimits& limits,
+                                                OrderReuse reuse) {
   overflow_.clear();
+  if (reuse == OrderReuse::recompute) order_valid_ = false;
+  // A frame that keeps every light's layer leaves nothing to colour: skip the O(V + E)
+  // vertex order and bookkeeping.
+  if (std::find(colours.begin(), colours.end(), kUncoloured) == colours.end()) return overflow_;
   // Every first free colour is <= degree + reserved count; pre-coloured values may be larger.
   int largest_given = -1;
   for (int c : colours) largest_given = std::max(largest_given, c);
@@ -27,10 +31,21 @@ std::span<const std::uint32_t> Colourer::colour(const ConflictGraph& graph, Orde
   if (order == Order::dsatur) {
     colour_dsatur(graph, colours, limits);
   } else {
-    compute_static_order(graph, order);
+    prepare_static_order(graph, order);
     colour_greedy(graph, colours, limits);
   }
   return overflow_;
+}
+
+void Colourer::prepare_static_order(const ConflictGraph& graph, Order order) {
+  const Order wanted = order == Order::dsatur ? Order::smallest_last : order;
+  const auto n = static_cast<std::uint32_t>(graph.vertex_count());
+  if (order_valid_ && ordered_as_ == wanted && order_.size() == n) return;
+  compute_static_order(graph, wanted);
+  rank_.resize(n);
+  for (std::uint32_t i = 0; i < n; ++i) rank_[order_[i]] = i;
+  order_valid_ = true;
+  ordered_as_ = wanted;
 }
 
 void Colourer::compute_static_order(const ConflictGraph& graph, Order order) {
@@ -137,82 +152,104 @@ void Colourer::colour_greedy(const ConflictGraph& graph, std::span<int> colours,
 
 void Colourer::colour_dsatur(const ConflictGraph& graph, std::span<int> colours,
                              const ColourLimits& limits) {
-  const auto n = static_cast<std::uint32_t>(graph.vertex_count());
-  const std::size_t words = (colour_bound_ + 63) / 64;
-  seen_colours_.assign(static_cast<std::size_t>(n) * words, 0);
-  saturation_.assign(n, 0);
-  done_.assign(n, 0);
-  auto mark = [&](std::uint32_t u, int c) {
-    if (c < 0 || static_cast<std::size_t>(c) >= words * 64) return false;
-    std::uint64_t& word = seen_colours_[u * words + static_cast<std::size_t>(c) / 64];
-    const std::uint64_t bit = std::uint64_t{1} << (c % 64);
-    if ((word & bit) != 0) return false;
-    word |= bit;
-    ++saturation_[u];
-    return true;
-  };
-  std::uint32_t remaining = 0;
-  for (std::uint32_t v = 0; v < n; ++v) {
-    if (colours[v] == kUncoloured) {
-      ++remaining;
-      continue;
-    }
-    done_[v] = 1;
-    for (std::uint32_t u : graph.adjacent(v)) mark(u, colours[v]);
-  }
+  init_saturation(graph, colours);
   // Ties on saturation go to the vertex that smallest-last would colour first. Measured on
   // random light layouts (OrderComparison test) this slightly beats Brelaz's "most
   // uncoloured neighbours" tie-break and matches or beats smallest-last alone, whose
   // degeneracy order suits these near-planar geometric graphs. Costs one O(V + E) pass.
-  compute_static_order(graph, Order::smallest_last);
-  // Bucket queue: one bitset over tie-break ranks per saturation level. Saturation only
-  // grows, so a vertex moves up one level per new neighbour colour (O(1)); a pop scans
-  // the top level's n/64 words. No heap, no stale entries.
-  const std::size_t rank_words = (n + 63) / 64;
-  const std::size_t levels = graph.max_degree() + 2;
-  level_bits_.assign(levels * rank_words, 0);
-  level_count_.assign(levels, 0);
-  rank_.resize(n);
-  for (std::uint32_t i = 0; i < n; ++i) rank_[order_[i]] = i;
-  auto flip = [&](std::uint32_t v, std::uint32_t level) {
-    level_bits_[level * rank_words + rank_[v] / 64] ^= std::uint64_t{1} << (rank_[v] % 64);
-  };
-  std::uint32_t top = 0;
-  for (std::uint32_t v = 0; v < n; ++v) {
-    if (done_[v]) continue;
-    flip(v, saturation_[v]);
-    ++level_count_[saturation_[v]];
-    top = std::max(top, saturation_[v]);
-  }
-  for (; remaining > 0; --remaining) {
+  prepare_static_order(graph, Order::dsatur);
+  std::uint32_t top = init_dsatur_queue(graph);
+  for (std::size_t remaining = uncoloured_.size(); remaining > 0; --remaining) {
     while (level_count_[top] == 0) --top;
-    const std::uint64_t* bits = &level_bits_[top * rank_words];
+    std::uint64_t* bits = &level_bits_[top * rank_words_];
     std::size_t w = 0;
     while (bits[w] == 0) ++w;
     const std::uint32_t v = order_[w * 64 + static_cast<std::size_t>(std::countr_zero(bits[w]))];
-    flip(v, top);
+    bits[w] &= bits[w] - 1;
     --level_count_[top];
     done_[v] = 1;
     int c = kUncoloured;
-    const std::uint64_t* seen = &seen_colours_[v * words];
-    for (std::size_t k = 0; k < words && c == kUncoloured; ++k) {
+    const std::uint64_t* seen = &seen_colours_[v * seen_words_];
+    for (std::size_t k = 0; k < seen_words_ && c == kUncoloured; ++k) {
       std::uint64_t free_bits = ~seen[k];
       if (k == 0) free_bits &= ~std::uint64_t{limits.reserved};
       if (free_bits != 0) c = static_cast<int>(k * 64) + std::countr_zero(free_bits);
     }
     if (c == kUncoloured || c >= limits.max_colours) c = place_overflow(graph, v, colours, limits);
     colours[v] = c;
-    if (c == kUncoloured) continue;
-    for (std::uint32_t u : graph.adjacent(v)) {
-      if (done_[u] || !mark(u, c)) continue;
-      const std::uint32_t level = saturation_[u];
-      flip(u, level - 1);
-      --level_count_[level - 1];
-      flip(u, level);
-      ++level_count_[level];
-      top = std::max(top, level);
-    }
+    if (c != kUncoloured) top = std::max(top, raise_saturation(graph, v, c));
   }
+}
+
+void Colourer::init_saturation(const ConflictGraph& graph, std::span<const int> colours) {
+  const auto n = static_cast<std::uint32_t>(graph.vertex_count());
+  seen_words_ = (colour_bound_ + 63) / 64;
+  seen_colours_.assign(static_cast<std::size_t>(n) * seen_words_, 0);
+  saturation_.assign(n, 0);
+  done_.assign(n, 1);
+  uncoloured_.clear();
+  for (std::uint32_t v = 0; v < n; ++v) {
+    if (colours[v] != kUncoloured) continue;
+    uncoloured_.push_back(v);
+    done_[v] = 0;
+  }
+  auto mark = [&](std::uint32_t u, int c) {
+    if (c < 0 || static_cast<std::size_t>(c) >= seen_words_ * 64) return;
+    std::uint64_t& word = seen_colours_[u * seen_words_ + static_cast<std::size_t>(c) / 64];
+    const std::uint64_t bit = std::uint64_t{1} << (c % 64);
+    saturation_[u] += static_cast<std::uint32_t>((word & bit) == 0);
+    word |= bit;
+  };
+  // Only uncoloured vertices need their neighbour colours. With history most vertices are
+  // coloured, and the few uncoloured ones read their neighbours; a fresh colouring has
+  // (nearly) no coloured vertex, and those few write to their neighbours instead.
+  if (uncoloured_.size() * 2 < n) {
+    for (std::uint32_t v : uncoloured_)
+      for (std::uint32_t u : graph.adjacent(v)) mark(v, colours[u]);
+    return;
+  }
+  for (std::uint32_t v = 0; v < n; ++v)
+    if (done_[v] != 0)
+      for (std::uint32_t u : graph.adjacent(v)) mark(u, colours[v]);
+}
+
+// Bucket queue: one bitset over tie-break ranks per saturation level. Saturation only
+// grows, so a vertex moves up one level per new neighbour colour (O(1)); a pop scans
+// the top level's n/64 words. No heap, no stale entries. Returns the top level.
+std::uint32_t Colourer::init_dsatur_queue(const ConflictGraph& graph) {
+  const std::size_t n = graph.vertex_count();
+  rank_words_ = (n + 63) / 64;
+  const std::size_t levels = graph.max_degree() + 2;
+  level_bits_.assign(levels * rank_words_, 0);
+  level_count_.assign(levels, 0);
+  std::uint32_t top = 0;
+  for (std::uint32_t v : uncoloured_) {
+    const std::uint32_t level = saturation_[v];
+    level_bits_[level * rank_words_ + rank_[v] / 64] |= std::uint64_t{1} << (rank_[v] % 64);
+    ++level_count_[level];
+    top = std::max(top, level);
+  }
+  return top;
+}
+
+std::uint32_t Colourer::raise_saturation(const ConflictGraph& graph, std::uint32_t v, int c) {
+  const std::size_t word = static_cast<std::size_t>(c) / 64;
+  const std::uint64_t bit = std::uint64_t{1} << (c % 64);
+  std::uint32_t top = 0;
+  for (std::uint32_t u : graph.adjacent(v)) {
+    std::uint64_t& seen = seen_colours_[u * seen_words_ + word];
+    if (done_[u] != 0 || (seen & bit) != 0) continue;
+    seen |= bit;
+    const std::uint32_t from = saturation_[u]++;
+    const std::uint32_t r = rank_[u];
+    const std::uint64_t flip = std::uint64_t{1} << (r % 64);
+    level_bits_[from * rank_words_ + r / 64] ^= flip;
+    level_bits_[(from + 1) * rank_words_ + r / 64] ^= flip;
+    --level_count_[from];
+    ++level_count_[from + 1];
+    top = std::max(top, from + 1);
+  }
+  return top;
 }
 
 std::vector<int> colour(const ConflictGraph& graph, Order order) {

@@ -127,7 +127,8 @@ void Layering::retry_without_history(const ConflictGraph& graph,
   retry_colours_.assign(n, kUncoloured);
   for (std::uint32_t i = 0; i < n; ++i)
     if (lights[i].own_layer) retry_colours_[i] = colours_[i];
-  const auto retry = colourer_.colour(graph, options.order, retry_colours_, limits);
+  const auto retry =
+      colourer_.colour(graph, options.order, retry_colours_, limits, OrderReuse::same_graph);
   if (retry.size() < overflow_.size()) {
     colours_.swap(retry_colours_);
     overflow_.assign(retry.begin(), retry.end());
@@ -140,34 +141,62 @@ int Layering::count_regular_colours(const ConflictGraph& graph, std::span<const 
                                     const LayeringOptions& options, std::uint32_t reserved,
                                     bool colouring_is_fresh) {
   if (colouring_is_fresh) return distinct_regular_colours(colours_, reserved);
+  list_own_layer_lights(lights);
+  RegularCount& cache = regular_count_;
+  if (cache.valid && cache.order == options.order && cache.own_layer == own_layer_ &&
+      cache.offsets == graph.offsets && cache.neighbours == graph.neighbours)
+    return cache.count;
   const auto n = static_cast<std::uint32_t>(lights.size());
   retry_colours_.assign(n, kUncoloured);
-  for (std::uint32_t i = 0; i < n; ++i)
-    if (lights[i].own_layer) retry_colours_[i] = kExcluded;
-  (void)colourer_.colour(graph, options.order, retry_colours_);
-  return colour_count(retry_colours_);
+  for (std::uint32_t i : own_layer_) retry_colours_[i] = kExcluded;
+  (void)colourer_.colour(graph, options.order, retry_colours_, {}, OrderReuse::same_graph);
+  cache.valid = true;
+  cache.order = options.order;
+  cache.own_layer.assign(own_layer_.begin(), own_layer_.end());
+  cache.offsets.assign(graph.offsets.begin(), graph.offsets.end());
+  cache.neighbours.assign(graph.neighbours.begin(), graph.neighbours.end());
+  cache.count = colour_count(retry_colours_);
+  return cache.count;
+}
+
+void Layering::list_own_layer_lights(std::span<const LightSphere> lights) {
+  own_layer_.clear();
+  for (std::size_t i = 0; i < lights.size(); ++i)
+    if (lights[i].own_layer) own_layer_.push_back(static_cast<std::uint32_t>(i));
 }
 
 void Layering::keep_previous_layers(const ConflictGraph& graph, std::span<const LightSphere> lights,
                                     const PreviousAssignment& previous, int cap,
                                     std::uint32_t reserved) {
   const auto n = static_cast<std::uint32_t>(lights.size());
-  motion_.assign(n, 0.0f);
+  kept_entry_.assign(n, nullptr);
   for (std::uint32_t i = 0; i < n; ++i) {
     if (lights[i].own_layer) continue;
     const PreviousAssignment::Entry* e = previous.find(lights[i].id, i);
     if (!e || e->layer < 0 || e->layer >= cap || ((reserved >> e->layer) & 1u)) continue;
     colours_[i] = e->layer;
-    motion_[i] =
-        glm::length(lights[i].position - e->position) + std::abs(lights[i].range - e->range);
+    kept_entry_[i] = e;
   }
+  // Only lights in a conflict need their motion: most frames have none.
+  auto motion = [&](std::uint32_t i) {
+    const PreviousAssignment::Entry& e = *kept_entry_[i];
+    return glm::length(lights[i].position - e.position) + std::abs(lights[i].range - e.range);
+  };
   // Two neighbours that both kept one layer now conflict: the one that moved more (ties:
-  // the later index) gives its layer up and is recoloured.
+  // the later index) gives its layer up and is recoloured. Colours first: they are
+  // compact, and no other light holds an own-layer light's (reserved) layer.
   for (std::uint32_t v = 0; v < n; ++v) {
-    if (lights[v].own_layer || colours_[v] < 0) continue;
+    if (colours_[v] < 0 || lights[v].own_layer) continue;
+    // Most lights have no later neighbour of their colour: a branch-free scan says so
+    // without a mispredicted branch per neighbour.
+    std::uint32_t clash = 0;
+    for (std::uint32_t u : graph.adjacent(v))
+      clash |= static_cast<std::uint32_t>(u > v) &
+               static_cast<std::uint32_t>(colours_[u] == colours_[v]);
+    if (clash == 0) continue;
     for (std::uint32_t u : graph.adjacent(v)) {
-      if (u <= v || lights[u].own_layer || colours_[u] != colours_[v]) continue;
-      const bool v_yields = motion_[v] > motion_[u];
+      if (u <= v || colours_[u] != colours_[v] || lights[u].own_layer) continue;
+      const bool v_yields = motion(v) > motion(u);
       colours_[v_yields ? v : u] = kUncoloured;
       if (v_yields) break;
     }

@@ -27,6 +27,13 @@ struct ColourLimits {
   CapPolicy policy = CapPolicy::fallback;
 };
 
+// Several colourings of one graph in a row (a frame's capped colouring, then its fresh
+// layer count) share the vertex order, which costs about as much as a colouring.
+enum class OrderReuse {
+  recompute,   // the graph may differ from the previous call's
+  same_graph,  // the previous call saw this graph, unchanged since
+};
+
 // Scratch space for repeated colourings (per frame); reuse one per thread.
 class Colourer {
  public:
@@ -35,14 +42,23 @@ class Colourer {
   // the vertices that found no free colour below limits.max_colours, in the order met; the
   // span stays valid until the next call.
   std::span<const std::uint32_t> colour(const ConflictGraph& graph, Order order,
-                                        std::span<int> colours, const ColourLimits& limits = {});
+                                        std::span<int> colours, const ColourLimits& limits = {},
+                                        OrderReuse reuse = OrderReuse::recompute);
 
  private:
+  // order_ for `order` (DSatur: its smallest-last tie-break), unless already there.
+  void prepare_static_order(const ConflictGraph& graph, Order order);
   void compute_static_order(const ConflictGraph& graph, Order order);
   void colour_greedy(const ConflictGraph& graph, std::span<int> colours,
                      const ColourLimits& limits);
   void colour_dsatur(const ConflictGraph& graph, std::span<int> colours,
                      const ColourLimits& limits);
+  // DSatur's start: neighbour colours of the uncoloured vertices, then the bucket queue.
+  void init_saturation(const ConflictGraph& graph, std::span<const int> colours);
+  std::uint32_t init_dsatur_queue(const ConflictGraph& graph);
+  // Colour c given to v: its uncoloured neighbours gain c, and a level when c is new.
+  // Returns the highest level a neighbour reached.
+  std::uint32_t raise_saturation(const ConflictGraph& graph, std::uint32_t v, int c);
   // Smallest colour no neighbour holds (nor reserved); may be >= limits.max_colours.
   int first_free_colour(const ConflictGraph& graph, std::uint32_t v, std::span<const int> colours,
                         const ColourLimits& limits);
@@ -51,6 +67,8 @@ class Colourer {
                      const ColourLimits& limits);
 
   std::vector<std::uint32_t> order_;
+  bool order_valid_ = false;  // order_ and rank_ belong to ordered_as_ on the last graph
+  Order ordered_as_ = Order::first_fit;
   std::vector<std::uint32_t> degree_;
   std::vector<std::uint32_t> position_;
   std::vector<std::uint32_t> bin_;
@@ -60,6 +78,9 @@ class Colourer {
   std::vector<std::uint64_t> level_bits_;  // DSatur bucket queue
   std::vector<std::uint32_t> level_count_;
   std::vector<std::uint64_t> seen_colours_;  // DSatur: per-vertex bitset of neighbour colours
+  std::size_t seen_words_ = 0;               // per vertex
+  std::size_t rank_words_ = 0;               // per level of the bucket queue
+  std::vector<std::uint32_t> uncoloured_;
   std::vector<std::uint32_t> saturation_;
   std::vector<std::uint32_t> rank_;
   std::vector<std::uint8_t> done_;

@@ -32,21 +32,22 @@ class GraphBuilder {
     std::uint32_t b;
     float weight;
   };
-  // One light in one grid cell, with a copy of what the pair test needs (no indirection).
-  struct CellEntry {
-    glm::vec3 position;
-    float range;
-    std::uint64_t key;  // packed cell coordinates
-    std::uint32_t light;
-    std::uint32_t first;  // bit k: first cell of the light's span along axis k
+  // A slot of the open-addressing table from packed cell coordinates to dense cell ids; a
+  // slot is live only while it carries the current build's stamp.
+  struct CellSlot {
+    std::uint64_t key = 0;
+    std::uint32_t stamp = 0;
+    std::uint32_t cell = 0;
   };
-  struct TileExtent;  // defined in conflict_graph.cpp
+  struct TileExtent;  // defined in screen_tile_graph.cpp
   struct TileBins;
 
   // The steps of build_world_sphere, in order.
   std::size_t assign_cells(std::span<const LightSphere> lights, float inv_cell);
-  std::size_t sort_into_buckets(std::span<const LightSphere> lights, std::size_t entry_count);
-  void collect_cell_pairs(std::size_t buckets);
+  std::size_t index_cells(std::size_t entry_count);
+  void sort_into_groups(std::span<const LightSphere> lights, std::size_t cells);
+  void collect_cell_pairs(std::size_t cells);
+  void collect_range_pairs(std::uint32_t a, std::uint32_t begin, std::uint32_t end);
   void collect_big_light_pairs(std::span<const LightSphere> lights);
   // The steps of build_screen_tile, in order.
   TileExtent assign_tile_ranges(std::span<const ScreenRect> rects, const TileParams& params);
@@ -59,9 +60,21 @@ class GraphBuilder {
   std::vector<glm::ivec3> cell_min_;
   std::vector<glm::ivec3> cell_max_;
   std::vector<std::uint32_t> big_lights_;
-  std::vector<std::uint32_t> bucket_start_;
-  std::vector<CellEntry> entries_;
+  std::vector<CellSlot> cell_table_;
+  std::uint32_t cell_stamp_ = 0;
+  std::vector<std::uint32_t> entry_group_;  // per (light, cell) entry, in light order
+  std::vector<std::uint32_t> group_start_;  // 8 groups per cell: entries by first bits
+  // The entries sorted by group, as parallel arrays (one per field) that the pair test
+  // reads in a vectorised loop: each light's sphere copied into each of its cells.
+  std::vector<float> grid_x_;
+  std::vector<float> grid_y_;
+  std::vector<float> grid_z_;
+  std::vector<float> grid_range_;
+  std::vector<std::uint32_t> grid_lights_;  // the light of each entry
+  std::vector<std::uint32_t> grid_first_;   // its first bits
+  std::vector<std::uint32_t> pair_hits_;    // per tested pair: 1 = conflict
   std::vector<std::uint32_t> candidates_;
+  std::vector<std::uint32_t> bucket_start_;  // screen tiles: lights per bin
   std::vector<glm::ivec4> tile_range_;
   std::vector<std::uint32_t> tile_lights_;
   std::vector<std::uint32_t> scratch_offsets_;

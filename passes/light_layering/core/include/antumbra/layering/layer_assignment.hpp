@@ -112,15 +112,31 @@ class Layering {
                     std::span<const std::uint32_t> overflow, int cap, std::uint32_t reserved,
                     CapPolicy policy);
 
+  // The last fresh, uncapped colour count (layers_needed without own layers) and all it
+  // depends on: the graph's structure, which lights have their own layer, the order. Edge
+  // weights play no part without a cap. Lights that move without making or breaking an
+  // overlap leave it valid, so most frames with history skip a whole colouring.
+  struct RegularCount {
+    bool valid = false;
+    Order order = Order::dsatur;
+    std::vector<std::uint32_t> offsets;
+    std::vector<std::uint32_t> neighbours;
+    std::vector<std::uint32_t> own_layer;  // the lights with an own layer, ascending
+    int count = 0;
+  };
+  void list_own_layer_lights(std::span<const LightSphere> lights);
+
   GraphBuilder builder_;
   Colourer colourer_;
+  RegularCount regular_count_;
+  std::vector<std::uint32_t> own_layer_;
   LayerAssignment result_;
   PreviousAssignment previous_;
   std::vector<int> colours_;
   std::vector<int> retry_colours_;
   std::vector<std::uint32_t> overflow_;
   std::vector<std::uint32_t> own_overflow_;
-  std::vector<float> motion_;
+  std::vector<const PreviousAssignment::Entry*> kept_entry_;  // per light, when kept
 };
 
 // One-shot wrapper around Layering::assign.
