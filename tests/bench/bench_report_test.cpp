@@ -99,9 +99,12 @@ TEST(LongCsv, OneRowPerScenarioAndPassPlusTheFrame) {
   EXPECT_EQ(split(lines[2], ',')[12], "\"odd,name\"");
   EXPECT_EQ(
       lines[3],
-      "table1/pcss-11/180p,table1,pcss,11,320,180,256,16,0,atrium.json,ok,frame,,4.5,4,5.5,60");
-  EXPECT_EQ(lines[4],
-            "table1/ssss-11/180p,table1,pcss,11,320,180,256,16,0,atrium.json,invalid,frame,,,,,0");
+      "table1/pcss-11/180p,table1,pcss,11,320,180,256,16,0,atrium.json,hardware,ok,frame,,4.5,4,"
+      "5.5,60");
+  EXPECT_EQ(
+      lines[4],
+      "table1/ssss-11/180p,table1,pcss,11,320,180,256,16,0,atrium.json,hardware,invalid,frame,"
+      ",,,,0");
 }
 
 TEST(ResultsJson, CarriesTheSameNumbers) {
