@@ -17,7 +17,7 @@ namespace {
 // Scratch bounds per chunk: depth texels and work items. A frame that asks for more
 // faces is rasterised in several rounds through the same buffers.
 constexpr VkDeviceSize kMaxScratchBytes = VkDeviceSize{256} << 20;
-constexpr VkDeviceSize kMaxItems = VkDeviceSize{16} << 20;
+constexpr VkDeviceSize kMaxItems = VkDeviceSize{32} << 20;
 constexpr std::uint32_t kClearDepthBits = 0x3F800000u;  // 1.0f
 constexpr std::uint32_t kClearTint = 0xFFFFFFFFu;       // white, nearest distance 1
 

@@ -16,7 +16,10 @@ const uint kRasterGroup = 128;
 // Square screen regions a work item covers: a cluster whose projection spans several
 // regions becomes one item per region, so no workgroup loops over a whole 1024^2 face
 // for one large triangle.
-const uint kRasterRegionShift = 8;
+const uint kRasterRegionShift = 7;
+// An item's region when its cluster's projection fits in one region's size: the whole
+// face, so that a small cluster straddling region borders is not drawn several times.
+const uint kRegionWholeFace = 0xFFFF;
 // Work lists: opaque casters into depth, translucent casters into the tint.
 const uint kListDepth = 0;
 const uint kListTint = 1;

@@ -91,7 +91,8 @@ void main() {
   uvec2 r0 = uvec2(lo) >> kRasterRegionShift;
   uvec2 r1 = uvec2(hi) >> kRasterRegionShift;
   uint regions_x = (uint(size) + (1u << kRasterRegionShift) - 1u) >> kRasterRegionShift;
-  uint count = (r1.x - r0.x + 1u) * (r1.y - r0.y + 1u);
+  bool small = bounded && all(lessThanEqual(hi - lo, vec2(float(1u << kRasterRegionShift))));
+  uint count = small ? 1u : (r1.x - r0.x + 1u) * (r1.y - r0.y + 1u);
   uint first = atomicAdd(counts[list], count);
   uint capacity = list == kListDepth ? capacity_depth : capacity_tint;
   if (first + count > capacity) {
@@ -99,6 +100,10 @@ void main() {
     return;
   }
   uint base = list == kListDepth ? 0u : capacity_depth;
+  if (small) {
+    items[base + first] = uvec2(c, f | (kRegionWholeFace << 16));
+    return;
+  }
   uint k = 0u;
   for (uint ry = r0.y; ry <= r1.y; ++ry) {
     for (uint rx = r0.x; rx <= r1.x; ++rx) {

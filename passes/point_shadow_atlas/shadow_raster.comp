@@ -202,6 +202,7 @@ void main() {
   uint regions_x = (g_size + region_size - 1u) / region_size;
   ivec2 region_lo = ivec2(uvec2(region % regions_x, region / regions_x) * region_size);
   ivec4 box = ivec4(region_lo, min(region_lo + int(region_size) - 1, ivec2(int(g_size) - 1)));
+  if (region == kRegionWholeFace) box = ivec4(0, 0, ivec2(int(g_size) - 1));
   vec4 t = materials[cluster.info.w].transmittance;
   g_tint = mix(vec3(1.0), clamp(t.rgb, 0.0, 1.0), clamp(t.a, 0.0, 1.0));
 
