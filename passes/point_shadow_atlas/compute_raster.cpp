@@ -35,7 +35,8 @@ gpu::DescriptorSetLayoutBuilder raster_bindings() {
         shared::kRasterTint, shared::kRasterMaterials}) {
     b.storage_buffer(binding, VK_SHADER_STAGE_COMPUTE_BIT);
   }
-  b.storage_image(shared::kRasterAtlas, VK_SHADER_STAGE_COMPUTE_BIT);
+  b.storage_image(shared::kRasterAtlas, VK_SHADER_STAGE_COMPUTE_BIT)
+      .storage_image(shared::kRasterColour, VK_SHADER_STAGE_COMPUTE_BIT);
   return b;
 }
 
@@ -86,14 +87,22 @@ void ComputeRasterizer::prepare(fgvk::PrepareContext& context,
                                 std::vector<std::string>& shader_files, gpu::Fnv1a64& key) {
   const gpu::DescriptorSetLayoutBuilder bindings = raster_bindings();
   const auto push = static_cast<std::uint32_t>(sizeof(shared::RasterPush));
-  const auto build = [&](const char* file) {
-    const Shader shader = load_shader(context, file, shader_files, {}, &key);
+  const auto build = [&](const char* file, const std::vector<gpu::ShaderDefine>& defines) {
+    const Shader shader = load_shader(context, file, shader_files, defines, &key);
     return build_compute_pipeline(context, shader, bindings, push);
   };
-  cull_ = build("point_shadow_atlas/shadow_cull.comp");
-  args_ = build("point_shadow_atlas/shadow_raster_args.comp");
-  raster_ = build("point_shadow_atlas/shadow_raster.comp");
-  resolve_ = build("point_shadow_atlas/shadow_raster_resolve.comp");
+  cull_ = build("point_shadow_atlas/shadow_cull.comp", {});
+  args_ = build("point_shadow_atlas/shadow_raster_args.comp", {});
+  raster_ = build("point_shadow_atlas/shadow_raster.comp", {});
+  // The resolve writes what the graph lets it write as a storage image: an r32f atlas
+  // (a depth atlas is copied into) and the colour map.
+  storage_atlas_ = context.bindings.required_image(port::kAtlas).format == VK_FORMAT_R32_SFLOAT;
+  storage_colour_ = context.bindings.image(port::kColour) != nullptr;
+  std::vector<gpu::ShaderDefine> defines;
+  if (storage_atlas_) defines.push_back({"WRITE_DEPTH", ""});
+  if (storage_colour_) defines.push_back({"WRITE_COLOUR", ""});
+  resolve_ = defines.empty() ? ComputePipeline{}
+                             : build("point_shadow_atlas/shadow_raster_resolve.comp", defines);
   geometry_version_ = ~0ull;
 }
 
@@ -168,8 +177,6 @@ void ComputeRasterizer::execute(fgvk::ExecuteContext& context, const AtlasFrame&
   const std::vector<std::uint32_t>& layers = frame.render_layers;
   if (layers.empty() && !frame.clear_all) return;
   upload_geometry(context);
-  const auto& atlas = context.bindings.required_image(port::kAtlas);
-  storage_atlas_ = atlas.format == VK_FORMAT_R32_SFLOAT;
   const std::uint32_t size = frame.header.counts.z;
   ensure_scratch(context, static_cast<std::uint32_t>(layers.size()), size);
   stats_.clusters = cluster_count_;
@@ -179,7 +186,7 @@ void ComputeRasterizer::execute(fgvk::ExecuteContext& context, const AtlasFrame&
         static_cast<std::uint32_t>(first),
         static_cast<std::uint32_t>(std::min<std::size_t>(chunk_faces_, layers.size() - first))};
     record_chunk(context, frame, chunk, tinted, settings);
-    copy_out(context, frame, chunk, tinted);
+    copy_out(context, frame, chunk);
     ++stats_.chunks;
   }
   if (frame.clear_all) fill_untouched(context, frame);
@@ -214,7 +221,9 @@ void ComputeRasterizer::write_records(fgvk::ExecuteContext& context, const Atlas
   }
   auto* out = reinterpret_cast<shared::RasterFace*>(records.mapped());
   const VkDeviceSize face_texels = VkDeviceSize{size} * size;
+  std::uint32_t tint_slot = 0;  // tinted faces so far in this chunk
   for (std::size_t i = 0; i < layers.size(); ++i) {
+    if (i % chunk_faces_ == 0) tint_slot = 0;
     const ShadowFace& face = frame.faces[layers[i]];
     const std::uint32_t light = face.info.x;
     const ShadowLight& l = frame.lights.at(light);
@@ -223,8 +232,9 @@ void ComputeRasterizer::write_records(fgvk::ExecuteContext& context, const Atlas
     r.view_proj = face.view_proj;
     r.light = glm::vec4(glm::vec3(l.position_range), l.position_range.w);
     r.params = glm::vec4(l.params.y, ortho ? 1.0f : 0.0f, static_cast<float>(size), 0.0f);
+    const bool tint = settings.tint && light < tinted.size() && tinted[light];
     r.info = {layers[i], static_cast<std::uint32_t>((i % chunk_faces_) * face_texels), size,
-              settings.tint && light < tinted.size() && tinted[light] ? 1u : 0u};
+              tint ? ++tint_slot : 0u};
   }
   for (std::size_t i = 0; i < untouched_.size(); ++i) {
     shared::RasterFace& r = out[layers.size() + i];
@@ -247,16 +257,21 @@ void ComputeRasterizer::bind(fgvk::ExecuteContext& context, const ComputePipelin
       .storage_buffer(shared::kRasterDepth, depth_)
       .storage_buffer(shared::kRasterTint, tint_ ? tint_.handle() : depth_.handle())
       .storage_buffer(shared::kRasterMaterials, context.frame.materials);
-  if (&pipeline == &resolve_) {
+  if (&pipeline == &resolve_ && storage_atlas_) {
     descriptors.storage_image(shared::kRasterAtlas,
                               context.bindings.required_image(port::kAtlas).view);
+  }
+  if (&pipeline == &resolve_ && storage_colour_) {
+    descriptors.storage_image(shared::kRasterColour, context.bindings.image(port::kColour)->view);
   }
   descriptors.push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.layout);
   vkCmdPushConstants(cmd, pipeline.layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
 }
 
-// Clears the scratch a chunk uses, once the previous round has read it.
-void ComputeRasterizer::clear_chunk(VkCommandBuffer cmd, std::uint32_t faces, bool tint) {
+// Clears the scratch a chunk uses, once the previous round has read it: `faces` depth
+// faces and `tint_faces` tint faces (only the tinted faces have one).
+void ComputeRasterizer::clear_chunk(VkCommandBuffer cmd, std::uint32_t faces,
+                                    std::uint32_t tint_faces) {
   const VkDeviceSize face_bytes = VkDeviceSize{scratch_size_} * scratch_size_ * 4;
   after_all(cmd, {depth_, counters_}, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
             VK_ACCESS_2_TRANSFER_WRITE_BIT);
@@ -265,9 +280,9 @@ void ComputeRasterizer::clear_chunk(VkCommandBuffer cmd, std::uint32_t faces, bo
   vkCmdFillBuffer(cmd, depth_, 0, face_bytes * faces, kClearDepthBits);
   vkCmdFillBuffer(cmd, counters_, 0, VK_WHOLE_SIZE, 0u);
   transfer_to_compute(cmd, {depth_, counters_});
-  if (tint) {
+  if (tint_faces > 0) {
     after_all(cmd, {tint_}, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
-    vkCmdFillBuffer(cmd, tint_, 0, face_bytes * faces, kClearTint);
+    vkCmdFillBuffer(cmd, tint_, 0, face_bytes * tint_faces, kClearTint);
     transfer_to_compute(cmd, {tint_});
   }
 }
@@ -276,13 +291,13 @@ void ComputeRasterizer::record_chunk(fgvk::ExecuteContext& context, const AtlasF
                                      const Chunk& chunk, const std::vector<bool>& tinted,
                                      const ComputeRasterSettings& settings) {
   const VkCommandBuffer cmd = context.cmd;
-  bool any_tint = false;
+  std::uint32_t tint_faces = 0;
   for (std::uint32_t i = 0; i < chunk.count; ++i) {
     const std::uint32_t light = frame.faces[frame.render_layers[chunk.first + i]].info.x;
-    any_tint = any_tint || (settings.tint && light < tinted.size() && tinted[light]);
+    if (settings.tint && light < tinted.size() && tinted[light]) ++tint_faces;
   }
-  any_tint = any_tint && tint_;
-  clear_chunk(cmd, chunk.count, any_tint);
+  const bool any_tint = tint_faces > 0 && tint_;
+  clear_chunk(cmd, chunk.count, any_tint ? tint_faces : 0u);
 
   shared::RasterPush push{};
   push.face_first = chunk.first;
@@ -319,13 +334,10 @@ void ComputeRasterizer::record_chunk(fgvk::ExecuteContext& context, const AtlasF
     bind(context, raster_, push);
     vkCmdDispatchIndirect(cmd, counters_, shared::kRasterArgsOffset + 12);
     context.gpu.end_label(cmd);
-    compute_to_copy(cmd, {tint_});
+    compute_to_compute(cmd, {tint_});
   }
-  if (storage_atlas_) {
-    resolve(context, push, chunk.first, chunk.count);
-  } else {
-    compute_to_copy(cmd, {depth_});
-  }
+  if (!storage_atlas_) compute_to_copy(cmd, {depth_});
+  if (storage_atlas_ || any_tint) resolve(context, push, chunk.first, chunk.count);
 }
 
 // Writes faces [first, first + count) of the records into the r32f atlas.
@@ -340,38 +352,26 @@ void ComputeRasterizer::resolve(fgvk::ExecuteContext& context, shared::RasterPus
   context.gpu.end_label(context.cmd);
 }
 
+// A depth atlas cannot be a storage image: its faces are copied in.
 void ComputeRasterizer::copy_out(fgvk::ExecuteContext& context, const AtlasFrame& frame,
-                                 const Chunk& chunk, const std::vector<bool>& tinted) {
+                                 const Chunk& chunk) {
+  if (storage_atlas_) return;
   const auto& atlas = context.bindings.required_image(port::kAtlas);
-  const auto* colour = context.bindings.image(port::kColour);
   const std::uint32_t size = scratch_size_;
   const VkDeviceSize face_bytes = VkDeviceSize{size} * size * 4;
-  std::vector<VkBufferImageCopy> depth_regions;
-  std::vector<VkBufferImageCopy> tint_regions;
-  depth_regions.reserve(chunk.count);
+  std::vector<VkBufferImageCopy> regions;
+  regions.reserve(chunk.count);
   for (std::uint32_t i = 0; i < chunk.count; ++i) {
-    const std::uint32_t layer = frame.render_layers[chunk.first + i];
     VkBufferImageCopy region{};
     region.bufferOffset = face_bytes * i;
-    region.imageSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, layer, 1};
+    region.imageSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, frame.render_layers[chunk.first + i],
+                               1};
     region.imageExtent = {size, size, 1};
-    if (!storage_atlas_) depth_regions.push_back(region);
-    const std::uint32_t light = frame.faces[layer].info.x;
-    if (colour != nullptr && tint_ && light < tinted.size() && tinted[light]) {
-      region.imageSubresource.aspectMask = VK_IMAGE_ASPECT_COLOR_BIT;
-      tint_regions.push_back(region);
-    }
+    regions.push_back(region);
   }
-  if (depth_regions.empty() && tint_regions.empty()) return;
   context.gpu.begin_label(context.cmd, context.pass.name + ".copy");
-  if (!depth_regions.empty()) {
-    vkCmdCopyBufferToImage(context.cmd, depth_, atlas.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                           static_cast<std::uint32_t>(depth_regions.size()), depth_regions.data());
-  }
-  if (!tint_regions.empty()) {
-    vkCmdCopyBufferToImage(context.cmd, tint_, colour->image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                           static_cast<std::uint32_t>(tint_regions.size()), tint_regions.data());
-  }
+  vkCmdCopyBufferToImage(context.cmd, depth_, atlas.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                         static_cast<std::uint32_t>(regions.size()), regions.data());
   context.gpu.end_label(context.cmd);
 }
 

@@ -54,13 +54,12 @@ class ComputeRasterizer {
                      const std::vector<bool>& tinted, const ComputeRasterSettings& settings);
   void bind(fgvk::ExecuteContext& context, const ComputePipeline& pipeline,
             const shared::RasterPush& push);
-  void clear_chunk(VkCommandBuffer cmd, std::uint32_t faces, bool tint);
+  void clear_chunk(VkCommandBuffer cmd, std::uint32_t faces, std::uint32_t tint_faces);
   void record_chunk(fgvk::ExecuteContext& context, const AtlasFrame& frame, const Chunk& chunk,
                     const std::vector<bool>& tinted, const ComputeRasterSettings& settings);
   void resolve(fgvk::ExecuteContext& context, shared::RasterPush push, std::uint32_t first,
                std::uint32_t count);
-  void copy_out(fgvk::ExecuteContext& context, const AtlasFrame& frame, const Chunk& chunk,
-                const std::vector<bool>& tinted);
+  void copy_out(fgvk::ExecuteContext& context, const AtlasFrame& frame, const Chunk& chunk);
   void fill_untouched(fgvk::ExecuteContext& context, const AtlasFrame& frame);
 
   ComputePipeline cull_;
@@ -68,6 +67,7 @@ class ComputeRasterizer {
   ComputePipeline raster_;
   ComputePipeline resolve_;
   bool storage_atlas_ = false;            // r32f atlas: written by resolve_, not copied
+  bool storage_colour_ = false;           // colour map bound: tinted faces written by resolve_
   std::vector<std::uint32_t> untouched_;  // layers filled with far depth (first frame)
   gpu::Buffer clusters_;
   gpu::Buffer indices_;

@@ -44,7 +44,8 @@ struct RasterFace {
   mat4 view_proj;  // ShadowFace.view_proj
   vec4 light;      // xyz light position (perspective faces), w the face's far distance
   vec4 params;     // x near distance, y 1 = orthographic (the sun), z face size (float)
-  uvec4 info;      // x atlas layer, y scratch offset (texels), z face size, w 1 = tinted
+  uvec4 info;      // x atlas layer, y scratch offset (texels), z face size, w tint slot + 1
+                   // (0: untinted; tinted faces share the tint scratch in their chunk)
 };
 
 // Header of the counters buffer; the dispatch arguments follow at kRasterArgsOffset.
@@ -74,7 +75,8 @@ ANTUMBRA_BINDING(kRasterItems, 5)  // uvec2: cluster, face | region << 16
 ANTUMBRA_BINDING(kRasterDepth, 6)  // uint per texel: float bits of the depth (atomicMin)
 ANTUMBRA_BINDING(kRasterTint, 7)   // uint per texel: RGBA8 tint (rgb product, a nearest)
 ANTUMBRA_BINDING(kRasterMaterials, 8)
-ANTUMBRA_BINDING(kRasterAtlas, 9)  // r32f atlas, image2DArray (shadow_raster_resolve.comp)
+ANTUMBRA_BINDING(kRasterAtlas, 9)    // r32f atlas, image2DArray (shadow_raster_resolve.comp)
+ANTUMBRA_BINDING(kRasterColour, 10)  // rgba8 colour map, image2DArray (the same)
 
 // shadow_raster_resolve.comp's square workgroups.
 const uint kResolveGroup = 16;

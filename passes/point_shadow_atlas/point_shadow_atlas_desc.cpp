@@ -50,17 +50,17 @@ void check(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& 
   }
 }
 
-// The compute rasteriser writes an r32f atlas from a compute shader (storage image; it
-// keeps the cached layers, so read-write) and fills a depth atlas and the colour map by
+// The compute rasteriser writes an r32f atlas and the colour map from a compute shader
+// (storage images; it keeps the cached layers, so read-write) and fills a depth atlas by
 // copies from its own buffers (compute_raster.hpp); the graph's barriers follow.
 std::optional<fg::PortUse> port_use(const fg::PortDesc& port, const fg::Json& params,
                                     fg::Format format) {
   const auto rasterizer = params.find("rasterizer");
   if (rasterizer == params.end() || *rasterizer != "compute") return std::nullopt;
-  if (port.name == port::kAtlas.name() && format == fg::Format::r32f) {
-    return fg::PortUse{fg::Access::storage_read_write, fg::Stage::compute};
-  }
-  if (port.name == port::kAtlas.name() || port.name == port::kColour.name()) {
+  const bool storage = (port.name == port::kAtlas.name() && format == fg::Format::r32f) ||
+                       port.name == port::kColour.name();
+  if (storage) return fg::PortUse{fg::Access::storage_read_write, fg::Stage::compute};
+  if (port.name == port::kAtlas.name()) {
     return fg::PortUse{fg::Access::transfer_dst, fg::Stage::transfer};
   }
   return std::nullopt;
@@ -106,7 +106,7 @@ fg::PassDesc PointShadowAtlasPass::describe() {
        .description = "Shadow colour per face: product of the transmittances of the translucent "
                       "casters along the ray (white = clear); translucent casters then stay out "
                       "of the depth atlas. Same size and layers as `atlas`, persistent too. With "
-                      "rasterizer \"compute\": written by copies (transfer_dst)."},
+                      "rasterizer \"compute\": written by its compute shader (storage image)."},
       {.name = port::kShadowData,
        .direction = PortDirection::output,
        .kind = ResourceKind::buffer,

@@ -115,11 +115,12 @@ void cover(Tri tri, int x, int y) {
     fraction = near / (far - z * (far - near));
   }
   float distance = clamp(ceil(fraction * 255.0) / 255.0, 0.0, 1.0);
-  uint old = tint[index];
+  uint slot = (g_face.info.w - 1u) * g_size * g_size + uint(y) * g_size + uint(x);
+  uint old = tint[slot];
   for (int attempt = 0; attempt < 64; ++attempt) {
     vec4 v = unpackUnorm4x8(old);
     uint next = packUnorm4x8(vec4(v.rgb * g_tint, min(v.a, distance)));
-    uint seen = atomicCompSwap(tint[index], old, next);
+    uint seen = atomicCompSwap(tint[slot], old, next);
     if (seen == old) break;
     old = seen;
   }

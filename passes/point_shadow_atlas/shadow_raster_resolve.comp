@@ -2,21 +2,37 @@
 #extension GL_GOOGLE_include_directive : require
 #include "compute_raster_interface.h"
 
-// Writes finished faces from the depth scratch into an r32f atlas (x, y: texels; z: the
-// face's record), where a depth atlas would need a copy (docs/technique.md, "Compute
-// shadow rasteriser"). A record's info.y says where its texels are in the scratch.
+// Writes finished faces from the scratch into the graph's images (x, y: texels; z: the
+// face's record; docs/technique.md, "Compute shadow rasteriser"): WRITE_DEPTH, the depth
+// scratch into an r32f atlas (a depth atlas is filled by copies instead); WRITE_COLOUR,
+// a tinted face's tint scratch into the rgba8 colour map. A record's info.y says where
+// its depth is in the scratch, info.w - 1 its tint slot (0: untinted).
 
 layout(local_size_x = kResolveGroup, local_size_y = kResolveGroup) in;
 
 layout(std430, binding = kRasterFaces) readonly buffer Faces { RasterFace faces[]; };
+#ifdef WRITE_DEPTH
 layout(std430, binding = kRasterDepth) readonly buffer Depth { uint depth[]; };
 layout(binding = kRasterAtlas, r32f) uniform writeonly image2DArray atlas;
+#endif
+#ifdef WRITE_COLOUR
+layout(std430, binding = kRasterTint) readonly buffer Tint { uint tint[]; };
+layout(binding = kRasterColour, rgba8) uniform writeonly image2DArray colour;
+#endif
 
 void main() {
   RasterFace face = faces[face_first + gl_GlobalInvocationID.z];
   uint size = face.info.z;
   uvec2 p = gl_GlobalInvocationID.xy;
   if (p.x >= size || p.y >= size) return;
-  float value = uintBitsToFloat(depth[face.info.y + p.y * size + p.x]);
-  imageStore(atlas, ivec3(ivec2(p), int(face.info.x)), vec4(value));
+  ivec3 texel = ivec3(ivec2(p), int(face.info.x));
+#ifdef WRITE_DEPTH
+  imageStore(atlas, texel, vec4(uintBitsToFloat(depth[face.info.y + p.y * size + p.x])));
+#endif
+#ifdef WRITE_COLOUR
+  if (face.info.w > 0u) {
+    uint slot = (face.info.w - 1u) * size * size + p.y * size + p.x;
+    imageStore(colour, texel, unpackUnorm4x8(tint[slot]));
+  }
+#endif
 }

@@ -132,16 +132,16 @@ TEST(RasterClusters, ComputeRasterizerWritesAStorageAtlasOrCopiesIntoADepthOne) 
   ASSERT_NE(atlas, nullptr);
   EXPECT_EQ(atlas->access, fg::Access::storage_read_write) << "cached layers are kept";
   EXPECT_EQ(atlas->stage, fg::Stage::compute);
-  EXPECT_EQ(binding(storage.value(), "shadows", "colour")->access, fg::Access::transfer_dst);
+  EXPECT_EQ(binding(storage.value(), "shadows", "colour")->access, fg::Access::storage_read_write);
 
   const auto copied = compile_atlas_graph("compute", "d32f");
   ASSERT_TRUE(copied.ok()) << copied.diagnostics().to_text();
-  for (const char* port : {"atlas", "colour"}) {
-    const auto* b = binding(copied.value(), "shadows", port);
-    ASSERT_NE(b, nullptr) << port;
-    EXPECT_EQ(b->access, fg::Access::transfer_dst) << port;
-    EXPECT_EQ(b->stage, fg::Stage::transfer) << port;
-  }
+  const auto* copied_atlas = binding(copied.value(), "shadows", "atlas");
+  ASSERT_NE(copied_atlas, nullptr);
+  EXPECT_EQ(copied_atlas->access, fg::Access::transfer_dst);
+  EXPECT_EQ(copied_atlas->stage, fg::Stage::transfer);
+  EXPECT_EQ(binding(copied.value(), "shadows", "colour")->access, fg::Access::storage_read_write)
+      << "the colour map is a storage image either way";
   EXPECT_EQ(binding(copied.value(), "shadows", "shadowData")->access, fg::Access::transfer_dst);
 }
 
