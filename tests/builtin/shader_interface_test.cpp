@@ -20,7 +20,10 @@ namespace {
 namespace fs = std::filesystem;
 
 Shader compile(const std::string& text, const std::string& file = "probe.comp") {
-  const fs::path dir = fs::temp_directory_path() / "antumbra_shader_interface_test";
+  // One folder per test: ctest runs the tests of this suite in parallel processes, and a
+  // shared probe.comp was once read half-written by another test (a missing entry point).
+  const fs::path dir = fs::temp_directory_path() / "antumbra_shader_interface_test" /
+                       ::testing::UnitTest::GetInstance()->current_test_info()->name();
   fs::create_directories(dir);
   std::ofstream(dir / file) << text;
   return {{}, testing::compile_and_reflect(dir / file), file};
