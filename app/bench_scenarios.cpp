@@ -183,6 +183,22 @@ void fit_atlas_format(fg::GraphDesc& graph, const std::string& rasterizer) {
   for (auto& r : graph.resources) {
     if (r.name == "atlas" && r.kind == fg::ResourceKind::image) r.format = fg::Format::r32f;
   }
+  // Receiver culling: the atlas reads the G-buffer's depth (when the graph has one).
+  std::string depth;
+  for (const auto& pass : graph.passes) {
+    for (const auto& out : pass.outputs) {
+      if (pass.type == "gbuffer" && out.port == "depth") depth = out.resource;
+    }
+  }
+  if (depth.empty()) return;
+  for (auto& pass : graph.passes) {
+    const bool bound =
+        std::any_of(pass.inputs.begin(), pass.inputs.end(),
+                    [](const fg::PortBindingDesc& in) { return in.port == "depth"; });
+    if (pass.type == "point-shadow-atlas" && !bound) {
+      pass.inputs.push_back({"depth", depth, pass.pointer + "/in/depth"});
+    }
+  }
 }
 
 scene::Scene with_light_count(const scene::Scene& base, int count) {

@@ -53,6 +53,7 @@ const AtlasFrame& AtlasPlanner::plan(const scene::Scene& scene, const glm::mat4&
   frame_.header.counts = {light_count, layer_count, settings.face_size, frame_index};
   frame_.lights.assign(light_count, ShadowLight{});
   frame_.faces.assign(layer_count, ShadowFace{});
+  frame_.epochs.assign(layer_count, 0u);
   for (auto& face : frame_.faces) face.info = {0xFFFFFFFFu, 0u, 0u, 0u};  // unused layer
 
   const sf::Frustum camera = sf::camera_frustum(camera_view_proj);
@@ -100,7 +101,7 @@ const AtlasFrame& AtlasPlanner::plan(const scene::Scene& scene, const glm::mat4&
       }
       out_face.info = {i, face, 0u, 0u};
       plan_layer(layer, (visible & (1u << face)) != 0u,
-                 FaceKey{out_face.view_proj, geometry_version}, settings.cache);
+                 FaceKey{out_face.view_proj, geometry_version}, settings);
     }
   }
   // Layers no light owns this frame hold nothing useful any more.
@@ -111,21 +112,31 @@ const AtlasFrame& AtlasPlanner::plan(const scene::Scene& scene, const glm::mat4&
 }
 
 // Static caching: a visible face is drawn only when its layer does not hold it already.
-void AtlasPlanner::plan_layer(std::uint32_t layer, bool visible, const FaceKey& key, bool cache) {
+void AtlasPlanner::plan_layer(std::uint32_t layer, bool visible, const FaceKey& key,
+                              const AtlasSettings& settings) {
+  ++frame_.stats.total;
+  if (settings.gpu_decides) {
+    plan_candidate(layer, visible, key, settings.cache);
+    return;
+  }
   LayerState& state = layers_[layer];
   ShadowFace& out_face = frame_.faces[layer];
-  ++frame_.stats.total;
-  const bool current = cache && state.valid && state.key == key;
+  const bool current = settings.cache && state.valid && state.key == key;
   if (!visible) {
     // Not drawn: the layer keeps whatever it held, valid only if it still matches.
     ++frame_.stats.culled;
-    state.valid = state.valid && state.key == key;
+    if (state.valid && state.key != key) {
+      state.valid = false;
+      state.epoch = next_epoch_++;  // what it holds is no longer this face
+    }
     out_face.info.z = state.valid ? 1u : 0u;
+    frame_.epochs[layer] = state.epoch;
     return;
   }
   out_face.info.z = 1u;
   if (current) {
     ++frame_.stats.cached;
+    frame_.epochs[layer] = state.epoch;
     return;
   }
   ++frame_.stats.rendered;
@@ -133,6 +144,27 @@ void AtlasPlanner::plan_layer(std::uint32_t layer, bool visible, const FaceKey& 
   out_face.info.w = 1u;  // consumers that cache derived data redo this layer
   state.valid = true;
   state.key = key;
+  state.epoch = next_epoch_++;
+  frame_.epochs[layer] = state.epoch;
+}
+
+// The GPU keeps what each layer holds (its epoch) and draws a candidate only where a
+// visible pixel needs it and the epoch differs; info.z/w are its to write.
+void AtlasPlanner::plan_candidate(std::uint32_t layer, bool visible, const FaceKey& key,
+                                  bool cache) {
+  LayerState& state = layers_[layer];
+  if (!(state.valid && state.key == key) || !cache) {
+    state.valid = true;
+    state.key = key;
+    state.epoch = next_epoch_++;
+  }
+  frame_.epochs[layer] = state.epoch;
+  if (!visible) {
+    ++frame_.stats.culled;
+    return;
+  }
+  ++frame_.stats.candidates;
+  frame_.render_layers.push_back(layer);
 }
 
 }  // namespace antumbra::passes

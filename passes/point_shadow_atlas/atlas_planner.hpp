@@ -22,6 +22,10 @@ struct AtlasSettings {
   float near_plane = 0.05f;
   bool cull_faces = true;
   bool cache = true;
+  // The compute rasteriser decides on the GPU which visible faces it draws (receiver
+  // culling, face_decision.hpp): every visible face is a candidate, and the planner only
+  // says which epoch of its contents each layer should hold.
+  bool gpu_decides = false;
   // The directional light's map covers the camera frustum up to this distance (metres).
   float sun_max_distance = 40.0f;
   float camera_near = 0.1f;  // the scene camera's planes, for the sun's fit
@@ -29,10 +33,11 @@ struct AtlasSettings {
 };
 
 struct AtlasStats {
-  std::uint32_t total = 0;     // faces of shadowed lights (6 point, 1 spot, 1 sun)
-  std::uint32_t culled = 0;    // not needed for the visible image
-  std::uint32_t rendered = 0;  // drawn this frame
-  std::uint32_t cached = 0;    // needed and still valid from an earlier frame
+  std::uint32_t total = 0;       // faces of shadowed lights (6 point, 1 spot, 1 sun)
+  std::uint32_t culled = 0;      // not needed for the visible image
+  std::uint32_t rendered = 0;    // drawn this frame
+  std::uint32_t cached = 0;      // needed and still valid from an earlier frame
+  std::uint32_t candidates = 0;  // gpu_decides: visible faces handed to the GPU's decision
 };
 
 // What one layer's contents were rendered for; a face is re-rendered when this changes.
@@ -48,7 +53,10 @@ struct AtlasFrame {
   std::vector<ShadowLight> lights;           // per scene light index (at most kMaxShadowLights)
   std::vector<ShadowFace> faces;             // per atlas layer
   std::vector<std::uint32_t> render_layers;  // layers to clear and draw, ascending
-  std::vector<std::string> unshadowed;       // casters left without a slot (atlas full)
+  // Per layer: which contents it should hold. A new epoch whenever the face's key
+  // changes, it is drawn (CPU decision) or cached contents are not allowed; 0: none.
+  std::vector<std::uint32_t> epochs;
+  std::vector<std::string> unshadowed;  // casters left without a slot (atlas full)
   bool clear_all = false;  // the whole atlas has undefined contents (first frame, reload)
   AtlasStats stats;
 };
@@ -69,10 +77,15 @@ class AtlasPlanner {
   struct LayerState {
     bool valid = false;
     FaceKey key;
+    std::uint32_t epoch = 0;
   };
   // Decides whether one face's layer is drawn, kept (cached) or left (culled) this frame.
-  void plan_layer(std::uint32_t layer, bool visible, const FaceKey& key, bool cache);
+  void plan_layer(std::uint32_t layer, bool visible, const FaceKey& key,
+                  const AtlasSettings& settings);
+  // The GPU decides (settings.gpu_decides): visible faces are candidates.
+  void plan_candidate(std::uint32_t layer, bool visible, const FaceKey& key, bool cache);
   std::vector<LayerState> layers_;
+  std::uint32_t next_epoch_ = 1;
   bool contents_known_ = false;
   AtlasFrame frame_;
 };

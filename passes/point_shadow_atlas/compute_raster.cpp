@@ -32,7 +32,8 @@ gpu::DescriptorSetLayoutBuilder raster_bindings() {
   for (const std::uint32_t binding :
        {shared::kRasterClusters, shared::kRasterIndices, shared::kRasterVertices,
         shared::kRasterFaces, shared::kRasterCounters, shared::kRasterItems, shared::kRasterDepth,
-        shared::kRasterTint, shared::kRasterMaterials}) {
+        shared::kRasterTint, shared::kRasterMaterials, shared::kRasterDrawFlags,
+        shared::kRasterResolveList}) {
     b.storage_buffer(binding, VK_SHADER_STAGE_COMPUTE_BIT);
   }
   b.storage_image(shared::kRasterAtlas, VK_SHADER_STAGE_COMPUTE_BIT)
@@ -83,8 +84,9 @@ void compute_to_copy(VkCommandBuffer cmd, std::initializer_list<VkBuffer> buffer
 
 }  // namespace
 
-void ComputeRasterizer::prepare(fgvk::PrepareContext& context,
+void ComputeRasterizer::prepare(fgvk::PrepareContext& context, bool receivers,
                                 std::vector<std::string>& shader_files, gpu::Fnv1a64& key) {
+  decision_.prepare(context, receivers, shader_files, key);
   const gpu::DescriptorSetLayoutBuilder bindings = raster_bindings();
   const auto push = static_cast<std::uint32_t>(sizeof(shared::RasterPush));
   const auto build = [&](const char* file, const std::vector<gpu::ShaderDefine>& defines) {
@@ -172,15 +174,19 @@ void ComputeRasterizer::ensure_scratch(fgvk::ExecuteContext& context, std::uint3
 
 void ComputeRasterizer::execute(fgvk::ExecuteContext& context, const AtlasFrame& frame,
                                 const std::vector<bool>& tinted,
-                                const ComputeRasterSettings& settings) {
+                                const ComputeRasterSettings& settings, VkBuffer staging) {
   stats_ = {};
   const std::vector<std::uint32_t>& layers = frame.render_layers;
-  if (layers.empty() && !frame.clear_all) return;
   upload_geometry(context);
   const std::uint32_t size = frame.header.counts.z;
   ensure_scratch(context, static_cast<std::uint32_t>(layers.size()), size);
   stats_.clusters = cluster_count_;
   write_records(context, frame, tinted, settings);
+  decision_.record(context, frame, staging,
+                   {.records = static_cast<std::uint32_t>(layers.size()),
+                    .chunk_faces = chunk_faces_,
+                    .face_size = size,
+                    .fill_first = fill_first_});
   for (std::size_t first = 0; first < layers.size(); first += chunk_faces_) {
     const Chunk chunk{
         static_cast<std::uint32_t>(first),
@@ -190,6 +196,7 @@ void ComputeRasterizer::execute(fgvk::ExecuteContext& context, const AtlasFrame&
     ++stats_.chunks;
   }
   if (frame.clear_all) fill_untouched(context, frame);
+  decision_.finish(context);
 }
 
 // One record per face to draw, then (when the atlas's contents are unknown and it is
@@ -200,7 +207,13 @@ void ComputeRasterizer::write_records(fgvk::ExecuteContext& context, const Atlas
   const std::vector<std::uint32_t>& layers = frame.render_layers;
   const std::uint32_t size = scratch_size_;
   untouched_.clear();
-  if (frame.clear_all) {
+  fill_first_ = 0;
+  if (frame.clear_all && storage_atlas_) {
+    // The decision picks which layers stay undrawn: a fill record for each layer.
+    for (std::uint32_t layer = 0; layer < frame.faces.size(); ++layer) untouched_.push_back(layer);
+    fill_first_ = static_cast<std::uint32_t>(layers.size()) + 1u;
+  } else if (frame.clear_all) {
+    // A depth atlas is filled by copies the CPU records: every candidate is drawn.
     std::vector<bool> drawn(frame.faces.size(), false);
     for (const std::uint32_t layer : layers) drawn[layer] = true;
     for (std::uint32_t layer = 0; layer < frame.faces.size(); ++layer) {
@@ -256,7 +269,9 @@ void ComputeRasterizer::bind(fgvk::ExecuteContext& context, const ComputePipelin
       .storage_buffer(shared::kRasterItems, items_)
       .storage_buffer(shared::kRasterDepth, depth_)
       .storage_buffer(shared::kRasterTint, tint_ ? tint_.handle() : depth_.handle())
-      .storage_buffer(shared::kRasterMaterials, context.frame.materials);
+      .storage_buffer(shared::kRasterMaterials, context.frame.materials)
+      .storage_buffer(shared::kRasterDrawFlags, decision_.draw_flags())
+      .storage_buffer(shared::kRasterResolveList, decision_.list());
   if (&pipeline == &resolve_ && storage_atlas_) {
     descriptors.storage_image(shared::kRasterAtlas,
                               context.bindings.required_image(port::kAtlas).view);
@@ -337,18 +352,16 @@ void ComputeRasterizer::record_chunk(fgvk::ExecuteContext& context, const AtlasF
     compute_to_compute(cmd, {tint_});
   }
   if (!storage_atlas_) compute_to_copy(cmd, {depth_});
-  if (storage_atlas_ || any_tint) resolve(context, push, chunk.first, chunk.count);
+  if (storage_atlas_ || any_tint) resolve(context, push, chunk.first, chunk.first / chunk_faces_);
 }
 
-// Writes faces [first, first + count) of the records into the r32f atlas.
+// Writes the records the decision listed for one chunk (or the fill) into the images.
 void ComputeRasterizer::resolve(fgvk::ExecuteContext& context, shared::RasterPush push,
-                                std::uint32_t first, std::uint32_t count) {
+                                std::uint32_t list_first, std::uint32_t args_index) {
   context.gpu.begin_label(context.cmd, context.pass.name + ".resolve");
-  push.face_first = first;
-  push.face_count = count;
+  push.face_first = list_first;
   bind(context, resolve_, push);
-  const std::uint32_t groups = group_count(scratch_size_, shared::kResolveGroup);
-  vkCmdDispatch(context.cmd, groups, groups, count);
+  vkCmdDispatchIndirect(context.cmd, decision_.args(), VkDeviceSize{args_index} * 16);
   context.gpu.end_label(context.cmd);
 }
 
@@ -387,9 +400,9 @@ void ComputeRasterizer::fill_untouched(fgvk::ExecuteContext& context, const Atla
   vkCmdFillBuffer(context.cmd, depth_, cleared, face_bytes, kClearDepthBits);
   if (storage_atlas_) {
     transfer_to_compute(context.cmd, {depth_});
-    shared::RasterPush push{};
-    resolve(context, push, static_cast<std::uint32_t>(frame.render_layers.size()),
-            static_cast<std::uint32_t>(untouched_.size()));
+    const DecisionLayout layout{.records = static_cast<std::uint32_t>(frame.render_layers.size()),
+                                .chunk_faces = chunk_faces_};
+    resolve(context, shared::RasterPush{}, layout.chunks() * chunk_faces_, layout.chunks());
     return;
   }
   gpu::buffer_barrier(context.cmd, depth_, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,

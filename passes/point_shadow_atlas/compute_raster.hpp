@@ -17,6 +17,7 @@
 #include "antumbra/gpu/resources.hpp"
 #include "atlas_planner.hpp"
 #include "common/pass_support.hpp"
+#include "face_decision.hpp"
 #include "raster_clusters.hpp"
 
 namespace antumbra::passes {
@@ -34,14 +35,20 @@ struct ComputeRasterStats {
 
 class ComputeRasterizer {
  public:
-  void prepare(fgvk::PrepareContext& context, std::vector<std::string>& shader_files,
-               gpu::Fnv1a64& key);
-  // Records the rasterisation of frame.render_layers (and, when the contents are unknown,
-  // 1.0 into every other layer). `tinted`: per scene light, whether its colour layers hold
-  // tints (the planner's light index).
+  // `receivers`: faces are drawn only where a visible pixel needs them (the G-buffer
+  // depth is bound; needs an r32f atlas).
+  void prepare(fgvk::PrepareContext& context, bool receivers,
+               std::vector<std::string>& shader_files, gpu::Fnv1a64& key);
+  // Records the decision (face_decision.hpp: which candidates of frame.render_layers are
+  // drawn, and the published shadowData from `staging`), their rasterisation and, when
+  // the contents are unknown, far depth into every other layer. `tinted`: per scene
+  // light, whether its colour layers hold tints (the planner's light index).
   void execute(fgvk::ExecuteContext& context, const AtlasFrame& frame,
-               const std::vector<bool>& tinted, const ComputeRasterSettings& settings);
+               const std::vector<bool>& tinted, const ComputeRasterSettings& settings,
+               VkBuffer staging);
   [[nodiscard]] const ComputeRasterStats& stats() const { return stats_; }
+  [[nodiscard]] const FaceDecision& decision() const { return decision_; }
+  void adopt(ComputeRasterizer& previous) { decision_.adopt(previous.decision_); }
 
  private:
   struct Chunk {
@@ -57,8 +64,9 @@ class ComputeRasterizer {
   void clear_chunk(VkCommandBuffer cmd, std::uint32_t faces, std::uint32_t tint_faces);
   void record_chunk(fgvk::ExecuteContext& context, const AtlasFrame& frame, const Chunk& chunk,
                     const std::vector<bool>& tinted, const ComputeRasterSettings& settings);
-  void resolve(fgvk::ExecuteContext& context, shared::RasterPush push, std::uint32_t first,
-               std::uint32_t count);
+  // Resolves the list entries whose dispatch arguments are at `args_index`.
+  void resolve(fgvk::ExecuteContext& context, shared::RasterPush push, std::uint32_t list_first,
+               std::uint32_t args_index);
   void copy_out(fgvk::ExecuteContext& context, const AtlasFrame& frame, const Chunk& chunk);
   void fill_untouched(fgvk::ExecuteContext& context, const AtlasFrame& frame);
 
@@ -84,6 +92,8 @@ class ComputeRasterizer {
   std::uint32_t capacity_tint_ = 0;
   std::vector<gpu::Buffer> faces_;  // RasterFace records per frame-in-flight slot
   ComputeRasterStats stats_;
+  FaceDecision decision_;
+  std::uint32_t fill_first_ = 0;  // DecisionLayout::fill_first of this frame
 };
 
 }  // namespace antumbra::passes

@@ -65,6 +65,8 @@ ANTUMBRA_PUSH_CONSTANTS(RasterPush) {
   float slope_bias;  // factor of the depth slope per texel
   uint unused;
 };
+// shadow_raster_resolve.comp reads its records from kRasterResolveList at face_first
+// (face_decision.hpp's lists); the cull skips records whose kRasterDrawFlags entry is 0.
 
 ANTUMBRA_BINDING(kRasterClusters, 0)
 ANTUMBRA_BINDING(kRasterIndices, 1)   // uint vertex indices in cluster order
@@ -75,8 +77,10 @@ ANTUMBRA_BINDING(kRasterItems, 5)  // uvec2: cluster, face | region << 16
 ANTUMBRA_BINDING(kRasterDepth, 6)  // uint per texel: float bits of the depth (atomicMin)
 ANTUMBRA_BINDING(kRasterTint, 7)   // uint per texel: RGBA8 tint (rgb product, a nearest)
 ANTUMBRA_BINDING(kRasterMaterials, 8)
-ANTUMBRA_BINDING(kRasterAtlas, 9)    // r32f atlas, image2DArray (shadow_raster_resolve.comp)
-ANTUMBRA_BINDING(kRasterColour, 10)  // rgba8 colour map, image2DArray (the same)
+ANTUMBRA_BINDING(kRasterAtlas, 9)         // r32f atlas, image2DArray (shadow_raster_resolve.comp)
+ANTUMBRA_BINDING(kRasterColour, 10)       // rgba8 colour map, image2DArray (the same)
+ANTUMBRA_BINDING(kRasterDrawFlags, 11)    // uint per record: the GPU decided to draw it
+ANTUMBRA_BINDING(kRasterResolveList, 12)  // uint records to resolve (face_decision.hpp)
 
 // shadow_raster_resolve.comp's square workgroups.
 const uint kResolveGroup = 16;

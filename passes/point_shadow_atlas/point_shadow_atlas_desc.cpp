@@ -57,6 +57,10 @@ std::optional<fg::PortUse> port_use(const fg::PortDesc& port, const fg::Json& pa
                                     fg::Format format) {
   const auto rasterizer = params.find("rasterizer");
   if (rasterizer == params.end() || *rasterizer != "compute") return std::nullopt;
+  // The GPU's face decision publishes the shadow data (face_decision.hpp).
+  if (port.name == port::kShadowData.name()) {
+    return fg::PortUse{fg::Access::storage_write, fg::Stage::compute};
+  }
   const bool storage = (port.name == port::kAtlas.name() && format == fg::Format::r32f) ||
                        port.name == port::kColour.name();
   if (storage) return fg::PortUse{fg::Access::storage_read_write, fg::Stage::compute};
@@ -82,6 +86,16 @@ fg::PassDesc PointShadowAtlasPass::describe() {
       "the camera cannot see, re-renders only faces whose light or geometry changed, and "
       "writes the per-light/per-face shadowData table.";
   desc.ports = {
+      {.name = port::kDepth,
+       .direction = PortDirection::input,
+       .access = Access::sampled,
+       .stage = Stage::compute,
+       .formats = {Format::d32f, Format::d16},
+       .optional = true,
+       .description =
+           "G-buffer depth, for receiver culling (parameter receiverCulling): with rasterizer "
+           "\"compute\" and an r32f atlas, a face is drawn only when a visible pixel lies in "
+           "its frustum and its light's range (docs/technique.md). Otherwise unused."},
       {.name = port::kAtlas,
        .direction = PortDirection::output,
        .access = Access::depth_attachment,
@@ -183,6 +197,15 @@ const fg::ParamTable<PointShadowAtlasParams>& PointShadowAtlasPass::param_table(
                     "One instanced draw writing gl_Layer where the device supports it; off "
                     "forces the fallback of one draw per face into a single-layer view."},
                &PointShadowAtlasParams::layered_draw)
+          .add({.name = "receiverCulling",
+                .type = fg::ParamType::boolean,
+                .default_value = true,
+                .description =
+                    "With `depth` bound, rasterizer \"compute\" and an r32f atlas: draw only "
+                    "the faces some visible pixel needs, decided on the GPU each frame (a face "
+                    "that gains a receiver is drawn that frame). Otherwise every face the "
+                    "camera's frustum may need is drawn."},
+               &PointShadowAtlasParams::receiver_culling)
           .choice({.name = "rasterizer",
                    .type = fg::ParamType::enumeration,
                    .default_value = "hardware",

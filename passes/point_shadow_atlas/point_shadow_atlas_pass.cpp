@@ -78,6 +78,12 @@ void PointShadowAtlasPass::prepare(fgvk::PrepareContext& context) {
   colour_ = colour_map_ && params_.translucent_colour;
   const bool compute = params_.rasterizer == ShadowRasterizer::compute;
   layered_ = !compute && params_.layered_draw && context.gpu.features().shader_output_layer;
+  // Receiver culling needs the decision to pick which layers stay untouched, which only
+  // the resolve shader (an r32f atlas) can follow; copies into a depth atlas cannot.
+  settings_.gpu_decides = compute && params_.receiver_culling &&
+                          context.bindings.image(port::kDepth) != nullptr &&
+                          atlas.format == VK_FORMAT_R32_SFLOAT;
+  name_ = context.pass.name;
 
   shader_files_.clear();
   gpu::Fnv1a64 key;
@@ -90,12 +96,13 @@ void PointShadowAtlasPass::prepare(fgvk::PrepareContext& context) {
                                  layered_,
                                  colour_,
                                  colour_map_,
-                                 compute};
+                                 compute,
+                                 settings_.gpu_decides};
   key.update(shape, sizeof shape).update(flags, sizeof flags);
   depth_pipeline_ = {};
   colour_pipeline_ = {};
   if (compute) {
-    compute_.prepare(context, shader_files_, key);
+    compute_.prepare(context, settings_.gpu_decides, shader_files_, key);
   } else {
     prepare_hardware(context, atlas, colour, key);
   }
@@ -186,7 +193,7 @@ void PointShadowAtlasPass::create_layer_views(fgvk::PrepareContext& context,
 }
 
 void PointShadowAtlasPass::adopt(fgvk::Pass& previous) {
-  const auto* old = dynamic_cast<const PointShadowAtlasPass*>(&previous);
+  auto* old = dynamic_cast<PointShadowAtlasPass*>(&previous);
   if (old == nullptr || old->drawing_key_ != drawing_key_ || old->atlas_image_ != atlas_image_ ||
       old->colour_image_ != colour_image_) {
     return;  // other images or other drawing: everything is drawn again
@@ -195,6 +202,7 @@ void PointShadowAtlasPass::adopt(fgvk::Pass& previous) {
   tinted_ = old->tinted_;
   translucent_bounds_ = old->translucent_bounds_;
   translucent_version_ = old->translucent_version_;
+  compute_.adopt(old->compute_);  // what each layer holds, as the GPU tracks it
 }
 
 void PointShadowAtlasPass::execute(fgvk::ExecuteContext& context) {
@@ -232,26 +240,22 @@ void PointShadowAtlasPass::execute(fgvk::ExecuteContext& context) {
              base::name_list(frame.unshadowed),
          base::Json{{"lights", frame.unshadowed}, {"layers", settings_.layers}}});
   }
-  const AtlasStats& s = frame.stats;
+  // The GPU's counts come back with a delay: those of this slot's previous frame.
   context.report.add(
-      {context.pass.name, codes::shadow_atlas::kFaceStats, base::Severity::note,
-       "shadow faces: " + std::to_string(s.total) + " total, " + std::to_string(s.culled) +
-           " culled, " + std::to_string(s.rendered) + " rendered, " + std::to_string(s.cached) +
-           " cached",
-       base::Json{{"total", s.total},
-                  {"culled", s.culled},
-                  {"rendered", s.rendered},
-                  {"cached", s.cached},
-                  {"layered", layered_},
-                  {"rasterizer",
-                   params_.rasterizer == ShadowRasterizer::compute ? "compute" : "hardware"}}});
+      face_stats(context.pass.name, params_.rasterizer == ShadowRasterizer::compute
+                                        ? compute_.decision().completed(context.frame.slot)
+                                        : std::nullopt));
 
-  if (frame.render_layers.empty() && !frame.clear_all) return;
   if (params_.rasterizer == ShadowRasterizer::compute) {
+    // Runs every frame: its decision also publishes the shadow data.
     compute_.execute(
         context, frame, tinted_,
-        {.depth_bias = params_.depth_bias, .slope_bias = params_.slope_bias, .tint = colour_});
-  } else if (layered_) {
+        {.depth_bias = params_.depth_bias, .slope_bias = params_.slope_bias, .tint = colour_},
+        slot.staging);
+    return;
+  }
+  if (frame.render_layers.empty() && !frame.clear_all) return;
+  if (layered_) {
     draw_layered(context, frame, slot.draws);
   } else {
     draw_per_face(context, frame, slot.draws);
@@ -286,9 +290,12 @@ void PointShadowAtlasPass::upload(fgvk::ExecuteContext& context, const AtlasFram
   }
   std::memcpy(out + kShadowFacesOffset, frame.faces.data(),
               frame.faces.size() * sizeof(ShadowFace));
-  const VkBufferCopy region{0, 0, bytes};
-  vkCmdCopyBuffer(context.cmd, slot.staging, context.bindings.buffer(port::kShadowData)->buffer, 1,
-                  &region);
+  // The compute rasteriser's decision publishes it (after deciding info.z/w).
+  if (params_.rasterizer == ShadowRasterizer::hardware) {
+    const VkBufferCopy region{0, 0, bytes};
+    vkCmdCopyBuffer(context.cmd, slot.staging, context.bindings.buffer(port::kShadowData)->buffer,
+                    1, &region);
+  }
 
   auto* draws = reinterpret_cast<FaceDraw*>(slot.draws.mapped());
   for (std::size_t i = 0; i < frame.render_layers.size(); ++i) {
@@ -300,6 +307,49 @@ void PointShadowAtlasPass::upload(fgvk::ExecuteContext& context, const AtlasFram
     const float far = light < frame.lights.size() ? frame.lights[light].position_range.w : 1.0f;
     draws[i].info = {layer, frame.faces[layer].info.y, std::bit_cast<std::uint32_t>(far), 0u};
   }
+}
+
+fgvk::PassMessage PointShadowAtlasPass::face_stats(
+    const std::string& pass, const std::optional<FaceDecisionStats>& gpu) const {
+  const AtlasStats& s = planner_.last().stats;
+  const bool compute = params_.rasterizer == ShadowRasterizer::compute;
+  const std::uint64_t face_texels = std::uint64_t{settings_.face_size} * settings_.face_size;
+  base::Json details{{"total", s.total},
+                     {"culled", s.culled},
+                     {"culledByFrustum", s.culled},
+                     {"culledByReceivers", 0},
+                     {"rendered", s.rendered},
+                     {"cached", s.cached},
+                     {"texels", face_texels * s.rendered},
+                     {"layered", layered_},
+                     {"receiverCulling", settings_.gpu_decides},
+                     {"rasterizer", compute ? "compute" : "hardware"}};
+  std::string text = "shadow faces: " + std::to_string(s.total) + " total, " +
+                     std::to_string(s.culled) + " culled, " + std::to_string(s.rendered) +
+                     " rendered, " + std::to_string(s.cached) + " cached";
+  if (settings_.gpu_decides) {
+    // Drawn or not is the GPU's decision: its counts, of the frame they belong to.
+    const FaceDecisionStats g = gpu.value_or(FaceDecisionStats{});
+    const std::uint32_t culled = s.culled + g.receiver_culled;
+    details["culled"] = culled;
+    details["culledByReceivers"] = g.receiver_culled;
+    details["rendered"] = g.drawn;
+    details["cached"] = g.cached;
+    details["texels"] = g.texels;
+    details["statsFrame"] = gpu ? base::Json(g.frame_index) : base::Json(nullptr);
+    text = "shadow faces: " + std::to_string(s.total) + " total, " + std::to_string(culled) +
+           " culled (" + std::to_string(g.receiver_culled) + " without a visible receiver), " +
+           std::to_string(g.drawn) + " rendered, " + std::to_string(g.cached) + " cached" +
+           (gpu ? " (GPU counts of frame " + std::to_string(g.frame_index) + ")"
+                : " (GPU counts pending)");
+  }
+  return {pass, codes::shadow_atlas::kFaceStats, base::Severity::note, text, std::move(details)};
+}
+
+void PointShadowAtlasPass::collect(fgvk::FrameReport& report) {
+  if (params_.rasterizer != ShadowRasterizer::compute) return;
+  const auto gpu = compute_.decision().completed(compute_.decision().last_slot());
+  if (gpu) report.replace(face_stats(name_, gpu));
 }
 
 void PointShadowAtlasPass::find_tinted_lights(const scene::Scene& scene,

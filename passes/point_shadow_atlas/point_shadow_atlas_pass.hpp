@@ -12,6 +12,7 @@
 // behind it from panes in front of it, which is the usual one-layer approximation.
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,7 @@ struct PointShadowAtlasParams {
   bool cache = true;
   bool translucent_colour = true;
   bool layered_draw = true;
+  bool receiver_culling = true;
   ShadowRasterizer rasterizer = ShadowRasterizer::hardware;
 };
 
@@ -53,10 +55,13 @@ class PointShadowAtlasPass final : public fgvk::Pass {
   // Takes over the cache (which faces hold what) when the images were handed over and
   // the faces would be drawn the same way: same settings, biases and SPIR-V.
   void adopt(fgvk::Pass& previous) override;
+  // The compute rasteriser's GPU face counts of the last frame (SHD010).
+  void collect(fgvk::FrameReport& report) override;
 
   [[nodiscard]] const AtlasStats& stats() const { return planner_.last().stats; }
   [[nodiscard]] bool layered() const { return layered_; }
   [[nodiscard]] ShadowRasterizer rasterizer() const { return params_.rasterizer; }
+  [[nodiscard]] bool receiver_culling() const { return settings_.gpu_decides; }
 
  private:
   struct SlotBuffers {
@@ -66,6 +71,9 @@ class PointShadowAtlasPass final : public fgvk::Pass {
   void create_layer_views(fgvk::PrepareContext& context, const fgvk::BoundImage& atlas,
                           const fgvk::BoundImage* colour);
   void upload(fgvk::ExecuteContext& context, const AtlasFrame& frame, SlotBuffers& slot);
+  // SHD010: the planner's counts, and the GPU's decision of an earlier frame (compute).
+  [[nodiscard]] fgvk::PassMessage face_stats(const std::string& pass,
+                                             const std::optional<FaceDecisionStats>& gpu) const;
   // Which shadowed lights have a translucent caster within range (their colour layers
   // are kept; the others are never cleared nor read).
   void find_tinted_lights(const scene::Scene& scene, std::uint64_t geometry_version);
@@ -99,6 +107,7 @@ class PointShadowAtlasPass final : public fgvk::Pass {
   std::vector<gpu::ImageView> depth_layer_views_;   // fallback path only
   std::vector<gpu::ImageView> colour_layer_views_;  // fallback path only
   std::vector<std::string> shader_files_;
+  std::string name_;  // the pass instance's, for collect()
 };
 
 }  // namespace antumbra::passes

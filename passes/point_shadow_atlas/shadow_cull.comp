@@ -13,6 +13,7 @@ layout(std430, binding = kRasterClusters) readonly buffer Clusters { RasterClust
 layout(std430, binding = kRasterFaces) readonly buffer Faces { RasterFace faces[]; };
 layout(std430, binding = kRasterCounters) buffer Counters { uint counts[]; };
 layout(std430, binding = kRasterItems) writeonly buffer Items { uvec2 items[]; };
+layout(std430, binding = kRasterDrawFlags) readonly buffer DrawFlags { uint draw_flags[]; };
 
 const float kHalfPi = 1.57079632679;
 
@@ -38,6 +39,7 @@ void main() {
   uint c = gl_GlobalInvocationID.x;
   uint f = gl_GlobalInvocationID.y;
   if (c >= cluster_count || f >= face_count) return;
+  if (draw_flags[face_first + f] == 0u) return;  // not needed, or already current
   RasterCluster cluster = clusters[c];
   RasterFace face = faces[face_first + f];
   bool translucent = (cluster.info.z & kClusterTranslucent) != 0u;

@@ -2,8 +2,9 @@
 #extension GL_GOOGLE_include_directive : require
 #include "compute_raster_interface.h"
 
-// Writes finished faces from the scratch into the graph's images (x, y: texels; z: the
-// face's record; docs/technique.md, "Compute shadow rasteriser"): WRITE_DEPTH, the depth
+// Writes finished faces from the scratch into the graph's images (x, y: texels; z: an
+// entry of the resolve list, which names the record; docs/technique.md, "Compute shadow
+// rasteriser"): WRITE_DEPTH, the depth
 // scratch into an r32f atlas (a depth atlas is filled by copies instead); WRITE_COLOUR,
 // a tinted face's tint scratch into the rgba8 colour map. A record's info.y says where
 // its depth is in the scratch, info.w - 1 its tint slot (0: untinted).
@@ -11,6 +12,7 @@
 layout(local_size_x = kResolveGroup, local_size_y = kResolveGroup) in;
 
 layout(std430, binding = kRasterFaces) readonly buffer Faces { RasterFace faces[]; };
+layout(std430, binding = kRasterResolveList) readonly buffer List { uint records[]; };
 #ifdef WRITE_DEPTH
 layout(std430, binding = kRasterDepth) readonly buffer Depth { uint depth[]; };
 layout(binding = kRasterAtlas, r32f) uniform writeonly image2DArray atlas;
@@ -21,7 +23,7 @@ layout(binding = kRasterColour, rgba8) uniform writeonly image2DArray colour;
 #endif
 
 void main() {
-  RasterFace face = faces[face_first + gl_GlobalInvocationID.z];
+  RasterFace face = faces[records[face_first + gl_GlobalInvocationID.z]];
   uint size = face.info.z;
   uvec2 p = gl_GlobalInvocationID.xy;
   if (p.x >= size || p.y >= size) return;

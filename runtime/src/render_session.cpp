@@ -187,6 +187,7 @@ void RenderSession::render(int frames, TraceWriter* trace, const BeforeFrame& be
   }
   frames_->wait_all();
   observer_->gather_gpu();
+  executor_->collect(report_);
   if (trace != nullptr) {
     double t = 0.0;
     for (const auto& timing : pass_timings()) {

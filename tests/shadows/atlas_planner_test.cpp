@@ -193,8 +193,20 @@ TEST(PointShadowAtlasReflection, PortsAndParams) {
   ASSERT_NE(data, nullptr);
   EXPECT_EQ(data->kind, fg::ResourceKind::buffer);
   EXPECT_EQ(data->access, fg::Access::transfer_dst);
+  const auto* depth = desc.find_port("depth");
+  ASSERT_NE(depth, nullptr);
+  EXPECT_TRUE(depth->optional);
+  EXPECT_EQ(depth->direction, fg::PortDirection::input);
+  // Under the compute rasteriser the GPU's face decision writes the shadow data.
+  ASSERT_NE(desc.port_use, nullptr);
+  const auto use =
+      desc.port_use(*data, base::Json{{"rasterizer", "compute"}}, fg::Format::undefined);
+  ASSERT_TRUE(use.has_value());
+  EXPECT_EQ(use->access, fg::Access::storage_write);
+  EXPECT_EQ(use->stage, fg::Stage::compute);
+  EXPECT_FALSE(desc.port_use(*data, base::Json::object(), fg::Format::undefined).has_value());
   for (const char* name : {"nearPlane", "depthBias", "slopeBias", "cullFaces", "cache",
-                           "translucentColour", "layeredDraw"}) {
+                           "translucentColour", "layeredDraw", "receiverCulling"}) {
     const auto* p = desc.find_param(name);
     ASSERT_NE(p, nullptr) << name;
     EXPECT_FALSE(p->description.empty()) << name;
@@ -248,4 +260,55 @@ TEST(AtlasPlanner, SunIsRefittedWhenTheCameraMoves) {
   s.camera.position += glm::vec3(3.0f, 0.0f, 0.0f);
   s.camera.target += glm::vec3(3.0f, 0.0f, 0.0f);
   EXPECT_EQ(planner.plan(s, camera_of(s), 1, 2, settings(6)).stats.rendered, 1u);
+}
+
+// Receiver culling: the GPU decides what is drawn, the planner hands it every visible face
+// and the epoch each layer should hold, which changes only with the face.
+TEST(AtlasPlanner, GpuDecisionGetsEveryVisibleFaceAndStableEpochs) {
+  auto scene = atrium();
+  AtlasPlanner planner;
+  AtlasSettings s = settings();
+  s.gpu_decides = true;
+  const auto first = planner.plan(scene, camera_of(scene), 1, 0, s);
+  EXPECT_EQ(first.stats.candidates + first.stats.culled, 96u);
+  EXPECT_EQ(first.render_layers.size(), first.stats.candidates);
+  EXPECT_EQ(first.stats.rendered, 0u) << "the GPU counts what it draws";
+  for (const std::uint32_t epoch : first.epochs) EXPECT_NE(epoch, 0u);
+  const auto second = planner.plan(scene, camera_of(scene), 1, 1, s);
+  EXPECT_EQ(second.render_layers, first.render_layers) << "candidates again: the GPU may skip";
+  EXPECT_EQ(second.epochs, first.epochs) << "nothing changed: the same contents";
+  scene.lights[3].position.x += 0.5f;
+  const auto moved = planner.plan(scene, camera_of(scene), 1, 2, s);
+  for (std::uint32_t layer = 0; layer < 96; ++layer) {
+    if (layer / 6 == 3) {
+      EXPECT_NE(moved.epochs[layer], second.epochs[layer]) << "layer " << layer;
+    } else {
+      EXPECT_EQ(moved.epochs[layer], second.epochs[layer]) << "layer " << layer;
+    }
+  }
+  s.cache = false;
+  const auto uncached = planner.plan(scene, camera_of(scene), 1, 3, s);
+  for (std::uint32_t layer = 0; layer < 96; ++layer) {
+    EXPECT_NE(uncached.epochs[layer], moved.epochs[layer]) << "no cache: redrawn each frame";
+  }
+}
+
+// The CPU's own decision gives a drawn face a new epoch and keeps a cached face's.
+TEST(AtlasPlanner, DrawnFacesGetNewEpochsCachedOnesKeepTheirs) {
+  auto scene = atrium();
+  AtlasPlanner planner;
+  const auto first = planner.plan(scene, camera_of(scene), 1, 0, settings());
+  const auto second = planner.plan(scene, camera_of(scene), 1, 1, settings());
+  EXPECT_EQ(second.epochs, first.epochs);
+  scene.lights[3].position.x += 0.5f;
+  const auto moved = planner.plan(scene, camera_of(scene), 1, 2, settings());
+  for (const std::uint32_t layer : moved.render_layers) {
+    EXPECT_NE(moved.epochs[layer], second.epochs[layer]);
+  }
+  EXPECT_FALSE(moved.render_layers.empty());
+  for (std::uint32_t layer = 0; layer < 96; ++layer) {
+    if (layer / 6 != 3) {
+      EXPECT_EQ(moved.epochs[layer], second.epochs[layer]) << "layer " << layer;
+    }
+  }
 }

@@ -327,6 +327,11 @@ void Executor::record(VkCommandBuffer cmd, const FrameResources& frame, PassObse
   record_barriers(cmd, state_->plan.final_barriers);
 }
 
+void Executor::collect(FrameReport& report) {
+  if (!state_) return;
+  for (const auto& pass : state_->passes) pass->collect(report);
+}
+
 const BoundImage* Executor::image(std::string_view resource) const {
   if (!state_) return nullptr;
   const int index = state_->plan.find_resource(resource);

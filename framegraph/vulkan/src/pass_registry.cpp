@@ -25,6 +25,16 @@ const PassBindings::Entry& PassBindings::entry(fg::PortId port) const {
   throw std::logic_error("port " + std::string(port) + " is not a port of this pass");
 }
 
+void FrameReport::replace(PassMessage message) {
+  for (auto& m : messages_) {
+    if (m.pass == message.pass && m.code == message.code) {
+      m = std::move(message);
+      return;
+    }
+  }
+  messages_.push_back(std::move(message));
+}
+
 const BoundImage* PassBindings::image(fg::PortId port) const {
   return entry(port).image;
 }

@@ -55,6 +55,9 @@ class Executor {
   // (cleared first) when one is given.
   void record(VkCommandBuffer cmd, const FrameResources& frame, PassObserver* observer = nullptr,
               FrameReport* report = nullptr);
+  // After the GPU has finished the recorded frames: every pass's final counts
+  // (Pass::collect) into `report`.
+  void collect(FrameReport& report);
 
   // The realised image of a resource, with its current layout; nullptr if none.
   [[nodiscard]] const BoundImage* image(std::string_view resource) const;

@@ -113,6 +113,9 @@ struct PassMessage {
 class FrameReport {
  public:
   void add(PassMessage message) { messages_.push_back(std::move(message)); }
+  // Replaces the message of the same pass and code (added when not there): counts that
+  // become known once the GPU has finished the frame.
+  void replace(PassMessage message);
   void clear() { messages_.clear(); }
   [[nodiscard]] const std::vector<PassMessage>& messages() const { return messages_; }
 
@@ -150,6 +153,9 @@ class Pass {
   // shadow atlas) may take over the bookkeeping of what they hold, when it would draw
   // them the same way (parameters and shaders). Never called for a failed load.
   virtual void adopt(Pass& previous) { static_cast<void>(previous); }
+  // Once the GPU has finished every recorded frame: a pass that counts on the GPU
+  // replaces its report messages with the final counts.
+  virtual void collect(FrameReport& report) { static_cast<void>(report); }
 };
 
 using PassFactory = std::unique_ptr<Pass> (*)(const fg::PlanPass& pass);

@@ -1,0 +1,257 @@
+#include "face_decision.hpp"
+
+#include <algorithm>
+#include <cstring>
+#include <initializer_list>
+
+#include "antumbra/gpu/commands.hpp"
+#include "antumbra/gpu/context.hpp"
+#include "antumbra/gpu/pipelines.hpp"
+#include "common/frame_resources.hpp"
+#include "common/ports.hpp"
+#include "common/shadow_data.hpp"
+#include "compute_raster_interface.h"
+#include "face_decision_interface.h"
+
+namespace antumbra::passes {
+namespace {
+
+gpu::DescriptorSetLayoutBuilder decision_bindings() {
+  gpu::DescriptorSetLayoutBuilder b;
+  for (const std::uint32_t binding :
+       {shared::kDecideShadowIn, shared::kDecideShadowOut, shared::kDecideRequests,
+        shared::kDecideNeeded, shared::kDecideContent, shared::kDecideDrawFlags,
+        shared::kDecideArgs, shared::kDecideList, shared::kDecideStats}) {
+    b.storage_buffer(binding, VK_SHADER_STAGE_COMPUTE_BIT);
+  }
+  b.combined_image_sampler(shared::kReceiverDepth, VK_SHADER_STAGE_COMPUTE_BIT)
+      .uniform_buffer(shared::kReceiverFrame, VK_SHADER_STAGE_COMPUTE_BIT);
+  return b;
+}
+
+constexpr VkAccessFlags2 kAnyAccess =
+    VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT |
+    VK_ACCESS_2_TRANSFER_READ_BIT | VK_ACCESS_2_TRANSFER_WRITE_BIT |
+    VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT;
+constexpr VkPipelineStageFlags2 kAnyStage = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT |
+                                            VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT |
+                                            VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT;
+constexpr VkAccessFlags2 kStorage =
+    VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
+
+void barriers(VkCommandBuffer cmd, std::initializer_list<VkBuffer> buffers,
+              VkPipelineStageFlags2 src_stage, VkAccessFlags2 src_access,
+              VkPipelineStageFlags2 dst_stage, VkAccessFlags2 dst_access) {
+  for (VkBuffer b : buffers) {
+    if (b != VK_NULL_HANDLE)
+      gpu::buffer_barrier(cmd, b, src_stage, src_access, dst_stage, dst_access);
+  }
+}
+
+gpu::Buffer storage(fgvk::ExecuteContext& context, VkDeviceSize bytes, VkBufferUsageFlags extra,
+                    const char* name) {
+  return gpu::Buffer::create(
+      context.gpu, std::max<VkDeviceSize>(bytes, 16),
+      VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT | extra,
+      gpu::MemoryUsage::gpu_only, context.pass.name + name);
+}
+
+}  // namespace
+
+void FaceDecision::prepare(fgvk::PrepareContext& context, bool receivers,
+                           std::vector<std::string>& shader_files, gpu::Fnv1a64& key) {
+  const gpu::DescriptorSetLayoutBuilder bindings = decision_bindings();
+  const auto push = static_cast<std::uint32_t>(sizeof(shared::DecisionPush));
+  const auto build = [&](const char* file) {
+    const Shader shader = load_shader(context, file, shader_files, {}, &key);
+    return build_compute_pipeline(context, shader, bindings, push);
+  };
+  decide_ = build("point_shadow_atlas/shadow_face_decide.comp");
+  receivers_ = receivers;
+  receivers_pipeline_ =
+      receivers ? build("point_shadow_atlas/shadow_receivers.comp") : ComputePipeline{};
+  layers_ = 0;  // buffers are made for the bound atlas at the first frame
+}
+
+void FaceDecision::adopt(FaceDecision& previous) {
+  if (previous.layers_ == 0 || !previous.content_) return;
+  layers_ = previous.layers_;
+  content_ = std::move(previous.content_);
+  content_cleared_ = previous.content_cleared_;
+  needed_ = std::move(previous.needed_);
+  shadow_in_ = std::move(previous.shadow_in_);
+}
+
+void FaceDecision::ensure_buffers(fgvk::ExecuteContext& context, std::uint32_t layers,
+                                  const DecisionLayout& layout) {
+  if (layers != layers_ || !content_) {
+    layers_ = layers;
+    shadow_in_ = storage(context, shadow_data_bytes(layers), 0, ".decisionShadowData");
+    needed_ = storage(context, VkDeviceSize{layers} * 4, 0, ".neededFaces");
+    content_ = storage(context, VkDeviceSize{layers} * 4, 0, ".layerEpochs");
+    content_cleared_ = false;
+  }
+  if (!stats_) {
+    stats_ =
+        storage(context, shared::kStatCount * 4, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, ".faceStats");
+  }
+  const std::uint32_t chunks = layout.chunks();
+  const std::uint32_t records = std::max(layout.records, 1u);
+  const std::uint32_t list = chunks * layout.chunk_faces + layers;
+  if (records > records_capacity_) {
+    records_capacity_ = records;
+    draw_flags_ = storage(context, VkDeviceSize{records} * 4, 0, ".drawFlags");
+  }
+  if (list > list_capacity_) {
+    list_capacity_ = list;
+    list_ = storage(context, VkDeviceSize{list} * 4, 0, ".resolveList");
+  }
+  if (chunks + 1 > args_capacity_) {
+    args_capacity_ = chunks + 1;
+    args_ = storage(context, VkDeviceSize{args_capacity_} * 16, VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,
+                    ".resolveArgs");
+  }
+  if (slots_.size() < context.frame.frames_in_flight) slots_.resize(context.frame.frames_in_flight);
+  Slot& slot = slots_[context.frame.slot];
+  const VkDeviceSize request_bytes = sizeof(shared::FaceRequest) * std::max(layers, 1u);
+  if (!slot.requests || slot.requests.size() < request_bytes) {
+    std::string suffix = ".";
+    suffix += std::to_string(context.frame.slot);
+    slot.requests =
+        gpu::Buffer::create(context.gpu, request_bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                            gpu::MemoryUsage::upload, context.pass.name + ".faceRequests" + suffix);
+    slot.readback =
+        gpu::Buffer::create(context.gpu, shared::kStatCount * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                            gpu::MemoryUsage::readback, context.pass.name + ".faceStats" + suffix);
+    slot.written = false;
+  }
+}
+
+void FaceDecision::write_requests(Slot& slot, const AtlasFrame& frame,
+                                  const DecisionLayout& layout) const {
+  auto* out = reinterpret_cast<shared::FaceRequest*>(slot.requests.mapped());
+  const std::uint32_t texels = layout.face_size * layout.face_size;
+  for (std::uint32_t layer = 0; layer < layers_; ++layer) {
+    out[layer] = {layer < frame.epochs.size() ? frame.epochs[layer] : 0u, 0u, texels, 0u};
+  }
+  for (std::size_t i = 0; i < frame.render_layers.size(); ++i) {
+    out[frame.render_layers[i]].record = static_cast<std::uint32_t>(i) + 1u;
+  }
+}
+
+// Fresh inputs: the shadow data, zero counters, empty lists; every earlier reader of
+// these buffers (last frame's shaders, copies and indirect dispatches) done first.
+void FaceDecision::reset(fgvk::ExecuteContext& context, VkBuffer staging, const AtlasFrame& frame,
+                         const DecisionLayout& layout) {
+  const VkCommandBuffer cmd = context.cmd;
+  barriers(cmd, {shadow_in_, needed_, content_, args_, stats_}, kAnyStage, kAnyAccess,
+           VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
+  const VkBufferCopy region{0, 0, shadow_data_bytes(layers_)};
+  vkCmdCopyBuffer(cmd, staging, shadow_in_, 1, &region);
+  vkCmdFillBuffer(cmd, needed_, 0, VK_WHOLE_SIZE, 0u);
+  vkCmdFillBuffer(cmd, stats_, 0, VK_WHOLE_SIZE, 0u);
+  if (frame.clear_all || !content_cleared_) {
+    vkCmdFillBuffer(cmd, content_, 0, VK_WHOLE_SIZE, 0u);
+    content_cleared_ = true;
+  }
+  const std::uint32_t groups = group_count(layout.face_size, shared::kResolveGroup);
+  const std::vector<glm::uvec4> args(layout.chunks() + 1, glm::uvec4(groups, groups, 0u, 0u));
+  vkCmdUpdateBuffer(cmd, args_, 0, args.size() * sizeof(glm::uvec4), args.data());
+  barriers(cmd, {shadow_in_, needed_, content_, args_, stats_},
+           VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+           VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, kStorage);
+  // Last frame's rasterisation read the flags and the lists.
+  barriers(cmd, {draw_flags_, list_}, kAnyStage, kAnyAccess, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+           kStorage);
+}
+
+void FaceDecision::bind(fgvk::ExecuteContext& context, const ComputePipeline& pipeline,
+                        Slot& slot) {
+  vkCmdBindPipeline(context.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.pipeline);
+  gpu::PushDescriptors descriptors;
+  descriptors.storage_buffer(shared::kDecideShadowIn, shadow_in_)
+      .storage_buffer(shared::kDecideShadowOut, context.bindings.buffer(port::kShadowData)->buffer)
+      .storage_buffer(shared::kDecideRequests, slot.requests)
+      .storage_buffer(shared::kDecideNeeded, needed_)
+      .storage_buffer(shared::kDecideContent, content_)
+      .storage_buffer(shared::kDecideDrawFlags, draw_flags_)
+      .storage_buffer(shared::kDecideArgs, args_)
+      .storage_buffer(shared::kDecideList, list_)
+      .storage_buffer(shared::kDecideStats, stats_)
+      .uniform_buffer(shared::kReceiverFrame, context.frame.frame_uniforms);
+  if (&pipeline == &receivers_pipeline_) {
+    const fgvk::BoundImage& depth = context.bindings.required_image(port::kDepth);
+    descriptors.combined_image_sampler(shared::kReceiverDepth, depth.view,
+                                       context.samplers.nearest_clamp, depth.layout);
+  }
+  descriptors.push(context.gpu, context.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.layout);
+}
+
+void FaceDecision::record(fgvk::ExecuteContext& context, const AtlasFrame& frame, VkBuffer staging,
+                          const DecisionLayout& layout) {
+  const auto layers = static_cast<std::uint32_t>(frame.faces.size());
+  ensure_buffers(context, layers, layout);
+  Slot& slot = slots_[context.frame.slot];
+  write_requests(slot, frame, layout);
+  const VkCommandBuffer cmd = context.cmd;
+  context.gpu.begin_label(cmd, context.pass.name + ".decide");
+  reset(context, staging, frame, layout);
+
+  shared::DecisionPush push{};
+  push.light_count = frame.header.counts.x;
+  push.layers = layers;
+  push.receivers = receivers_ ? 1u : 0u;
+  push.chunk_faces = layout.chunk_faces;
+  push.chunks = layout.chunks();
+  push.fill_first = layout.fill_first;
+  push.header_vec4s = static_cast<std::uint32_t>(kShadowFacesOffset / 16);
+  if (receivers_) {
+    const fgvk::BoundImage& depth = context.bindings.required_image(port::kDepth);
+    push.depth_size = {depth.extent.width, depth.extent.height};
+    bind(context, receivers_pipeline_, slot);
+    vkCmdPushConstants(cmd, receivers_pipeline_.layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push,
+                       &push);
+    const std::uint32_t tiles = group_count(depth.extent.width, shared::kReceiverTile) *
+                                group_count(depth.extent.height, shared::kReceiverTile);
+    vkCmdDispatch(cmd, tiles, 1, 1);
+    barriers(cmd, {needed_}, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, kStorage,
+             VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, kStorage);
+  }
+  bind(context, decide_, slot);
+  vkCmdPushConstants(cmd, decide_.layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
+  vkCmdDispatch(cmd, group_count(std::max(push.header_vec4s, layers), shared::kDecideGroup), 1, 1);
+  barriers(cmd, {draw_flags_, list_, args_, content_, stats_},
+           VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, kStorage,
+           VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT,
+           VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT);
+  context.gpu.end_label(cmd);
+  slot.frame_index = context.frame.frame_index;
+  last_slot_ = context.frame.slot;
+}
+
+void FaceDecision::finish(fgvk::ExecuteContext& context) {
+  Slot& slot = slots_[context.frame.slot];
+  barriers(context.cmd, {stats_}, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, kStorage,
+           VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
+  const VkBufferCopy region{0, 0, shared::kStatCount * 4};
+  vkCmdCopyBuffer(context.cmd, stats_, slot.readback, 1, &region);
+  barriers(context.cmd, {slot.readback}, VK_PIPELINE_STAGE_2_COPY_BIT,
+           VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
+  slot.written = true;
+}
+
+std::optional<FaceDecisionStats> FaceDecision::completed(std::uint32_t slot_index) const {
+  if (slot_index >= slots_.size() || !slots_[slot_index].written) return std::nullopt;
+  const Slot& slot = slots_[slot_index];
+  std::uint32_t counts[shared::kStatCount] = {};
+  std::memcpy(counts, slot.readback.mapped(), sizeof counts);
+  FaceDecisionStats out;
+  out.frame_index = slot.frame_index;
+  out.drawn = counts[shared::kStatDrawn];
+  out.cached = counts[shared::kStatCached];
+  out.receiver_culled = counts[shared::kStatReceivers];
+  out.texels = counts[shared::kStatTexels];
+  return out;
+}
+
+}  // namespace antumbra::passes

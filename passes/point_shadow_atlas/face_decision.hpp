@@ -1,0 +1,100 @@
+#pragma once
+// The compute rasteriser's GPU-side face decision (docs/technique.md, "Receiver-driven
+// faces"): copies the frame's shadow data in, optionally marks the faces a visible pixel
+// needs (shadow_receivers.comp, from the G-buffer depth), then decides per layer what
+// is drawn and publishes the graph's shadowData (shadow_face_decide.comp). It keeps, per
+// layer, the epoch of what the layer holds, so a face skipped for lack of receivers is
+// drawn the first frame a receiver appears, and never shown stale. Counters come back
+// through a per-slot readback buffer. Every barrier here is on its own buffers.
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "antumbra/fgvk/pass.hpp"
+#include "antumbra/gpu/hash.hpp"
+#include "antumbra/gpu/resources.hpp"
+#include "atlas_planner.hpp"
+#include "common/pass_support.hpp"
+
+namespace antumbra::passes {
+
+// What the decision found on the GPU for one frame (face_decision_interface.h).
+struct FaceDecisionStats {
+  std::uint64_t frame_index = 0;
+  std::uint32_t drawn = 0;
+  std::uint32_t cached = 0;
+  std::uint32_t receiver_culled = 0;  // visible to the camera, but no visible pixel needs them
+  std::uint64_t texels = 0;           // of the drawn faces
+};
+
+// Where the decision puts drawn records: chunk c's resolve list starts at c * chunk_faces
+// and its dispatch arguments at c * 16 bytes; the fill list (far depth for every layer
+// not drawn when the contents are unknown) follows the last chunk.
+struct DecisionLayout {
+  std::uint32_t records = 0;      // candidate records (frame.render_layers)
+  std::uint32_t chunk_faces = 1;  // records per chunk
+  std::uint32_t face_size = 0;
+  std::uint32_t fill_first = 0;  // 0: no fill; else 1 + the record of layer 0's fill
+  [[nodiscard]] std::uint32_t chunks() const { return (records + chunk_faces - 1) / chunk_faces; }
+};
+
+class FaceDecision {
+ public:
+  // `receivers`: the G-buffer depth is bound and receiver culling is on.
+  void prepare(fgvk::PrepareContext& context, bool receivers,
+               std::vector<std::string>& shader_files, gpu::Fnv1a64& key);
+  // Records everything up to the published shadowData and the resolve lists.
+  // `staging`: this frame's shadow data as the planner made it (host-visible).
+  void record(fgvk::ExecuteContext& context, const AtlasFrame& frame, VkBuffer staging,
+              const DecisionLayout& layout);
+  // After the rasterisation: the counters into this slot's readback buffer.
+  void finish(fgvk::ExecuteContext& context);
+  // The counters of the newest frame whose slot has completed (`slot`'s previous frame
+  // when called while recording into it), if any.
+  [[nodiscard]] std::optional<FaceDecisionStats> completed(std::uint32_t slot) const;
+  // Hands over what the layers hold (a reload that keeps the atlas and its drawing).
+  void adopt(FaceDecision& previous);
+
+  [[nodiscard]] bool receivers() const { return receivers_; }
+  [[nodiscard]] std::uint32_t last_slot() const { return last_slot_; }
+  [[nodiscard]] VkBuffer draw_flags() const { return draw_flags_; }
+  [[nodiscard]] VkBuffer list() const { return list_; }
+  [[nodiscard]] VkBuffer args() const { return args_; }
+
+ private:
+  struct Slot {
+    gpu::Buffer requests;  // FaceRequest per layer
+    gpu::Buffer readback;  // counters
+    std::uint64_t frame_index = 0;
+    bool written = false;
+  };
+  void ensure_buffers(fgvk::ExecuteContext& context, std::uint32_t layers,
+                      const DecisionLayout& layout);
+  void write_requests(Slot& slot, const AtlasFrame& frame, const DecisionLayout& layout) const;
+  void reset(fgvk::ExecuteContext& context, VkBuffer staging, const AtlasFrame& frame,
+             const DecisionLayout& layout);
+  void bind(fgvk::ExecuteContext& context, const ComputePipeline& pipeline, Slot& slot);
+
+  bool receivers_ = false;
+  ComputePipeline receivers_pipeline_;
+  ComputePipeline decide_;
+  std::uint32_t layers_ = 0;
+  std::uint32_t records_capacity_ = 0;
+  std::uint32_t list_capacity_ = 0;
+  std::uint32_t args_capacity_ = 0;
+  gpu::Buffer shadow_in_;   // device copy of the staging data (read by every tile)
+  gpu::Buffer needed_;      // uint per layer
+  gpu::Buffer content_;     // uint per layer: the epoch it holds
+  gpu::Buffer draw_flags_;  // uint per record
+  gpu::Buffer args_;        // uvec4 per chunk + fill
+  gpu::Buffer list_;
+  gpu::Buffer stats_;
+  bool content_cleared_ = false;  // content_ starts at zero (nothing held)
+  std::vector<Slot> slots_;
+  std::uint32_t last_slot_ = 0;
+};
+
+}  // namespace antumbra::passes

@@ -1,0 +1,68 @@
+// Interface of the compute rasteriser's face decision (shadow_receivers.comp,
+// shadow_face_decide.comp), valid GLSL and C++ (docs/technique.md, "Receiver-driven
+// faces"): which candidate faces are drawn this frame is decided on the GPU, from the
+// visible pixels of the G-buffer depth and from what each layer already holds.
+#ifndef ANTUMBRA_FACE_DECISION_INTERFACE_H
+#define ANTUMBRA_FACE_DECISION_INTERFACE_H
+
+#include "../interface/shared/glsl_cpp.h"
+
+ANTUMBRA_SHARED_BEGIN
+
+// shadow_receivers.comp: one workgroup per square tile of depth pixels.
+const uint kReceiverTile = 16;
+const uint kReceiverGroup = 256;  // kReceiverTile^2 threads, one per pixel
+// shadow_face_decide.comp: one thread per layer (and per vec4 of the copied header).
+const uint kDecideGroup = 64;
+
+// A pixel also needs a neighbouring cube face when its direction from the light lies
+// within this fraction of the major axis of that face's border, and a light up to this
+// fraction beyond its range: the lookups offset receivers along the normal by about a
+// texel (up to two at grazing angles) before they pick a face, which is under 1/16 of
+// the major axis for faces of 64 texels and more.
+const float kReceiverMargin = 0.0625;
+
+// Per atlas layer, written by the CPU each frame.
+struct FaceRequest {
+  uint epoch;   // what the layer should hold: changes whenever the face's key changes
+  uint record;  // 1 + the face's RasterFace record when it is a candidate, else 0
+  uint texels;  // texels the face has (its width squared)
+  uint unused;
+};
+
+// Counters of shadow_face_decide.comp (uint each), read back for the report.
+const uint kStatDrawn = 0;
+const uint kStatCached = 1;     // candidates needed and already current
+const uint kStatReceivers = 2;  // candidates no visible pixel needs: skipped
+const uint kStatTexels = 3;     // texels of the drawn faces
+const uint kStatCount = 4;
+
+ANTUMBRA_PUSH_CONSTANTS(DecisionPush) {
+  uvec2 depth_size;   // shadow_receivers.comp: the G-buffer depth's extent
+  uint light_count;   // lights in the shadow data
+  uint layers;        // atlas layers
+  uint receivers;     // 1: the needed flags come from shadow_receivers.comp; 0: all needed
+  uint chunk_faces;   // records per rasterisation chunk (resolve list per chunk)
+  uint chunks;        // chunks this frame; the fill list's arguments follow theirs
+  uint fill_first;    // 0: no fill; else 1 + the record of layer 0's fill (far depth)
+  uint header_vec4s;  // uvec4s before the face records (header and lights), copied as is
+  uint unused0;
+  uint unused1;
+  uint unused2;
+};
+
+ANTUMBRA_BINDING(kDecideShadowIn, 0)   // this frame's shadow data as the CPU wrote it
+ANTUMBRA_BINDING(kDecideShadowOut, 1)  // the graph's shadowData (info.z/w decided here)
+ANTUMBRA_BINDING(kDecideRequests, 2)   // FaceRequest per layer
+ANTUMBRA_BINDING(kDecideNeeded, 3)     // uint per layer: a visible pixel needs it
+ANTUMBRA_BINDING(kDecideContent, 4)    // uint per layer: the epoch the layer holds
+ANTUMBRA_BINDING(kDecideDrawFlags, 5)  // uint per record: drawn this frame
+ANTUMBRA_BINDING(kDecideArgs, 6)       // uvec4 per chunk (+ fill): resolve dispatch
+ANTUMBRA_BINDING(kDecideList, 7)       // uint records to resolve, per chunk then fill
+ANTUMBRA_BINDING(kDecideStats, 8)      // uint[kStatCount]
+ANTUMBRA_BINDING(kReceiverDepth, 9)    // the G-buffer depth (sampler2D)
+ANTUMBRA_BINDING(kReceiverFrame, 10)   // FrameUniforms
+
+ANTUMBRA_SHARED_END
+
+#endif

@@ -1,0 +1,165 @@
+// Receiver culling of the compute rasteriser (point-shadow-atlas, `depth` bound,
+// receiverCulling) on a device (lavapipe in CI, validation and synchronization validation
+// on): faces no visible pixel needs are skipped, a face that gains a receiver is drawn the
+// same frame, and the lit image never differs from drawing every face the frustum allows.
+
+#include <cstdint>
+#include <vector>
+
+#include "atlas_gpu_fixture.hpp"
+
+namespace {
+
+struct GpuCounts {
+  std::uint32_t total = 0, culled = 0, by_frustum = 0, by_receivers = 0, rendered = 0, cached = 0;
+  std::uint64_t texels = 0;
+  bool receiver_culling = false;
+};
+
+// Its own suite name: gtest refuses one suite name for fixtures of two translation units.
+class ReceiverCullingGpuTest : public AtlasGpuTest {
+ protected:
+  // data/graphs/hard.json (hard shadows sampled by the lighting) on the compute
+  // rasteriser with an r32f atlas of kFace texels; `receivers` binds the G-buffer depth.
+  void load_hard(bool receivers) {
+    auto document = base::load_json_file((source_dir() / "data/graphs/hard.json").string());
+    ASSERT_TRUE(document.ok());
+    auto graph = fg::parse_graph(document.value());
+    ASSERT_TRUE(graph.ok());
+    for (auto& r : graph.value().resources) {
+      if (r.name == "atlas") {
+        r.size = {false, 1.0, 1.0, kFace, kFace};
+        r.format = fg::Format::r32f;
+      }
+    }
+    for (auto& p : graph.value().passes) {
+      if (p.type != "point-shadow-atlas") continue;
+      p.params["rasterizer"] = "compute";
+      if (receivers) p.inputs.push_back({"depth", "depth", p.pointer + "/in/depth"});
+    }
+    fg::CompileOptions options;
+    options.viewport = {kViewport.width, kViewport.height};
+    options.footprint = executor_->footprint_fn();
+    auto plan = fg::compile(graph.value(), registry_->reflection(), options);
+    ASSERT_TRUE(plan.ok());
+    executor_->load(std::move(plan.value()));
+    gpu_scene_ = std::make_unique<passes::GpuScene>(ctx(), scene_, frames_->frames_in_flight());
+  }
+
+  // One frame, then the GPU's counts of it (Pass::collect once the GPU is done).
+  GpuCounts counted_frame() {
+    frame();
+    frames_->wait_all();
+    executor_->collect(report_);
+    GpuCounts c;
+    for (const auto& m : report_.messages()) {
+      if (m.code != "SHD010") continue;
+      const auto& d = m.details;
+      c = {d["total"].get<std::uint32_t>(),           d["culled"].get<std::uint32_t>(),
+           d["culledByFrustum"].get<std::uint32_t>(), d["culledByReceivers"].get<std::uint32_t>(),
+           d["rendered"].get<std::uint32_t>(),        d["cached"].get<std::uint32_t>(),
+           d["texels"].get<std::uint64_t>(),          d["receiverCulling"].get<bool>()};
+    }
+    return c;
+  }
+
+  // The lit frame (rgba16f hdr), as raw half floats.
+  std::vector<std::uint16_t> read_hdr() {
+    frames_->wait_all();
+    const gpu::Image* image = executor_->gpu_image("hdr");
+    const VkImageLayout layout = executor_->image("hdr")->layout;
+    const VkDeviceSize bytes = VkDeviceSize{kViewport.width} * kViewport.height * 8;
+    auto readback = gpu::Buffer::create(ctx(), bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                        gpu::MemoryUsage::readback, "test.hdr.readback");
+    const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+    ctx().submit_immediate([&](VkCommandBuffer cmd) {
+      gpu::image_barrier(cmd, {image->handle(), layout, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                               VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_WRITE_BIT,
+                               VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT, range});
+      VkBufferImageCopy region{};
+      region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+      region.imageExtent = {kViewport.width, kViewport.height, 1};
+      vkCmdCopyImageToBuffer(cmd, image->handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                             readback.handle(), 1, &region);
+      gpu::image_barrier(cmd, {image->handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, layout,
+                               VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_NONE,
+                               VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+                               VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT, range});
+      gpu::buffer_barrier(cmd, readback.handle(), VK_PIPELINE_STAGE_2_COPY_BIT,
+                          VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT,
+                          VK_ACCESS_2_HOST_READ_BIT);
+    });
+    std::vector<std::uint16_t> out(bytes / 2);
+    std::memcpy(out.data(), readback.mapped(), bytes);
+    return out;
+  }
+
+  // Straight down onto the floor under light l05: its -Y face has receivers, the faces
+  // that look up or sideways into open space mostly do not.
+  void look_down() {
+    const glm::vec3 light = scene_.lights[kLight].position;
+    scene_.camera.position = glm::vec3(light.x, 7.0f, light.z + 0.01f);
+    scene_.camera.target = glm::vec3(light.x, 0.0f, light.z);
+  }
+};
+
+}  // namespace
+
+TEST_F(ReceiverCullingGpuTest, SkipsFacesWithoutAVisibleReceiver) {
+  look_down();
+  load_hard(true);
+  const GpuCounts c = counted_frame();
+  EXPECT_TRUE(c.receiver_culling);
+  EXPECT_EQ(c.total, 96u);
+  EXPECT_GT(c.by_receivers, 0u) << "faces in the frustum that no visible pixel needs";
+  EXPECT_GT(c.rendered, 0u);
+  EXPECT_EQ(c.cached, 0u) << "the first frame holds nothing";
+  EXPECT_EQ(c.culled, c.by_frustum + c.by_receivers);
+  EXPECT_EQ(c.total, c.culled + c.rendered + c.cached);
+  EXPECT_EQ(c.texels, std::uint64_t{c.rendered} * kFace * kFace);
+  // The skipped faces are not needed: the lit image is the same as with every face drawn.
+  const auto culled_image = read_hdr();
+  const std::uint32_t drawn_with_culling = c.rendered;
+  load_hard(false);
+  const GpuCounts all = counted_frame();
+  EXPECT_FALSE(all.receiver_culling);
+  EXPECT_EQ(all.by_receivers, 0u);
+  EXPECT_GT(all.rendered, drawn_with_culling);
+  EXPECT_EQ(read_hdr(), culled_image);
+}
+
+TEST_F(ReceiverCullingGpuTest, AFaceThatGainsAReceiverIsDrawnThatFrame) {
+  look_down();
+  load_hard(true);
+  const GpuCounts down = counted_frame();
+  ASSERT_GT(down.by_receivers, 0u);
+  const GpuCounts again = counted_frame();
+  EXPECT_EQ(again.rendered, 0u) << "nothing moved: every needed face is cached";
+  EXPECT_EQ(again.cached, down.rendered);
+  // The atrium's own view: faces skipped so far now light visible pixels.
+  scene_.camera = atrium().camera;
+  const GpuCounts turned = counted_frame();
+  EXPECT_GT(turned.rendered, 0u) << "faces that gained receivers are drawn this frame";
+  const auto image = read_hdr();
+  // The same view with every frustum-visible face drawn from the start.
+  load_hard(false);
+  counted_frame();
+  EXPECT_EQ(read_hdr(), image) << "no stale or missing face in the frame the view turned";
+}
+
+TEST_F(ReceiverCullingGpuTest, ALightMovedOutOfViewIsNotRedrawnUntilNeeded) {
+  load_hard(true);
+  counted_frame();
+  const GpuCounts settled = counted_frame();
+  EXPECT_EQ(settled.rendered, 0u);
+  // l05 sinks 4.5 m below the floor's top, beyond its 3.8 m range of any visible pixel:
+  // its faces change, yet none is drawn.
+  scene_.lights[kLight].position.y = -4.5f;
+  const GpuCounts moved = counted_frame();
+  EXPECT_EQ(moved.rendered, 0u);
+  scene_.lights[kLight].position.y = kLightHeight;
+  const GpuCounts back = counted_frame();
+  EXPECT_GT(back.rendered, 0u) << "back in view: its faces are drawn again at once";
+  EXPECT_NEAR(centre_linear_depth(read_layer(6 * kLight + 3), scene_.lights[kLight]), kLightHeight,
+              0.02f);
+}
