@@ -89,10 +89,14 @@ class AtlasGpuTest : public gpu::testing::GpuTest {
     for (auto& p : graph.value().passes) {
       if (p.name == "shadows") p.params.update(params);
     }
+    load_desc(graph.value());
+  }
+  // Compiles a graph at kViewport and runs it on the executor with the fixture's scene.
+  void load_desc(const fg::GraphDesc& graph) {
     fg::CompileOptions compile_options;
     compile_options.viewport = {kViewport.width, kViewport.height};
     compile_options.footprint = executor_->footprint_fn();
-    auto plan = fg::compile(graph.value(), registry_->reflection(), compile_options);
+    auto plan = fg::compile(graph, registry_->reflection(), compile_options);
     ASSERT_TRUE(plan.ok());
     executor_->load(std::move(plan.value()));
     gpu_scene_ = std::make_unique<passes::GpuScene>(ctx(), scene_, frames_->frames_in_flight());
@@ -128,12 +132,17 @@ class AtlasGpuTest : public gpu::testing::GpuTest {
     read_raw("shadowColour", VK_IMAGE_ASPECT_COLOR_BIT, layer, texels.data());
     return texels;
   }
-  // 4 bytes per texel of one layer of a graph image, whatever layout the graph left it in.
+  // 4 bytes per texel of one atlas-sized layer of a graph image.
   void read_raw(const char* resource, VkImageAspectFlags aspect, std::uint32_t layer, void* out) {
+    read_raw(resource, aspect, layer, {kFace, kFace}, 4, out);
+  }
+  // One layer of a graph image, whatever layout the graph left it in.
+  void read_raw(const char* resource, VkImageAspectFlags aspect, std::uint32_t layer,
+                VkExtent2D extent, std::uint32_t texel_bytes, void* out) {
     frames_->wait_all();
     const gpu::Image* image = executor_->gpu_image(resource);
     const VkImageLayout layout = executor_->image(resource)->layout;
-    const VkDeviceSize bytes = VkDeviceSize{kFace} * kFace * 4;
+    const VkDeviceSize bytes = VkDeviceSize{extent.width} * extent.height * texel_bytes;
     auto readback = gpu::Buffer::create(ctx(), bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                                         gpu::MemoryUsage::readback, "test.atlas.readback");
     const VkImageSubresourceRange range{aspect, 0, 1, layer, 1};
@@ -143,7 +152,7 @@ class AtlasGpuTest : public gpu::testing::GpuTest {
                                VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT, range});
       VkBufferImageCopy region{};
       region.imageSubresource = {aspect, 0, layer, 1};
-      region.imageExtent = {kFace, kFace, 1};
+      region.imageExtent = {extent.width, extent.height, 1};
       vkCmdCopyImageToBuffer(cmd, image->handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
                              readback.handle(), 1, &region);
       gpu::image_barrier(cmd, {image->handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, layout,

@@ -37,13 +37,7 @@ class ReceiverCullingGpuTest : public AtlasGpuTest {
       p.params["rasterizer"] = "compute";
       if (receivers) p.inputs.push_back({"depth", "depth", p.pointer + "/in/depth"});
     }
-    fg::CompileOptions options;
-    options.viewport = {kViewport.width, kViewport.height};
-    options.footprint = executor_->footprint_fn();
-    auto plan = fg::compile(graph.value(), registry_->reflection(), options);
-    ASSERT_TRUE(plan.ok());
-    executor_->load(std::move(plan.value()));
-    gpu_scene_ = std::make_unique<passes::GpuScene>(ctx(), scene_, frames_->frames_in_flight());
+    load_desc(graph.value());
   }
 
   // One frame, then the GPU's counts of it (Pass::collect once the GPU is done).
@@ -65,32 +59,8 @@ class ReceiverCullingGpuTest : public AtlasGpuTest {
 
   // The lit frame (rgba16f hdr), as raw half floats.
   std::vector<std::uint16_t> read_hdr() {
-    frames_->wait_all();
-    const gpu::Image* image = executor_->gpu_image("hdr");
-    const VkImageLayout layout = executor_->image("hdr")->layout;
-    const VkDeviceSize bytes = VkDeviceSize{kViewport.width} * kViewport.height * 8;
-    auto readback = gpu::Buffer::create(ctx(), bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                        gpu::MemoryUsage::readback, "test.hdr.readback");
-    const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-    ctx().submit_immediate([&](VkCommandBuffer cmd) {
-      gpu::image_barrier(cmd, {image->handle(), layout, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                               VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_WRITE_BIT,
-                               VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT, range});
-      VkBufferImageCopy region{};
-      region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-      region.imageExtent = {kViewport.width, kViewport.height, 1};
-      vkCmdCopyImageToBuffer(cmd, image->handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                             readback.handle(), 1, &region);
-      gpu::image_barrier(cmd, {image->handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, layout,
-                               VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_NONE,
-                               VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
-                               VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT, range});
-      gpu::buffer_barrier(cmd, readback.handle(), VK_PIPELINE_STAGE_2_COPY_BIT,
-                          VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT,
-                          VK_ACCESS_2_HOST_READ_BIT);
-    });
-    std::vector<std::uint16_t> out(bytes / 2);
-    std::memcpy(out.data(), readback.mapped(), bytes);
+    std::vector<std::uint16_t> out(std::size_t{kViewport.width} * kViewport.height * 4);
+    read_raw("hdr", VK_IMAGE_ASPECT_COLOR_BIT, 0, kViewport, 8, out.data());
     return out;
   }
 
