@@ -94,18 +94,29 @@ std::vector<Scenario> builtin_scenarios(double scale) {
     int kernel;
   };
   constexpr Variant kMovingVariants[] = {{"hard", 0}, {"pcss", 11}, {"ssss", 11}};
-  // Each on both shadow rasterisers; the compute rows end in "/compute".
+  // Each on both shadow rasterisers (the compute rows end in "/compute"; they cull faces
+  // by receivers), and the compute one again with per-light resolution ("/compute/screen").
+  struct Raster {
+    const char* rasterizer;
+    const char* resolution;
+  };
+  constexpr Raster kRasters[] = {
+      {"hardware", "fixed"}, {"compute", "fixed"}, {"compute", "screen"}};
   for (const int lights : {16, 64, 256, kDistrictLights}) {
     for (const Variant& v : kMovingVariants) {
-      for (const char* rasterizer : {"hardware", "compute"}) {
+      for (const Raster& raster : kRasters) {
         Scenario s = make("moving", technique(v.technique), v.kernel, 1080, lights, scale);
         const bool district = lights == kDistrictLights;
         s.scene = district ? kDistrictScene : "atrium.json";
         s.moving = district ? kDistrictMovingLights : lights;
-        s.rasterizer = rasterizer;
+        s.rasterizer = raster.rasterizer;
         if (s.rasterizer != "hardware") {
           s.name += "/" + s.rasterizer;
           s.overrides.push_back({"point-shadow-atlas", "rasterizer", s.rasterizer});
+        }
+        if (std::string(raster.resolution) != "fixed") {
+          s.name += std::string("/") + raster.resolution;
+          s.overrides.push_back({"point-shadow-atlas", "resolution", raster.resolution});
         }
         out.push_back(std::move(s));
       }

@@ -13,7 +13,11 @@
 //  - ShadowFace.view_proj maps world -> face clip: clip.w = distance along the face's
 //    axis, depth = clip.z / clip.w (0 at near = params.y, 1 at far = position_range.w),
 //    uv = clip.xy / clip.w * 0.5 + 0.5 (v grows with texel rows);
-//  - ShadowFace.info.z = 1 when the layer holds this frame's depth for that face.
+//  - ShadowFace.info.z = 1 when the layer holds this frame's depth for that face;
+//  - a light's faces have ShadowLight.projection.y texels per side and fill the square
+//    [0, projection.z) of their layers' uv (per-light resolution): ShadowCoord.uv is the
+//    face's own uv (0..1), and shadow_atlas_uv() turns it into the atlas's.
+
 //
 // Primitive API (no buffer access):
 //   uint  shadow_cube_face(vec3 light_to_point)
@@ -22,7 +26,9 @@
 //   float shadow_linearise_light(ShadowLight l, float depth)         same, any light type
 //   bool  shadow_is_ortho(ShadowLight l)                             directional light
 //   vec3  shadow_offset_position(ShadowLight l, vec3 world_pos, vec3 normal, float face_size)
+//   float shadow_face_texels(ShadowLight l, float atlas_size)       the light's face size
 //   ShadowCoord shadow_coord(mat4 face_view_proj, ShadowLight l, int layer, vec3 world_pos)
+//   vec2  shadow_atlas_uv(ShadowCoord c, vec2 face_uv)             clamped to the face
 //   float shadow_hard_coord(sampler2DArray atlas, ShadowCoord c)    1 lit, 0 shadowed
 // Convenience, when the includer defines SHADOW_FACES (the name of its ShadowFace
 // array, e.g. `#define SHADOW_FACES shadow_faces`) before including this file:
@@ -47,7 +53,19 @@ struct ShadowCoord {
   float depth;   // receiver depth in face clip space (0..1)
   float linear;  // receiver distance along the face axis (metres)
   bool valid;    // false: no faces, or the point is nearer the light than its near plane
+  float texels;  // the face's size in texels
+  float share;   // the face's size over the atlas's (its uv square in the layer)
 };
+
+float shadow_face_texels(ShadowLight l, float atlas_size) {
+  return l.projection.y > 0.0 ? l.projection.y : atlas_size;
+}
+
+// Face uv -> atlas uv, clamped to the face's texel centres so that no filter tap reads
+// another face's texels (or the unused rest of the layer).
+vec2 shadow_atlas_uv(ShadowCoord c, vec2 face_uv) {
+  return clamp(face_uv, vec2(0.5 / c.texels), vec2(1.0 - 0.5 / c.texels)) * c.share;
+}
 
 uint shadow_cube_face(vec3 d) {
   vec3 a = abs(d);
@@ -94,7 +112,9 @@ vec3 shadow_offset_position(ShadowLight l, vec3 world_pos, vec3 normal, float fa
 // Orthographic maps: points outside the box's xy square or above its near plane are
 // invalid (lit); below the far plane, depth > 1 reads as lit like a light's range.
 ShadowCoord shadow_coord(mat4 face_view_proj, ShadowLight l, int layer, vec3 world_pos) {
-  ShadowCoord c = ShadowCoord(vec2(0.0), float(max(layer, 0)), 1.0, 0.0, false);
+  ShadowCoord c = ShadowCoord(vec2(0.0), float(max(layer, 0)), 1.0, 0.0, false,
+                              l.projection.y > 0.0 ? l.projection.y : 65536.0,
+                              l.projection.z > 0.0 ? l.projection.z : 1.0);
   if (layer < 0) return c;
   vec4 clip = face_view_proj * vec4(world_pos, 1.0);
   if (shadow_is_ortho(l)) {
@@ -117,13 +137,14 @@ ShadowCoord shadow_coord(mat4 face_view_proj, ShadowLight l, int layer, vec3 wor
 // light's range (depth > 1) read as lit.
 float shadow_hard_coord(sampler2DArray atlas, ShadowCoord c) {
   if (!c.valid || c.depth >= 1.0) return 1.0;
-  float stored = textureLod(atlas, vec3(clamp(c.uv, 0.0, 1.0), c.layer), 0.0).r;
+  float stored = textureLod(atlas, vec3(shadow_atlas_uv(c, c.uv), c.layer), 0.0).r;
   return c.depth <= stored ? 1.0 : 0.0;
 }
 
 #ifdef SHADOW_FACES
 float shadow_hard(sampler2DArray atlas, ShadowLight l, vec3 world_pos, vec3 normal) {
-  vec3 p = shadow_offset_position(l, world_pos, normal, float(textureSize(atlas, 0).x));
+  vec3 p = shadow_offset_position(l, world_pos, normal,
+                                  shadow_face_texels(l, float(textureSize(atlas, 0).x)));
   int layer = shadow_face_layer(l, p);
   if (layer < 0) return 1.0;
   return shadow_hard_coord(atlas, shadow_coord(SHADOW_FACES[layer].view_proj, l, layer, p));

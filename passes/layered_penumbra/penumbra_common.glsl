@@ -23,7 +23,7 @@ PenumbraSample estimate_penumbra(ShadowLight sl, vec3 world, vec3 n_world) {
   result.esm = 1.0;
 
   float light_size = sl.params.x * light_size_scale;
-  float face_size = float(shadow_header.counts.z);
+  float face_size = shadow_face_texels(sl, float(shadow_header.counts.z));
   vec3 p = shadow_offset_position(sl, world, n_world, face_size);
   int layer = shadow_face_layer(sl, p);
   if (layer < 0) return result;
@@ -33,7 +33,8 @@ PenumbraSample estimate_penumbra(ShadowLight sl, vec3 world, vec3 n_world) {
   // ESM (docs/technique.md section 3): the occluder at the lookup against the receiver, in
   // units of the light's depth range so one c suits every light. Receivers just behind
   // their own surface stay near 1, which is what keeps ESM free of acne.
-  float occluder = shadow_linearise_light(sl, textureLod(atlas, vec3(c.uv, c.layer), 0.0).r);
+  vec2 at = shadow_atlas_uv(c, c.uv);
+  float occluder = shadow_linearise_light(sl, textureLod(atlas, vec3(at, c.layer), 0.0).r);
   float depth_range = max(sl.position_range.w, 1e-3);
   result.esm = clamp(exp(-esm_constant * max(c.linear - occluder, 0.0) / depth_range), 0.0, 1.0);
 
@@ -42,7 +43,7 @@ PenumbraSample estimate_penumbra(ShadowLight sl, vec3 world, vec3 n_world) {
   // when it is nearer than the receiver, and its depth stands in for the search's
   // average (seed 000: cheaper, slightly wider penumbrae near contact edges).
   float z_receiver = c.linear;
-  float nearest = textureLod(min_depth, vec3(c.uv, c.layer), 0.0).r;
+  float nearest = textureLod(min_depth, vec3(at, c.layer), 0.0).r;
   int blockers = nearest < c.depth ? 1 : 0;
   float blocker_sum = blockers > 0 ? shadow_linearise_light(sl, nearest) : 0.0;
   bool ortho = shadow_is_ortho(sl);
@@ -66,7 +67,7 @@ PenumbraSample estimate_penumbra(ShadowLight sl, vec3 world, vec3 n_world) {
     for (int x = 0; x < taps; ++x) {
       vec2 offset = (vec2(x, y) - 0.5 * float(taps - 1)) * step_uv;
       vec2 tap = clamp(c.uv + offset, vec2(0.5 * texel), vec2(1.0 - 0.5 * texel));
-      float stored = textureLod(atlas, vec3(tap, c.layer), 0.0).r;
+      float stored = textureLod(atlas, vec3(tap * c.share, c.layer), 0.0).r;
       if (stored < c.depth) {
         blocker_sum += shadow_linearise_light(sl, stored);
         ++blockers;
@@ -87,7 +88,7 @@ PenumbraSample estimate_penumbra(ShadowLight sl, vec3 world, vec3 n_world) {
   // plane (shadow_colour.frag). A receiver not behind that pane (a lit pane's own
   // surface, offset towards the light) is not tinted by it.
   if (sl.params.w > 0.5) {
-    vec4 tint = textureLod(colour_atlas, vec3(c.uv, c.layer), 0.0);
+    vec4 tint = textureLod(colour_atlas, vec3(at, c.layer), 0.0);
     if (c.linear > tint.a * sl.position_range.w) result.colour = pack_colour(vec4(tint.rgb, 1.0));
   }
 #endif

@@ -74,6 +74,9 @@ const AtlasFrame& AtlasPlanner::plan(const scene::Scene& scene, const glm::mat4&
     const std::uint32_t first = next_layer;
     next_layer += face_count;
     out.params.z = static_cast<float>(first);
+    const std::uint32_t resolution = light_resolution(light, first, settings);
+    out.projection.y = static_cast<float>(resolution);
+    out.projection.z = static_cast<float>(resolution) / static_cast<float>(settings.face_size);
     std::uint32_t visible = (1u << face_count) - 1u;
     if (light.type == scene::LightType::point) {
       if (settings.cull_faces) visible = sf::visible_faces(camera, light.position, light.range);
@@ -101,7 +104,7 @@ const AtlasFrame& AtlasPlanner::plan(const scene::Scene& scene, const glm::mat4&
       }
       out_face.info = {i, face, 0u, 0u};
       plan_layer(layer, (visible & (1u << face)) != 0u,
-                 FaceKey{out_face.view_proj, geometry_version}, settings);
+                 FaceKey{out_face.view_proj, geometry_version, resolution}, settings);
     }
   }
   // Layers no light owns this frame hold nothing useful any more.
@@ -109,6 +112,20 @@ const AtlasFrame& AtlasPlanner::plan(const scene::Scene& scene, const glm::mat4&
     layers_[layer].valid = false;
   }
   return frame_;
+}
+
+std::uint32_t AtlasPlanner::light_resolution(const scene::PointLight& light,
+                                             std::uint32_t first_layer,
+                                             const AtlasSettings& settings) {
+  if (!settings.adaptive_resolution || light.type == scene::LightType::directional) {
+    return settings.face_size;  // the sun's map follows the camera frustum, not a size
+  }
+  ResolutionSettings r = settings.resolution;
+  r.maximum = settings.face_size;
+  const float wanted = projected_radius(light.position, light.range, r) * r.scale;
+  LayerState& state = layers_[first_layer];
+  state.resolution = choose_resolution(wanted, state.resolution, r);
+  return state.resolution;
 }
 
 // Static caching: a visible face is drawn only when its layer does not hold it already.
@@ -140,6 +157,7 @@ void AtlasPlanner::plan_layer(std::uint32_t layer, bool visible, const FaceKey& 
     return;
   }
   ++frame_.stats.rendered;
+  frame_.stats.texels += std::uint64_t{key.resolution} * key.resolution;
   frame_.render_layers.push_back(layer);
   out_face.info.w = 1u;  // consumers that cache derived data redo this layer
   state.valid = true;

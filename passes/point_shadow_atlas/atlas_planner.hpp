@@ -13,6 +13,7 @@
 
 #include "antumbra/scene/scene.hpp"
 #include "common/shadow_data.hpp"
+#include "face_resolution.hpp"
 
 namespace antumbra::passes {
 
@@ -26,6 +27,10 @@ struct AtlasSettings {
   // culling, face_decision.hpp): every visible face is a candidate, and the planner only
   // says which epoch of its contents each layer should hold.
   bool gpu_decides = false;
+  // Per-light face resolution from the light's size on screen (face_resolution.hpp);
+  // off: every face has face_size texels. `resolution.maximum` is set from face_size.
+  bool adaptive_resolution = false;
+  ResolutionSettings resolution;
   // The directional light's map covers the camera frustum up to this distance (metres).
   float sun_max_distance = 40.0f;
   float camera_near = 0.1f;  // the scene camera's planes, for the sun's fit
@@ -38,6 +43,7 @@ struct AtlasStats {
   std::uint32_t rendered = 0;    // drawn this frame
   std::uint32_t cached = 0;      // needed and still valid from an earlier frame
   std::uint32_t candidates = 0;  // gpu_decides: visible faces handed to the GPU's decision
+  std::uint64_t texels = 0;      // of the faces drawn (each light's face size squared)
 };
 
 // What one layer's contents were rendered for; a face is re-rendered when this changes.
@@ -45,6 +51,7 @@ struct AtlasStats {
 struct FaceKey {
   glm::mat4 view_proj{0.0f};
   std::uint64_t geometry_version = 0;
+  std::uint32_t resolution = 0;  // texels per side, drawn at the layer's origin
   bool operator==(const FaceKey&) const = default;
 };
 
@@ -78,7 +85,11 @@ class AtlasPlanner {
     bool valid = false;
     FaceKey key;
     std::uint32_t epoch = 0;
+    std::uint32_t resolution = 0;  // a light's first layer: its last choice (hysteresis)
   };
+  // The light's face size this frame (ShadowLight.projection.y/z).
+  std::uint32_t light_resolution(const scene::PointLight& light, std::uint32_t first_layer,
+                                 const AtlasSettings& settings);
   // Decides whether one face's layer is drawn, kept (cached) or left (culled) this frame.
   void plan_layer(std::uint32_t layer, bool visible, const FaceKey& key,
                   const AtlasSettings& settings);

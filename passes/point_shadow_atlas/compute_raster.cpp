@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <initializer_list>
 
 #include "antumbra/gpu/commands.hpp"
@@ -241,12 +242,16 @@ void ComputeRasterizer::write_records(fgvk::ExecuteContext& context, const Atlas
     const std::uint32_t light = face.info.x;
     const ShadowLight& l = frame.lights.at(light);
     const bool ortho = l.direction_type.w == kLightTypeDirectional;
+    // Per-light resolution: the face is drawn into the square at its layer's origin.
+    const std::uint32_t face_size =
+        l.projection.y > 0.0f ? std::min(static_cast<std::uint32_t>(l.projection.y), size) : size;
     shared::RasterFace& r = out[i];
     r.view_proj = face.view_proj;
     r.light = glm::vec4(glm::vec3(l.position_range), l.position_range.w);
-    r.params = glm::vec4(l.params.y, ortho ? 1.0f : 0.0f, static_cast<float>(size), 0.0f);
+    r.params = glm::vec4(l.params.y, ortho ? 1.0f : 0.0f, static_cast<float>(face_size),
+                         std::bit_cast<float>(static_cast<std::uint32_t>(face_texels)));
     const bool tint = settings.tint && light < tinted.size() && tinted[light];
-    r.info = {layers[i], static_cast<std::uint32_t>((i % chunk_faces_) * face_texels), size,
+    r.info = {layers[i], static_cast<std::uint32_t>((i % chunk_faces_) * face_texels), face_size,
               tint ? ++tint_slot : 0u};
   }
   for (std::size_t i = 0; i < untouched_.size(); ++i) {

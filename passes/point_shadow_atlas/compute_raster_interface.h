@@ -43,7 +43,9 @@ struct RasterCluster {
 struct RasterFace {
   mat4 view_proj;  // ShadowFace.view_proj
   vec4 light;      // xyz light position (perspective faces), w the face's far distance
-  vec4 params;     // x near distance, y 1 = orthographic (the sun), z face size (float)
+  vec4 params;     // x near distance, y 1 = orthographic (the sun), z face size (float),
+                   // w texels between tint slots (uint bits: the atlas's face, whatever
+                   // this face's own size)
   uvec4 info;      // x atlas layer, y scratch offset (texels), z face size, w tint slot + 1
                    // (0: untinted; tinted faces share the tint scratch in their chunk)
 };

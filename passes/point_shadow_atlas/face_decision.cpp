@@ -130,9 +130,14 @@ void FaceDecision::ensure_buffers(fgvk::ExecuteContext& context, std::uint32_t l
 void FaceDecision::write_requests(Slot& slot, const AtlasFrame& frame,
                                   const DecisionLayout& layout) const {
   auto* out = reinterpret_cast<shared::FaceRequest*>(slot.requests.mapped());
-  const std::uint32_t texels = layout.face_size * layout.face_size;
   for (std::uint32_t layer = 0; layer < layers_; ++layer) {
-    out[layer] = {layer < frame.epochs.size() ? frame.epochs[layer] : 0u, 0u, texels, 0u};
+    // The light's face size (per-light resolution), else the atlas's.
+    std::uint32_t side = layout.face_size;
+    const std::uint32_t light = layer < frame.faces.size() ? frame.faces[layer].info.x : ~0u;
+    if (light < frame.lights.size() && frame.lights[light].projection.y > 0.0f) {
+      side = static_cast<std::uint32_t>(frame.lights[light].projection.y);
+    }
+    out[layer] = {layer < frame.epochs.size() ? frame.epochs[layer] : 0u, 0u, side * side, 0u};
   }
   for (std::size_t i = 0; i < frame.render_layers.size(); ++i) {
     out[frame.render_layers[i]].record = static_cast<std::uint32_t>(i) + 1u;

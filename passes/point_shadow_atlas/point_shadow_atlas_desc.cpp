@@ -41,6 +41,16 @@ void check(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& 
                        ": make it d32f or d16, or use rasterizer \"compute\"",
                    "/params/rasterizer", diagnostics);
   }
+  const auto minimum = pass.params.find("minResolution");
+  if (minimum != pass.params.end() && minimum->is_number_integer()) {
+    const auto value = minimum->get<std::int64_t>();
+    if (value > 0 && (value & (value - 1)) != 0) {
+      add_pass_error(graph, pass, codes::graph::kParamRange,
+                     "minResolution " + std::to_string(value) +
+                         " is not a power of two: faces are 16, 32, 64 ... texels wide",
+                     "/params/minResolution", diagnostics);
+    }
+  }
   if (colour != nullptr && colour->layers < atlas->layers) {
     add_pass_error(graph, pass, codes::shadow_atlas::kColourLayers,
                    "the colour map '" + colour->name + "' has " + std::to_string(colour->layers) +
@@ -206,6 +216,34 @@ const fg::ParamTable<PointShadowAtlasParams>& PointShadowAtlasPass::param_table(
                     "that gains a receiver is drawn that frame). Otherwise every face the "
                     "camera's frustum may need is drawn."},
                &PointShadowAtlasParams::receiver_culling)
+          .choice({.name = "resolution",
+                   .type = fg::ParamType::enumeration,
+                   .default_value = "fixed",
+                   .choices = {"fixed", "screen"},
+                   .description =
+                       "Face size: \"fixed\" gives every light the atlas's; \"screen\" picks "
+                       "each light's from the screen radius of its range sphere times "
+                       "resolutionScale, a power of two from minResolution up to the atlas's, "
+                       "with a quarter-octave band against flicker; its faces fill the corner "
+                       "square of their layers (docs/technique.md)."},
+                  &PointShadowAtlasParams::resolution,
+                  {FaceResolution::fixed, FaceResolution::screen})
+          .add({.name = "resolutionScale",
+                .type = fg::ParamType::number,
+                .default_value = 1.0,
+                .min = 0.0625,
+                .max = 16.0,
+                .description = "With resolution \"screen\": face texels per pixel of the light's "
+                               "projected radius (1: a texel per pixel at half its range)."},
+               &PointShadowAtlasParams::resolution_scale)
+          .add({.name = "minResolution",
+                .type = fg::ParamType::integer,
+                .default_value = 64,
+                .min = 16.0,
+                .max = 4096.0,
+                .description = "With resolution \"screen\": the smallest face size, a power of "
+                               "two (faces are never larger than the atlas's)."},
+               &PointShadowAtlasParams::min_resolution)
           .choice({.name = "rasterizer",
                    .type = fg::ParamType::enumeration,
                    .default_value = "hardware",

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <cmath>
 #include <cstring>
+#include <map>
 
 #include <nlohmann/json.hpp>
 
@@ -66,6 +68,9 @@ PointShadowAtlasPass::PointShadowAtlasPass(const fg::PlanPass& pass)
   settings_.sun_max_distance = params_.sun_distance;
   settings_.cull_faces = params_.cull_faces;
   settings_.cache = params_.cache;
+  settings_.adaptive_resolution = params_.resolution == FaceResolution::screen;
+  settings_.resolution.scale = params_.resolution_scale;
+  settings_.resolution.minimum = params_.min_resolution;
 }
 
 void PointShadowAtlasPass::prepare(fgvk::PrepareContext& context) {
@@ -97,7 +102,8 @@ void PointShadowAtlasPass::prepare(fgvk::PrepareContext& context) {
                                  colour_,
                                  colour_map_,
                                  compute,
-                                 settings_.gpu_decides};
+                                 settings_.gpu_decides,
+                                 settings_.adaptive_resolution};
   key.update(shape, sizeof shape).update(flags, sizeof flags);
   depth_pipeline_ = {};
   colour_pipeline_ = {};
@@ -221,6 +227,9 @@ void PointShadowAtlasPass::execute(fgvk::ExecuteContext& context) {
                           : 1.0f;
   settings_.camera_near = scene.camera.near;
   settings_.camera_far = scene.camera.far;
+  settings_.resolution.viewport_height = static_cast<float>(std::max(viewport.height, 1u));
+  settings_.resolution.tan_half_fov = std::tan(glm::radians(0.5f * scene.camera.fov_y_degrees));
+  settings_.resolution.camera = scene.camera.position;
   const AtlasFrame& frame =
       planner_.plan(scene, scene.camera.view_projection(aspect), context.frame.geometry_version,
                     static_cast<std::uint32_t>(context.frame.frame_index), settings_);
@@ -305,7 +314,10 @@ void PointShadowAtlasPass::upload(fgvk::ExecuteContext& context, const AtlasFram
     // distance as a fraction of it (shadow_colour.frag).
     const std::uint32_t light = frame.faces[layer].info.x;
     const float far = light < frame.lights.size() ? frame.lights[light].position_range.w : 1.0f;
-    draws[i].info = {layer, frame.faces[layer].info.y, std::bit_cast<std::uint32_t>(far), 0u};
+    // info.w: the face's share of the layer (per-light resolution; shadow_atlas.vert).
+    const float share = light < frame.lights.size() ? frame.lights[light].projection.z : 1.0f;
+    draws[i].info = {layer, frame.faces[layer].info.y, std::bit_cast<std::uint32_t>(far),
+                     std::bit_cast<std::uint32_t>(share)};
   }
 }
 
@@ -313,16 +325,16 @@ fgvk::PassMessage PointShadowAtlasPass::face_stats(
     const std::string& pass, const std::optional<FaceDecisionStats>& gpu) const {
   const AtlasStats& s = planner_.last().stats;
   const bool compute = params_.rasterizer == ShadowRasterizer::compute;
-  const std::uint64_t face_texels = std::uint64_t{settings_.face_size} * settings_.face_size;
   base::Json details{{"total", s.total},
                      {"culled", s.culled},
                      {"culledByFrustum", s.culled},
                      {"culledByReceivers", 0},
                      {"rendered", s.rendered},
                      {"cached", s.cached},
-                     {"texels", face_texels * s.rendered},
+                     {"texels", s.texels},
                      {"layered", layered_},
                      {"receiverCulling", settings_.gpu_decides},
+                     {"faceSizes", face_sizes()},
                      {"rasterizer", compute ? "compute" : "hardware"}};
   std::string text = "shadow faces: " + std::to_string(s.total) + " total, " +
                      std::to_string(s.culled) + " culled, " + std::to_string(s.rendered) +
@@ -344,6 +356,17 @@ fgvk::PassMessage PointShadowAtlasPass::face_stats(
                 : " (GPU counts pending)");
   }
   return {pass, codes::shadow_atlas::kFaceStats, base::Severity::note, text, std::move(details)};
+}
+
+// How many shadowed lights have each face size (per-light resolution), e.g. {"256": 3}.
+base::Json PointShadowAtlasPass::face_sizes() const {
+  std::map<std::uint32_t, std::uint32_t> counts;
+  for (const ShadowLight& light : planner_.last().lights) {
+    if (light.params.z >= 0.0f) ++counts[static_cast<std::uint32_t>(light.projection.y)];
+  }
+  base::Json out = base::Json::object();
+  for (const auto& [size, n] : counts) out[std::to_string(size)] = n;
+  return out;
 }
 
 void PointShadowAtlasPass::collect(fgvk::FrameReport& report) {

@@ -29,6 +29,8 @@ namespace antumbra::passes {
 // Who draws the faces: fixed-function rasterisation (vertex shader + depth attachment) or
 // the compute rasteriser (compute_raster.hpp), which suits GPUs whose raster units are few.
 enum class ShadowRasterizer { hardware, compute };
+// Face size: the atlas's for every light, or per light from its size on screen.
+enum class FaceResolution { fixed, screen };
 
 struct PointShadowAtlasParams {
   float near_plane = 0.05f;
@@ -40,6 +42,9 @@ struct PointShadowAtlasParams {
   bool translucent_colour = true;
   bool layered_draw = true;
   bool receiver_culling = true;
+  FaceResolution resolution = FaceResolution::fixed;
+  float resolution_scale = 1.0f;
+  std::uint32_t min_resolution = 64;
   ShadowRasterizer rasterizer = ShadowRasterizer::hardware;
 };
 
@@ -72,6 +77,7 @@ class PointShadowAtlasPass final : public fgvk::Pass {
                           const fgvk::BoundImage* colour);
   void upload(fgvk::ExecuteContext& context, const AtlasFrame& frame, SlotBuffers& slot);
   // SHD010: the planner's counts, and the GPU's decision of an earlier frame (compute).
+  [[nodiscard]] base::Json face_sizes() const;
   [[nodiscard]] fgvk::PassMessage face_stats(const std::string& pass,
                                              const std::optional<FaceDecisionStats>& gpu) const;
   // Which shadowed lights have a translucent caster within range (their colour layers

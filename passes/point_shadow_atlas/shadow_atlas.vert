@@ -12,7 +12,7 @@
 // entry into a single-layer view when the device cannot write gl_Layer here.
 struct FaceDraw {
   mat4 view_proj;
-  uvec4 info;  // x atlas layer
+  uvec4 info;  // x atlas layer, w the face's share of the layer (float bits; 0: all)
 };
 
 layout(set = 0, binding = kAtlasFaces) readonly buffer Faces { FaceDraw faces[]; };
@@ -60,7 +60,12 @@ void main() {
 #endif
   // Every vertex of a dropped triangle lands beyond the far plane, so the triangle is
   // clipped before rasterisation (materials are per triangle, so all three agree).
-  gl_Position = keep ? face.view_proj * vec4(in_position, 1.0) : vec4(0.0, 0.0, 2.0, 1.0);
+  vec4 position = face.view_proj * vec4(in_position, 1.0);
+  // A face smaller than the layer fills the square [0, share) of its uv: the face's
+  // [-w, w] maps onto [-w, (2 share - 1) w]; what lands beyond it is never read.
+  float share = uintBitsToFloat(face.info.w);
+  if (share > 0.0 && share < 1.0) position.xy = (position.xy + position.w) * share - position.w;
+  gl_Position = keep ? position : vec4(0.0, 0.0, 2.0, 1.0);
 #ifdef LAYERED
   gl_Layer = int(face.info.x);
 #endif

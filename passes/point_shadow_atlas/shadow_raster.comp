@@ -115,7 +115,7 @@ void cover(Tri tri, int x, int y) {
     fraction = near / (far - z * (far - near));
   }
   float distance = clamp(ceil(fraction * 255.0) / 255.0, 0.0, 1.0);
-  uint slot = (g_face.info.w - 1u) * g_size * g_size + uint(y) * g_size + uint(x);
+  uint slot = (g_face.info.w - 1u) * floatBitsToUint(g_face.params.w) + uint(y) * g_size + uint(x);
   uint old = tint[slot];
   for (int attempt = 0; attempt < 64; ++attempt) {
     vec4 v = unpackUnorm4x8(old);

@@ -33,7 +33,7 @@ void main() {
 #endif
 #ifdef WRITE_COLOUR
   if (face.info.w > 0u) {
-    uint slot = (face.info.w - 1u) * size * size + p.y * size + p.x;
+    uint slot = (face.info.w - 1u) * floatBitsToUint(face.params.w) + p.y * size + p.x;
     imageStore(colour, texel, unpackUnorm4x8(tint[slot]));
   }
 #endif

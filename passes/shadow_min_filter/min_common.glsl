@@ -25,4 +25,14 @@ bool layer_needs_filter(uint layer) {
   return force_all != 0u || info.w != 0u;
 }
 
+// The texels of `layer`'s face in a map of `size` texels per layer side (`factor` atlas
+// texels each): a light's faces may fill only the square at the origin of their layers
+// (ShadowLight.projection.z, per-light resolution), and nothing outside it is theirs.
+ivec2 face_extent(uint layer, ivec2 size) {
+  uint light = faces[layer].info.x;
+  float share = light < ANTUMBRA_MAX_SHADOW_LIGHTS ? shadow_lights[light].projection.z : 0.0;
+  if (share <= 0.0 || share >= 1.0) return size;
+  return clamp(ivec2(ceil(vec2(size) * share)), ivec2(1), size);
+}
+
 #endif

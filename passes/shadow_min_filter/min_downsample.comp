@@ -15,6 +15,8 @@ layout(set = 0, binding = kMinOutput, r32f) uniform writeonly image2DArray coars
 float nearest_under(ivec2 p, uint layer) {
   ivec2 base = p * int(factor);
   if (factor == 1u) return texelFetch(atlas, ivec3(base, int(layer)), 0).r;
+  // Faces smaller than the layer are powers of two of at least `factor` texels, so the
+  // quads below never reach past the face.
   vec2 texel = 1.0 / vec2(textureSize(atlas, 0).xy);
   float nearest = 1.0;
   for (int y = 0; y < int(factor); y += 2) {
@@ -31,7 +33,8 @@ float nearest_under(ivec2 p, uint layer) {
 void main() {
   uint layer = gl_WorkGroupID.z;
   if (!layer_needs_filter(layer)) return;
-  ivec2 size = imageSize(coarse).xy;
+  ivec2 size = face_extent(layer, imageSize(coarse).xy);
+  if (any(greaterThanEqual(ivec2(gl_WorkGroupID.xy) * int(span), size))) return;
   ivec2 origin = ivec2(gl_WorkGroupID.xy) * int(span) + ivec2(gl_LocalInvocationID.xy);
   for (int y = 0; y < int(span); y += GROUP) {
     for (int x = 0; x < int(span); x += GROUP) {

@@ -46,9 +46,10 @@ void filter_block(ivec2 block, uint layer, ivec2 size, int r) {
 void main() {
   uint layer = gl_WorkGroupID.z;
   if (!layer_needs_filter(layer)) return;  // uniform per workgroup: before any barrier
-  ivec2 size = textureSize(coarse, 0).xy;
+  ivec2 size = face_extent(layer, textureSize(coarse, 0).xy);
   int r = min(int(radius), MAX_RADIUS);
   ivec2 region = ivec2(gl_WorkGroupID.xy) * int(span);
+  if (any(greaterThanEqual(region, size))) return;  // past a small face: uniform
   for (int y = 0; y < int(span); y += GROUP) {
     for (int x = 0; x < int(span); x += GROUP) {
       filter_block(region + ivec2(x, y), layer, size, r);

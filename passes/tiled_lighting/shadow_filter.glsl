@@ -27,7 +27,8 @@ struct FilterCoord {
   float linear;     // receiver depth along the face axis (metres)
   float near;
   float far;
-  float texel;      // one texel in uv
+  float texel;      // one texel in face uv (the light's face size)
+  float share;      // the face's uv square in its layer (shadow_atlas_uv)
   float scale;      // ShadowLight.projection.x: 1 point, tan(half fov) spot, half width sun
   bool ortho;       // directional light: depth linear in metres (0 at near, far at 1)
 };
@@ -40,7 +41,7 @@ vec3 filter_project(mat4 view_proj, vec3 p) {
 // False when the light has no atlas faces or the point lies in front of the near plane:
 // the caller treats the point as lit. Face choice and projection are shadow_sampling.glsl's.
 bool filter_coord(uint light_index, vec3 p_world, vec3 n_world, out FilterCoord c) {
-  c = FilterCoord(vec2(0.0), 0.0, 0.0, vec2(0.0), 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, false);
+  c = FilterCoord(vec2(0.0), 0.0, 0.0, vec2(0.0), 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 1.0, false);
   if (light_index >= ANTUMBRA_MAX_SHADOW_LIGHTS) return false;
   ShadowLight sl = shadow_lights[light_index];
   int layer = shadow_face_layer(sl, p_world);
@@ -54,7 +55,8 @@ bool filter_coord(uint light_index, vec3 p_world, vec3 n_world, out FilterCoord 
   c.linear = base.linear;
   c.near = sl.params.y;
   c.far = sl.position_range.w;
-  c.texel = 1.0 / float(textureSize(atlas, 0).x);
+  c.texel = 1.0 / base.texels;
+  c.share = base.share;
   c.scale = sl.projection.x;
   c.ortho = shadow_is_ortho(sl);
 
@@ -89,7 +91,7 @@ bool filter_coord(uint light_index, vec3 p_world, vec3 n_world, out FilterCoord 
 float filter_fetch(FilterCoord c, inout vec2 offset) {
   vec2 uv = clamp(c.uv + offset, vec2(0.5 * c.texel), vec2(1.0 - 0.5 * c.texel));
   offset = uv - c.uv;
-  return textureLod(atlas, vec3(uv, c.layer), 0.0).r;
+  return textureLod(atlas, vec3(uv * c.share, c.layer), 0.0).r;
 }
 
 float filter_tap(FilterCoord c, vec2 offset) {

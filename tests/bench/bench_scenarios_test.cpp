@@ -83,7 +83,7 @@ TEST(BenchScenarios, FitShadowResourcesUsesTheFaceAndKeepsTheMinMapsFactor) {
 
 TEST(BenchScenarios, MovingTableHasThreeTechniquesPerLightCountOnBothRasterisers) {
   const auto moving = select_scenarios(builtin_scenarios(1.0), {"moving/"});
-  ASSERT_EQ(moving.size(), 24u);
+  ASSERT_EQ(moving.size(), 36u);
   for (const char* technique : {"hard", "pcss-11", "ssss-11"}) {
     for (const int lights : {16, 64, 256, 1024}) {
       const std::string name =
@@ -93,6 +93,11 @@ TEST(BenchScenarios, MovingTableHasThreeTechniquesPerLightCountOnBothRasterisers
       ASSERT_FALSE(compute.overrides.empty());
       EXPECT_EQ(compute.overrides.back().param, "rasterizer");
       EXPECT_EQ(compute.overrides.back().value, "compute");
+      const auto& screen = named(moving, name + "/compute/screen");
+      EXPECT_EQ(screen.rasterizer, "compute");
+      ASSERT_FALSE(screen.overrides.empty());
+      EXPECT_EQ(screen.overrides.back().param, "resolution");
+      EXPECT_EQ(screen.overrides.back().value, "screen");
       const auto& s = named(moving, name);
       EXPECT_EQ(s.rasterizer, "hardware");
       EXPECT_EQ(s.table, "moving");
@@ -165,6 +170,26 @@ TEST(BenchScenarios, ComputeRowsWriteAnR32fAtlas) {
   EXPECT_EQ(graph.resources[0].format, fg::Format::d32f);
   fit_atlas_format(graph, "compute");
   EXPECT_EQ(graph.resources[0].format, fg::Format::r32f);
+}
+
+// Compute rows cull faces by receivers: the atlas pass reads the G-buffer's depth.
+TEST(BenchScenarios, ComputeRowsBindTheGBufferDepthToTheAtlas) {
+  fg::GraphDesc graph;
+  fg::PassInstanceDesc gbuffer;
+  gbuffer.type = "gbuffer";
+  gbuffer.outputs.push_back({"depth", "sceneDepth", "/passes/0/out/depth"});
+  fg::PassInstanceDesc atlas;
+  atlas.type = "point-shadow-atlas";
+  atlas.pointer = "/passes/1";
+  graph.passes = {gbuffer, atlas};
+  fit_atlas_format(graph, "hardware");
+  EXPECT_TRUE(graph.passes[1].inputs.empty());
+  fit_atlas_format(graph, "compute");
+  ASSERT_EQ(graph.passes[1].inputs.size(), 1u);
+  EXPECT_EQ(graph.passes[1].inputs[0].port, "depth");
+  EXPECT_EQ(graph.passes[1].inputs[0].resource, "sceneDepth");
+  fit_atlas_format(graph, "compute");
+  EXPECT_EQ(graph.passes[1].inputs.size(), 1u) << "bound once";
 }
 
 }  // namespace antumbra::app

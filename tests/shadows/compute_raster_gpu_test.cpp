@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "atlas_gpu_fixture.hpp"
+#include "point_shadow_atlas/face_resolution.hpp"
 
 namespace {
 
@@ -188,4 +189,59 @@ TEST_F(ComputeRasterGpuTest, ComputeRasterCachesAndRedrawsAMovedLight) {
   EXPECT_NEAR(centre_linear_depth(read_layer(6 * kLight + 3), scene_.lights[kLight]),
               kLightHeight - 0.5f, 0.02f);
   EXPECT_EQ(read_layer(6 * 1 + 3), other_before);
+}
+
+// Per-light resolution (resolution "screen"): each light's faces fill the corner square of
+// their layers at the size the planner picks, on both rasterisers, with the same depths.
+TEST_F(ComputeRasterGpuTest, ScreenResolutionDrawsIntoTheCornerOnBothRasterisers) {
+  passes::ResolutionSettings r;
+  r.viewport_height = static_cast<float>(kViewport.height);
+  r.tan_half_fov = std::tan(glm::radians(0.5f * scene_.camera.fov_y_degrees));
+  r.camera = scene_.camera.position;
+  r.maximum = kFace;
+  const auto& light = scene_.lights[kLight];
+  const std::uint32_t size =
+      passes::choose_resolution(passes::projected_radius(light.position, light.range, r), 0, r);
+  ASSERT_LT(size, kFace) << "the test needs a face smaller than the layer";
+  // The reference: every face at the atlas's size, drawn by the hardware.
+  load(base::Json{{"cullFaces", false}});
+  frame();
+  std::vector<std::vector<float>> full;
+  for (std::uint32_t face = 0; face < 6; ++face) full.push_back(read_layer(6 * kLight + face));
+  const float scale = static_cast<float>(kFace) / static_cast<float>(size);
+  for (const char* rasterizer : {"hardware", "compute"}) {
+    const bool compute = std::string(rasterizer) == "compute";
+    load(base::Json{{"rasterizer", rasterizer}, {"resolution", "screen"}, {"cullFaces", false}},
+         compute ? fg::Format::r32f : fg::Format::d32f);
+    frame();
+    std::size_t compared = 0;
+    std::size_t differ = 0;
+    for (std::uint32_t face = 0; face < 6; ++face) {
+      const auto small = read_layer(6 * kLight + face);
+      // Texel (x, y) of the small face covers the reference's texels around its centre
+      // scaled up; it must match one of the 3x3 reference texels there (edges move).
+      for (std::uint32_t y = 0; y < size; ++y) {
+        for (std::uint32_t x = 0; x < size; ++x) {
+          const float d = sf::linearise(small[std::size_t{y} * kFace + x], 0.05f, light.range);
+          const int cx = static_cast<int>((static_cast<float>(x) + 0.5f) * scale);
+          const int cy = static_cast<int>((static_cast<float>(y) + 0.5f) * scale);
+          bool match = false;
+          for (int dy = -1; dy <= 1 && !match; ++dy) {
+            for (int dx = -1; dx <= 1 && !match; ++dx) {
+              const int rx = std::clamp(cx + dx * static_cast<int>(scale), 0, int(kFace) - 1);
+              const int ry = std::clamp(cy + dy * static_cast<int>(scale), 0, int(kFace) - 1);
+              const float ref = sf::linearise(
+                  full[face][static_cast<std::size_t>(ry) * kFace + static_cast<std::size_t>(rx)],
+                  0.05f, light.range);
+              match = std::abs(ref - d) < 0.05f + 0.02f * d;
+            }
+          }
+          ++compared;
+          if (!match) ++differ;
+        }
+      }
+    }
+    EXPECT_LT(differ, compared / 100) << rasterizer << ": " << differ << " of " << compared
+                                      << " texels of " << size << "-texel faces";
+  }
 }

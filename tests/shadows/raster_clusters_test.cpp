@@ -93,12 +93,16 @@ namespace {
 
 // tests/data/shadows/atlas.json with the atlas's format and the rasteriser spelt out in
 // the file (so that diagnostics can point at them).
-fg::Result<fg::Plan> compile_atlas_graph(const std::string& rasterizer, const std::string& format) {
+fg::Result<fg::Plan> compile_atlas_graph(const std::string& rasterizer, const std::string& format,
+                                         const nlohmann::json& params = nlohmann::json::object()) {
   std::ifstream in(source_dir() / "tests/data/shadows/atlas.json");
   auto json = nlohmann::json::parse(in);
   json["resources"]["atlas"]["format"] = format;
   for (auto& p : json["passes"]) {
-    if (p["name"] == "shadows") p["params"]["rasterizer"] = rasterizer;
+    if (p["name"] == "shadows") {
+      p["params"]["rasterizer"] = rasterizer;
+      p["params"].update(params);
+    }
   }
   const auto registry = passes::builtin_pass_registry();
   fg::CompileOptions options;
@@ -157,5 +161,22 @@ TEST(RasterClusters, AtlasFormatMustSuitTheRasteriser) {
     EXPECT_NE(d->message.find(format), std::string::npos) << d->message;
     EXPECT_NE(d->pointer.find("/params/rasterizer"), std::string::npos) << d->pointer;
     EXPECT_GT(d->line, 0);
+  }
+}
+
+// Face sizes are powers of two: any other minimum is refused where it is written, and a
+// scale or minimum out of range by the parameter's bounds.
+TEST(RasterClusters, MinimumResolutionMustBeAPowerOfTwo) {
+  const auto good =
+      compile_atlas_graph("hardware", "d32f", {{"resolution", "screen"}, {"minResolution", 128}});
+  EXPECT_TRUE(good.ok()) << good.diagnostics().to_text();
+  for (const nlohmann::json& bad :
+       {nlohmann::json{{"minResolution", 100}}, nlohmann::json{{"minResolution", 0}},
+        nlohmann::json{{"minResolution", -64}}, nlohmann::json{{"resolutionScale", 0.0}},
+        nlohmann::json{{"resolution", "tiny"}}}) {
+    const auto plan = compile_atlas_graph("hardware", "d32f", bad);
+    ASSERT_FALSE(plan.ok()) << bad.dump();
+    const std::string text = plan.diagnostics().to_text();
+    EXPECT_NE(text.find("/params/" + bad.begin().key()), std::string::npos) << text;
   }
 }

@@ -36,7 +36,9 @@ struct ShadowLight {
   // xyz unit world direction the light shines along, w type (ANTUMBRA_LIGHT_*).
   vec4 direction_type ANTUMBRA_INIT(vec4(0.0f, -1.0f, 0.0f, ANTUMBRA_LIGHT_POINT));
   // x metres per unit of face clip xy: point 1 (times distance), spot tan(half fov)
-  // (times distance), directional half width.
+  // (times distance), directional half width. y the light's face size in texels and z
+  // that over the atlas's face size: its faces fill the square [0, z) of uv at the
+  // origin of their layers (per-light resolution; 0 from producers that predate it).
   vec4 projection ANTUMBRA_INIT(vec4(1.0f, 0.0f, 0.0f, 0.0f));
 };
 
