@@ -46,8 +46,8 @@ void write_row(std::ostream& out, const BenchResult& r, const std::string& pass,
   const auto& s = r.scenario;
   out << csv_field(s.name) << ',' << s.table << ',' << s.technique << ',' << s.kernel << ','
       << s.width << ',' << s.height << ',' << s.face << ',' << s.lights << ',' << s.moving << ','
-      << csv_field(s.scene) << ',' << s.rasterizer << ',' << r.status << ',' << csv_field(pass)
-      << ',' << csv_field(type) << ',';
+      << csv_field(s.scene) << ',' << s.rasterizer << ',' << s.light_size << ',' << r.status << ','
+      << csv_field(pass) << ',' << csv_field(type) << ',';
   if (stats != nullptr) {
     out << stats->median_ms << ',' << stats->p10_ms << ',' << stats->p90_ms << ',' << stats->frames;
   } else {
@@ -65,7 +65,7 @@ nlohmann::json stats_json(const TimingStats& s) {
 
 void write_long_csv(std::ostream& out, const std::vector<BenchResult>& results) {
   out << "scenario,table,technique,kernel,width,height,atlas_face,lights,moving_lights,scene,"
-         "rasterizer,status,"
+         "rasterizer,light_size,status,"
          "pass,pass_type,"
          "median_ms,p10_ms,p90_ms,frames\n";
   for (const auto& r : results) {
@@ -100,6 +100,7 @@ nlohmann::json results_json(const std::vector<BenchResult>& results) {
                          {"movingLights", s.moving},
                          {"scene", s.scene},
                          {"rasterizer", s.rasterizer},
+                         {"lightSize", s.light_size},
                          {"shadowCache", s.shadow_cache},
                          {"status", r.status},
                          {"detail", r.detail},

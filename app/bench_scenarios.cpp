@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace antumbra::app {
 namespace {
@@ -49,7 +50,7 @@ Scenario make(const std::string& table, const Technique& t, int kernel, unsigned
   // measurements did; the many-light table measures the cached steady state. The moving
   // table caches too: what stands still stays cached, a moving light's faces change
   // their matrices and so redraw themselves.
-  s.shadow_cache = table == "lights" || table == "moving";
+  s.shadow_cache = table == "lights" || table == "moving" || table == "penumbra";
   if (std::string(t.graph) != "lighting.json") {
     s.overrides.push_back({"point-shadow-atlas", "cache", s.shadow_cache});
   }
@@ -113,6 +114,8 @@ std::vector<Scenario> builtin_scenarios(double scale) {
         if (s.rasterizer != "hardware") {
           s.name += "/" + s.rasterizer;
           s.overrides.push_back({"point-shadow-atlas", "rasterizer", s.rasterizer});
+          // The rest of the frame off the raster units too: the compute tonemap.
+          s.overrides.push_back({"tonemap", "stage", "compute"});
         }
         if (std::string(raster.resolution) != "fixed") {
           s.name += std::string("/") + raster.resolution;
@@ -122,7 +125,26 @@ std::vector<Scenario> builtin_scenarios(double scale) {
       }
     }
   }
+  // Penumbra size: PCSS and layered SSSS as the lights grow from 5 cm to 1 m, shadows
+  // cached so that the rows time the soft-shadow stage, not the atlas.
+  for (const float size : kPenumbraLightSizes) {
+    for (const char* name : {"pcss", "ssss"}) {
+      Scenario s = make("penumbra", technique(name), 11, 1080, 16, scale);
+      s.light_size = size;
+      char radius[32];
+      std::snprintf(radius, sizeof radius, "/r%.2fm", static_cast<double>(size));
+      s.name += radius;
+      out.push_back(std::move(s));
+    }
+  }
   return out;
+}
+
+void set_light_size(scene::Scene& scene, float size) {
+  if (size <= 0.0f) return;
+  for (auto& light : scene.lights) {
+    if (light.type != scene::LightType::directional) light.size = size;
+  }
 }
 
 scene::LightMotion bench_motion(const Scenario& scenario) {

@@ -36,7 +36,13 @@ struct Scenario {
   int moving = 0;                     // lights that move each frame: the first ones
   // point-shadow-atlas's rasterizer ("hardware" or "compute"; the moving table has both).
   std::string rasterizer = "hardware";
+  // The "penumbra" table: every light's radius in metres (0: the scene's own).
+  float light_size = 0.0f;
 };
+
+// The penumbra table's light radii (metres): the seed's claim is that the screen-space
+// soft-shadow stage costs the same whatever the penumbra's size.
+inline constexpr float kPenumbraLightSizes[] = {0.05f, 0.1f, 0.25f, 0.5f, 1.0f};
 
 // The lights of the moving table and, for 1024, the district scene's 64 moving lights
 // (issue 12's target: 1024 lights, 64 moving each frame, >= 1 M triangles).
@@ -80,6 +86,9 @@ scene::LightMotion bench_motion(const Scenario& scenario);
 // The scene with its lights replaced by `count` lights in a deterministic layout that
 // covers the same area (16 keeps the scene's own lights). Ranges shrink as the count
 // grows so that the lit area per light stays comparable.
+// Every light of `scene` with radius `size` (metres); 0 leaves them as they are.
+void set_light_size(scene::Scene& scene, float size);
+
 scene::Scene with_light_count(const scene::Scene& base, int count);
 
 }  // namespace antumbra::app

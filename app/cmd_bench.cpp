@@ -145,6 +145,7 @@ BenchResult run_scenario(runtime::RenderSession& session, const runtime::DataPat
     return r;
   }
   scene::Scene scene = with_light_count(base.value(), scenario.lights);
+  set_light_size(scene, scenario.light_size);
   const std::vector<scene::PointLight> base_lights = scene.lights;
   session.set_scene(std::move(scene));
   measure(session, options, base_lights, r);

@@ -153,6 +153,8 @@ std::string_view to_string(Stage stage) {
       return "transfer";
     case Stage::host:
       return "host";
+    case Stage::shader:
+      return "shader";
   }
   return "none";
 }

@@ -55,7 +55,7 @@ bool filter_coord(uint light_index, vec3 p_world, vec3 n_world, out FilterCoord 
   c.linear = base.linear;
   c.near = sl.params.y;
   c.far = sl.position_range.w;
-  c.texel = 1.0 / base.texels;
+  c.texel = 1.0 / shadow_face_texels(sl, float(textureSize(atlas, 0).x));
   c.share = base.share;
   c.scale = sl.projection.x;
   c.ortho = shadow_is_ortho(sl);

@@ -1,3 +1,5 @@
+#include <optional>
+
 #include "common/ports.hpp"
 #include "tonemap_pass.hpp"
 
@@ -27,7 +29,28 @@ fg::PassDesc TonemapPass::describe() {
        .description = "sRGB-encoded display image."},
   };
   desc.params = param_table().descs();
+  desc.port_use = [](const fg::PortDesc& port, const fg::Json& params,
+                     fg::Format format) -> std::optional<fg::PortUse> {
+    if (port.name == port::kLdr.name() && tonemap_in_compute(params, format)) {
+      return fg::PortUse{Access::storage_write, Stage::compute};
+    }
+    if (port.name == port::kHdr.name()) {
+      // Which shader reads it also depends on the target's format, which this port
+      // cannot see: with stage "compute", any shader stage waits for it.
+      const auto stage = params.find("stage");
+      if (stage != params.end() && *stage == "compute") {
+        return fg::PortUse{Access::sampled, Stage::shader};
+      }
+    }
+    return std::nullopt;
+  };
   return desc;
+}
+
+bool tonemap_in_compute(const fg::Json& params, fg::Format target) {
+  const auto stage = params.find("stage");
+  const bool wanted = stage != params.end() && *stage == "compute";
+  return wanted && target == fg::Format::rgba8;
 }
 
 const fg::ParamTable<TonemapParams>& TonemapPass::param_table() {
@@ -46,7 +69,17 @@ const fg::ParamTable<TonemapParams>& TonemapPass::param_table() {
                 .min = 0.0,
                 .max = 16.0,
                 .description = "Exposure multiplier before the curve."},
-               &TonemapParams::exposure);
+               &TonemapParams::exposure)
+          .choice(
+              {.name = "stage",
+               .type = fg::ParamType::enumeration,
+               .default_value = "fragment",
+               .choices = {"fragment", "compute"},
+               .description = "Who runs the curve: a full-screen fragment shader, or a compute "
+                              "dispatch writing the rgba8 target as a storage image (faster where "
+                              "raster units are few, as on compute GPUs; slower on lavapipe). sRGB "
+                              "and BGRA targets always use the fragment shader."},
+              &TonemapParams::stage, {TonemapStage::fragment, TonemapStage::compute});
   return kTable;
 }
 

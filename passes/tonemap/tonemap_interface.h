@@ -9,6 +9,7 @@
 ANTUMBRA_SHARED_BEGIN
 
 ANTUMBRA_BINDING(kTonemapHdr, 0)
+ANTUMBRA_BINDING(kTonemapLdr, 1)  // tonemap.comp: the rgba8 target as a storage image
 
 ANTUMBRA_PUSH_CONSTANTS(TonemapPush) {
   float exposure;

@@ -25,6 +25,17 @@ TonemapPass::TonemapPass(const fg::PlanPass& pass) : params_(param_table().read(
 }
 
 void TonemapPass::prepare(fgvk::PrepareContext& context) {
+  const auto& ldr = context.bindings.required_image(port::kLdr);
+  compute_ = params_.stage == TonemapStage::compute && ldr.graph_format == fg::Format::rgba8;
+  shader_files_.clear();
+  if (compute_) {
+    gpu::DescriptorSetLayoutBuilder bindings;
+    bindings.combined_image_sampler(shared::kTonemapHdr, VK_SHADER_STAGE_COMPUTE_BIT)
+        .storage_image(shared::kTonemapLdr, VK_SHADER_STAGE_COMPUTE_BIT);
+    const Shader shader = load_shader(context, "tonemap/tonemap.comp", shader_files_, {}, nullptr);
+    compute_pipeline_ = build_compute_pipeline(context, shader, bindings, sizeof(TonemapPush));
+    return;
+  }
   constexpr VkShaderStageFlags kFrag = VK_SHADER_STAGE_FRAGMENT_BIT;
   gpu::DescriptorSetLayoutBuilder bindings;
   bindings.combined_image_sampler(shared::kTonemapHdr, kFrag);
@@ -41,14 +52,26 @@ void TonemapPass::execute(fgvk::ExecuteContext& context) {
   const auto& hdr = context.bindings.required_image(port::kHdr);
   const auto& ldr = context.bindings.required_image(port::kLdr);
   const VkCommandBuffer cmd = context.cmd;
+  const TonemapPush constants{params_.exposure, static_cast<std::uint32_t>(params_.tone_operator),
+                              is_srgb_format(ldr.format) ? 0u : 1u};
+  if (compute_) {
+    const ComputePipeline& p = compute_pipeline_;
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, p.pipeline);
+    gpu::PushDescriptors()
+        .combined_image_sampler(shared::kTonemapHdr, hdr.view, context.samplers.nearest_clamp,
+                                hdr.layout)
+        .storage_image(shared::kTonemapLdr, ldr.view, ldr.layout)
+        .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, p.layout);
+    vkCmdPushConstants(cmd, p.layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof constants, &constants);
+    dispatch_groups(cmd, ldr.extent, ANTUMBRA_IMAGE_GROUP);
+    return;
+  }
   begin_fullscreen(cmd, ldr);
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_);
   gpu::PushDescriptors()
       .combined_image_sampler(shared::kTonemapHdr, hdr.view, context.samplers.nearest_clamp,
                               hdr.layout)
       .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_);
-  const TonemapPush constants{params_.exposure, static_cast<std::uint32_t>(params_.tone_operator),
-                              is_srgb_format(ldr.format) ? 0u : 1u};
   vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof constants, &constants);
   end_fullscreen(cmd);
 }

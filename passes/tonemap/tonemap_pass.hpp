@@ -9,16 +9,25 @@
 #include "antumbra/fg/param_table.hpp"
 #include "antumbra/fgvk/pass.hpp"
 #include "antumbra/gpu/handle.hpp"
+#include "common/pass_support.hpp"
 
 namespace antumbra::passes {
 
 // The shader's operator index (tonemap.frag).
 enum class ToneOperator : std::uint32_t { aces = 0, reinhard = 1, linear = 2 };
+// Who runs the curve: a full-screen triangle, or a compute dispatch writing the target as
+// a storage image (rgba8 targets only: sRGB and BGRA images cannot be storage images
+// everywhere, and fall back to the fragment shader).
+enum class TonemapStage { fragment, compute };
 
 struct TonemapParams {
   ToneOperator tone_operator = ToneOperator::aces;
   float exposure = 1.0f;
+  TonemapStage stage = TonemapStage::fragment;
 };
+
+// Whether a tonemap pass with `params` writing a `target` image runs in compute.
+bool tonemap_in_compute(const fg::Json& params, fg::Format target);
 
 class TonemapPass final : public fgvk::Pass {
  public:
@@ -32,9 +41,11 @@ class TonemapPass final : public fgvk::Pass {
 
  private:
   TonemapParams params_;
+  bool compute_ = false;
   gpu::DescriptorSetLayout set_layout_;
   gpu::PipelineLayout layout_;
   gpu::Pipeline pipeline_;
+  ComputePipeline compute_pipeline_;  // stage "compute" with an rgba8 target
   std::vector<std::string> shader_files_;
 };
 

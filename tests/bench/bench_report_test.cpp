@@ -92,18 +92,18 @@ TEST(LongCsv, OneRowPerScenarioAndPassPlusTheFrame) {
   for (const auto& line : lines) EXPECT_EQ(split(line, ',').size(), header.size()) << line;
   EXPECT_EQ(lines[0],
             "scenario,table,technique,kernel,width,height,atlas_face,lights,moving_lights,scene,"
-            "rasterizer,status,pass,pass_type,median_ms,p10_ms,p90_ms,frames");
+            "rasterizer,light_size,status,pass,pass_type,median_ms,p10_ms,p90_ms,frames");
   EXPECT_EQ(lines[1],
-            "table1/pcss-11/180p,table1,pcss,11,320,180,256,16,0,atrium.json,hardware,ok,gbuffer,"
+            "table1/pcss-11/180p,table1,pcss,11,320,180,256,16,0,atrium.json,hardware,0,ok,gbuffer,"
             "gbuffer,1.5,1,2,60");
-  EXPECT_EQ(split(lines[2], ',')[12], "\"odd,name\"");
+  EXPECT_EQ(split(lines[2], ',')[13], "\"odd,name\"");
   EXPECT_EQ(
       lines[3],
-      "table1/pcss-11/180p,table1,pcss,11,320,180,256,16,0,atrium.json,hardware,ok,frame,,4.5,4,"
+      "table1/pcss-11/180p,table1,pcss,11,320,180,256,16,0,atrium.json,hardware,0,ok,frame,,4.5,4,"
       "5.5,60");
   EXPECT_EQ(
       lines[4],
-      "table1/ssss-11/180p,table1,pcss,11,320,180,256,16,0,atrium.json,hardware,invalid,frame,"
+      "table1/ssss-11/180p,table1,pcss,11,320,180,256,16,0,atrium.json,hardware,0,invalid,frame,"
       ",,,,0");
 }
 

@@ -1,5 +1,6 @@
 // Scenario names and sizes under --scale: the names say the size that is rendered and
 // the shadow atlas shrinks with the screen.
+#include <algorithm>
 #include <set>
 #include <string>
 
@@ -91,8 +92,14 @@ TEST(BenchScenarios, MovingTableHasThreeTechniquesPerLightCountOnBothRasterisers
       const auto& compute = named(moving, name + "/compute");
       EXPECT_EQ(compute.rasterizer, "compute");
       ASSERT_FALSE(compute.overrides.empty());
-      EXPECT_EQ(compute.overrides.back().param, "rasterizer");
-      EXPECT_EQ(compute.overrides.back().value, "compute");
+      const auto has = [](const Scenario& s, const char* type, const char* param,
+                          const char* value) {
+        return std::any_of(s.overrides.begin(), s.overrides.end(), [&](const ParamOverride& o) {
+          return o.pass_type == type && o.param == param && o.value == value;
+        });
+      };
+      EXPECT_TRUE(has(compute, "point-shadow-atlas", "rasterizer", "compute"));
+      EXPECT_TRUE(has(compute, "tonemap", "stage", "compute"));
       const auto& screen = named(moving, name + "/compute/screen");
       EXPECT_EQ(screen.rasterizer, "compute");
       ASSERT_FALSE(screen.overrides.empty());
@@ -190,6 +197,33 @@ TEST(BenchScenarios, ComputeRowsBindTheGBufferDepthToTheAtlas) {
   EXPECT_EQ(graph.passes[1].inputs[0].resource, "sceneDepth");
   fit_atlas_format(graph, "compute");
   EXPECT_EQ(graph.passes[1].inputs.size(), 1u) << "bound once";
+}
+
+}  // namespace antumbra::app
+
+namespace antumbra::app {
+
+// The penumbra table: PCSS and layered SSSS at every light radius, cached shadows, the
+// radius applied to every light of the scene.
+TEST(BenchScenarios, PenumbraTableSweepsTheLightRadius) {
+  const auto rows = select_scenarios(builtin_scenarios(1.0), {"penumbra/"});
+  ASSERT_EQ(rows.size(), 2 * std::size(kPenumbraLightSizes));
+  for (const auto& s : rows) {
+    EXPECT_TRUE(s.technique == "pcss" || s.technique == "ssss") << s.name;
+    EXPECT_GT(s.light_size, 0.0f);
+    EXPECT_TRUE(s.shadow_cache) << s.name;
+  }
+  EXPECT_EQ(rows.front().name, "penumbra/pcss-11/1080p/16l/r0.05m");
+  EXPECT_EQ(rows.back().name, "penumbra/ssss-11/1080p/16l/r1.00m");
+  scene::Scene scene;
+  scene.lights.resize(2);
+  scene.lights[1].type = scene::LightType::directional;
+  scene.lights[1].size = 0.5f;  // degrees: the sun keeps its angular size
+  set_light_size(scene, 0.25f);
+  EXPECT_FLOAT_EQ(scene.lights[0].size, 0.25f);
+  EXPECT_FLOAT_EQ(scene.lights[1].size, 0.5f);
+  set_light_size(scene, 0.0f);
+  EXPECT_FLOAT_EQ(scene.lights[0].size, 0.25f) << "0 keeps the scene's radii";
 }
 
 }  // namespace antumbra::app

@@ -42,3 +42,40 @@ TEST_F(ShippedGraphsTest, EveryGraphRendersWithoutValidationErrors) {
                                   << stats.max << "], variance " << stats.variance;
   }
 }
+
+// The compute tonemap (stage "compute") writes the same bytes as the fragment shader, clean
+// under validation; an sRGB target falls back to the fragment shader and still renders.
+TEST_F(ShippedGraphsTest, ComputeTonemapMatchesTheFragmentShader) {
+  const scene::Scene scene = default_scene();
+  std::vector<float> outputs[2];
+  int index = 0;
+  for (const char* stage : {"fragment", "compute"}) {
+    fg::GraphDesc graph = default_graph();
+    for (auto& pass : graph.passes) {
+      if (pass.type == "tonemap") pass.params["stage"] = stage;
+    }
+    OPEN_SESSION(session, kSmall);
+    load_graph_ok(*session, graph);
+    session->set_scene(scene);
+    session->render(1, nullptr);
+    expect_no_validation_errors(*session);
+    const auto image = read_output(*session);
+    ASSERT_FALSE(is_blank(image)) << stage;
+    outputs[index++] = image.texels;
+  }
+  EXPECT_EQ(outputs[0], outputs[1]);
+
+  fg::GraphDesc srgb = default_graph();
+  for (auto& r : srgb.resources) {
+    if (r.name == "ldr") r.format = fg::Format::rgba8_srgb;
+  }
+  for (auto& pass : srgb.passes) {
+    if (pass.type == "tonemap") pass.params["stage"] = "compute";
+  }
+  OPEN_SESSION(session, kSmall);
+  load_graph_ok(*session, srgb);
+  session->set_scene(scene);
+  session->render(1, nullptr);
+  expect_no_validation_errors(*session);
+  EXPECT_FALSE(is_blank(read_output(*session)));
+}

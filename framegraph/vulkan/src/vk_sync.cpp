@@ -17,6 +17,9 @@ VkPipelineStageFlags2 shader_stages(fg::Stage stage) {
       return VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT;
     case fg::Stage::host:
       return VK_PIPELINE_STAGE_2_HOST_BIT;
+    case fg::Stage::shader:
+      return VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT |
+             VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
     case fg::Stage::none:
       break;
   }

@@ -66,7 +66,18 @@ bool is_write(Access access);
 bool is_read(Access access);
 
 // Where in the pipeline the access happens, for the barrier plan.
-enum class Stage : std::uint8_t { none, vertex, fragment, compute, graphics, transfer, host };
+// `shader`: any shader stage, for a port whose reader (fragment or compute) is chosen at
+// run time from what the graph binds.
+enum class Stage : std::uint8_t {
+  none,
+  vertex,
+  fragment,
+  compute,
+  graphics,
+  transfer,
+  host,
+  shader
+};
 std::string_view to_string(Stage stage);
 
 enum class PortDirection : std::uint8_t { input, output };
