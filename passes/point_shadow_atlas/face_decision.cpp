@@ -137,7 +137,7 @@ void FaceDecision::write_requests(Slot& slot, const AtlasFrame& frame,
     if (light < frame.lights.size() && frame.lights[light].projection.y > 0.0f) {
       side = static_cast<std::uint32_t>(frame.lights[light].projection.y);
     }
-    out[layer] = {layer < frame.epochs.size() ? frame.epochs[layer] : 0u, 0u, side * side, 0u};
+    out[layer] = {layer < frame.epochs.size() ? frame.epochs[layer] : 0u, 0u, side * side, side};
   }
   for (std::size_t i = 0; i < frame.render_layers.size(); ++i) {
     out[frame.render_layers[i]].record = static_cast<std::uint32_t>(i) + 1u;
@@ -159,8 +159,11 @@ void FaceDecision::reset(fgvk::ExecuteContext& context, VkBuffer staging, const 
     vkCmdFillBuffer(cmd, content_, 0, VK_WHOLE_SIZE, 0u);
     content_cleared_ = true;
   }
+  // Chunks grow to their largest drawn face (shadow_face_decide.comp); the fill list
+  // covers whole layers.
   const std::uint32_t groups = group_count(layout.face_size, shared::kResolveGroup);
-  const std::vector<glm::uvec4> args(layout.chunks() + 1, glm::uvec4(groups, groups, 0u, 0u));
+  std::vector<glm::uvec4> args(layout.chunks() + 1, glm::uvec4(0u));
+  args.back() = glm::uvec4(groups, groups, 0u, 0u);
   vkCmdUpdateBuffer(cmd, args_, 0, args.size() * sizeof(glm::uvec4), args.data());
   barriers(cmd, {shadow_in_, needed_, content_, args_, stats_},
            VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
@@ -210,6 +213,7 @@ void FaceDecision::record(fgvk::ExecuteContext& context, const AtlasFrame& frame
   push.chunks = layout.chunks();
   push.fill_first = layout.fill_first;
   push.header_vec4s = static_cast<std::uint32_t>(kShadowFacesOffset / 16);
+  push.resolve_group = shared::kResolveGroup;
   if (receivers_) {
     const fgvk::BoundImage& depth = context.bindings.required_image(port::kDepth);
     push.depth_size = {depth.extent.width, depth.extent.height};

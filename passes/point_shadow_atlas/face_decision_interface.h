@@ -27,7 +27,7 @@ struct FaceRequest {
   uint epoch;   // what the layer should hold: changes whenever the face's key changes
   uint record;  // 1 + the face's RasterFace record when it is a candidate, else 0
   uint texels;  // texels the face has (its width squared)
-  uint unused;
+  uint size;    // its width in texels
 };
 
 // Counters of shadow_face_decide.comp (uint each), read back for the report.
@@ -38,15 +38,15 @@ const uint kStatTexels = 3;     // texels of the drawn faces
 const uint kStatCount = 4;
 
 ANTUMBRA_PUSH_CONSTANTS(DecisionPush) {
-  uvec2 depth_size;   // shadow_receivers.comp: the G-buffer depth's extent
-  uint light_count;   // lights in the shadow data
-  uint layers;        // atlas layers
-  uint receivers;     // 1: the needed flags come from shadow_receivers.comp; 0: all needed
-  uint chunk_faces;   // records per rasterisation chunk (resolve list per chunk)
-  uint chunks;        // chunks this frame; the fill list's arguments follow theirs
-  uint fill_first;    // 0: no fill; else 1 + the record of layer 0's fill (far depth)
-  uint header_vec4s;  // uvec4s before the face records (header and lights), copied as is
-  uint unused0;
+  uvec2 depth_size;    // shadow_receivers.comp: the G-buffer depth's extent
+  uint light_count;    // lights in the shadow data
+  uint layers;         // atlas layers
+  uint receivers;      // 1: the needed flags come from shadow_receivers.comp; 0: all needed
+  uint chunk_faces;    // records per rasterisation chunk (resolve list per chunk)
+  uint chunks;         // chunks this frame; the fill list's arguments follow theirs
+  uint fill_first;     // 0: no fill; else 1 + the record of layer 0's fill (far depth)
+  uint header_vec4s;   // uvec4s before the face records (header and lights), copied as is
+  uint resolve_group;  // the resolve's workgroup side: a chunk's dispatch covers its largest face
   uint unused1;
   uint unused2;
 };

@@ -42,6 +42,9 @@ void main() {
     draw_flags[record] = draw ? 1u : 0u;
     if (draw) {
       uint chunk = record / chunk_faces;
+      uint groups = (request.size + resolve_group - 1u) / resolve_group;
+      atomicMax(args[chunk].x, groups);
+      atomicMax(args[chunk].y, groups);
       uint slot = atomicAdd(args[chunk].z, 1u);
       list[chunk * chunk_faces + slot] = record;
       atomicAdd(stats[kStatDrawn], 1u);
