@@ -236,8 +236,14 @@ void ComputeRasterizer::write_records(fgvk::ExecuteContext& context, const Atlas
   auto* out = reinterpret_cast<shared::RasterFace*>(records.mapped());
   const VkDeviceSize face_texels = VkDeviceSize{size} * size;
   std::uint32_t tint_slot = 0;  // tinted faces so far in this chunk
+  std::uint32_t offset = 0;     // texels of the chunk's faces so far
+  scratch_offsets_.assign(layers.size(), 0u);
+  face_sizes_.assign(layers.size(), 0u);
   for (std::size_t i = 0; i < layers.size(); ++i) {
-    if (i % chunk_faces_ == 0) tint_slot = 0;
+    if (i % chunk_faces_ == 0) {
+      tint_slot = 0;
+      offset = 0;
+    }
     const ShadowFace& face = frame.faces[layers[i]];
     const std::uint32_t light = face.info.x;
     const ShadowLight& l = frame.lights.at(light);
@@ -251,8 +257,10 @@ void ComputeRasterizer::write_records(fgvk::ExecuteContext& context, const Atlas
     r.params = glm::vec4(l.params.y, ortho ? 1.0f : 0.0f, static_cast<float>(face_size),
                          std::bit_cast<float>(static_cast<std::uint32_t>(face_texels)));
     const bool tint = settings.tint && light < tinted.size() && tinted[light];
-    r.info = {layers[i], static_cast<std::uint32_t>((i % chunk_faces_) * face_texels), face_size,
-              tint ? ++tint_slot : 0u};
+    r.info = {layers[i], offset, face_size, tint ? ++tint_slot : 0u};
+    scratch_offsets_[i] = offset;
+    face_sizes_[i] = face_size;
+    offset += face_size * face_size;
   }
   for (std::size_t i = 0; i < untouched_.size(); ++i) {
     shared::RasterFace& r = out[layers.size() + i];
@@ -288,16 +296,20 @@ void ComputeRasterizer::bind(fgvk::ExecuteContext& context, const ComputePipelin
   vkCmdPushConstants(cmd, pipeline.layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
 }
 
-// Clears the scratch a chunk uses, once the previous round has read it: `faces` depth
-// faces and `tint_faces` tint faces (only the tinted faces have one).
-void ComputeRasterizer::clear_chunk(VkCommandBuffer cmd, std::uint32_t faces,
+// Clears the scratch a chunk uses, once the previous round has read it: its faces' depth
+// (packed by their sizes) and `tint_faces` tint faces (only the tinted faces have one).
+void ComputeRasterizer::clear_chunk(VkCommandBuffer cmd, const Chunk& chunk,
                                     std::uint32_t tint_faces) {
   const VkDeviceSize face_bytes = VkDeviceSize{scratch_size_} * scratch_size_ * 4;
+  const std::uint32_t last = chunk.first + chunk.count - 1;
+  const VkDeviceSize depth_bytes =
+      (VkDeviceSize{scratch_offsets_[last]} + VkDeviceSize{face_sizes_[last]} * face_sizes_[last]) *
+      4;
   after_all(cmd, {depth_, counters_}, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
             VK_ACCESS_2_TRANSFER_WRITE_BIT);
   after_all(cmd, {items_}, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
             VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
-  vkCmdFillBuffer(cmd, depth_, 0, face_bytes * faces, kClearDepthBits);
+  vkCmdFillBuffer(cmd, depth_, 0, depth_bytes, kClearDepthBits);
   vkCmdFillBuffer(cmd, counters_, 0, VK_WHOLE_SIZE, 0u);
   transfer_to_compute(cmd, {depth_, counters_});
   if (tint_faces > 0) {
@@ -317,7 +329,7 @@ void ComputeRasterizer::record_chunk(fgvk::ExecuteContext& context, const AtlasF
     if (settings.tint && light < tinted.size() && tinted[light]) ++tint_faces;
   }
   const bool any_tint = tint_faces > 0 && tint_;
-  clear_chunk(cmd, chunk.count, any_tint ? tint_faces : 0u);
+  clear_chunk(cmd, chunk, any_tint ? tint_faces : 0u);
 
   shared::RasterPush push{};
   push.face_first = chunk.first;
@@ -375,16 +387,16 @@ void ComputeRasterizer::copy_out(fgvk::ExecuteContext& context, const AtlasFrame
                                  const Chunk& chunk) {
   if (storage_atlas_) return;
   const auto& atlas = context.bindings.required_image(port::kAtlas);
-  const std::uint32_t size = scratch_size_;
-  const VkDeviceSize face_bytes = VkDeviceSize{size} * size * 4;
   std::vector<VkBufferImageCopy> regions;
   regions.reserve(chunk.count);
   for (std::uint32_t i = 0; i < chunk.count; ++i) {
     VkBufferImageCopy region{};
-    region.bufferOffset = face_bytes * i;
+    // The face's own square at the layer's origin (per-light resolution).
+    const std::uint32_t side = face_sizes_[chunk.first + i];
+    region.bufferOffset = VkDeviceSize{scratch_offsets_[chunk.first + i]} * 4;
     region.imageSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, frame.render_layers[chunk.first + i],
                                1};
-    region.imageExtent = {size, size, 1};
+    region.imageExtent = {side, side, 1};
     regions.push_back(region);
   }
   context.gpu.begin_label(context.cmd, context.pass.name + ".copy");

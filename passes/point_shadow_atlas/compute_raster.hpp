@@ -61,7 +61,7 @@ class ComputeRasterizer {
                      const std::vector<bool>& tinted, const ComputeRasterSettings& settings);
   void bind(fgvk::ExecuteContext& context, const ComputePipeline& pipeline,
             const shared::RasterPush& push);
-  void clear_chunk(VkCommandBuffer cmd, std::uint32_t faces, std::uint32_t tint_faces);
+  void clear_chunk(VkCommandBuffer cmd, const Chunk& chunk, std::uint32_t tint_faces);
   void record_chunk(fgvk::ExecuteContext& context, const AtlasFrame& frame, const Chunk& chunk,
                     const std::vector<bool>& tinted, const ComputeRasterSettings& settings);
   // Resolves the list entries whose dispatch arguments are at `args_index`.
@@ -77,6 +77,10 @@ class ComputeRasterizer {
   bool storage_atlas_ = false;            // r32f atlas: written by resolve_, not copied
   bool storage_colour_ = false;           // colour map bound: tinted faces written by resolve_
   std::vector<std::uint32_t> untouched_;  // layers filled with far depth (first frame)
+  // Per record of this frame: where its depth starts in the scratch and its size. Faces
+  // are packed by their own size (per-light resolution), so a chunk clears only theirs.
+  std::vector<std::uint32_t> scratch_offsets_;
+  std::vector<std::uint32_t> face_sizes_;
   gpu::Buffer clusters_;
   gpu::Buffer indices_;
   std::uint32_t cluster_count_ = 0;
