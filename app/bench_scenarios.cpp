@@ -125,10 +125,11 @@ std::vector<Scenario> builtin_scenarios(double scale) {
       }
     }
   }
-  // Penumbra size: PCSS and layered SSSS as the lights grow from 5 cm to 1 m, shadows
+  // Penumbra size: PCSS and layered SSSS (blocker search, min filter) as the lights grow
+  // from 5 cm to 1 m, shadows
   // cached so that the rows time the soft-shadow stage, not the atlas.
   for (const float size : kPenumbraLightSizes) {
-    for (const char* name : {"pcss", "ssss"}) {
+    for (const char* name : {"pcss", "ssss", "ssss-min"}) {
       Scenario s = make("penumbra", technique(name), 11, 1080, 16, scale);
       s.light_size = size;
       char radius[32];

@@ -207,14 +207,15 @@ namespace antumbra::app {
 // radius applied to every light of the scene.
 TEST(BenchScenarios, PenumbraTableSweepsTheLightRadius) {
   const auto rows = select_scenarios(builtin_scenarios(1.0), {"penumbra/"});
-  ASSERT_EQ(rows.size(), 2 * std::size(kPenumbraLightSizes));
+  ASSERT_EQ(rows.size(), 3 * std::size(kPenumbraLightSizes));
   for (const auto& s : rows) {
-    EXPECT_TRUE(s.technique == "pcss" || s.technique == "ssss") << s.name;
+    EXPECT_TRUE(s.technique == "pcss" || s.technique == "ssss" || s.technique == "ssss-min")
+        << s.name;
     EXPECT_GT(s.light_size, 0.0f);
     EXPECT_TRUE(s.shadow_cache) << s.name;
   }
   EXPECT_EQ(rows.front().name, "penumbra/pcss-11/1080p/16l/r0.05m");
-  EXPECT_EQ(rows.back().name, "penumbra/ssss-11/1080p/16l/r1.00m");
+  EXPECT_EQ(rows.back().name, "penumbra/ssss-min-11/1080p/16l/r1.00m");
   scene::Scene scene;
   scene.lights.resize(2);
   scene.lights[1].type = scene::LightType::directional;
