@@ -29,6 +29,8 @@ gpu::DescriptorSetLayoutBuilder decision_bindings() {
   return b;
 }
 
+constexpr VkDeviceSize kStatBytes = VkDeviceSize{shared::kStatCount} * 4;
+
 constexpr VkAccessFlags2 kAnyAccess =
     VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT |
     VK_ACCESS_2_TRANSFER_READ_BIT | VK_ACCESS_2_TRANSFER_WRITE_BIT |
@@ -92,8 +94,7 @@ void FaceDecision::ensure_buffers(fgvk::ExecuteContext& context, std::uint32_t l
     content_cleared_ = false;
   }
   if (!stats_) {
-    stats_ =
-        storage(context, shared::kStatCount * 4, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, ".faceStats");
+    stats_ = storage(context, kStatBytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, ".faceStats");
   }
   const std::uint32_t chunks = layout.chunks();
   const std::uint32_t records = std::max(layout.records, 1u);
@@ -121,7 +122,7 @@ void FaceDecision::ensure_buffers(fgvk::ExecuteContext& context, std::uint32_t l
         gpu::Buffer::create(context.gpu, request_bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                             gpu::MemoryUsage::upload, context.pass.name + ".faceRequests" + suffix);
     slot.readback =
-        gpu::Buffer::create(context.gpu, shared::kStatCount * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+        gpu::Buffer::create(context.gpu, kStatBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                             gpu::MemoryUsage::readback, context.pass.name + ".faceStats" + suffix);
     slot.written = false;
   }
@@ -242,7 +243,7 @@ void FaceDecision::finish(fgvk::ExecuteContext& context) {
   Slot& slot = slots_[context.frame.slot];
   barriers(context.cmd, {stats_}, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, kStorage,
            VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
-  const VkBufferCopy region{0, 0, shared::kStatCount * 4};
+  const VkBufferCopy region{0, 0, kStatBytes};
   vkCmdCopyBuffer(context.cmd, stats_, slot.readback, 1, &region);
   barriers(context.cmd, {slot.readback}, VK_PIPELINE_STAGE_2_COPY_BIT,
            VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);

@@ -146,115 +146,128 @@ fg::PassDesc PointShadowAtlasPass::describe() {
   return desc;
 }
 
+namespace {
+
+// Which faces are drawn and at what size (receiver culling, per-light resolution).
+void add_face_choice_params(fg::ParamTable<PointShadowAtlasParams>& table) {
+  table
+      .add({.name = "receiverCulling",
+            .type = fg::ParamType::boolean,
+            .default_value = true,
+            .description =
+                "With `depth` bound, rasterizer \"compute\" and an r32f atlas: draw only "
+                "the faces some visible pixel needs, decided on the GPU each frame (a face "
+                "that gains a receiver is drawn that frame). Otherwise every face the "
+                "camera's frustum may need is drawn."},
+           &PointShadowAtlasParams::receiver_culling)
+      .choice(
+          {.name = "resolution",
+           .type = fg::ParamType::enumeration,
+           .default_value = "fixed",
+           .choices = {"fixed", "screen"},
+           .description = "Face size: \"fixed\" gives every light the atlas's; \"screen\" picks "
+                          "each light's from the screen radius of its range sphere times "
+                          "resolutionScale, a power of two from minResolution up to the atlas's, "
+                          "with a quarter-octave band against flicker; its faces fill the corner "
+                          "square of their layers (docs/technique.md)."},
+          &PointShadowAtlasParams::resolution, {FaceResolution::fixed, FaceResolution::screen})
+      .add({.name = "resolutionScale",
+            .type = fg::ParamType::number,
+            .default_value = 1.0,
+            .min = 0.0625,
+            .max = 16.0,
+            .description = "With resolution \"screen\": face texels per pixel of the light's "
+                           "projected radius (1: a texel per pixel at half its range)."},
+           &PointShadowAtlasParams::resolution_scale)
+      .add({.name = "minResolution",
+            .type = fg::ParamType::integer,
+            .default_value = 64,
+            .min = 16.0,
+            .max = 4096.0,
+            .description = "With resolution \"screen\": the smallest face size, a power of "
+                           "two (faces are never larger than the atlas's)."},
+           &PointShadowAtlasParams::min_resolution);
+}
+
+}  // namespace
+
 const fg::ParamTable<PointShadowAtlasParams>& PointShadowAtlasPass::param_table() {
-  static const auto kTable =
-      fg::ParamTable<PointShadowAtlasParams>()
-          .add({.name = "nearPlane",
-                .type = fg::ParamType::number,
-                .default_value = 0.05,
-                .min = 0.001,
-                .max = 10.0,
-                .description = "Near plane of every face in metres (capped at half the range)."},
-               &PointShadowAtlasParams::near_plane)
-          .add({.name = "sunDistance",
-                .type = fg::ParamType::number,
-                .default_value = 40.0,
-                .min = 1.0,
-                .max = 10000.0,
-                .description =
-                    "The directional light's orthographic map covers the camera frustum up "
-                    "to this distance in metres (one cascade; beyond it the sun is unshadowed)."},
-               &PointShadowAtlasParams::sun_distance)
-          .add({.name = "depthBias",
-                .type = fg::ParamType::number,
-                .default_value = 2.0,
-                .min = 0.0,
-                .max = 1000.0,
-                .description =
-                    "Constant raster depth bias (depthBiasConstantFactor: units of the depth "
-                    "format's resolution)."},
-               &PointShadowAtlasParams::depth_bias)
-          .add({.name = "slopeBias",
-                .type = fg::ParamType::number,
-                .default_value = 1.75,
-                .min = 0.0,
-                .max = 16.0,
-                .description = "Slope-scaled raster depth bias (depthBiasSlopeFactor)."},
-               &PointShadowAtlasParams::slope_bias)
-          .add({.name = "cullFaces",
-                .type = fg::ParamType::boolean,
-                .default_value = true,
-                .description =
-                    "Skip faces whose frustum (to the light's range) misses the camera's."},
-               &PointShadowAtlasParams::cull_faces)
-          .add({.name = "cache",
-                .type = fg::ParamType::boolean,
-                .default_value = true,
-                .description =
-                    "Keep faces whose light and geometry did not change (static caching)."},
-               &PointShadowAtlasParams::cache)
-          .add({.name = "translucentColour",
-                .type = fg::ParamType::boolean,
-                .default_value = true,
-                .description =
-                    "With `colour` bound: translucent casters tint the colour map instead of "
-                    "writing depth. Off (or `colour` unbound): they cast opaque shadows."},
-               &PointShadowAtlasParams::translucent_colour)
-          .add({.name = "layeredDraw",
-                .type = fg::ParamType::boolean,
-                .default_value = true,
-                .description =
-                    "One instanced draw writing gl_Layer where the device supports it; off "
-                    "forces the fallback of one draw per face into a single-layer view."},
-               &PointShadowAtlasParams::layered_draw)
-          .add({.name = "receiverCulling",
-                .type = fg::ParamType::boolean,
-                .default_value = true,
-                .description =
-                    "With `depth` bound, rasterizer \"compute\" and an r32f atlas: draw only "
-                    "the faces some visible pixel needs, decided on the GPU each frame (a face "
-                    "that gains a receiver is drawn that frame). Otherwise every face the "
-                    "camera's frustum may need is drawn."},
-               &PointShadowAtlasParams::receiver_culling)
-          .choice({.name = "resolution",
-                   .type = fg::ParamType::enumeration,
-                   .default_value = "fixed",
-                   .choices = {"fixed", "screen"},
-                   .description =
-                       "Face size: \"fixed\" gives every light the atlas's; \"screen\" picks "
-                       "each light's from the screen radius of its range sphere times "
-                       "resolutionScale, a power of two from minResolution up to the atlas's, "
-                       "with a quarter-octave band against flicker; its faces fill the corner "
-                       "square of their layers (docs/technique.md)."},
-                  &PointShadowAtlasParams::resolution,
-                  {FaceResolution::fixed, FaceResolution::screen})
-          .add({.name = "resolutionScale",
-                .type = fg::ParamType::number,
-                .default_value = 1.0,
-                .min = 0.0625,
-                .max = 16.0,
-                .description = "With resolution \"screen\": face texels per pixel of the light's "
-                               "projected radius (1: a texel per pixel at half its range)."},
-               &PointShadowAtlasParams::resolution_scale)
-          .add({.name = "minResolution",
-                .type = fg::ParamType::integer,
-                .default_value = 64,
-                .min = 16.0,
-                .max = 4096.0,
-                .description = "With resolution \"screen\": the smallest face size, a power of "
-                               "two (faces are never larger than the atlas's)."},
-               &PointShadowAtlasParams::min_resolution)
-          .choice({.name = "rasterizer",
-                   .type = fg::ParamType::enumeration,
-                   .default_value = "hardware",
-                   .choices = {"hardware", "compute"},
-                   .description =
-                       "Who draws the faces: \"hardware\" renders them (vertex shader, depth "
-                       "attachment); \"compute\" culls scene clusters per face and rasterises "
-                       "them in compute shaders (atomic min into a buffer copied into the "
-                       "atlas), for GPUs with few raster units (docs/technique.md)."},
-                  &PointShadowAtlasParams::rasterizer,
-                  {ShadowRasterizer::hardware, ShadowRasterizer::compute});
+  static const auto kTable = [] {
+    fg::ParamTable<PointShadowAtlasParams> table;
+    table
+        .add({.name = "nearPlane",
+              .type = fg::ParamType::number,
+              .default_value = 0.05,
+              .min = 0.001,
+              .max = 10.0,
+              .description = "Near plane of every face in metres (capped at half the range)."},
+             &PointShadowAtlasParams::near_plane)
+        .add({.name = "sunDistance",
+              .type = fg::ParamType::number,
+              .default_value = 40.0,
+              .min = 1.0,
+              .max = 10000.0,
+              .description =
+                  "The directional light's orthographic map covers the camera frustum up "
+                  "to this distance in metres (one cascade; beyond it the sun is unshadowed)."},
+             &PointShadowAtlasParams::sun_distance)
+        .add({.name = "depthBias",
+              .type = fg::ParamType::number,
+              .default_value = 2.0,
+              .min = 0.0,
+              .max = 1000.0,
+              .description =
+                  "Constant raster depth bias (depthBiasConstantFactor: units of the depth "
+                  "format's resolution)."},
+             &PointShadowAtlasParams::depth_bias)
+        .add({.name = "slopeBias",
+              .type = fg::ParamType::number,
+              .default_value = 1.75,
+              .min = 0.0,
+              .max = 16.0,
+              .description = "Slope-scaled raster depth bias (depthBiasSlopeFactor)."},
+             &PointShadowAtlasParams::slope_bias)
+        .add(
+            {.name = "cullFaces",
+             .type = fg::ParamType::boolean,
+             .default_value = true,
+             .description = "Skip faces whose frustum (to the light's range) misses the camera's."},
+            &PointShadowAtlasParams::cull_faces)
+        .add(
+            {.name = "cache",
+             .type = fg::ParamType::boolean,
+             .default_value = true,
+             .description = "Keep faces whose light and geometry did not change (static caching)."},
+            &PointShadowAtlasParams::cache)
+        .add({.name = "translucentColour",
+              .type = fg::ParamType::boolean,
+              .default_value = true,
+              .description =
+                  "With `colour` bound: translucent casters tint the colour map instead of "
+                  "writing depth. Off (or `colour` unbound): they cast opaque shadows."},
+             &PointShadowAtlasParams::translucent_colour)
+        .add(
+            {.name = "layeredDraw",
+             .type = fg::ParamType::boolean,
+             .default_value = true,
+             .description = "One instanced draw writing gl_Layer where the device supports it; off "
+                            "forces the fallback of one draw per face into a single-layer view."},
+            &PointShadowAtlasParams::layered_draw)
+
+        .choice(
+            {.name = "rasterizer",
+             .type = fg::ParamType::enumeration,
+             .default_value = "hardware",
+             .choices = {"hardware", "compute"},
+             .description = "Who draws the faces: \"hardware\" renders them (vertex shader, depth "
+                            "attachment); \"compute\" culls scene clusters per face and rasterises "
+                            "them in compute shaders (atomic min into a buffer copied into the "
+                            "atlas), for GPUs with few raster units (docs/technique.md)."},
+            &PointShadowAtlasParams::rasterizer,
+            {ShadowRasterizer::hardware, ShadowRasterizer::compute});
+    add_face_choice_params(table);
+    return table;
+  }();
   return kTable;
 }
 
