@@ -42,6 +42,13 @@ step() {
   for _ in $(seq 1 600); do [ "$(frames)" -ge $((before + 2)) ] && return 0; sleep 0.1; done
   echo "timed out after: xdotool $*"
 }
+# `n` more whole frames.
+settle() {
+  local before
+  before=$(frames)
+  for _ in $(seq 1 600); do [ "$(frames)" -ge $((before + $1)) ] && return 0; sleep 0.1; done
+  echo "timed out waiting for $1 frames"
+}
 wait_for "first frame presented"
 step mousemove 480 465
 step mousedown 1
@@ -56,7 +63,11 @@ cp "$2/scene.json" "$2/after-undo.json"
 # The whole drag between two frames (press, move, release in one burst, as a fast hand
 # or a slow lavapipe frame makes it): the queued press is replayed where it happened.
 step mousemove 480 465 mousedown 1 mousemove 580 465 mouseup 1
+# The burst's press and release are replayed one frame each, and the Ctrl+S after them
+# waits for both: under a loaded CI machine that can take frames beyond step's two.
+settle 4
 step key ctrl+s
+settle 4
 cp "$2/scene.json" "$2/after-burst.json"
 # Resizing (no window manager under Xvfb: X resizes directly): the graph follows.
 xdotool search --name "antumbra edit" windowsize 800 450
