@@ -11,9 +11,16 @@
 #include "common/frame_resources.hpp"
 #include "common/ports.hpp"
 #include "common/shadow_data.hpp"
+#include "own_buffer_sync.hpp"
 
 namespace antumbra::passes {
 namespace {
+
+using own_sync::after_all;
+using own_sync::compute_to_compute;
+using own_sync::compute_to_copy;
+using own_sync::kStorageReadWrite;
+using own_sync::transfer_to_compute;
 
 // Scratch bounds per chunk: depth texels and work items. A frame that asks for more
 // faces is rasterised in several rounds through the same buffers.
@@ -40,47 +47,6 @@ gpu::DescriptorSetLayoutBuilder raster_bindings() {
   b.storage_image(shared::kRasterAtlas, VK_SHADER_STAGE_COMPUTE_BIT)
       .storage_image(shared::kRasterColour, VK_SHADER_STAGE_COMPUTE_BIT);
   return b;
-}
-
-// Every earlier use of the pass's own buffers (shader reads and writes, copies, the
-// indirect arguments) before `dst`.
-void after_all(VkCommandBuffer cmd, std::initializer_list<VkBuffer> buffers,
-               VkPipelineStageFlags2 dst_stage, VkAccessFlags2 dst_access) {
-  for (VkBuffer buffer : buffers) {
-    gpu::buffer_barrier(cmd, buffer,
-                        VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT |
-                            VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT |
-                            VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT,
-                        VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT |
-                            VK_ACCESS_2_TRANSFER_READ_BIT | VK_ACCESS_2_TRANSFER_WRITE_BIT |
-                            VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT,
-                        dst_stage, dst_access);
-  }
-}
-
-constexpr VkAccessFlags2 kStorageReadWrite =
-    VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
-
-void transfer_to_compute(VkCommandBuffer cmd, std::initializer_list<VkBuffer> buffers) {
-  for (VkBuffer b : buffers) {
-    gpu::buffer_barrier(cmd, b, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
-                        VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                        kStorageReadWrite);
-  }
-}
-
-void compute_to_compute(VkCommandBuffer cmd, std::initializer_list<VkBuffer> buffers) {
-  for (VkBuffer b : buffers) {
-    gpu::buffer_barrier(cmd, b, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, kStorageReadWrite,
-                        VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, kStorageReadWrite);
-  }
-}
-
-void compute_to_copy(VkCommandBuffer cmd, std::initializer_list<VkBuffer> buffers) {
-  for (VkBuffer b : buffers) {
-    gpu::buffer_barrier(cmd, b, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, kStorageReadWrite,
-                        VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
-  }
 }
 
 }  // namespace

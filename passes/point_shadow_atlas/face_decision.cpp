@@ -12,6 +12,7 @@
 #include "common/shadow_data.hpp"
 #include "compute_raster_interface.h"
 #include "face_decision_interface.h"
+#include "own_buffer_sync.hpp"
 
 namespace antumbra::passes {
 namespace {
@@ -31,24 +32,11 @@ gpu::DescriptorSetLayoutBuilder decision_bindings() {
 
 constexpr VkDeviceSize kStatBytes = VkDeviceSize{shared::kStatCount} * 4;
 
-constexpr VkAccessFlags2 kAnyAccess =
-    VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT |
-    VK_ACCESS_2_TRANSFER_READ_BIT | VK_ACCESS_2_TRANSFER_WRITE_BIT |
-    VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT;
-constexpr VkPipelineStageFlags2 kAnyStage = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT |
-                                            VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT |
-                                            VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT;
-constexpr VkAccessFlags2 kStorage =
-    VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
-
-void barriers(VkCommandBuffer cmd, std::initializer_list<VkBuffer> buffers,
-              VkPipelineStageFlags2 src_stage, VkAccessFlags2 src_access,
-              VkPipelineStageFlags2 dst_stage, VkAccessFlags2 dst_access) {
-  for (VkBuffer b : buffers) {
-    if (b != VK_NULL_HANDLE)
-      gpu::buffer_barrier(cmd, b, src_stage, src_access, dst_stage, dst_access);
-  }
-}
+using own_sync::after_all;
+using own_sync::barriers;
+using own_sync::compute_to_compute;
+using own_sync::transfer_to_compute;
+constexpr VkAccessFlags2 kStorage = own_sync::kStorageReadWrite;
 
 gpu::Buffer storage(fgvk::ExecuteContext& context, VkDeviceSize bytes, VkBufferUsageFlags extra,
                     const char* name) {
@@ -150,8 +138,8 @@ void FaceDecision::write_requests(Slot& slot, const AtlasFrame& frame,
 void FaceDecision::reset(fgvk::ExecuteContext& context, VkBuffer staging, const AtlasFrame& frame,
                          const DecisionLayout& layout) {
   const VkCommandBuffer cmd = context.cmd;
-  barriers(cmd, {shadow_in_, needed_, content_, args_, stats_}, kAnyStage, kAnyAccess,
-           VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
+  after_all(cmd, {shadow_in_, needed_, content_, args_, stats_},
+            VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
   const VkBufferCopy region{0, 0, shadow_data_bytes(layers_)};
   vkCmdCopyBuffer(cmd, staging, shadow_in_, 1, &region);
   vkCmdFillBuffer(cmd, needed_, 0, VK_WHOLE_SIZE, 0u);
@@ -166,12 +154,9 @@ void FaceDecision::reset(fgvk::ExecuteContext& context, VkBuffer staging, const 
   std::vector<glm::uvec4> args(layout.chunks() + 1, glm::uvec4(0u));
   args.back() = glm::uvec4(groups, groups, 0u, 0u);
   vkCmdUpdateBuffer(cmd, args_, 0, args.size() * sizeof(glm::uvec4), args.data());
-  barriers(cmd, {shadow_in_, needed_, content_, args_, stats_},
-           VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-           VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, kStorage);
+  transfer_to_compute(cmd, {shadow_in_, needed_, content_, args_, stats_});
   // Last frame's rasterisation read the flags and the lists.
-  barriers(cmd, {draw_flags_, list_}, kAnyStage, kAnyAccess, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-           kStorage);
+  after_all(cmd, {draw_flags_, list_}, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, kStorage);
 }
 
 void FaceDecision::bind(fgvk::ExecuteContext& context, const ComputePipeline& pipeline,
@@ -224,8 +209,7 @@ void FaceDecision::record(fgvk::ExecuteContext& context, const AtlasFrame& frame
     const std::uint32_t tiles = group_count(depth.extent.width, shared::kReceiverTile) *
                                 group_count(depth.extent.height, shared::kReceiverTile);
     vkCmdDispatch(cmd, tiles, 1, 1);
-    barriers(cmd, {needed_}, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, kStorage,
-             VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, kStorage);
+    compute_to_compute(cmd, {needed_});
   }
   bind(context, decide_, slot);
   vkCmdPushConstants(cmd, decide_.layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
