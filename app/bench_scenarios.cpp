@@ -50,7 +50,8 @@ Scenario make(const std::string& table, const Technique& t, int kernel, unsigned
   // measurements did; the many-light table measures the cached steady state. The moving
   // table caches too: what stands still stays cached, a moving light's faces change
   // their matrices and so redraw themselves.
-  s.shadow_cache = table == "lights" || table == "moving" || table == "penumbra";
+  s.shadow_cache =
+      table == "lights" || table == "moving" || table == "penumbra" || table == "dynamic";
   if (std::string(t.graph) != "lighting.json") {
     s.overrides.push_back({"point-shadow-atlas", "cache", s.shadow_cache});
   }
@@ -123,6 +124,25 @@ std::vector<Scenario> builtin_scenarios(double scale) {
         }
         out.push_back(std::move(s));
       }
+    }
+  }
+  // Dynamic objects: the atrium's lights stand, carts and a ball move every frame; the
+  // hardware rasteriser with and without the static cache, and the compute one.
+  for (const Variant& v : kMovingVariants) {
+    for (const char* variant : {"hardware", "hardware-nocache", "compute"}) {
+      Scenario s = make("dynamic", technique(v.technique), v.kernel, 1080, 16, scale);
+      s.scene = kDynamicScene;
+      const std::string name = variant;
+      if (name == "hardware-nocache") {
+        s.name += "/nocache";
+        s.overrides.push_back({"point-shadow-atlas", "staticCache", false});
+      } else if (name == "compute") {
+        s.rasterizer = "compute";
+        s.name += "/compute";
+        s.overrides.push_back({"point-shadow-atlas", "rasterizer", s.rasterizer});
+        s.overrides.push_back({"tonemap", "stage", "compute"});
+      }
+      out.push_back(std::move(s));
     }
   }
   // Penumbra size: PCSS and layered SSSS (blocker search, min filter) as the lights grow

@@ -49,6 +49,8 @@ inline constexpr float kPenumbraLightSizes[] = {0.05f, 0.1f, 0.25f, 0.5f, 1.0f};
 inline constexpr int kDistrictLights = 1024;
 inline constexpr int kDistrictMovingLights = 64;
 inline constexpr const char* kDistrictScene = "district.json";
+// The "dynamic" table's scene: the atrium with moving carts and a ball.
+inline constexpr const char* kDynamicScene = "atrium-dynamic.json";
 
 // Every built-in scenario, in a stable order, with screen and atlas faces scaled by
 // `scale` (names carry the scaled height, so two scales never share a name).

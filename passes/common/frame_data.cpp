@@ -1,26 +1,49 @@
 #include "frame_data.hpp"
 
 #include <cmath>
+#include <initializer_list>
 
 #include <glm/gtc/matrix_inverse.hpp>
 
 namespace antumbra::passes {
 
+std::vector<std::size_t> merge_order(const scene::Scene& scene) {
+  std::vector<std::size_t> order;
+  order.reserve(scene.meshes.size());
+  for (const bool dynamic : {false, true}) {
+    for (std::size_t i = 0; i < scene.meshes.size(); ++i) {
+      if (scene.meshes[i].dynamic == dynamic) order.push_back(i);
+    }
+  }
+  return order;
+}
+
+void append_world_vertices(const scene::Mesh& mesh, std::vector<GpuVertex>& out) {
+  const glm::mat3 normal_matrix = mesh.normal_matrix();
+  const auto material = static_cast<std::uint32_t>(mesh.material);
+  for (const auto& v : mesh.vertices) {
+    const glm::vec3 world = glm::vec3(mesh.transform * glm::vec4(v.position, 1.0f));
+    glm::vec3 n = normal_matrix * v.normal;
+    const float len = glm::length(n);
+    n = len > 0.0f ? n / len : glm::vec3(0.0f, 1.0f, 0.0f);
+    out.push_back({world, n, material});
+  }
+}
+
 MergedGeometry merge_scene_geometry(const scene::Scene& scene) {
   MergedGeometry merged;
   merged.vertices.reserve(scene.vertex_count());
   merged.indices.reserve(scene.triangle_count() * 3);
-  for (const auto& mesh : scene.meshes) {
-    const auto base = static_cast<std::uint32_t>(merged.vertices.size());
-    const glm::mat3 normal_matrix = mesh.normal_matrix();
-    const auto material = static_cast<std::uint32_t>(mesh.material);
-    for (const auto& v : mesh.vertices) {
-      const glm::vec3 world = glm::vec3(mesh.transform * glm::vec4(v.position, 1.0f));
-      glm::vec3 n = normal_matrix * v.normal;
-      const float len = glm::length(n);
-      n = len > 0.0f ? n / len : glm::vec3(0.0f, 1.0f, 0.0f);
-      merged.vertices.push_back({world, n, material});
+  for (const std::size_t m : merge_order(scene)) {
+    const scene::Mesh& mesh = scene.meshes[m];
+    if (!mesh.dynamic) {
+      merged.static_vertices =
+          static_cast<std::uint32_t>(merged.vertices.size() + mesh.vertices.size());
+      merged.static_indices =
+          static_cast<std::uint32_t>(merged.indices.size() + mesh.indices.size());
     }
+    const auto base = static_cast<std::uint32_t>(merged.vertices.size());
+    append_world_vertices(mesh, merged.vertices);
     for (const std::uint32_t index : mesh.indices) merged.indices.push_back(base + index);
   }
   return merged;

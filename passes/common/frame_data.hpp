@@ -41,11 +41,20 @@ static_assert(sizeof(GpuVertex) == 28);
 struct MergedGeometry {
   std::vector<GpuVertex> vertices;
   std::vector<std::uint32_t> indices;
+  // Static meshes come first: vertices [0, static_vertices) and indices
+  // [0, static_indices) are theirs, the rest belong to dynamic meshes (Mesh::dynamic).
+  std::uint32_t static_vertices = 0;
+  std::uint32_t static_indices = 0;
 };
 
-// All meshes transformed to world space in one vertex/index list, so static
-// geometry draws with a single indexed call.
+// Scene::meshes indices in upload order: the static meshes, then the dynamic ones.
+std::vector<std::size_t> merge_order(const scene::Scene& scene);
+
+// All meshes transformed to world space in one vertex/index list (merge_order), so
+// static geometry draws with a single indexed call and dynamic geometry with another.
 MergedGeometry merge_scene_geometry(const scene::Scene& scene);
+// One mesh's vertices in world space, appended to `out` (what the merge writes for it).
+void append_world_vertices(const scene::Mesh& mesh, std::vector<GpuVertex>& out);
 std::vector<GpuMaterial> build_materials(const scene::Scene& scene);
 FrameUniforms build_frame_uniforms(const scene::Scene& scene, std::uint32_t width,
                                    std::uint32_t height, std::uint32_t frame_index);

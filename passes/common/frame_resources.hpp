@@ -4,12 +4,14 @@
 // contents are what the built-in passes share, so it is defined beside them.
 
 #include <cstdint>
+#include <vector>
 
 #include <vulkan/vulkan.h>
 
 namespace antumbra::scene {
 struct Scene;
-}
+struct Aabb;
+}  // namespace antumbra::scene
 
 namespace antumbra::fgvk {
 
@@ -27,6 +29,15 @@ struct FrameResources {
   // Changes whenever the uploaded geometry or materials change (a new GpuScene), so
   // passes that cache results derived from them (shadow faces) know to redo them.
   std::uint64_t geometry_version = 0;
+  // Indices [0, static_index_count) draw the static meshes, the rest the dynamic ones
+  // (scene::Mesh::dynamic), whose vertices are rewritten in place when they move.
+  std::uint32_t static_index_count = 0;
+  // Changes whenever a dynamic mesh moved (a frame of GpuScene::update).
+  std::uint64_t dynamic_version = 0;
+  // The bounds dynamic meshes left and entered this frame (old and new of each one that
+  // moved; empty when none did), and every dynamic mesh's bounds now. Owned by GpuScene.
+  const std::vector<scene::Aabb>* moved_bounds = nullptr;
+  const std::vector<scene::Aabb>* dynamic_bounds = nullptr;
   VkExtent2D viewport{};
   const scene::Scene* scene = nullptr;
   std::uint64_t frame_index = 0;

@@ -5,6 +5,8 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "antumbra/gpu/commands.hpp"
+#include "antumbra/gpu/context.hpp"
 #include "frame_data.hpp"
 
 namespace antumbra::passes {
@@ -28,8 +30,18 @@ gpu::Buffer upload_device_buffer(gpu::Context& gpu, const std::vector<T>& data,
 
 }  // namespace
 
-GpuScene::GpuScene(gpu::Context& gpu, const scene::Scene& scene, std::uint32_t frames_in_flight) {
+GpuScene::GpuScene(gpu::Context& gpu, const scene::Scene& scene, std::uint32_t frames_in_flight)
+    : gpu_(&gpu) {
   const auto geometry = merge_scene_geometry(scene);
+  static_indices_ = geometry.static_indices;
+  static_vertices_ = geometry.static_vertices;
+  dynamic_vertex_count_ = static_cast<std::uint32_t>(geometry.vertices.size()) - static_vertices_;
+  for (const std::size_t m : merge_order(scene)) {
+    const scene::Mesh& mesh = scene.meshes[m];
+    if (!mesh.dynamic) continue;
+    dynamic_.push_back({m, mesh.transform, mesh.bounds});
+    dynamic_bounds_.push_back(mesh.bounds);
+  }
   vertices_ = upload_device_buffer(
       gpu, geometry.vertices,
       VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "scene.vertices");
@@ -48,17 +60,60 @@ GpuScene::GpuScene(gpu::Context& gpu, const scene::Scene& scene, std::uint32_t f
     slot.lights =
         gpu::Buffer::create(gpu, sizeof(GpuLight) * kMaxLights, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                             gpu::MemoryUsage::upload, "frame.lights." + std::to_string(i));
+    if (dynamic_vertex_count_ > 0) {
+      slot.dynamic_vertices =
+          gpu::Buffer::create(gpu, VkDeviceSize{dynamic_vertex_count_} * sizeof(GpuVertex),
+                              VK_BUFFER_USAGE_TRANSFER_SRC_BIT, gpu::MemoryUsage::upload,
+                              "scene.dynamicVertices.staging." + std::to_string(i));
+    }
     slots_.push_back(std::move(slot));
   }
 }
 
-fgvk::FrameResources GpuScene::update(std::uint32_t slot_index, const scene::Scene& scene,
-                                      VkExtent2D viewport, std::uint64_t frame_index) {
+void GpuScene::upload_dynamic(gpu::Context& gpu, VkCommandBuffer cmd, Slot& slot,
+                              const scene::Scene& scene) {
+  moved_bounds_.clear();
+  bool moved = false;
+  for (std::size_t i = 0; i < dynamic_.size(); ++i) {
+    DynamicMesh& d = dynamic_[i];
+    const scene::Mesh& mesh = scene.meshes.at(d.mesh);
+    if (mesh.transform == d.transform) continue;
+    moved_bounds_.push_back(d.bounds);
+    moved_bounds_.push_back(mesh.bounds);
+    d.transform = mesh.transform;
+    d.bounds = mesh.bounds;
+    dynamic_bounds_[i] = mesh.bounds;
+    moved = true;
+  }
+  if (!moved) return;
+  ++dynamic_version_;
+  dynamic_scratch_.clear();
+  for (const DynamicMesh& d : dynamic_)
+    append_world_vertices(scene.meshes[d.mesh], dynamic_scratch_);
+  const VkDeviceSize bytes = dynamic_scratch_.size() * sizeof(GpuVertex);
+  std::memcpy(slot.dynamic_vertices.mapped(), dynamic_scratch_.data(), bytes);
+  // Earlier frames may still read the range (vertex input, storage reads): every
+  // stage waits, as for any in-place rewrite of shared data.
+  gpu.begin_label(cmd, "scene.moveDynamic");
+  gpu::buffer_barrier(cmd, vertices_, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+                      VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT,
+                      VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
+  const VkBufferCopy region{0, VkDeviceSize{static_vertices_} * sizeof(GpuVertex), bytes};
+  vkCmdCopyBuffer(cmd, slot.dynamic_vertices, vertices_, 1, &region);
+  gpu::buffer_barrier(cmd, vertices_, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                      VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_READ_BIT);
+  gpu.end_label(cmd);
+}
+
+fgvk::FrameResources GpuScene::update(VkCommandBuffer cmd, std::uint32_t slot_index,
+                                      const scene::Scene& scene, VkExtent2D viewport,
+                                      std::uint64_t frame_index) {
   if (scene.lights.size() > kMaxLights) {
     throw std::runtime_error("the scene has " + std::to_string(scene.lights.size()) +
                              " lights; at most " + std::to_string(kMaxLights) + " are supported");
   }
   auto& slot = slots_.at(slot_index);
+  if (!dynamic_.empty()) upload_dynamic(*gpu_, cmd, slot, scene);
   const auto uniforms = build_frame_uniforms(scene, viewport.width, viewport.height,
                                              static_cast<std::uint32_t>(frame_index));
   std::memcpy(slot.uniforms.mapped(), &uniforms, sizeof uniforms);
@@ -78,6 +133,10 @@ fgvk::FrameResources GpuScene::update(std::uint32_t slot_index, const scene::Sce
   frame.indices = indices_;
   frame.index_count = index_count_;
   frame.geometry_version = geometry_version_;
+  frame.static_index_count = static_indices_;
+  frame.dynamic_version = dynamic_version_;
+  frame.moved_bounds = &moved_bounds_;
+  frame.dynamic_bounds = &dynamic_bounds_;
   frame.viewport = viewport;
   frame.scene = &scene;
   frame.frame_index = frame_index;

@@ -122,6 +122,21 @@ FacePyramid face_pyramid(const glm::vec3& light, float range, std::uint32_t face
   return p;
 }
 
+bool box_may_touch(const glm::mat4& view_proj, const scene::Aabb& box) {
+  if (box.empty()) return false;
+  const glm::mat4 t = glm::transpose(view_proj);  // t[k] = row k
+  // Inner side: w + x, w - x, w + y, w - y, z, w - z >= 0.
+  const std::array<glm::vec4, 6> planes{t[3] + t[0], t[3] - t[0], t[3] + t[1],
+                                        t[3] - t[1], t[2],        t[3] - t[2]};
+  for (const glm::vec4& p : planes) {
+    // The box corner furthest along the plane's normal: outside it, all are outside.
+    const glm::vec3 corner{p.x >= 0.0f ? box.max.x : box.min.x, p.y >= 0.0f ? box.max.y : box.min.y,
+                           p.z >= 0.0f ? box.max.z : box.min.z};
+    if (glm::dot(glm::vec3(p), corner) + p.w < 0.0f) return false;
+  }
+  return true;
+}
+
 bool sphere_may_intersect(const Frustum& frustum, const glm::vec3& centre, float radius) {
   for (const Plane& plane : frustum.planes) {
     if (plane.distance(centre) < -radius) return false;

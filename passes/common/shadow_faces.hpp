@@ -16,6 +16,8 @@
 
 #include <glm/glm.hpp>
 
+#include "antumbra/scene/scene.hpp"
+
 namespace antumbra::passes::shadow_faces {
 
 inline constexpr std::uint32_t kFaceCount = 6;
@@ -79,6 +81,11 @@ FacePyramid face_pyramid(const glm::vec3& light, float range, std::uint32_t face
 // Conservative tests: false only when provably disjoint.
 bool sphere_may_intersect(const Frustum& frustum, const glm::vec3& centre, float radius);
 bool pyramid_may_intersect(const Frustum& frustum, const FacePyramid& pyramid);
+
+// Whether a world box may reach into the clip volume of `view_proj` (Vulkan clip space;
+// any face: point, spot or the sun's box). Conservative, and no matrix inverse: it tests
+// the box against the six clip planes read off the matrix's rows.
+bool box_may_touch(const glm::mat4& view_proj, const scene::Aabb& box);
 
 // The faces of a light the camera may see lit (bit k = face k). 0 when the light's
 // sphere misses the view entirely.

@@ -1,6 +1,7 @@
 #include "atlas_planner.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 
 #include "common/light_faces.hpp"
@@ -10,7 +11,12 @@ namespace antumbra::passes {
 
 void AtlasPlanner::invalidate() {
   contents_known_ = false;
-  for (auto& layer : layers_) layer.valid = false;
+  for (auto& layer : layers_) {
+    layer.valid = false;
+    layer.shown = false;
+    layer.cache_valid = false;
+    layer.dynamic_dirty = false;
+  }
 }
 
 namespace {
@@ -37,9 +43,36 @@ ShadowLight shadow_light(const scene::PointLight& light, float range, float near
 
 const AtlasFrame& AtlasPlanner::plan(const scene::Scene& scene, const glm::mat4& camera_view_proj,
                                      std::uint64_t geometry_version, std::uint32_t frame_index,
-                                     const AtlasSettings& settings) {
-  namespace sf = shadow_faces;
-  namespace lf = light_faces;
+                                     const AtlasSettings& settings, const SceneMotion& motion) {
+  begin_frame(scene, frame_index, settings);
+  mark_dynamic(motion);
+  work_.clear();
+  std::uint32_t next_layer = 0;
+  for (std::uint32_t i = 0; i < frame_.header.counts.x; ++i) {
+    LightWork work;
+    if (wish_light(scene, i, next_layer, camera_view_proj, geometry_version, settings, work)) {
+      work_.push_back(work);
+    }
+  }
+  // Layers no light owns this frame hold nothing useful any more.
+  for (std::uint32_t layer = next_layer; layer < settings.layers; ++layer) {
+    layers_[layer].valid = false;
+    layers_[layer].shown = false;
+    layers_[layer].owner.clear();
+  }
+  apply_budget(settings);
+  for (const LightWork& work : work_) {
+    if (work.update) {
+      plan_light(scene, work, geometry_version, settings, motion);
+    } else {
+      keep_light(work);
+    }
+  }
+  return frame_;
+}
+
+void AtlasPlanner::begin_frame(const scene::Scene& scene, std::uint32_t frame_index,
+                               const AtlasSettings& settings) {
   const std::uint32_t layer_count = settings.layers;
   if (layers_.size() != layer_count) {
     layers_.assign(layer_count, LayerState{});
@@ -55,63 +88,152 @@ const AtlasFrame& AtlasPlanner::plan(const scene::Scene& scene, const glm::mat4&
   frame_.faces.assign(layer_count, ShadowFace{});
   frame_.epochs.assign(layer_count, 0u);
   for (auto& face : frame_.faces) face.info = {0xFFFFFFFFu, 0u, 0u, 0u};  // unused layer
+}
 
+// Layers whose contents a dynamic mesh entered or left are stale.
+void AtlasPlanner::mark_dynamic(const SceneMotion& motion) {
+  if (motion.moved.empty()) return;
+  for (LayerState& state : layers_) {
+    if (!state.valid || state.dynamic_dirty) continue;
+    state.dynamic_dirty = std::any_of(
+        motion.moved.begin(), motion.moved.end(),
+        [&](const auto& box) { return shadow_faces::box_may_touch(state.key.view_proj, box); });
+  }
+}
+
+bool AtlasPlanner::wish_light(const scene::Scene& scene, std::uint32_t i, std::uint32_t& next_layer,
+                              const glm::mat4& camera_view_proj, std::uint64_t geometry_version,
+                              const AtlasSettings& settings, LightWork& work) {
+  namespace sf = shadow_faces;
+  namespace lf = light_faces;
+  const scene::PointLight& light = scene.lights[i];
+  ShadowLight& out = frame_.lights[i];
+  const bool directional = light.type == scene::LightType::directional;
+  const float range = directional ? 0.0f : light.range;
+  const float near = std::min(settings.near_plane, 0.5f * range);
+  out = shadow_light(light, range, near);
+  if (!light.casts_shadows) return false;
+  const std::uint32_t face_count = light.type == scene::LightType::point ? sf::kFaceCount : 1u;
+  if (next_layer + face_count > settings.layers) {
+    frame_.unshadowed.push_back(light.name);
+    return false;
+  }
+  work = {.light = i, .first = next_layer, .faces = face_count};
+  next_layer += face_count;
+  out.params.z = static_cast<float>(work.first);
+  work.resolution = light_resolution(light, work.first, settings);
+  out.projection.y = static_cast<float>(work.resolution);
+  out.projection.z = static_cast<float>(work.resolution) / static_cast<float>(settings.face_size);
   const sf::Frustum camera = sf::camera_frustum(camera_view_proj);
-  std::uint32_t next_layer = 0;
-  for (std::uint32_t i = 0; i < light_count; ++i) {
-    const scene::PointLight& light = scene.lights[i];
-    ShadowLight& out = frame_.lights[i];
-    const bool directional = light.type == scene::LightType::directional;
-    const float range = directional ? 0.0f : light.range;
-    const float near = std::min(settings.near_plane, 0.5f * range);
-    out = shadow_light(light, range, near);
-    if (!light.casts_shadows) continue;
-    const std::uint32_t face_count = light.type == scene::LightType::point ? sf::kFaceCount : 1u;
-    if (next_layer + face_count > layer_count) {
-      frame_.unshadowed.push_back(light.name);
-      continue;
-    }
-    const std::uint32_t first = next_layer;
-    next_layer += face_count;
-    out.params.z = static_cast<float>(first);
-    const std::uint32_t resolution = light_resolution(light, first, settings);
-    out.projection.y = static_cast<float>(resolution);
-    out.projection.z = static_cast<float>(resolution) / static_cast<float>(settings.face_size);
-    std::uint32_t visible = (1u << face_count) - 1u;
+  work.visible = (1u << face_count) - 1u;
+  if (light.type == scene::LightType::point) {
+    if (settings.cull_faces) work.visible = sf::visible_faces(camera, light.position, light.range);
+  } else if (light.type == scene::LightType::spot) {
+    if (settings.cull_faces && !lf::spot_may_be_visible(camera, light)) work.visible = 0u;
+  } else {
+    // The sun's box follows the camera: fitted anew every frame.
+    const lf::DirectionalFit fit = lf::fit_directional(
+        light.direction, camera_view_proj, settings.camera_near, settings.camera_far,
+        settings.sun_max_distance, scene.bounds, static_cast<float>(settings.face_size));
+    out.position_range = glm::vec4(fit.near_point, fit.depth);
+    out.projection.x = fit.half_width;
+    frame_.faces[work.first].view_proj = fit.view_proj;
+  }
+  const LayerState& head = layers_[work.first];
+  work.must = directional || !settings.cache || head.owner != light.name ||
+              head.waited >= settings.max_stale;
+  for (std::uint32_t face = 0; face < face_count; ++face) {
+    const std::uint32_t layer = work.first + face;
+    ShadowFace& out_face = frame_.faces[layer];
     if (light.type == scene::LightType::point) {
-      if (settings.cull_faces) visible = sf::visible_faces(camera, light.position, light.range);
+      out_face.view_proj = sf::face_view_proj(light.position, face, near, light.range);
     } else if (light.type == scene::LightType::spot) {
-      if (settings.cull_faces && !lf::spot_may_be_visible(camera, light)) {
-        visible = 0u;
-      }
+      out_face.view_proj =
+          lf::spot_view_proj(light.position, light.direction, out.projection.x, near, range);
+    }
+    out_face.info = {i, face, 0u, 0u};
+    const LayerState& state = layers_[layer];
+    const bool holds =
+        state.valid && state.key == FaceKey{out_face.view_proj, geometry_version, work.resolution};
+    if ((work.visible & (1u << face)) != 0u && (!holds || state.dynamic_dirty)) {
+      work.needed |= 1u << face;
+      // Nothing of this face can be shown while it waits.
+      if (!(state.valid && state.shown)) work.must = true;
+    }
+  }
+  work.priority =
+      directional ? 0.0f : projected_radius(light.position, light.range, settings.resolution);
+  return true;
+}
+
+// Lights that must be drawn take the budget first, then the longest waiting and the
+// largest on screen, while their faces fit.
+void AtlasPlanner::apply_budget(const AtlasSettings& settings) {
+  std::uint64_t used = 0;
+  std::vector<LightWork*> optional;
+  for (LightWork& work : work_) {
+    const auto faces = static_cast<std::uint32_t>(std::popcount(work.needed));
+    if (work.must || faces == 0) {
+      used += faces;
     } else {
-      // The sun's box follows the camera: fitted anew every frame.
-      const lf::DirectionalFit fit = lf::fit_directional(
-          light.direction, camera_view_proj, settings.camera_near, settings.camera_far,
-          settings.sun_max_distance, scene.bounds, static_cast<float>(settings.face_size));
-      out.position_range = glm::vec4(fit.near_point, fit.depth);
-      out.projection.x = fit.half_width;
-      frame_.faces[first].view_proj = fit.view_proj;
-    }
-    for (std::uint32_t face = 0; face < face_count; ++face) {
-      const std::uint32_t layer = first + face;
-      ShadowFace& out_face = frame_.faces[layer];
-      if (light.type == scene::LightType::point) {
-        out_face.view_proj = sf::face_view_proj(light.position, face, near, light.range);
-      } else if (light.type == scene::LightType::spot) {
-        out_face.view_proj =
-            lf::spot_view_proj(light.position, light.direction, out.projection.x, near, range);
-      }
-      out_face.info = {i, face, 0u, 0u};
-      plan_layer(layer, (visible & (1u << face)) != 0u,
-                 FaceKey{out_face.view_proj, geometry_version, resolution}, settings);
+      optional.push_back(&work);
     }
   }
-  // Layers no light owns this frame hold nothing useful any more.
-  for (std::uint32_t layer = next_layer; layer < layer_count; ++layer) {
-    layers_[layer].valid = false;
+  frame_.stats.forced =
+      static_cast<std::uint32_t>(used > settings.face_budget ? used - settings.face_budget : 0u);
+  std::stable_sort(optional.begin(), optional.end(), [&](const LightWork* a, const LightWork* b) {
+    const std::uint32_t wa = layers_[a->first].waited;
+    const std::uint32_t wb = layers_[b->first].waited;
+    return wa != wb ? wa > wb : a->priority > b->priority;
+  });
+  for (LightWork* work : optional) {
+    const auto faces = static_cast<std::uint32_t>(std::popcount(work->needed));
+    if (used + faces <= settings.face_budget) {
+      used += faces;
+    } else {
+      work->update = false;
+    }
   }
-  return frame_;
+}
+
+void AtlasPlanner::keep_light(const LightWork& work) {
+  LayerState& head = layers_[work.first];
+  ++head.waited;
+  frame_.stats.stalest = std::max(frame_.stats.stalest, head.waited);
+  frame_.stats.deferred += static_cast<std::uint32_t>(std::popcount(work.needed));
+  frame_.lights[work.light] = head.shown_light;
+  for (std::uint32_t face = 0; face < work.faces; ++face) {
+    const std::uint32_t layer = work.first + face;
+    const LayerState& state = layers_[layer];
+    ShadowFace& out_face = frame_.faces[layer];
+    out_face.view_proj = state.key.view_proj;
+    out_face.info = {work.light, face, state.valid && state.shown ? 1u : 0u, 0u};
+    frame_.epochs[layer] = state.epoch;
+    ++frame_.stats.total;
+    if ((work.visible & (1u << face)) != 0u) {
+      ++frame_.stats.cached;
+    } else {
+      ++frame_.stats.culled;
+    }
+  }
+}
+
+void AtlasPlanner::plan_light(const scene::Scene& scene, const LightWork& work,
+                              std::uint64_t geometry_version, const AtlasSettings& settings,
+                              const SceneMotion& motion) {
+  LayerState& head = layers_[work.first];
+  head.owner = scene.lights[work.light].name;
+  head.waited = 0;
+  head.shown_light = frame_.lights[work.light];
+  const bool cacheable =
+      settings.static_cache && settings.cache &&
+      !(work.light < settings.uncached_lights.size() && settings.uncached_lights[work.light]);
+  for (std::uint32_t face = 0; face < work.faces; ++face) {
+    const std::uint32_t layer = work.first + face;
+    plan_layer(layer, (work.visible & (1u << face)) != 0u,
+               FaceKey{frame_.faces[layer].view_proj, geometry_version, work.resolution}, settings,
+               cacheable, motion);
+  }
 }
 
 std::uint32_t AtlasPlanner::light_resolution(const scene::PointLight& light,
@@ -130,7 +252,8 @@ std::uint32_t AtlasPlanner::light_resolution(const scene::PointLight& light,
 
 // Static caching: a visible face is drawn only when its layer does not hold it already.
 void AtlasPlanner::plan_layer(std::uint32_t layer, bool visible, const FaceKey& key,
-                              const AtlasSettings& settings) {
+                              const AtlasSettings& settings, bool cacheable,
+                              const SceneMotion& motion) {
   ++frame_.stats.total;
   if (settings.gpu_decides) {
     plan_candidate(layer, visible, key, settings.cache);
@@ -138,7 +261,8 @@ void AtlasPlanner::plan_layer(std::uint32_t layer, bool visible, const FaceKey& 
   }
   LayerState& state = layers_[layer];
   ShadowFace& out_face = frame_.faces[layer];
-  const bool current = settings.cache && state.valid && state.key == key;
+  const bool holds = state.valid && state.key == key;
+  const bool current = settings.cache && holds && !state.dynamic_dirty;
   if (!visible) {
     // Not drawn: the layer keeps whatever it held, valid only if it still matches.
     ++frame_.stats.culled;
@@ -146,24 +270,53 @@ void AtlasPlanner::plan_layer(std::uint32_t layer, bool visible, const FaceKey& 
       state.valid = false;
       state.epoch = next_epoch_++;  // what it holds is no longer this face
     }
-    out_face.info.z = state.valid ? 1u : 0u;
+    state.shown = state.valid && !state.dynamic_dirty;
+    out_face.info.z = state.shown ? 1u : 0u;
     frame_.epochs[layer] = state.epoch;
+    state.wanted = key;
     return;
   }
   out_face.info.z = 1u;
+  state.shown = true;
   if (current) {
     ++frame_.stats.cached;
     frame_.epochs[layer] = state.epoch;
+    state.wanted = key;
     return;
   }
   ++frame_.stats.rendered;
+  if (holds && state.dynamic_dirty) ++frame_.stats.dynamic;
   frame_.stats.texels += std::uint64_t{key.resolution} * key.resolution;
+  const FaceUpdate update = choose_update(layer, key, cacheable, motion);
+  if (update != FaceUpdate::all) ++frame_.stats.over_cache;
   frame_.render_layers.push_back(layer);
+  frame_.updates.push_back(update);
   out_face.info.w = 1u;  // consumers that cache derived data redo this layer
   state.valid = true;
   state.key = key;
+  state.dynamic_dirty = false;
   state.epoch = next_epoch_++;
+  state.wanted = key;
   frame_.epochs[layer] = state.epoch;
+}
+
+// Only faces that dynamic meshes touch go through the cache; the cache is filled once
+// their key held still for a frame (a moving light would refill it every frame).
+FaceUpdate AtlasPlanner::choose_update(std::uint32_t layer, const FaceKey& key, bool cacheable,
+                                       const SceneMotion& motion) {
+  LayerState& state = layers_[layer];
+  if (!cacheable) return FaceUpdate::all;
+  const bool touched =
+      std::any_of(motion.dynamic.begin(), motion.dynamic.end(),
+                  [&](const auto& box) { return shadow_faces::box_may_touch(key.view_proj, box); });
+  if (!touched) return FaceUpdate::all;
+  if (state.cache_valid && state.cache_key == key) return FaceUpdate::over_cache;
+  if (state.wanted == key) {
+    state.cache_valid = true;
+    state.cache_key = key;
+    return FaceUpdate::fill_cache;
+  }
+  return FaceUpdate::all;
 }
 
 // The GPU keeps what each layer holds (its epoch) and draws a candidate only where a
@@ -171,10 +324,12 @@ void AtlasPlanner::plan_layer(std::uint32_t layer, bool visible, const FaceKey& 
 void AtlasPlanner::plan_candidate(std::uint32_t layer, bool visible, const FaceKey& key,
                                   bool cache) {
   LayerState& state = layers_[layer];
-  if (!(state.valid && state.key == key) || !cache) {
+  state.shown = true;
+  if (!(state.valid && state.key == key) || !cache || state.dynamic_dirty) {
     state.valid = true;
     state.key = key;
     state.epoch = next_epoch_++;
+    state.dynamic_dirty = false;
   }
   frame_.epochs[layer] = state.epoch;
   if (!visible) {
@@ -183,6 +338,7 @@ void AtlasPlanner::plan_candidate(std::uint32_t layer, bool visible, const FaceK
   }
   ++frame_.stats.candidates;
   frame_.render_layers.push_back(layer);
+  frame_.updates.push_back(FaceUpdate::all);
 }
 
 }  // namespace antumbra::passes

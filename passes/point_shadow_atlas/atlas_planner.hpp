@@ -2,10 +2,14 @@
 // Vulkan-free per-frame bookkeeping of the point-shadow atlas: which light owns which
 // layers (allocated in light order: 6 per point light, 1 per spot or directional light;
 // ShadowLight.params.z = the first), which faces the camera may need (culling), which layers still
-// hold valid depth from an earlier frame (static caching) and so which faces to draw. Also fills
-// the shadowData contents (shadow_data.hpp). The pass uploads and draws what it says.
+// hold valid depth from an earlier frame (static caching), which ones dynamic meshes made
+// stale, which updates fit this frame's budget and so which faces to draw, and how (over a
+// cache of their static depth or not). Also fills the shadowData contents (shadow_data.hpp).
+// The pass uploads and draws what it says (docs/technique.md, "Static and dynamic casters").
 
 #include <cstdint>
+#include <limits>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -35,7 +39,26 @@ struct AtlasSettings {
   float sun_max_distance = 40.0f;
   float camera_near = 0.1f;  // the scene camera's planes, for the sun's fit
   float camera_far = 200.0f;
+  // Faces that dynamic meshes touch keep their static depth in a cache and draw only the
+  // dynamic meshes over a copy of it (the hardware rasteriser's layered path).
+  bool static_cache = false;
+  std::vector<bool> uncached_lights;  // per scene light: never through the cache (tinted)
+  // Update budget: faces drawn per frame beyond those that must be (never drawn, or stale
+  // for `max_stale` frames). Lights that wait keep showing the shadow they were last drawn
+  // with; the longest waiting go first (round-robin), then the largest on screen.
+  std::uint32_t face_budget = std::numeric_limits<std::uint32_t>::max();
+  std::uint32_t max_stale = 4;
 };
+
+// Where dynamic meshes are (FrameResources::moved_bounds, dynamic_bounds).
+struct SceneMotion {
+  std::span<const scene::Aabb> moved;    // left and entered this frame
+  std::span<const scene::Aabb> dynamic;  // every dynamic mesh now
+};
+
+// How a face is drawn (hardware rasteriser): every mesh; the static cache copied in and
+// the dynamic meshes over it; or the static meshes into the cache first, then the same.
+enum class FaceUpdate : std::uint8_t { all, over_cache, fill_cache };
 
 struct AtlasStats {
   std::uint32_t total = 0;       // faces of shadowed lights (6 point, 1 spot, 1 sun)
@@ -44,6 +67,11 @@ struct AtlasStats {
   std::uint32_t cached = 0;      // needed and still valid from an earlier frame
   std::uint32_t candidates = 0;  // gpu_decides: visible faces handed to the GPU's decision
   std::uint64_t texels = 0;      // of the faces drawn (each light's face size squared)
+  std::uint32_t dynamic = 0;     // drawn because dynamic meshes moved through them
+  std::uint32_t over_cache = 0;  // drawn over their static cache (fill_cache included)
+  std::uint32_t deferred = 0;    // needed but left for a later frame (budget)
+  std::uint32_t forced = 0;      // drawn past the budget (never drawn, or too stale)
+  std::uint32_t stalest = 0;     // frames the oldest shadow shown is behind its light
 };
 
 // What one layer's contents were rendered for; a face is re-rendered when this changes.
@@ -60,6 +88,7 @@ struct AtlasFrame {
   std::vector<ShadowLight> lights;           // per scene light index (at most kMaxShadowLights)
   std::vector<ShadowFace> faces;             // per atlas layer
   std::vector<std::uint32_t> render_layers;  // layers to clear and draw, ascending
+  std::vector<FaceUpdate> updates;           // per render_layers entry
   // Per layer: which contents it should hold. A new epoch whenever the face's key
   // changes, it is drawn (CPU decision) or cached contents are not allowed; 0: none.
   std::vector<std::uint32_t> epochs;
@@ -76,7 +105,7 @@ class AtlasPlanner {
   // `camera_view_proj`: the scene camera for this frame's viewport (Vulkan clip space).
   const AtlasFrame& plan(const scene::Scene& scene, const glm::mat4& camera_view_proj,
                          std::uint64_t geometry_version, std::uint32_t frame_index,
-                         const AtlasSettings& settings);
+                         const AtlasSettings& settings, const SceneMotion& motion = {});
 
   [[nodiscard]] const AtlasFrame& last() const { return frame_; }
 
@@ -86,16 +115,53 @@ class AtlasPlanner {
     FaceKey key;
     std::uint32_t epoch = 0;
     std::uint32_t resolution = 0;  // a light's first layer: its last choice (hysteresis)
+    bool dynamic_dirty = false;    // dynamic meshes moved through it since it was drawn
+    bool shown = false;            // holds the face of its light's shown (last drawn) state
+    FaceKey wanted;                // last frame's key: a key that holds still is worth caching
+    bool cache_valid = false;      // the static cache holds the static meshes for cache_key
+    FaceKey cache_key;
+    // A light's first layer: what it was last drawn with (shown while it waits for the
+    // budget), whose it is, and for how many frames it has waited.
+    ShadowLight shown_light{};
+    std::string owner;
+    std::uint32_t waited = 0;
   };
+  // This frame's wish for one shadowed light, before the budget decides.
+  struct LightWork {
+    std::uint32_t light = 0;
+    std::uint32_t first = 0;
+    std::uint32_t faces = 0;
+    std::uint32_t visible = 0;  // bit per face
+    std::uint32_t needed = 0;   // visible faces whose layer does not hold them
+    bool must = false;          // never drawn, changed owner, too stale, or the sun
+    bool update = true;         // the budget's decision
+    float priority = 0.0f;      // projected radius (pixels)
+    std::uint32_t resolution = 0;
+  };
+  void begin_frame(const scene::Scene& scene, std::uint32_t frame_index,
+                   const AtlasSettings& settings);
+  // Fills frame_.lights/faces with this frame's wish for light `i`; false: no layers.
+  bool wish_light(const scene::Scene& scene, std::uint32_t i, std::uint32_t& next_layer,
+                  const glm::mat4& camera_view_proj, std::uint64_t geometry_version,
+                  const AtlasSettings& settings, LightWork& work);
+  void mark_dynamic(const SceneMotion& motion);
+  void apply_budget(const AtlasSettings& settings);
+  // Publishes a waiting light as it was last drawn.
+  void keep_light(const LightWork& work);
+  void plan_light(const scene::Scene& scene, const LightWork& work, std::uint64_t geometry_version,
+                  const AtlasSettings& settings, const SceneMotion& motion);
   // The light's face size this frame (ShadowLight.projection.y/z).
   std::uint32_t light_resolution(const scene::PointLight& light, std::uint32_t first_layer,
                                  const AtlasSettings& settings);
   // Decides whether one face's layer is drawn, kept (cached) or left (culled) this frame.
   void plan_layer(std::uint32_t layer, bool visible, const FaceKey& key,
-                  const AtlasSettings& settings);
+                  const AtlasSettings& settings, bool cacheable, const SceneMotion& motion);
   // The GPU decides (settings.gpu_decides): visible faces are candidates.
   void plan_candidate(std::uint32_t layer, bool visible, const FaceKey& key, bool cache);
+  [[nodiscard]] FaceUpdate choose_update(std::uint32_t layer, const FaceKey& key, bool cacheable,
+                                         const SceneMotion& motion);
   std::vector<LayerState> layers_;
+  std::vector<LightWork> work_;
   std::uint32_t next_epoch_ = 1;
   bool contents_known_ = false;
   AtlasFrame frame_;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <cstring>
 #include <initializer_list>
 
 #include "antumbra/gpu/commands.hpp"
@@ -77,12 +78,13 @@ void ComputeRasterizer::prepare(fgvk::PrepareContext& context, bool receivers,
 
 void ComputeRasterizer::upload_geometry(fgvk::ExecuteContext& context) {
   if (context.frame.geometry_version == geometry_version_) return;
-  const RasterGeometry geometry = build_raster_geometry(*context.frame.scene);
+  RasterGeometry geometry = build_raster_geometry(*context.frame.scene);
   const auto create = [&](const auto& data, const char* name) {
     using T = typename std::decay_t<decltype(data)>::value_type;
     const VkDeviceSize bytes = std::max<VkDeviceSize>(sizeof(T), data.size() * sizeof(T));
-    auto buffer = gpu::Buffer::create(context.gpu, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                                      gpu::MemoryUsage::gpu_only, context.pass.name + name);
+    auto buffer = gpu::Buffer::create(
+        context.gpu, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+        gpu::MemoryUsage::gpu_only, context.pass.name + name);
     // Init-time upload (waits for the GPU): only when the scene's geometry changes.
     if (!data.empty()) buffer.upload(context.gpu, data.data(), data.size() * sizeof(T));
     return buffer;
@@ -93,6 +95,40 @@ void ComputeRasterizer::upload_geometry(fgvk::ExecuteContext& context) {
   translucent_clusters_ = geometry.translucent_clusters;
   geometry_version_ = context.frame.geometry_version;
   chunk_faces_ = 0;  // the item capacity depends on the cluster count
+  geometry.indices = {};
+  layout_ = std::move(geometry);
+  dynamic_version_ = ~0ull;
+  dynamic_staging_.clear();  // sized for the old scene (freed once its frames end)  // the dynamic
+                             // clusters were built in their meshes' space
+}
+
+void ComputeRasterizer::place_dynamic(fgvk::ExecuteContext& context) {
+  if (layout_.dynamic.empty() || context.frame.dynamic_version == dynamic_version_) return;
+  dynamic_version_ = context.frame.dynamic_version;
+  const auto placed = place_dynamic_clusters(*context.frame.scene, layout_);
+  const VkDeviceSize bytes = placed.size() * sizeof(shared::RasterCluster);
+  if (dynamic_staging_.size() < context.frame.frames_in_flight) {
+    dynamic_staging_.resize(context.frame.frames_in_flight);
+  }
+  gpu::Buffer& staging = dynamic_staging_[context.frame.slot];
+  if (!staging) {
+    std::string name = context.pass.name;
+    name += ".dynamicClusters.";
+    name += std::to_string(context.frame.slot);
+    staging = gpu::Buffer::create(context.gpu, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                                  gpu::MemoryUsage::upload, name);
+  }
+  std::memcpy(staging.mapped(), placed.data(), bytes);
+  // Earlier frames' culling may still read the records.
+  gpu::buffer_barrier(context.cmd, clusters_, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                      VK_ACCESS_2_SHADER_STORAGE_READ_BIT, VK_PIPELINE_STAGE_2_COPY_BIT,
+                      VK_ACCESS_2_TRANSFER_WRITE_BIT);
+  const VkBufferCopy region{
+      0, VkDeviceSize{layout_.static_clusters} * sizeof(shared::RasterCluster), bytes};
+  vkCmdCopyBuffer(context.cmd, staging, clusters_, 1, &region);
+  gpu::buffer_barrier(context.cmd, clusters_, VK_PIPELINE_STAGE_2_COPY_BIT,
+                      VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                      VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
 }
 
 void ComputeRasterizer::ensure_scratch(fgvk::ExecuteContext& context, std::uint32_t faces,
@@ -145,6 +181,7 @@ void ComputeRasterizer::execute(fgvk::ExecuteContext& context, const AtlasFrame&
   stats_ = {};
   const std::vector<std::uint32_t>& layers = frame.render_layers;
   upload_geometry(context);
+  place_dynamic(context);
   const std::uint32_t size = frame.header.counts.z;
   ensure_scratch(context, static_cast<std::uint32_t>(layers.size()), size);
   stats_.clusters = cluster_count_;

@@ -56,6 +56,8 @@ class ComputeRasterizer {
     std::uint32_t count = 0;
   };
   void upload_geometry(fgvk::ExecuteContext& context);
+  // Moves the dynamic clusters' bounds where their meshes are this frame.
+  void place_dynamic(fgvk::ExecuteContext& context);
   void ensure_scratch(fgvk::ExecuteContext& context, std::uint32_t faces, std::uint32_t size);
   void write_records(fgvk::ExecuteContext& context, const AtlasFrame& frame,
                      const std::vector<bool>& tinted, const ComputeRasterSettings& settings);
@@ -86,7 +88,10 @@ class ComputeRasterizer {
   std::uint32_t cluster_count_ = 0;
   std::uint32_t translucent_clusters_ = 0;
   std::uint64_t geometry_version_ = ~0ull;
-  std::uint32_t chunk_faces_ = 0;  // faces the scratch holds, plus one cleared face
+  RasterGeometry layout_;  // without its index list: the dynamic clusters' own bounds
+  std::uint64_t dynamic_version_ = ~0ull;
+  std::vector<gpu::Buffer> dynamic_staging_;  // per frame-in-flight slot
+  std::uint32_t chunk_faces_ = 0;             // faces the scratch holds, plus one cleared face
   std::uint32_t scratch_size_ = 0;
   gpu::Buffer depth_;
   gpu::Buffer tint_;

@@ -189,6 +189,38 @@ void add_face_choice_params(fg::ParamTable<PointShadowAtlasParams>& table) {
            &PointShadowAtlasParams::min_resolution);
 }
 
+// How much is drawn per frame when much changes (dynamic meshes, moving lights).
+void add_update_params(fg::ParamTable<PointShadowAtlasParams>& table) {
+  table
+      .add({.name = "staticCache",
+            .type = fg::ParamType::boolean,
+            .default_value = true,
+            .description =
+                "With rasterizer \"hardware\" and the layered draw: a face that dynamic meshes "
+                "(the scene's \"dynamic\" objects) touch keeps its static meshes' depth in a "
+                "private cache and redraws only the dynamic meshes over a copy of it when they "
+                "move. Faces they do not touch are never redrawn for them."},
+           &PointShadowAtlasParams::static_cache)
+      .add({.name = "faceBudget",
+            .type = fg::ParamType::integer,
+            .default_value = 65536,
+            .min = 1.0,
+            .max = 1048576.0,
+            .description =
+                "Faces drawn per frame at most, besides those that must be: never drawn, or "
+                "maxStaleFrames behind. Lights that wait show the shadow they were last drawn "
+                "with; the longest waiting go first, then the largest on screen."},
+           &PointShadowAtlasParams::face_budget)
+      .add({.name = "maxStaleFrames",
+            .type = fg::ParamType::integer,
+            .default_value = 4,
+            .min = 0.0,
+            .max = 1000.0,
+            .description = "A light's shadow is never more than this many frames behind it: "
+                           "then it is drawn whatever the budget (0: never behind)."},
+           &PointShadowAtlasParams::max_stale);
+}
+
 }  // namespace
 
 const fg::ParamTable<PointShadowAtlasParams>& PointShadowAtlasPass::param_table() {
@@ -266,6 +298,7 @@ const fg::ParamTable<PointShadowAtlasParams>& PointShadowAtlasPass::param_table(
             &PointShadowAtlasParams::rasterizer,
             {ShadowRasterizer::hardware, ShadowRasterizer::compute});
     add_face_choice_params(table);
+    add_update_params(table);
     return table;
   }();
   return kTable;

@@ -1,4 +1,5 @@
-// The point-shadow-atlas pass's shader interface (shadow_atlas.vert, shadow_colour.frag),
+// The point-shadow-atlas pass's shader interface (shadow_atlas.vert, shadow_colour.frag,
+// shadow_restore.vert/.frag),
 // valid GLSL and C++: its binding numbers, written once for the shaders, the set layout
 // and the descriptor writes (docs/architecture.md, "One source for CPU and GPU"). It has
 // no push constants (a face's entry comes from the instance index).
@@ -13,6 +14,8 @@ ANTUMBRA_SHARED_BEGIN
 ANTUMBRA_BINDING(kAtlasFaces, 0)
 // Vertex and fragment stages: the scene's materials.
 ANTUMBRA_BINDING(kAtlasMaterials, 1)
+// Fragment stage of the restore (shadow_restore.frag): the static depth cache, all layers.
+ANTUMBRA_BINDING(kAtlasCache, 2)
 
 ANTUMBRA_SHARED_END
 

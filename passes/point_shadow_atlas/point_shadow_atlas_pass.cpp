@@ -71,6 +71,8 @@ PointShadowAtlasPass::PointShadowAtlasPass(const fg::PlanPass& pass)
   settings_.adaptive_resolution = params_.resolution == FaceResolution::screen;
   settings_.resolution.scale = params_.resolution_scale;
   settings_.resolution.minimum = params_.min_resolution;
+  settings_.face_budget = params_.face_budget;
+  settings_.max_stale = params_.max_stale;
 }
 
 void PointShadowAtlasPass::prepare(fgvk::PrepareContext& context) {
@@ -83,6 +85,7 @@ void PointShadowAtlasPass::prepare(fgvk::PrepareContext& context) {
   colour_ = colour_map_ && params_.translucent_colour;
   const bool compute = params_.rasterizer == ShadowRasterizer::compute;
   layered_ = !compute && params_.layered_draw && context.gpu.features().shader_output_layer;
+  static_cache_enabled_ = layered_ && params_.static_cache && params_.cache;
   // Receiver culling needs the decision to pick which layers stay untouched, which only
   // the resolve shader (an r32f atlas) can follow; copies into a depth atlas cannot.
   settings_.gpu_decides = compute && params_.receiver_culling &&
@@ -103,7 +106,8 @@ void PointShadowAtlasPass::prepare(fgvk::PrepareContext& context) {
                                  colour_map_,
                                  compute,
                                  settings_.gpu_decides,
-                                 settings_.adaptive_resolution};
+                                 settings_.adaptive_resolution,
+                                 static_cache_enabled_};
   key.update(shape, sizeof shape).update(flags, sizeof flags);
   depth_pipeline_ = {};
   colour_pipeline_ = {};
@@ -159,6 +163,17 @@ void PointShadowAtlasPass::prepare_hardware(fgvk::PrepareContext& context,
   if (colour_map_) depth.color_write_mask(0, 0);
   check_vertex_inputs(context.pass.name, depth_vert, depth.vertex_attributes());
   depth_pipeline_ = depth.build(context.gpu, context.pass.name + ".depth");
+  if (static_cache_enabled_) {
+    // The cache's rendering has no colour attachment: the same depth draw without one.
+    auto fill = base();
+    fill.color_formats({})
+        .shader(VK_SHADER_STAGE_VERTEX_BIT, depth_vert)
+        .depth(true, true, VK_COMPARE_OP_LESS)
+        .depth_bias(params_.depth_bias, params_.slope_bias);
+    static_cache_.prepare(context, atlas, colour_map_ ? colour->format : VK_FORMAT_UNDEFINED,
+                          shader_files_, key);
+    static_cache_.set_fill_pipeline(fill.build(context.gpu, context.pass.name + ".staticDepth"));
+  }
   if (colour_) {
     auto colour_vert = load_shader(context, "point_shadow_atlas/shadow_atlas.vert", shader_files_,
                                    colour_defines, &key);
@@ -209,6 +224,7 @@ void PointShadowAtlasPass::adopt(fgvk::Pass& previous) {
   translucent_bounds_ = old->translucent_bounds_;
   translucent_version_ = old->translucent_version_;
   compute_.adopt(old->compute_);  // what each layer holds, as the GPU tracks it
+  static_cache_.adopt(old->static_cache_);
 }
 
 void PointShadowAtlasPass::execute(fgvk::ExecuteContext& context) {
@@ -230,13 +246,20 @@ void PointShadowAtlasPass::execute(fgvk::ExecuteContext& context) {
   settings_.resolution.viewport_height = static_cast<float>(std::max(viewport.height, 1u));
   settings_.resolution.tan_half_fov = std::tan(glm::radians(0.5f * scene.camera.fov_y_degrees));
   settings_.resolution.camera = scene.camera.position;
+  find_tinted_lights(scene, context.frame.geometry_version);
+  // Tinted lights' faces also draw the colour map, which the cache does not hold.
+  settings_.uncached_lights = tinted_;
+  settings_.static_cache =
+      static_cache_enabled_ && context.frame.static_index_count < context.frame.index_count;
+  SceneMotion motion;
+  if (context.frame.moved_bounds != nullptr) motion.moved = *context.frame.moved_bounds;
+  if (context.frame.dynamic_bounds != nullptr) motion.dynamic = *context.frame.dynamic_bounds;
   const AtlasFrame& frame =
       planner_.plan(scene, scene.camera.view_projection(aspect), context.frame.geometry_version,
-                    static_cast<std::uint32_t>(context.frame.frame_index), settings_);
+                    static_cast<std::uint32_t>(context.frame.frame_index), settings_, motion);
 
   if (slots_.size() < context.frame.frames_in_flight) slots_.resize(context.frame.frames_in_flight);
   SlotBuffers& slot = slots_[context.frame.slot];
-  find_tinted_lights(scene, context.frame.geometry_version);
   upload(context, frame, slot);
 
   if (!frame.unshadowed.empty()) {
@@ -306,9 +329,19 @@ void PointShadowAtlasPass::upload(fgvk::ExecuteContext& context, const AtlasFram
                     1, &region);
   }
 
+  // Entries grouped by how they are drawn (draw_layered draws each group in one call).
+  draw_order_.clear();
+  update_counts_ = {};
+  for (const FaceUpdate kind : {FaceUpdate::all, FaceUpdate::fill_cache, FaceUpdate::over_cache}) {
+    for (std::size_t i = 0; i < frame.render_layers.size(); ++i) {
+      if (frame.updates[i] != kind) continue;
+      draw_order_.push_back(static_cast<std::uint32_t>(i));
+      ++update_counts_[static_cast<std::size_t>(kind)];
+    }
+  }
   auto* draws = reinterpret_cast<FaceDraw*>(slot.draws.mapped());
-  for (std::size_t i = 0; i < frame.render_layers.size(); ++i) {
-    const std::uint32_t layer = frame.render_layers[i];
+  for (std::size_t i = 0; i < draw_order_.size(); ++i) {
+    const std::uint32_t layer = frame.render_layers[draw_order_[i]];
     draws[i].view_proj = frame.faces[layer].view_proj;
     // info.z: the face's far plane (float bits), so the colour pass can store a pane's
     // distance as a fraction of it (shadow_colour.frag).
@@ -335,10 +368,24 @@ fgvk::PassMessage PointShadowAtlasPass::face_stats(
                      {"layered", layered_},
                      {"receiverCulling", settings_.gpu_decides},
                      {"faceSizes", face_sizes()},
+                     {"dynamic", s.dynamic},
+                     {"overStaticCache", s.over_cache},
+                     {"deferred", s.deferred},
+                     {"forced", s.forced},
+                     {"stalestFrames", s.stalest},
+                     {"staticCacheBytes", static_cache_.bytes()},
                      {"rasterizer", compute ? "compute" : "hardware"}};
   std::string text = "shadow faces: " + std::to_string(s.total) + " total, " +
                      std::to_string(s.culled) + " culled, " + std::to_string(s.rendered) +
                      " rendered, " + std::to_string(s.cached) + " cached";
+  if (s.dynamic > 0 || s.over_cache > 0) {
+    text += " (" + std::to_string(s.dynamic) + " for moved dynamic meshes, " +
+            std::to_string(s.over_cache) + " over the static cache)";
+  }
+  if (s.deferred > 0 || s.forced > 0) {
+    text += "; budget: " + std::to_string(s.deferred) + " waiting (at most " +
+            std::to_string(s.stalest) + " frames behind), " + std::to_string(s.forced) + " past it";
+  }
   if (settings_.gpu_decides) {
     // Drawn or not is the GPU's decision: its counts, of the frame they belong to.
     const FaceDecisionStats g = gpu.value_or(FaceDecisionStats{});
@@ -408,8 +455,9 @@ bool PointShadowAtlasPass::layer_tinted(const AtlasFrame& frame, std::uint32_t l
 }
 
 void PointShadowAtlasPass::draw_scene(fgvk::ExecuteContext& context, VkBuffer draws,
-                                      std::uint32_t first, std::uint32_t count) {
-  if (context.frame.index_count == 0 || count == 0) return;
+                                      std::uint32_t first, std::uint32_t count,
+                                      std::uint32_t first_index, std::uint32_t indices) {
+  if (indices == 0 || count == 0) return;
   const VkCommandBuffer cmd = context.cmd;
   const VkDeviceSize offset = 0;
   vkCmdBindVertexBuffers(cmd, 0, 1, &context.frame.vertices, &offset);
@@ -423,7 +471,7 @@ void PointShadowAtlasPass::draw_scene(fgvk::ExecuteContext& context, VkBuffer dr
         .storage_buffer(shared::kAtlasMaterials, context.frame.materials)
         .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_);
     // Instance = face entry (firstInstance offsets gl_InstanceIndex in the fallback).
-    vkCmdDrawIndexed(cmd, context.frame.index_count, count, 0, 0, first);
+    vkCmdDrawIndexed(cmd, indices, count, first_index, 0, first);
   }
 }
 
@@ -451,6 +499,7 @@ void PointShadowAtlasPass::draw_layered(fgvk::ExecuteContext& context, const Atl
     rendering.pColorAttachments = &colour_attachment;
   }
   const VkCommandBuffer cmd = context.cmd;
+  draw_over_cache(context, frame, draws);
   vkCmdBeginRendering(cmd, &rendering);
   set_viewport(cmd, atlas.extent);
   // One rect per run of consecutive layers.
@@ -466,8 +515,14 @@ void PointShadowAtlasPass::draw_layered(fgvk::ExecuteContext& context, const Atl
     }
     return rects;
   };
+  const std::uint32_t drawn_all = update_counts_[static_cast<std::size_t>(FaceUpdate::all)];
   if (!frame.clear_all) {
-    const auto rects = runs([](std::uint32_t) { return true; });
+    // Faces restored from the static cache are overwritten whole: no clear.
+    std::vector<bool> restored(settings_.layers, false);
+    for (std::size_t i = drawn_all; i < draw_order_.size(); ++i) {
+      restored[frame.render_layers[draw_order_[i]]] = true;
+    }
+    const auto rects = runs([&](std::uint32_t layer) { return !restored[layer]; });
     const VkClearAttachment clear{VK_IMAGE_ASPECT_DEPTH_BIT, 0, depth_clear};
     if (!rects.empty()) {
       vkCmdClearAttachments(cmd, 1, &clear, static_cast<std::uint32_t>(rects.size()), rects.data());
@@ -480,8 +535,33 @@ void PointShadowAtlasPass::draw_layered(fgvk::ExecuteContext& context, const Atl
       vkCmdClearAttachments(cmd, 1, &clear, static_cast<std::uint32_t>(rects.size()), rects.data());
     }
   }
-  draw_scene(context, draws, 0, static_cast<std::uint32_t>(frame.render_layers.size()));
+  draw_scene(context, draws, 0, drawn_all, 0, context.frame.index_count);
+  const auto cached = static_cast<std::uint32_t>(draw_order_.size()) - drawn_all;
+  if (cached > 0) {
+    // The static depth copied in, then only the dynamic meshes over it.
+    static_cache_.restore(context, draws, drawn_all, cached);
+    draw_scene(context, draws, drawn_all, cached, context.frame.static_index_count,
+               context.frame.index_count - context.frame.static_index_count);
+  }
   vkCmdEndRendering(cmd);
+}
+
+// Before the atlas's rendering: faces whose cache is new get the static meshes drawn into
+// it; then the cache becomes readable for the restore.
+void PointShadowAtlasPass::draw_over_cache(fgvk::ExecuteContext& context, const AtlasFrame& frame,
+                                           VkBuffer draws) {
+  const std::uint32_t drawn_all = update_counts_[static_cast<std::size_t>(FaceUpdate::all)];
+  const std::uint32_t fills = update_counts_[static_cast<std::size_t>(FaceUpdate::fill_cache)];
+  if (draw_order_.size() == drawn_all) return;
+  if (fills > 0) {
+    std::vector<std::uint32_t> layers;
+    layers.reserve(fills);
+    for (std::uint32_t i = drawn_all; i < drawn_all + fills; ++i) {
+      layers.push_back(frame.render_layers[draw_order_[i]]);
+    }
+    static_cache_.fill(context, draws, drawn_all, fills, layers, layout_);
+  }
+  static_cache_.make_readable(context.cmd);
 }
 
 void PointShadowAtlasPass::draw_per_face(fgvk::ExecuteContext& context, const AtlasFrame& frame,
@@ -493,8 +573,8 @@ void PointShadowAtlasPass::draw_per_face(fgvk::ExecuteContext& context, const At
   colour_clear.color = kWhite;
   // Every layer drawn is dirty, so each rendering clears its one layer.
   std::vector<std::int64_t> entry(settings_.layers, -1);
-  for (std::size_t i = 0; i < frame.render_layers.size(); ++i) {
-    entry[frame.render_layers[i]] = static_cast<std::int64_t>(i);
+  for (std::size_t i = 0; i < draw_order_.size(); ++i) {
+    entry[frame.render_layers[draw_order_[i]]] = static_cast<std::int64_t>(i);
   }
   for (std::uint32_t layer = 0; layer < settings_.layers; ++layer) {
     if (entry[layer] < 0 && !frame.clear_all) continue;
@@ -514,7 +594,10 @@ void PointShadowAtlasPass::draw_per_face(fgvk::ExecuteContext& context, const At
     }
     vkCmdBeginRendering(context.cmd, &rendering);
     set_viewport(context.cmd, atlas.extent);
-    if (entry[layer] >= 0) draw_scene(context, draws, static_cast<std::uint32_t>(entry[layer]), 1);
+    if (entry[layer] >= 0) {
+      draw_scene(context, draws, static_cast<std::uint32_t>(entry[layer]), 1, 0,
+                 context.frame.index_count);
+    }
     vkCmdEndRendering(context.cmd);
   }
 }

@@ -11,6 +11,7 @@
 // the light that are nearer the light than the first opaque caster; it cannot tell panes
 // behind it from panes in front of it, which is the usual one-layer approximation.
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -23,6 +24,7 @@
 #include "antumbra/scene/scene.hpp"
 #include "atlas_planner.hpp"
 #include "compute_raster.hpp"
+#include "static_depth_cache.hpp"
 
 namespace antumbra::passes {
 
@@ -45,6 +47,9 @@ struct PointShadowAtlasParams {
   FaceResolution resolution = FaceResolution::fixed;
   float resolution_scale = 1.0f;
   std::uint32_t min_resolution = 64;
+  bool static_cache = true;
+  std::uint32_t face_budget = 65536;
+  std::uint32_t max_stale = 4;
   ShadowRasterizer rasterizer = ShadowRasterizer::hardware;
 };
 
@@ -88,8 +93,11 @@ class PointShadowAtlasPass final : public fgvk::Pass {
   void draw_per_face(fgvk::ExecuteContext& context, const AtlasFrame& frame, VkBuffer draws);
   void prepare_hardware(fgvk::PrepareContext& context, const fgvk::BoundImage& atlas,
                         const fgvk::BoundImage* colour, gpu::Fnv1a64& key);
+  // Draw entries [first, first + count), indices [first_index, first_index + indices).
   void draw_scene(fgvk::ExecuteContext& context, VkBuffer draws, std::uint32_t first,
-                  std::uint32_t count);
+                  std::uint32_t count, std::uint32_t first_index, std::uint32_t indices);
+  // The layered path's faces that go through the static cache (fill, then restore + draw).
+  void draw_over_cache(fgvk::ExecuteContext& context, const AtlasFrame& frame, VkBuffer draws);
 
   AtlasSettings settings_;
   PointShadowAtlasParams params_;
@@ -105,6 +113,12 @@ class PointShadowAtlasPass final : public fgvk::Pass {
 
   AtlasPlanner planner_;
   ComputeRasterizer compute_;
+  StaticDepthCache static_cache_;
+  bool static_cache_enabled_ = false;  // hardware, layered, staticCache and cache on
+  // Draw entries in FaceDraw order: render_layers indices grouped by update (all, then
+  // fill_cache, then over_cache), and how many of each.
+  std::vector<std::uint32_t> draw_order_;
+  std::array<std::uint32_t, 3> update_counts_{};
   std::vector<SlotBuffers> slots_;
   gpu::DescriptorSetLayout set_layout_;
   gpu::PipelineLayout layout_;

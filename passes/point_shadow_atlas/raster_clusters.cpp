@@ -5,6 +5,7 @@
 #include <unordered_map>
 
 #include "antumbra/scene/clusters.hpp"
+#include "common/frame_data.hpp"
 
 namespace antumbra::passes {
 namespace {
@@ -65,11 +66,14 @@ RasterGeometry build_raster_geometry(const scene::Scene& scene) {
   out.indices.reserve(scene.triangle_count() * 3);
   std::uint32_t vertex_base = 0;
   std::vector<glm::vec3> world;
-  for (const auto& mesh : scene.meshes) {
+  for (const std::size_t m : merge_order(scene)) {
+    const scene::Mesh& mesh = scene.meshes[m];
     world.clear();
     world.reserve(mesh.vertices.size());
+    // Dynamic meshes: in their own space (place_dynamic_clusters moves the bounds).
+    const glm::mat4 transform = mesh.dynamic ? glm::mat4(1.0f) : mesh.transform;
     for (const auto& v : mesh.vertices) {
-      world.emplace_back(mesh.transform * glm::vec4(v.position, 1.0f));
+      world.emplace_back(transform * glm::vec4(v.position, 1.0f));
     }
     const auto material = static_cast<std::size_t>(std::max(mesh.material, 0));
     const bool translucent =
@@ -93,8 +97,31 @@ RasterGeometry build_raster_geometry(const scene::Scene& scene) {
       }
       out.clusters.push_back(gpu);
       if (translucent) ++out.translucent_clusters;
+      if (mesh.dynamic) {
+        out.dynamic.push_back({m, gpu.sphere});
+      } else {
+        out.static_clusters = static_cast<std::uint32_t>(out.clusters.size());
+      }
     }
     vertex_base += static_cast<std::uint32_t>(mesh.vertices.size());
+  }
+  return out;
+}
+
+std::vector<shared::RasterCluster> place_dynamic_clusters(const scene::Scene& scene,
+                                                          const RasterGeometry& geometry) {
+  std::vector<shared::RasterCluster> out(geometry.clusters.begin() + geometry.static_clusters,
+                                         geometry.clusters.end());
+  for (std::size_t i = 0; i < out.size() && i < geometry.dynamic.size(); ++i) {
+    const scene::Mesh& mesh = scene.meshes.at(geometry.dynamic[i].mesh);
+    const glm::vec4 local = geometry.dynamic[i].sphere;
+    const glm::mat3 m(mesh.transform);
+    const float scale = std::max({glm::length(m[0]), glm::length(m[1]), glm::length(m[2])});
+    out[i].sphere =
+        glm::vec4(glm::vec3(mesh.transform * glm::vec4(glm::vec3(local), 1.0f)), local.w * scale);
+    out[i].cone = glm::vec4(0.0f, 1.0f, 0.0f, 3.14159265f);
+    out[i].mesh_min = glm::vec4(mesh.bounds.min, 0.0f);
+    out[i].mesh_max = glm::vec4(mesh.bounds.max, 0.0f);
   }
   return out;
 }

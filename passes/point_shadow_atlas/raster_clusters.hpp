@@ -18,9 +18,23 @@ struct RasterGeometry {
   // (RasterCluster.info.x is the cluster's first entry).
   std::vector<std::uint32_t> indices;
   std::uint32_t translucent_clusters = 0;
+  // Clusters [static_clusters, size) belong to dynamic meshes (merge_order puts them
+  // last). They are split in the mesh's own space, so a move changes only their bounds.
+  std::uint32_t static_clusters = 0;
+  struct LocalCluster {
+    std::size_t mesh = 0;    // Scene::meshes index
+    glm::vec4 sphere{0.0f};  // in the mesh's space
+  };
+  std::vector<LocalCluster> dynamic;  // one per dynamic cluster, in order
 };
 
 RasterGeometry build_raster_geometry(const scene::Scene& scene);
+
+// The dynamic clusters' records where their meshes are now (clusters [static_clusters,
+// size)): bounding spheres moved with the mesh, cones that cull nothing (a turn or a
+// non-uniform scale would bend them), the mesh's current bounds.
+std::vector<shared::RasterCluster> place_dynamic_clusters(const scene::Scene& scene,
+                                                          const RasterGeometry& geometry);
 
 // True when every edge of the mesh (vertices welded by position) borders exactly two
 // triangles, in opposite directions: a closed, consistently wound surface, whose faces

@@ -33,9 +33,9 @@ gpu::Buffer host_buffer(gpu::Context& gpu, const void* data, std::size_t bytes,
 }  // namespace
 
 bool ShadowReferencePass::Key::operator==(const Key& other) const {
-  return geometry_version == other.geometry_version && extent.width == other.extent.width &&
-         extent.height == other.extent.height && view_proj == other.view_proj &&
-         lights == other.lights;
+  return geometry_version == other.geometry_version && dynamic_version == other.dynamic_version &&
+         extent.width == other.extent.width && extent.height == other.extent.height &&
+         view_proj == other.view_proj && lights == other.lights;
 }
 
 ShadowReferencePass::ShadowReferencePass(const fg::PlanPass& pass)
@@ -177,6 +177,7 @@ void ShadowReferencePass::prepare_compute_pipelines(fgvk::PrepareContext& contex
 ShadowReferencePass::Key ShadowReferencePass::make_key(const fgvk::ExecuteContext& context) const {
   Key key;
   key.geometry_version = context.frame.geometry_version;
+  key.dynamic_version = context.frame.dynamic_version;
   key.extent = context.bindings.required_image(port::kHdr).extent;
   const scene::Scene& scene = *context.frame.scene;
   const VkExtent2D viewport = context.frame.viewport;
@@ -196,7 +197,8 @@ ShadowReferencePass::Key ShadowReferencePass::make_key(const fgvk::ExecuteContex
 
 void ShadowReferencePass::rebuild(fgvk::ExecuteContext& context, const Key& key) {
   const scene::Scene& scene = *context.frame.scene;
-  if (merged_version_ != context.frame.geometry_version || positions_.empty()) {
+  if (merged_version_ != context.frame.geometry_version ||
+      merged_dynamic_ != context.frame.dynamic_version || positions_.empty()) {
     // The same merge GpuScene uploads, so indices address context.frame.vertices.
     const MergedGeometry merged = merge_scene_geometry(scene);
     positions_.clear();
@@ -209,6 +211,7 @@ void ShadowReferencePass::rebuild(fgvk::ExecuteContext& context, const Key& key)
     }
     indices_ = merged.indices;
     merged_version_ = context.frame.geometry_version;
+    merged_dynamic_ = context.frame.dynamic_version;
   }
   // lightsPerBatch is an upper bound: the faces of one batch (depth and tint layers) stay
   // within a quarter of the device's largest local heap, so a large faceSize renders in

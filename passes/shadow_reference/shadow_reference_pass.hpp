@@ -56,6 +56,7 @@ class ShadowReferencePass final : public fgvk::Pass {
   // Everything the accumulated result depends on besides the fixed parameters.
   struct Key {
     std::uint64_t geometry_version = 0;
+    std::uint64_t dynamic_version = 0;  // dynamic meshes moved
     VkExtent2D extent{};
     glm::mat4 view_proj{0.0f};
     std::vector<float> lights;
@@ -91,6 +92,7 @@ class ShadowReferencePass final : public fgvk::Pass {
   std::optional<Key> key_;  // what accum_ holds; empty: nothing valid yet
   reference::ReferencePlan plan_;
   std::uint64_t merged_version_ = 0;
+  std::uint64_t merged_dynamic_ = 0;
   std::vector<glm::vec3> positions_;
   std::vector<std::uint32_t> indices_;
   std::vector<std::uint32_t> vertex_materials_;

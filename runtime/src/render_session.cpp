@@ -10,6 +10,7 @@
 #include "antumbra/gpu/image_io.hpp"
 #include "antumbra/gpu/memory_heaps.hpp"
 #include "antumbra/gpu/pipeline_cache.hpp"
+#include "antumbra/scene/light_motion.hpp"
 #include "register_builtin_passes.hpp"
 
 namespace antumbra::runtime {
@@ -167,8 +168,10 @@ void RenderSession::render(int frames, TraceWriter* trace, const BeforeFrame& be
     gpu_->collect_garbage();
     observer_->gather_gpu();
     timer_->begin_frame(cmd, frames_->slot());
-    const auto frame =
-        gpu_scene_->update(frames_->slot(), *scene_, options_.viewport, frames_->frame_number());
+    // Dynamic objects with a motion are where the frame index puts them.
+    if (!scene_->dynamic_objects.empty()) scene::animate_objects(*scene_, frames_->frame_number());
+    const auto frame = gpu_scene_->update(cmd, frames_->slot(), *scene_, options_.viewport,
+                                          frames_->frame_number());
     executor_->record(cmd, frame, observer_.get(), &report_);
     frames_->end_frame();
     if (trace != nullptr) {

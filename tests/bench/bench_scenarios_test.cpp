@@ -128,11 +128,12 @@ TEST(BenchScenarios, MovingTableHasThreeTechniquesPerLightCountOnBothRasterisers
     }
   }
   EXPECT_EQ(named(moving, "moving/pcss-11/1080p/16l").kernel, 11);
-  // The other tables keep still lights in the atrium.
+  // The other tables keep still lights in the atrium (the dynamic table's has moving
+  // objects).
   for (const auto& s : builtin_scenarios(1.0)) {
     if (s.table == "moving") continue;
     EXPECT_EQ(s.moving, 0) << s.name;
-    EXPECT_EQ(s.scene, "atrium.json") << s.name;
+    EXPECT_EQ(s.scene, s.table == "dynamic" ? kDynamicScene : "atrium.json") << s.name;
   }
 }
 
@@ -225,6 +226,29 @@ TEST(BenchScenarios, PenumbraTableSweepsTheLightRadius) {
   EXPECT_FLOAT_EQ(scene.lights[1].size, 0.5f);
   set_light_size(scene, 0.0f);
   EXPECT_FLOAT_EQ(scene.lights[0].size, 0.25f) << "0 keeps the scene's radii";
+}
+
+}  // namespace antumbra::app
+
+namespace antumbra::app {
+
+// The dynamic table: the atrium with moving carts and a ball, each technique on the
+// hardware rasteriser with and without the static cache and on the compute one.
+TEST(BenchScenarios, DynamicTableMovesObjectsNotLights) {
+  const auto rows = select_scenarios(builtin_scenarios(1.0), {"dynamic/"});
+  ASSERT_EQ(rows.size(), 9u);
+  int nocache = 0;
+  for (const auto& s : rows) {
+    EXPECT_EQ(s.scene, kDynamicScene) << s.name;
+    EXPECT_EQ(s.moving, 0) << s.name;
+    EXPECT_TRUE(s.shadow_cache) << s.name;
+    for (const auto& o : s.overrides) {
+      if (o.param == "staticCache") ++nocache;
+    }
+  }
+  EXPECT_EQ(nocache, 3);
+  EXPECT_EQ(rows.front().name, "dynamic/hard/1080p/16l");
+  EXPECT_EQ(rows.back().name, "dynamic/ssss-11/1080p/16l/compute");
 }
 
 }  // namespace antumbra::app

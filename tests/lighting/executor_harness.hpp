@@ -76,7 +76,7 @@ class ExecutorTest : public render_testing::RenderTest {
     executor_->load(std::move(plan.value()));
     VkCommandBuffer cmd = frames_->begin_frame();
     const auto frame =
-        gpu_scene_->update(frames_->slot(), scene_, viewport, frames_->frame_number());
+        gpu_scene_->update(cmd, frames_->slot(), scene_, viewport, frames_->frame_number());
     executor_->record(cmd, frame);
     frames_->end_frame();
     frames_->wait_all();

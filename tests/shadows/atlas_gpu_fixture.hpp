@@ -20,6 +20,7 @@
 #include "antumbra/gpu/pipelines.hpp"
 #include "antumbra/gpu/resources.hpp"
 #include "antumbra/gpu/shader_compiler.hpp"
+#include "antumbra/scene/light_motion.hpp"
 #include "antumbra/scene/scene_file.hpp"
 #include "common/gpu_scene.hpp"
 #include "common/shadow_data.hpp"
@@ -104,8 +105,9 @@ class AtlasGpuTest : public gpu::testing::GpuTest {
 
   Counts frame() {
     VkCommandBuffer cmd = frames_->begin_frame();
+    scene::animate_objects(scene_, frames_->frame_number());
     const auto resources =
-        gpu_scene_->update(frames_->slot(), scene_, kViewport, frames_->frame_number());
+        gpu_scene_->update(cmd, frames_->slot(), scene_, kViewport, frames_->frame_number());
     executor_->record(cmd, resources, nullptr, &report_);
     frames_->end_frame();
     Counts c;
@@ -179,7 +181,8 @@ class AtlasGpuTest : public gpu::testing::GpuTest {
 constexpr std::uint32_t kLight = 5;
 constexpr float kLightHeight = 2.6f;
 
-float centre_linear_depth(const std::vector<float>& texels, const scene::PointLight& light) {
+[[maybe_unused]] float centre_linear_depth(const std::vector<float>& texels,
+                                           const scene::PointLight& light) {
   const float depth = texels[std::size_t{kFace / 2} * kFace + kFace / 2];
   return sf::linearise(depth, 0.05f, light.range);
 }

@@ -180,3 +180,20 @@ TEST(RasterClusters, MinimumResolutionMustBeAPowerOfTwo) {
     EXPECT_NE(text.find("/params/" + bad.begin().key()), std::string::npos) << text;
   }
 }
+
+// An update budget of 0 faces (or fewer) would never draw anything optional, and a
+// negative staleness has no meaning: each is refused where it is written.
+TEST(AtlasParams, BudgetsOfZeroOrLessAreRefusedWhereWritten) {
+  const auto good = compile_atlas_graph(
+      "hardware", "d32f", {{"faceBudget", 1}, {"maxStaleFrames", 0}, {"staticCache", false}});
+  EXPECT_TRUE(good.ok()) << good.diagnostics().to_text();
+  for (const nlohmann::json& bad :
+       {nlohmann::json{{"faceBudget", 0}}, nlohmann::json{{"faceBudget", -6}},
+        nlohmann::json{{"faceBudget", 2.5}}, nlohmann::json{{"maxStaleFrames", -1}},
+        nlohmann::json{{"staticCache", "yes"}}}) {
+    const auto plan = compile_atlas_graph("hardware", "d32f", bad);
+    ASSERT_FALSE(plan.ok()) << bad.dump();
+    const std::string text = plan.diagnostics().to_text();
+    EXPECT_NE(text.find("/params/" + bad.begin().key()), std::string::npos) << text;
+  }
+}

@@ -278,6 +278,21 @@ void parse_object(ParseContext& ctx, const Json& o, const std::string& p, std::s
   add_copies(ctx, *mesh, *placement, base);
 }
 
+// The name meshes of object `index` carry (parse_object's `base`), for "dynamic".
+std::string object_name(const Json& o, std::size_t index) {
+  if (!o.is_object()) return {};
+  if (const auto it = o.find("name"); it != o.end() && it->is_string() && !it->empty()) {
+    return it->get<std::string>();
+  }
+  std::string kind = "gltf";
+  if (const auto it = o.find("primitive"); it != o.end() && it->is_string()) {
+    kind = it->get<std::string>();
+  } else if (o.contains("scene")) {
+    kind = "scene";
+  }
+  return kind + "#" + std::to_string(index);
+}
+
 }  // namespace
 
 void add_copies(ParseContext& ctx, const Mesh& prototype, const Placement& placement,
@@ -295,7 +310,9 @@ void add_copies(ParseContext& ctx, const Mesh& prototype, const Placement& place
 void parse_objects(ParseContext& ctx, const Json& objects, const std::string& pointer) {
   if (!ctx.reader.check_type(objects, pointer, Json::value_t::array)) return;
   for (std::size_t i = 0; i < objects.size(); ++i) {
+    const std::size_t first = ctx.scene.meshes.size();
     parse_object(ctx, objects[i], base::pointer_append(pointer, i), i);
+    ctx.objects.push_back({object_name(objects[i], i), first, ctx.scene.meshes.size()});
   }
 }
 

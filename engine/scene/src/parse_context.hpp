@@ -23,6 +23,13 @@ struct ParseContext {
   // Lights of instanced scenes. They follow the file's own lights in Scene::lights, so
   // that /lights/i stays scene light i for the editor.
   std::vector<PointLight> instanced_lights{};
+  // The file's objects in order: their names and the meshes each added, for "dynamic".
+  struct ObjectRecord {
+    std::string name;
+    std::size_t first_mesh = 0;
+    std::size_t end_mesh = 0;
+  };
+  std::vector<ObjectRecord> objects{};
 };
 
 // Where an object's copies go: its transform and one world offset per "repeat" copy.
@@ -34,6 +41,9 @@ struct Placement {
 
 // Fills ctx.scene.meshes (and glTF materials) from the "objects" array.
 void parse_objects(ParseContext& ctx, const Json& objects, const std::string& pointer);
+
+// Marks the objects named by the "dynamic" array (dynamic_parser.cpp).
+void parse_dynamic(ParseContext& ctx, const Json& entries, const std::string& pointer);
 
 // One mesh per copy of `placement`, named `name` plus the copy's suffix.
 void add_copies(ParseContext& ctx, const Mesh& prototype, const Placement& placement,

@@ -253,9 +253,9 @@ base::Result<Scene> parse_scene_document(const base::JsonDocument& document,
   const Json& root = document.root();
   if (!r.check_type(root, "", Json::value_t::object)) return diagnostics;
   if (!check_version(r, root)) return diagnostics;
-  r.check_object(
-      root, "", "the scene",
-      {"version", "name", "description", "camera", "ambient", "materials", "objects", "lights"});
+  r.check_object(root, "", "the scene",
+                 {"version", "name", "description", "camera", "ambient", "materials", "objects",
+                  "lights", "dynamic"});
   if (auto v = r.get_string(root, "", "name", std::string())) scene.name = *v;
   (void)r.get_string(root, "", "description", std::string());
   if (auto v = r.get_vec3(root, "", "ambient", glm::vec3(0.0f), Range::non_negative())) {
@@ -266,6 +266,9 @@ base::Result<Scene> parse_scene_document(const base::JsonDocument& document,
   detail::ParseContext ctx{r, scene, std::filesystem::path(document.file()).parent_path(), chain};
   if (const auto it = root.find("objects"); it != root.end()) {
     detail::parse_objects(ctx, *it, "/objects");
+  }
+  if (const auto it = root.find("dynamic"); it != root.end()) {
+    detail::parse_dynamic(ctx, *it, "/dynamic");
   }
   parse_lights(r, root, scene, ctx.instanced_lights);
   std::move(ctx.instanced_lights.begin(), ctx.instanced_lights.end(),

@@ -132,6 +132,11 @@ inline constexpr const char* kGltfUnsupported =
 inline constexpr const char* kGltfWarning =
     "SC041";  // warning: tinygltf, or unused property mistyped
 inline constexpr const char* kGltfTooLarge = "SC042";  // past the import limits
+
+// Dynamic objects (SC050-SC059), reported at the "dynamic" entry.
+inline constexpr const char* kUnknownObject = "SC050";    // names no object of the file
+inline constexpr const char* kDynamicTwice = "SC051";     // warning: listed more than once
+inline constexpr const char* kDynamicNoMeshes = "SC052";  // warning: the object has no mesh
 }  // namespace scene
 
 // Shaders (SH000-SH099).

@@ -1,8 +1,9 @@
 #pragma once
-// Deterministic light motion for repeatable moving-light benchmarks: each moving light
-// circles its base position on a small horizontal path with a vertical bob, as a function
-// of the frame index alone (no clock, no randomness), so frame N looks the same in every
-// run and on every device.
+// Deterministic motion for repeatable benchmarks and tests, as a function of the frame
+// index alone (no clock, no randomness), so frame N looks the same in every run and on
+// every device: each moving light circles its base position on a small horizontal path
+// with a vertical bob; each dynamic object with a motion (scene key "dynamic") swings
+// and turns about where it was loaded.
 
 #include <cstdint>
 #include <vector>
@@ -30,5 +31,9 @@ glm::vec3 light_path_offset(std::size_t index, std::uint64_t frame, const LightM
 // which have no position, stay as they are).
 std::vector<PointLight> animate_lights(const std::vector<PointLight>& base, std::uint64_t frame,
                                        const LightMotion& motion);
+
+// Puts every dynamic object that has a motion where it is at `frame` (transforms and
+// bounds of its meshes, and the scene's bounds); true when some mesh moved.
+bool animate_objects(Scene& scene, std::uint64_t frame);
 
 }  // namespace antumbra::scene

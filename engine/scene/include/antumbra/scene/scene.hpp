@@ -96,6 +96,10 @@ struct Mesh {
   int material = 0;                    // index into Scene::materials
   glm::mat4 transform{1.0f};           // local -> world
   Aabb bounds;                         // WORLD-space bounds (transform applied)
+  // May move after loading (scene key "dynamic"): shadow faces keep a cache of the static
+  // meshes' depth and draw the dynamic ones over it (docs/technique.md, "Static and
+  // dynamic casters"). Uploads put dynamic meshes after the static ones.
+  bool dynamic = false;
 
   [[nodiscard]] std::size_t triangle_count() const { return indices.size() / 3; }
   // For transforming normals: inverse transpose of the upper 3x3 of `transform`.
@@ -106,6 +110,25 @@ struct Mesh {
   void update_bounds();
 };
 
+// A deterministic motion of a dynamic object, a function of the frame index alone (so
+// benchmarks and tests see the same frame N on every run): a back-and-forth translation
+// of `offset` (sin of the phase) and a turn of `spin` degrees about +Y through its pivot.
+struct ObjectMotion {
+  glm::vec3 offset{0.0f};      // metres, the largest displacement
+  float spin = 0.0f;           // degrees per period
+  std::uint32_t period = 240;  // frames per cycle (> 0)
+};
+
+// An object of the scene file marked dynamic: its meshes and their transforms at load.
+struct DynamicObject {
+  std::string name;
+  std::vector<std::size_t> meshes;  // into Scene::meshes
+  std::vector<glm::mat4> base;      // the meshes' transforms at load, for `motion`
+  glm::vec3 pivot{0.0f};            // centre of their bounds at load
+  bool moves = false;               // has a motion
+  ObjectMotion motion;
+};
+
 struct Scene {
   std::string name;
   Camera camera;
@@ -114,6 +137,7 @@ struct Scene {
   std::vector<Mesh> meshes;
   glm::vec3 ambient{0.0f};
   Aabb bounds;  // world-space bounds of all meshes (lights not included)
+  std::vector<DynamicObject> dynamic_objects;
   std::string source_file;
 
   [[nodiscard]] std::size_t triangle_count() const;

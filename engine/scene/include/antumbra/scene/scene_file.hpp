@@ -28,6 +28,11 @@
 //   lights    [{name (required, unique), type "point", position (required), color [1,1,1],
 //             intensity 1, range 10 (> 0), size 0.2 (>= 0), castsShadows true}]
 //             Scene::lights holds these first, in file order, then instanced scenes' lights.
+//   dynamic   [NAME | {object: NAME, motion: {offset [0,0,0], spin 0 (degrees per
+//             period), period 240 (frames, > 0)}}]: objects (by "name", or
+//             "<primitive>#<index>" when unnamed) that may move after loading; their
+//             meshes are uploaded apart and drawn over cached static shadow faces. A
+//             motion swings and turns them as a function of the frame index.
 
 #include <cstddef>
 #include <string>
