@@ -2,6 +2,7 @@
 #include "antumbra/fg/compiler.hpp"
 
 #include <algorithm>
+#include <optional>
 
 #include "antumbra/fg/compiler_phases.hpp"
 #include "antumbra/fg/vocabulary.hpp"
@@ -146,11 +147,43 @@ Plan assemble(const GraphDesc& graph, const std::vector<ResolvedPass>& passes,
   return plan;
 }
 
+// Resolves "auto" parameters (PassDesc::resolve) on a copy of the graph; the notes say
+// what was chosen. Null when no pass asks, so most graphs are not copied.
+std::optional<GraphDesc> resolve_params(const GraphDesc& graph, const Registry& registry,
+                                        const CompileOptions& options, Diagnostics& diags) {
+  const auto resolves = [&](const PassInstanceDesc& pass) {
+    const PassDesc* desc = registry.find(pass.type);
+    return desc != nullptr && desc->resolve != nullptr;
+  };
+  if (std::none_of(graph.passes.begin(), graph.passes.end(), resolves)) return std::nullopt;
+  GraphDesc resolved = graph;
+  const DeviceTraits* device = options.device ? &*options.device : nullptr;
+  for (auto& pass : resolved.passes) {
+    if (!resolves(pass)) continue;
+    for (std::string& line : registry.find(pass.type)->resolve(pass, resolved, device)) {
+      diags.add(
+          graph.document.make(codes::kParamChosen, Severity::note, std::move(line), pass.pointer));
+    }
+  }
+  return resolved;
+}
+
+Result<Plan> compile_resolved(const GraphDesc& graph, const Registry& registry,
+                              const CompileOptions& options, Diagnostics diags);
+
 }  // namespace
 
 Result<Plan> compile(const GraphDesc& graph, const Registry& registry,
                      const CompileOptions& options) {
   Diagnostics diags;
+  const std::optional<GraphDesc> resolved = resolve_params(graph, registry, options, diags);
+  return compile_resolved(resolved ? *resolved : graph, registry, options, std::move(diags));
+}
+
+namespace {
+
+Result<Plan> compile_resolved(const GraphDesc& graph, const Registry& registry,
+                              const CompileOptions& options, Diagnostics diags) {
   std::vector<ResolvedPass> passes = resolve_passes(graph, registry, diags);
   bind_ports(graph, passes, diags);
   const int output = check_output(graph, passes, diags);
@@ -195,6 +228,8 @@ Result<Plan> compile(const GraphDesc& graph, const Registry& registry,
   if (diags.has_errors()) return diags;
   return Result<Plan>(std::move(plan), std::move(diags));
 }
+
+}  // namespace
 
 Result<Plan> compile_document(Result<JsonDocument> doc, const Registry& registry,
                               const CompileOptions& options) {

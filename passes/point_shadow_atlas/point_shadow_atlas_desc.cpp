@@ -5,6 +5,7 @@
 #include "common/ports.hpp"
 #include "common/shadow_data.hpp"
 #include "point_shadow_atlas_pass.hpp"
+#include "rasterizer_choice.hpp"
 
 namespace antumbra::passes {
 namespace {
@@ -143,6 +144,7 @@ fg::PassDesc PointShadowAtlasPass::describe() {
   desc.params = param_table().descs();
   desc.check = &check;
   desc.port_use = &port_use;
+  desc.resolve = &resolve_rasterizer;
   return desc;
 }
 
@@ -289,14 +291,18 @@ const fg::ParamTable<PointShadowAtlasParams>& PointShadowAtlasPass::param_table(
         .choice(
             {.name = "rasterizer",
              .type = fg::ParamType::enumeration,
-             .default_value = "hardware",
-             .choices = {"hardware", "compute"},
-             .description = "Who draws the faces: \"hardware\" renders them (vertex shader, depth "
-                            "attachment); \"compute\" culls scene clusters per face and rasterises "
-                            "them in compute shaders (atomic min into a buffer copied into the "
-                            "atlas), for GPUs with few raster units (docs/technique.md)."},
+             .default_value = "auto",
+             .choices = {"auto", "hardware", "compute"},
+             .description =
+                 "Who draws the faces: \"hardware\" renders them (vertex shader, depth "
+                 "attachment); \"compute\" culls scene clusters per face and rasterises them in "
+                 "compute shaders (atomic min into a buffer copied into the atlas), for GPUs "
+                 "with few raster units; \"auto\" picks per device from measurements when the "
+                 "graph compiles (compute on NVIDIA Hopper GPUs, hardware elsewhere; an r32f "
+                 "atlas is always compute, d16 hardware) and says why in note FG076 "
+                 "(docs/technique.md)."},
             &PointShadowAtlasParams::rasterizer,
-            {ShadowRasterizer::hardware, ShadowRasterizer::compute});
+            {ShadowRasterizer::automatic, ShadowRasterizer::hardware, ShadowRasterizer::compute});
     add_face_choice_params(table);
     add_update_params(table);
     return table;

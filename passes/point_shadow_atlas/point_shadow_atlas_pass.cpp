@@ -83,6 +83,12 @@ void PointShadowAtlasPass::prepare(fgvk::PrepareContext& context) {
   settings_.face_size = atlas.extent.width;
   colour_map_ = colour != nullptr;
   colour_ = colour_map_ && params_.translucent_colour;
+  if (params_.rasterizer == ShadowRasterizer::automatic) {
+    // Plans from fg::compile never hold "auto" (PassDesc::resolve); as it would have been
+    // resolved for no device.
+    params_.rasterizer = atlas.format == VK_FORMAT_R32_SFLOAT ? ShadowRasterizer::compute
+                                                              : ShadowRasterizer::hardware;
+  }
   const bool compute = params_.rasterizer == ShadowRasterizer::compute;
   layered_ = !compute && params_.layered_draw && context.gpu.features().shader_output_layer;
   static_cache_enabled_ = layered_ && params_.static_cache && params_.cache;

@@ -30,7 +30,8 @@ namespace antumbra::passes {
 
 // Who draws the faces: fixed-function rasterisation (vertex shader + depth attachment) or
 // the compute rasteriser (compute_raster.hpp), which suits GPUs whose raster units are few.
-enum class ShadowRasterizer { hardware, compute };
+// "auto" is replaced when the graph compiles (rasterizer_choice.hpp).
+enum class ShadowRasterizer { automatic, hardware, compute };
 // Face size: the atlas's for every light, or per light from its size on screen.
 enum class FaceResolution { fixed, screen };
 
@@ -50,7 +51,7 @@ struct PointShadowAtlasParams {
   bool static_cache = true;
   std::uint32_t face_budget = 65536;
   std::uint32_t max_stale = 4;
-  ShadowRasterizer rasterizer = ShadowRasterizer::hardware;
+  ShadowRasterizer rasterizer = ShadowRasterizer::automatic;
 };
 
 class PointShadowAtlasPass final : public fgvk::Pass {

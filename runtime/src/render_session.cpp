@@ -81,6 +81,10 @@ base::Diagnostics RenderSession::load_graph(const fg::GraphDesc& graph) {
   fg::CompileOptions compile_options;
   compile_options.viewport = {options_.viewport.width, options_.viewport.height};
   compile_options.footprint = executor_->footprint_fn();
+  // "auto" parameters choose for this device (the shadow rasteriser).
+  compile_options.device = fg::DeviceTraits{
+      gpu_->device_name(), gpu_->properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU,
+      gpu_->properties().vendorID};
   const auto realise_failed = [&](const std::string& why) {
     base::Diagnostics out;
     out.add({codes::graph::kRealiseFailed, base::Severity::error, why, graph.document.file(), "", 0,

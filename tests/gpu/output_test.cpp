@@ -161,3 +161,29 @@ TEST_F(OutputTest, HdrIsFiniteAndToneMapsToTheLdrOutput) {
   // 8-bit quantisation (0.5/255) plus lavapipe's pow approximation.
   EXPECT_LE(worst * 255.0f, 2.0f) << "CPU tone mapping of the HDR output differs from ldr";
 }
+
+// rasterizer "auto" (the default) picks for the session's device when the graph compiles:
+// lavapipe, a CPU device, draws faces in hardware, and the note says so.
+TEST_F(OutputTest, AutoRasterizerPicksTheHardwareOneOnACpuDeviceAndSaysWhy) {
+  runtime::RenderSession* session = open_session(kSmall);
+  ASSERT_NE(session, nullptr);
+  // The shipped soft-shadow graph: a d32f atlas that either rasteriser can draw.
+  const auto diagnostics =
+      session->load_graph(load_graph_file(source_dir() / "data/graphs/layered-ssss.json"));
+  ASSERT_FALSE(diagnostics.has_errors()) << describe(diagnostics);
+  const base::Diagnostic* note = diagnostics.find("FG076");
+  ASSERT_NE(note, nullptr) << describe(diagnostics);
+  EXPECT_EQ(note->severity, base::Severity::note);
+  const bool cpu = session->gpu().properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+  if (cpu) {
+    EXPECT_NE(note->message.find("draws with \"hardware\""), std::string::npos) << note->message;
+    EXPECT_NE(note->message.find("a CPU device"), std::string::npos) << note->message;
+  }
+  for (const auto& pass : session->executor().plan().passes) {
+    if (pass.type != "point-shadow-atlas") continue;
+    EXPECT_NE(pass.params.value("rasterizer", std::string("auto")), "auto") << "resolved";
+  }
+  session->set_scene(default_scene());
+  session->render(2, nullptr);
+  expect_no_validation_errors(*session);
+}

@@ -6,6 +6,7 @@
 #include <array>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -15,6 +16,7 @@
 #include "antumbra/scene/scene_file.hpp"
 #include "common/frame_data.hpp"
 #include "point_shadow_atlas/raster_clusters.hpp"
+#include "point_shadow_atlas/rasterizer_choice.hpp"
 #include "register_builtin_passes.hpp"
 
 using namespace antumbra;
@@ -196,4 +198,59 @@ TEST(AtlasParams, BudgetsOfZeroOrLessAreRefusedWhereWritten) {
     const std::string text = plan.diagnostics().to_text();
     EXPECT_NE(text.find("/params/" + bad.begin().key()), std::string::npos) << text;
   }
+}
+
+// rasterizer "auto": the device's pick where the atlas allows both, the atlas's format
+// where it allows one, and a note that says which and why.
+TEST(AtlasParams, AutoRasterizerChoosesByDeviceAndFormat) {
+  EXPECT_FALSE(
+      passes::pick_rasterizer({"llvmpipe (LLVM 15.0.6, 256 bits)", true, 0x10005}).compute);
+  EXPECT_TRUE(passes::pick_rasterizer({"NVIDIA H200", false, 0x10DE}).compute);
+  EXPECT_TRUE(passes::pick_rasterizer({"NVIDIA H100 80GB HBM3", false, 0x10DE}).compute);
+  EXPECT_FALSE(passes::pick_rasterizer({"NVIDIA GeForce RTX 4090", false, 0x10DE}).compute);
+  EXPECT_FALSE(passes::pick_rasterizer({"H200 lookalike", false, 0x1002}).compute);
+
+  const auto registry = passes::builtin_pass_registry();
+  const auto compile_for = [&](const std::string& format, std::optional<fg::DeviceTraits> device,
+                               const nlohmann::json& params = nlohmann::json::object()) {
+    std::ifstream in(source_dir() / "tests/data/shadows/atlas.json");
+    auto json = nlohmann::json::parse(in);
+    json["resources"]["atlas"]["format"] = format;
+    for (auto& p : json["passes"]) {
+      if (p["name"] == "shadows") p["params"].update(params);
+    }
+    fg::CompileOptions options;
+    options.viewport = {160, 90};
+    options.device = std::move(device);
+    return fg::compile_text(json.dump(2), "auto.json", registry.reflection(), options);
+  };
+  const auto access = [](const fg::Plan& plan) {
+    return binding(plan, "shadows", "atlas")->access;
+  };
+  const fg::DeviceTraits h200{"NVIDIA H200", false, 0x10DE};
+  struct Case {
+    const char* format;
+    std::optional<fg::DeviceTraits> device;
+    fg::Access atlas;
+    const char* says;
+  };
+  for (const Case& c : {
+           Case{"d32f", std::nullopt, fg::Access::depth_attachment, "no device"},
+           Case{"d32f", h200, fg::Access::transfer_dst, "NVIDIA H200 is an NVIDIA Hopper"},
+           Case{"r32f", std::nullopt, fg::Access::storage_read_write, "only the compute"},
+           Case{"d16", h200, fg::Access::depth_attachment, "only the hardware"},
+       }) {
+    const auto plan = compile_for(c.format, c.device);
+    ASSERT_TRUE(plan.ok()) << c.format << "\n" << plan.diagnostics().to_text();
+    EXPECT_EQ(access(plan.value()), c.atlas) << c.format;
+    const base::Diagnostic* note = plan.diagnostics().find("FG076");
+    ASSERT_NE(note, nullptr);
+    EXPECT_EQ(note->pointer, "/passes/1") << note->pointer;
+    EXPECT_NE(note->message.find(c.says), std::string::npos) << note->message;
+  }
+  // A value written out is kept, whatever the device.
+  const auto pinned = compile_for("d32f", h200, {{"rasterizer", "hardware"}});
+  ASSERT_TRUE(pinned.ok());
+  EXPECT_EQ(access(pinned.value()), fg::Access::depth_attachment);
+  EXPECT_EQ(pinned.diagnostics().find("FG076"), nullptr);
 }

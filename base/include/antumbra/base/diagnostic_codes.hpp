@@ -69,6 +69,7 @@ inline constexpr const char* kOutputNotImage = "FG072";
 inline constexpr const char* kOutputNotProduced = "FG073";  // no executed pass writes it
 inline constexpr const char* kPassCulled = "FG074";         // note: outputs reach nothing
 inline constexpr const char* kPassDisabled = "FG075";       // note: "enabled": false
+inline constexpr const char* kParamChosen = "FG076";        // note: an "auto" value chosen
 
 // Pass-specific checks over the whole plan (PassDesc::check).
 inline constexpr const char* kLayerCapExceedsStorage = "FG090";  // cap k > layers storage holds

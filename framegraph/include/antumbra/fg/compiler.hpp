@@ -3,6 +3,7 @@
 // compiler_phases.hpp so tests can drive each one alone.
 
 #include <functional>
+#include <optional>
 #include <string>
 
 #include "antumbra/fg/graph_desc.hpp"
@@ -22,6 +23,8 @@ Footprint default_footprint(const PlanResource& resource);
 struct CompileOptions {
   Extent2D viewport{1280, 720};
   FootprintFn footprint = default_footprint;
+  // The device the plan is for; none: "auto" parameters choose by the graph alone.
+  std::optional<DeviceTraits> device;
 };
 
 // Runs every phase; stops at the first phase that reports errors. Warnings and

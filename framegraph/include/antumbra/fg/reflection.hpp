@@ -130,6 +130,22 @@ struct ParamDesc {
 struct GraphDesc;
 struct Plan;
 struct PlanPass;
+struct PassInstanceDesc;
+
+// What the compiler knows of the device it compiles for (RenderSession fills it; validate
+// and plan compile for no device). Vulkan-free: what a pass may choose by.
+struct DeviceTraits {
+  std::string name;             // e.g. "NVIDIA H200", "llvmpipe (LLVM 15.0.6, 256 bits)"
+  bool cpu = false;             // a CPU implementation (lavapipe)
+  std::uint32_t vendor_id = 0;  // PCI vendor (0x10DE NVIDIA)
+};
+
+// Replaces parameters whose value is chosen for the device or the graph around the pass
+// (an "auto" value) before anything else is compiled, so that the barriers follow the
+// choice. `device` is null when compiling for no device. Returns one line per choice made,
+// saying what and why (reported as notes, FG076).
+using ParamResolveFn = std::vector<std::string> (*)(PassInstanceDesc& pass, const GraphDesc& graph,
+                                                    const DeviceTraits* device);
 
 // A check that spans passes and so cannot be expressed by one port or parameter (for
 // example: a layer cap larger than the layer storage downstream can hold). Runs on
@@ -157,6 +173,7 @@ struct PassDesc {
   bool side_effects = false;  // never culled (e.g. writes to the host)
   PassCheck check = nullptr;
   PortUseFn port_use = nullptr;
+  ParamResolveFn resolve = nullptr;
 
   // The port's access and stage under parameter `values` and the bound resource's format
   // (port_use, else as declared).

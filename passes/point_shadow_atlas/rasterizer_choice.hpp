@@ -1,0 +1,32 @@
+#pragma once
+// point-shadow-atlas's `rasterizer: "auto"` (the default), Vulkan-free: which rasteriser
+// draws the faces on a given device, from what we measured (docs/technique.md, "Which
+// rasteriser"). The choice is made when the graph compiles (PassDesc::resolve), since the
+// two write the atlas differently (depth attachment, storage image or copies) and the
+// graph's barriers follow; RenderSession compiles for its device and the note (FG076)
+// says why. Compiled for no device (validate, plan), "auto" follows the atlas's format.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "antumbra/fg/graph_desc.hpp"
+#include "antumbra/fg/reflection.hpp"
+
+namespace antumbra::passes {
+
+struct RasterizerPick {
+  bool compute = false;
+  std::string reason;  // what we measured on such devices, or that we did not
+};
+
+// The rasteriser a device draws faces fastest with, for an atlas that allows both (d32f).
+RasterizerPick pick_rasterizer(const fg::DeviceTraits& device);
+
+// PassDesc::resolve: replaces "auto" (or an absent "rasterizer") with the device's pick,
+// constrained by the atlas's format (d16: hardware; r32f: compute; d32f without a device:
+// hardware). Returns the line that says what and why.
+std::vector<std::string> resolve_rasterizer(fg::PassInstanceDesc& pass, const fg::GraphDesc& graph,
+                                            const fg::DeviceTraits* device);
+
+}  // namespace antumbra::passes
