@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 namespace antumbra::app {
 namespace {
@@ -64,6 +65,28 @@ Scenario make(const std::string& table, const Technique& t, int kernel, unsigned
 const Technique& technique(const std::string& name) {
   const auto& all = techniques();
   return *std::find_if(all.begin(), all.end(), [&](const Technique& t) { return name == t.name; });
+}
+
+// Dynamic objects: the atrium's lights stand, carts and a ball move every frame; the
+// hardware rasteriser with and without the static cache, and the compute one.
+void add_dynamic_table(std::vector<Scenario>& out, double scale) {
+  const std::pair<const char*, int> kTechniques[] = {{"hard", 0}, {"pcss", 11}, {"ssss", 11}};
+  for (const auto& [name, kernel] : kTechniques) {
+    for (const std::string variant : {"hardware", "nocache", "compute"}) {
+      Scenario s = make("dynamic", technique(name), kernel, 1080, 16, scale);
+      s.scene = kDynamicScene;
+      if (variant == "nocache") {
+        s.name += "/nocache";
+        s.overrides.push_back({"point-shadow-atlas", "staticCache", false});
+      } else if (variant == "compute") {
+        s.rasterizer = "compute";
+        s.name += "/compute";
+        s.overrides.push_back({"point-shadow-atlas", "rasterizer", s.rasterizer});
+        s.overrides.push_back({"tonemap", "stage", "compute"});
+      }
+      out.push_back(std::move(s));
+    }
+  }
 }
 
 }  // namespace
@@ -129,25 +152,7 @@ std::vector<Scenario> builtin_scenarios(double scale) {
       }
     }
   }
-  // Dynamic objects: the atrium's lights stand, carts and a ball move every frame; the
-  // hardware rasteriser with and without the static cache, and the compute one.
-  for (const Variant& v : kMovingVariants) {
-    for (const char* variant : {"hardware", "hardware-nocache", "compute"}) {
-      Scenario s = make("dynamic", technique(v.technique), v.kernel, 1080, 16, scale);
-      s.scene = kDynamicScene;
-      const std::string name = variant;
-      if (name == "hardware-nocache") {
-        s.name += "/nocache";
-        s.overrides.push_back({"point-shadow-atlas", "staticCache", false});
-      } else if (name == "compute") {
-        s.rasterizer = "compute";
-        s.name += "/compute";
-        s.overrides.push_back({"point-shadow-atlas", "rasterizer", s.rasterizer});
-        s.overrides.push_back({"tonemap", "stage", "compute"});
-      }
-      out.push_back(std::move(s));
-    }
-  }
+  add_dynamic_table(out, scale);
   // Penumbra size: PCSS and layered SSSS (blocker search, min filter) as the lights grow
   // from 5 cm to 1 m, shadows
   // cached so that the rows time the soft-shadow stage, not the atlas.

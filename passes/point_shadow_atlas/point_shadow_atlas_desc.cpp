@@ -150,6 +150,25 @@ fg::PassDesc PointShadowAtlasPass::describe() {
 
 namespace {
 
+// Who draws the faces ("auto": resolved when the graph compiles, rasterizer_choice.hpp).
+void add_rasterizer_param(fg::ParamTable<PointShadowAtlasParams>& table) {
+  table.choice(
+      {.name = "rasterizer",
+       .type = fg::ParamType::enumeration,
+       .default_value = "auto",
+       .choices = {"auto", "hardware", "compute"},
+       .description =
+           "Who draws the faces: \"hardware\" renders them (vertex shader, depth "
+           "attachment); \"compute\" culls scene clusters per face and rasterises them in "
+           "compute shaders (atomic min into a buffer copied into the atlas), for GPUs "
+           "with few raster units; \"auto\" picks per device from measurements when the "
+           "graph compiles (compute on NVIDIA Hopper GPUs, hardware elsewhere; an r32f "
+           "atlas is always compute, d16 hardware) and says why in note FG076 "
+           "(docs/technique.md)."},
+      &PointShadowAtlasParams::rasterizer,
+      {ShadowRasterizer::automatic, ShadowRasterizer::hardware, ShadowRasterizer::compute});
+}
+
 // Which faces are drawn and at what size (receiver culling, per-light resolution).
 void add_face_choice_params(fg::ParamTable<PointShadowAtlasParams>& table) {
   table
@@ -286,23 +305,8 @@ const fg::ParamTable<PointShadowAtlasParams>& PointShadowAtlasPass::param_table(
              .default_value = true,
              .description = "One instanced draw writing gl_Layer where the device supports it; off "
                             "forces the fallback of one draw per face into a single-layer view."},
-            &PointShadowAtlasParams::layered_draw)
-
-        .choice(
-            {.name = "rasterizer",
-             .type = fg::ParamType::enumeration,
-             .default_value = "auto",
-             .choices = {"auto", "hardware", "compute"},
-             .description =
-                 "Who draws the faces: \"hardware\" renders them (vertex shader, depth "
-                 "attachment); \"compute\" culls scene clusters per face and rasterises them in "
-                 "compute shaders (atomic min into a buffer copied into the atlas), for GPUs "
-                 "with few raster units; \"auto\" picks per device from measurements when the "
-                 "graph compiles (compute on NVIDIA Hopper GPUs, hardware elsewhere; an r32f "
-                 "atlas is always compute, d16 hardware) and says why in note FG076 "
-                 "(docs/technique.md)."},
-            &PointShadowAtlasParams::rasterizer,
-            {ShadowRasterizer::automatic, ShadowRasterizer::hardware, ShadowRasterizer::compute});
+            &PointShadowAtlasParams::layered_draw);
+    add_rasterizer_param(table);
     add_face_choice_params(table);
     add_update_params(table);
     return table;
