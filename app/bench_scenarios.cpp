@@ -70,8 +70,8 @@ const Technique& technique(const std::string& name) {
 // Dynamic objects: the atrium's lights stand, carts and a ball move every frame; the
 // hardware rasteriser with and without the static cache, and the compute one.
 void add_dynamic_table(std::vector<Scenario>& out, double scale) {
-  const std::pair<const char*, int> kTechniques[] = {{"hard", 0}, {"pcss", 11}, {"ssss", 11}};
-  for (const auto& [name, kernel] : kTechniques) {
+  const std::pair<const char*, int> rows[] = {{"hard", 0}, {"pcss", 11}, {"ssss", 11}};
+  for (const auto& [name, kernel] : rows) {
     for (const std::string variant : {"hardware", "nocache", "compute"}) {
       Scenario s = make("dynamic", technique(name), kernel, 1080, 16, scale);
       s.scene = kDynamicScene;
