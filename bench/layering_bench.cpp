@@ -123,19 +123,25 @@ void BM_WorldSphereFrameMoving(benchmark::State& state) {
 }
 BENCHMARK(BM_WorldSphereFrameMoving)->Arg(1024)->Unit(benchmark::kMicrosecond);
 
-void BM_ScreenTileFrameMoving(benchmark::State& state) {
-  const auto n = static_cast<std::size_t>(state.range(0));
-  const auto lights = world_layout(n);
-  const auto base = screen_layout(n);
+// Footprints circling 12 px, 32 frames a turn.
+std::vector<std::vector<ScreenRect>> moving_screen_frames(std::size_t count) {
+  const auto base = screen_layout(count);
   std::vector<std::vector<ScreenRect>> frames(kMovingFrames, base);
   for (int f = 0; f < kMovingFrames; ++f) {
-    for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t i = 0; i < count; ++i) {
       const float a =
           6.2831853f * (static_cast<float>(f) / kMovingFrames + static_cast<float>(i % 7) / 7.0f);
       const glm::vec2 shift = 12.0f * glm::vec2(std::cos(a), std::sin(a));
       frames[f][i] = {base[i].min + shift, base[i].max + shift};
     }
   }
+  return frames;
+}
+
+void BM_ScreenTileFrameMoving(benchmark::State& state) {
+  const auto n = static_cast<std::size_t>(state.range(0));
+  const auto lights = world_layout(n);
+  const auto frames = moving_screen_frames(n);
   Layering layering;
   const LayeringOptions options{Order::dsatur, 16, CapPolicy::least_conflict};
   std::size_t f = 0;
@@ -175,12 +181,32 @@ void BM_WorldSphereGraphBruteForce(benchmark::State& state) {
 }
 BENCHMARK(BM_WorldSphereGraphBruteForce)->Arg(1024)->Unit(benchmark::kMicrosecond);
 
+// The same graphs from moving lights: a new input each iteration, as in a real frame, so
+// the branch predictor cannot learn one input's pattern (the static rows above flatter it).
+void BM_WorldSphereGraphOnlyMoving(benchmark::State& state) {
+  const auto frames = moving_world_frames(static_cast<std::size_t>(state.range(0)));
+  GraphBuilder builder;
+  std::size_t f = 0;
+  for (auto _ : state)
+    benchmark::DoNotOptimize(builder.build_world_sphere(frames[f++ % kMovingFrames]));
+}
+BENCHMARK(BM_WorldSphereGraphOnlyMoving)->Arg(1024)->Unit(benchmark::kMicrosecond);
+
 void BM_ScreenTileGraphOnly(benchmark::State& state) {
   const auto rects = screen_layout(static_cast<std::size_t>(state.range(0)));
   GraphBuilder builder;
   for (auto _ : state) benchmark::DoNotOptimize(builder.build_screen_tile(rects, kTiles));
 }
 BENCHMARK(BM_ScreenTileGraphOnly)->Arg(1024)->Unit(benchmark::kMicrosecond);
+
+void BM_ScreenTileGraphOnlyMoving(benchmark::State& state) {
+  const auto frames = moving_screen_frames(static_cast<std::size_t>(state.range(0)));
+  GraphBuilder builder;
+  std::size_t f = 0;
+  for (auto _ : state)
+    benchmark::DoNotOptimize(builder.build_screen_tile(frames[f++ % kMovingFrames], kTiles));
+}
+BENCHMARK(BM_ScreenTileGraphOnlyMoving)->Arg(1024)->Unit(benchmark::kMicrosecond);
 
 void BM_Colour(benchmark::State& state) {
   const auto order = static_cast<Order>(state.range(0));

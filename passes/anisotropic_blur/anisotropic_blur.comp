@@ -16,7 +16,17 @@
 // column's side seen edge-on next to its front at the same depth).
 
 #include "../interface/shared/workgroups.h"
+#ifdef LINE_CACHE
+// The supersampled first direction along x (not rotated): a workgroup is a run of
+// LINE_GROUP texels of one row, and the row's supersampled input and surface, from
+// LINE_APRON texels left of it to LINE_APRON right (>= the largest radius), are worked
+// out once into shared memory. Every tap then reads them there instead of redoing a
+// 2x2 supersample per tap and per layer (docs/technique.md section 1, step 5).
+layout(local_size_x = LINE_GROUP, local_size_y = 1) in;
+#define LINE_TEXELS (LINE_GROUP + 2 * LINE_APRON)
+#else
 layout(local_size_x = ANTUMBRA_IMAGE_GROUP, local_size_y = ANTUMBRA_IMAGE_GROUP) in;
+#endif
 
 #include "../common/frame.glsl"
 #include "anisotropic_blur_interface.h"
@@ -83,20 +93,64 @@ vec4 visibility(ivec2 out_pixel, uint slot, ivec2 full_size, ivec2 scale) {
 #endif
 }
 
+#ifdef LINE_CACHE
+shared vec4 line_input[LINE_TEXELS];    // visibility() of the row's texels, one slot
+shared vec4 line_surface[LINE_TEXELS];  // xyz unit normal, w linear depth (-1: background)
+int line_start;                         // output x of line_input[0]
+
+// The shared texel of `tap` (clamped to the image, on this row), or -1 when outside.
+int line_index(ivec2 tap) {
+  int i = tap.x - line_start;
+  return i >= 0 && i < LINE_TEXELS ? i : -1;
+}
+#endif
+
+// The representative full-resolution pixel's normal and linear depth (w = -1 on the
+// background) of output texel `tap`.
+vec4 tap_surface(ivec2 tap, ivec2 full_size, ivec2 scale) {
+#ifdef LINE_CACHE
+  int i = line_index(tap);
+  if (i >= 0) return line_surface[i];
+#endif
+  ivec2 tap_full = min(tap * scale, full_size - 1);
+  if (texelFetch(g_depth, tap_full, 0).r >= 1.0) return vec4(0.0, 0.0, 0.0, -1.0);
+  return vec4(view_normal(tap_full), linear_depth(tap_full));
+}
+
+vec4 tap_input(ivec2 tap, uint slot, ivec2 full_size, ivec2 scale) {
+#ifdef LINE_CACHE
+  int i = line_index(tap);
+  if (i >= 0) return line_input[i];
+#endif
+  return visibility(tap, slot, full_size, scale);
+}
+
 void main() {
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
   ivec2 out_size = imageSize(shadow_out).xy;
-  if (any(greaterThanEqual(pixel, out_size))) return;
   ivec2 full_size = textureSize(g_depth, 0);
   ivec2 scale = max(full_size / out_size, ivec2(1));
-  ivec2 full_pixel = min(pixel * scale, full_size - 1);
-
-  float depth01 = texelFetch(g_depth, full_pixel, 0).r;
-  if (depth01 >= 1.0) {
-    for (uint s = 0u; s < slots; ++s) imageStore(shadow_out, ivec3(pixel, int(s)), vec4(1.0));
-    return;
+#ifdef LINE_CACHE
+  // Every invocation reaches the barriers below: no early return before them.
+  line_start = int(gl_WorkGroupID.x) * LINE_GROUP - LINE_APRON;
+  int row = min(pixel.y, out_size.y - 1);
+  for (int i = int(gl_LocalInvocationIndex); i < LINE_TEXELS; i += LINE_GROUP) {
+    ivec2 at = ivec2(clamp(line_start + i, 0, out_size.x - 1), row);
+    ivec2 at_full = min(at * scale, full_size - 1);
+    bool background = texelFetch(g_depth, at_full, 0).r >= 1.0;
+    line_surface[i] = background ? vec4(0.0, 0.0, 0.0, -1.0)
+                                 : vec4(view_normal(at_full), linear_depth(at_full));
   }
-  float z_centre = linear_depth(full_pixel);
+  // line_index() reads the cache by clamped x only: keep it to this row's clamped texels.
+  bool inside = all(lessThan(pixel, out_size));
+#else
+  if (any(greaterThanEqual(pixel, out_size))) return;
+  bool inside = true;
+#endif
+  ivec2 full_pixel = min(min(pixel, out_size - 1) * scale, full_size - 1);
+  float depth01 = texelFetch(g_depth, full_pixel, 0).r;
+  bool background = depth01 >= 1.0;
+  float z_centre = background ? 1.0 : linear_depth(full_pixel);
   vec3 n_view = view_normal(full_pixel);
   float anisotropy = sqrt(max(n_view.z, 0.25));
   // Focal length in output pixels: world size w at depth z covers w * focal / z pixels.
@@ -105,6 +159,19 @@ void main() {
   float focal = abs(frame.projection.y) * 0.5 * float(out_size.y);
 
   for (uint s = 0u; s < slots; ++s) {
+#ifdef LINE_CACHE
+    barrier();  // the previous slot's taps are read
+    for (int i = int(gl_LocalInvocationIndex); i < LINE_TEXELS; i += LINE_GROUP) {
+      ivec2 at = ivec2(clamp(line_start + i, 0, out_size.x - 1), row);
+      line_input[i] = line_surface[i].w < 0.0 ? vec4(1.0) : visibility(at, s, full_size, scale);
+    }
+    barrier();
+#endif
+    if (!inside) continue;
+    if (background) {
+      imageStore(shadow_out, ivec3(pixel, int(s)), vec4(1.0));
+      continue;
+    }
     vec4 width = texelFetch(penumbra, ivec3(pixel, int(s)), 0);
     vec4 radius = clamp(width * focal / z_centre * anisotropy, vec4(0.0), vec4(max_radius));
     // At full resolution, where a blocker was found, at least a one-pixel radius: the
@@ -114,7 +181,7 @@ void main() {
     if (scale == ivec2(1)) {
       radius = mix(radius, max(radius, vec4(1.0)), greaterThan(width, vec4(0.0)));
     }
-    vec4 centre = visibility(pixel, s, full_size, scale);
+    vec4 centre = tap_input(pixel, s, full_size, scale);
     vec4 sum = centre;
     vec4 weight_sum = vec4(1.0);
     float sigma = max(float(half_taps) * 0.5, 0.5);
@@ -127,11 +194,11 @@ void main() {
           if (s * 4u + c >= layers || radius[c] < 0.5) continue;
           ivec2 tap = ivec2(round(vec2(pixel) + direction * offset[c]));
           tap = clamp(tap, ivec2(0), out_size - 1);
-          ivec2 tap_full = min(tap * scale, full_size - 1);
-          if (texelFetch(g_depth, tap_full, 0).r >= 1.0) continue;
-          if (abs(linear_depth(tap_full) - z_centre) > depth_threshold * z_centre) continue;
-          if (dot(view_normal(tap_full), n_view) < normal_threshold) continue;
-          sum[c] += w_tap * visibility(tap, s, full_size, scale)[c];
+          vec4 there = tap_surface(tap, full_size, scale);
+          if (there.w < 0.0) continue;
+          if (abs(there.w - z_centre) > depth_threshold * z_centre) continue;
+          if (dot(there.xyz, n_view) < normal_threshold) continue;
+          sum[c] += w_tap * tap_input(tap, s, full_size, scale)[c];
           weight_sum[c] += w_tap;
         }
       }

@@ -35,7 +35,8 @@ class AnisotropicBlurPass final : public fgvk::Pass {
  private:
   AnisotropicBlurParams params_;
   bool from_hard_bits_ = true;
-  bool from_esm_ = false;  // first direction from ESM values instead of the bits
+  bool from_esm_ = false;    // first direction from ESM values instead of the bits
+  bool line_cache_ = false;  // rows share their supersampled input (LINE_CACHE)
   ComputePipeline compute_;
   std::vector<std::string> shader_files_;
 };

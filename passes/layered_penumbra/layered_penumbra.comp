@@ -49,6 +49,45 @@ layout(set = 0, binding = kPenumbraEsmOut, rgba8) uniform writeonly image2DArray
 
 layout(local_size_x = TILE_SIZE, local_size_y = TILE_SIZE) in;
 
+// SLOTS (set by the pass from the penumbra image's array layers, 1..8) bounds every
+// per-pixel array, so that the loops unroll and the arrays stay in registers: indexed
+// with a run-time layer they would live in (slow) local memory on GPUs. Writes go
+// through slot_set(), a chain of selects over constant indices.
+#ifndef SLOTS
+#define SLOTS 8
+#endif
+#define OWNED_LAYERS (SLOTS * 4)
+
+vec4 penumbra[SLOTS];
+uvec4 translucency[SLOTS];
+vec4 esm[SLOTS];
+uint owner[OWNED_LAYERS];
+
+void slot_set(uint layer, float width, uint colour, float esm_value) {
+  uint slot = layer >> 2u;
+  uint channel = layer & 3u;
+  for (uint s = 0u; s < uint(SLOTS); ++s) {
+    if (s != slot) continue;
+    for (uint c = 0u; c < 4u; ++c) {
+      if (c != channel) continue;
+      penumbra[s][c] = width;
+      translucency[s][c] = colour;
+      esm[s][c] = esm_value;
+    }
+  }
+}
+
+// The lowest light index seen in `layer` so far (0xFFFFFFFF: none), and its update.
+uint owner_of(uint layer) {
+  uint found = 0xFFFFFFFFu;
+  for (uint k = 0u; k < uint(OWNED_LAYERS); ++k) found = k == layer ? owner[k] : found;
+  return found;
+}
+
+void set_owner(uint layer, uint light) {
+  for (uint k = 0u; k < uint(OWNED_LAYERS); ++k) owner[k] = k == layer ? light : owner[k];
+}
+
 void main() {
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
   ivec2 size = textureSize(g_depth, 0);
@@ -58,17 +97,18 @@ void main() {
   vec3 view_pos = valid ? view_position((vec2(pixel) + 0.5) * frame.viewport.zw, depth) : vec3(0.0);
   tile_begin(view_pos, valid, vec2(size));
 
-  vec4 penumbra[8];
-  uvec4 translucency[8];
-  vec4 esm[8];
-  for (int i = 0; i < 8; ++i) {
+  for (int i = 0; i < SLOTS; ++i) {
     penumbra[i] = vec4(0.0);
     translucency[i] = uvec4(0xFFFFFFFFu);
     esm[i] = vec4(1.0);
   }
   uint hard_bits = 0u;
-  uint owner[32];
-  for (int i = 0; i < 32; ++i) owner[i] = 0xFFFFFFFFu;
+  uint claimed = 0u;  // layers with an owner; owner[] is read only on a second claim
+  for (int i = 0; i < OWNED_LAYERS; ++i) owner[i] = 0xFFFFFFFFu;
+  uint layers = min(max_layers, uint(OWNED_LAYERS));
+  // A half-resolution penumbra image keeps only the even pixels' widths: the others need
+  // the hard bit and the tint (full resolution) but not the blocker estimate.
+  bool want_width = penumbra_shift == 0u || all(equal(pixel & 1, ivec2(0)));
 
   vec3 world = vec3(0.0);
   vec3 n_world = vec3(0.0);
@@ -84,36 +124,28 @@ void main() {
       uint li = tile_lights[k];
       if (li >= ANTUMBRA_MAX_SHADOW_LIGHTS) continue;
       uint layer = layer_of[li];
-      if (layer >= max_layers || layer >= 32u) continue;
-      if (owner[layer] < li) continue;  // a lower-index light already owns this layer here
+      if (layer >= layers) continue;
+      uint bit = 1u << layer;
+      // A lower-index light already owns this layer here (only over the cap).
+      if ((claimed & bit) != 0u && owner_of(layer) < li) continue;
       ShadowLight sl = shadow_lights[li];
       if (sl.params.z < 0.0) continue;  // no shadow map for this light this frame
       // The sun (orthographic map, own layer) reaches everything; others end at range.
       if (!shadow_is_ortho(sl) && length(sl.position_range.xyz - world) >= sl.position_range.w) {
         continue;
       }
-      PenumbraSample s = estimate_penumbra(sl, world, n_world);
-      owner[layer] = li;
-      uint slot = layer >> 2u;
-      uint channel = layer & 3u;
-      penumbra[slot][channel] = s.width;
-      if (s.in_shadow) {
-        hard_bits |= 1u << layer;
-      } else {
-        hard_bits &= ~(1u << layer);
-      }
-#ifdef HAS_COLOUR
-      translucency[slot][channel] = s.colour;
-#endif
-      esm[slot][channel] = s.esm;
+      PenumbraSample s = estimate_penumbra(sl, world, n_world, want_width);
+      set_owner(layer, li);
+      claimed |= bit;
+      slot_set(layer, s.width, s.colour, s.esm);
+      hard_bits = s.in_shadow ? hard_bits | bit : hard_bits & ~bit;
     }
   }
   if (!inside) return;
 
   imageStore(hard_out, pixel, uvec4(hard_bits));
-  uint slots = (max_layers + 3u) / 4u;
-  bool write_penumbra = penumbra_shift == 0u || all(equal(pixel & 1, ivec2(0)));
-  if (write_penumbra) {
+  uint slots = min((max_layers + 3u) / 4u, uint(SLOTS));
+  if (want_width) {
     ivec2 target = pixel >> int(penumbra_shift);
     for (uint s = 0u; s < slots; ++s) {
       imageStore(penumbra_out, ivec3(target, int(s)), penumbra[s]);

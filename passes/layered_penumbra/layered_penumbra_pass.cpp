@@ -1,6 +1,8 @@
 #include "layered_penumbra_pass.hpp"
 
+#include <algorithm>
 #include <array>
+#include <string>
 
 #include "antumbra/gpu/context.hpp"
 #include "antumbra/gpu/pipelines.hpp"
@@ -31,6 +33,10 @@ void LayeredPenumbraPass::prepare(fgvk::PrepareContext& context) {
   if (min_filter_) defines.push_back({"MIN_FILTER", "1"});
   esm_ = context.bindings.image(port::kEsm) != nullptr;
   if (esm_) defines.push_back({"HAS_ESM", "1"});
+  // The per-pixel arrays' size: constant-bounded loops keep them in registers.
+  const fgvk::BoundImage* penumbra = context.bindings.image(port::kPenumbra);
+  defines.push_back(
+      {"SLOTS", std::to_string(std::clamp(penumbra != nullptr ? penumbra->layers : 8u, 1u, 8u))});
   auto shader =
       load_shader(context, "layered_penumbra/layered_penumbra.comp", shader_files_, defines);
   gpu::DescriptorSetLayoutBuilder builder;

@@ -15,7 +15,8 @@ uint pack_colour(vec4 c) {
   return (b.r << 24u) | (b.g << 16u) | (b.b << 8u) | b.a;
 }
 
-PenumbraSample estimate_penumbra(ShadowLight sl, vec3 world, vec3 n_world) {
+// `want_width` false: only the hard test, the tint and ESM (the width stays 0).
+PenumbraSample estimate_penumbra(ShadowLight sl, vec3 world, vec3 n_world, bool want_width) {
   PenumbraSample result;
   result.width = 0.0;
   result.in_shadow = false;
@@ -34,9 +35,23 @@ PenumbraSample estimate_penumbra(ShadowLight sl, vec3 world, vec3 n_world) {
   // units of the light's depth range so one c suits every light. Receivers just behind
   // their own surface stay near 1, which is what keeps ESM free of acne.
   vec2 at = shadow_atlas_uv(c, c.uv);
+#ifdef HAS_ESM
   float occluder = shadow_linearise_light(sl, textureLod(atlas, vec3(at, c.layer), 0.0).r);
   float depth_range = max(sl.position_range.w, 1e-3);
   result.esm = clamp(exp(-esm_constant * max(c.linear - occluder, 0.0) / depth_range), 0.0, 1.0);
+#endif
+
+#ifdef HAS_COLOUR
+  // Only lights with a translucent caster in range have valid colour layers (w = 1).
+  // rgb: the product of the panes' tints; a: the nearest pane's distance over the far
+  // plane (shadow_colour.frag). A receiver not behind that pane (a lit pane's own
+  // surface, offset towards the light) is not tinted by it.
+  if (sl.params.w > 0.5) {
+    vec4 tint = textureLod(colour_atlas, vec3(at, c.layer), 0.0);
+    if (c.linear > tint.a * sl.position_range.w) result.colour = pack_colour(vec4(tint.rgb, 1.0));
+  }
+#endif
+  if (!want_width) return result;
 
 #ifdef MIN_FILTER
   // The min-filtered map holds the nearest depth around the lookup: a blocker exists
@@ -82,16 +97,6 @@ PenumbraSample estimate_penumbra(ShadowLight sl, vec3 world, vec3 n_world) {
     result.width = ortho ? max((z_receiver - z_blocker) * light_size, 1e-4)
                          : max((z_receiver - z_blocker) * light_size / z_blocker, 1e-4);
   }
-#ifdef HAS_COLOUR
-  // Only lights with a translucent caster in range have valid colour layers (w = 1).
-  // rgb: the product of the panes' tints; a: the nearest pane's distance over the far
-  // plane (shadow_colour.frag). A receiver not behind that pane (a lit pane's own
-  // surface, offset towards the light) is not tinted by it.
-  if (sl.params.w > 0.5) {
-    vec4 tint = textureLod(colour_atlas, vec3(at, c.layer), 0.0);
-    if (c.linear > tint.a * sl.position_range.w) result.colour = pack_colour(vec4(tint.rgb, 1.0));
-  }
-#endif
   return result;
 }
 

@@ -10,7 +10,13 @@
 
 #include "tiled_lighting_interface.h"
 
-#define MAX_SHADOW_TEXELS 8  // 32 layers (light-layering's largest cap)
+// The layered shadow image's array layers (4 screen layers each), set by the pass: a
+// constant bound lets every loop over them unroll and keeps the per-pixel arrays below
+// in registers (indexed at run time they would live in slow local memory on GPUs).
+#ifndef SHADOW_TEXELS
+#define SHADOW_TEXELS 8  // 32 layers (light-layering's largest cap)
+#endif
+#define MAX_SHADOW_TEXELS SHADOW_TEXELS
 
 layout(set = 0, binding = kTiledLayerTable, std430) readonly buffer LayerTable {
   LayerTableHeader layer_header;
@@ -59,7 +65,7 @@ bool g_layered_foreign = false;
 #if HAS_COLOUR
 uvec4 g_colour[MAX_SHADOW_TEXELS];
 #endif
-int g_shadow_texels = 0;
+const int g_shadow_texels = MAX_SHADOW_TEXELS;
 
 // Linear view depth of a full-resolution G-buffer pixel.
 float layered_view_depth(ivec2 pixel) {
@@ -74,7 +80,6 @@ float layered_view_depth(ivec2 pixel) {
 // reads it) is to this pixel's and by how alike their normals are: a joint bilateral
 // upsample.
 void layered_fetch(ivec2 pixel) {
-  g_shadow_texels = min(textureSize(shadow_layers, 0).z, MAX_SHADOW_TEXELS);
   ivec2 low = textureSize(shadow_layers, 0).xy;
   ivec2 scale = max(ivec2(image_size) / low, ivec2(1));
   float z = layered_view_depth(pixel);
@@ -159,8 +164,8 @@ void layered_fetch(ivec2 pixel) {
   ivec3 size = textureSize(colour_layers, 0);
   vec2 uv = (vec2(pixel) + 0.5) / vec2(image_size);
   ivec2 texel = min(ivec2(uv * vec2(size.xy)), size.xy - 1);
-  for (int i = 0; i < min(size.z, g_shadow_texels); ++i) {
-    g_colour[i] = texelFetch(colour_layers, ivec3(texel, i), 0);
+  for (int i = 0; i < g_shadow_texels; ++i) {
+    g_colour[i] = i < size.z ? texelFetch(colour_layers, ivec3(texel, i), 0) : uvec4(0xFFFFFFFFu);
   }
 #endif
 }
@@ -171,19 +176,38 @@ vec3 unpack_tint(uint packed) {
   return mix(vec3(1.0), c.rgb, c.a);
 }
 
+// g_shadow[layer / 4][layer % 4] (and g_colour's) through selects over constant indices.
+float layered_value(uint layer) {
+  float v = 1.0;
+  for (uint i = 0u; i < uint(MAX_SHADOW_TEXELS); ++i) {
+    for (uint c = 0u; c < 4u; ++c) v = i * 4u + c == layer ? g_shadow[i][c] : v;
+  }
+  return v;
+}
+
+#if HAS_COLOUR
+uint layered_colour(uint layer) {
+  uint v = 0xFFFFFFFFu;
+  for (uint i = 0u; i < uint(MAX_SHADOW_TEXELS); ++i) {
+    for (uint c = 0u; c < 4u; ++c) v = i * 4u + c == layer ? g_colour[i][c] : v;
+  }
+  return v;
+}
+#endif
+
 vec3 layered_shadow(uint index, vec3 p_world, vec3 n_world) {
   uint layer = index < layer_header.counts.x ? layer_of[index] : ANTUMBRA_NO_LAYER;
   if (layer != ANTUMBRA_NO_LAYER && int(layer / 4u) < g_shadow_texels) {
     vec3 tint = vec3(1.0);
 #if HAS_COLOUR
     if (int(layer / 4u) < textureSize(colour_layers, 0).z) {
-      tint = unpack_tint(g_colour[layer / 4u][layer % 4u]);
+      tint = unpack_tint(layered_colour(layer));
     }
 #endif
 #if HAS_ATLAS
     if (g_layered_foreign) return atlas_shadow(index, p_world, n_world, 3) * tint;
 #endif
-    return clamp(g_shadow[layer / 4u][layer % 4u], 0.0, 1.0) * tint;
+    return clamp(layered_value(layer), 0.0, 1.0) * tint;
   }
 #if HAS_ATLAS
   return vec3(atlas_shadow(index, p_world, n_world, FALLBACK_PCF != 0 ? 2 : 1));

@@ -1,6 +1,8 @@
 #include "tiled_lighting_pass.hpp"
 
+#include <algorithm>
 #include <array>
+#include <cstdint>
 #include <string>
 
 #include "antumbra/gpu/context.hpp"
@@ -16,6 +18,14 @@ namespace antumbra::passes {
 namespace {
 
 using shared::TiledLightingPush;
+
+// Array layers of the layered shadow image (4 screen layers each), 1..8: the shader's
+// per-pixel arrays are sized by it (layered.glsl).
+std::uint32_t shadow_texels(const fgvk::PassBindings& bindings, ShadowMode mode) {
+  if (mode != ShadowMode::layered) return 1;  // the other modes have no such port
+  const fgvk::BoundImage* shadow = bindings.image(port::kShadow);
+  return std::clamp(shadow != nullptr ? shadow->layers : 8u, 1u, 8u);
+}
 
 }  // namespace
 
@@ -100,6 +110,7 @@ void TiledLightingPass::prepare(fgvk::PrepareContext& context) {
       {"KERNEL", std::to_string(params_.kernel)},
       {"BLOCKER_SEARCH", std::to_string(params_.blocker_search)},
       {"HDR_FORMAT", hdr_format == VK_FORMAT_R32G32B32A32_SFLOAT ? "rgba32f" : "rgba16f"},
+      {"SHADOW_TEXELS", std::to_string(shadow_texels(b, mode_))},
   };
   shader_files_.clear();
   auto module = load_shader(context, "tiled_lighting/tiled_lighting.comp", shader_files_, defines);
