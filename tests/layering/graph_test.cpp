@@ -140,6 +140,18 @@ TEST(ScreenTileGraph, BinsMatchPairwiseTileOverlap) {
     const ConflictGraph reference = ConflictGraph::from_edges(rects.size(), edges);
     EXPECT_EQ(graph.offsets, reference.offsets);
     EXPECT_EQ(graph.neighbours, reference.neighbours);
+    // Weight = shared tiles.
+    for (std::uint32_t v = 0; v < graph.vertex_count(); ++v) {
+      const auto nbrs = graph.adjacent(v);
+      const auto weights = graph.adjacent_weights(v);
+      for (std::size_t k = 0; k < nbrs.size(); ++k) {
+        const glm::ivec4 a = tiles(rects[v]);
+        const glm::ivec4 b = tiles(rects[nbrs[k]]);
+        const int shared = (std::min(a.z, b.z) - std::max(a.x, b.x) + 1) *
+                           (std::min(a.w, b.w) - std::max(a.y, b.y) + 1);
+        EXPECT_EQ(weights[k], static_cast<float>(shared)) << v << "-" << nbrs[k];
+      }
+    }
   }
 }
 

@@ -236,18 +236,22 @@ std::uint32_t Colourer::raise_saturation(const ConflictGraph& graph, std::uint32
   const std::size_t word = static_cast<std::size_t>(c) / 64;
   const std::uint64_t bit = std::uint64_t{1} << (c % 64);
   std::uint32_t top = 0;
+  // Whether a neighbour gains a level is a coin toss to the branch predictor: every
+  // neighbour takes the same path, and a neighbour that gains nothing moves by zero.
   for (std::uint32_t u : graph.adjacent(v)) {
     std::uint64_t& seen = seen_colours_[u * seen_words_ + word];
-    if (done_[u] != 0 || (seen & bit) != 0) continue;
-    seen |= bit;
-    const std::uint32_t from = saturation_[u]++;
+    const auto gains =
+        static_cast<std::uint32_t>(done_[u] == 0) & static_cast<std::uint32_t>((seen & bit) == 0);
+    seen |= bit;  // harmless for a coloured neighbour: its saturation is never read again
+    const std::uint32_t from = saturation_[u];
+    saturation_[u] = from + gains;
     const std::uint32_t r = rank_[u];
-    const std::uint64_t flip = std::uint64_t{1} << (r % 64);
+    const std::uint64_t flip = std::uint64_t{gains} << (r % 64);
     level_bits_[from * rank_words_ + r / 64] ^= flip;
     level_bits_[(from + 1) * rank_words_ + r / 64] ^= flip;
-    --level_count_[from];
-    ++level_count_[from + 1];
-    top = std::max(top, from + 1);
+    level_count_[from] -= gains;
+    level_count_[from + 1] += gains;
+    top = std::max(top, (from + 1) * gains);
   }
   return top;
 }

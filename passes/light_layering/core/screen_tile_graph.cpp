@@ -120,24 +120,66 @@ void GraphBuilder::bin_lights(const TileBins& bins) {
   bucket_start_[0] = 0;
 }
 
+// Pairs inside each bin. A pair is reported only from the bin holding its first shared
+// tile: both ranges reach the bin, so that tile is never past the bin's end and the test
+// is "not before the bin's start", with no division. Whether two footprints overlap is a
+// coin toss to the branch predictor, so, as for the world grid, a vectorisable loop flags
+// each pair of a light with the bin's later lights and a branch-free pass compacts them.
 void GraphBuilder::collect_tile_pairs(const TileBins& bins) {
   for (int by = 0; by < bins.count.y; ++by) {
     for (int bx = 0; bx < bins.count.x; ++bx) {
       const std::size_t b = static_cast<std::size_t>(by) * bins.count.x + bx;
-      for (std::uint32_t x = bucket_start_[b]; x < bucket_start_[b + 1]; ++x) {
-        const glm::ivec4 ra = tile_range_[tile_lights_[x]];
-        for (std::uint32_t y = x + 1; y < bucket_start_[b + 1]; ++y) {
-          const glm::ivec4 rb = tile_range_[tile_lights_[y]];
-          const glm::ivec4 o(std::max(ra.x, rb.x), std::max(ra.y, rb.y), std::min(ra.z, rb.z),
-                             std::min(ra.w, rb.w));
-          if (o.z < o.x || o.w < o.y) continue;
-          // Report the pair only from the bin holding the first shared tile.
-          if (bins.range_of(o).x != bx || bins.range_of(o).y != by) continue;
-          edges_.push_back(Edge{tile_lights_[x], tile_lights_[y],
-                                static_cast<float>((o.z - o.x + 1) * (o.w - o.y + 1))});
-        }
+      const std::uint32_t begin = bucket_start_[b];
+      const std::uint32_t size = bucket_start_[b + 1] - begin;
+      if (size < 2) continue;
+      bin_x0_.resize(size);
+      bin_y0_.resize(size);
+      bin_x1_.resize(size);
+      bin_y1_.resize(size);
+      for (std::uint32_t k = 0; k < size; ++k) {
+        const glm::ivec4 r = tile_range_[tile_lights_[begin + k]];
+        bin_x0_[k] = r.x;
+        bin_y0_[k] = r.y;
+        bin_x1_[k] = r.z;
+        bin_y1_[k] = r.w;
       }
+      if (pair_hits_.size() < size) {
+        pair_hits_.resize(size);
+        candidates_.resize(size);
+      }
+      const glm::ivec2 start = bins.lo + glm::ivec2(bx, by) * bins.bin;
+      for (std::uint32_t a = 0; a + 1 < size; ++a) collect_bin_pairs(begin, a, size, start);
     }
+  }
+}
+
+// Light a of the bin (entries begin..) against the bin's later lights.
+void GraphBuilder::collect_bin_pairs(std::uint32_t begin, std::uint32_t a, std::uint32_t size,
+                                     glm::ivec2 start) {
+  const int ax0 = bin_x0_[a];
+  const int ay0 = bin_y0_[a];
+  const int ax1 = bin_x1_[a];
+  const int ay1 = bin_y1_[a];
+  std::uint32_t* hits = pair_hits_.data();
+  for (std::uint32_t k = a + 1; k < size; ++k) {
+    const int ox0 = std::max(ax0, bin_x0_[k]);
+    const int oy0 = std::max(ay0, bin_y0_[k]);
+    const int ox1 = std::min(ax1, bin_x1_[k]);
+    const int oy1 = std::min(ay1, bin_y1_[k]);
+    hits[k] = static_cast<std::uint32_t>((ox0 <= ox1) & (oy0 <= oy1) & (ox0 >= start.x) &
+                                         (oy0 >= start.y));
+  }
+  std::uint32_t count = 0;
+  for (std::uint32_t k = a + 1; k < size; ++k) {
+    candidates_[count] = k;
+    count += hits[k];
+  }
+  for (std::uint32_t c = 0; c < count; ++c) {
+    const std::uint32_t k = candidates_[c];
+    const int w = std::min(ax1, bin_x1_[k]) - std::max(ax0, bin_x0_[k]) + 1;
+    const int h = std::min(ay1, bin_y1_[k]) - std::max(ay0, bin_y0_[k]) + 1;
+    edges_.push_back(
+        Edge{tile_lights_[begin + a], tile_lights_[begin + k], static_cast<float>(w * h)});
   }
 }
 

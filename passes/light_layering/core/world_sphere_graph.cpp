@@ -5,6 +5,10 @@
 #include <bit>
 #include <cmath>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include "antumbra/layering/conflict_graph.hpp"
 #include "graph_internal.hpp"
 
@@ -17,6 +21,9 @@ using detail::lights_something;
 // Cell spans larger than this per axis make a light "big": it is tested against every
 // other light instead of being inserted into hundreds of cells (e.g. a huge area light).
 constexpr int kMaxCellSpan = 6;
+
+// Pairs tested at once by collect_range_pairs.
+constexpr std::uint32_t kPairLanes = 4;
 
 int cell_coord(float p, float inv_cell) {
   return static_cast<int>(std::floor(std::clamp(p * inv_cell, -kMaxCellCoord, kMaxCellCoord)));
@@ -36,8 +43,10 @@ std::size_t cell_slot(std::uint64_t key, int table_bits) {
   return static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> (64 - table_bits));
 }
 
-// Cell edge = 1.5 mean lit diameters: a typical sphere covers 1..2 cells per axis. The
-// pair test is branch-free and cheap, so fewer, fuller cells win.
+// Cell edge = 2.5 mean lit diameters: a typical sphere covers 1..2 cells per axis, mostly
+// one. The pair test runs four pairs at once and costs little per pair, while every cell
+// entry costs a hash lookup and a call, so fewer, fuller cells win: measured on moving
+// lights (mean degree 8), 2.5 diameters beat 1.5 (the graph 0.19 -> 0.16 ms) and 4.
 float grid_cell_size(std::span<const LightSphere> lights) {
   double range_sum = 0.0;
   std::uint32_t finite = 0;
@@ -47,7 +56,7 @@ float grid_cell_size(std::span<const LightSphere> lights) {
       ++finite;
     }
   }
-  return finite > 0 ? static_cast<float>(3.0 * range_sum / finite) : 1.0f;
+  return finite > 0 ? static_cast<float>(5.0 * range_sum / finite) : 1.0f;
 }
 
 // Calls fn for every cell of the inclusive span lo..hi (none when hi < lo).
@@ -151,12 +160,15 @@ void GraphBuilder::sort_into_groups(std::span<const LightSphere> lights, std::si
   const std::size_t groups = cells * 8;
   for (std::size_t g = 0; g < groups; ++g) group_start_[g + 1] += group_start_[g];
   const std::size_t entry_count = entry_group_.size();
-  grid_x_.resize(entry_count);
-  grid_y_.resize(entry_count);
-  grid_z_.resize(entry_count);
-  grid_range_.resize(entry_count);
-  grid_lights_.resize(entry_count);
-  grid_first_.resize(entry_count);
+  // kPairLanes - 1 entries of padding: the pair test reads whole groups of lanes past a
+  // cell's last entry and masks the extra lanes off.
+  const std::size_t padded = entry_count + kPairLanes - 1;
+  grid_x_.resize(padded);
+  grid_y_.resize(padded);
+  grid_z_.resize(padded);
+  grid_range_.resize(padded);
+  grid_lights_.resize(padded);
+  grid_first_.resize(padded);
   std::size_t e = 0;
   for (std::size_t i = 0; i < cell_min_.size(); ++i) {
     const glm::ivec3 span = glm::max(cell_max_[i] - cell_min_[i] + 1, glm::ivec3(0));
@@ -184,8 +196,8 @@ void GraphBuilder::sort_into_groups(std::span<const LightSphere> lights, std::si
 // over the rest of the cell, long enough that its exit is predictable (a loop per group
 // pair was shorter and mispredicted more than it saved).
 void GraphBuilder::collect_cell_pairs(std::size_t cells) {
-  if (candidates_.size() < grid_x_.size()) {
-    candidates_.resize(grid_x_.size());
+  if (candidates_.size() < grid_x_.size() + kPairLanes) {
+    candidates_.resize(grid_x_.size() + kPairLanes);
     pair_hits_.resize(grid_x_.size());
   }
   for (std::size_t cell = 0; cell < cells; ++cell) {
@@ -199,14 +211,53 @@ void GraphBuilder::collect_cell_pairs(std::size_t cells) {
 }
 
 // Entry a against the later entries [begin, end) of its cell. The test passes or fails
-// unpredictably, so there is no branch per pair: a flag per pair from a loop the compiler
-// vectorises, then a branch-free compaction of the flags into candidates.
+// unpredictably, and about one pair in ten conflicts: four pairs are tested at once into a
+// 4-bit mask (SSE2, part of every x86-64 CPU) and only the set bits are visited, so no
+// branch or store is spent per failing pair. Other targets run the scalar loop.
 void GraphBuilder::collect_range_pairs(std::uint32_t a, std::uint32_t begin, std::uint32_t end) {
   const float ax = grid_x_[a];
   const float ay = grid_y_[a];
   const float az = grid_z_[a];
   const float ar = grid_range_[a];
   const std::uint32_t first_a = grid_first_[a];
+  const glm::vec3 pa(ax, ay, az);
+  auto add_edge = [&](std::uint32_t b) {
+    edges_.push_back(
+        Edge{grid_lights_[a], grid_lights_[b],
+             detail::overlap_volume(pa, ar, glm::vec3(grid_x_[b], grid_y_[b], grid_z_[b]),
+                                    grid_range_[b])});
+  };
+#if defined(__SSE2__)
+  static_assert(kPairLanes == 4);
+  const __m128 vax = _mm_set1_ps(ax);
+  const __m128 vay = _mm_set1_ps(ay);
+  const __m128 vaz = _mm_set1_ps(az);
+  const __m128 var = _mm_set1_ps(ar);
+  const __m128i want = _mm_set1_epi32(7);
+  const __m128i vfirst = _mm_set1_epi32(static_cast<int>(first_a));
+  std::uint32_t count = 0;
+  for (std::uint32_t k = begin; k < end; k += kPairLanes) {
+    const __m128 dx = _mm_sub_ps(vax, _mm_loadu_ps(&grid_x_[k]));
+    const __m128 dy = _mm_sub_ps(vay, _mm_loadu_ps(&grid_y_[k]));
+    const __m128 dz = _mm_sub_ps(vaz, _mm_loadu_ps(&grid_z_[k]));
+    const __m128 reach = _mm_add_ps(var, _mm_loadu_ps(&grid_range_[k]));
+    // Summed as glm::dot sums, so that the grid and the brute force agree to the bit.
+    const __m128 d2 =
+        _mm_add_ps(_mm_add_ps(_mm_mul_ps(dx, dx), _mm_mul_ps(dy, dy)), _mm_mul_ps(dz, dz));
+    const __m128 near = _mm_cmplt_ps(d2, _mm_mul_ps(reach, reach));
+    const __m128i firsts =
+        _mm_or_si128(vfirst, _mm_loadu_si128(reinterpret_cast<const __m128i*>(&grid_first_[k])));
+    const __m128 once = _mm_castsi128_ps(_mm_cmpeq_epi32(firsts, want));
+    const std::uint32_t lanes = end - k < kPairLanes ? (1u << (end - k)) - 1u : 0xFu;
+    const auto hits = static_cast<std::uint32_t>(_mm_movemask_ps(_mm_and_ps(near, once))) & lanes;
+    // Branch-free compaction of the mask: each lane is written, and kept when it hit.
+    for (std::uint32_t lane = 0; lane < kPairLanes; ++lane) {
+      candidates_[count] = k + lane;
+      count += (hits >> lane) & 1u;
+    }
+  }
+  for (std::uint32_t c = 0; c < count; ++c) add_edge(candidates_[c]);
+#else
   const std::uint32_t tested = end - begin;
   const float* x = grid_x_.data() + begin;
   const float* y = grid_y_.data() + begin;
@@ -228,14 +279,8 @@ void GraphBuilder::collect_range_pairs(std::uint32_t a, std::uint32_t begin, std
     candidates_[count] = begin + k;
     count += hits[k];
   }
-  const glm::vec3 pa(ax, ay, az);
-  for (std::uint32_t k = 0; k < count; ++k) {
-    const std::uint32_t b = candidates_[k];
-    edges_.push_back(
-        Edge{grid_lights_[a], grid_lights_[b],
-             detail::overlap_volume(pa, ar, glm::vec3(grid_x_[b], grid_y_[b], grid_z_[b]),
-                                    grid_range_[b])});
-  }
+  for (std::uint32_t k = 0; k < count; ++k) add_edge(candidates_[k]);
+#endif
 }
 
 // Big lights are tested against every other light.

@@ -53,6 +53,8 @@ class GraphBuilder {
   TileExtent assign_tile_ranges(std::span<const ScreenRect> rects, const TileParams& params);
   void bin_lights(const TileBins& bins);
   void collect_tile_pairs(const TileBins& bins);
+  void collect_bin_pairs(std::uint32_t begin, std::uint32_t a, std::uint32_t size,
+                         glm::ivec2 start);
   void finish_graph(std::size_t vertex_count);
 
   ConflictGraph graph_;
@@ -77,6 +79,10 @@ class GraphBuilder {
   std::vector<std::uint32_t> bucket_start_;  // screen tiles: lights per bin
   std::vector<glm::ivec4> tile_range_;
   std::vector<std::uint32_t> tile_lights_;
+  std::vector<int> bin_x0_;  // the tile ranges of one bin's lights, as parallel arrays
+  std::vector<int> bin_y0_;
+  std::vector<int> bin_x1_;
+  std::vector<int> bin_y1_;
   std::vector<std::uint32_t> scratch_offsets_;
   std::vector<std::uint32_t> scratch_neighbours_;
   std::vector<float> scratch_weights_;
