@@ -123,13 +123,17 @@ std::vector<Scenario> builtin_scenarios(double scale) {
   };
   constexpr Variant kMovingVariants[] = {{"hard", 0}, {"pcss", 11}, {"ssss", 11}};
   // Each on both shadow rasterisers (the compute rows end in "/compute"; they cull faces
-  // by receivers), and the compute one again with per-light resolution ("/compute/screen").
+  // by receivers), the compute one again with per-light resolution ("/compute/screen"),
+  // and that again with the compute G-buffer ("/compute/screen/vis": no raster pass left).
   struct Raster {
     const char* rasterizer;
     const char* resolution;
+    bool visibility = false;
   };
-  constexpr Raster kRasters[] = {
-      {"hardware", "fixed"}, {"compute", "fixed"}, {"compute", "screen"}};
+  constexpr Raster kRasters[] = {{"hardware", "fixed"},
+                                 {"compute", "fixed"},
+                                 {"compute", "screen"},
+                                 {"compute", "screen", true}};
   for (const int lights : {16, 64, 256, kDistrictLights}) {
     for (const Variant& v : kMovingVariants) {
       for (const Raster& raster : kRasters) {
@@ -147,6 +151,10 @@ std::vector<Scenario> builtin_scenarios(double scale) {
         if (std::string(raster.resolution) != "fixed") {
           s.name += std::string("/") + raster.resolution;
           s.overrides.push_back({"point-shadow-atlas", "resolution", raster.resolution});
+        }
+        if (raster.visibility) {
+          s.name += "/vis";
+          s.overrides.push_back({"gbuffer", "rasterizer", "compute"});
         }
         out.push_back(std::move(s));
       }

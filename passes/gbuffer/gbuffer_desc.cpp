@@ -1,7 +1,44 @@
+#include <optional>
+#include <string>
+
+#include "antumbra/base/diagnostic_codes.hpp"
+#include "common/plan_checks.hpp"
 #include "common/ports.hpp"
 #include "gbuffer_pass.hpp"
 
 namespace antumbra::passes {
+namespace {
+
+bool uses_compute(const fg::Json& params) {
+  const auto it = params.find("rasterizer");
+  return it != params.end() && *it == "compute";
+}
+
+// The compute path writes normal and albedo as storage images and fills the depth image
+// by a copy from its own buffer (visibility_gbuffer.hpp); the graph's barriers follow.
+std::optional<fg::PortUse> port_use(const fg::PortDesc& port, const fg::Json& params,
+                                    fg::Format /*format*/) {
+  if (!uses_compute(params)) return std::nullopt;
+  if (port.name == port::kDepth.name()) {
+    return fg::PortUse{fg::Access::transfer_dst, fg::Stage::transfer};
+  }
+  return fg::PortUse{fg::Access::storage_write, fg::Stage::compute};
+}
+
+// The copy fills 32-bit float depth only.
+void check(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& graph,
+           base::Diagnostics& diagnostics) {
+  if (!uses_compute(pass.params)) return;
+  const auto* depth = bound_resource(pass, plan, port::kDepth);
+  if (depth == nullptr || depth->format == fg::Format::d32f) return;
+  add_pass_error(graph, pass, codes::gbuffer::kRasterizerFormat,
+                 "rasterizer \"compute\" writes 32-bit float depth; the depth '" + depth->name +
+                     "' is " + std::string(fg::to_string(depth->format)) +
+                     ": make it d32f, or use rasterizer \"hardware\"",
+                 "/params/rasterizer", diagnostics);
+}
+
+}  // namespace
 
 fg::PassDesc GBufferPass::describe() {
   using fg::Access;
@@ -36,16 +73,31 @@ fg::PassDesc GBufferPass::describe() {
        .description = "Linear albedo in rgb, metallic in a."},
   };
   desc.params = param_table().descs();
+  desc.port_use = &port_use;
+  desc.check = &check;
   return desc;
 }
 
 const fg::ParamTable<GBufferParams>& GBufferPass::param_table() {
-  static const auto kTable = fg::ParamTable<GBufferParams>().add(
-      {.name = "cullBackFaces",
-       .type = fg::ParamType::boolean,
-       .default_value = false,
-       .description = "Cull back faces (off: thin panes and planes are visible from both sides)."},
-      &GBufferParams::cull_back_faces);
+  static const auto kTable =
+      fg::ParamTable<GBufferParams>()
+          .add({.name = "cullBackFaces",
+                .type = fg::ParamType::boolean,
+                .default_value = false,
+                .description = "Cull back faces (off: thin panes and planes are visible from "
+                               "both sides). The hardware rasteriser only."},
+               &GBufferParams::cull_back_faces)
+          .choice({.name = "rasterizer",
+                   .type = fg::ParamType::enumeration,
+                   .default_value = "hardware",
+                   .choices = {"hardware", "compute"},
+                   .description =
+                       "Who draws the scene: the hardware rasteriser, or compute shaders "
+                       "writing a visibility buffer (the nearest triangle per pixel, by 64-bit "
+                       "atomics) resolved into the same images, for GPUs with few raster "
+                       "units; needs d32f depth (docs/technique.md, Compute G-buffer)."},
+                  &GBufferParams::rasterizer,
+                  {GBufferRasterizer::hardware, GBufferRasterizer::compute});
   return kTable;
 }
 

@@ -16,6 +16,11 @@ GBufferPass::GBufferPass(const fg::PlanPass& pass) : params_(param_table().read(
 }
 
 void GBufferPass::prepare(fgvk::PrepareContext& context) {
+  shader_files_.clear();
+  if (params_.rasterizer == GBufferRasterizer::compute) {
+    visibility_.prepare(context, shader_files_);
+    return;
+  }
   auto vert = load_shader(context, "gbuffer/gbuffer.vert", shader_files_);
   auto frag = load_shader(context, "gbuffer/gbuffer.frag", shader_files_);
   const auto& depth = context.bindings.required_image(port::kDepth);
@@ -49,6 +54,10 @@ void GBufferPass::prepare(fgvk::PrepareContext& context) {
 }
 
 void GBufferPass::execute(fgvk::ExecuteContext& context) {
+  if (params_.rasterizer == GBufferRasterizer::compute) {
+    visibility_.execute(context);
+    return;
+  }
   const auto& depth = context.bindings.required_image(port::kDepth);
   const auto& normal = context.bindings.required_image(port::kNormal);
   const auto& albedo = context.bindings.required_image(port::kAlbedo);

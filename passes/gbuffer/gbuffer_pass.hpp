@@ -2,17 +2,25 @@
 // Pass type "gbuffer". Reflection in gbuffer_desc.cpp, runtime in gbuffer_pass.cpp,
 // shaders beside them.
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
 #include "antumbra/fg/param_table.hpp"
 #include "antumbra/fgvk/pass.hpp"
 #include "antumbra/gpu/handle.hpp"
+#include "visibility_gbuffer.hpp"
 
 namespace antumbra::passes {
 
+enum class GBufferRasterizer : std::uint8_t {
+  hardware,
+  compute,  // a visibility buffer (visibility_gbuffer.hpp)
+};
+
 struct GBufferParams {
   bool cull_back_faces = false;
+  GBufferRasterizer rasterizer = GBufferRasterizer::hardware;
 };
 
 class GBufferPass final : public fgvk::Pass {
@@ -30,6 +38,7 @@ class GBufferPass final : public fgvk::Pass {
   gpu::DescriptorSetLayout set_layout_;
   gpu::PipelineLayout layout_;
   gpu::Pipeline pipeline_;
+  VisibilityGBuffer visibility_;
   std::vector<std::string> shader_files_;
 };
 

@@ -84,7 +84,7 @@ TEST(BenchScenarios, FitShadowResourcesUsesTheFaceAndKeepsTheMinMapsFactor) {
 
 TEST(BenchScenarios, MovingTableHasThreeTechniquesPerLightCountOnBothRasterisers) {
   const auto moving = select_scenarios(builtin_scenarios(1.0), {"moving/"});
-  ASSERT_EQ(moving.size(), 36u);
+  ASSERT_EQ(moving.size(), 48u);
   for (const char* technique : {"hard", "pcss-11", "ssss-11"}) {
     for (const int lights : {16, 64, 256, 1024}) {
       const std::string name =
@@ -105,6 +105,11 @@ TEST(BenchScenarios, MovingTableHasThreeTechniquesPerLightCountOnBothRasterisers
       ASSERT_FALSE(screen.overrides.empty());
       EXPECT_EQ(screen.overrides.back().param, "resolution");
       EXPECT_EQ(screen.overrides.back().value, "screen");
+      // The same with the compute G-buffer: no raster pass left in the frame.
+      const auto& vis = named(moving, name + "/compute/screen/vis");
+      EXPECT_TRUE(has(vis, "gbuffer", "rasterizer", "compute"));
+      EXPECT_TRUE(has(vis, "point-shadow-atlas", "resolution", "screen"));
+      EXPECT_FALSE(has(screen, "gbuffer", "rasterizer", "compute"));
       const auto& s = named(moving, name);
       EXPECT_EQ(s.rasterizer, "hardware");
       EXPECT_EQ(s.table, "moving");

@@ -54,6 +54,12 @@ void enable_optional_features(const FeatureChain& supported, FeatureChain& enabl
   take(s12.shaderOutputViewportIndex, e12.shaderOutputViewportIndex);
   features.scalar_block_layout = take(s12.scalarBlockLayout, e12.scalarBlockLayout);
   take(s12.drawIndirectCount, e12.drawIndirectCount);
+  // Both or neither: 64-bit atomics need 64-bit integers in the shader.
+  if (s.shaderInt64 == VK_TRUE && s12.shaderBufferInt64Atomics == VK_TRUE) {
+    e.shaderInt64 = VK_TRUE;
+    e12.shaderBufferInt64Atomics = VK_TRUE;
+    features.int64_buffer_atomics = true;
+  }
   take(s12.samplerFilterMinmax, e12.samplerFilterMinmax);
   const bool indexing = s12.descriptorIndexing && s12.runtimeDescriptorArray &&
                         s12.descriptorBindingPartiallyBound &&

@@ -179,6 +179,11 @@ inline constexpr const char* kRasterizerFormat = "SHD004";  // atlas format vs t
 inline constexpr const char* kFaceStats = "SHD010";         // note: faces culled/drawn/cached
 }  // namespace shadow_atlas
 
+// gbuffer.
+namespace gbuffer {
+inline constexpr const char* kRasterizerFormat = "GB001";  // depth format vs the rasteriser
+}  // namespace gbuffer
+
 // light-layering.
 namespace layering {
 inline constexpr const char* kOverCap = "LY001";             // warning: layout needs more layers

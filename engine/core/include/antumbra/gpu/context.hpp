@@ -52,6 +52,7 @@ struct DeviceFeatures {
   bool multi_draw_indirect = false;
   bool scalar_block_layout = false;
   bool shader_draw_parameters = false;
+  bool int64_buffer_atomics = false;  // shaderInt64 + shaderBufferInt64Atomics
 };
 
 struct DeviceInfo {
