@@ -59,6 +59,8 @@ Scenario make(const std::string& table, const Technique& t, int kernel, unsigned
     // rows override it.
     s.overrides.push_back({"point-shadow-atlas", "rasterizer", s.rasterizer});
   }
+  // The G-buffer pinned likewise; the "/vis" rows set "compute".
+  s.overrides.push_back({"gbuffer", "rasterizer", "hardware"});
   return s;
 }
 
@@ -89,34 +91,9 @@ void add_dynamic_table(std::vector<Scenario>& out, double scale) {
   }
 }
 
-}  // namespace
-
-unsigned shadow_face_size(int lights, double scale) {
-  const double face = (lights <= 64 ? 1024.0 : 512.0) * scale;
-  return std::max(16u, static_cast<unsigned>(std::lround(face / 16.0)) * 16u);
-}
-
-std::vector<Scenario> builtin_scenarios(double scale) {
-  std::vector<Scenario> out;
-  for (const unsigned height : {720u, 1080u}) {
-    for (const auto& t : techniques()) {
-      if (t.kernels.empty()) {
-        out.push_back(make("table1", t, 0, height, 16, scale));
-      } else {
-        for (const int k : t.kernels) out.push_back(make("table1", t, k, height, 16, scale));
-      }
-    }
-  }
-  // Table 2 compares PCSS 5x5 + 11x11 with layered SSSS 11x11 (blocker search and min
-  // filter) at 1080p as lights grow.
-  for (const int lights : {1, 4, 8, 12, 16, 64, 256, 1024}) {
-    const std::string table = lights <= 16 ? "table2" : "lights";
-    for (const char* name : {"pcss", "ssss", "ssss-min"}) {
-      out.push_back(make(table, technique(name), 11, 1080, lights, scale));
-    }
-  }
-  // Moving lights: every light moves in the atrium; 1024 lights are the district's, 64
-  // of them moving.
+// Moving lights: every light moves in the atrium; 1024 lights are the district's, 64
+// of them moving.
+void add_moving_table(std::vector<Scenario>& out, double scale) {
   struct Variant {
     const char* technique;
     int kernel;
@@ -154,12 +131,43 @@ std::vector<Scenario> builtin_scenarios(double scale) {
         }
         if (raster.visibility) {
           s.name += "/vis";
-          s.overrides.push_back({"gbuffer", "rasterizer", "compute"});
+          for (auto& o : s.overrides) {
+            if (o.pass_type == "gbuffer" && o.param == "rasterizer") o.value = "compute";
+          }
         }
         out.push_back(std::move(s));
       }
     }
   }
+}
+
+}  // namespace
+
+unsigned shadow_face_size(int lights, double scale) {
+  const double face = (lights <= 64 ? 1024.0 : 512.0) * scale;
+  return std::max(16u, static_cast<unsigned>(std::lround(face / 16.0)) * 16u);
+}
+
+std::vector<Scenario> builtin_scenarios(double scale) {
+  std::vector<Scenario> out;
+  for (const unsigned height : {720u, 1080u}) {
+    for (const auto& t : techniques()) {
+      if (t.kernels.empty()) {
+        out.push_back(make("table1", t, 0, height, 16, scale));
+      } else {
+        for (const int k : t.kernels) out.push_back(make("table1", t, k, height, 16, scale));
+      }
+    }
+  }
+  // Table 2 compares PCSS 5x5 + 11x11 with layered SSSS 11x11 (blocker search and min
+  // filter) at 1080p as lights grow.
+  for (const int lights : {1, 4, 8, 12, 16, 64, 256, 1024}) {
+    const std::string table = lights <= 16 ? "table2" : "lights";
+    for (const char* name : {"pcss", "ssss", "ssss-min"}) {
+      out.push_back(make(table, technique(name), 11, 1080, lights, scale));
+    }
+  }
+  add_moving_table(out, scale);
   add_dynamic_table(out, scale);
   // Penumbra size: PCSS and layered SSSS (blocker search, min filter) as the lights grow
   // from 5 cm to 1 m, shadows

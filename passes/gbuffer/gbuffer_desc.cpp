@@ -5,6 +5,7 @@
 #include "common/plan_checks.hpp"
 #include "common/ports.hpp"
 #include "gbuffer_pass.hpp"
+#include "point_shadow_atlas/rasterizer_choice.hpp"
 
 namespace antumbra::passes {
 namespace {
@@ -75,6 +76,7 @@ fg::PassDesc GBufferPass::describe() {
   desc.params = param_table().descs();
   desc.port_use = &port_use;
   desc.check = &check;
+  desc.resolve = &resolve_gbuffer_rasterizer;
   return desc;
 }
 
@@ -89,15 +91,18 @@ const fg::ParamTable<GBufferParams>& GBufferPass::param_table() {
                &GBufferParams::cull_back_faces)
           .choice({.name = "rasterizer",
                    .type = fg::ParamType::enumeration,
-                   .default_value = "hardware",
-                   .choices = {"hardware", "compute"},
+                   .default_value = "auto",
+                   .choices = {"auto", "hardware", "compute"},
                    .description =
                        "Who draws the scene: the hardware rasteriser, or compute shaders "
                        "writing a visibility buffer (the nearest triangle per pixel, by 64-bit "
                        "atomics) resolved into the same images, for GPUs with few raster "
-                       "units; needs d32f depth (docs/technique.md, Compute G-buffer)."},
+                       "units; compute needs d32f depth. \"auto\" picks per device when the "
+                       "graph compiles (compute on NVIDIA Hopper GPUs, hardware elsewhere) and "
+                       "says why in note FG076 (docs/technique.md, Compute G-buffer)."},
                   &GBufferParams::rasterizer,
-                  {GBufferRasterizer::hardware, GBufferRasterizer::compute});
+                  {GBufferRasterizer::automatic, GBufferRasterizer::hardware,
+                   GBufferRasterizer::compute});
   return kTable;
 }
 

@@ -14,6 +14,7 @@
 namespace antumbra::passes {
 
 enum class GBufferRasterizer : std::uint8_t {
+  automatic,  // replaced when the graph compiles (resolve_gbuffer_rasterizer)
   hardware,
   compute,  // a visibility buffer (visibility_gbuffer.hpp)
 };

@@ -243,14 +243,72 @@ TEST(AtlasParams, AutoRasterizerChoosesByDeviceAndFormat) {
     const auto plan = compile_for(c.format, c.device);
     ASSERT_TRUE(plan.ok()) << c.format << "\n" << plan.diagnostics().to_text();
     EXPECT_EQ(access(plan.value()), c.atlas) << c.format;
-    const base::Diagnostic* note = plan.diagnostics().find("FG076");
-    ASSERT_NE(note, nullptr);
-    EXPECT_EQ(note->pointer, "/passes/1") << note->pointer;
+    // The atlas's note (the G-buffer at /passes/0 has its own).
+    const base::Diagnostic* note = nullptr;
+    for (const auto& d : plan.diagnostics()) {
+      if (d.code == "FG076" && d.pointer == "/passes/1") note = &d;
+    }
+    ASSERT_NE(note, nullptr) << plan.diagnostics().to_text();
     EXPECT_NE(note->message.find(c.says), std::string::npos) << note->message;
   }
   // A value written out is kept, whatever the device.
   const auto pinned = compile_for("d32f", h200, {{"rasterizer", "hardware"}});
   ASSERT_TRUE(pinned.ok());
   EXPECT_EQ(access(pinned.value()), fg::Access::depth_attachment);
-  EXPECT_EQ(pinned.diagnostics().find("FG076"), nullptr);
+  for (const auto& d : pinned.diagnostics()) {
+    EXPECT_FALSE(d.code == "FG076" && d.pointer == "/passes/1") << d.message;
+  }
+}
+
+// gbuffer's rasterizer "auto": compute (storage images, depth by copy) on Hopper GPUs,
+// hardware on CPU devices, unmeasured GPUs, without a device and for non-d32f depth.
+TEST(GBufferParams, AutoRasterizerChoosesByDeviceAndDepthFormat) {
+  const auto registry = passes::builtin_pass_registry();
+  const auto compile_for = [&](const std::string& depth, std::optional<fg::DeviceTraits> device,
+                               const nlohmann::json& params = nlohmann::json::object()) {
+    std::ifstream in(source_dir() / "data/graphs/hard.json");
+    auto json = nlohmann::json::parse(in);
+    json["resources"]["depth"]["format"] = depth;
+    for (auto& p : json["passes"]) {
+      if (p["type"] == "gbuffer") p["params"] = params;
+    }
+    fg::CompileOptions options;
+    options.viewport = {160, 90};
+    options.device = std::move(device);
+    return fg::compile_text(json.dump(2), "auto.json", registry.reflection(), options);
+  };
+  const fg::DeviceTraits h200{"NVIDIA H200", false, 0x10DE};
+  struct Case {
+    const char* depth;
+    std::optional<fg::DeviceTraits> device;
+    fg::Access normal;
+    const char* says;
+  };
+  for (const Case& c : {
+           Case{"d32f", std::nullopt, fg::Access::color_attachment, "no device"},
+           Case{"d32f", h200, fg::Access::storage_write, "NVIDIA H200 is an NVIDIA Hopper"},
+           Case{"d32f", fg::DeviceTraits{"llvmpipe (LLVM 15.0.6, 256 bits)", true, 0x10005},
+                fg::Access::color_attachment, "CPU device"},
+           Case{"d32f", fg::DeviceTraits{"NVIDIA GeForce RTX 4090", false, 0x10DE},
+                fg::Access::color_attachment, "was not measured"},
+           Case{"d16", h200, fg::Access::color_attachment, "not d32f"},
+       }) {
+    const auto plan = compile_for(c.depth, c.device);
+    ASSERT_TRUE(plan.ok()) << c.says << "\n" << plan.diagnostics().to_text();
+    const auto* normal = binding(plan.value(), "gbuffer", "normal");
+    ASSERT_NE(normal, nullptr);
+    EXPECT_EQ(normal->access, c.normal) << c.says;
+    const base::Diagnostic* note = plan.diagnostics().find("FG076");
+    ASSERT_NE(note, nullptr) << c.says;
+    EXPECT_NE(note->message.find(c.says), std::string::npos) << note->message;
+  }
+  // A value written out is kept; "compute" with d16 is refused where written.
+  const auto pinned = compile_for("d32f", h200, {{"rasterizer", "hardware"}});
+  ASSERT_TRUE(pinned.ok());
+  EXPECT_EQ(binding(pinned.value(), "gbuffer", "normal")->access, fg::Access::color_attachment);
+  const auto refused = compile_for("d16", h200, {{"rasterizer", "compute"}});
+  ASSERT_FALSE(refused.ok());
+  const base::Diagnostic* error = refused.diagnostics().find("GB001");
+  ASSERT_NE(error, nullptr) << refused.diagnostics().to_text();
+  EXPECT_EQ(error->pointer, "/passes/0/params/rasterizer");
 }
