@@ -2,10 +2,10 @@
 
 #include <string>
 
-#include "antumbra/gpu/commands.hpp"
 #include "antumbra/gpu/context.hpp"
 #include "antumbra/gpu/pipelines.hpp"
 #include "common/frame_resources.hpp"
+#include "common/own_buffer_sync.hpp"
 #include "common/ports.hpp"
 #include "visibility_interface.h"
 
@@ -13,9 +13,6 @@ namespace antumbra::passes {
 namespace {
 
 constexpr VkShaderStageFlags kCompute = VK_SHADER_STAGE_COMPUTE_BIT;
-constexpr VkAccessFlags2 kStorage =
-    VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
-
 const char* storage_format(VkFormat format) {
   switch (format) {
     case VK_FORMAT_R32G32B32A32_SFLOAT:
@@ -25,11 +22,6 @@ const char* storage_format(VkFormat format) {
     default:
       return "rgba8";
   }
-}
-
-void barrier(VkCommandBuffer cmd, VkBuffer buffer, VkPipelineStageFlags2 src,
-             VkAccessFlags2 src_access, VkPipelineStageFlags2 dst, VkAccessFlags2 dst_access) {
-  gpu::buffer_barrier(cmd, buffer, src, src_access, dst, dst_access);
 }
 
 }  // namespace
@@ -125,18 +117,12 @@ void VisibilityGBuffer::bind(fgvk::ExecuteContext& context, const ComputePipelin
 void VisibilityGBuffer::clear(fgvk::ExecuteContext& context) {
   const VkCommandBuffer cmd = context.cmd;
   // The previous frame's raster and resolve are done with both buffers.
-  for (VkBuffer b : {vis_.handle(), list_.handle()}) {
-    barrier(cmd, b, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT,
-            kStorage | VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
-            VK_ACCESS_2_TRANSFER_WRITE_BIT);
-  }
+  own_sync::after_all(cmd, {vis_, list_}, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+                      VK_ACCESS_2_TRANSFER_WRITE_BIT);
   vkCmdFillBuffer(cmd, vis_, 0, VK_WHOLE_SIZE, 0xFFFFFFFFu);
   const std::uint32_t header[4] = {0, shared::kVisBands, 1, 0};
   vkCmdUpdateBuffer(cmd, list_, 0, sizeof header, header);
-  for (VkBuffer b : {vis_.handle(), list_.handle()}) {
-    barrier(cmd, b, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-            VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, kStorage);
-  }
+  own_sync::transfer_to_compute(cmd, {vis_, list_});
 }
 
 void VisibilityGBuffer::raster(fgvk::ExecuteContext& context, std::uint32_t triangles) {
@@ -145,30 +131,29 @@ void VisibilityGBuffer::raster(fgvk::ExecuteContext& context, std::uint32_t tria
   bind(context, small_, triangles);
   vkCmdDispatch(cmd, group_count(triangles, shared::kVisGroup), 1, 1);
   context.gpu.end_label(cmd);
-  barrier(cmd, list_, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, kStorage,
-          VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT,
-          kStorage | VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT);
-  barrier(cmd, vis_, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, kStorage,
-          VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, kStorage);
+  // The large list is read as dispatch arguments too.
+  own_sync::barriers(cmd, {list_}, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                     own_sync::kStorageReadWrite,
+                     VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT,
+                     own_sync::kStorageReadWrite | VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT);
+  own_sync::compute_to_compute(cmd, {vis_});
   context.gpu.begin_label(cmd, context.pass.name + ".rasterLarge");
   bind(context, large_, triangles);
   vkCmdDispatchIndirect(cmd, list_, 0);
   context.gpu.end_label(cmd);
-  barrier(cmd, vis_, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, kStorage,
-          VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, kStorage);
+  own_sync::compute_to_compute(cmd, {vis_});
 }
 
 void VisibilityGBuffer::resolve(fgvk::ExecuteContext& context, std::uint32_t triangles) {
   const VkCommandBuffer cmd = context.cmd;
   context.gpu.begin_label(cmd, context.pass.name + ".resolve");
-  barrier(cmd, depth_, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT,
-          VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, kStorage);
+  own_sync::barriers(cmd, {depth_}, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT,
+                     VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, own_sync::kStorageReadWrite);
   bind(context, resolve_, triangles);
   vkCmdDispatch(cmd, group_count(extent_.width, shared::kVisResolveGroup),
                 group_count(extent_.height, shared::kVisResolveGroup), 1);
   context.gpu.end_label(cmd);
-  barrier(cmd, depth_, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, kStorage,
-          VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
+  own_sync::compute_to_copy(cmd, {depth_});
   const auto& depth = context.bindings.required_image(port::kDepth);
   VkBufferImageCopy region{};
   region.imageSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 0, 1};

@@ -12,7 +12,7 @@
 #include "common/frame_resources.hpp"
 #include "common/ports.hpp"
 #include "common/shadow_data.hpp"
-#include "own_buffer_sync.hpp"
+#include "common/own_buffer_sync.hpp"
 
 namespace antumbra::passes {
 namespace {

@@ -12,7 +12,7 @@
 #include "common/shadow_data.hpp"
 #include "compute_raster_interface.h"
 #include "face_decision_interface.h"
-#include "own_buffer_sync.hpp"
+#include "common/own_buffer_sync.hpp"
 
 namespace antumbra::passes {
 namespace {

@@ -1,7 +1,7 @@
 #pragma once
-// Barriers on point-shadow-atlas's own buffers (the compute rasteriser's scratch and the
-// face decision's lists), shared by compute_raster.cpp and face_decision.cpp. Graph
-// resources never go through these: the executor places their barriers.
+// Barriers on a pass's own buffers (scratch the pass creates and alone uses: the compute
+// shadow rasteriser's, the face decision's lists, the compute G-buffer's visibility
+// buffer). Graph resources never go through these: the executor places their barriers.
 
 #include <initializer_list>
 
