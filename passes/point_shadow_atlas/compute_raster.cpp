@@ -10,9 +10,9 @@
 #include "antumbra/gpu/context.hpp"
 #include "antumbra/gpu/pipelines.hpp"
 #include "common/frame_resources.hpp"
+#include "common/own_buffer_sync.hpp"
 #include "common/ports.hpp"
 #include "common/shadow_data.hpp"
-#include "common/own_buffer_sync.hpp"
 
 namespace antumbra::passes {
 namespace {

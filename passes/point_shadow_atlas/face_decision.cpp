@@ -8,11 +8,11 @@
 #include "antumbra/gpu/context.hpp"
 #include "antumbra/gpu/pipelines.hpp"
 #include "common/frame_resources.hpp"
+#include "common/own_buffer_sync.hpp"
 #include "common/ports.hpp"
 #include "common/shadow_data.hpp"
 #include "compute_raster_interface.h"
 #include "face_decision_interface.h"
-#include "common/own_buffer_sync.hpp"
 
 namespace antumbra::passes {
 namespace {
