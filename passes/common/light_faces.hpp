@@ -4,13 +4,18 @@
 // uv = clip.xy / clip.w * 0.5 + 0.5, depth = clip.z / clip.w in [0, 1].
 //  - Spot: a perspective face along the cone axis with half fov = min(outer angle,
 //    kMaxSpotHalfFovDegrees); clip.w = distance along the axis, depth as a cube face's.
-//  - Directional: an orthographic box along the sun direction, clip.w = 1 and depth
-//    linear in metres from the box's near plane. Its xy square is fitted around the
-//    bounding sphere of the camera frustum cut at `max_distance`, and its origin snapped
-//    to whole texels so that the map does not shimmer as the camera moves (docs/technique.md
-//    3, CSM notes; one cascade). Its depth range spans the sphere and every scene caster
-//    between it and the sun, so no caster is clipped by the near plane.
+//  - Directional: 1 to kMaxCascades orthographic boxes (cascades, one layer each) along
+//    the sun direction, clip.w = 1 and depth linear in metres from the boxes' common near
+//    plane. Cascade i's xy square is fitted around the bounding sphere of the camera
+//    frustum between PSSM split distances i and i + 1, and its origin snapped to whole
+//    texels so that the map does not shimmer as the camera moves or turns
+//    (docs/technique.md 3, "Cascaded shadow maps"). Every cascade shares one depth range,
+//    spanning all spheres and every scene caster between them and the sun, so no caster
+//    is clipped by the near plane and depths of different cascades compare in metres.
 // The face bases are only needed to be orthonormal: the atlas rasterises without culling.
+
+#include <span>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -52,8 +57,42 @@ struct DirectionalFit {
 };
 
 // `camera_view_proj`: the camera (Vulkan clip); `camera_near`/`camera_far`: its planes.
+// One box around the camera frustum from its near plane to `max_distance`.
 DirectionalFit fit_directional(const glm::vec3& direction, const glm::mat4& camera_view_proj,
                                float camera_near, float camera_far, float max_distance,
                                const scene::Aabb& scene_bounds, float face_size);
+
+inline constexpr int kMaxCascades = 4;
+
+// PSSM split distances (Zhang et al. 2006): split i of n between `near` and `far` blends
+// the logarithmic split near * (far / near)^(i / n) (lambda 1) with the uniform one
+// near + (far - near) * i / n (lambda 0). Returns n + 1 distances, the first `near` and the
+// last `far`; `count` is clamped to [1, kMaxCascades], `lambda` to [0, 1].
+std::vector<float> cascade_splits(float near, float far, int count, float lambda);
+
+struct CascadeSettings {
+  int count = 4;
+  float lambda = 0.75f;        // PSSM blend, 0 uniform .. 1 logarithmic
+  float max_distance = 40.0f;  // the last split (view depth, metres)
+};
+
+// One fitted box per cascade (cascade_splits over [camera_near, max_distance]), nearest
+// first, all with the same near plane and depth.
+std::vector<DirectionalFit> fit_cascades(const glm::vec3& direction,
+                                         const glm::mat4& camera_view_proj, float camera_near,
+                                         float camera_far, const CascadeSettings& cascades,
+                                         const scene::Aabb& scene_bounds, float face_size);
+
+// Which cascade a point is looked up in, as shadow_sampling.glsl's shadow_pick decides
+// (the CPU mirror the tests compare it with): the nearest whose square holds the point
+// kCascadeInset (of its half width) inside its edge; within `band` of that edge, the
+// next one too, with weight `blend` growing to 1 at the edge. index -1: outside all.
+inline constexpr float kCascadeInset = 0.02f;  // SHADOW_CASCADE_INSET
+struct CascadePick {
+  int index = -1;
+  int next = -1;
+  float blend = 0.0f;
+};
+CascadePick pick_cascade(std::span<const glm::mat4> cascades, float band, const glm::vec3& p);
 
 }  // namespace antumbra::passes::light_faces

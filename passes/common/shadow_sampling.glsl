@@ -6,7 +6,8 @@
 // Conventions (mirrored by passes/common/shadow_faces.cpp, tested there):
 //  - face k of a point light (0..5 = +X -X +Y -Y +Z -Z, the Vulkan cube-map orientation)
 //    lives at atlas layer ShadowLight.params.z + k; params.z < 0: the light has no faces;
-//    a spot or directional light has its one face at params.z (light_faces.hpp);
+//    a spot light has its one face at params.z, a directional light its cascades at
+//    params.z + 0..n-1 (light_faces.hpp), nearest first;
 //  - directional maps are orthographic: clip.w = 1, depth linear from the box's near
 //    plane (0) to its far plane (1, position_range.w metres away); `linear` is then the
 //    distance below the near plane in metres;
@@ -30,9 +31,18 @@
 //   ShadowCoord shadow_coord(mat4 face_view_proj, ShadowLight l, int layer, vec3 world_pos)
 //   vec2  shadow_atlas_uv(ShadowCoord c, vec2 face_uv)             clamped to the face
 //   float shadow_hard_coord(sampler2DArray atlas, ShadowCoord c)    1 lit, 0 shadowed
+//   int   shadow_cascade_count(ShadowLight l)                       1 unless directional
+//   ShadowLight shadow_face_light(ShadowLight l, mat4 face_view_proj) a cascade's own scale
 // Convenience, when the includer defines SHADOW_FACES (the name of its ShadowFace
 // array, e.g. `#define SHADOW_FACES shadow_faces`) before including this file:
+//   ShadowPick shadow_pick(ShadowLight l, vec3 world_pos)           face (and cascade blend)
 //   float shadow_hard(sampler2DArray atlas, ShadowLight l, vec3 world_pos, vec3 normal)
+//
+// Cascades (docs/technique.md 3, "Cascaded shadow maps"): a point is looked up in the
+// nearest cascade whose square holds it SHADOW_CASCADE_INSET inside its edge (in units
+// of the half width); within the light's blend band of that edge, ShadowPick.next names
+// the next cascade and ShadowPick.blend (0..1) how much of it to mix in. Points outside
+// the last cascade are lit, as they were beyond the one map before cascades.
 //
 // Bias: the atlas is rendered with slope-scaled raster bias; lookups add a normal offset
 // of SHADOW_NORMAL_OFFSET texels (world size of one texel at the receiver's distance)
@@ -75,6 +85,37 @@ uint shadow_cube_face(vec3 d) {
 }
 
 bool shadow_is_ortho(ShadowLight l) { return l.direction_type.w > 1.5; }
+
+// Filter taps near a cascade's edge would read clamped edge texels: a cascade is only
+// used where the point lies this far inside its square (fraction of the half width).
+#ifndef SHADOW_CASCADE_INSET
+#define SHADOW_CASCADE_INSET 0.02
+#endif
+
+int shadow_cascade_count(ShadowLight l) {
+  return shadow_is_ortho(l) ? clamp(int(l.projection.w), 1, 4) : 1;
+}
+
+float shadow_cascade_band(ShadowLight l) {
+  return shadow_is_ortho(l) ? fract(l.projection.w) : 0.0;
+}
+
+// The light as one of its faces sees it: a cascade's half width is 1 / |row 0| of its
+// orthographic matrix (shadow_data.h), so texel sizes, offsets and filter radii follow
+// the cascade the point is looked up in.
+ShadowLight shadow_face_light(ShadowLight l, mat4 face_view_proj) {
+  if (shadow_is_ortho(l)) {
+    vec3 row_x = vec3(face_view_proj[0][0], face_view_proj[1][0], face_view_proj[2][0]);
+    l.projection.x = 1.0 / max(length(row_x), 1e-12);
+  }
+  return l;
+}
+
+struct ShadowPick {
+  int layer;    // atlas layer, -1: none (no faces, or outside every cascade)
+  int next;     // the next cascade's layer to blend in, -1: none
+  float blend;  // its weight, 0..1
+};
 
 int shadow_face_layer(ShadowLight l, vec3 world_pos) {
   if (l.params.z < 0.0) return -1;
@@ -142,12 +183,36 @@ float shadow_hard_coord(sampler2DArray atlas, ShadowCoord c) {
 }
 
 #ifdef SHADOW_FACES
+ShadowPick shadow_pick(ShadowLight l, vec3 world_pos) {
+  ShadowPick pick = ShadowPick(shadow_face_layer(l, world_pos), -1, 0.0);
+  if (pick.layer < 0 || !shadow_is_ortho(l)) return pick;
+  int count = shadow_cascade_count(l);
+  float band = shadow_cascade_band(l);
+  for (int i = 0; i < count; ++i) {
+    int layer = pick.layer + i;
+    vec2 xy = abs((SHADOW_FACES[layer].view_proj * vec4(world_pos, 1.0)).xy);
+    float inside = 1.0 - max(xy.x, xy.y) - SHADOW_CASCADE_INSET;  // to the usable edge
+    if (inside <= 0.0) continue;
+    if (i + 1 < count && inside < band) {
+      return ShadowPick(layer, layer + 1, 1.0 - inside / band);
+    }
+    return ShadowPick(layer, -1, 0.0);
+  }
+  return ShadowPick(-1, -1, 0.0);
+}
+
 float shadow_hard(sampler2DArray atlas, ShadowLight l, vec3 world_pos, vec3 normal) {
-  vec3 p = shadow_offset_position(l, world_pos, normal,
+  ShadowPick pick = shadow_pick(l, world_pos);
+  if (pick.layer < 0) return 1.0;
+  mat4 view_proj = SHADOW_FACES[pick.layer].view_proj;
+  ShadowLight fl = shadow_face_light(l, view_proj);
+  vec3 p = shadow_offset_position(fl, world_pos, normal,
                                   shadow_face_texels(l, float(textureSize(atlas, 0).x)));
-  int layer = shadow_face_layer(l, p);
-  if (layer < 0) return 1.0;
-  return shadow_hard_coord(atlas, shadow_coord(SHADOW_FACES[layer].view_proj, l, layer, p));
+  if (!shadow_is_ortho(l)) {  // the offset may cross into another cube face
+    pick.layer = shadow_face_layer(l, p);
+    view_proj = SHADOW_FACES[pick.layer].view_proj;
+  }
+  return shadow_hard_coord(atlas, shadow_coord(view_proj, fl, pick.layer, p));
 }
 #endif
 

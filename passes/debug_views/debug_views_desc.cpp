@@ -78,6 +78,44 @@ fg::PassDesc AtlasViewPass::describe() {
   return desc;
 }
 
+fg::PassDesc CascadeViewPass::describe() {
+  fg::PassDesc desc;
+  desc.type = "cascade-view";
+  desc.description =
+      "Debug view: each pixel coloured by the directional light's shadow cascade it reads "
+      "(1 red, 2 green, 3 blue, 4 yellow; mixed across blend bands), grey outside every "
+      "cascade, darkened where the sun's hard shadow test says shadow.";
+  desc.ports = {
+      compute_input(port::kDepth, {Format::d32f, Format::d16}, "G-buffer depth.", "screen"),
+      compute_input(port::kNormal, {Format::rgba16f, Format::rgba32f},
+                    "G-buffer view-space normal (shading and the shadow test's offset).", "screen"),
+      compute_array_input(port::kAtlas, {Format::d32f, Format::d16, Format::r32f}, 1, 0,
+                          "Shadow atlas (point-shadow-atlas), for the hard shadow."),
+      compute_buffer_input(port::kShadowData, "Cascade matrices and the sun's slot."),
+      view_port("Cascade colours (same size as depth)."),
+  };
+  desc.ports.back().size_group = "screen";
+  desc.params = param_table().descs();
+  return desc;
+}
+
+const fg::ParamTable<CascadeViewParams>& CascadeViewPass::param_table() {
+  static const auto kTable = fg::ParamTable<CascadeViewParams>()
+                                 .add({.name = "showShadow",
+                                       .type = fg::ParamType::boolean,
+                                       .default_value = true,
+                                       .description = "Darken pixels in the sun's hard shadow."},
+                                      &CascadeViewParams::show_shadow)
+                                 .add({.name = "dim",
+                                       .type = fg::ParamType::number,
+                                       .default_value = 0.4,
+                                       .min = 0.0,
+                                       .max = 1.0,
+                                       .description = "Grey level outside every cascade."},
+                                      &CascadeViewParams::dim);
+  return kTable;
+}
+
 const fg::ParamTable<LayerViewParams>& LayerViewPass::param_table() {
   static const auto kTable =
       fg::ParamTable<LayerViewParams>()

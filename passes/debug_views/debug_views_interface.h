@@ -1,6 +1,6 @@
 // The debug views' shader interfaces (layer_view.comp, penumbra_view.comp,
-// atlas_view.comp), valid GLSL and C++: their push-constant blocks and binding numbers,
-// written once for the shaders, the set layouts and the descriptor writes
+// atlas_view.comp, cascade_view.comp), valid GLSL and C++: their push-constant blocks and binding
+// numbers, written once for the shaders, the set layouts and the descriptor writes
 // (docs/architecture.md, "One source for CPU and GPU").
 //
 // A stage has one push-constant block, so each shader defines its ANTUMBRA_*_VIEW_SHADER
@@ -27,6 +27,13 @@ ANTUMBRA_BINDING(kPenumbraViewOut, 1)
 ANTUMBRA_BINDING(kAtlasViewAtlas, 0)
 ANTUMBRA_BINDING(kAtlasViewShadowData, 1)
 ANTUMBRA_BINDING(kAtlasViewOut, 2)
+// cascade_view.comp
+ANTUMBRA_BINDING(kCascadeViewFrame, 0)
+ANTUMBRA_BINDING(kCascadeViewShadowData, 1)
+ANTUMBRA_BINDING(kCascadeViewDepth, 2)
+ANTUMBRA_BINDING(kCascadeViewNormal, 3)
+ANTUMBRA_BINDING(kCascadeViewAtlas, 4)
+ANTUMBRA_BINDING(kCascadeViewOut, 5)
 
 // layer_view.comp
 #if defined(__cplusplus) || defined(ANTUMBRA_LAYER_VIEW_SHADER)
@@ -54,6 +61,14 @@ ANTUMBRA_PUSH_CONSTANTS(AtlasViewPush) {
   uint columns;
   uint cell;    // cell size in output pixels
   uint layers;  // array layers of the atlas
+};
+#endif
+
+// cascade_view.comp
+#if defined(__cplusplus) || defined(ANTUMBRA_CASCADE_VIEW_SHADER)
+ANTUMBRA_PUSH_CONSTANTS(CascadeViewPush) {
+  uint show_shadow;  // 1: darken pixels the sun's hard shadow test puts in shadow
+  float dim;         // brightness of pixels outside every cascade
 };
 #endif
 

@@ -15,6 +15,7 @@ namespace {
 constexpr VkShaderStageFlags kCompute = VK_SHADER_STAGE_COMPUTE_BIT;
 
 using shared::AtlasViewPush;
+using shared::CascadeViewPush;
 using shared::LayerViewPush;
 using shared::PenumbraViewPush;
 
@@ -130,6 +131,40 @@ void AtlasViewPass::execute(fgvk::ExecuteContext& context) {
   descriptors.storage_image(shared::kAtlasViewOut, view.view, view.layout)
       .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, compute_.layout);
   const AtlasViewPush constants{first, faces, columns, cell, atlas.layers};
+  vkCmdPushConstants(cmd, compute_.layout, kCompute, 0, sizeof constants, &constants);
+  dispatch_groups(cmd, view.extent, ANTUMBRA_IMAGE_GROUP);
+}
+
+void CascadeViewPass::prepare(fgvk::PrepareContext& context) {
+  auto shader = load_shader(context, "debug_views/cascade_view.comp", shader_files_);
+  gpu::DescriptorSetLayoutBuilder builder;
+  builder.uniform_buffer(shared::kCascadeViewFrame, kCompute)
+      .storage_buffer(shared::kCascadeViewShadowData, kCompute)
+      .combined_image_sampler(shared::kCascadeViewDepth, kCompute)
+      .combined_image_sampler(shared::kCascadeViewNormal, kCompute)
+      .combined_image_sampler(shared::kCascadeViewAtlas, kCompute)
+      .storage_image(shared::kCascadeViewOut, kCompute);
+  compute_ = build_compute_pipeline(context, shader, builder, sizeof(CascadeViewPush));
+}
+
+void CascadeViewPass::execute(fgvk::ExecuteContext& context) {
+  const auto& b = context.bindings;
+  const auto& depth = b.required_image(port::kDepth);
+  const auto& normal = b.required_image(port::kNormal);
+  const auto& atlas = b.required_image(port::kAtlas);
+  const auto& view = b.required_image(port::kView);
+  const VkSampler nearest = context.samplers.nearest_clamp;
+  const VkCommandBuffer cmd = context.cmd;
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, compute_.pipeline);
+  gpu::PushDescriptors()
+      .uniform_buffer(shared::kCascadeViewFrame, context.frame.frame_uniforms)
+      .storage_buffer(shared::kCascadeViewShadowData, b.buffer(port::kShadowData)->buffer)
+      .combined_image_sampler(shared::kCascadeViewDepth, depth.view, nearest, depth.layout)
+      .combined_image_sampler(shared::kCascadeViewNormal, normal.view, nearest, normal.layout)
+      .combined_image_sampler(shared::kCascadeViewAtlas, atlas.array_view, nearest, atlas.layout)
+      .storage_image(shared::kCascadeViewOut, view.view, view.layout)
+      .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, compute_.layout);
+  const CascadeViewPush constants{params_.show_shadow ? 1u : 0u, params_.dim};
   vkCmdPushConstants(cmd, compute_.layout, kCompute, 0, sizeof constants, &constants);
   dispatch_groups(cmd, view.extent, ANTUMBRA_IMAGE_GROUP);
 }

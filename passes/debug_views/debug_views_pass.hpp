@@ -1,7 +1,8 @@
 #pragma once
 // Debug views selectable with `render --output`: pass types "layer-view" (lights
 // coloured by their shadow layer), "penumbra-view" (penumbra widths in false colour)
-// and "atlas-view" (shadow faces tiled into a grid). Reflection in
+// "atlas-view" (shadow faces tiled into a grid) and "cascade-view" (which cascade of
+// the sun's shadow map each pixel reads). Reflection in
 // debug_views_desc.cpp, runtime in debug_views_pass.cpp, shaders beside them. Each
 // writes one rgba8 storage image, so a graph declares them without side effects and
 // the compiler culls them unless their image is the output.
@@ -78,6 +79,27 @@ class AtlasViewPass final : public fgvk::Pass {
  private:
   AtlasViewParams params_;
   bool linearise_ = false;
+  ComputePipeline compute_;
+  std::vector<std::string> shader_files_;
+};
+
+struct CascadeViewParams {
+  bool show_shadow = true;
+  float dim = 0.4f;
+};
+
+class CascadeViewPass final : public fgvk::Pass {
+ public:
+  static fg::PassDesc describe();
+  static const fg::ParamTable<CascadeViewParams>& param_table();
+  explicit CascadeViewPass(const fg::PlanPass& pass) : params_(param_table().read(pass.params)) {}
+
+  void prepare(fgvk::PrepareContext& context) override;
+  void execute(fgvk::ExecuteContext& context) override;
+  [[nodiscard]] std::vector<std::string> shader_files() const override { return shader_files_; }
+
+ private:
+  CascadeViewParams params_;
   ComputePipeline compute_;
   std::vector<std::string> shader_files_;
 };

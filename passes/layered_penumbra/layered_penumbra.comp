@@ -43,6 +43,7 @@ layout(set = 0, binding = kPenumbraMinDepth) uniform sampler2DArray min_depth;
 layout(set = 0, binding = kPenumbraEsmOut, rgba8) uniform writeonly image2DArray esm_out;
 #endif
 
+#define SHADOW_FACES faces
 #include "../common/shadow_sampling.glsl"
 #include "../common/tile_cull.glsl"
 #include "penumbra_common.glsl"
@@ -109,6 +110,9 @@ void main() {
   // A half-resolution penumbra image keeps only the even pixels' widths: the others need
   // the hard bit and the tint (full resolution) but not the blocker estimate.
   bool want_width = penumbra_shift == 0u || all(equal(pixel & 1, ivec2(0)));
+  // Cascade blend bands choose per pixel (interleaved gradient noise, Jimenez 2014); the
+  // blur that follows turns the choice into a mix.
+  float dither = fract(52.9829189 * fract(dot(vec2(pixel), vec2(0.06711056, 0.00583715))));
 
   vec3 world = vec3(0.0);
   vec3 n_world = vec3(0.0);
@@ -134,7 +138,7 @@ void main() {
       if (!shadow_is_ortho(sl) && length(sl.position_range.xyz - world) >= sl.position_range.w) {
         continue;
       }
-      PenumbraSample s = estimate_penumbra(sl, world, n_world, want_width);
+      PenumbraSample s = estimate_penumbra(sl, world, n_world, want_width, dither);
       set_owner(layer, li);
       claimed |= bit;
       slot_set(layer, s.width, s.colour, s.esm);

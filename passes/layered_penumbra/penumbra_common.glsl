@@ -16,18 +16,24 @@ uint pack_colour(vec4 c) {
 }
 
 // `want_width` false: only the hard test, the tint and ESM (the width stays 0).
-PenumbraSample estimate_penumbra(ShadowLight sl, vec3 world, vec3 n_world, bool want_width) {
+// `dither` (0..1): in a cascade blend band the next cascade is used when its weight
+// exceeds it.
+PenumbraSample estimate_penumbra(ShadowLight light, vec3 world, vec3 n_world, bool want_width,
+                                 float dither) {
   PenumbraSample result;
   result.width = 0.0;
   result.in_shadow = false;
   result.colour = 0xFFFFFFFFu;
   result.esm = 1.0;
 
+  ShadowPick pick = shadow_pick(light, world);
+  if (pick.layer < 0) return result;
+  int layer = pick.next >= 0 && dither < pick.blend ? pick.next : pick.layer;
+  ShadowLight sl = shadow_face_light(light, faces[layer].view_proj);
   float light_size = sl.params.x * light_size_scale;
   float face_size = shadow_face_texels(sl, float(shadow_header.counts.z));
   vec3 p = shadow_offset_position(sl, world, n_world, face_size);
-  int layer = shadow_face_layer(sl, p);
-  if (layer < 0) return result;
+  if (!shadow_is_ortho(sl)) layer = shadow_face_layer(sl, p);  // offsets cross cube faces
   ShadowCoord c = shadow_coord(faces[layer].view_proj, sl, layer, p);
   if (!c.valid || c.depth >= 1.0) return result;
   result.in_shadow = shadow_hard_coord(atlas, c) < 0.5;

@@ -113,7 +113,13 @@ bool AtlasPlanner::wish_light(const scene::Scene& scene, std::uint32_t i, std::u
   const float near = std::min(settings.near_plane, 0.5f * range);
   out = shadow_light(light, range, near);
   if (!light.casts_shadows) return false;
-  const std::uint32_t face_count = light.type == scene::LightType::point ? sf::kFaceCount : 1u;
+  std::uint32_t face_count = light.type == scene::LightType::point ? sf::kFaceCount : 1u;
+  if (directional) {
+    // As many cascades as fit, at least one: a full atlas costs the far cascades first.
+    const std::uint32_t left = settings.layers > next_layer ? settings.layers - next_layer : 0u;
+    face_count = std::clamp(std::min(settings.sun_cascades, left), 1u,
+                            static_cast<std::uint32_t>(lf::kMaxCascades));
+  }
   if (next_layer + face_count > settings.layers) {
     frame_.unshadowed.push_back(light.name);
     return false;
@@ -131,13 +137,19 @@ bool AtlasPlanner::wish_light(const scene::Scene& scene, std::uint32_t i, std::u
   } else if (light.type == scene::LightType::spot) {
     if (settings.cull_faces && !lf::spot_may_be_visible(camera, light)) work.visible = 0u;
   } else {
-    // The sun's box follows the camera: fitted anew every frame.
-    const lf::DirectionalFit fit = lf::fit_directional(
+    // The sun's boxes follow the camera: fitted anew every frame.
+    const std::vector<lf::DirectionalFit> fits = lf::fit_cascades(
         light.direction, camera_view_proj, settings.camera_near, settings.camera_far,
-        settings.sun_max_distance, scene.bounds, static_cast<float>(settings.face_size));
-    out.position_range = glm::vec4(fit.near_point, fit.depth);
-    out.projection.x = fit.half_width;
-    frame_.faces[work.first].view_proj = fit.view_proj;
+        {.count = static_cast<int>(face_count),
+         .lambda = settings.sun_lambda,
+         .max_distance = settings.sun_max_distance},
+        scene.bounds, static_cast<float>(settings.face_size));
+    out.position_range = glm::vec4(fits.front().near_point, fits.front().depth);
+    out.projection.x = fits.front().half_width;
+    out.projection.w = encode_cascades(face_count, settings.sun_blend);
+    for (std::uint32_t c = 0; c < face_count; ++c) {
+      frame_.faces[work.first + c].view_proj = fits[c].view_proj;
+    }
   }
   const LayerState& head = layers_[work.first];
   work.must = directional || !settings.cache || head.owner != light.name ||

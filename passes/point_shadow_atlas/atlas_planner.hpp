@@ -1,6 +1,7 @@
 #pragma once
 // Vulkan-free per-frame bookkeeping of the point-shadow atlas: which light owns which
-// layers (allocated in light order: 6 per point light, 1 per spot or directional light;
+// layers (allocated in light order: 6 per point light, 1 per spot light, one per cascade of
+// the directional light, fewer when the atlas is nearly full;
 // ShadowLight.params.z = the first), which faces the camera may need (culling), which layers still
 // hold valid depth from an earlier frame (static caching), which ones dynamic meshes made
 // stale, which updates fit this frame's budget and so which faces to draw, and how (over a
@@ -35,8 +36,13 @@ struct AtlasSettings {
   // off: every face has face_size texels. `resolution.maximum` is set from face_size.
   bool adaptive_resolution = false;
   ResolutionSettings resolution;
-  // The directional light's map covers the camera frustum up to this distance (metres).
+  // The directional light's cascades cover the camera frustum up to this distance
+  // (metres), split by PSSM with blend `sun_lambda` (light_faces::fit_cascades); the
+  // lookups blend neighbouring cascades over `sun_blend` of a cascade's half width.
   float sun_max_distance = 40.0f;
+  std::uint32_t sun_cascades = 4;
+  float sun_lambda = 0.75f;
+  float sun_blend = 0.1f;
   float camera_near = 0.1f;  // the scene camera's planes, for the sun's fit
   float camera_far = 200.0f;
   // Faces that dynamic meshes touch keep their static depth in a cache and draw only the
@@ -61,7 +67,7 @@ struct SceneMotion {
 enum class FaceUpdate : std::uint8_t { all, over_cache, fill_cache };
 
 struct AtlasStats {
-  std::uint32_t total = 0;       // faces of shadowed lights (6 point, 1 spot, 1 sun)
+  std::uint32_t total = 0;       // faces of shadowed lights (6 point, 1 spot, 1-4 sun)
   std::uint32_t culled = 0;      // not needed for the visible image
   std::uint32_t rendered = 0;    // drawn this frame
   std::uint32_t cached = 0;      // needed and still valid from an earlier frame

@@ -242,6 +242,43 @@ void add_update_params(fg::ParamTable<PointShadowAtlasParams>& table) {
            &PointShadowAtlasParams::max_stale);
 }
 
+// The directional light's cascaded shadow maps (light_faces.hpp).
+void add_sun_params(fg::ParamTable<PointShadowAtlasParams>& table) {
+  table
+      .add({.name = "sunDistance",
+            .type = fg::ParamType::number,
+            .default_value = 40.0,
+            .min = 1.0,
+            .max = 10000.0,
+            .description = "The directional light's cascades cover the camera frustum up to this "
+                           "distance in metres (beyond it the sun is unshadowed)."},
+           &PointShadowAtlasParams::sun_distance)
+      .add({.name = "sunCascades",
+            .type = fg::ParamType::integer,
+            .default_value = 4,
+            .min = 1.0,
+            .max = 4.0,
+            .description = "Cascaded shadow maps of the directional light: one atlas layer "
+                           "each, nearest first (fewer when the atlas is full)."},
+           &PointShadowAtlasParams::sun_cascades)
+      .add({.name = "sunSplitLambda",
+            .type = fg::ParamType::number,
+            .default_value = 0.75,
+            .min = 0.0,
+            .max = 1.0,
+            .description = "PSSM split blend between cascades: 0 uniform, 1 logarithmic "
+                           "split distances."},
+           &PointShadowAtlasParams::sun_split_lambda)
+      .add({.name = "sunCascadeBlend",
+            .type = fg::ParamType::number,
+            .default_value = 0.1,
+            .min = 0.0,
+            .max = 0.45,
+            .description = "Band at a cascade's edge, as a fraction of its half width, over "
+                           "which lookups blend into the next cascade (0: a hard switch)."},
+           &PointShadowAtlasParams::sun_cascade_blend);
+}
+
 }  // namespace
 
 const fg::ParamTable<PointShadowAtlasParams>& PointShadowAtlasPass::param_table() {
@@ -255,15 +292,7 @@ const fg::ParamTable<PointShadowAtlasParams>& PointShadowAtlasPass::param_table(
               .max = 10.0,
               .description = "Near plane of every face in metres (capped at half the range)."},
              &PointShadowAtlasParams::near_plane)
-        .add({.name = "sunDistance",
-              .type = fg::ParamType::number,
-              .default_value = 40.0,
-              .min = 1.0,
-              .max = 10000.0,
-              .description =
-                  "The directional light's orthographic map covers the camera frustum up "
-                  "to this distance in metres (one cascade; beyond it the sun is unshadowed)."},
-             &PointShadowAtlasParams::sun_distance)
+
         .add({.name = "depthBias",
               .type = fg::ParamType::number,
               .default_value = 2.0,
@@ -307,6 +336,7 @@ const fg::ParamTable<PointShadowAtlasParams>& PointShadowAtlasPass::param_table(
                             "forces the fallback of one draw per face into a single-layer view."},
             &PointShadowAtlasParams::layered_draw);
     add_rasterizer_param(table);
+    add_sun_params(table);
     add_face_choice_params(table);
     add_update_params(table);
     return table;

@@ -66,6 +66,9 @@ PointShadowAtlasPass::PointShadowAtlasPass(const fg::PlanPass& pass)
     : params_(param_table().read(pass.params)) {
   settings_.near_plane = params_.near_plane;
   settings_.sun_max_distance = params_.sun_distance;
+  settings_.sun_cascades = params_.sun_cascades;
+  settings_.sun_lambda = params_.sun_split_lambda;
+  settings_.sun_blend = params_.sun_cascade_blend;
   settings_.cull_faces = params_.cull_faces;
   settings_.cache = params_.cache;
   settings_.adaptive_resolution = params_.resolution == FaceResolution::screen;
@@ -101,8 +104,13 @@ void PointShadowAtlasPass::prepare(fgvk::PrepareContext& context) {
 
   shader_files_.clear();
   gpu::Fnv1a64 key;
-  const float shape[] = {params_.depth_bias, params_.slope_bias, settings_.near_plane,
-                         settings_.sun_max_distance};
+  const float shape[] = {params_.depth_bias,
+                         params_.slope_bias,
+                         settings_.near_plane,
+                         settings_.sun_max_distance,
+                         settings_.sun_lambda,
+                         settings_.sun_blend,
+                         static_cast<float>(settings_.sun_cascades)};
   const std::uint32_t flags[] = {settings_.layers,
                                  settings_.face_size,
                                  settings_.cull_faces,

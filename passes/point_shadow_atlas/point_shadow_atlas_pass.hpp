@@ -38,6 +38,9 @@ enum class FaceResolution { fixed, screen };
 struct PointShadowAtlasParams {
   float near_plane = 0.05f;
   float sun_distance = 40.0f;
+  std::uint32_t sun_cascades = 4;
+  float sun_split_lambda = 0.75f;
+  float sun_cascade_blend = 0.1f;
   float depth_bias = 2.0f;
   float slope_bias = 1.75f;
   bool cull_faces = true;

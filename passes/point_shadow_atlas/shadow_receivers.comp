@@ -42,7 +42,9 @@ float unordered(uint u) {
 // The faces of light `l` the point `p` may be looked up in (bit k: face k).
 uint faces_of(ShadowLight l, vec3 p) {
   float type = l.direction_type.w;
-  if (type > 1.5) return 1u;  // the sun's one map covers every visible pixel
+  // Every cascade of the sun: which one a pixel reads depends on the fit, and the
+  // cascades fitted around the camera frustum have visible receivers by construction.
+  if (type > 1.5) return (1u << uint(clamp(int(l.projection.w), 1, 4))) - 1u;
   vec3 d = p - l.position_range.xyz;
   float reach = l.position_range.w * (1.0 + kReceiverMargin);
   if (dot(d, d) > reach * reach) return 0u;

@@ -15,6 +15,9 @@
 #define ANTUMBRA_TILED_SHADOW_FILTER_GLSL
 
 #include "../interface/shared/shadow_data.h"
+#ifndef SHADOW_FACES
+#define SHADOW_FACES shadow_faces
+#endif
 #include "../common/shadow_sampling.glsl"
 
 // A receiver in one atlas face, with what the filters need beyond ShadowCoord.
@@ -38,15 +41,14 @@ vec3 filter_project(mat4 view_proj, vec3 p) {
   return vec3(clip.xy / clip.w * 0.5 + 0.5, clip.z / clip.w);
 }
 
-// False when the light has no atlas faces or the point lies in front of the near plane:
-// the caller treats the point as lit. Face choice and projection are shadow_sampling.glsl's.
-bool filter_coord(uint light_index, vec3 p_world, vec3 n_world, out FilterCoord c) {
+// False when the point lies in front of the face's near plane or outside its square
+// (orthographic): the caller treats the point as lit. `layer` is shadow_pick's (face
+// choice, cascades); projection is shadow_sampling.glsl's.
+bool filter_coord(ShadowLight light, int layer, vec3 p_world, vec3 n_world, out FilterCoord c) {
   c = FilterCoord(vec2(0.0), 0.0, 0.0, vec2(0.0), 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 1.0, false);
-  if (light_index >= ANTUMBRA_MAX_SHADOW_LIGHTS) return false;
-  ShadowLight sl = shadow_lights[light_index];
-  int layer = shadow_face_layer(sl, p_world);
   if (layer < 0) return false;
   mat4 view_proj = shadow_faces[layer].view_proj;
+  ShadowLight sl = shadow_face_light(light, view_proj);
   ShadowCoord base = shadow_coord(view_proj, sl, layer, p_world);
   if (!base.valid) return false;
   c.uv = base.uv;

@@ -38,13 +38,24 @@ layout(local_size_x = TILE_SIZE, local_size_y = TILE_SIZE) in;
 
 // Shadow term of one light at a shaded point, by mode. World-space inputs.
 #if HAS_ATLAS
-float atlas_shadow(uint index, vec3 p_world, vec3 n_world, int mode) {
+float atlas_shadow_face(ShadowLight sl, int layer, vec3 p_world, vec3 n_world, int mode) {
   FilterCoord c;
-  if (!filter_coord(index, p_world, n_world, c)) return 1.0;
+  if (!filter_coord(sl, layer, p_world, n_world, c)) return 1.0;
   if (mode == 1) return filter_hard(c);
   if (mode == 2) return filter_pcf(c, KERNEL, 1.0);
-  float size = shadow_lights[index].params.x * light_size_scale;
-  return filter_pcss(c, size);
+  return filter_pcss(c, sl.params.x * light_size_scale);
+}
+
+// Within a cascade blend band both cascades are filtered and mixed, so no seam shows
+// where the sun's map changes resolution.
+float atlas_shadow(uint index, vec3 p_world, vec3 n_world, int mode) {
+  if (index >= ANTUMBRA_MAX_SHADOW_LIGHTS) return 1.0;
+  ShadowLight sl = shadow_lights[index];
+  ShadowPick pick = shadow_pick(sl, p_world);
+  if (pick.layer < 0) return 1.0;
+  float value = atlas_shadow_face(sl, pick.layer, p_world, n_world, mode);
+  if (pick.next < 0) return value;
+  return mix(value, atlas_shadow_face(sl, pick.next, p_world, n_world, mode), pick.blend);
 }
 #endif
 

@@ -120,6 +120,9 @@ class AtlasGpuTest : public gpu::testing::GpuTest {
     return c;
   }
 
+  std::vector<glm::vec4> run_sampling_check(const std::vector<std::byte>& data,
+                                            const std::vector<glm::vec4>& points);
+
   // Depth of one atlas layer, one float per texel.
   std::vector<float> read_layer(std::uint32_t layer) {
     std::vector<float> texels(std::size_t{kFace} * kFace);

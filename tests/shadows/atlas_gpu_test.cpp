@@ -6,6 +6,12 @@
 
 #include "atlas_gpu_fixture.hpp"
 
+#include <algorithm>
+#include <cmath>
+
+#include "common/light_faces.hpp"
+#include "point_shadow_atlas/atlas_planner.hpp"
+
 TEST_F(AtlasGpuTest, RendersAtriumAndFloorDepthIsAnalytic) {
   load();
   const Counts c = frame();
@@ -84,6 +90,51 @@ TEST_F(AtlasGpuTest, TooSmallShadowDataIsACompilerError) {
   EXPECT_GT(d->line, 0);
 }
 
+// Runs tests/shadows/sampling_check.comp over `points` with the shadowData contents `data`.
+std::vector<glm::vec4> AtlasGpuTest::run_sampling_check(const std::vector<std::byte>& data,
+                                                        const std::vector<glm::vec4>& points) {
+  const VkDeviceSize data_bytes = data.size();
+  const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+  auto data_buffer =
+      gpu::Buffer::create(ctx(), data_bytes, storage, gpu::MemoryUsage::upload, "t.data");
+  std::memcpy(data_buffer.mapped(), data.data(), data_bytes);
+  const VkDeviceSize point_bytes = points.size() * sizeof(glm::vec4);
+  auto point_buffer =
+      gpu::Buffer::create(ctx(), point_bytes, storage, gpu::MemoryUsage::upload, "t.points");
+  std::memcpy(point_buffer.mapped(), points.data(), point_bytes);
+  auto results =
+      gpu::Buffer::create(ctx(), point_bytes, storage, gpu::MemoryUsage::readback, "t.results");
+
+  gpu::ShaderRequest request;
+  request.path = source_dir() / "tests/shadows/sampling_check.comp";
+  auto binary = shaders_->compile(request);
+  EXPECT_TRUE(binary.ok());
+  if (!binary.ok()) return {};
+  auto module = gpu::create_shader_module(ctx(), binary->spirv, "sampling_check");
+  auto set_layout = gpu::DescriptorSetLayoutBuilder()
+                        .storage_buffer(0, VK_SHADER_STAGE_COMPUTE_BIT)
+                        .storage_buffer(1, VK_SHADER_STAGE_COMPUTE_BIT)
+                        .storage_buffer(2, VK_SHADER_STAGE_COMPUTE_BIT)
+                        .build(ctx(), "sampling_check.set");
+  const std::array<VkDescriptorSetLayout, 1> sets{set_layout};
+  auto layout = gpu::create_pipeline_layout(ctx(), sets, {}, "sampling_check.layout");
+  auto pipeline = gpu::create_compute_pipeline(ctx(), layout, module, "sampling_check");
+  ctx().submit_immediate([&](VkCommandBuffer cmd) {
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
+    gpu::PushDescriptors()
+        .storage_buffer(0, data_buffer)
+        .storage_buffer(1, point_buffer)
+        .storage_buffer(2, results)
+        .push(ctx(), cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout);
+    vkCmdDispatch(cmd, static_cast<std::uint32_t>((points.size() + 63) / 64), 1, 1);
+    gpu::buffer_barrier(cmd, results.handle(), VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                        VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT,
+                        VK_ACCESS_2_HOST_READ_BIT);
+  });
+  const auto* out = reinterpret_cast<const glm::vec4*>(results.mapped());
+  return {out, out + points.size()};
+}
+
 TEST_F(AtlasGpuTest, SamplingIncludeAgreesWithCpuFaceMath) {
   // One light, its six faces, and points all round it.
   const glm::vec3 light(1.0f, 2.0f, -1.5f);
@@ -107,43 +158,8 @@ TEST_F(AtlasGpuTest, SamplingIncludeAgreesWithCpuFaceMath) {
     const glm::vec3 d(std::cos(a) * std::cos(b), std::sin(b * 1.7f), std::sin(a) * std::cos(b));
     points.emplace_back(light + d * (0.2f + 3.5f * static_cast<float>(i % 17) / 17.0f), 1.0f);
   }
-  const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
-  auto data_buffer =
-      gpu::Buffer::create(ctx(), data_bytes, storage, gpu::MemoryUsage::upload, "t.data");
-  std::memcpy(data_buffer.mapped(), data.data(), data_bytes);
-  const VkDeviceSize point_bytes = points.size() * sizeof(glm::vec4);
-  auto point_buffer =
-      gpu::Buffer::create(ctx(), point_bytes, storage, gpu::MemoryUsage::upload, "t.points");
-  std::memcpy(point_buffer.mapped(), points.data(), point_bytes);
-  auto results =
-      gpu::Buffer::create(ctx(), point_bytes, storage, gpu::MemoryUsage::readback, "t.results");
-
-  gpu::ShaderRequest request;
-  request.path = source_dir() / "tests/shadows/sampling_check.comp";
-  auto binary = shaders_->compile(request);
-  ASSERT_TRUE(binary.ok());
-  auto module = gpu::create_shader_module(ctx(), binary->spirv, "sampling_check");
-  auto set_layout = gpu::DescriptorSetLayoutBuilder()
-                        .storage_buffer(0, VK_SHADER_STAGE_COMPUTE_BIT)
-                        .storage_buffer(1, VK_SHADER_STAGE_COMPUTE_BIT)
-                        .storage_buffer(2, VK_SHADER_STAGE_COMPUTE_BIT)
-                        .build(ctx(), "sampling_check.set");
-  const std::array<VkDescriptorSetLayout, 1> sets{set_layout};
-  auto layout = gpu::create_pipeline_layout(ctx(), sets, {}, "sampling_check.layout");
-  auto pipeline = gpu::create_compute_pipeline(ctx(), layout, module, "sampling_check");
-  ctx().submit_immediate([&](VkCommandBuffer cmd) {
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
-    gpu::PushDescriptors()
-        .storage_buffer(0, data_buffer)
-        .storage_buffer(1, point_buffer)
-        .storage_buffer(2, results)
-        .push(ctx(), cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout);
-    vkCmdDispatch(cmd, static_cast<std::uint32_t>((points.size() + 63) / 64), 1, 1);
-    gpu::buffer_barrier(cmd, results.handle(), VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                        VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT,
-                        VK_ACCESS_2_HOST_READ_BIT);
-  });
-  const auto* out = reinterpret_cast<const glm::vec4*>(results.mapped());
+  const std::vector<glm::vec4> out = run_sampling_check(data, points);
+  ASSERT_EQ(out.size(), points.size());
   for (std::size_t i = 0; i < points.size(); ++i) {
     const glm::vec3 p(points[i]);
     const std::uint32_t face = sf::cube_face(p - light);
@@ -158,3 +174,61 @@ TEST_F(AtlasGpuTest, SamplingIncludeAgreesWithCpuFaceMath) {
     EXPECT_NEAR(out[i].w, s.depth, 1e-4f) << i;
   }
 }
+
+namespace {
+
+// A sun's cascades as the planner fits them for the atrium camera.
+TEST_F(AtlasGpuTest, CascadePickAgreesWithCpuMirror) {
+  scene::Scene sun_scene = scene_;
+  sun_scene.lights.resize(1);
+  sun_scene.lights[0].type = scene::LightType::directional;
+  sun_scene.lights[0].direction = glm::normalize(glm::vec3(-0.3f, -1.0f, 0.2f));
+  passes::AtlasPlanner planner;
+  passes::AtlasSettings settings;
+  settings.layers = 4;
+  settings.face_size = 1024;
+  settings.sun_max_distance = 30.0f;
+  settings.camera_near = sun_scene.camera.near;
+  settings.camera_far = sun_scene.camera.far;
+  const glm::mat4 view_proj = sun_scene.camera.view_projection(16.0f / 9.0f);
+  const passes::AtlasFrame& frame = planner.plan(sun_scene, view_proj, 1, 0, settings);
+  ASSERT_EQ(std::floor(frame.lights[0].projection.w), 4.0f);
+  std::vector<std::byte> data(passes::shadow_data_bytes(4));
+  std::memcpy(data.data() + passes::kShadowLightsOffset, frame.lights.data(),
+              sizeof(passes::ShadowLight));
+  std::memcpy(data.data() + passes::kShadowFacesOffset, frame.faces.data(),
+              4 * sizeof(passes::ShadowFace));
+  // Points through the camera frustum out past the last cascade.
+  std::vector<glm::vec4> points;
+  const glm::mat4 inverse = glm::inverse(view_proj);
+  for (int i = 0; i < 1024; ++i) {
+    const float x = -1.0f + 2.0f * static_cast<float>(i % 32) / 31.0f;
+    const float row = std::floor(static_cast<float>(i) / 32.0f);
+    const float d = 0.2f * std::pow(300.0f, row / 31.0f);  // 0.2..60 m
+    const float z = sun_scene.camera.far * (d - sun_scene.camera.near) /
+                    (d * (sun_scene.camera.far - sun_scene.camera.near));
+    const glm::vec4 h = inverse * glm::vec4(x, 0.37f * x, std::clamp(z, 0.0f, 1.0f), 1.0f);
+    points.emplace_back(glm::vec3(h) / h.w, 1.0f);
+  }
+  const std::vector<glm::vec4> out = run_sampling_check(data, points);
+  ASSERT_EQ(out.size(), points.size());
+  std::vector<glm::mat4> cascades;
+  for (std::uint32_t c = 0; c < 4; ++c) cascades.push_back(frame.faces[c].view_proj);
+  const float band = frame.lights[0].projection.w - 4.0f;
+  int seen[5] = {};
+  int blended = 0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const auto pick = passes::light_faces::pick_cascade(cascades, band, glm::vec3(points[i]));
+    // Points right at a band's edge may round either way: allow a tiny blend mismatch.
+    ASSERT_EQ(static_cast<int>(out[i].x), pick.index) << i;
+    EXPECT_EQ(static_cast<int>(out[i].y), pick.next) << i;
+    EXPECT_NEAR(out[i].z, pick.blend, 1e-3f) << i;
+    ++seen[pick.index + 1];
+    blended += pick.next >= 0 ? 1 : 0;
+  }
+  for (int c = 0; c < 4; ++c) EXPECT_GT(seen[c + 1], 0) << "cascade " << c << " never picked";
+  EXPECT_GT(seen[0], 0) << "points beyond the last cascade";
+  EXPECT_GT(blended, 0) << "blend bands";
+}
+
+}  // namespace

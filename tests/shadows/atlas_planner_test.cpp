@@ -215,7 +215,8 @@ TEST(PointShadowAtlasReflection, PortsAndParams) {
 }
 
 TEST(AtlasPlanner, LayersAreAllocatedByLightType) {
-  // Point 6 layers, spot 1, the sun 1, in light order; the type is passed to consumers.
+  // Point 6 layers, spot 1, the sun one per cascade, in light order; the type is passed
+  // to consumers.
   scene::Scene s = atrium();
   s.lights.resize(3);
   s.lights[1].type = scene::LightType::spot;
@@ -227,26 +228,36 @@ TEST(AtlasPlanner, LayersAreAllocatedByLightType) {
   s.lights.push_back(s.lights[0]);
   s.lights[3].name = "last point";
   AtlasPlanner planner;
-  AtlasSettings st = settings(14);
+  AtlasSettings st = settings(17);
   st.cull_faces = false;
   const auto& f = planner.plan(s, camera_of(s), 1, 0, st);
   EXPECT_EQ(f.lights[0].params.z, 0.0f);
   EXPECT_EQ(f.lights[1].params.z, 6.0f);
   EXPECT_EQ(f.lights[2].params.z, 7.0f);
-  EXPECT_EQ(f.lights[3].params.z, 8.0f);
-  EXPECT_EQ(f.stats.total, 14u);
+  EXPECT_EQ(f.lights[3].params.z, 11.0f);
+  EXPECT_EQ(f.stats.total, 17u);
   EXPECT_EQ(f.lights[0].direction_type.w, passes::kLightTypePoint);
   EXPECT_EQ(f.lights[1].direction_type.w, passes::kLightTypeSpot);
   EXPECT_EQ(f.lights[2].direction_type.w, passes::kLightTypeDirectional);
   EXPECT_NEAR(f.lights[1].projection.x, std::tan(glm::radians(30.0f)), 1e-6f);
   EXPECT_NEAR(f.lights[2].params.x, std::tan(glm::radians(0.5f)), 1e-7f);  // tan(angle)
   EXPECT_GT(f.lights[2].projection.x, 0.0f);                               // half width
-  EXPECT_EQ(f.faces[7].info.x, 2u);
+  EXPECT_NEAR(f.lights[2].projection.w, 4.1f, 1e-6f) << "4 cascades, blend band 0.1";
+  EXPECT_EQ(f.lights[0].projection.w, 0.0f) << "only the sun has cascades";
+  for (std::uint32_t c = 0; c < 4; ++c) {
+    EXPECT_EQ(f.faces[7 + c].info.x, 2u);
+    EXPECT_EQ(f.faces[7 + c].info.y, c);
+  }
   // One layer short: the last point light goes unshadowed, the others keep theirs.
-  const auto& g = planner.plan(s, camera_of(s), 1, 1, settings(13));
+  const auto& g = planner.plan(s, camera_of(s), 1, 1, settings(16));
   EXPECT_EQ(g.lights[3].params.z, -1.0f);
   ASSERT_EQ(g.unshadowed.size(), 1u);
   EXPECT_EQ(g.unshadowed[0], "last point");
+  // Two layers left for the sun: it keeps two cascades rather than losing its shadow.
+  const auto& h = planner.plan(s, camera_of(s), 1, 2, settings(9));
+  EXPECT_EQ(h.lights[2].params.z, 7.0f);
+  EXPECT_EQ(std::floor(h.lights[2].projection.w), 2.0f);
+  EXPECT_EQ(h.faces[8].info.x, 2u);
 }
 
 TEST(AtlasPlanner, SunIsRefittedWhenTheCameraMoves) {
@@ -256,10 +267,10 @@ TEST(AtlasPlanner, SunIsRefittedWhenTheCameraMoves) {
   s.lights[0].direction = {0.0f, -1.0f, 0.0f};
   AtlasPlanner planner;
   planner.plan(s, camera_of(s), 1, 0, settings(6));
-  EXPECT_EQ(planner.plan(s, camera_of(s), 1, 1, settings(6)).stats.cached, 1u);
+  EXPECT_EQ(planner.plan(s, camera_of(s), 1, 1, settings(6)).stats.cached, 4u);
   s.camera.position += glm::vec3(3.0f, 0.0f, 0.0f);
   s.camera.target += glm::vec3(3.0f, 0.0f, 0.0f);
-  EXPECT_EQ(planner.plan(s, camera_of(s), 1, 2, settings(6)).stats.rendered, 1u);
+  EXPECT_EQ(planner.plan(s, camera_of(s), 1, 2, settings(6)).stats.rendered, 4u);
 }
 
 // Receiver culling: the GPU decides what is drawn, the planner hands it every visible face

@@ -1,7 +1,9 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 // Runs shadow_sampling.glsl's face selection and projection on test points so that the
-// CPU mirror (shadow_faces.cpp) can be compared with it.
+// CPU mirrors (shadow_faces.cpp, light_faces.cpp's pick_cascade) can be compared with it.
+// Results: layer, u, v, depth (-1: invalid); directional lights: layer, the blended
+// cascade's layer (-1: none), its weight, depth.
 layout(local_size_x = 64) in;
 
 #include "interface/shared/shadow_data.h"
@@ -22,7 +24,12 @@ void main() {
   if (i >= points.length()) return;
   ShadowLight l = shadow_lights[0];
   vec3 p = points[i].xyz;
-  int layer = shadow_face_layer(l, p);
+  ShadowPick pick = shadow_pick(l, p);
+  int layer = pick.layer;
   ShadowCoord c = shadow_coord(shadow_faces[max(layer, 0)].view_proj, l, layer, p);
-  results[i] = vec4(float(layer), c.uv, c.valid ? c.depth : -1.0);
+  if (shadow_is_ortho(l)) {
+    results[i] = vec4(float(layer), float(pick.next), pick.blend, c.valid ? c.depth : -1.0);
+  } else {
+    results[i] = vec4(float(layer), c.uv, c.valid ? c.depth : -1.0);
+  }
 }

@@ -24,9 +24,11 @@ struct ShadowHeader {
 };
 
 // A light's face count follows from its type: point 6 (cube faces at first + 0..5),
-// spot 1 (a perspective face along its axis), directional 1 (an orthographic map).
-// Directional lights have no position: position_range holds a point on the near plane
-// of their box and its depth (far - near), params.y = 0, and depth is linear in metres.
+// spot 1 (a perspective face along its axis), directional 1-4 (orthographic cascades,
+// nearest first, count in projection.w). Directional lights have no position:
+// position_range holds a point on the common near plane of their boxes and their common
+// depth (far - near), params.y = 0, and depth is linear in metres. Each cascade's half
+// width is 1 / |row 0 of its face's view_proj| (shadow_sampling.glsl, shadow_face_light).
 struct ShadowLight {
   // World-space position, range (= far plane of its faces).
   vec4 position_range ANTUMBRA_INIT(vec4(0.0f));
@@ -39,12 +41,14 @@ struct ShadowLight {
   // (times distance), directional half width. y the light's face size in texels and z
   // that over the atlas's face size: its faces fill the square [0, z) of uv at the
   // origin of their layers (per-light resolution; 0 from producers that predate it).
+  // w: directional lights, cascade count + blend band (a fraction of a cascade's half
+  // width, < 0.5; common/shadow_data.hpp encode_cascades); 0 for other lights.
   vec4 projection ANTUMBRA_INIT(vec4(1.0f, 0.0f, 0.0f, 0.0f));
 };
 
 struct ShadowFace {
   mat4 view_proj ANTUMBRA_INIT(mat4(1.0f));  // world -> face clip space (Vulkan depth 0..1)
-  // x light index, y face (0..5: +X -X +Y -Y +Z -Z; 0 for spot/sun), z valid (0/1),
+  // x light index, y face (0..5: +X -X +Y -Y +Z -Z; 0 spot; cascade for the sun), z valid,
   // w drawn this frame (0/1; derived data must be redone).
   uvec4 info ANTUMBRA_INIT(uvec4(0u));
 };
