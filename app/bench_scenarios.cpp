@@ -51,8 +51,8 @@ Scenario make(const std::string& table, const Technique& t, int kernel, unsigned
   // measurements did; the many-light table measures the cached steady state. The moving
   // table caches too: what stands still stays cached, a moving light's faces change
   // their matrices and so redraw themselves.
-  s.shadow_cache =
-      table == "lights" || table == "moving" || table == "penumbra" || table == "dynamic";
+  s.shadow_cache = table == "lights" || table == "moving" || table == "penumbra" ||
+                   table == "dynamic" || table == "sun";
   if (std::string(t.graph) != "lighting.json") {
     s.overrides.push_back({"point-shadow-atlas", "cache", s.shadow_cache});
     // Pinned: "auto" would pick per device and change what a row measures. Compute
@@ -141,6 +141,22 @@ void add_moving_table(std::vector<Scenario>& out, double scale) {
   }
 }
 
+// The sun: the courtyard (a sun and four lamps, shadows from 0.5 to 70 m away) with one
+// map against four PSSM cascades, in the filters that read them.
+void add_sun_table(std::vector<Scenario>& out, double scale) {
+  const std::pair<const char*, int> rows[] = {{"hard", 0}, {"pcf", 5}, {"pcss", 11}, {"ssss", 11}};
+  for (const auto& [name, kernel] : rows) {
+    for (const int cascades : {1, 4}) {
+      Scenario s = make("sun", technique(name), kernel, 1080, kSunSceneLights, scale);
+      s.scene = kSunScene;
+      s.name += "/c" + std::to_string(cascades);
+      s.overrides.push_back({"point-shadow-atlas", "sunCascades", cascades});
+      s.overrides.push_back({"point-shadow-atlas", "sunDistance", 80.0});
+      out.push_back(std::move(s));
+    }
+  }
+}
+
 }  // namespace
 
 unsigned shadow_face_size(int lights, double scale) {
@@ -169,6 +185,7 @@ std::vector<Scenario> builtin_scenarios(double scale) {
   }
   add_moving_table(out, scale);
   add_dynamic_table(out, scale);
+  add_sun_table(out, scale);
   // Penumbra size: PCSS and layered SSSS (blocker search, min filter) as the lights grow
   // from 5 cm to 1 m, shadows
   // cached so that the rows time the soft-shadow stage, not the atlas.

@@ -49,6 +49,9 @@ inline constexpr float kPenumbraLightSizes[] = {0.05f, 0.1f, 0.25f, 0.5f, 1.0f};
 inline constexpr int kDistrictLights = 1024;
 inline constexpr int kDistrictMovingLights = 64;
 inline constexpr const char* kDistrictScene = "district.json";
+// The "sun" table's scene: a sun and four lamps (docs/technique.md 3, cascades).
+inline constexpr const char* kSunScene = "courtyard-sun.json";
+inline constexpr int kSunSceneLights = 5;
 // The "dynamic" table's scene: the atrium with moving carts and a ball.
 inline constexpr const char* kDynamicScene = "atrium-dynamic.json";
 

@@ -140,7 +140,10 @@ TEST(BenchScenarios, MovingTableHasThreeTechniquesPerLightCountOnBothRasterisers
   for (const auto& s : builtin_scenarios(1.0)) {
     if (s.table == "moving") continue;
     EXPECT_EQ(s.moving, 0) << s.name;
-    EXPECT_EQ(s.scene, s.table == "dynamic" ? kDynamicScene : "atrium.json") << s.name;
+    const char* scene = s.table == "dynamic" ? kDynamicScene
+                        : s.table == "sun"   ? kSunScene
+                                             : "atrium.json";
+    EXPECT_EQ(s.scene, scene) << s.name;
   }
 }
 
@@ -256,6 +259,23 @@ TEST(BenchScenarios, DynamicTableMovesObjectsNotLights) {
   EXPECT_EQ(nocache, 3);
   EXPECT_EQ(rows.front().name, "dynamic/hard/1080p/16l");
   EXPECT_EQ(rows.back().name, "dynamic/ssss-11/1080p/16l/compute");
+}
+
+// The sun table: the courtyard, one map against four cascades in each filter.
+TEST(BenchScenarios, SunTableComparesOneMapWithFourCascades) {
+  const auto rows = select_scenarios(builtin_scenarios(1.0), {"sun/"});
+  ASSERT_EQ(rows.size(), 8u);
+  int four = 0;
+  for (const auto& s : rows) {
+    EXPECT_EQ(s.scene, kSunScene) << s.name;
+    EXPECT_EQ(s.lights, kSunSceneLights) << s.name;
+    for (const auto& o : s.overrides) {
+      if (o.param == "sunCascades" && o.value == 4) ++four;
+    }
+  }
+  EXPECT_EQ(four, 4);
+  EXPECT_EQ(rows.front().name, "sun/hard/1080p/5l/c1");
+  EXPECT_EQ(rows.back().name, "sun/ssss-11/1080p/5l/c4");
 }
 
 }  // namespace antumbra::app

@@ -183,3 +183,35 @@ TEST(BuiltinPasses, EveryTypeConstructsFromItsDefaults) {
     EXPECT_NO_THROW(EXPECT_NE(make(pass), nullptr)) << type << " with every default";
   }
 }
+
+// Every technique parameter is range-checked where the graph says it: bad values give a
+// located error (file, JSON Pointer, line) before any device is touched.
+TEST(BuiltinGraphs, BadTechniqueParametersAreLocated) {
+  const auto registry = passes::builtin_pass_registry();
+  const std::string original = read_file(kRoot / "data" / "graphs" / "csm-debug.json");
+  struct Case {
+    std::string from;
+    std::string to;
+    std::string pointer;
+  };
+  const Case cases[] = {
+      {"\"sunCascades\": 4", "\"sunCascades\": 0", "/passes/1/params/sunCascades"},
+      {"\"sunCascades\": 4", "\"sunCascades\": 9", "/passes/1/params/sunCascades"},
+      {"\"sunSplitLambda\": 0.75", "\"sunSplitLambda\": 1.5", "/passes/1/params/sunSplitLambda"},
+      {"\"sunSplitLambda\": 0.75", "\"sunSplitLambda\": -0.1", "/passes/1/params/sunSplitLambda"},
+      {"\"sunCascadeBlend\": 0.1", "\"sunCascadeBlend\": 0.9", "/passes/1/params/sunCascadeBlend"},
+  };
+  for (const Case& c : cases) {
+    std::string text = original;
+    const auto at = text.find(c.from);
+    ASSERT_NE(at, std::string::npos) << c.from;
+    text.replace(at, c.from.size(), c.to);
+    const auto result = fg::compile_text(text, "csm-debug.json", registry.reflection());
+    ASSERT_FALSE(result.ok()) << c.to;
+    const base::Diagnostic* d = result.diagnostics().find("FG033");
+    ASSERT_NE(d, nullptr) << c.to << "\n" << result.diagnostics().to_text();
+    EXPECT_EQ(d->pointer, c.pointer) << c.to;
+    EXPECT_EQ(d->file, "csm-debug.json");
+    EXPECT_GT(d->line, 0) << c.to;
+  }
+}
