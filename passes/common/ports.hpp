@@ -21,6 +21,7 @@ inline constexpr fg::PortId kView{"view"};
 inline constexpr fg::PortId kAtlas{"atlas"};
 inline constexpr fg::PortId kColour{"colour"};
 inline constexpr fg::PortId kMinDepth{"minDepth"};
+inline constexpr fg::PortId kMoments{"moments"};
 inline constexpr fg::PortId kShadowData{"shadowData"};
 inline constexpr fg::PortId kLayerTable{"layerTable"};
 

@@ -14,6 +14,7 @@
 #include "antumbra/fgvk/pass.hpp"
 #include "antumbra/gpu/resources.hpp"
 #include "common/pass_support.hpp"
+#include "common/scratch_array.hpp"
 
 namespace antumbra::passes {
 
@@ -35,8 +36,7 @@ class ShadowMinFilterPass final : public fgvk::Pass {
   ShadowMinFilterParams params_;
   // The downsampled depths between the two dispatches: internal to the pass, so its
   // barriers are the pass's own (graph resources get theirs from the plan).
-  gpu::Image coarse_;
-  bool coarse_ready_ = false;              // transitioned to GENERAL
+  ScratchArray coarse_;
   VkImage filtered_for_ = VK_NULL_HANDLE;  // output image all faces were filtered into
   ComputePipeline downsample_;
   ComputePipeline separable_;

@@ -64,6 +64,11 @@ float atlas_shadow(uint index, vec3 p_world, vec3 n_world, int mode) {
 #include "layered.glsl"
 #endif
 
+#if SHADOW_MODE >= 5
+layout(set = 0, binding = kTiledMoments) uniform sampler2DArray moments_map;
+#include "moment_shadow.glsl"
+#endif
+
 void main() {
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
   bool inside = all(lessThan(gl_GlobalInvocationID.xy, image_size));
@@ -102,6 +107,8 @@ void main() {
       if (!shade_light(lights[index], surface, specular, radiance, l)) continue;
 #if SHADOW_MODE == 4
       radiance *= layered_shadow(index, p_world, n_world);
+#elif SHADOW_MODE >= 5
+      radiance *= moment_shadow(index, p_world, n_world);
 #elif SHADOW_MODE != 0
       radiance *= atlas_shadow(index, p_world, n_world, SHADOW_MODE);
 #endif

@@ -3,6 +3,7 @@
 #include "common/plan_checks.hpp"
 #include "common/ports.hpp"
 #include "common/shadow_data.hpp"
+#include "shadow_moments/shadow_moments_pass.hpp"
 #include "tiled_lighting_pass.hpp"
 
 namespace antumbra::passes {
@@ -81,9 +82,11 @@ Table tiled_table() {
        .default_value = "none",
        .description = "Shadow term: none; hard, pcf or pcss from the atlas (atlas + shadowData "
                       "required); layered from the blurred layer buffer (layerTable + shadow "
-                      "required)."},
+                      "required); vsm, evsm2, evsm4 or msm from shadow-moments' filtered map "
+                      "of the same technique (moments + atlas + shadowData required)."},
       &TiledLightingParams::shadows,
-      {ShadowMode::none, ShadowMode::hard, ShadowMode::pcf, ShadowMode::pcss, ShadowMode::layered});
+      {ShadowMode::none, ShadowMode::hard, ShadowMode::pcf, ShadowMode::pcss, ShadowMode::layered,
+       ShadowMode::vsm, ShadowMode::evsm2, ShadowMode::evsm4, ShadowMode::msm});
   add_kernel(table, "PCF / PCSS filter and the layered fallback");
   add_pcss(table);
   table.choice(
@@ -93,6 +96,15 @@ Table tiled_table() {
        .choices = {"hard", "pcf"},
        .description = "Layered mode: atlas lookup for lights without a layer (needs the atlas)."},
       &TiledLightingParams::pcf_fallback, {false, true});
+  table.add({.name = "lightBleedReduction",
+             .type = fg::ParamType::number,
+             .default_value = 0.2,
+             .min = 0.0,
+             .max = 0.95,
+             .description = "Moment modes: visibilities below this become shadow and the rest "
+                            "are rescaled, removing light bleeding where occluders overlap at "
+                            "the cost of darker, thinner penumbrae (0: off)."},
+            &TiledLightingParams::bleeding_reduction);
   return table;
 }
 
@@ -107,6 +119,34 @@ Table pcss_table() {
   add_kernel(table, "PCF step (the largest penumbra it can draw)");
   add_pcss(table);
   return table;
+}
+
+// Moment modes read shadow-moments' map through the atlas's face data, and the map
+// must hold the technique the mode decodes (the producer's `technique`).
+void check_moments(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& graph,
+                   ShadowMode mode, const std::string& mode_at, base::Diagnostics& diagnostics) {
+  const int moments = bound_index(pass, port::kMoments);
+  if (moments < 0 || bound_resource(pass, plan, port::kAtlas) == nullptr) {
+    add_pass_error(graph, pass, codes::lighting::kMomentsInputs,
+                   "shadows = " + std::string(to_string(mode)) +
+                       " needs the `moments` (shadow-moments), `atlas` and `shadowData` inputs",
+                   mode_at, diagnostics);
+    return;
+  }
+  for (const fg::PlanPass& producer : plan.passes) {
+    if (producer.type != ShadowMomentsPass::kType ||
+        bound_index(producer, port::kMoments) != moments) {
+      continue;
+    }
+    const auto technique = ShadowMomentsPass::param_table().read(producer.params).technique;
+    if (to_string(technique) != to_string(mode)) {
+      add_pass_error(graph, pass, codes::lighting::kMomentsTechnique,
+                     "shadows = " + std::string(to_string(mode)) + " but '" + producer.name +
+                         "' stores " + std::string(to_string(technique)) +
+                         " moments; use the same technique in both",
+                     mode_at, diagnostics);
+    }
+  }
 }
 
 // What the shadow mode needs bound, checked by the compiler (validate) rather than when the
@@ -140,6 +180,10 @@ void check(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& 
               std::to_string(atlas->layers) + " layers needs " +
               std::to_string(shadow_data_bytes(atlas->layers)),
           "/in/shadowData");
+  }
+  if (is_moment_mode(mode)) {
+    check_moments(pass, plan, graph, mode, mode_at, diagnostics);
+    return;
   }
   if (mode != ShadowMode::layered) return;
   const auto* table = bound_resource(pass, plan, port::kLayerTable);
@@ -187,6 +231,11 @@ fg::PassDesc TiledLightingPass::describe() {
                           "Layered shadow colour of translucent occluders, rgba8 packed "
                           "r<<24|g<<16|b<<8|a per channel like `shadow`; shadows = layered.",
                           true));
+  desc.ports.push_back(compute_array_input(
+      port::kMoments, {Format::rgba32f, Format::rgba16f, Format::rg32f, Format::rg16f}, 1, 0,
+      "Filtered moments of every shadow face (shadow-moments); shadows = vsm | evsm2 | evsm4 "
+      "| msm.",
+      true));
   desc.ports.push_back(
       {.name = port::kHardShadow,
        .access = Access::sampled,

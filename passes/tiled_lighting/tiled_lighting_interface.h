@@ -24,6 +24,8 @@ ANTUMBRA_BINDING(kTiledLayerTable, 8)
 ANTUMBRA_BINDING(kTiledShadow, 9)
 ANTUMBRA_BINDING(kTiledColour, 10)
 ANTUMBRA_BINDING(kTiledHardBits, 11)
+// SHADOW_MODE vsm .. msm: the filtered moment map (shadow-moments).
+ANTUMBRA_BINDING(kTiledMoments, 12)
 
 ANTUMBRA_PUSH_CONSTANTS(TiledLightingPush) {
   float exposure;

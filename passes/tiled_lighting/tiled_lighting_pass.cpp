@@ -30,11 +30,11 @@ std::uint32_t shadow_texels(const fgvk::PassBindings& bindings, ShadowMode mode)
 }  // namespace
 
 std::optional<ShadowMode> parse_shadow_mode(std::string_view name) {
-  if (name == "none") return ShadowMode::none;
-  if (name == "hard") return ShadowMode::hard;
-  if (name == "pcf") return ShadowMode::pcf;
-  if (name == "pcss") return ShadowMode::pcss;
-  if (name == "layered") return ShadowMode::layered;
+  for (const auto mode :
+       {ShadowMode::none, ShadowMode::hard, ShadowMode::pcf, ShadowMode::pcss, ShadowMode::layered,
+        ShadowMode::vsm, ShadowMode::evsm2, ShadowMode::evsm4, ShadowMode::msm}) {
+    if (name == to_string(mode)) return mode;
+  }
   return std::nullopt;
 }
 
@@ -50,6 +50,14 @@ std::string_view to_string(ShadowMode mode) {
       return "pcss";
     case ShadowMode::layered:
       return "layered";
+    case ShadowMode::vsm:
+      return "vsm";
+    case ShadowMode::evsm2:
+      return "evsm2";
+    case ShadowMode::evsm4:
+      return "evsm4";
+    case ShadowMode::msm:
+      return "msm";
   }
   return "none";
 }
@@ -75,6 +83,7 @@ void TiledLightingPass::prepare(fgvk::PrepareContext& context) {
   has_atlas_ = atlas != nullptr && mode_ != ShadowMode::none;
   has_colour_ = mode_ == ShadowMode::layered && b.image(port::kColour) != nullptr;
   has_hard_bits_ = mode_ == ShadowMode::layered && b.image(port::kHardShadow) != nullptr;
+  has_moments_ = is_moment_mode(mode_) && b.image(port::kMoments) != nullptr;
 
   constexpr VkShaderStageFlags kComp = VK_SHADER_STAGE_COMPUTE_BIT;
   gpu::DescriptorSetLayoutBuilder builder;
@@ -93,6 +102,7 @@ void TiledLightingPass::prepare(fgvk::PrepareContext& context) {
     if (has_colour_) builder.combined_image_sampler(shared::kTiledColour, kComp);
     if (has_hard_bits_) builder.combined_image_sampler(shared::kTiledHardBits, kComp);
   }
+  if (has_moments_) builder.combined_image_sampler(shared::kTiledMoments, kComp);
   set_layout_ = builder.build(context.gpu, context.pass.name + ".set");
   const std::array<VkDescriptorSetLayout, 1> sets{set_layout_};
   const std::array<VkPushConstantRange, 1> push{{{kComp, 0, sizeof(TiledLightingPush)}}};
@@ -111,6 +121,14 @@ void TiledLightingPass::prepare(fgvk::PrepareContext& context) {
       {"BLOCKER_SEARCH", std::to_string(params_.blocker_search)},
       {"HDR_FORMAT", hdr_format == VK_FORMAT_R32G32B32A32_SFLOAT ? "rgba32f" : "rgba16f"},
       {"SHADOW_TEXELS", std::to_string(shadow_texels(b, mode_))},
+      {"MOMENTS_TECHNIQUE",
+       std::to_string(is_moment_mode(mode_) ? static_cast<int>(mode_) - 5 : 0)},
+      {"MOMENTS_HALF",
+       has_moments_ && (b.required_image(port::kMoments).format == VK_FORMAT_R16G16B16A16_SFLOAT ||
+                        b.required_image(port::kMoments).format == VK_FORMAT_R16G16_SFLOAT)
+           ? "1"
+           : "0"},
+      {"BLEEDING_REDUCTION", std::to_string(params_.bleeding_reduction)},
   };
   shader_files_.clear();
   auto module = load_shader(context, "tiled_lighting/tiled_lighting.comp", shader_files_, defines);
@@ -155,6 +173,11 @@ void TiledLightingPass::execute(fgvk::ExecuteContext& context) {
       const auto& bits = b.required_image(port::kHardShadow);
       descriptors.combined_image_sampler(shared::kTiledHardBits, bits.view, nearest, bits.layout);
     }
+  }
+  if (has_moments_) {
+    const auto& moments = b.required_image(port::kMoments);
+    descriptors.combined_image_sampler(shared::kTiledMoments, moments.array_view, nearest,
+                                       moments.layout);
   }
   descriptors.push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
 

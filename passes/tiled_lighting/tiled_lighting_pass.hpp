@@ -18,7 +18,13 @@
 
 namespace antumbra::passes {
 
-enum class ShadowMode : std::uint8_t { none, hard, pcf, pcss, layered };
+// vsm .. msm: filtered shadow maps from shadow-moments (its technique, in the same order
+// from vsm on as MomentTechnique; SHADOW_MODE - 5 is MOMENTS_TECHNIQUE).
+enum class ShadowMode : std::uint8_t { none, hard, pcf, pcss, layered, vsm, evsm2, evsm4, msm };
+
+[[nodiscard]] constexpr bool is_moment_mode(ShadowMode mode) {
+  return mode >= ShadowMode::vsm;
+}
 
 std::optional<ShadowMode> parse_shadow_mode(std::string_view name);
 std::string_view to_string(ShadowMode mode);
@@ -29,7 +35,8 @@ struct TiledLightingParams {
   int kernel = 11;
   int blocker_search = 5;
   float light_size_scale = 1.0f;
-  bool pcf_fallback = true;  // layered: layer-less lights by PCF (else one hard test)
+  bool pcf_fallback = true;         // layered: layer-less lights by PCF (else one hard test)
+  float bleeding_reduction = 0.2f;  // moment modes (common/moments.glsl reduce_bleeding)
 };
 
 class TiledLightingPass final : public fgvk::Pass {
@@ -62,6 +69,7 @@ class TiledLightingPass final : public fgvk::Pass {
   bool has_atlas_ = false;
   bool has_colour_ = false;
   bool has_hard_bits_ = false;  // layered: full-resolution hard bits for sharp edges
+  bool has_moments_ = false;    // vsm .. msm: the filtered moment map
   gpu::DescriptorSetLayout set_layout_;
   gpu::PipelineLayout layout_;
   gpu::Pipeline pipeline_;

@@ -215,3 +215,38 @@ TEST(BuiltinGraphs, BadTechniqueParametersAreLocated) {
     EXPECT_GT(d->line, 0) << c.to;
   }
 }
+
+// Filtered shadow maps: the lighting's mode must be the technique the map stores, the
+// map's format must hold it, and the moment modes need their map bound.
+TEST(BuiltinGraphs, MomentGraphMistakesAreLocated) {
+  const auto registry = passes::builtin_pass_registry();
+  struct Case {
+    std::string file;
+    std::string from;
+    std::string to;
+    std::string code;
+    std::string pointer;
+  };
+  const Case cases[] = {
+      {"evsm4.json", "\"shadows\": \"evsm4\"", "\"shadows\": \"msm\"", "TL007",
+       "/passes/3/params/shadows"},
+      {"vsm.json", "\"technique\": \"vsm\"", "\"technique\": \"msm\"", "SM001",
+       "/passes/2/params/technique"},
+      {"evsm4.json", ", \"moments\": \"moments\" }", " }", "TL006", "/passes/3/params/shadows"},
+      {"evsm4.json", "\"blur\": 1", "\"blur\": 9", "FG033", "/passes/2/params/blur"},
+      {"evsm4.json", "\"lightBleedReduction\": 0.2", "\"lightBleedReduction\": 1.5", "FG033",
+       "/passes/3/params/lightBleedReduction"},
+  };
+  for (const Case& c : cases) {
+    std::string text = read_file(kRoot / "data" / "graphs" / c.file);
+    const auto at = text.find(c.from);
+    ASSERT_NE(at, std::string::npos) << c.from;
+    text.replace(at, c.from.size(), c.to);
+    const auto result = fg::compile_text(text, c.file, registry.reflection());
+    ASSERT_FALSE(result.ok()) << c.to;
+    const base::Diagnostic* d = result.diagnostics().find(c.code);
+    ASSERT_NE(d, nullptr) << c.to << "\n" << result.diagnostics().to_text();
+    EXPECT_EQ(d->pointer, c.pointer) << c.to;
+    EXPECT_GT(d->line, 0) << c.to;
+  }
+}

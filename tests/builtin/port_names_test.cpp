@@ -38,15 +38,16 @@ TEST(PortNames, BindingsAnswerDeclaredPortsAndRefuseOthers) {
 // runtime has no constant for.
 TEST(PortNames, EveryBuiltinPortIsAConstant) {
   const std::set<std::string> constants = {
-      std::string(port::kDepth),         std::string(port::kNormal),
-      std::string(port::kAlbedo),        std::string(port::kHdr),
-      std::string(port::kLdr),           std::string(port::kView),
-      std::string(port::kAtlas),         std::string(port::kColour),
-      std::string(port::kMinDepth),      std::string(port::kShadowData),
-      std::string(port::kLayerTable),    std::string(port::kPenumbra),
-      std::string(port::kPenumbraCount), std::string(port::kHardShadow),
-      std::string(port::kEsm),           std::string(port::kTranslucency),
-      std::string(port::kSource),        std::string(port::kShadow)};
+      std::string(port::kDepth),        std::string(port::kNormal),
+      std::string(port::kAlbedo),       std::string(port::kHdr),
+      std::string(port::kLdr),          std::string(port::kView),
+      std::string(port::kAtlas),        std::string(port::kColour),
+      std::string(port::kMinDepth),     std::string(port::kShadowData),
+      std::string(port::kMoments),      std::string(port::kLayerTable),
+      std::string(port::kPenumbra),     std::string(port::kPenumbraCount),
+      std::string(port::kHardShadow),   std::string(port::kEsm),
+      std::string(port::kTranslucency), std::string(port::kSource),
+      std::string(port::kShadow)};
   const auto registry = builtin_pass_registry();
   int ports = 0;
   for (const auto& [type, desc] : registry.reflection().passes()) {

@@ -120,8 +120,60 @@ class AtlasGpuTest : public gpu::testing::GpuTest {
     return c;
   }
 
+  // Runs tests/shadows/sampling_check.comp over `points` with the shadowData contents `data`.
   std::vector<glm::vec4> run_sampling_check(const std::vector<std::byte>& data,
-                                            const std::vector<glm::vec4>& points);
+                                            const std::vector<glm::vec4>& points) {
+    return run_check_shader("tests/shadows/sampling_check.comp", {}, data, points);
+  }
+
+  // A test compute shader over `points` (binding 1), reading `data` (binding 0) and writing
+  // one vec4 per point (binding 2), 64 points per workgroup.
+  std::vector<glm::vec4> run_check_shader(const std::string& shader,
+                                          std::vector<gpu::ShaderDefine> defines,
+                                          const std::vector<std::byte>& data,
+                                          const std::vector<glm::vec4>& points) {
+    const VkDeviceSize data_bytes = data.size();
+    const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+    auto data_buffer =
+        gpu::Buffer::create(ctx(), data_bytes, storage, gpu::MemoryUsage::upload, "t.data");
+    std::memcpy(data_buffer.mapped(), data.data(), data_bytes);
+    const VkDeviceSize point_bytes = points.size() * sizeof(glm::vec4);
+    auto point_buffer =
+        gpu::Buffer::create(ctx(), point_bytes, storage, gpu::MemoryUsage::upload, "t.points");
+    std::memcpy(point_buffer.mapped(), points.data(), point_bytes);
+    auto results =
+        gpu::Buffer::create(ctx(), point_bytes, storage, gpu::MemoryUsage::readback, "t.results");
+
+    gpu::ShaderRequest request;
+    request.path = source_dir() / shader;
+    request.defines = std::move(defines);
+    auto binary = shaders_->compile(request);
+    EXPECT_TRUE(binary.ok());
+    if (!binary.ok()) return {};
+    auto module = gpu::create_shader_module(ctx(), binary->spirv, "check");
+    auto set_layout = gpu::DescriptorSetLayoutBuilder()
+                          .storage_buffer(0, VK_SHADER_STAGE_COMPUTE_BIT)
+                          .storage_buffer(1, VK_SHADER_STAGE_COMPUTE_BIT)
+                          .storage_buffer(2, VK_SHADER_STAGE_COMPUTE_BIT)
+                          .build(ctx(), "check.set");
+    const std::array<VkDescriptorSetLayout, 1> sets{set_layout};
+    auto layout = gpu::create_pipeline_layout(ctx(), sets, {}, "check.layout");
+    auto pipeline = gpu::create_compute_pipeline(ctx(), layout, module, "check");
+    ctx().submit_immediate([&](VkCommandBuffer cmd) {
+      vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
+      gpu::PushDescriptors()
+          .storage_buffer(0, data_buffer)
+          .storage_buffer(1, point_buffer)
+          .storage_buffer(2, results)
+          .push(ctx(), cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout);
+      vkCmdDispatch(cmd, static_cast<std::uint32_t>((points.size() + 63) / 64), 1, 1);
+      gpu::buffer_barrier(cmd, results.handle(), VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                          VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT,
+                          VK_ACCESS_2_HOST_READ_BIT);
+    });
+    const auto* out = reinterpret_cast<const glm::vec4*>(results.mapped());
+    return {out, out + points.size()};
+  }
 
   // Depth of one atlas layer, one float per texel.
   std::vector<float> read_layer(std::uint32_t layer) {

@@ -90,51 +90,6 @@ TEST_F(AtlasGpuTest, TooSmallShadowDataIsACompilerError) {
   EXPECT_GT(d->line, 0);
 }
 
-// Runs tests/shadows/sampling_check.comp over `points` with the shadowData contents `data`.
-std::vector<glm::vec4> AtlasGpuTest::run_sampling_check(const std::vector<std::byte>& data,
-                                                        const std::vector<glm::vec4>& points) {
-  const VkDeviceSize data_bytes = data.size();
-  const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
-  auto data_buffer =
-      gpu::Buffer::create(ctx(), data_bytes, storage, gpu::MemoryUsage::upload, "t.data");
-  std::memcpy(data_buffer.mapped(), data.data(), data_bytes);
-  const VkDeviceSize point_bytes = points.size() * sizeof(glm::vec4);
-  auto point_buffer =
-      gpu::Buffer::create(ctx(), point_bytes, storage, gpu::MemoryUsage::upload, "t.points");
-  std::memcpy(point_buffer.mapped(), points.data(), point_bytes);
-  auto results =
-      gpu::Buffer::create(ctx(), point_bytes, storage, gpu::MemoryUsage::readback, "t.results");
-
-  gpu::ShaderRequest request;
-  request.path = source_dir() / "tests/shadows/sampling_check.comp";
-  auto binary = shaders_->compile(request);
-  EXPECT_TRUE(binary.ok());
-  if (!binary.ok()) return {};
-  auto module = gpu::create_shader_module(ctx(), binary->spirv, "sampling_check");
-  auto set_layout = gpu::DescriptorSetLayoutBuilder()
-                        .storage_buffer(0, VK_SHADER_STAGE_COMPUTE_BIT)
-                        .storage_buffer(1, VK_SHADER_STAGE_COMPUTE_BIT)
-                        .storage_buffer(2, VK_SHADER_STAGE_COMPUTE_BIT)
-                        .build(ctx(), "sampling_check.set");
-  const std::array<VkDescriptorSetLayout, 1> sets{set_layout};
-  auto layout = gpu::create_pipeline_layout(ctx(), sets, {}, "sampling_check.layout");
-  auto pipeline = gpu::create_compute_pipeline(ctx(), layout, module, "sampling_check");
-  ctx().submit_immediate([&](VkCommandBuffer cmd) {
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
-    gpu::PushDescriptors()
-        .storage_buffer(0, data_buffer)
-        .storage_buffer(1, point_buffer)
-        .storage_buffer(2, results)
-        .push(ctx(), cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout);
-    vkCmdDispatch(cmd, static_cast<std::uint32_t>((points.size() + 63) / 64), 1, 1);
-    gpu::buffer_barrier(cmd, results.handle(), VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                        VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT,
-                        VK_ACCESS_2_HOST_READ_BIT);
-  });
-  const auto* out = reinterpret_cast<const glm::vec4*>(results.mapped());
-  return {out, out + points.size()};
-}
-
 TEST_F(AtlasGpuTest, SamplingIncludeAgreesWithCpuFaceMath) {
   // One light, its six faces, and points all round it.
   const glm::vec3 light(1.0f, 2.0f, -1.5f);

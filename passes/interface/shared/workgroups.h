@@ -11,5 +11,7 @@
 #define ANTUMBRA_IMAGE_GROUP 8
 // shadow-min-filter's square groups (min_common.glsl).
 #define ANTUMBRA_MIN_FILTER_GROUP 16
+// shadow-moments' square groups (moments_blur.comp keeps a vec4 tile of (8 + 16)^2).
+#define ANTUMBRA_MOMENTS_GROUP 8
 
 #endif

@@ -198,7 +198,14 @@ inline constexpr const char* kShadowDataTooSmall =
     "TL003";                                            // shadowData smaller than the atlas needs
 inline constexpr const char* kLayeredInputs = "TL004";  // layered mode needs layerTable, shadow
 inline constexpr const char* kLayerTableTooSmall = "TL005";  // layerTable buffer too small
+inline constexpr const char* kMomentsInputs = "TL006";       // moment modes need moments + atlas
+inline constexpr const char* kMomentsTechnique = "TL007";  // mode differs from the map's technique
 }  // namespace lighting
+
+// shadow-moments.
+namespace moments {
+inline constexpr const char* kFormat = "SM001";  // map format cannot hold the technique
+}  // namespace moments
 
 // antumbra quality.
 namespace quality {

@@ -1,0 +1,67 @@
+#include "scratch_array.hpp"
+
+#include <algorithm>
+
+#include "antumbra/gpu/commands.hpp"
+
+namespace antumbra::passes {
+namespace {
+constexpr VkPipelineStageFlags2 kComputeStage = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+}  // namespace
+
+void ScratchArray::ensure(gpu::Context& gpu, VkExtent2D extent, std::uint32_t layers,
+                          VkFormat format, const std::string& name) {
+  if (image_ && image_.extent().width == extent.width && image_.extent().height == extent.height &&
+      image_.layers() == layers && format_ == format) {
+    return;
+  }
+  gpu::ImageDesc desc;
+  desc.format = format;
+  desc.extent = extent;
+  desc.layers = layers;
+  desc.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
+  desc.name = name;
+  image_ = gpu::Image::create(gpu, desc);
+  format_ = format;
+  written_ = false;
+}
+
+void ScratchArray::begin_write(VkCommandBuffer cmd) {
+  gpu::ImageBarrier barrier;
+  barrier.image = image_.handle();
+  barrier.new_layout = VK_IMAGE_LAYOUT_GENERAL;
+  barrier.dst_stage = kComputeStage;
+  barrier.dst_access = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
+  if (written_) {
+    // The previous frame's second dispatch read it (submission order covers that).
+    barrier.old_layout = VK_IMAGE_LAYOUT_GENERAL;
+    barrier.src_stage = kComputeStage;
+    barrier.src_access = VK_ACCESS_2_SHADER_SAMPLED_READ_BIT;
+  }
+  gpu::image_barrier(cmd, barrier);
+  written_ = true;
+}
+
+void ScratchArray::end_write(VkCommandBuffer cmd) {
+  gpu::ImageBarrier barrier;
+  barrier.image = image_.handle();
+  barrier.old_layout = VK_IMAGE_LAYOUT_GENERAL;
+  barrier.new_layout = VK_IMAGE_LAYOUT_GENERAL;
+  barrier.src_stage = kComputeStage;
+  barrier.src_access = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
+  barrier.dst_stage = kComputeStage;
+  barrier.dst_access = VK_ACCESS_2_SHADER_SAMPLED_READ_BIT;
+  gpu::image_barrier(cmd, barrier);
+}
+
+FaceGroups face_groups(VkExtent2D extent, std::uint32_t group, std::uint32_t groups_per_axis) {
+  const std::uint32_t longest = std::max(extent.width, extent.height);
+  const std::uint32_t per_group = (longest + groups_per_axis - 1) / groups_per_axis;
+  FaceGroups groups;
+  groups.span = (per_group + group - 1) / group * group;
+  groups.x = (extent.width + groups.span - 1) / groups.span;
+  groups.y = (extent.height + groups.span - 1) / groups.span;
+  return groups;
+}
+
+}  // namespace antumbra::passes

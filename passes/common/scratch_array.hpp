@@ -1,0 +1,44 @@
+#pragma once
+// An image array a pass keeps between two of its own compute dispatches (not a graph
+// resource, so its barriers are the pass's own): the first dispatch writes it as a
+// storage image, the second samples it, and the next frame's first dispatch writes it
+// again after those reads. shadow-min-filter and shadow-moments derive maps per atlas
+// face this way, and split each layer into a few workgroups that loop over it
+// (face_groups).
+
+#include <cstdint>
+#include <string>
+
+#include "antumbra/gpu/context.hpp"
+#include "antumbra/gpu/resources.hpp"
+
+namespace antumbra::passes {
+
+class ScratchArray {
+ public:
+  // Recreated (contents undefined) when the size, layer count or format changes.
+  void ensure(gpu::Context& gpu, VkExtent2D extent, std::uint32_t layers, VkFormat format,
+              const std::string& name);
+  // Before the dispatch that writes it (after the previous frame's sampled reads).
+  void begin_write(VkCommandBuffer cmd);
+  // Between that dispatch and the one that samples it.
+  void end_write(VkCommandBuffer cmd);
+  [[nodiscard]] VkImageView array_view() { return image_.array_view(); }
+
+ private:
+  gpu::Image image_;
+  VkFormat format_ = VK_FORMAT_UNDEFINED;
+  bool written_ = false;  // transitioned to GENERAL and written before
+};
+
+// Per layer, `groups_per_axis`^2 workgroups of `group`^2 threads, each looping over a
+// square span of the layer (a multiple of `group`): skipped layers then cost almost
+// nothing, even on CPU implementations where every workgroup has a fixed cost.
+struct FaceGroups {
+  std::uint32_t span = 0;
+  std::uint32_t x = 0;
+  std::uint32_t y = 0;
+};
+FaceGroups face_groups(VkExtent2D extent, std::uint32_t group, std::uint32_t groups_per_axis);
+
+}  // namespace antumbra::passes

@@ -1,0 +1,58 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// Step 2 of shadow-moments: a separable (2 radius + 1)^2 box filter of the moments in
+// shared memory (rows, then columns), clamped to the face's own texels, written in the
+// map's format. Filtering the moments is what makes these maps soft and alias-free.
+
+#define MAX_RADIUS 8
+#define TILE (GROUP + 2 * MAX_RADIUS)
+
+#include "moments_common.glsl"
+
+layout(local_size_x = GROUP, local_size_y = GROUP) in;
+
+layout(set = 0, binding = kMomentsInput) uniform sampler2DArray raw;
+layout(set = 0, binding = kMomentsOutput, MOMENTS_FORMAT) uniform writeonly image2DArray map_out;
+
+shared vec4 tile[TILE][TILE];
+shared vec4 rows[TILE][GROUP];
+
+void filter_block(ivec2 block, uint layer, ivec2 size, int r) {
+  int span_r = GROUP + 2 * r;
+  ivec2 origin = block - r;
+  ivec2 local = ivec2(gl_LocalInvocationID.xy);
+  for (int y = local.y; y < span_r; y += GROUP) {
+    for (int x = local.x; x < span_r; x += GROUP) {
+      ivec2 q = clamp(origin + ivec2(x, y), ivec2(0), size - 1);
+      tile[y][x] = texelFetch(raw, ivec3(q, int(layer)), 0);
+    }
+  }
+  barrier();
+  for (int y = local.y; y < span_r; y += GROUP) {
+    vec4 s = vec4(0.0);
+    for (int dx = 0; dx <= 2 * r; ++dx) s += tile[y][local.x + dx];
+    rows[y][local.x] = s;
+  }
+  barrier();
+  ivec2 p = block + local;
+  if (all(lessThan(p, size))) {
+    vec4 s = vec4(0.0);
+    for (int dy = 0; dy <= 2 * r; ++dy) s += rows[local.y + dy][local.x];
+    imageStore(map_out, ivec3(p, int(layer)), s / float((2 * r + 1) * (2 * r + 1)));
+  }
+  barrier();  // the next block overwrites the tile
+}
+
+void main() {
+  uint layer = gl_WorkGroupID.z;
+  if (!derived_layer_needed(layer, force_all != 0u)) return;  // uniform: before any barrier
+  ivec2 size = derived_face_extent(layer, textureSize(raw, 0).xy);
+  int r = min(int(radius), MAX_RADIUS);
+  ivec2 region = ivec2(gl_WorkGroupID.xy) * int(span);
+  if (any(greaterThanEqual(region, size))) return;  // past a small face: uniform
+  for (int y = 0; y < int(span); y += GROUP) {
+    for (int x = 0; x < int(span); x += GROUP) {
+      filter_block(region + ivec2(x, y), layer, size, r);
+    }
+  }
+}

@@ -1,0 +1,47 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// Step 1 of shadow-moments (docs/technique.md 3, "Filtered shadow maps"): each map texel
+// holds the average moments of the factor x factor atlas texels under it. Moments filter
+// linearly, so this average is already a box prefilter and the blur that follows
+// continues it.
+
+#include "moments_common.glsl"
+#include "../common/shadow_sampling.glsl"
+#include "../common/moments.glsl"
+
+layout(local_size_x = GROUP, local_size_y = GROUP) in;
+
+layout(set = 0, binding = kMomentsInput) uniform sampler2DArray atlas;
+layout(set = 0, binding = kMomentsOutput, rgba32f) uniform writeonly image2DArray raw;
+
+// Atlas depth -> t in [0, 1]: distance along the face axis over the light's range (the
+// sun's maps are linear already). Cleared texels (nothing drawn) are at the range.
+float moment_depth(ShadowLight l, float depth) {
+  if (depth >= 1.0) return 1.0;
+  if (shadow_is_ortho(l)) return clamp(depth, 0.0, 1.0);
+  return clamp(shadow_linearise_light(l, depth) / max(l.position_range.w, 1e-6), 0.0, 1.0);
+}
+
+void main() {
+  uint layer = gl_WorkGroupID.z;
+  if (!derived_layer_needed(layer, force_all != 0u)) return;
+  ivec2 size = derived_face_extent(layer, imageSize(raw).xy);
+  if (any(greaterThanEqual(ivec2(gl_WorkGroupID.xy) * int(span), size))) return;
+  ShadowLight l = shadow_lights[min(faces[layer].info.x, uint(ANTUMBRA_MAX_SHADOW_LIGHTS - 1))];
+  ivec2 origin = ivec2(gl_WorkGroupID.xy) * int(span) + ivec2(gl_LocalInvocationID.xy);
+  int f = int(factor);
+  for (int y = 0; y < int(span); y += GROUP) {
+    for (int x = 0; x < int(span); x += GROUP) {
+      ivec2 p = origin + ivec2(x, y);
+      if (any(greaterThanEqual(p, size))) continue;
+      vec4 sum = vec4(0.0);
+      for (int dy = 0; dy < f; ++dy) {
+        for (int dx = 0; dx < f; ++dx) {
+          float d = texelFetch(atlas, ivec3(p * f + ivec2(dx, dy), int(layer)), 0).r;
+          sum += moments_encode(moment_depth(l, d));
+        }
+      }
+      imageStore(raw, ivec3(p, int(layer)), sum / float(f * f));
+    }
+  }
+}

@@ -1,0 +1,91 @@
+#include "antumbra/base/diagnostic_codes.hpp"
+#include "antumbra/fg/graph_desc.hpp"
+#include "common/lighting_reflection.hpp"
+#include "common/plan_checks.hpp"
+#include "common/ports.hpp"
+#include "shadow_moments_pass.hpp"
+
+namespace antumbra::passes {
+namespace {
+
+// The map's geometry as for every atlas-derived map; its format must hold the technique:
+// four components for EVSM4 and MSM, 32-bit floats for MSM (its four powers of depth
+// need them: half floats would need Peters and Klein's quantisation transform).
+void check(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& graph,
+           base::Diagnostics& diagnostics) {
+  check_derived_map(pass, plan, graph, port::kMoments, false, diagnostics);
+  const auto* out = bound_resource(pass, plan, port::kMoments);
+  if (out == nullptr) return;
+  const MomentTechnique technique = ShadowMomentsPass::param_table().read(pass.params).technique;
+  const bool four = out->format == fg::Format::rgba16f || out->format == fg::Format::rgba32f;
+  std::string problem;
+  if (moment_components(technique) == 4 && !four) {
+    problem = "holds 2 components; " + std::string(to_string(technique)) + " needs 4 (rgba32f" +
+              (technique == MomentTechnique::msm ? ")" : " or rgba16f)");
+  } else if (technique == MomentTechnique::msm && out->format != fg::Format::rgba32f) {
+    problem = "is rgba16f; msm needs rgba32f";
+  }
+  if (problem.empty()) return;
+  add_pass_error(graph, pass, codes::moments::kFormat,
+                 "'" + out->name + "' (" + std::string(fg::to_string(out->format)) + ") " + problem,
+                 "/params/technique", diagnostics);
+}
+
+}  // namespace
+
+fg::PassDesc ShadowMomentsPass::describe() {
+  using fg::Access;
+  using fg::Format;
+  using fg::PortDirection;
+  using fg::Stage;
+  fg::PassDesc desc;
+  desc.type = kType;
+  desc.description =
+      "Filtered shadow maps: every shadow face as moments of its depth (VSM, EVSM with 2 or 4 "
+      "components, MSM with 4), averaged down to the map's size and box-filtered, for "
+      "tiled-lighting's shadows = vsm | evsm2 | evsm4 | msm.";
+  desc.ports = {
+      compute_array_input(port::kAtlas, {Format::d32f, Format::d16, Format::r32f}, 1, 0,
+                          "Shadow faces of every light (point-shadow-atlas)."),
+      compute_buffer_input(port::kShadowData,
+                           "Face owners, ranges and which faces were drawn this frame."),
+      {.name = port::kMoments,
+       .direction = PortDirection::output,
+       .access = Access::storage_write,
+       .stage = Stage::compute,
+       .formats = {Format::rgba32f, Format::rgba16f, Format::rg32f, Format::rg16f},
+       .min_layers = 1,
+       .max_layers = 0,
+       .description = "Per face: filtered moments; the atlas size divided by an integer factor, "
+                      "as many layers as the atlas. Persistent to keep cached faces' moments."},
+  };
+  desc.params = param_table().descs();
+  desc.check = &check;
+  return desc;
+}
+
+const fg::ParamTable<ShadowMomentsParams>& ShadowMomentsPass::param_table() {
+  static const auto kTable =
+      fg::ParamTable<ShadowMomentsParams>()
+          .choice({.name = "technique",
+                   .type = fg::ParamType::enumeration,
+                   .default_value = "evsm4",
+                   .choices = {"vsm", "evsm2", "evsm4", "msm"},
+                   .description = "Moments stored: vsm (depth, depth^2), evsm2 / evsm4 "
+                                  "(exponentially warped, positive / and negative), msm (4 "
+                                  "powers of depth; needs rgba32f)."},
+                  &ShadowMomentsParams::technique,
+                  {MomentTechnique::vsm, MomentTechnique::evsm2, MomentTechnique::evsm4,
+                   MomentTechnique::msm})
+          .add({.name = "blur",
+                .type = fg::ParamType::integer,
+                .default_value = 2,
+                .min = 0.0,
+                .max = 8.0,
+                .description = "Half width of the separable box prefilter in map texels "
+                               "((2 blur + 1)^2 texels; 0: only the downsampling average)."},
+               &ShadowMomentsParams::blur);
+  return kTable;
+}
+
+}  // namespace antumbra::passes

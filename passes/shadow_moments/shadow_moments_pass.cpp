@@ -1,0 +1,135 @@
+#include "shadow_moments_pass.hpp"
+
+#include <algorithm>
+
+#include "antumbra/gpu/commands.hpp"
+#include "antumbra/gpu/context.hpp"
+#include "antumbra/gpu/pipelines.hpp"
+#include "common/ports.hpp"
+#include "shadow_moments_interface.h"
+#include "shared/workgroups.h"
+
+namespace antumbra::passes {
+namespace {
+
+using shared::ShadowMomentsPush;
+
+constexpr std::uint32_t kGroup = ANTUMBRA_MOMENTS_GROUP;
+constexpr std::uint32_t kGroupsPerAxis = 4;  // per layer: 4x4 workgroups loop over the face
+constexpr VkShaderStageFlags kCompute = VK_SHADER_STAGE_COMPUTE_BIT;
+
+gpu::DescriptorSetLayoutBuilder bindings() {
+  gpu::DescriptorSetLayoutBuilder builder;
+  builder.storage_buffer(shared::kMomentsShadowData, kCompute)
+      .combined_image_sampler(shared::kMomentsInput, kCompute)
+      .storage_image(shared::kMomentsOutput, kCompute);
+  return builder;
+}
+
+const char* storage_format(VkFormat format) {
+  switch (format) {
+    case VK_FORMAT_R16G16B16A16_SFLOAT:
+      return "rgba16f";
+    case VK_FORMAT_R32G32_SFLOAT:
+      return "rg32f";
+    case VK_FORMAT_R16G16_SFLOAT:
+      return "rg16f";
+    default:
+      return "rgba32f";
+  }
+}
+
+bool is_half(VkFormat format) {
+  return format == VK_FORMAT_R16G16B16A16_SFLOAT || format == VK_FORMAT_R16G16_SFLOAT;
+}
+
+}  // namespace
+
+std::string_view to_string(MomentTechnique technique) {
+  switch (technique) {
+    case MomentTechnique::vsm:
+      return "vsm";
+    case MomentTechnique::evsm2:
+      return "evsm2";
+    case MomentTechnique::evsm4:
+      return "evsm4";
+    case MomentTechnique::msm:
+      return "msm";
+  }
+  return "vsm";
+}
+
+std::optional<MomentTechnique> parse_moment_technique(std::string_view name) {
+  for (const auto t : {MomentTechnique::vsm, MomentTechnique::evsm2, MomentTechnique::evsm4,
+                       MomentTechnique::msm}) {
+    if (name == to_string(t)) return t;
+  }
+  return std::nullopt;
+}
+
+std::uint32_t moment_components(MomentTechnique technique) {
+  return technique == MomentTechnique::vsm || technique == MomentTechnique::evsm2 ? 2u : 4u;
+}
+
+ShadowMomentsPass::ShadowMomentsPass(const fg::PlanPass& pass)
+    : params_(param_table().read(pass.params)) {
+}
+
+void ShadowMomentsPass::prepare(fgvk::PrepareContext& context) {
+  const VkFormat format = context.bindings.required_image(port::kMoments).format;
+  const std::vector<gpu::ShaderDefine> defines{
+      {"MOMENTS_TECHNIQUE", std::to_string(static_cast<int>(params_.technique))},
+      {"MOMENTS_HALF", is_half(format) ? "1" : "0"},
+      {"MOMENTS_FORMAT", storage_format(format)},
+  };
+  shader_files_.clear();
+  auto convert =
+      load_shader(context, "shadow_moments/moments_convert.comp", shader_files_, defines);
+  auto blur = load_shader(context, "shadow_moments/moments_blur.comp", shader_files_, defines);
+  convert_ = build_compute_pipeline(context, convert, bindings(), sizeof(ShadowMomentsPush));
+  blur_ = build_compute_pipeline(context, blur, bindings(), sizeof(ShadowMomentsPush));
+  filtered_for_ = VK_NULL_HANDLE;  // new pipelines (a technique change): redo every face
+}
+
+void ShadowMomentsPass::execute(fgvk::ExecuteContext& context) {
+  const auto& b = context.bindings;
+  const auto& atlas = b.required_image(port::kAtlas);
+  const auto& out = b.required_image(port::kMoments);
+  const VkBuffer shadow_data = b.buffer(port::kShadowData)->buffer;
+  const VkCommandBuffer cmd = context.cmd;
+
+  raw_.ensure(context.gpu, out.extent, out.layers, VK_FORMAT_R32G32B32A32_SFLOAT,
+              context.pass.name + ".raw");
+  raw_.begin_write(cmd);
+
+  const bool force_all = filtered_for_ != out.image;
+  filtered_for_ = out.image;
+  const FaceGroups groups = face_groups(out.extent, kGroup, kGroupsPerAxis);
+  const ShadowMomentsPush constants{atlas.extent.width / std::max(out.extent.width, 1u),
+                                    params_.blur, force_all ? 1u : 0u, groups.span};
+  const std::uint32_t layers = std::min(atlas.layers, out.layers);
+  const VkSampler nearest = context.samplers.nearest_clamp;
+
+  gpu::PushDescriptors convert;
+  convert.storage_buffer(shared::kMomentsShadowData, shadow_data)
+      .combined_image_sampler(shared::kMomentsInput, atlas.array_view, nearest, atlas.layout)
+      .storage_image(shared::kMomentsOutput, raw_.array_view(), VK_IMAGE_LAYOUT_GENERAL);
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, convert_.pipeline);
+  convert.push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, convert_.layout);
+  vkCmdPushConstants(cmd, convert_.layout, kCompute, 0, sizeof constants, &constants);
+  vkCmdDispatch(cmd, groups.x, groups.y, layers);
+
+  raw_.end_write(cmd);
+
+  gpu::PushDescriptors blur;
+  blur.storage_buffer(shared::kMomentsShadowData, shadow_data)
+      .combined_image_sampler(shared::kMomentsInput, raw_.array_view(), nearest,
+                              VK_IMAGE_LAYOUT_GENERAL)
+      .storage_image(shared::kMomentsOutput, out.array_view, out.layout);
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, blur_.pipeline);
+  blur.push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, blur_.layout);
+  vkCmdPushConstants(cmd, blur_.layout, kCompute, 0, sizeof constants, &constants);
+  vkCmdDispatch(cmd, groups.x, groups.y, layers);
+}
+
+}  // namespace antumbra::passes

@@ -1,0 +1,60 @@
+#pragma once
+// Pass type "shadow-moments": filtered shadow maps (VSM, EVSM with 2 or 4 components, MSM
+// with 4 moments) derived from every face of the shadow atlas: moments averaged down to
+// the map's size, then box-filtered. The lighting reads them with shadows = vsm | evsm2 |
+// evsm4 | msm (tiled-lighting). Reflection in shadow_moments_desc.cpp, shaders beside,
+// the moment math in common/moments.glsl (docs/technique.md 3, "Filtered shadow maps").
+//
+// Faces the atlas serves from its static cache keep their moments: only faces drawn this
+// frame (ShadowFace.info.w) are redone, except on the first frame.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "antumbra/fg/param_table.hpp"
+#include "antumbra/fgvk/pass.hpp"
+#include "antumbra/gpu/resources.hpp"
+#include "common/pass_support.hpp"
+#include "common/scratch_array.hpp"
+
+namespace antumbra::passes {
+
+// common/moments.glsl's MOMENTS_* values.
+enum class MomentTechnique : std::uint8_t { vsm, evsm2, evsm4, msm };
+
+std::string_view to_string(MomentTechnique technique);
+std::optional<MomentTechnique> parse_moment_technique(std::string_view name);
+// Components the technique stores (2 or 4).
+std::uint32_t moment_components(MomentTechnique technique);
+
+struct ShadowMomentsParams {
+  MomentTechnique technique = MomentTechnique::evsm4;
+  std::uint32_t blur = 2;
+};
+
+class ShadowMomentsPass final : public fgvk::Pass {
+ public:
+  static constexpr const char* kType = "shadow-moments";
+  static fg::PassDesc describe();
+  static const fg::ParamTable<ShadowMomentsParams>& param_table();
+  explicit ShadowMomentsPass(const fg::PlanPass& pass);
+
+  void prepare(fgvk::PrepareContext& context) override;
+  void execute(fgvk::ExecuteContext& context) override;
+  [[nodiscard]] std::vector<std::string> shader_files() const override { return shader_files_; }
+
+ private:
+  ShadowMomentsParams params_;
+  // The unfiltered moments between the two dispatches (rgba32f): the pass's own image,
+  // so its barriers are the pass's own (graph resources get theirs from the plan).
+  ScratchArray raw_;
+  VkImage filtered_for_ = VK_NULL_HANDLE;  // output image every face was filtered into
+  ComputePipeline convert_;
+  ComputePipeline blur_;
+  std::vector<std::string> shader_files_;
+};
+
+}  // namespace antumbra::passes
