@@ -24,6 +24,10 @@ const std::vector<Technique>& techniques() {
       {"ssss-blocker", "layered-ssss-blocker.json", "anisotropic-blur", {5, 11, 23}},
       {"ssss", "layered-ssss.json", "anisotropic-blur", {5, 11, 23}},
       {"ssss-min", "layered-ssss-min.json", "anisotropic-blur", {5, 11, 23}},
+      {"vsm", "vsm.json", "", {}},
+      {"evsm2", "evsm2.json", "", {}},
+      {"evsm4", "evsm4.json", "", {}},
+      {"msm", "msm.json", "", {}},
   };
   return kTechniques;
 }
@@ -144,7 +148,8 @@ void add_moving_table(std::vector<Scenario>& out, double scale) {
 // The sun: the courtyard (a sun and four lamps, shadows from 0.5 to 70 m away) with one
 // map against four PSSM cascades, in the filters that read them.
 void add_sun_table(std::vector<Scenario>& out, double scale) {
-  const std::pair<const char*, int> rows[] = {{"hard", 0}, {"pcf", 5}, {"pcss", 11}, {"ssss", 11}};
+  const std::pair<const char*, int> rows[] = {
+      {"hard", 0}, {"pcf", 5}, {"pcss", 11}, {"ssss", 11}, {"evsm4", 0}};
   for (const auto& [name, kernel] : rows) {
     for (const int cascades : {1, 4}) {
       Scenario s = make("sun", technique(name), kernel, 1080, kSunSceneLights, scale);
@@ -255,8 +260,10 @@ void fit_shadow_resources(fg::GraphDesc& graph, int lights, unsigned face) {
   }
   for (auto& r : graph.resources) {
     if (r.kind == fg::ResourceKind::image && r.layers >= 6 &&
-        (r.name == "atlas" || r.name == "shadowColour" || r.name == "minDepth")) {
-      const std::uint32_t factor = r.name == "minDepth" && atlas_width > 0 && r.size.width > 0
+        (r.name == "atlas" || r.name == "shadowColour" || r.name == "minDepth" ||
+         r.name == "moments")) {
+      const bool derived = r.name == "minDepth" || r.name == "moments";
+      const std::uint32_t factor = derived && atlas_width > 0 && r.size.width > 0
                                        ? std::max(atlas_width / r.size.width, 1u)
                                        : 1u;
       const std::uint32_t size = std::max(face / factor, 1u);

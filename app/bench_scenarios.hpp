@@ -73,7 +73,7 @@ std::vector<Scenario> select_scenarios(const std::vector<Scenario>& all,
 std::vector<std::string> apply_overrides(fg::GraphDesc& graph,
                                          const std::vector<ParamOverride>& overrides);
 
-// Sizes the shadow atlas (and its colour twin, min-filtered map and shadowData buffer)
+// Sizes the shadow atlas (and its colour twin, min-filtered and moment maps, and shadowData)
 // of a graph for `lights` shadow-casting lights: 6 layers per light up to the
 // device-independent limit of 2046 layers, faces of `face` texels (a derived map keeps
 // its factor of the graph's atlas size).
