@@ -269,6 +269,7 @@ TEST(BenchScenarios, SunTableComparesOneMapWithFourCascades) {
   for (const auto& s : rows) {
     EXPECT_EQ(s.scene, kSunScene) << s.name;
     EXPECT_EQ(s.lights, kSunSceneLights) << s.name;
+    EXPECT_FALSE(s.shadow_cache) << s.name << ": the cascades' cost, as with a moving camera";
     for (const auto& o : s.overrides) {
       if (o.param == "sunCascades" && o.value == 4) ++four;
     }
