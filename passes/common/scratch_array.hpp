@@ -11,6 +11,7 @@
 
 #include "antumbra/gpu/context.hpp"
 #include "antumbra/gpu/resources.hpp"
+#include "pass_support.hpp"
 
 namespace antumbra::passes {
 
@@ -40,5 +41,25 @@ struct FaceGroups {
   std::uint32_t y = 0;
 };
 FaceGroups face_groups(VkExtent2D extent, std::uint32_t group, std::uint32_t groups_per_axis);
+
+// One dispatch of a per-face derived map (both steps of shadow-min-filter and
+// shadow-moments): the shadow data at binding 0, `input` sampled (nearest) at 1, `output`
+// as a storage image at 2 (their interface headers use these numbers), one push-constant
+// block, `groups` per layer for `layers` layers.
+inline constexpr std::uint32_t kFaceStepShadowData = 0;
+inline constexpr std::uint32_t kFaceStepInput = 1;
+inline constexpr std::uint32_t kFaceStepOutput = 2;
+gpu::DescriptorSetLayoutBuilder face_step_bindings();
+
+struct FaceStep {
+  VkBuffer shadow_data = VK_NULL_HANDLE;
+  VkImageView input = VK_NULL_HANDLE;
+  VkImageLayout input_layout = VK_IMAGE_LAYOUT_UNDEFINED;
+  VkImageView output = VK_NULL_HANDLE;
+  VkImageLayout output_layout = VK_IMAGE_LAYOUT_UNDEFINED;
+};
+void dispatch_face_step(fgvk::ExecuteContext& context, const ComputePipeline& pipeline,
+                        const FaceStep& step, const void* constants, std::uint32_t constant_bytes,
+                        const FaceGroups& groups, std::uint32_t layers);
 
 }  // namespace antumbra::passes

@@ -26,6 +26,7 @@
 //   float shadow_linearise(float depth, float near, float far)      metres along the axis
 //   float shadow_linearise_light(ShadowLight l, float depth)         same, any light type
 //   bool  shadow_is_ortho(ShadowLight l)                             directional light
+//   float shadow_depth_fraction(ShadowLight l, float depth)          0..1 of the range
 //   vec3  shadow_offset_position(ShadowLight l, vec3 world_pos, vec3 normal, float face_size)
 //   float shadow_face_texels(ShadowLight l, float atlas_size)       the light's face size
 //   ShadowCoord shadow_coord(mat4 face_view_proj, ShadowLight l, int layer, vec3 world_pos)
@@ -36,6 +37,8 @@
 // Convenience, when the includer defines SHADOW_FACES (the name of its ShadowFace
 // array, e.g. `#define SHADOW_FACES shadow_faces`) before including this file:
 //   ShadowPick shadow_pick(ShadowLight l, vec3 world_pos)           face (and cascade blend)
+//   ShadowLookup shadow_offset_lookup(ShadowLight l, int layer, vec3 world_pos, vec3 normal,
+//                                     float face_texels)            offset receiver, its face
 //   float shadow_hard(sampler2DArray atlas, ShadowLight l, vec3 world_pos, vec3 normal)
 //
 // Cascades (docs/technique.md 3, "Cascaded shadow maps"): a point is looked up in the
@@ -132,6 +135,15 @@ float shadow_linearise_light(ShadowLight l, float depth) {
   return shadow_linearise(depth, l.params.y, l.position_range.w);
 }
 
+// Depth as a fraction of the light's range, 0..1: distance along the face axis over the
+// range (point, spot), the orthographic map's linear depth (the sun); 1 where nothing is
+// drawn. The filtered shadow maps' `t` (common/moments.glsl), for occluders and receivers.
+float shadow_depth_fraction(ShadowLight l, float depth) {
+  if (depth >= 1.0) return 1.0;
+  if (shadow_is_ortho(l)) return clamp(depth, 0.0, 1.0);
+  return clamp(shadow_linearise_light(l, depth) / max(l.position_range.w, 1e-6), 0.0, 1.0);
+}
+
 // Moves the receiver off its surface by about SHADOW_NORMAL_OFFSET texels, scaled up
 // where the surface turns away from the light (where acne starts). A 90-degree face of
 // `face_size` texels spans 2 * distance / face_size metres per texel at `distance`; a
@@ -201,18 +213,32 @@ ShadowPick shadow_pick(ShadowLight l, vec3 world_pos) {
   return ShadowPick(-1, -1, 0.0);
 }
 
+// A receiver moved off its surface (shadow_offset_position by `face_texels`) and where it
+// is then looked up: a cascade keeps the layer shadow_pick chose (`layer`; its texel size
+// sets the offset), a cube face is chosen again after the offset, which may cross into
+// another face. `light` is the light as that face sees it (shadow_face_light).
+struct ShadowLookup {
+  ShadowLight light;
+  int layer;
+  vec3 position;
+};
+
+ShadowLookup shadow_offset_lookup(ShadowLight l, int layer, vec3 world_pos, vec3 normal,
+                                  float face_texels) {
+  ShadowLookup r;
+  r.light = shadow_face_light(l, SHADOW_FACES[layer].view_proj);
+  r.position = shadow_offset_position(r.light, world_pos, normal, face_texels);
+  r.layer = shadow_is_ortho(l) ? layer : shadow_face_layer(l, r.position);
+  return r;
+}
+
 float shadow_hard(sampler2DArray atlas, ShadowLight l, vec3 world_pos, vec3 normal) {
   ShadowPick pick = shadow_pick(l, world_pos);
   if (pick.layer < 0) return 1.0;
-  mat4 view_proj = SHADOW_FACES[pick.layer].view_proj;
-  ShadowLight fl = shadow_face_light(l, view_proj);
-  vec3 p = shadow_offset_position(fl, world_pos, normal,
-                                  shadow_face_texels(l, float(textureSize(atlas, 0).x)));
-  if (!shadow_is_ortho(l)) {  // the offset may cross into another cube face
-    pick.layer = shadow_face_layer(l, p);
-    view_proj = SHADOW_FACES[pick.layer].view_proj;
-  }
-  return shadow_hard_coord(atlas, shadow_coord(view_proj, fl, pick.layer, p));
+  ShadowLookup q = shadow_offset_lookup(l, pick.layer, world_pos, normal,
+                                        shadow_face_texels(l, float(textureSize(atlas, 0).x)));
+  return shadow_hard_coord(atlas,
+                           shadow_coord(SHADOW_FACES[q.layer].view_proj, q.light, q.layer, q.position));
 }
 #endif
 

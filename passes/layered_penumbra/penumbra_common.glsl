@@ -28,13 +28,13 @@ PenumbraSample estimate_penumbra(ShadowLight light, vec3 world, vec3 n_world, bo
 
   ShadowPick pick = shadow_pick(light, world);
   if (pick.layer < 0) return result;
-  int layer = pick.next >= 0 && dither < pick.blend ? pick.next : pick.layer;
-  ShadowLight sl = shadow_face_light(light, faces[layer].view_proj);
+  float face_size = shadow_face_texels(light, float(shadow_header.counts.z));
+  ShadowLookup q = shadow_offset_lookup(
+      light, pick.next >= 0 && dither < pick.blend ? pick.next : pick.layer, world, n_world,
+      face_size);
+  ShadowLight sl = q.light;
   float light_size = sl.params.x * light_size_scale;
-  float face_size = shadow_face_texels(sl, float(shadow_header.counts.z));
-  vec3 p = shadow_offset_position(sl, world, n_world, face_size);
-  if (!shadow_is_ortho(sl)) layer = shadow_face_layer(sl, p);  // offsets cross cube faces
-  ShadowCoord c = shadow_coord(faces[layer].view_proj, sl, layer, p);
+  ShadowCoord c = shadow_coord(faces[q.layer].view_proj, sl, q.layer, q.position);
   if (!c.valid || c.depth >= 1.0) return result;
   result.in_shadow = shadow_hard_coord(atlas, c) < 0.5;
   // ESM (docs/technique.md section 3): the occluder at the lookup against the receiver, in

@@ -2,6 +2,7 @@
 #extension GL_GOOGLE_include_directive : require
 #include "../common/frame.glsl"
 #include "../interface/shared/shadow_data.h"
+#include "../common/shadow_sampling.glsl"
 #include "face_decision_interface.h"
 
 // Marks every shadow face some visible pixel needs (docs/technique.md, "Receiver-driven
@@ -44,7 +45,7 @@ uint faces_of(ShadowLight l, vec3 p) {
   float type = l.direction_type.w;
   // Every cascade of the sun: which one a pixel reads depends on the fit, and the
   // cascades fitted around the camera frustum have visible receivers by construction.
-  if (type > 1.5) return (1u << uint(clamp(int(l.projection.w), 1, 4))) - 1u;
+  if (type > 1.5) return (1u << uint(shadow_cascade_count(l))) - 1u;
   vec3 d = p - l.position_range.xyz;
   float reach = l.position_range.w * (1.0 + kReceiverMargin);
   if (dot(d, d) > reach * reach) return 0u;

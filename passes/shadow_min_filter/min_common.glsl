@@ -19,7 +19,4 @@ layout(set = 0, binding = kMinShadowData) readonly buffer Shadows {
 
 #include "../common/derived_faces.glsl"
 
-bool layer_needs_filter(uint layer) { return derived_layer_needed(layer, force_all != 0u); }
-ivec2 face_extent(uint layer, ivec2 size) { return derived_face_extent(layer, size); }
-
 #endif

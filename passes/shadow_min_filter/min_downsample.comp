@@ -32,8 +32,8 @@ float nearest_under(ivec2 p, uint layer) {
 
 void main() {
   uint layer = gl_WorkGroupID.z;
-  if (!layer_needs_filter(layer)) return;
-  ivec2 size = face_extent(layer, imageSize(coarse).xy);
+  if (!derived_layer_needed(layer, force_all != 0u)) return;
+  ivec2 size = derived_face_extent(layer, imageSize(coarse).xy);
   if (any(greaterThanEqual(ivec2(gl_WorkGroupID.xy) * int(span), size))) return;
   ivec2 origin = ivec2(gl_WorkGroupID.xy) * int(span) + ivec2(gl_LocalInvocationID.xy);
   for (int y = 0; y < int(span); y += GROUP) {

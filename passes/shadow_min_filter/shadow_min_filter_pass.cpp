@@ -13,19 +13,11 @@ namespace antumbra::passes {
 namespace {
 
 using shared::ShadowMinFilterPush;
+static_assert(shared::kMinShadowData == kFaceStepShadowData &&
+              shared::kMinInput == kFaceStepInput && shared::kMinOutput == kFaceStepOutput);
 
 constexpr std::uint32_t kGroup = ANTUMBRA_MIN_FILTER_GROUP;  // min_common.glsl's GROUP
 constexpr std::uint32_t kGroupsPerAxis = 2;  // per layer: 2x2 workgroups loop over the face
-constexpr VkShaderStageFlags kCompute = VK_SHADER_STAGE_COMPUTE_BIT;
-
-// Both dispatches: shadowData, the sampled input, the storage output.
-gpu::DescriptorSetLayoutBuilder bindings() {
-  gpu::DescriptorSetLayoutBuilder builder;
-  builder.storage_buffer(shared::kMinShadowData, kCompute)
-      .combined_image_sampler(shared::kMinInput, kCompute)
-      .storage_image(shared::kMinOutput, kCompute);
-  return builder;
-}
 
 }  // namespace
 
@@ -36,8 +28,10 @@ ShadowMinFilterPass::ShadowMinFilterPass(const fg::PlanPass& pass)
 void ShadowMinFilterPass::prepare(fgvk::PrepareContext& context) {
   auto down = load_shader(context, "shadow_min_filter/min_downsample.comp", shader_files_);
   auto separable = load_shader(context, "shadow_min_filter/min_separable.comp", shader_files_);
-  downsample_ = build_compute_pipeline(context, down, bindings(), sizeof(ShadowMinFilterPush));
-  separable_ = build_compute_pipeline(context, separable, bindings(), sizeof(ShadowMinFilterPush));
+  downsample_ =
+      build_compute_pipeline(context, down, face_step_bindings(), sizeof(ShadowMinFilterPush));
+  separable_ =
+      build_compute_pipeline(context, separable, face_step_bindings(), sizeof(ShadowMinFilterPush));
 }
 
 void ShadowMinFilterPass::execute(fgvk::ExecuteContext& context) {
@@ -62,28 +56,16 @@ void ShadowMinFilterPass::execute(fgvk::ExecuteContext& context) {
       groups.span,
   };
   const std::uint32_t layers = std::min(atlas.layers, out.layers);
-  const VkSampler nearest = context.samplers.nearest_clamp;
 
-  gpu::PushDescriptors down;
-  down.storage_buffer(shared::kMinShadowData, shadow_data)
-      .combined_image_sampler(shared::kMinInput, atlas.array_view, nearest, atlas.layout)
-      .storage_image(shared::kMinOutput, coarse_.array_view(), VK_IMAGE_LAYOUT_GENERAL);
-  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, downsample_.pipeline);
-  down.push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, downsample_.layout);
-  vkCmdPushConstants(cmd, downsample_.layout, kCompute, 0, sizeof constants, &constants);
-  vkCmdDispatch(cmd, groups.x, groups.y, layers);
-
+  dispatch_face_step(
+      context, downsample_,
+      {shadow_data, atlas.array_view, atlas.layout, coarse_.array_view(), VK_IMAGE_LAYOUT_GENERAL},
+      &constants, sizeof constants, groups, layers);
   coarse_.end_write(cmd);
-
-  gpu::PushDescriptors sep;
-  sep.storage_buffer(shared::kMinShadowData, shadow_data)
-      .combined_image_sampler(shared::kMinInput, coarse_.array_view(), nearest,
-                              VK_IMAGE_LAYOUT_GENERAL)
-      .storage_image(shared::kMinOutput, out.array_view, out.layout);
-  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, separable_.pipeline);
-  sep.push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, separable_.layout);
-  vkCmdPushConstants(cmd, separable_.layout, kCompute, 0, sizeof constants, &constants);
-  vkCmdDispatch(cmd, groups.x, groups.y, layers);
+  dispatch_face_step(
+      context, separable_,
+      {shadow_data, coarse_.array_view(), VK_IMAGE_LAYOUT_GENERAL, out.array_view, out.layout},
+      &constants, sizeof constants, groups, layers);
 }
 
 }  // namespace antumbra::passes

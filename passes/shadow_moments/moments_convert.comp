@@ -14,14 +14,6 @@ layout(local_size_x = GROUP, local_size_y = GROUP) in;
 layout(set = 0, binding = kMomentsInput) uniform sampler2DArray atlas;
 layout(set = 0, binding = kMomentsOutput, rgba32f) uniform writeonly image2DArray raw;
 
-// Atlas depth -> t in [0, 1]: distance along the face axis over the light's range (the
-// sun's maps are linear already). Cleared texels (nothing drawn) are at the range.
-float moment_depth(ShadowLight l, float depth) {
-  if (depth >= 1.0) return 1.0;
-  if (shadow_is_ortho(l)) return clamp(depth, 0.0, 1.0);
-  return clamp(shadow_linearise_light(l, depth) / max(l.position_range.w, 1e-6), 0.0, 1.0);
-}
-
 void main() {
   uint layer = gl_WorkGroupID.z;
   if (!derived_layer_needed(layer, force_all != 0u)) return;
@@ -38,7 +30,7 @@ void main() {
       for (int dy = 0; dy < f; ++dy) {
         for (int dx = 0; dx < f; ++dx) {
           float d = texelFetch(atlas, ivec3(p * f + ivec2(dx, dy), int(layer)), 0).r;
-          sum += moments_encode(moment_depth(l, d));
+          sum += moments_encode(shadow_depth_fraction(l, d));
         }
       }
       imageStore(raw, ivec3(p, int(layer)), sum / float(f * f));

@@ -13,18 +13,11 @@ namespace antumbra::passes {
 namespace {
 
 using shared::ShadowMomentsPush;
+static_assert(shared::kMomentsShadowData == kFaceStepShadowData &&
+              shared::kMomentsInput == kFaceStepInput && shared::kMomentsOutput == kFaceStepOutput);
 
 constexpr std::uint32_t kGroup = ANTUMBRA_MOMENTS_GROUP;
 constexpr std::uint32_t kGroupsPerAxis = 4;  // per layer: 4x4 workgroups loop over the face
-constexpr VkShaderStageFlags kCompute = VK_SHADER_STAGE_COMPUTE_BIT;
-
-gpu::DescriptorSetLayoutBuilder bindings() {
-  gpu::DescriptorSetLayoutBuilder builder;
-  builder.storage_buffer(shared::kMomentsShadowData, kCompute)
-      .combined_image_sampler(shared::kMomentsInput, kCompute)
-      .storage_image(shared::kMomentsOutput, kCompute);
-  return builder;
-}
 
 const char* storage_format(VkFormat format) {
   switch (format) {
@@ -37,10 +30,6 @@ const char* storage_format(VkFormat format) {
     default:
       return "rgba32f";
   }
-}
-
-bool is_half(VkFormat format) {
-  return format == VK_FORMAT_R16G16B16A16_SFLOAT || format == VK_FORMAT_R16G16_SFLOAT;
 }
 
 }  // namespace
@@ -67,6 +56,10 @@ std::optional<MomentTechnique> parse_moment_technique(std::string_view name) {
   return std::nullopt;
 }
 
+bool is_half_moments(VkFormat format) {
+  return format == VK_FORMAT_R16G16B16A16_SFLOAT || format == VK_FORMAT_R16G16_SFLOAT;
+}
+
 std::uint32_t moment_components(MomentTechnique technique) {
   return technique == MomentTechnique::vsm || technique == MomentTechnique::evsm2 ? 2u : 4u;
 }
@@ -79,15 +72,16 @@ void ShadowMomentsPass::prepare(fgvk::PrepareContext& context) {
   const VkFormat format = context.bindings.required_image(port::kMoments).format;
   const std::vector<gpu::ShaderDefine> defines{
       {"MOMENTS_TECHNIQUE", std::to_string(static_cast<int>(params_.technique))},
-      {"MOMENTS_HALF", is_half(format) ? "1" : "0"},
+      {"MOMENTS_HALF", is_half_moments(format) ? "1" : "0"},
       {"MOMENTS_FORMAT", storage_format(format)},
   };
   shader_files_.clear();
   auto convert =
       load_shader(context, "shadow_moments/moments_convert.comp", shader_files_, defines);
   auto blur = load_shader(context, "shadow_moments/moments_blur.comp", shader_files_, defines);
-  convert_ = build_compute_pipeline(context, convert, bindings(), sizeof(ShadowMomentsPush));
-  blur_ = build_compute_pipeline(context, blur, bindings(), sizeof(ShadowMomentsPush));
+  convert_ =
+      build_compute_pipeline(context, convert, face_step_bindings(), sizeof(ShadowMomentsPush));
+  blur_ = build_compute_pipeline(context, blur, face_step_bindings(), sizeof(ShadowMomentsPush));
   filtered_for_ = VK_NULL_HANDLE;  // new pipelines (a technique change): redo every face
 }
 
@@ -108,28 +102,16 @@ void ShadowMomentsPass::execute(fgvk::ExecuteContext& context) {
   const ShadowMomentsPush constants{atlas.extent.width / std::max(out.extent.width, 1u),
                                     params_.blur, force_all ? 1u : 0u, groups.span};
   const std::uint32_t layers = std::min(atlas.layers, out.layers);
-  const VkSampler nearest = context.samplers.nearest_clamp;
 
-  gpu::PushDescriptors convert;
-  convert.storage_buffer(shared::kMomentsShadowData, shadow_data)
-      .combined_image_sampler(shared::kMomentsInput, atlas.array_view, nearest, atlas.layout)
-      .storage_image(shared::kMomentsOutput, raw_.array_view(), VK_IMAGE_LAYOUT_GENERAL);
-  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, convert_.pipeline);
-  convert.push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, convert_.layout);
-  vkCmdPushConstants(cmd, convert_.layout, kCompute, 0, sizeof constants, &constants);
-  vkCmdDispatch(cmd, groups.x, groups.y, layers);
-
+  dispatch_face_step(
+      context, convert_,
+      {shadow_data, atlas.array_view, atlas.layout, raw_.array_view(), VK_IMAGE_LAYOUT_GENERAL},
+      &constants, sizeof constants, groups, layers);
   raw_.end_write(cmd);
-
-  gpu::PushDescriptors blur;
-  blur.storage_buffer(shared::kMomentsShadowData, shadow_data)
-      .combined_image_sampler(shared::kMomentsInput, raw_.array_view(), nearest,
-                              VK_IMAGE_LAYOUT_GENERAL)
-      .storage_image(shared::kMomentsOutput, out.array_view, out.layout);
-  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, blur_.pipeline);
-  blur.push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, blur_.layout);
-  vkCmdPushConstants(cmd, blur_.layout, kCompute, 0, sizeof constants, &constants);
-  vkCmdDispatch(cmd, groups.x, groups.y, layers);
+  dispatch_face_step(
+      context, blur_,
+      {shadow_data, raw_.array_view(), VK_IMAGE_LAYOUT_GENERAL, out.array_view, out.layout},
+      &constants, sizeof constants, groups, layers);
 }
 
 }  // namespace antumbra::passes

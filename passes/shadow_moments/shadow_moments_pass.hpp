@@ -29,6 +29,8 @@ std::string_view to_string(MomentTechnique technique);
 std::optional<MomentTechnique> parse_moment_technique(std::string_view name);
 // Components the technique stores (2 or 4).
 std::uint32_t moment_components(MomentTechnique technique);
+// A 16-bit moment map: common/moments.glsl's MOMENTS_HALF (smaller EVSM exponents).
+bool is_half_moments(VkFormat format);
 
 struct ShadowMomentsParams {
   MomentTechnique technique = MomentTechnique::evsm4;

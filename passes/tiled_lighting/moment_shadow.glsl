@@ -32,18 +32,15 @@ vec4 moments_bilinear(vec2 face_uv, float layer, float texels, float share) {
 }
 
 float moment_shadow_face(ShadowLight light, int layer, vec3 p_world, vec3 n_world) {
-  mat4 view_proj = shadow_faces[layer].view_proj;
-  ShadowLight sl = shadow_face_light(light, view_proj);
   // The face's texels in the moment map (per-light resolution shares the layer's square).
-  float share = sl.projection.z > 0.0 ? sl.projection.z : 1.0;
+  float share = light.projection.z > 0.0 ? light.projection.z : 1.0;
   float texels = max(float(textureSize(moments_map, 0).x) * share, 1.0);
-  vec3 p = shadow_offset_position(sl, p_world, n_world, texels);
-  if (!shadow_is_ortho(sl)) layer = shadow_face_layer(sl, p);  // offsets cross cube faces
-  ShadowCoord c = shadow_coord(shadow_faces[layer].view_proj, sl, layer, p);
+  ShadowLookup q = shadow_offset_lookup(light, layer, p_world, n_world, texels);
+  ShadowCoord c = shadow_coord(shadow_faces[q.layer].view_proj, q.light, q.layer, q.position);
   if (!c.valid || c.depth >= 1.0) return 1.0;
-  float t = shadow_is_ortho(sl) ? c.depth : c.linear / max(sl.position_range.w, 1e-6);
   vec4 m = moments_bilinear(c.uv, c.layer, texels, share);
-  return moments_visibility(m, clamp(t, 0.0, 1.0), MOMENT_EPSILON, BLEEDING_REDUCTION);
+  return moments_visibility(m, shadow_depth_fraction(q.light, c.depth), MOMENT_EPSILON,
+                            BLEEDING_REDUCTION);
 }
 
 float moment_shadow(uint index, vec3 p_world, vec3 n_world) {

@@ -139,7 +139,7 @@ void check_moments(const fg::PlanPass& pass, const fg::Plan& plan, const fg::Gra
       continue;
     }
     const auto technique = ShadowMomentsPass::param_table().read(producer.params).technique;
-    if (to_string(technique) != to_string(mode)) {
+    if (static_cast<int>(technique) != moment_technique_index(mode)) {
       add_pass_error(graph, pass, codes::lighting::kMomentsTechnique,
                      "shadows = " + std::string(to_string(mode)) + " but '" + producer.name +
                          "' stores " + std::string(to_string(technique)) +

@@ -12,6 +12,7 @@
 #include "common/pass_support.hpp"
 #include "common/ports.hpp"
 #include "common/shadow_data.hpp"
+#include "shadow_moments/shadow_moments_pass.hpp"
 #include "tiled_lighting_interface.h"
 
 namespace antumbra::passes {
@@ -121,13 +122,9 @@ void TiledLightingPass::prepare(fgvk::PrepareContext& context) {
       {"BLOCKER_SEARCH", std::to_string(params_.blocker_search)},
       {"HDR_FORMAT", hdr_format == VK_FORMAT_R32G32B32A32_SFLOAT ? "rgba32f" : "rgba16f"},
       {"SHADOW_TEXELS", std::to_string(shadow_texels(b, mode_))},
-      {"MOMENTS_TECHNIQUE",
-       std::to_string(is_moment_mode(mode_) ? static_cast<int>(mode_) - 5 : 0)},
+      {"MOMENTS_TECHNIQUE", std::to_string(moment_technique_index(mode_))},
       {"MOMENTS_HALF",
-       has_moments_ && (b.required_image(port::kMoments).format == VK_FORMAT_R16G16B16A16_SFLOAT ||
-                        b.required_image(port::kMoments).format == VK_FORMAT_R16G16_SFLOAT)
-           ? "1"
-           : "0"},
+       has_moments_ && is_half_moments(b.required_image(port::kMoments).format) ? "1" : "0"},
       {"BLEEDING_REDUCTION", std::to_string(params_.bleeding_reduction)},
   };
   shader_files_.clear();

@@ -19,11 +19,15 @@
 namespace antumbra::passes {
 
 // vsm .. msm: filtered shadow maps from shadow-moments (its technique, in the same order
-// from vsm on as MomentTechnique; SHADOW_MODE - 5 is MOMENTS_TECHNIQUE).
+// from vsm on as MomentTechnique; moment_technique_index).
 enum class ShadowMode : std::uint8_t { none, hard, pcf, pcss, layered, vsm, evsm2, evsm4, msm };
 
 [[nodiscard]] constexpr bool is_moment_mode(ShadowMode mode) {
   return mode >= ShadowMode::vsm;
+}
+// The MOMENTS_TECHNIQUE value of a moment mode (MomentTechnique's order).
+[[nodiscard]] constexpr int moment_technique_index(ShadowMode mode) {
+  return is_moment_mode(mode) ? static_cast<int>(mode) - static_cast<int>(ShadowMode::vsm) : 0;
 }
 
 std::optional<ShadowMode> parse_shadow_mode(std::string_view name);
