@@ -28,6 +28,8 @@ const std::vector<Technique>& techniques() {
       {"evsm2", "evsm2.json", "", {}},
       {"evsm4", "evsm4.json", "", {}},
       {"msm", "msm.json", "", {}},
+      {"vssm", "vssm.json", "", {}},
+      {"sdf", "sdf.json", "", {}},
   };
   return kTechniques;
 }
@@ -57,7 +59,8 @@ Scenario make(const std::string& table, const Technique& t, int kernel, unsigned
   // their matrices and so redraw themselves.
   s.shadow_cache =
       table == "lights" || table == "moving" || table == "penumbra" || table == "dynamic";
-  if (std::string(t.graph) != "lighting.json") {
+  // No shadow atlas to pin in the unshadowed and the distance-field graphs.
+  if (std::string(t.graph) != "lighting.json" && std::string(t.graph) != "sdf.json") {
     s.overrides.push_back({"point-shadow-atlas", "cache", s.shadow_cache});
     // Pinned: "auto" would pick per device and change what a row measures. Compute
     // rows override it.
@@ -149,8 +152,8 @@ void add_moving_table(std::vector<Scenario>& out, double scale) {
 // map against four PSSM cascades, in the filters that read them. Every face is redrawn
 // each frame: the cascades follow the camera, so whenever it moves they are redrawn.
 void add_sun_table(std::vector<Scenario>& out, double scale) {
-  const std::pair<const char*, int> rows[] = {
-      {"hard", 0}, {"pcf", 5}, {"pcss", 11}, {"ssss", 11}, {"evsm4", 0}};
+  const std::pair<const char*, int> rows[] = {{"hard", 0},  {"pcf", 5},   {"pcss", 11},
+                                              {"ssss", 11}, {"evsm4", 0}, {"vssm", 0}};
   for (const auto& [name, kernel] : rows) {
     for (const int cascades : {1, 4}) {
       Scenario s = make("sun", technique(name), kernel, 1080, kSunSceneLights, scale);

@@ -7,6 +7,8 @@
 //   MOMENTS_EVSM4  EVSM2 and (-e^(-c- w), e^(-2 c- w))
 //   MOMENTS_MSM    (t, t^2, t^3, t^4), Hamburger 4-moment reconstruction (Peters and
 //                  Klein 2015, algorithm 3)
+//   MOMENTS_VSSM   VSM's (t, t^2), stored as a summed-area table (common/summed_area.glsl)
+//                  so any box filters in constant time (Yang et al. 2010)
 // t is the occluder's depth in [0, 1]: distance along the face axis over the light's range
 // (point, spot), or the orthographic map's linear depth (the sun). EVSM's exponents follow
 // the map's precision: MOMENTS_HALF (rgba16f) keeps e^(2c) below the half-float maximum.
@@ -17,6 +19,7 @@
 #define MOMENTS_EVSM2 1
 #define MOMENTS_EVSM4 2
 #define MOMENTS_MSM 3
+#define MOMENTS_VSSM 4
 
 #ifndef MOMENTS_HALF
 #define MOMENTS_HALF 0
@@ -27,7 +30,7 @@
 vec2 evsm_exponents() { return MOMENTS_HALF != 0 ? vec2(5.54) : vec2(40.0, 5.0); }
 
 vec4 moments_encode(float t) {
-#if MOMENTS_TECHNIQUE == MOMENTS_VSM
+#if MOMENTS_TECHNIQUE == MOMENTS_VSM || MOMENTS_TECHNIQUE == MOMENTS_VSSM
   return vec4(t, t * t, 0.0, 0.0);
 #elif MOMENTS_TECHNIQUE == MOMENTS_MSM
   float t2 = t * t;
@@ -89,7 +92,7 @@ float msm_visibility(vec4 moments, float z) {
 // `epsilon`: the depth tolerance (in t) below which a receiver counts as on its occluder
 // (the minimum variance, warped like the depth for EVSM).
 float moments_visibility(vec4 m, float t, float epsilon, float bleeding) {
-#if MOMENTS_TECHNIQUE == MOMENTS_VSM
+#if MOMENTS_TECHNIQUE == MOMENTS_VSM || MOMENTS_TECHNIQUE == MOMENTS_VSSM
   float v = chebyshev_upper_bound(m.xy, t, epsilon * epsilon);
 #elif MOMENTS_TECHNIQUE == MOMENTS_MSM
   float v = msm_visibility(m, t - epsilon);

@@ -24,6 +24,8 @@ inline constexpr fg::PortId kMinDepth{"minDepth"};
 inline constexpr fg::PortId kMoments{"moments"};
 inline constexpr fg::PortId kShadowData{"shadowData"};
 inline constexpr fg::PortId kLayerTable{"layerTable"};
+inline constexpr fg::PortId kSdf{"sdf"};
+inline constexpr fg::PortId kSdfInfo{"sdfInfo"};
 
 // Screen-space shadow layers and their inputs.
 inline constexpr fg::PortId kPenumbra{"penumbra"};

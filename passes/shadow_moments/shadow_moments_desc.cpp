@@ -10,7 +10,8 @@ namespace {
 
 // The map's geometry as for every atlas-derived map; its format must hold the technique:
 // four components for EVSM4 and MSM, 32-bit floats for MSM (its four powers of depth
-// need them: half floats would need Peters and Klein's quantisation transform).
+// need them: half floats would need Peters and Klein's quantisation transform), rg32ui
+// for VSSM's fixed-point summed-area table and for nothing else.
 void check(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& graph,
            base::Diagnostics& diagnostics) {
   check_derived_map(pass, plan, graph, port::kMoments, false, diagnostics);
@@ -18,8 +19,13 @@ void check(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& 
   if (out == nullptr) return;
   const MomentTechnique technique = ShadowMomentsPass::param_table().read(pass.params).technique;
   const bool four = out->format == fg::Format::rgba16f || out->format == fg::Format::rgba32f;
+  const bool table = out->format == fg::Format::rg32ui;
   std::string problem;
-  if (moment_components(technique) == 4 && !four) {
+  if (technique == MomentTechnique::vssm && !table) {
+    problem = "is not a summed-area table; vssm needs rg32ui";
+  } else if (technique != MomentTechnique::vssm && table) {
+    problem = "holds a summed-area table; only vssm writes rg32ui";
+  } else if (moment_components(technique) == 4 && !four) {
     problem = "holds 2 components; " + std::string(to_string(technique)) + " needs 4 (rgba32f" +
               (technique == MomentTechnique::msm ? ")" : " or rgba16f)");
   } else if (technique == MomentTechnique::msm && out->format != fg::Format::rgba32f) {
@@ -42,8 +48,9 @@ fg::PassDesc ShadowMomentsPass::describe() {
   desc.type = kType;
   desc.description =
       "Filtered shadow maps: every shadow face as moments of its depth (VSM, EVSM with 2 or 4 "
-      "components, MSM with 4), averaged down to the map's size and box-filtered, for "
-      "tiled-lighting's shadows = vsm | evsm2 | evsm4 | msm.";
+      "components, MSM with 4), averaged down to the map's size and box-filtered, or for VSSM "
+      "a summed-area table of VSM's moments; for tiled-lighting's shadows = vsm | evsm2 | "
+      "evsm4 | msm | vssm.";
   desc.ports = {
       compute_array_input(port::kAtlas, {Format::d32f, Format::d16, Format::r32f}, 1, 0,
                           "Shadow faces of every light (point-shadow-atlas)."),
@@ -53,7 +60,7 @@ fg::PassDesc ShadowMomentsPass::describe() {
        .direction = PortDirection::output,
        .access = Access::storage_write,
        .stage = Stage::compute,
-       .formats = {Format::rgba32f, Format::rgba16f, Format::rg32f, Format::rg16f},
+       .formats = {Format::rgba32f, Format::rgba16f, Format::rg32f, Format::rg16f, Format::rg32ui},
        .min_layers = 1,
        .max_layers = 0,
        .description = "Per face: filtered moments; the atlas size divided by an integer factor, "
@@ -70,20 +77,22 @@ const fg::ParamTable<ShadowMomentsParams>& ShadowMomentsPass::param_table() {
           .choice({.name = "technique",
                    .type = fg::ParamType::enumeration,
                    .default_value = "evsm4",
-                   .choices = {"vsm", "evsm2", "evsm4", "msm"},
+                   .choices = {"vsm", "evsm2", "evsm4", "msm", "vssm"},
                    .description = "Moments stored: vsm (depth, depth^2), evsm2 / evsm4 "
                                   "(exponentially warped, positive / and negative), msm (4 "
-                                  "powers of depth; needs rgba32f)."},
+                                  "powers of depth; needs rgba32f), vssm (VSM's moments as a "
+                                  "summed-area table for any filter size; needs rg32ui)."},
                   &ShadowMomentsParams::technique,
                   {MomentTechnique::vsm, MomentTechnique::evsm2, MomentTechnique::evsm4,
-                   MomentTechnique::msm})
+                   MomentTechnique::msm, MomentTechnique::vssm})
           .add({.name = "blur",
                 .type = fg::ParamType::integer,
                 .default_value = 2,
                 .min = 0.0,
                 .max = 8.0,
                 .description = "Half width of the separable box prefilter in map texels "
-                               "((2 blur + 1)^2 texels; 0: only the downsampling average)."},
+                               "((2 blur + 1)^2 texels; 0: only the downsampling average). "
+                               "vssm ignores it: the lighting filters each receiver's box."},
                &ShadowMomentsParams::blur);
   return kTable;
 }

@@ -44,13 +44,15 @@ std::string_view to_string(MomentTechnique technique) {
       return "evsm4";
     case MomentTechnique::msm:
       return "msm";
+    case MomentTechnique::vssm:
+      return "vssm";
   }
   return "vsm";
 }
 
 std::optional<MomentTechnique> parse_moment_technique(std::string_view name) {
   for (const auto t : {MomentTechnique::vsm, MomentTechnique::evsm2, MomentTechnique::evsm4,
-                       MomentTechnique::msm}) {
+                       MomentTechnique::msm, MomentTechnique::vssm}) {
     if (name == to_string(t)) return t;
   }
   return std::nullopt;
@@ -61,7 +63,10 @@ bool is_half_moments(VkFormat format) {
 }
 
 std::uint32_t moment_components(MomentTechnique technique) {
-  return technique == MomentTechnique::vsm || technique == MomentTechnique::evsm2 ? 2u : 4u;
+  return technique == MomentTechnique::vsm || technique == MomentTechnique::evsm2 ||
+                 technique == MomentTechnique::vssm
+             ? 2u
+             : 4u;
 }
 
 ShadowMomentsPass::ShadowMomentsPass(const fg::PlanPass& pass)
@@ -78,7 +83,10 @@ void ShadowMomentsPass::prepare(fgvk::PrepareContext& context) {
   shader_files_.clear();
   auto convert =
       load_shader(context, "shadow_moments/moments_convert.comp", shader_files_, defines);
-  auto blur = load_shader(context, "shadow_moments/moments_blur.comp", shader_files_, defines);
+  const bool sat = params_.technique == MomentTechnique::vssm;
+  auto blur = load_shader(
+      context, sat ? "shadow_moments/moments_sat.comp" : "shadow_moments/moments_blur.comp",
+      shader_files_, defines);
   convert_ =
       build_compute_pipeline(context, convert, face_step_bindings(), sizeof(ShadowMomentsPush));
   blur_ = build_compute_pipeline(context, blur, face_step_bindings(), sizeof(ShadowMomentsPush));
@@ -111,7 +119,8 @@ void ShadowMomentsPass::execute(fgvk::ExecuteContext& context) {
   dispatch_face_step(
       context, blur_,
       {shadow_data, raw_.array_view(), VK_IMAGE_LAYOUT_GENERAL, out.array_view, out.layout},
-      &constants, sizeof constants, groups, layers);
+      &constants, sizeof constants,
+      params_.technique == MomentTechnique::vssm ? FaceGroups{groups.span, 1, 1} : groups, layers);
 }
 
 }  // namespace antumbra::passes

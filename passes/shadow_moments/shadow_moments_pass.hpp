@@ -23,7 +23,7 @@
 namespace antumbra::passes {
 
 // common/moments.glsl's MOMENTS_* values.
-enum class MomentTechnique : std::uint8_t { vsm, evsm2, evsm4, msm };
+enum class MomentTechnique : std::uint8_t { vsm, evsm2, evsm4, msm, vssm };
 
 std::string_view to_string(MomentTechnique technique);
 std::optional<MomentTechnique> parse_moment_technique(std::string_view name);
@@ -55,7 +55,7 @@ class ShadowMomentsPass final : public fgvk::Pass {
   ScratchArray raw_;
   VkImage filtered_for_ = VK_NULL_HANDLE;  // output image every face was filtered into
   ComputePipeline convert_;
-  ComputePipeline blur_;
+  ComputePipeline blur_;  // the box prefilter, or for vssm the summed-area table
   std::vector<std::string> shader_files_;
 };
 

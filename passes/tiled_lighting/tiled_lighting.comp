@@ -7,7 +7,7 @@
 // selected mode.
 //
 // Defines (set by tiled_lighting_pass.cpp): SHADOW_MODE (0 none, 1 hard, 2 pcf, 3 pcss,
-// 4 layered), HAS_ATLAS, ATLAS_D16, HAS_COLOUR, FALLBACK_PCF, KERNEL, BLOCKER_SEARCH,
+// 4 layered, 5-8 vsm / evsm2 / evsm4 / msm, 9 vssm, 10 sdf), HAS_ATLAS, ATLAS_D16, HAS_COLOUR, FALLBACK_PCF, KERNEL, BLOCKER_SEARCH,
 // HDR_FORMAT.
 #include "../common/frame.glsl"
 #include "../common/lights.glsl"
@@ -64,7 +64,15 @@ float atlas_shadow(uint index, vec3 p_world, vec3 n_world, int mode) {
 #include "layered.glsl"
 #endif
 
-#if SHADOW_MODE >= 5
+#if SHADOW_MODE == 10
+#include "../interface/shared/sdf_info.h"
+layout(set = 0, binding = kTiledSdf) uniform sampler2DArray sdf_volume;
+layout(set = 0, binding = kTiledSdfInfo, std430) readonly buffer SdfData { SdfInfo sdf_info; };
+#include "sdf_shadow.glsl"
+#elif SHADOW_MODE == 9
+layout(set = 0, binding = kTiledMoments) uniform usampler2DArray moments_map;
+#include "vssm_shadow.glsl"
+#elif SHADOW_MODE >= 5
 layout(set = 0, binding = kTiledMoments) uniform sampler2DArray moments_map;
 #include "moment_shadow.glsl"
 #endif
@@ -107,6 +115,10 @@ void main() {
       if (!shade_light(lights[index], surface, specular, radiance, l)) continue;
 #if SHADOW_MODE == 4
       radiance *= layered_shadow(index, p_world, n_world);
+#elif SHADOW_MODE == 10
+      radiance *= sdf_shadow(lights[index], p_world, n_world, l);
+#elif SHADOW_MODE == 9
+      radiance *= vssm_shadow(index, p_world, n_world);
 #elif SHADOW_MODE >= 5
       radiance *= moment_shadow(index, p_world, n_world);
 #elif SHADOW_MODE != 0

@@ -64,8 +64,8 @@ Table& add_pcss(Table& table) {
             .default_value = 1.0,
             .min = 0.0,
             .max = 16.0,
-            .description = "Multiplies each light's size (w_light) in the PCSS penumbra "
-                           "estimate."},
+            .description = "Multiplies each light's size (w_light) in the PCSS, VSSM and SDF "
+                           "penumbra estimates."},
            &TiledLightingParams::light_size_scale);
 }
 
@@ -82,11 +82,13 @@ Table tiled_table() {
        .default_value = "none",
        .description = "Shadow term: none; hard, pcf or pcss from the atlas (atlas + shadowData "
                       "required); layered from the blurred layer buffer (layerTable + shadow "
-                      "required); vsm, evsm2, evsm4 or msm from shadow-moments' filtered map "
-                      "of the same technique (moments + atlas + shadowData required)."},
+                      "required); vsm, evsm2, evsm4, msm or vssm from shadow-moments' map of "
+                      "the same technique (moments + atlas + shadowData required); sdf by "
+                      "sphere tracing scene-sdf's distance field (sdf + sdfInfo required)."},
       &TiledLightingParams::shadows,
       {ShadowMode::none, ShadowMode::hard, ShadowMode::pcf, ShadowMode::pcss, ShadowMode::layered,
-       ShadowMode::vsm, ShadowMode::evsm2, ShadowMode::evsm4, ShadowMode::msm});
+       ShadowMode::vsm, ShadowMode::evsm2, ShadowMode::evsm4, ShadowMode::msm, ShadowMode::vssm,
+       ShadowMode::sdf});
   add_kernel(table, "PCF / PCSS filter and the layered fallback");
   add_pcss(table);
   table.choice(
@@ -185,6 +187,16 @@ void check(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& 
     check_moments(pass, plan, graph, mode, mode_at, diagnostics);
     return;
   }
+  if (mode == ShadowMode::sdf) {
+    const bool field = bound_resource(pass, plan, port::kSdf) != nullptr;
+    if (!field || bound_resource(pass, plan, port::kSdfInfo) == nullptr) {
+      error(codes::lighting::kSdfInputs,
+            std::string("shadows = sdf needs the `sdf` and `sdfInfo` inputs (scene-sdf); `") +
+                (field ? "sdfInfo" : "sdf") + "` is not bound",
+            mode_at);
+    }
+    return;
+  }
   if (mode != ShadowMode::layered) return;
   const auto* table = bound_resource(pass, plan, port::kLayerTable);
   const auto* shadow = bound_resource(pass, plan, port::kShadow);
@@ -232,10 +244,19 @@ fg::PassDesc TiledLightingPass::describe() {
                           "r<<24|g<<16|b<<8|a per channel like `shadow`; shadows = layered.",
                           true));
   desc.ports.push_back(compute_array_input(
-      port::kMoments, {Format::rgba32f, Format::rgba16f, Format::rg32f, Format::rg16f}, 1, 0,
+      port::kMoments,
+      {Format::rgba32f, Format::rgba16f, Format::rg32f, Format::rg16f, Format::rg32ui}, 1, 0,
       "Filtered moments of every shadow face (shadow-moments); shadows = vsm | evsm2 | evsm4 "
-      "| msm.",
+      "| msm | vssm.",
       true));
+  desc.ports.push_back(compute_array_input(port::kSdf, {Format::r16f, Format::r32f}, 1, 0,
+                                           "The scene's signed distance field (scene-sdf); "
+                                           "shadows = sdf.",
+                                           true));
+  desc.ports.push_back(compute_buffer_input(port::kSdfInfo,
+                                            "Where the field lies (scene-sdf); "
+                                            "shadows = sdf."));
+  desc.ports.back().optional = true;
   desc.ports.push_back(
       {.name = port::kHardShadow,
        .access = Access::sampled,

@@ -24,8 +24,11 @@ ANTUMBRA_BINDING(kTiledLayerTable, 8)
 ANTUMBRA_BINDING(kTiledShadow, 9)
 ANTUMBRA_BINDING(kTiledColour, 10)
 ANTUMBRA_BINDING(kTiledHardBits, 11)
-// SHADOW_MODE vsm .. msm: the filtered moment map (shadow-moments).
+// SHADOW_MODE vsm .. vssm: the filtered moment map (shadow-moments).
 ANTUMBRA_BINDING(kTiledMoments, 12)
+// SHADOW_MODE sdf: the scene's distance field and where it lies (scene-sdf).
+ANTUMBRA_BINDING(kTiledSdf, 13)
+ANTUMBRA_BINDING(kTiledSdfInfo, 14)
 
 ANTUMBRA_PUSH_CONSTANTS(TiledLightingPush) {
   float exposure;

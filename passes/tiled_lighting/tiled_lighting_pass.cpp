@@ -31,9 +31,9 @@ std::uint32_t shadow_texels(const fgvk::PassBindings& bindings, ShadowMode mode)
 }  // namespace
 
 std::optional<ShadowMode> parse_shadow_mode(std::string_view name) {
-  for (const auto mode :
-       {ShadowMode::none, ShadowMode::hard, ShadowMode::pcf, ShadowMode::pcss, ShadowMode::layered,
-        ShadowMode::vsm, ShadowMode::evsm2, ShadowMode::evsm4, ShadowMode::msm}) {
+  for (const auto mode : {ShadowMode::none, ShadowMode::hard, ShadowMode::pcf, ShadowMode::pcss,
+                          ShadowMode::layered, ShadowMode::vsm, ShadowMode::evsm2,
+                          ShadowMode::evsm4, ShadowMode::msm, ShadowMode::vssm, ShadowMode::sdf}) {
     if (name == to_string(mode)) return mode;
   }
   return std::nullopt;
@@ -59,6 +59,10 @@ std::string_view to_string(ShadowMode mode) {
       return "evsm4";
     case ShadowMode::msm:
       return "msm";
+    case ShadowMode::vssm:
+      return "vssm";
+    case ShadowMode::sdf:
+      return "sdf";
   }
   return "none";
 }
@@ -104,6 +108,10 @@ void TiledLightingPass::prepare(fgvk::PrepareContext& context) {
     if (has_hard_bits_) builder.combined_image_sampler(shared::kTiledHardBits, kComp);
   }
   if (has_moments_) builder.combined_image_sampler(shared::kTiledMoments, kComp);
+  if (mode_ == ShadowMode::sdf) {
+    builder.combined_image_sampler(shared::kTiledSdf, kComp)
+        .storage_buffer(shared::kTiledSdfInfo, kComp);
+  }
   set_layout_ = builder.build(context.gpu, context.pass.name + ".set");
   const std::array<VkDescriptorSetLayout, 1> sets{set_layout_};
   const std::array<VkPushConstantRange, 1> push{{{kComp, 0, sizeof(TiledLightingPush)}}};
@@ -175,6 +183,13 @@ void TiledLightingPass::execute(fgvk::ExecuteContext& context) {
     const auto& moments = b.required_image(port::kMoments);
     descriptors.combined_image_sampler(shared::kTiledMoments, moments.array_view, nearest,
                                        moments.layout);
+  }
+  if (mode_ == ShadowMode::sdf) {
+    const auto& sdf = b.required_image(port::kSdf);
+    descriptors
+        .combined_image_sampler(shared::kTiledSdf, sdf.array_view, context.samplers.linear_clamp,
+                                sdf.layout)
+        .storage_buffer(shared::kTiledSdfInfo, b.buffer(port::kSdfInfo)->buffer);
   }
   descriptors.push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
 

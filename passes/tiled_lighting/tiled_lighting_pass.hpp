@@ -18,12 +18,24 @@
 
 namespace antumbra::passes {
 
-// vsm .. msm: filtered shadow maps from shadow-moments (its technique, in the same order
+// vsm .. vssm: filtered shadow maps from shadow-moments (its technique, in the same order
 // from vsm on as MomentTechnique; moment_technique_index).
-enum class ShadowMode : std::uint8_t { none, hard, pcf, pcss, layered, vsm, evsm2, evsm4, msm };
+enum class ShadowMode : std::uint8_t {
+  none,
+  hard,
+  pcf,
+  pcss,
+  layered,
+  vsm,
+  evsm2,
+  evsm4,
+  msm,
+  vssm,
+  sdf
+};
 
 [[nodiscard]] constexpr bool is_moment_mode(ShadowMode mode) {
-  return mode >= ShadowMode::vsm;
+  return mode >= ShadowMode::vsm && mode <= ShadowMode::vssm;
 }
 // The MOMENTS_TECHNIQUE value of a moment mode (MomentTechnique's order).
 [[nodiscard]] constexpr int moment_technique_index(ShadowMode mode) {
@@ -73,7 +85,7 @@ class TiledLightingPass final : public fgvk::Pass {
   bool has_atlas_ = false;
   bool has_colour_ = false;
   bool has_hard_bits_ = false;  // layered: full-resolution hard bits for sharp edges
-  bool has_moments_ = false;    // vsm .. msm: the filtered moment map
+  bool has_moments_ = false;    // vsm .. vssm: the filtered moment map
   gpu::DescriptorSetLayout set_layout_;
   gpu::PipelineLayout layout_;
   gpu::Pipeline pipeline_;

@@ -264,7 +264,7 @@ TEST(BenchScenarios, DynamicTableMovesObjectsNotLights) {
 // The sun table: the courtyard, one map against four cascades in each filter.
 TEST(BenchScenarios, SunTableComparesOneMapWithFourCascades) {
   const auto rows = select_scenarios(builtin_scenarios(1.0), {"sun/"});
-  ASSERT_EQ(rows.size(), 10u);
+  ASSERT_EQ(rows.size(), 12u);
   int four = 0;
   for (const auto& s : rows) {
     EXPECT_EQ(s.scene, kSunScene) << s.name;
@@ -274,9 +274,9 @@ TEST(BenchScenarios, SunTableComparesOneMapWithFourCascades) {
       if (o.param == "sunCascades" && o.value == 4) ++four;
     }
   }
-  EXPECT_EQ(four, 5);
+  EXPECT_EQ(four, 6);
   EXPECT_EQ(rows.front().name, "sun/hard/1080p/5l/c1");
-  EXPECT_EQ(rows.back().name, "sun/evsm4/1080p/5l/c4");
+  EXPECT_EQ(rows.back().name, "sun/vssm/1080p/5l/c4");
 }
 
 }  // namespace antumbra::app

@@ -236,6 +236,12 @@ TEST(BuiltinGraphs, MomentGraphMistakesAreLocated) {
       {"evsm4.json", "\"blur\": 1", "\"blur\": 9", "FG033", "/passes/2/params/blur"},
       {"evsm4.json", "\"lightBleedReduction\": 0.2", "\"lightBleedReduction\": 1.5", "FG033",
        "/passes/3/params/lightBleedReduction"},
+      {"vssm.json", "\"format\": \"rg32ui\"", "\"format\": \"rg32f\"", "SM001",
+       "/passes/2/params/technique"},
+      {"vsm.json", "\"format\": \"rg32f\"", "\"format\": \"rg32ui\"", "SM001",
+       "/passes/2/params/technique"},
+      {"vssm.json", "\"shadows\": \"vssm\"", "\"shadows\": \"vsm\"", "TL007",
+       "/passes/3/params/shadows"},
   };
   for (const Case& c : cases) {
     std::string text = read_file(kRoot / "data" / "graphs" / c.file);
@@ -247,6 +253,44 @@ TEST(BuiltinGraphs, MomentGraphMistakesAreLocated) {
     const base::Diagnostic* d = result.diagnostics().find(c.code);
     ASSERT_NE(d, nullptr) << c.to << "\n" << result.diagnostics().to_text();
     EXPECT_EQ(d->pointer, c.pointer) << c.to;
+    EXPECT_GT(d->line, 0) << c.to;
+  }
+}
+
+// The distance field: a volume too small to trace, one over the memory budget (a 512^3
+// float field is 512 MiB), one that is not kept between frames, the lighting without
+// it, and a zero resolution are refused at their place in the file.
+TEST(BuiltinGraphs, SdfGraphMistakesAreLocated) {
+  const auto registry = passes::builtin_pass_registry();
+  struct Case {
+    std::string from;
+    std::string to;
+    std::string code;
+    std::string pointer;
+  };
+  const Case cases[] = {
+      {"\"layers\": 128", "\"layers\": 4", "SD001", "/passes/1/out/sdf"},
+      {"\"format\": \"r16f\", \"size\": [128, 64], \"layers\": 128",
+       "\"format\": \"r32f\", \"size\": [512, 512], \"layers\": 512", "SD002", "/passes/1"},
+      {"\"band\": 8", "\"band\": 8, \"memoryBudget\": 1", "SD002", "/passes/1/params/memoryBudget"},
+      {"\"layers\": 128, \"persistent\": true", "\"layers\": 128", "SD003", "/passes/1/out/sdf"},
+      {"\"albedo\": \"albedo\", \"sdf\": \"sdf\", \"sdfInfo\": \"sdfInfo\" }",
+       "\"albedo\": \"albedo\", \"sdf\": \"sdf\" }", "TL008", "/passes/2/params/shadows"},
+      {"\"band\": 8", "\"band\": 0", "FG033", "/passes/1/params/band"},
+      {"\"size\": [128, 64]", "\"size\": [0, 64]", "", "/resources/sdf/size"},
+  };
+  const std::string original = read_file(kRoot / "data" / "graphs" / "sdf.json");
+  for (const Case& c : cases) {
+    std::string text = original;
+    const auto at = text.find(c.from);
+    ASSERT_NE(at, std::string::npos) << c.from;
+    text.replace(at, c.from.size(), c.to);
+    const auto result = fg::compile_text(text, "sdf.json", registry.reflection());
+    ASSERT_FALSE(result.ok()) << c.to;
+    const base::Diagnostic* d =
+        c.code.empty() ? &result.diagnostics().items().front() : result.diagnostics().find(c.code);
+    ASSERT_NE(d, nullptr) << c.to << "\n" << result.diagnostics().to_text();
+    EXPECT_EQ(d->pointer.rfind(c.pointer, 0), 0u) << c.to << ": " << d->pointer;
     EXPECT_GT(d->line, 0) << c.to;
   }
 }

@@ -47,7 +47,8 @@ TEST(PortNames, EveryBuiltinPortIsAConstant) {
       std::string(port::kPenumbra),     std::string(port::kPenumbraCount),
       std::string(port::kHardShadow),   std::string(port::kEsm),
       std::string(port::kTranslucency), std::string(port::kSource),
-      std::string(port::kShadow)};
+      std::string(port::kShadow),       std::string(port::kSdf),
+      std::string(port::kSdfInfo)};
   const auto registry = builtin_pass_registry();
   int ports = 0;
   for (const auto& [type, desc] : registry.reflection().passes()) {

@@ -72,7 +72,7 @@ TEST_F(SunTechniquesTest, FilteredMapsAgreeWithPcfThroughTheCascades) {
   const Image8 unshadowed = render("lighting.json");
   const double shadow_effect = mean_difference(pcf, unshadowed);
   EXPECT_GT(shadow_effect, 4.0) << "the sun's shadows cover much of the frame";
-  for (const char* graph : {"vsm.json", "evsm4.json", "msm.json"}) {
+  for (const char* graph : {"vsm.json", "evsm4.json", "msm.json", "vssm.json"}) {
     const double d = mean_difference(render(graph), pcf);
     std::printf("%s: mean |difference| to PCF %.2f/255 (unshadowed: %.2f)\n", graph, d,
                 shadow_effect);

@@ -12,7 +12,7 @@
 //   SC000-SC099  scene files                     (engine/scene)
 //   SH000-SH099  shaders                         (engine/core shader compiler, pass reflection)
 //   ED000-ED199  documents the editor opens, edit scripts (editor/model)
-//   SHD, LY, TL  pass-specific checks and frame reports (passes/)
+//   SHD, LY, TL, SM, SD  pass-specific checks and frame reports (passes/)
 //   QU000-QU099  the quality comparison          (app/cmd_compare.cpp)
 
 namespace antumbra::codes {
@@ -200,12 +200,22 @@ inline constexpr const char* kLayeredInputs = "TL004";  // layered mode needs la
 inline constexpr const char* kLayerTableTooSmall = "TL005";  // layerTable buffer too small
 inline constexpr const char* kMomentsInputs = "TL006";       // moment modes need moments + atlas
 inline constexpr const char* kMomentsTechnique = "TL007";  // mode differs from the map's technique
+inline constexpr const char* kSdfInputs = "TL008";         // sdf mode needs sdf + sdfInfo
 }  // namespace lighting
 
 // shadow-moments.
 namespace moments {
 inline constexpr const char* kFormat = "SM001";  // map format cannot hold the technique
 }  // namespace moments
+
+// scene-sdf.
+namespace sdf {
+inline constexpr const char* kTooSmall = "SD001";       // a side of the volume below 8 voxels
+inline constexpr const char* kOverBudget = "SD002";     // the volume exceeds memoryBudget
+inline constexpr const char* kNotPersistent = "SD003";  // baked once: must be persistent
+inline constexpr const char* kBaked = "SD004";          // note: a bake, its size and memory
+inline constexpr const char* kInfoTooSmall = "SD005";   // sdfInfo buffer below SdfInfo's size
+}  // namespace sdf
 
 // antumbra quality.
 namespace quality {
