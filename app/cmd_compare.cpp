@@ -348,6 +348,23 @@ std::optional<ReferenceFrame> render_reference(runtime::RenderSession& session,
                         reference_ms};
 }
 
+// MiB of the plan's resources a technique adds to the G-buffer and the output (every
+// graph has depth, normal, albedo, hdr and ldr).
+double technique_resource_mib(const fg::Plan& plan) {
+  double bytes = 0.0;
+  for (const auto& r : plan.resources) {
+    if (r.name == "depth" || r.name == "normal" || r.name == "albedo" || r.name == "hdr" ||
+        r.name == "ldr") {
+      continue;
+    }
+    bytes += r.kind == fg::ResourceKind::buffer
+                 ? static_cast<double>(r.buffer_size)
+                 : static_cast<double>(r.extent.width) * r.extent.height * r.layers *
+                       fg::bytes_per_texel(r.format);
+  }
+  return bytes / (1024.0 * 1024.0);
+}
+
 // Per technique: its JSON result (JSON reports) and its signed error (error maps).
 struct TechniqueResults {
   nlohmann::json graphs = nlohmann::json::array();
@@ -472,6 +489,40 @@ int run_quality(const QualityOptions& options) {
     return runtime::kExitRuntime;
   }
   return runtime::kExitOk;
+}
+
+std::optional<QualityFrames> render_quality_frames(const QualityOptions& options) {
+  unsigned width = 0;
+  unsigned height = 0;
+  if (!parse_size(options.size, width, height)) return std::nullopt;
+  const runtime::DataPaths paths = runtime::find_data_paths();
+  QualityInputs inputs;
+  if (!load_quality_inputs(options, paths, inputs)) return std::nullopt;
+  runtime::SessionOptions session_options;
+  session_options.device = options.device;
+  session_options.validation = options.validation;
+  session_options.viewport = {width, height};
+  runtime::RenderSession session(paths, session_options);
+  const scene::Camera camera = inputs.scene.camera;
+  session.set_scene(std::move(inputs.scene));
+  auto reference = render_reference(session, options, inputs, camera);
+  if (!reference) return std::nullopt;
+  QualityFrames frames;
+  frames.device = session.gpu().device_name();
+  for (std::size_t i = 0; i < inputs.graphs.size(); ++i) {
+    std::fprintf(stderr, "antumbra: [%zu/%zu] %s\n", i + 1, inputs.graphs.size(),
+                 options.graphs[i].c_str());
+    double ms = 0.0;
+    auto hdr = render_hdr(session, inputs.graphs[i], options.graphs[i], options.resource, ms);
+    if (!hdr) return std::nullopt;
+    frames.comparisons.push_back(compare_images(
+        reference->hdr, *hdr, reference->mask ? &*reference->mask : nullptr, reference->regions));
+    frames.resource_mib.push_back(technique_resource_mib(session.executor().plan()));
+    frames.frames.push_back(std::move(*hdr));
+  }
+  frames.reference = std::move(reference->hdr);
+  frames.mask = std::move(reference->mask);
+  return frames;
 }
 
 }  // namespace antumbra::app

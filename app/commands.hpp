@@ -2,8 +2,11 @@
 // One function per subcommand. Each returns the process exit code:
 // 0 success, 1 diagnostics found, 2 usage error, 3 runtime or device error.
 
+#include <optional>
 #include <string>
 #include <vector>
+
+#include "image_metrics.hpp"
 
 #include "antumbra/runtime/exit_codes.hpp"
 
@@ -83,6 +86,31 @@ int run_render(const RenderOptions& options);
 int run_devices(const std::string& device, bool validation);
 int run_compare(const CompareOptions& options);
 int run_quality(const QualityOptions& options);
+
+// What `quality` measures, kept for `techniques`: the reference's frame and region mask,
+// and per graph its frame, its comparisons and the MiB its own resources take (all but
+// the G-buffer and the output). Nothing (diagnostics printed) when something does not
+// load.
+struct QualityFrames {
+  std::string device;
+  FloatImage reference;
+  std::optional<FloatImage> mask;
+  std::vector<FloatImage> frames;
+  std::vector<std::vector<Comparison>> comparisons;
+  std::vector<double> resource_mib;
+};
+std::optional<QualityFrames> render_quality_frames(const QualityOptions& options);
+
+struct TechniquesOptions {
+  std::vector<std::string> graphs;  // empty: every shipped technique graph
+  std::string scene;                // empty: data/scenes/atrium.json
+  std::string size = "960x540";
+  std::string gpu_bench;  // bench.json from the lent GPU (table1 rows); empty: no column
+  std::string cpu_bench;  // bench.json from lavapipe (table1 rows); empty: no column
+  std::string out = "docs/techniques.md";
+  std::string device = "auto";
+};
+int run_techniques(const TechniquesOptions& options);
 
 // "1280x720" -> width, height; false when malformed or out of 1..16384.
 bool parse_size(const std::string& text, unsigned& width, unsigned& height);

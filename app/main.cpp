@@ -36,6 +36,26 @@ int run_plan_with_deprecated_flags(antumbra::app::PlanOptions plan,
   return antumbra::app::run_plan(plan);
 }
 
+CLI::App* add_techniques_command(CLI::App& cli, antumbra::app::TechniquesOptions& options) {
+  auto* cmd = cli.add_subcommand(
+      "techniques",
+      "Compare every shadow technique with the reference; write one Markdown table and crops");
+  cmd->add_option("--graph", options.graphs,
+                  "Technique graph (repeatable; default: every shipped technique graph)");
+  cmd->add_option("--scene", options.scene, "Scene JSON (default: data/scenes/atrium.json)");
+  cmd->add_option("--size", options.size, "Viewport WxH of the quality frames")
+      ->capture_default_str();
+  cmd->add_option("--gpu-bench", options.gpu_bench,
+                  "bench.json of `bench --scenario table1/` on the GPU (the GPU ms column)");
+  cmd->add_option("--cpu-bench", options.cpu_bench,
+                  "bench.json of `bench --scenario table1/` on lavapipe (the ratio column)");
+  cmd->add_option("--out", options.out, "Markdown file; crops go to techniques/ beside it")
+      ->capture_default_str();
+  cmd->add_option("--device", options.device, "auto|cpu|gpu|N|<name substring>")
+      ->capture_default_str();
+  return cmd;
+}
+
 // The CLI option table: one block of CLI11 declarations per subcommand, then the dispatch.
 // Long by nature, and only declarations (the logic is in cmd_*.cpp).
 // NOLINTNEXTLINE(readability-function-size)
@@ -190,6 +210,9 @@ int dispatch(int argc, char** argv) {
       ->check(CLI::IsMember({"text", "json"}))
       ->capture_default_str();
 
+  antumbra::app::TechniquesOptions techniques;
+  auto* techniques_cmd = add_techniques_command(cli, techniques);
+
   try {
     cli.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -214,6 +237,7 @@ int dispatch(int argc, char** argv) {
   if (bench_cmd->parsed()) return run_bench(bench);
   if (compare_cmd->parsed()) return run_compare(compare);
   if (quality_cmd->parsed()) return run_quality(quality);
+  if (techniques_cmd->parsed()) return run_techniques(techniques);
   return run_schema();
 }
 
