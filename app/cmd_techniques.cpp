@@ -46,8 +46,13 @@ gpu::HostImage crop_image(const FloatImage& image, const CropRect& crop) {
 std::optional<nlohmann::json> read_bench(const std::string& path) {
   if (path.empty()) return std::nullopt;
   std::ifstream in(path);
-  if (!in) throw std::runtime_error("cannot read " + path);
-  return nlohmann::json::parse(in);
+  if (!in) throw std::runtime_error("techniques: cannot read " + path);
+  try {
+    return nlohmann::json::parse(in);
+  } catch (const nlohmann::json::exception& e) {
+    throw std::runtime_error("techniques: " + path +
+                             " is not a bench.json (antumbra bench --out writes one): " + e.what());
+  }
 }
 
 }  // namespace
