@@ -82,14 +82,14 @@ fg::PassDesc SceneSdfPass::describe() {
        .formats = {Format::r16f, Format::r32f},
        .min_layers = 1,
        .max_layers = 0,
-       .description = "The field: voxels x and y in the image, z in the layers; cubic voxels "
-                      "fitted around the scene's bounds. Persistent."},
+       .description = "The field: voxels x and y in the image, z in the layers, spread over "
+                      "the scene's bounds (each axis its own voxel size). Persistent."},
       {.name = port::kSdfInfo,
        .direction = PortDirection::output,
        .kind = fg::ResourceKind::buffer,
        .access = Access::storage_write,
        .stage = Stage::compute,
-       .description = "Where the field lies (interface/shared/sdf_info.h, 48 bytes). "
+       .description = "Where the field lies (interface/shared/sdf_info.h, 64 bytes). "
                       "Persistent."},
   };
   desc.params = param_table().descs();

@@ -16,9 +16,10 @@ ANTUMBRA_BINDING(kSdfInfoBuffer, 3)
 ANTUMBRA_BINDING(kSdfChunks, 4)
 
 ANTUMBRA_PUSH_CONSTANTS(SceneSdfPush) {
-  vec4 field_origin;  // minimum corner, voxel size
+  vec4 field_origin;  // minimum corner, the largest voxel side
   uvec4 field_dims;   // voxels per axis, triangle count
   vec4 field_band;    // x largest stored distance (metres)
+  vec4 field_voxel;   // voxel size per axis, w the smallest
 };
 
 ANTUMBRA_SHARED_END

@@ -28,13 +28,15 @@ void report_bake(fgvk::ExecuteContext& context, glm::uvec3 dims, const SceneSdfP
   const double mib = static_cast<double>(dims.x) * dims.y * dims.z *
                      (volume.format == VK_FORMAT_R32_SFLOAT ? 4.0 : 2.0) / (1024.0 * 1024.0);
   base::Json details = {{"voxels", {dims.x, dims.y, dims.z}},
-                        {"voxelSize", push.field_origin.w},
+                        {"voxelSize", {push.field_voxel.x, push.field_voxel.y, push.field_voxel.z}},
                         {"triangles", push.field_dims.w},
                         {"memoryMiB", mib}};
   char text[200];
   std::snprintf(text, sizeof text,
-                "a %ux%ux%u distance field (%.3f m voxels, %.1f MiB) from %u triangles", dims.x,
-                dims.y, dims.z, static_cast<double>(push.field_origin.w), mib, push.field_dims.w);
+                "a %ux%ux%u distance field (%.3fx%.3fx%.3f m voxels, %.1f MiB) from %u triangles",
+                dims.x, dims.y, dims.z, static_cast<double>(push.field_voxel.x),
+                static_cast<double>(push.field_voxel.y), static_cast<double>(push.field_voxel.z),
+                mib, push.field_dims.w);
   context.report.replace({.pass = context.pass.name,
                           .code = codes::sdf::kBaked,
                           .severity = base::Severity::note,
@@ -49,12 +51,16 @@ SceneSdfPush fit_sdf_volume(const scene::Aabb& bounds, glm::uvec3 dims, float ba
   const glm::vec3 hi = bounds.empty() ? glm::vec3(0.5f) : bounds.max;
   const glm::vec3 inner = glm::max(glm::vec3(dims) - 2.0f * kMarginVoxels, glm::vec3(1.0f));
   const glm::vec3 per_axis = (hi - lo) / inner;
-  const float voxel = std::max({per_axis.x, per_axis.y, per_axis.z, 1e-4f});
-  const glm::vec3 origin = (lo + hi) * 0.5f - glm::vec3(dims) * (0.5f * voxel);
+  // Per axis, but no side under a sixteenth of the largest: a scene flat along one axis
+  // would otherwise get slivers there that the tracing's minimum step could not use.
+  const float largest = std::max({per_axis.x, per_axis.y, per_axis.z, 1e-4f});
+  const glm::vec3 voxel = glm::max(per_axis, glm::vec3(largest / 16.0f));
+  const glm::vec3 origin = (lo + hi) * 0.5f - glm::vec3(dims) * voxel * 0.5f;
   SceneSdfPush push{};
-  push.field_origin = glm::vec4(origin, voxel);
+  push.field_origin = glm::vec4(origin, largest);
+  push.field_voxel = glm::vec4(voxel, std::min({voxel.x, voxel.y, voxel.z}));
   push.field_dims = glm::uvec4(dims, 0u);
-  push.field_band = glm::vec4(band_voxels * voxel, 0.0f, 0.0f, 0.0f);
+  push.field_band = glm::vec4(band_voxels * largest, 0.0f, 0.0f, 0.0f);
   return push;
 }
 

@@ -27,8 +27,9 @@ struct SceneSdfParams {
   std::uint32_t memory_mib = 256;  // budget for the volume
 };
 
-// Where a volume of `dims` voxels lies around `bounds`: cubic voxels, the bounds centred
-// with two voxels of margin on every side. Exposed for tests.
+// Where a volume of `dims` voxels lies around `bounds`: the bounds centred with two
+// voxels of margin on every side, each axis's voxels as long as that takes (no side under
+// a sixteenth of the longest). Exposed for tests.
 shared::SceneSdfPush fit_sdf_volume(const scene::Aabb& bounds, glm::uvec3 dims, float band_voxels);
 
 class SceneSdfPass final : public fgvk::Pass {

@@ -119,10 +119,10 @@ layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 void main() {
   uvec3 dims = field_dims.xyz;
   uint triangles = field_dims.w;
-  float voxel = field_origin.w;
+  vec3 voxel = field_voxel.xyz;
   float band = field_band.x;
   if (all(equal(gl_GlobalInvocationID, uvec3(0u)))) {
-    info = SdfInfo(field_origin, field_dims, field_band);
+    info = SdfInfo(field_origin, field_dims, field_band, field_voxel);
   }
   vec3 p = field_origin.xyz + (vec3(gl_GlobalInvocationID) + 0.5) * voxel;
   vec3 brick_lo = field_origin.xyz + vec3(gl_WorkGroupID * gl_WorkGroupSize) * voxel;
@@ -145,7 +145,7 @@ void main() {
       float d2 = dot(d, d);
       float along = dot(d, tri_n[k]);
       float facing = d2 > 0.0 ? abs(along) * inversesqrt(d2) : 1.0;
-      float tie = 1e-6 * voxel * voxel;
+      float tie = 1e-6 * field_voxel.w * field_voxel.w;
       if (d2 < best - tie || (d2 <= best + tie && facing > best_facing)) {
         best = min(best, d2);
         best_facing = facing;

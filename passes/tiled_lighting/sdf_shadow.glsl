@@ -17,7 +17,7 @@
 // Trilinear: bilinear in the layer by the sampler, linear across layers by hand. Outside
 // the volume: the band (nothing there).
 float sdf_distance(vec3 p) {
-  vec3 g = (p - sdf_info.origin.xyz) / sdf_info.origin.w - 0.5;  // voxel-centre coordinates
+  vec3 g = (p - sdf_info.origin.xyz) / sdf_info.voxel.xyz - 0.5;  // voxel-centre coordinates
   vec3 dims = vec3(sdf_info.dims.xyz);
   if (any(lessThan(g, vec3(-0.5))) || any(greaterThan(g, dims - 0.5))) return sdf_info.band.x;
   vec2 uv = (g.xy + 0.5) / dims.xy;
@@ -33,11 +33,12 @@ float sdf_distance(vec3 p) {
 // radius (the sun: tan of its angular radius).
 float sdf_visibility(vec3 p, vec3 n, vec3 l, float distance, float radius, bool sun) {
   if (sdf_info.dims.w == 0u) return 1.0;  // nothing baked
-  float voxel = sdf_info.origin.w;
-  // Leave the receiver's own surface: a voxel along the normal, as the field's
-  // interpolation smears surfaces by about that much.
-  vec3 o = p + n * voxel;
-  float far = sun ? length(vec3(sdf_info.dims.xyz)) * voxel : distance - voxel;
+  float voxel = sdf_info.voxel.w;  // the smallest side
+  // Leave the receiver's own surface: a voxel along the normal (the voxel's extent in
+  // that direction), as the field's interpolation smears surfaces by about that much.
+  float offset = dot(abs(n), sdf_info.voxel.xyz);
+  vec3 o = p + n * offset;
+  float far = sun ? length(vec3(sdf_info.dims.xyz) * sdf_info.voxel.xyz) : distance - offset;
   float visibility = 1.0;
   float t = 0.5 * voxel;
   for (int i = 0; i < SDF_STEPS && t < far; ++i) {

@@ -65,7 +65,8 @@ TEST_F(SdfTest, BakedDistancesMatchBoxesAndSpheresWithinOneVoxel) {
   expect_no_validation_errors(*session);
 
   const auto fit = passes::fit_sdf_volume(bounds, glm::uvec3(kVoxels), 8.0f);
-  const float voxel = fit.field_origin.w;
+  const glm::vec3 size = glm::vec3(fit.field_voxel);
+  const float voxel = fit.field_origin.w;  // the largest side: "within one voxel"
   const float band = fit.field_band.x;
   int compared = 0;
   int inside = 0;
@@ -76,7 +77,7 @@ TEST_F(SdfTest, BakedDistancesMatchBoxesAndSpheresWithinOneVoxel) {
     ASSERT_EQ(layer.width, kVoxels);
     for (std::uint32_t y = 0; y < kVoxels; ++y) {
       for (std::uint32_t x = 0; x < kVoxels; ++x) {
-        const glm::vec3 p = glm::vec3(fit.field_origin) + (glm::vec3(x, y, z) + 0.5f) * voxel;
+        const glm::vec3 p = glm::vec3(fit.field_origin) + (glm::vec3(x, y, z) + 0.5f) * size;
         const float truth = analytic(p);
         // Surfaces the scene does not have: the floorless scene's field is only these two.
         if (std::abs(truth) > band - voxel) continue;
@@ -84,7 +85,7 @@ TEST_F(SdfTest, BakedDistancesMatchBoxesAndSpheresWithinOneVoxel) {
         const float error = std::abs(baked - truth);
         worst = std::max(worst, error);
         if (error > voxel) ++outside_one_voxel;
-        if (truth < -0.5f * voxel) {
+        if (truth < -0.5f * fit.field_voxel.w) {
           ++inside;
           EXPECT_LT(baked, 0.0f) << "inside at " << x << "," << y << "," << z;
         }
@@ -92,8 +93,8 @@ TEST_F(SdfTest, BakedDistancesMatchBoxesAndSpheresWithinOneVoxel) {
       }
     }
   }
-  std::printf("voxel %.3f m, %d voxels compared (%d inside), worst error %.3f m\n", voxel, compared,
-              inside, worst);
+  std::printf("voxels %.3f x %.3f x %.3f m, %d voxels compared (%d inside), worst error %.3f m\n",
+              size.x, size.y, size.z, compared, inside, worst);
   EXPECT_GT(compared, 5000);
   EXPECT_GT(inside, 100);
   EXPECT_EQ(outside_one_voxel, 0) << "worst " << worst << " m, voxel " << voxel << " m";
