@@ -89,8 +89,8 @@ int run_techniques(const TechniquesOptions& options) {
   if (!gpu::write_png(crops / "reference.png", crop_image(frames->reference, report.crop))) {
     return runtime::kExitRuntime;
   }
-  const std::optional<double> cpu_hard =
-      cpu_bench ? bench_frame_ms(*cpu_bench, "hard.json") : std::nullopt;
+  // The ratio column's denominator; 0 without a CPU bench or its hard row.
+  const double cpu_hard = cpu_bench ? bench_frame_ms(*cpu_bench, "hard.json").value_or(0.0) : 0.0;
   for (std::size_t i = 0; i < frames->frames.size(); ++i) {
     TechniqueRow row;
     row.graph = std::filesystem::path(quality.graphs[i]).filename().string();
@@ -98,8 +98,8 @@ int run_techniques(const TechniquesOptions& options) {
     row.sides = error_sides(frames->reference, frames->frames[i]);
     row.resource_mib = frames->resource_mib[i];
     if (gpu_bench) row.gpu_ms = bench_frame_ms(*gpu_bench, row.graph);
-    if (cpu_bench && cpu_hard && *cpu_hard > 0.0) {
-      if (auto ms = bench_frame_ms(*cpu_bench, row.graph)) row.cpu_ratio = *ms / *cpu_hard;
+    if (cpu_bench && cpu_hard > 0.0) {
+      if (auto ms = bench_frame_ms(*cpu_bench, row.graph)) row.cpu_ratio = *ms / cpu_hard;
     }
     const std::string stem = std::filesystem::path(row.graph).stem().string();
     row.crop = "techniques/" + stem + ".png";

@@ -184,7 +184,9 @@ TEST_F(PenumbraWidthTest, EstimatorsFollowSimilarTriangles) {
       EXPECT_NEAR(widths[slab == kLow ? 0 : 1], expected, 0.3f * expected + 2.0f * texel);
     }
     // W triples between the slabs: a fixed filter of the right average width fails here.
-    if (std::string(graph) != "sdf.json") EXPECT_GT(widths[1], 2.0f * widths[0]);
+    if (std::string(graph) != "sdf.json") {
+      EXPECT_GT(widths[1], 2.0f * widths[0]);
+    }
   }
 }
 
