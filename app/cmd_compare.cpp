@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 
 #include <nlohmann/json.hpp>
 
@@ -292,6 +293,20 @@ bool load_quality_inputs(const QualityOptions& options, const runtime::DataPaths
   return true;
 }
 
+// The session quality and techniques render in, with the inputs' scene moved into it.
+std::unique_ptr<runtime::RenderSession> open_quality_session(const QualityOptions& options,
+                                                             const runtime::DataPaths& paths,
+                                                             unsigned width, unsigned height,
+                                                             QualityInputs& inputs) {
+  runtime::SessionOptions session_options;
+  session_options.device = options.device;
+  session_options.validation = options.validation;
+  session_options.viewport = {width, height};
+  auto session = std::make_unique<runtime::RenderSession>(paths, session_options);
+  session->set_scene(std::move(inputs.scene));
+  return session;
+}
+
 // One frame of `graph`; its `resource` read back. Nothing when the graph does not load
 // (its diagnostics printed).
 std::optional<FloatImage> render_hdr(runtime::RenderSession& session, const fg::GraphDesc& graph,
@@ -448,13 +463,9 @@ int run_quality(const QualityOptions& options) {
   QualityInputs inputs;
   if (!load_quality_inputs(options, paths, inputs)) return runtime::kExitDiagnostics;
 
-  runtime::SessionOptions session_options;
-  session_options.device = options.device;
-  session_options.validation = options.validation;
-  session_options.viewport = {width, height};
-  runtime::RenderSession session(paths, session_options);
   const scene::Camera camera = inputs.scene.camera;
-  session.set_scene(std::move(inputs.scene));
+  const auto owned = open_quality_session(options, paths, width, height, inputs);
+  runtime::RenderSession& session = *owned;
 
   const auto reference = render_reference(session, options, inputs, camera);
   if (!reference) return runtime::kExitDiagnostics;
@@ -494,17 +505,17 @@ int run_quality(const QualityOptions& options) {
 std::optional<QualityFrames> render_quality_frames(const QualityOptions& options) {
   unsigned width = 0;
   unsigned height = 0;
-  if (!parse_size(options.size, width, height)) return std::nullopt;
+  if (!parse_size(options.size, width, height)) {
+    std::fprintf(stderr, "antumbra: --size must be WxH with 1..16384, got \"%s\"\n",
+                 options.size.c_str());
+    return std::nullopt;
+  }
   const runtime::DataPaths paths = runtime::find_data_paths();
   QualityInputs inputs;
   if (!load_quality_inputs(options, paths, inputs)) return std::nullopt;
-  runtime::SessionOptions session_options;
-  session_options.device = options.device;
-  session_options.validation = options.validation;
-  session_options.viewport = {width, height};
-  runtime::RenderSession session(paths, session_options);
   const scene::Camera camera = inputs.scene.camera;
-  session.set_scene(std::move(inputs.scene));
+  const auto owned = open_quality_session(options, paths, width, height, inputs);
+  runtime::RenderSession& session = *owned;
   auto reference = render_reference(session, options, inputs, camera);
   if (!reference) return std::nullopt;
   QualityFrames frames;
