@@ -26,6 +26,8 @@ inline constexpr fg::PortId kShadowData{"shadowData"};
 inline constexpr fg::PortId kLayerTable{"layerTable"};
 inline constexpr fg::PortId kSdf{"sdf"};
 inline constexpr fg::PortId kSdfInfo{"sdfInfo"};
+inline constexpr fg::PortId kPenumbraMap{"penumbraMap"};
+inline constexpr fg::PortId kPeeled{"peeled"};
 
 // Screen-space shadow layers and their inputs.
 inline constexpr fg::PortId kPenumbra{"penumbra"};

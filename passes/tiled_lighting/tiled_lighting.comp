@@ -7,8 +7,9 @@
 // selected mode.
 //
 // Defines (set by tiled_lighting_pass.cpp): SHADOW_MODE (0 none, 1 hard, 2 pcf, 3 pcss,
-// 4 layered, 5-8 vsm / evsm2 / evsm4 / msm, 9 vssm, 10 sdf), HAS_ATLAS, ATLAS_D16, HAS_COLOUR, FALLBACK_PCF, KERNEL, BLOCKER_SEARCH,
-// HDR_FORMAT.
+// 4 layered, 5-8 vsm / evsm2 / evsm4 / msm, 9 vssm, 10 sdf, 11 penumbra-map), HAS_ATLAS,
+// ATLAS_D16, HAS_COLOUR, FALLBACK_PCF, KERNEL, BLOCKER_SEARCH, HDR_FORMAT, HAS_PEELED,
+// WEDGE_RECEIVER.
 #include "../common/frame.glsl"
 #include "../common/lights.glsl"
 #include "../common/shading.glsl"
@@ -64,7 +65,13 @@ float atlas_shadow(uint index, vec3 p_world, vec3 n_world, int mode) {
 #include "layered.glsl"
 #endif
 
-#if SHADOW_MODE == 10
+#if SHADOW_MODE == 11
+layout(set = 0, binding = kTiledPenumbraMap) uniform sampler2DArray penumbra_map;
+#if HAS_PEELED
+layout(set = 0, binding = kTiledPeeled) uniform sampler2DArray peeled_map;
+#endif
+#include "penumbra_map_shadow.glsl"
+#elif SHADOW_MODE == 10
 #include "../interface/shared/sdf_info.h"
 layout(set = 0, binding = kTiledSdf) uniform sampler2DArray sdf_volume;
 layout(set = 0, binding = kTiledSdfInfo, std430) readonly buffer SdfData { SdfInfo sdf_info; };
@@ -115,6 +122,8 @@ void main() {
       if (!shade_light(lights[index], surface, specular, radiance, l)) continue;
 #if SHADOW_MODE == 4
       radiance *= layered_shadow(index, p_world, n_world);
+#elif SHADOW_MODE == 11
+      radiance *= penumbra_map_shadow(index, p_world, n_world);
 #elif SHADOW_MODE == 10
       radiance *= sdf_shadow(lights[index], p_world, n_world, l);
 #elif SHADOW_MODE == 9

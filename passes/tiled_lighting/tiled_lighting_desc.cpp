@@ -84,11 +84,13 @@ Table tiled_table() {
                       "required); layered from the blurred layer buffer (layerTable + shadow "
                       "required); vsm, evsm2, evsm4, msm or vssm from shadow-moments' map of "
                       "the same technique (moments + atlas + shadowData required); sdf by "
-                      "sphere tracing scene-sdf's distance field (sdf + sdfInfo required)."},
+                      "sphere tracing scene-sdf's distance field (sdf + sdfInfo required); "
+                      "penumbra-map from penumbra-wedges' map and depth layers (penumbraMap + "
+                      "atlas + shadowData required, peeled optional)."},
       &TiledLightingParams::shadows,
       {ShadowMode::none, ShadowMode::hard, ShadowMode::pcf, ShadowMode::pcss, ShadowMode::layered,
        ShadowMode::vsm, ShadowMode::evsm2, ShadowMode::evsm4, ShadowMode::msm, ShadowMode::vssm,
-       ShadowMode::sdf});
+       ShadowMode::sdf, ShadowMode::penumbra_map});
   add_kernel(table, "PCF / PCSS filter and the layered fallback");
   add_pcss(table);
   table.choice(
@@ -107,6 +109,15 @@ Table tiled_table() {
                             "are rescaled, removing light bleeding where occluders overlap at "
                             "the cost of darker, thinner penumbrae (0: off)."},
             &TiledLightingParams::bleeding_reduction);
+  table.choice(
+      {.name = "wedgeWidth",
+       .type = fg::ParamType::enumeration,
+       .default_value = "receiver",
+       .choices = {"receiver", "fixed"},
+       .description = "Penumbra-map mode: receiver rescales each wedge's ramp by how far the "
+                      "receiver lies behind the wedge (similar triangles, so penumbrae widen "
+                      "with distance); fixed uses the ramp as drawn, as the seed does."},
+      &TiledLightingParams::wedge_receiver, {true, false});
   return table;
 }
 
@@ -187,6 +198,16 @@ void check(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& 
     check_moments(pass, plan, graph, mode, mode_at, diagnostics);
     return;
   }
+  if (mode == ShadowMode::penumbra_map) {
+    if (bound_resource(pass, plan, port::kPenumbraMap) == nullptr || atlas == nullptr ||
+        shadow_data == nullptr) {
+      error(codes::lighting::kPenumbraMapInputs,
+            "shadows = penumbra-map needs the `penumbraMap` (penumbra-wedges), `atlas` and "
+            "`shadowData` inputs",
+            mode_at);
+    }
+    return;
+  }
   if (mode == ShadowMode::sdf) {
     const bool field = bound_resource(pass, plan, port::kSdf) != nullptr;
     if (!field || bound_resource(pass, plan, port::kSdfInfo) == nullptr) {
@@ -252,6 +273,15 @@ fg::PassDesc TiledLightingPass::describe() {
   desc.ports.push_back(compute_array_input(port::kSdf, {Format::r16f, Format::r32f}, 1, 0,
                                            "The scene's signed distance field (scene-sdf); "
                                            "shadows = sdf.",
+                                           true));
+  desc.ports.push_back(compute_array_input(port::kPenumbraMap, {Format::rg16f, Format::rg32f}, 1, 0,
+                                           "Penumbra map of every shadow face "
+                                           "(penumbra-wedges); shadows = penumbra-map.",
+                                           true));
+  desc.ports.push_back(compute_array_input(port::kPeeled, {Format::d32f}, 1, 0,
+                                           "Third depth layer of every shadow face "
+                                           "(penumbra-wedges, peelingDepth 3); shadows = "
+                                           "penumbra-map.",
                                            true));
   desc.ports.push_back(compute_buffer_input(port::kSdfInfo,
                                             "Where the field lies (scene-sdf); "

@@ -29,6 +29,10 @@ ANTUMBRA_BINDING(kTiledMoments, 12)
 // SHADOW_MODE sdf: the scene's distance field and where it lies (scene-sdf).
 ANTUMBRA_BINDING(kTiledSdf, 13)
 ANTUMBRA_BINDING(kTiledSdfInfo, 14)
+// SHADOW_MODE penumbra-map: penumbra-wedges' map and, with HAS_PEELED, the third depth
+// layer.
+ANTUMBRA_BINDING(kTiledPenumbraMap, 15)
+ANTUMBRA_BINDING(kTiledPeeled, 16)
 
 ANTUMBRA_PUSH_CONSTANTS(TiledLightingPush) {
   float exposure;

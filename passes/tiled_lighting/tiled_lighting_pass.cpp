@@ -31,9 +31,10 @@ std::uint32_t shadow_texels(const fgvk::PassBindings& bindings, ShadowMode mode)
 }  // namespace
 
 std::optional<ShadowMode> parse_shadow_mode(std::string_view name) {
-  for (const auto mode : {ShadowMode::none, ShadowMode::hard, ShadowMode::pcf, ShadowMode::pcss,
-                          ShadowMode::layered, ShadowMode::vsm, ShadowMode::evsm2,
-                          ShadowMode::evsm4, ShadowMode::msm, ShadowMode::vssm, ShadowMode::sdf}) {
+  for (const auto mode :
+       {ShadowMode::none, ShadowMode::hard, ShadowMode::pcf, ShadowMode::pcss, ShadowMode::layered,
+        ShadowMode::vsm, ShadowMode::evsm2, ShadowMode::evsm4, ShadowMode::msm, ShadowMode::vssm,
+        ShadowMode::sdf, ShadowMode::penumbra_map}) {
     if (name == to_string(mode)) return mode;
   }
   return std::nullopt;
@@ -63,6 +64,8 @@ std::string_view to_string(ShadowMode mode) {
       return "vssm";
     case ShadowMode::sdf:
       return "sdf";
+    case ShadowMode::penumbra_map:
+      return "penumbra-map";
   }
   return "none";
 }
@@ -112,6 +115,11 @@ void TiledLightingPass::prepare(fgvk::PrepareContext& context) {
     builder.combined_image_sampler(shared::kTiledSdf, kComp)
         .storage_buffer(shared::kTiledSdfInfo, kComp);
   }
+  has_peeled_ = mode_ == ShadowMode::penumbra_map && b.image(port::kPeeled) != nullptr;
+  if (mode_ == ShadowMode::penumbra_map) {
+    builder.combined_image_sampler(shared::kTiledPenumbraMap, kComp);
+    if (has_peeled_) builder.combined_image_sampler(shared::kTiledPeeled, kComp);
+  }
   set_layout_ = builder.build(context.gpu, context.pass.name + ".set");
   const std::array<VkDescriptorSetLayout, 1> sets{set_layout_};
   const std::array<VkPushConstantRange, 1> push{{{kComp, 0, sizeof(TiledLightingPush)}}};
@@ -134,6 +142,8 @@ void TiledLightingPass::prepare(fgvk::PrepareContext& context) {
       {"MOMENTS_HALF",
        has_moments_ && is_half_moments(b.required_image(port::kMoments).format) ? "1" : "0"},
       {"BLEEDING_REDUCTION", std::to_string(params_.bleeding_reduction)},
+      {"HAS_PEELED", has_peeled_ ? "1" : "0"},
+      {"WEDGE_RECEIVER", params_.wedge_receiver ? "1" : "0"},
   };
   shader_files_.clear();
   auto module = load_shader(context, "tiled_lighting/tiled_lighting.comp", shader_files_, defines);
@@ -190,6 +200,16 @@ void TiledLightingPass::execute(fgvk::ExecuteContext& context) {
         .combined_image_sampler(shared::kTiledSdf, sdf.array_view, context.samplers.linear_clamp,
                                 sdf.layout)
         .storage_buffer(shared::kTiledSdfInfo, b.buffer(port::kSdfInfo)->buffer);
+  }
+  if (mode_ == ShadowMode::penumbra_map) {
+    const auto& map = b.required_image(port::kPenumbraMap);
+    descriptors.combined_image_sampler(shared::kTiledPenumbraMap, map.array_view, nearest,
+                                       map.layout);
+    if (has_peeled_) {
+      const auto& peeled = b.required_image(port::kPeeled);
+      descriptors.combined_image_sampler(shared::kTiledPeeled, peeled.array_view, nearest,
+                                         peeled.layout);
+    }
   }
   descriptors.push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
 

@@ -31,7 +31,8 @@ enum class ShadowMode : std::uint8_t {
   evsm4,
   msm,
   vssm,
-  sdf
+  sdf,
+  penumbra_map
 };
 
 [[nodiscard]] constexpr bool is_moment_mode(ShadowMode mode) {
@@ -53,6 +54,7 @@ struct TiledLightingParams {
   float light_size_scale = 1.0f;
   bool pcf_fallback = true;         // layered: layer-less lights by PCF (else one hard test)
   float bleeding_reduction = 0.2f;  // moment modes (common/moments.glsl reduce_bleeding)
+  bool wedge_receiver = true;       // penumbra-map: wedge ramps rescaled per receiver
 };
 
 class TiledLightingPass final : public fgvk::Pass {
@@ -86,6 +88,7 @@ class TiledLightingPass final : public fgvk::Pass {
   bool has_colour_ = false;
   bool has_hard_bits_ = false;  // layered: full-resolution hard bits for sharp edges
   bool has_moments_ = false;    // vsm .. vssm: the filtered moment map
+  bool has_peeled_ = false;     // penumbra-map: the third depth layer
   gpu::DescriptorSetLayout set_layout_;
   gpu::PipelineLayout layout_;
   gpu::Pipeline pipeline_;

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -35,8 +36,18 @@ float analytic_width(float slab) {
   return 2.0f * kLightRadius * slab / (kLightHeight - slab);
 }
 
-std::string scene_text(float slab) {
-  char text[1600];
+// `lower` > 0 adds a second slab at that height under the first, reaching 0.3 m past its
+// edge: the floor under both edges lies in the upper slab's inner penumbra yet in the
+// lower slab's umbra.
+std::string scene_text(float slab, float lower = 0.0f) {
+  char second[200] = "";
+  if (lower > 0.0f) {
+    std::snprintf(second, sizeof second,
+                  R"(,
+    {"name": "lower", "primitive": "box", "size": [4.3, 0.2, 6], "position": [-1.85, %.3f, 0], "material": "grey"})",
+                  lower);
+  }
+  char text[1800];
   std::snprintf(text, sizeof text,
                 R"({"version": 1, "name": "penumbra-width",
   "camera": {"position": [3.5, 5.0, 0.4], "target": [0, 0, 0], "fovY": 50, "near": 0.1, "far": 40},
@@ -44,11 +55,11 @@ std::string scene_text(float slab) {
   "materials": {"grey": {"albedo": [0.6, 0.6, 0.6], "roughness": 1.0}},
   "objects": [
     {"name": "floor", "primitive": "box", "size": [8, 0.2, 8], "position": [0, -0.1, 0], "material": "grey"},
-    {"name": "slab", "primitive": "box", "size": [4, 0.2, 6], "position": [-2, %.3f, 0], "material": "grey"}
+    {"name": "slab", "primitive": "box", "size": [4, 0.2, 6], "position": [-2, %.3f, 0], "material": "grey"}%s
   ],
   "lights": [{"name": "lamp", "position": [0, %.3f, 0], "color": [1, 1, 1], "intensity": 20,
               "range": 12, "size": %.3f}]})",
-                slab, kLightHeight, kLightRadius);
+                slab, second, kLightHeight, kLightRadius);
   return text;
 }
 
@@ -66,12 +77,18 @@ class PenumbraWidthTest : public RenderTest {
     gpu::HostImage depth;
   };
 
-  std::optional<Frame> render(const std::string& graph_file, float slab) {
+  using Edit = std::function<void(fg::GraphDesc&)>;
+
+  std::optional<Frame> render(const std::string& graph_file, const std::string& scene_json,
+                              const Edit& edit = {}) {
     fg::GraphDesc graph = load_graph_file(source_dir() / "data" / "graphs" / graph_file);
     for (auto& r : graph.resources) {
-      if (r.name == "atlas") r.size = fg::SizeSpec{false, 1.0, 1.0, kFace, kFace};
-      if (r.name == "moments") r.size = fg::SizeSpec{false, 1.0, 1.0, kFace, kFace};
+      if (r.name == "atlas" || r.name == "moments" || r.name == "penumbraMap" ||
+          r.name == "peeled") {
+        r.size = fg::SizeSpec{false, 1.0, 1.0, kFace, kFace};
+      }
     }
+    if (edit) edit(graph);
     for (auto& p : graph.passes) {
       if (p.type == "shadow-pcss") p.params["kernel"] = "23";
     }
@@ -79,7 +96,7 @@ class PenumbraWidthTest : public RenderTest {
     EXPECT_NE(session, nullptr) << skip_reason_;
     if (session == nullptr) return std::nullopt;
     load_graph_ok(*session, graph);
-    auto scene = scene::parse_scene_text(scene_text(slab), "penumbra-width.json");
+    auto scene = scene::parse_scene_text(scene_json, "penumbra-width.json");
     EXPECT_TRUE(scene.ok()) << describe(scene.diagnostics());
     if (!scene.ok()) return std::nullopt;
     session->set_scene(std::move(scene.value()));
@@ -88,9 +105,9 @@ class PenumbraWidthTest : public RenderTest {
     return Frame{read_resource(*session, "hdr"), read_resource(*session, "depth")};
   }
 
-  // Visibility along z = 0 on the floor, binned by x.
-  static Profile profile(const Frame& shadowed, const Frame& unshadowed, float slab) {
-    const auto scene = scene::parse_scene_text(scene_text(slab), "penumbra-width.json");
+  // Visibility along z = 0 on the floor, binned by x (every scene has the same camera).
+  static Profile profile(const Frame& shadowed, const Frame& unshadowed) {
+    const auto scene = scene::parse_scene_text(scene_text(kLightHeight / 2), "penumbra-width.json");
     const float aspect = static_cast<float>(kView.width) / static_cast<float>(kView.height);
     const glm::mat4 inverse = glm::inverse(scene.value().camera.view_projection(aspect));
     Profile p;
@@ -133,6 +150,59 @@ class PenumbraWidthTest : public RenderTest {
     return high - low;
   }
 
+  // Where the umbra ends: the last bin darker than 0.02 before the profile first rises
+  // above 0.9.
+  static float umbra_end(const Profile& p) {
+    float end = NAN;
+    for (std::size_t b = 0; b < p.sum.size(); ++b) {
+      if (p.count[b] == 0) continue;
+      const float v = p.sum[b] / static_cast<float>(p.count[b]);
+      if (v > 0.9f && !std::isnan(end)) break;
+      if (v < 0.02f) end = p.start + (static_cast<float>(b) + 0.5f) * p.bin;
+    }
+    return end;
+  }
+
+  // The largest visibility over [from, to].
+  static float brightest(const Profile& p, float from, float to) {
+    float v = 0.0f;
+    for (std::size_t b = 0; b < p.sum.size(); ++b) {
+      const float x = p.start + (static_cast<float>(b) + 0.5f) * p.bin;
+      if (p.count[b] > 0 && x >= from && x <= to) {
+        v = std::max(v, p.sum[b] / static_cast<float>(p.count[b]));
+      }
+    }
+    return v;
+  }
+
+  // Mean absolute difference of two profiles over [-0.6, 0.6] m.
+  static float mean_difference(const Profile& a, const Profile& b) {
+    float sum = 0.0f;
+    int n = 0;
+    for (std::size_t i = 0; i < a.sum.size(); ++i) {
+      const float x = a.start + (static_cast<float>(i) + 0.5f) * a.bin;
+      if (a.count[i] == 0 || b.count[i] == 0 || std::abs(x) > 0.6f) continue;
+      sum += std::abs(a.sum[i] / static_cast<float>(a.count[i]) -
+                      b.sum[i] / static_cast<float>(b.count[i]));
+      ++n;
+    }
+    return n > 0 ? sum / static_cast<float>(n) : NAN;
+  }
+
+  // penumbra-wedges.json peeling `depth` layers (without `peeled` below 3).
+  static Edit peeling(int depth) {
+    return [depth](fg::GraphDesc& graph) {
+      for (auto& pass : graph.passes) {
+        if (pass.type == "penumbra-wedges") pass.params["peelingDepth"] = depth;
+        if (depth >= 3) continue;
+        auto& list = pass.type == "penumbra-wedges" ? pass.outputs : pass.inputs;
+        std::erase_if(list, [](const fg::PortBindingDesc& b) { return b.port == "peeled"; });
+      }
+      std::erase_if(graph.resources,
+                    [depth](const fg::ResourceDesc& r) { return depth < 3 && r.name == "peeled"; });
+    };
+  }
+
   // The darkest bin of the profile (0 in a full umbra).
   static float darkest(const Profile& p) {
     float v = 1.0f;
@@ -142,11 +212,19 @@ class PenumbraWidthTest : public RenderTest {
     return v;
   }
 
+  // The visibility profile of `graph` (edited) on `scene_json`.
+  std::optional<Profile> visibility(const std::string& graph, const std::string& scene_json,
+                                    const Edit& edit = {}) {
+    const auto shadowed = render(graph, scene_json, edit);
+    const auto unshadowed = render("lighting.json", scene_json);
+    if (!shadowed || !unshadowed) return std::nullopt;
+    return profile(*shadowed, *unshadowed);
+  }
+
   float measure(const std::string& graph, float slab, float* umbra = nullptr) {
-    const auto shadowed = render(graph, slab);
-    const auto unshadowed = render("lighting.json", slab);
-    if (!shadowed || !unshadowed) return NAN;
-    const Profile p = profile(*shadowed, *unshadowed, slab);
+    const auto found = visibility(graph, scene_text(slab));
+    if (!found) return NAN;
+    const Profile& p = *found;
     if (umbra != nullptr) *umbra = darkest(p);
     const float width = rise_width(p);
     std::printf("%-20s slab %.1f m: 10-90 width %.3f m (disk 0.687 W = %.3f, box 0.8 W = %.3f)\n",
@@ -171,7 +249,7 @@ TEST_F(PenumbraWidthTest, ReferenceFollowsSimilarTriangles) {
 // 0.8 W, within 30 % (the blocker estimate averages the slab with the floor) plus two
 // texels at the receiver.
 TEST_F(PenumbraWidthTest, EstimatorsFollowSimilarTriangles) {
-  for (const char* graph : {"pcss.json", "vssm.json", "sdf.json"}) {
+  for (const char* graph : {"pcss.json", "vssm.json", "sdf.json", "penumbra-wedges.json"}) {
     SCOPED_TRACE(graph);
     float widths[2] = {NAN, NAN};
     for (const float slab : {kLow, kHigh}) {
@@ -216,6 +294,53 @@ TEST_F(PenumbraWidthTest, FixedFiltersDoNotFollowTheGeometry) {
     const float high = measure(graph, kHigh);
     EXPECT_LT(high, 1.6f * low) << "W triples between the two slabs";
   }
+}
+
+// Penumbra wedges (docs/technique.md 3, "Penumbra wedges with depth peeling"): inner
+// wedges move the umbra's edge inside the hard shadow, where the area light puts it.
+// Drawing only outer wedges (peelingDepth 1: the single-layer methods the seed improves
+// on) lets the umbra reach the hard edge, W / 2 = 0.25 m too far.
+TEST_F(PenumbraWidthTest, WedgesDoNotOverestimateTheUmbra) {
+  const std::string scene = scene_text(kHigh);
+  const auto reference = visibility("reference.json", scene);
+  const auto wedges = visibility("penumbra-wedges.json", scene);
+  const auto single = visibility("penumbra-wedges.json", scene, peeling(1));
+  ASSERT_TRUE(reference && wedges && single);
+  const float texel = 2.0f * kLightHeight / kFace;
+  const float expected = umbra_end(*reference);
+  std::printf(
+      "umbra ends at %.3f m (reference), %.3f (3 layers), %.3f (outer wedges only); "
+      "mean |difference| to the reference %.4f and %.4f\n",
+      static_cast<double>(expected), static_cast<double>(umbra_end(*wedges)),
+      static_cast<double>(umbra_end(*single)),
+      static_cast<double>(mean_difference(*wedges, *reference)),
+      static_cast<double>(mean_difference(*single, *reference)));
+  EXPECT_LT(expected, -0.1f);  // the disk's umbra starts W / 2 inside the hard edge
+  EXPECT_NEAR(umbra_end(*wedges), expected, 0.05f + texel);
+  EXPECT_GT(umbra_end(*single) - expected, 0.15f);
+  EXPECT_LT(mean_difference(*wedges, *reference), 0.04f);
+  EXPECT_GT(mean_difference(*single, *reference), 1.5f * mean_difference(*wedges, *reference));
+}
+
+// Case 6 of the seed's figure 7: the floor under both slabs' edges lies in the upper
+// slab's inner wedge, but a second occluder (the lower slab) hides it fully. Only the
+// third depth layer tells it from the inner penumbra (case 5); with two layers the inner
+// ramp lights it.
+TEST_F(PenumbraWidthTest, ThirdLayerKeepsTheUmbraUnderASecondOccluder) {
+  const std::string scene = scene_text(kHigh, kLow);
+  const auto reference = visibility("reference.json", scene);
+  const auto three = visibility("penumbra-wedges.json", scene);
+  const auto two = visibility("penumbra-wedges.json", scene, peeling(2));
+  ASSERT_TRUE(reference && three && two);
+  const float from = -0.2f;
+  const float to = -0.03f;
+  std::printf("brightest under both slabs: %.3f (reference), %.3f (3 layers), %.3f (2)\n",
+              static_cast<double>(brightest(*reference, from, to)),
+              static_cast<double>(brightest(*three, from, to)),
+              static_cast<double>(brightest(*two, from, to)));
+  EXPECT_LT(brightest(*reference, from, to), 0.02f);
+  EXPECT_LT(brightest(*three, from, to), 0.02f);
+  EXPECT_GT(brightest(*two, from, to), 0.1f);
 }
 
 }  // namespace

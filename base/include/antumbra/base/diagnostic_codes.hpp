@@ -199,8 +199,9 @@ inline constexpr const char* kShadowDataTooSmall =
 inline constexpr const char* kLayeredInputs = "TL004";  // layered mode needs layerTable, shadow
 inline constexpr const char* kLayerTableTooSmall = "TL005";  // layerTable buffer too small
 inline constexpr const char* kMomentsInputs = "TL006";       // moment modes need moments + atlas
-inline constexpr const char* kMomentsTechnique = "TL007";  // mode differs from the map's technique
-inline constexpr const char* kSdfInputs = "TL008";         // sdf mode needs sdf + sdfInfo
+inline constexpr const char* kMomentsTechnique = "TL007";   // mode differs from the map's technique
+inline constexpr const char* kSdfInputs = "TL008";          // sdf mode needs sdf + sdfInfo
+inline constexpr const char* kPenumbraMapInputs = "TL009";  // penumbra-map mode's inputs
 }  // namespace lighting
 
 // shadow-moments.
@@ -216,6 +217,14 @@ inline constexpr const char* kNotPersistent = "SD003";  // baked once: must be p
 inline constexpr const char* kBaked = "SD004";          // note: a bake, its size and memory
 inline constexpr const char* kInfoTooSmall = "SD005";   // sdfInfo buffer below SdfInfo's size
 }  // namespace sdf
+
+// penumbra-wedges.
+namespace wedges {
+inline constexpr const char* kSummary = "PW001";       // note: edges, depth layers, memory
+inline constexpr const char* kEdgesDropped = "PW002";  // warning: silhouettes over edgesPerFace
+inline constexpr const char* kPeeled = "PW003";        // `peeled` bound iff peelingDepth is 3
+inline constexpr const char* kPeeledShape = "PW004";   // `peeled` differs from the penumbra map
+}  // namespace wedges
 
 // antumbra quality.
 namespace quality {

@@ -1,0 +1,34 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// The next depth layer: fragments at or in front of the layer in front (plus a gap that
+// grows with the surface's depth slope across a texel, so one surface does not peel from
+// itself) are
+// discarded; the depth test keeps the nearest of the rest. Surfaces edge-on to the light
+// are skipped too: they cover no solid angle from it, yet rasterise as slivers along
+// silhouettes, exactly where the inner wedges need Z2 and Z3 to be the occluder's back
+// and the receiver.
+#include "wedges_common.glsl"
+
+layout(set = 0, binding = kWedgeFirst) uniform sampler2DArray previous;
+
+layout(location = 0) in vec3 in_position;
+layout(location = 1) in vec3 in_normal;
+
+// |cos| of the angle between the surface and the light's ray below which a fragment
+// counts as edge-on (about 1 degree off the ray).
+const float kEdgeOn = 0.02;
+
+void main() {
+  ShadowLight sl = shadow_lights[shadow_faces[layer].info.x];
+  float d = wedge_linearise(sl, gl_FragCoord.z);
+  vec3 ray = normalize(in_position - sl.position_range.xyz);
+  float facing = abs(dot(normalize(in_normal), ray));
+  if (facing < kEdgeOn) discard;
+  // Depth change across one texel: the texel's width at this distance times the tangent
+  // of the surface's tilt, from the geometry rather than fwidth (undefined beside a
+  // triangle's edge, which is where silhouettes are).
+  float texel = 2.0 * d * sl.projection.x / max(extent.x * max(sl.projection.z, 1e-6), 1.0);
+  float slope = texel * min(sqrt(max(1.0 - facing * facing, 0.0)) / facing, 8.0);
+  float front = textureLod(previous, vec3(gl_FragCoord.xy / extent, float(layer)), 0.0).r;
+  if (front < 1.0 && d <= wedge_linearise(sl, front) + gap + 2.0 * slope) discard;
+}

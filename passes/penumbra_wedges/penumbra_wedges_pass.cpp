@@ -1,0 +1,496 @@
+#include "penumbra_wedges_pass.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstring>
+
+#include "antumbra/base/diagnostic_codes.hpp"
+#include "antumbra/gpu/commands.hpp"
+#include "antumbra/gpu/context.hpp"
+#include "antumbra/gpu/pipelines.hpp"
+#include "antumbra/gpu/vk_check.hpp"
+#include "antumbra/scene/scene.hpp"
+#include "common/frame_data.hpp"
+#include "common/frame_resources.hpp"
+#include "common/ports.hpp"
+#include "penumbra_wedges_interface.h"
+#include "shared/limits.h"
+#include "silhouette_edges.hpp"
+
+namespace antumbra::passes {
+namespace {
+
+using shared::PenumbraWedgesPush;
+using shared::Silhouette;
+using shared::WedgeEdge;
+
+constexpr VkShaderStageFlags kStages =
+    VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT | VK_SHADER_STAGE_COMPUTE_BIT;
+constexpr VkPipelineStageFlags2 kCompute = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+constexpr VkPipelineStageFlags2 kDepthTests =
+    VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT;
+constexpr VkFormat kSecondFormat = VK_FORMAT_D32_SFLOAT;
+constexpr VkFormat kWedgeDepthFormat = VK_FORMAT_D16_UNORM;
+constexpr std::uint32_t kGroup = 64;
+
+gpu::DescriptorSetLayoutBuilder wedge_bindings() {
+  gpu::DescriptorSetLayoutBuilder b;
+  b.storage_buffer(shared::kWedgeShadowData, kStages)
+      .storage_buffer(shared::kWedgeVertices, kStages)
+      .storage_buffer(shared::kWedgeEdges, kStages)
+      .storage_buffer(shared::kWedgeNormals, kStages)
+      .storage_buffer(shared::kWedgeSilhouettes, kStages)
+      .storage_buffer(shared::kWedgeCounts, kStages)
+      .storage_buffer(shared::kWedgeArgs, kStages)
+      .combined_image_sampler(shared::kWedgeFirst, kStages)
+      .combined_image_sampler(shared::kWedgeSecond, kStages);
+  return b;
+}
+
+std::vector<gpu::ImageView> layer_views(gpu::Context& gpu, VkImage image, VkFormat format,
+                                        std::uint32_t layers, const std::string& name) {
+  std::vector<gpu::ImageView> views;
+  views.reserve(layers);
+  for (std::uint32_t layer = 0; layer < layers; ++layer) {
+    VkImageViewCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+    info.image = image;
+    info.viewType = VK_IMAGE_VIEW_TYPE_2D;
+    info.format = format;
+    info.subresourceRange = {gpu::aspect_of(format), 0, 1, layer, 1};
+    VkImageView view = VK_NULL_HANDLE;
+    gpu::check(vkCreateImageView(gpu.device(), &info, nullptr, &view), "vkCreateImageView");
+    views.emplace_back(gpu, view, name + ".layer" + std::to_string(layer));
+  }
+  return views;
+}
+
+VkRenderingAttachmentInfo attachment(VkImageView view, VkImageLayout layout, VkClearValue clear) {
+  VkRenderingAttachmentInfo a{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+  a.imageView = view;
+  a.imageLayout = layout;
+  a.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+  a.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+  a.clearValue = clear;
+  return a;
+}
+
+// Before a depth image of the pass's own is rendered again: the previous frame's reads
+// (sampled in fragment shaders) or writes are done; contents are not kept.
+void begin_depth_target(VkCommandBuffer cmd, VkImage image, VkFormat format) {
+  gpu::ImageBarrier barrier;
+  barrier.image = image;
+  barrier.new_layout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+  barrier.src_stage = VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | kDepthTests;
+  barrier.src_access = VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+  barrier.dst_stage = kDepthTests;
+  barrier.dst_access = VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT |
+                       VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+  barrier.range = {gpu::aspect_of(format), 0, 1, 0, VK_REMAINING_ARRAY_LAYERS};
+  gpu::image_barrier(cmd, barrier);
+}
+
+}  // namespace
+
+PenumbraWedgesPass::PenumbraWedgesPass(const fg::PlanPass& pass)
+    : params_(param_table().read(pass.params)) {
+}
+
+void PenumbraWedgesPass::prepare(fgvk::PrepareContext& context) {
+  name_ = context.pass.name;
+  const auto& b = context.bindings;
+  const auto& penumbra = b.required_image(port::kPenumbraMap);
+  shader_files_.clear();
+  const gpu::DescriptorSetLayoutBuilder bindings = wedge_bindings();
+  auto silhouettes = load_shader(context, "penumbra_wedges/silhouettes.comp", shader_files_);
+  auto args = load_shader(context, "penumbra_wedges/wedge_args.comp", shader_files_);
+  auto peel_vert = load_shader(context, "penumbra_wedges/peel.vert", shader_files_);
+  auto peel_frag = load_shader(context, "penumbra_wedges/peel.frag", shader_files_);
+  auto wedge_vert = load_shader(context, "penumbra_wedges/wedge.vert", shader_files_);
+  auto wedge_frag = load_shader(context, "penumbra_wedges/wedge.frag", shader_files_);
+  for (const Shader* s : {&silhouettes, &args, &peel_vert, &peel_frag, &wedge_vert, &wedge_frag}) {
+    check_shader_interface(name_, *s, bindings, sizeof(PenumbraWedgesPush));
+  }
+  set_layout_ = bindings.build(context.gpu, name_ + ".set");
+  const std::array<VkDescriptorSetLayout, 1> sets{set_layout_};
+  const std::array<VkPushConstantRange, 1> push{{{kStages, 0, sizeof(PenumbraWedgesPush)}}};
+  layout_ = gpu::create_pipeline_layout(context.gpu, sets, push, name_ + ".layout");
+  silhouettes_ = gpu::create_compute_pipeline(context.gpu, layout_, silhouettes,
+                                              name_ + ".silhouettes", context.pipeline_cache);
+  args_ = gpu::create_compute_pipeline(context.gpu, layout_, args, name_ + ".args",
+                                       context.pipeline_cache);
+
+  gpu::GraphicsPipelineBuilder peel;
+  peel.vertex_binding(0, sizeof(GpuVertex))
+      .vertex_attribute(0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(GpuVertex, position))
+      .vertex_attribute(1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(GpuVertex, normal))
+      .shader(VK_SHADER_STAGE_VERTEX_BIT, peel_vert)
+      .shader(VK_SHADER_STAGE_FRAGMENT_BIT, peel_frag)
+      .cull(VK_CULL_MODE_NONE)  // as the atlas: thin panes and open meshes have two sides
+      .depth(true, true, VK_COMPARE_OP_LESS)
+      .depth_format(kSecondFormat)
+      .layout(layout_)
+      .cache(context.pipeline_cache);
+  check_vertex_inputs(name_, peel_vert, peel.vertex_attributes());
+  peel_ = peel.build(context.gpu, name_ + ".peel");
+
+  gpu::GraphicsPipelineBuilder wedges;
+  wedges.shader(VK_SHADER_STAGE_VERTEX_BIT, wedge_vert)
+      .shader(VK_SHADER_STAGE_FRAGMENT_BIT, wedge_frag)
+      .cull(VK_CULL_MODE_NONE)
+      .depth(true, true, VK_COMPARE_OP_GREATER)
+      .depth_format(kWedgeDepthFormat)
+      .color_formats({penumbra.format})
+      .layout(layout_)
+      .cache(context.pipeline_cache);
+  wedges_ = wedges.build(context.gpu, name_ + ".wedges");
+  views_for_ = VK_NULL_HANDLE;
+}
+
+void PenumbraWedgesPass::execute(fgvk::ExecuteContext& context) {
+  const auto& b = context.bindings;
+  const auto& atlas = b.required_image(port::kAtlas);
+  const auto& penumbra = b.required_image(port::kPenumbraMap);
+  const std::uint32_t layers = std::min(atlas.layers, penumbra.layers);
+  update_edges(context);
+  ensure_images(context, penumbra.extent, layers);
+
+  if (readback_.size() < context.frame.frames_in_flight) {
+    readback_.resize(context.frame.frames_in_flight);
+  }
+  Readback& slot = readback_[context.frame.slot];
+  const VkDeviceSize dropped_bytes = VkDeviceSize{layers} * sizeof(std::uint32_t);
+  if (slot.pending && slot.dropped.mapped() != nullptr) {
+    // The slot's previous frame has finished (FrameLoop hands slots out that way).
+    std::uint32_t total = 0;
+    const auto* values = reinterpret_cast<const std::uint32_t*>(slot.dropped.mapped());
+    for (std::uint32_t i = 0; i < layers && i * sizeof(std::uint32_t) < slot.dropped.size(); ++i) {
+      total += values[i];
+    }
+    last_dropped_ = total;
+  }
+  if (slot.dropped.handle() == VK_NULL_HANDLE || slot.dropped.size() < dropped_bytes) {
+    slot.dropped = gpu::Buffer::create(context.gpu, dropped_bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                       gpu::MemoryUsage::readback,
+                                       name_ + ".dropped." + std::to_string(context.frame.slot));
+  }
+  last_slot_ = context.frame.slot;
+  report(context);
+
+  extract(context, layers);
+  const VkCommandBuffer cmd = context.cmd;
+  const VkBufferCopy region{dropped_bytes, 0, dropped_bytes};
+  vkCmdCopyBuffer(cmd, counts_.handle(), slot.dropped.handle(), 1, &region);
+  gpu::memory_barrier(cmd, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                      VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
+  slot.pending = true;
+
+  if (params_.peeling_depth >= 2) {
+    begin_depth_target(cmd, second_.handle(), kSecondFormat);
+    peel(context,
+         {atlas.array_view, atlas.layout, &second_views_, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL},
+         penumbra.extent, layers);
+    gpu::ImageBarrier readable;
+    readable.image = second_.handle();
+    readable.old_layout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+    readable.new_layout = VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL;
+    readable.src_stage = kDepthTests;
+    readable.src_access = VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+    readable.dst_stage = VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
+    readable.dst_access = VK_ACCESS_2_SHADER_SAMPLED_READ_BIT;
+    readable.range = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, VK_REMAINING_ARRAY_LAYERS};
+    gpu::image_barrier(cmd, readable);
+    second_written_ = true;
+  }
+  if (params_.peeling_depth >= 3) {
+    const auto& peeled = b.required_image(port::kPeeled);
+    peel(context,
+         {second_.array_view(), VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, &peeled_views_,
+          peeled.layout},
+         penumbra.extent, layers);
+  }
+  draw_wedges(context, layers);
+}
+
+void PenumbraWedgesPass::update_edges(fgvk::ExecuteContext& context) {
+  const auto& frame = context.frame;
+  if (frame.geometry_version == edges_version_ && edges_.handle() != VK_NULL_HANDLE) return;
+  edges_version_ = frame.geometry_version;
+  EdgeList list;
+  if (frame.scene != nullptr) {
+    const MergedGeometry geometry = merge_scene_geometry(*frame.scene);
+    list = build_edge_list(geometry.vertices, geometry.indices);
+  }
+  edge_count_ = static_cast<std::uint32_t>(list.edges.size());
+  welded_vertices_ = list.welded_vertices;
+  boundary_edges_ = list.boundary + list.nonmanifold;
+  // Empty scenes keep one entry so the descriptors stay valid; edge_count says 0.
+  if (list.edges.empty()) list.edges.push_back({});
+  if (list.normals.empty()) list.normals.emplace_back(0.0f);
+  edges_ = gpu::Buffer::create(context.gpu, list.edges.size() * sizeof(WedgeEdge),
+                               VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, gpu::MemoryUsage::gpu_only,
+                               name_ + ".edges");
+  edges_.upload(context.gpu, list.edges.data(), list.edges.size() * sizeof(WedgeEdge));
+  normals_ = gpu::Buffer::create(context.gpu, list.normals.size() * sizeof(glm::vec4),
+                                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, gpu::MemoryUsage::gpu_only,
+                                 name_ + ".normals");
+  normals_.upload(context.gpu, list.normals.data(), list.normals.size() * sizeof(glm::vec4));
+}
+
+void PenumbraWedgesPass::ensure_images(fgvk::ExecuteContext& context, VkExtent2D extent,
+                                       std::uint32_t layers) {
+  auto& gpu = context.gpu;
+  const VkDeviceSize silhouette_bytes =
+      VkDeviceSize{layers} * params_.edges_per_face * sizeof(Silhouette);
+  if (silhouettes_buffer_.handle() == VK_NULL_HANDLE ||
+      silhouettes_buffer_.size() < silhouette_bytes) {
+    silhouettes_buffer_ =
+        gpu::Buffer::create(gpu, silhouette_bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                            gpu::MemoryUsage::gpu_only, name_ + ".silhouettes");
+    counts_ =
+        gpu::Buffer::create(gpu, VkDeviceSize{2} * layers * sizeof(std::uint32_t),
+                            VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
+                                VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                            gpu::MemoryUsage::gpu_only, name_ + ".counts");
+    args_buffer_ = gpu::Buffer::create(
+        gpu, VkDeviceSize{layers} * sizeof(VkDrawIndirectCommand),
+        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,
+        gpu::MemoryUsage::gpu_only, name_ + ".args");
+  }
+  const bool same = second_ && second_.extent().width == extent.width &&
+                    second_.extent().height == extent.height && second_.layers() == layers;
+  if (!same) {
+    gpu::ImageDesc desc;
+    desc.extent = extent;
+    desc.layers = layers;
+    desc.format = kSecondFormat;
+    desc.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
+    desc.name = name_ + ".second";
+    second_ = gpu::Image::create(gpu, desc);
+    second_views_ = layer_views(gpu, second_.handle(), kSecondFormat, layers, desc.name);
+    desc.format = kWedgeDepthFormat;
+    desc.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT;
+    desc.name = name_ + ".wedgeDepth";
+    wedge_depth_ = gpu::Image::create(gpu, desc);
+    wedge_depth_views_ =
+        layer_views(gpu, wedge_depth_.handle(), kWedgeDepthFormat, layers, desc.name);
+    second_written_ = false;
+  }
+  const auto& penumbra = context.bindings.required_image(port::kPenumbraMap);
+  if (views_for_ != penumbra.image) {
+    views_for_ = penumbra.image;
+    penumbra_views_ =
+        layer_views(gpu, penumbra.image, penumbra.format, layers, name_ + ".penumbra");
+    peeled_views_.clear();
+    if (const auto* peeled = context.bindings.image(port::kPeeled)) {
+      peeled_views_ = layer_views(gpu, peeled->image, peeled->format, layers, name_ + ".peeled");
+    }
+  }
+}
+
+void PenumbraWedgesPass::extract(fgvk::ExecuteContext& context, std::uint32_t layers) {
+  const VkCommandBuffer cmd = context.cmd;
+  const auto& atlas = context.bindings.required_image(port::kAtlas);
+  // The previous frame's reads of the counts (args, copy) and silhouettes come first.
+  gpu::memory_barrier(
+      cmd, kCompute | VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT | VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT,
+      VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_TRANSFER_READ_BIT,
+      VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT | kCompute,
+      VK_ACCESS_2_TRANSFER_WRITE_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+  vkCmdFillBuffer(cmd, counts_.handle(), 0, VK_WHOLE_SIZE, 0);
+  gpu::buffer_barrier(cmd, counts_.handle(), VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+                      VK_ACCESS_2_TRANSFER_WRITE_BIT, kCompute,
+                      VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+  const PenumbraWedgesPush push{.edge_count = edge_count_,
+                                .capacity = params_.edges_per_face,
+                                .layers = layers,
+                                .layer = 0,
+                                .outer = params_.outer,
+                                .inner = params_.inner,
+                                .beta = params_.beta,
+                                .gap = params_.gap,
+                                .peeling_depth = params_.peeling_depth,
+                                .pad0 = 0,
+                                .extent = {1.0f, 1.0f}};
+  const VkBuffer vertices =
+      context.frame.vertices != VK_NULL_HANDLE ? context.frame.vertices : edges_.handle();
+  gpu::PushDescriptors descriptors;
+  descriptors
+      .storage_buffer(shared::kWedgeShadowData, context.bindings.buffer(port::kShadowData)->buffer)
+      .storage_buffer(shared::kWedgeVertices, vertices)
+      .storage_buffer(shared::kWedgeEdges, edges_.handle())
+      .storage_buffer(shared::kWedgeNormals, normals_.handle())
+      .storage_buffer(shared::kWedgeSilhouettes, silhouettes_buffer_.handle())
+      .storage_buffer(shared::kWedgeCounts, counts_.handle())
+      .storage_buffer(shared::kWedgeArgs, args_buffer_.handle())
+      .combined_image_sampler(shared::kWedgeFirst, atlas.array_view, context.samplers.nearest_clamp,
+                              atlas.layout)
+      .combined_image_sampler(shared::kWedgeSecond, atlas.array_view,
+                              context.samplers.nearest_clamp, atlas.layout);
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, silhouettes_);
+  descriptors.push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
+  vkCmdPushConstants(cmd, layout_, kStages, 0, sizeof push, &push);
+  // One row of workgroups per scene light (the shadow data's light index).
+  const std::uint32_t lights =
+      context.frame.scene != nullptr
+          ? std::min<std::uint32_t>(static_cast<std::uint32_t>(context.frame.scene->lights.size()),
+                                    ANTUMBRA_MAX_SHADOW_LIGHTS)
+          : 0u;
+  if (edge_count_ > 0 && lights > 0) {
+    vkCmdDispatch(cmd, group_count(edge_count_, kGroup), lights, 1);
+  }
+  gpu::memory_barrier(cmd, kCompute, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, kCompute,
+                      VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, args_);
+  vkCmdDispatch(cmd, group_count(layers, kGroup), 1, 1);
+  gpu::memory_barrier(cmd, kCompute, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                      VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT |
+                          VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT |
+                          VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+                      VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT |
+                          VK_ACCESS_2_TRANSFER_READ_BIT);
+}
+
+void PenumbraWedgesPass::peel(fgvk::ExecuteContext& context, const PeelStep& step,
+                              VkExtent2D extent, std::uint32_t layers) {
+  const std::vector<gpu::ImageView>& targets = *step.targets;
+  const VkCommandBuffer cmd = context.cmd;
+  if (context.frame.index_count == 0 || targets.size() < layers) return;
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, peel_);
+  gpu::PushDescriptors()
+      .storage_buffer(shared::kWedgeShadowData, context.bindings.buffer(port::kShadowData)->buffer)
+      .combined_image_sampler(shared::kWedgeFirst, step.previous, context.samplers.nearest_clamp,
+                              step.previous_layout)
+      .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_);
+  const VkDeviceSize offset = 0;
+  VkClearValue clear{};
+  clear.depthStencil = {1.0f, 0};
+  for (std::uint32_t layer = 0; layer < layers; ++layer) {
+    const VkRenderingAttachmentInfo depth = attachment(targets[layer], step.target_layout, clear);
+    VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
+    rendering.renderArea = {{0, 0}, extent};
+    rendering.layerCount = 1;
+    rendering.pDepthAttachment = &depth;
+    vkCmdBeginRendering(cmd, &rendering);
+    set_viewport(cmd, extent);
+    const PenumbraWedgesPush push{
+        .edge_count = edge_count_,
+        .capacity = params_.edges_per_face,
+        .layers = layers,
+        .layer = layer,
+        .outer = params_.outer,
+        .inner = params_.inner,
+        .beta = params_.beta,
+        .gap = params_.gap,
+        .peeling_depth = params_.peeling_depth,
+        .pad0 = 0,
+        .extent = {static_cast<float>(extent.width), static_cast<float>(extent.height)}};
+    vkCmdPushConstants(cmd, layout_, kStages, 0, sizeof push, &push);
+    vkCmdBindVertexBuffers(cmd, 0, 1, &context.frame.vertices, &offset);
+    vkCmdBindIndexBuffer(cmd, context.frame.indices, 0, VK_INDEX_TYPE_UINT32);
+    vkCmdDrawIndexed(cmd, context.frame.index_count, 1, 0, 0, 0);
+    vkCmdEndRendering(cmd);
+  }
+}
+
+void PenumbraWedgesPass::draw_wedges(fgvk::ExecuteContext& context, std::uint32_t layers) {
+  const VkCommandBuffer cmd = context.cmd;
+  const auto& atlas = context.bindings.required_image(port::kAtlas);
+  const auto& penumbra = context.bindings.required_image(port::kPenumbraMap);
+  begin_depth_target(cmd, wedge_depth_.handle(), kWedgeDepthFormat);
+  const bool second = params_.peeling_depth >= 2;
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, wedges_);
+  gpu::PushDescriptors()
+      .storage_buffer(shared::kWedgeShadowData, context.bindings.buffer(port::kShadowData)->buffer)
+      .storage_buffer(shared::kWedgeSilhouettes, silhouettes_buffer_.handle())
+      .combined_image_sampler(shared::kWedgeFirst, atlas.array_view, context.samplers.nearest_clamp,
+                              atlas.layout)
+      .combined_image_sampler(shared::kWedgeSecond,
+                              second ? second_.array_view() : atlas.array_view,
+                              context.samplers.nearest_clamp,
+                              second ? VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL : atlas.layout)
+      .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_);
+  VkClearValue nothing{};  // theta 0, no wedge; depth 0 under the greater-than test
+  for (std::uint32_t layer = 0; layer < layers; ++layer) {
+    const VkRenderingAttachmentInfo colour =
+        attachment(penumbra_views_[layer], penumbra.layout, nothing);
+    const VkRenderingAttachmentInfo depth =
+        attachment(wedge_depth_views_[layer], VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, nothing);
+    VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
+    rendering.renderArea = {{0, 0}, penumbra.extent};
+    rendering.layerCount = 1;
+    rendering.colorAttachmentCount = 1;
+    rendering.pColorAttachments = &colour;
+    rendering.pDepthAttachment = &depth;
+    vkCmdBeginRendering(cmd, &rendering);
+    set_viewport(cmd, penumbra.extent);
+    const PenumbraWedgesPush push{.edge_count = edge_count_,
+                                  .capacity = params_.edges_per_face,
+                                  .layers = layers,
+                                  .layer = layer,
+                                  .outer = params_.outer,
+                                  .inner = params_.inner,
+                                  .beta = params_.beta,
+                                  .gap = params_.gap,
+                                  .peeling_depth = params_.peeling_depth,
+                                  .pad0 = 0,
+                                  .extent = {static_cast<float>(penumbra.extent.width),
+                                             static_cast<float>(penumbra.extent.height)}};
+    vkCmdPushConstants(cmd, layout_, kStages, 0, sizeof push, &push);
+    vkCmdDrawIndirect(cmd, args_buffer_.handle(),
+                      VkDeviceSize{layer} * sizeof(VkDrawIndirectCommand), 1,
+                      sizeof(VkDrawIndirectCommand));
+    vkCmdEndRendering(cmd);
+  }
+}
+
+// A note in every frame's report: what the wedges are drawn from and their memory; a
+// warning when a light's silhouette did not fit its segment (those edges draw no wedge,
+// so their shadow edge stays hard).
+void PenumbraWedgesPass::report(fgvk::ExecuteContext& context) const {
+  const auto& penumbra = context.bindings.required_image(port::kPenumbraMap);
+  const double texels =
+      static_cast<double>(penumbra.extent.width) * penumbra.extent.height * penumbra.layers;
+  const double layer_bytes = 4.0 * (params_.peeling_depth >= 2 ? 1.0 : 0.0) +
+                             4.0 * (params_.peeling_depth >= 3 ? 1.0 : 0.0) + 2.0 +
+                             static_cast<double>(gpu::texel_size(penumbra.format));
+  const double mib = (texels * layer_bytes + static_cast<double>(silhouettes_buffer_.size()) +
+                      static_cast<double>(edges_.size()) + static_cast<double>(normals_.size())) /
+                     (1024.0 * 1024.0);
+  char text[240];
+  std::snprintf(text, sizeof text,
+                "%u edges (%u open) over %u welded vertices, %u depth layers, %.1f MiB",
+                edge_count_, boundary_edges_, welded_vertices_, params_.peeling_depth, mib);
+  context.report.replace({.pass = name_,
+                          .code = codes::wedges::kSummary,
+                          .severity = base::Severity::note,
+                          .message = text,
+                          .details = {{"edges", edge_count_},
+                                      {"openEdges", boundary_edges_},
+                                      {"weldedVertices", welded_vertices_},
+                                      {"peelingDepth", params_.peeling_depth},
+                                      {"memoryMiB", mib}}});
+  if (last_dropped_ > 0) context.report.replace(dropped_message(last_dropped_));
+}
+
+void PenumbraWedgesPass::collect(fgvk::FrameReport& report) {
+  if (last_slot_ >= readback_.size()) return;
+  const Readback& slot = readback_[last_slot_];
+  if (!slot.pending || slot.dropped.mapped() == nullptr) return;
+  std::uint32_t total = 0;
+  const auto* values = reinterpret_cast<const std::uint32_t*>(slot.dropped.mapped());
+  for (std::size_t i = 0; i < slot.dropped.size() / sizeof(std::uint32_t); ++i) total += values[i];
+  if (total > 0) report.replace(dropped_message(total));
+}
+
+fgvk::PassMessage PenumbraWedgesPass::dropped_message(std::uint32_t dropped) const {
+  return {.pass = name_,
+          .code = codes::wedges::kEdgesDropped,
+          .severity = base::Severity::warning,
+          .message = std::to_string(dropped) + " silhouette edges did not fit edgesPerFace (" +
+                     std::to_string(params_.edges_per_face) +
+                     " per face, 6x for a point light) and draw no wedge: raise it",
+          .details = {{"dropped", dropped}, {"edgesPerFace", params_.edges_per_face}},
+          .param = "edgesPerFace"};
+}
+
+}  // namespace antumbra::passes

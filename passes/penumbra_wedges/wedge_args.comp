@@ -1,0 +1,29 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// One indirect draw per atlas layer: the wedges of its light's silhouette segment (12
+// vertices per edge), none where the layer holds no point or spot face this frame. Also
+// the dropped edges per layer (over the segment's capacity) at counts[layers + layer],
+// read back for the frame report.
+#include "wedges_common.glsl"
+
+layout(local_size_x = 64) in;
+
+layout(set = 0, binding = kWedgeCounts, std430) buffer Counts { uint counts[]; };
+layout(set = 0, binding = kWedgeArgs, std430) writeonly buffer Args { uvec4 args[]; };
+
+void main() {
+  uint layer = gl_GlobalInvocationID.x;
+  if (layer >= layers) return;
+  int light = wedge_face_light(layer);
+  if (light < 0) {
+    args[layer] = uvec4(0u, 1u, 0u, 0u);
+    counts[layers + layer] = 0u;
+    return;
+  }
+  ShadowLight sl = shadow_lights[light];
+  uint first = uint(sl.params.z);
+  uint found = counts[first];
+  uint kept = min(found, wedge_segment_capacity(sl));
+  args[layer] = uvec4(kept * ANTUMBRA_WEDGE_VERTICES, 1u, first * capacity * ANTUMBRA_WEDGE_VERTICES, 0u);
+  counts[layers + layer] = layer == first ? found - kept : 0u;
+}

@@ -1,0 +1,49 @@
+// Shared by penumbra-wedges' shaders: the shadow data, the push constants, and which
+// silhouette segment a face draws from (docs/technique.md 3, "Penumbra wedges with depth
+// peeling"). A point or spot light's silhouettes live in one segment of the silhouette
+// buffer, starting at its first face's layer times `capacity`; a point light's segment
+// spans its six layers' shares, a spot light's one.
+#ifndef ANTUMBRA_WEDGES_COMMON_GLSL
+#define ANTUMBRA_WEDGES_COMMON_GLSL
+
+#include "../interface/shared/shadow_data.h"
+#include "penumbra_wedges_interface.h"
+
+layout(set = 0, binding = kWedgeShadowData, std430) readonly buffer ShadowData {
+  ShadowHeader shadow_header;
+  ShadowLight shadow_lights[ANTUMBRA_MAX_SHADOW_LIGHTS];
+  ShadowFace shadow_faces[];
+};
+
+bool wedge_light_supported(ShadowLight l) {
+  return l.params.z >= 0.0 && l.direction_type.w < 1.5;  // point or spot with faces
+}
+
+uint wedge_segment_capacity(ShadowLight l) {
+  return l.direction_type.w < 0.5 ? 6u * capacity : capacity;
+}
+
+// The light drawn into `layer` when this frame holds its depth there, or -1.
+int wedge_face_light(uint layer) {
+  if (layer >= layers) return -1;
+  ShadowFace face = shadow_faces[layer];
+  if (face.info.z == 0u || face.info.x >= ANTUMBRA_MAX_SHADOW_LIGHTS) return -1;
+  return wedge_light_supported(shadow_lights[face.info.x]) ? int(face.info.x) : -1;
+}
+
+float wedge_linearise(ShadowLight l, float depth) {
+  float near = l.params.y;
+  float far = l.position_range.w;
+  return far * near / (far - depth * (far - near));
+}
+
+// World -> the face's clip space, into the square [0, share) of its layer like the atlas
+// (point_shadow_atlas/shadow_atlas.vert).
+vec4 wedge_face_position(ShadowFace face, ShadowLight l, vec3 world) {
+  vec4 position = face.view_proj * vec4(world, 1.0);
+  float share = l.projection.z;
+  if (share > 0.0 && share < 1.0) position.xy = (position.xy + position.w) * share - position.w;
+  return position;
+}
+
+#endif
