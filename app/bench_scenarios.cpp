@@ -30,6 +30,7 @@ const std::vector<Technique>& techniques() {
       {"msm", "msm.json", "", {}},
       {"vssm", "vssm.json", "", {}},
       {"sdf", "sdf.json", "", {}},
+      {"penumbra-wedges", "penumbra-wedges.json", "", {}},
   };
   return kTechniques;
 }
@@ -257,7 +258,8 @@ std::vector<std::string> apply_overrides(fg::GraphDesc& graph,
 void fit_shadow_resources(fg::GraphDesc& graph, int lights, unsigned face) {
   constexpr int kMaxLayers = 2046;  // 341 lights x 6 faces; Vulkan guarantees 2048 layers
   const int layers = std::clamp(6 * lights, 6, kMaxLayers);
-  // A map derived from the atlas (shadow-min-filter) keeps its factor of the face size.
+  // A map derived from the atlas (shadow-min-filter's, shadow-moments', penumbra-wedges')
+  // keeps its factor of the face size.
   std::uint32_t atlas_width = 0;
   for (const auto& r : graph.resources) {
     if (r.name == "atlas" && !r.size.relative) atlas_width = r.size.width;
@@ -265,8 +267,9 @@ void fit_shadow_resources(fg::GraphDesc& graph, int lights, unsigned face) {
   for (auto& r : graph.resources) {
     if (r.kind == fg::ResourceKind::image && r.layers >= 6 &&
         (r.name == "atlas" || r.name == "shadowColour" || r.name == "minDepth" ||
-         r.name == "moments")) {
-      const bool derived = r.name == "minDepth" || r.name == "moments";
+         r.name == "moments" || r.name == "penumbraMap" || r.name == "peeled")) {
+      const bool derived = r.name == "minDepth" || r.name == "moments" || r.name == "penumbraMap" ||
+                           r.name == "peeled";
       const std::uint32_t factor = derived && atlas_width > 0 && r.size.width > 0
                                        ? std::max(atlas_width / r.size.width, 1u)
                                        : 1u;

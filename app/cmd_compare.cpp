@@ -380,6 +380,19 @@ double technique_resource_mib(const fg::Plan& plan) {
   return bytes / (1024.0 * 1024.0);
 }
 
+// What passes keep of their own beside the graph's resources, as their frame reports
+// state it (a "privateMiB" detail: penumbra-wedges' second depth layer and wedge buffers).
+double private_resource_mib(const fgvk::FrameReport& report) {
+  double mib = 0.0;
+  for (const auto& m : report.messages()) {
+    if (m.details.is_object() && m.details.contains("privateMiB") &&
+        m.details["privateMiB"].is_number()) {
+      mib += m.details["privateMiB"].get<double>();
+    }
+  }
+  return mib;
+}
+
 // Per technique: its JSON result (JSON reports) and its signed error (error maps).
 struct TechniqueResults {
   nlohmann::json graphs = nlohmann::json::array();
@@ -528,7 +541,8 @@ std::optional<QualityFrames> render_quality_frames(const QualityOptions& options
     if (!hdr) return std::nullopt;
     frames.comparisons.push_back(compare_images(
         reference->hdr, *hdr, reference->mask ? &*reference->mask : nullptr, reference->regions));
-    frames.resource_mib.push_back(technique_resource_mib(session.executor().plan()));
+    frames.resource_mib.push_back(technique_resource_mib(session.executor().plan()) +
+                                  private_resource_mib(session.last_report()));
     frames.frames.push_back(std::move(*hdr));
   }
   frames.reference = std::move(reference->hdr);

@@ -17,10 +17,18 @@ namespace antumbra::app {
 namespace {
 
 // The shipped graphs that each draw the frame with one shadow technique.
-const std::vector<std::string> kTechniqueGraphs = {
-    "hard.json", "pcf.json",   "pcss.json",  "layered-ssss.json", "layered-ssss-min.json",
-    "vsm.json",  "evsm2.json", "evsm4.json", "msm.json",          "vssm.json",
-    "sdf.json"};
+const std::vector<std::string> kTechniqueGraphs = {"hard.json",
+                                                   "pcf.json",
+                                                   "pcss.json",
+                                                   "layered-ssss.json",
+                                                   "layered-ssss-min.json",
+                                                   "vsm.json",
+                                                   "evsm2.json",
+                                                   "evsm4.json",
+                                                   "msm.json",
+                                                   "vssm.json",
+                                                   "sdf.json",
+                                                   "penumbra-wedges.json"};
 
 // `crop` of `image`, each pixel twice as large, display-encoded (clamped, gamma 2.2).
 gpu::HostImage crop_image(const FloatImage& image, const CropRect& crop) {

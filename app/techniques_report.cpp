@@ -120,7 +120,8 @@ std::string techniques_markdown(const TechniquesReport& report) {
       "darker: luminance above / below the reference averaged over all pixels (1/1000): "
       "light let through (bleeding, leaks, peter-panning) and light taken away (acne, an "
       "overestimated umbra). Memory: the graph's own resources (atlas, maps, fields, "
-      "layers) at this size, without passes' scratch images.";
+      "layers) at this size, and what passes report keeping of their own (penumbra-wedges' "
+      "second depth layer and wedge buffers), without short-lived scratch images.";
   if (!report.gpu_device.empty()) {
     md +=
         " GPU: the frame's median at 1080p with 16 lights (`bench` table1, every shadow "

@@ -1,8 +1,8 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// Depth peeling (docs/technique.md 3, "Penumbra wedges with depth peeling"): the scene
-// into one face, as the atlas draws it; faces that hold no point or spot depth this frame
-// draw nothing (every vertex beyond the far plane).
+// Depth peeling (docs/technique.md 2): the scene into one face, as the atlas draws it;
+// faces that hold no point or spot depth this frame draw nothing (every vertex beyond the
+// far plane).
 #include "wedges_common.glsl"
 
 layout(location = 0) in vec3 in_position;

@@ -1,11 +1,18 @@
+#include <cstdio>
+
 #include "antumbra/base/diagnostic_codes.hpp"
 #include "antumbra/fg/graph_desc.hpp"
 #include "common/plan_checks.hpp"
 #include "common/ports.hpp"
+#include "penumbra_wedges_interface.h"
 #include "penumbra_wedges_pass.hpp"
 
 namespace antumbra::passes {
 namespace {
+
+// One storage buffer holds every light's silhouettes; 1 GiB is within what any device we
+// run on binds (maxStorageBufferRange) and far beyond what a frame's silhouettes need.
+constexpr double kMaxSilhouetteBytes = 1024.0 * 1024.0 * 1024.0;
 
 // The penumbra map is derived per atlas face (its size divides the atlas's); the third
 // depth layer exists exactly when peelingDepth asks for it, texel for texel with the map.
@@ -27,6 +34,21 @@ void check(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& 
                        "peelingDepth 3 peels (it is " +
                        std::to_string(params.peeling_depth) + "); unbind it or peel 3 layers",
                    "/out/peeled", diagnostics);
+  }
+  const auto* atlas = bound_resource(pass, plan, port::kAtlas);
+  if (atlas != nullptr) {
+    const double bytes = static_cast<double>(atlas->layers) * params.edges_per_face *
+                         static_cast<double>(sizeof(shared::Silhouette));
+    if (bytes > kMaxSilhouetteBytes) {
+      char text[240];
+      std::snprintf(text, sizeof text,
+                    "%u atlas layers x %u edges x %zu bytes need a %.0f MiB silhouette buffer, "
+                    "over the %.0f MiB one storage buffer may take here; lower edgesPerFace",
+                    atlas->layers, params.edges_per_face, sizeof(shared::Silhouette),
+                    bytes / (1024.0 * 1024.0), kMaxSilhouetteBytes / (1024.0 * 1024.0));
+      add_pass_error(graph, pass, codes::wedges::kSilhouettesTooLarge, text, "/params/edgesPerFace",
+                     diagnostics);
+    }
   }
   if (map != nullptr && peeled != nullptr &&
       (peeled->extent.width != map->extent.width || peeled->extent.height != map->extent.height ||
@@ -145,9 +167,10 @@ const fg::ParamTable<PenumbraWedgesParams>& PenumbraWedgesPass::param_table() {
                 .type = fg::ParamType::integer,
                 .default_value = 4096,
                 .min = 64.0,
-                .max = 1048576.0,
+                .max = 262144.0,
                 .description = "Silhouette edges a spot light may draw wedges for (a point "
-                               "light 6x); more are dropped with PW002. 64 bytes each."},
+                               "light 6x); more are dropped with PW002. 64 bytes each per "
+                               "atlas layer, at most 1 GiB in all (PW005)."},
                &PenumbraWedgesParams::edges_per_face);
   return kTable;
 }

@@ -450,16 +450,22 @@ void PenumbraWedgesPass::report(fgvk::ExecuteContext& context) const {
   const auto& penumbra = context.bindings.required_image(port::kPenumbraMap);
   const double texels =
       static_cast<double>(penumbra.extent.width) * penumbra.extent.height * penumbra.layers;
-  const double layer_bytes = 4.0 * (params_.peeling_depth >= 2 ? 1.0 : 0.0) +
-                             4.0 * (params_.peeling_depth >= 3 ? 1.0 : 0.0) + 2.0 +
-                             static_cast<double>(gpu::texel_size(penumbra.format));
-  const double mib = (texels * layer_bytes + static_cast<double>(silhouettes_buffer_.size()) +
-                      static_cast<double>(edges_.size()) + static_cast<double>(normals_.size())) /
-                     (1024.0 * 1024.0);
+  constexpr double kMiB = 1024.0 * 1024.0;
+  // The pass's own: the second layer (d32f), the wedges' depth (d16) and the buffers.
+  const double own =
+      (texels * (4.0 + 2.0) + static_cast<double>(silhouettes_buffer_.size()) +
+       static_cast<double>(edges_.size()) + static_cast<double>(normals_.size()) +
+       static_cast<double>(counts_.size()) + static_cast<double>(args_buffer_.size())) /
+      kMiB;
+  const double graph = texels *
+                       (static_cast<double>(gpu::texel_size(penumbra.format)) +
+                        (params_.peeling_depth >= 3 ? 4.0 : 0.0)) /
+                       kMiB;
   char text[240];
   std::snprintf(text, sizeof text,
-                "%u edges (%u open) over %u welded vertices, %u depth layers, %.1f MiB",
-                edge_count_, boundary_edges_, welded_vertices_, params_.peeling_depth, mib);
+                "%u edges (%u open) over %u welded vertices, %u depth layers; %.1f MiB of its own "
+                "and %.1f MiB in the graph's penumbraMap and peeled",
+                edge_count_, boundary_edges_, welded_vertices_, params_.peeling_depth, own, graph);
   context.report.replace({.pass = name_,
                           .code = codes::wedges::kSummary,
                           .severity = base::Severity::note,
@@ -468,7 +474,8 @@ void PenumbraWedgesPass::report(fgvk::ExecuteContext& context) const {
                                       {"openEdges", boundary_edges_},
                                       {"weldedVertices", welded_vertices_},
                                       {"peelingDepth", params_.peeling_depth},
-                                      {"memoryMiB", mib}}});
+                                      {"privateMiB", own},
+                                      {"graphMiB", graph}}});
   if (last_dropped_ > 0) context.report.replace(dropped_message(last_dropped_));
 }
 

@@ -1,7 +1,7 @@
 #pragma once
 // Pass type "penumbra-wedges": soft shadows from silhouette wedges with depth peeling
-// (docs/technique.md 3, "Penumbra wedges with depth peeling", after seed 001 of the
-// design notes). Per frame, for every point and spot face of the shadow atlas:
+// (docs/technique.md 2, after Sun, Lu, Liu and Wu). Per frame, for every point and spot
+// face of the shadow atlas:
 //  1. depth peeling: the second depth layer Z2 (the pass's own image) and, with
 //     peelingDepth 3, the third Z3 (`peeled`, for the lighting) behind the atlas's Z1;
 //  2. silhouette edges from each light (compute over the edge-adjacency list built at

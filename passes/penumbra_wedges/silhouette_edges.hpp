@@ -1,6 +1,6 @@
 #pragma once
-// The edge-adjacency list penumbra-wedges extracts silhouettes from (docs/technique.md 3,
-// "Penumbra wedges with depth peeling"): every edge of the merged world-space geometry
+// The edge-adjacency list penumbra-wedges extracts silhouettes from (docs/technique.md 2):
+// every edge of the merged world-space geometry
 // with the two triangles that share it, found once per load. Vertices are welded by
 // exact position, because meshes split them wherever normals or texture coordinates
 // differ (a box's corner is three vertices) and a silhouette is a property of the surface,

@@ -1,10 +1,11 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// Silhouette edges from each point and spot light (docs/technique.md 3, "Penumbra wedges
-// with depth peeling"): one invocation per (edge, layer), working only where the layer is
-// its light's first face. An edge between a triangle facing the light and one facing
-// away, or an edge of one triangle (an open mesh's border), is a silhouette; it is
-// appended to the light's segment with the directions its wedge corners move along.
+// Silhouette edges from each point and spot light (docs/technique.md 2): one invocation
+// per (edge, light), for point and spot lights with faces (any of which may be culled
+// this frame: the segment is the light's). An edge between a triangle facing the light
+// and one facing away, or an edge of one triangle (an open mesh's border), is a
+// silhouette; it is appended to the light's segment with the directions its wedge
+// corners move along.
 #include "wedges_common.glsl"
 
 layout(local_size_x = 64) in;

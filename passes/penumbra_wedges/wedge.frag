@@ -1,7 +1,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// The penumbra map (docs/technique.md 3, "Penumbra wedges with depth peeling"): wedge
-// fragments of silhouettes the light cannot see are rejected as the seed does. An outer
+// The penumbra map (docs/technique.md 2): wedge fragments of silhouettes the light
+// cannot see are rejected as the seed does. An outer
 // fragment must lie in front of Z1; an inner one behind the occluder's front, so in
 // front of Z2 and within `beta` of Z1. Of the fragments left at a texel, outer ones beat
 // inner ones and the farthest of a kind wins (the depth written orders them so, under a

@@ -1,11 +1,11 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// Penumbra wedges (docs/technique.md 3, "Penumbra wedges with depth peeling"): each
-// silhouette edge BC of the face's light becomes an outer quad B C C' B' (B' = B + r d_B)
-// and an inner quad C B B'' C'' (B'' = B - t d_B), r and t the light's radius times
-// `outer` and `inner`. theta runs 0 at the inner edge, 0.5 on the silhouette, 1 at the
-// outer edge (the seed's colour ramp). Without a second depth layer (peelingDepth 1) the
-// inner quads are not drawn: the single-layer method.
+// Penumbra wedges (docs/technique.md 2): each silhouette edge BC of the face's light
+// becomes an outer quad B C C' B' (B' = B + r d_B) and an inner quad C B B'' C'' (B'' = B
+// - t d_B), r and t the light's radius times `outer` and `inner`. theta runs 0 at the
+// inner edge, 0.5 on the silhouette, 1 at the outer edge (the seed's colour ramp). Without
+// a second depth layer (peelingDepth 1) the inner quads are not drawn: the single-layer
+// method.
 #include "wedges_common.glsl"
 
 layout(set = 0, binding = kWedgeSilhouettes, std430) readonly buffer Silhouettes {

@@ -24,6 +24,7 @@ void main() {
   uint first = uint(sl.params.z);
   uint found = counts[first];
   uint kept = min(found, wedge_segment_capacity(sl));
-  args[layer] = uvec4(kept * ANTUMBRA_WEDGE_VERTICES, 1u, first * capacity * ANTUMBRA_WEDGE_VERTICES, 0u);
+  args[layer] =
+      uvec4(kept * ANTUMBRA_WEDGE_VERTICES, 1u, first * capacity * ANTUMBRA_WEDGE_VERTICES, 0u);
   counts[layers + layer] = layer == first ? found - kept : 0u;
 }

@@ -1,8 +1,8 @@
 // Shared by penumbra-wedges' shaders: the shadow data, the push constants, and which
-// silhouette segment a face draws from (docs/technique.md 3, "Penumbra wedges with depth
-// peeling"). A point or spot light's silhouettes live in one segment of the silhouette
-// buffer, starting at its first face's layer times `capacity`; a point light's segment
-// spans its six layers' shares, a spot light's one.
+// silhouette segment a face draws from (docs/technique.md 2). A point or spot light's
+// silhouettes live in one segment of the silhouette buffer, starting at its first face's
+// layer times `capacity`; a point light's segment spans its six layers' shares, a spot
+// light's one.
 #ifndef ANTUMBRA_WEDGES_COMMON_GLSL
 #define ANTUMBRA_WEDGES_COMMON_GLSL
 

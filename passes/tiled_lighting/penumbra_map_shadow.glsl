@@ -1,8 +1,9 @@
 // Penumbra wedges with depth peeling, the shading rule (tiled-lighting's shadows =
-// penumbra-map; docs/technique.md 3, "Penumbra wedges with depth peeling"). The receiver
-// is classified from the atlas (Z1), penumbra-wedges' map and, with HAS_PEELED, the third
-// depth layer Z3, as in the seed's figure 7:
-//   seen by the light (the hard test passes): in an outer wedge the ramp, else lit;
+// penumbra-map; docs/technique.md 2). The receiver is classified from the atlas (Z1),
+// penumbra-wedges' map and, with HAS_PEELED, the third depth layer Z3, as in the seed's
+// figure 7:
+//   seen by the light (the hard test passes): in an outer wedge it lies behind, the
+//   ramp, else lit;
 //   hidden: no wedge, or an outer wedge (a hidden point is never in an outer penumbra):
 //   umbra; an inner wedge: its ramp when the receiver lies in front of Z3 (it is the
 //   surface right behind the occluder), umbra when another occluder lies between.
@@ -41,7 +42,10 @@ float penumbra_map_face(ShadowLight sl, int layer, vec3 p_world, vec3 n_world) {
   vec2 texel = textureLod(penumbra_map, at, 0.0).rg;
   float wedge = texel.g;
   if (lit > 0.5) {
-    return wedge > 0.0 ? wedge_transition(wedge_theta(texel.r, wedge, c.linear)) : 1.0;
+    // A wedge shades only what lies behind it: the occluder's own surface at its edge
+    // (the wedge starts there) stays lit, as it does under an area light.
+    bool behind = c.linear > wedge + max(0.02, 0.01 * c.linear);
+    return wedge > 0.0 && behind ? wedge_transition(wedge_theta(texel.r, wedge, c.linear)) : 1.0;
   }
   if (wedge >= 0.0) return 0.0;  // no wedge, or an outer one: umbra
 #if HAS_PEELED

@@ -169,14 +169,23 @@ void RenderSession::render(int frames, TraceWriter* trace, const BeforeFrame& be
     const double frame_start = clock.elapsed_ms();
     if (before_frame) before_frame(i);
     VkCommandBuffer cmd = frames_->begin_frame();
-    gpu_->collect_garbage();
-    observer_->gather_gpu();
-    timer_->begin_frame(cmd, frames_->slot());
-    // Dynamic objects with a motion are where the frame index puts them.
-    if (!scene_->dynamic_objects.empty()) scene::animate_objects(*scene_, frames_->frame_number());
-    const auto frame = gpu_scene_->update(cmd, frames_->slot(), *scene_, options_.viewport,
-                                          frames_->frame_number());
-    executor_->record(cmd, frame, observer_.get(), &report_);
+    try {
+      gpu_->collect_garbage();
+      observer_->gather_gpu();
+      timer_->begin_frame(cmd, frames_->slot());
+      // Dynamic objects with a motion are where the frame index puts them.
+      if (!scene_->dynamic_objects.empty()) {
+        scene::animate_objects(*scene_, frames_->frame_number());
+      }
+      const auto frame = gpu_scene_->update(cmd, frames_->slot(), *scene_, options_.viewport,
+                                            frames_->frame_number());
+      executor_->record(cmd, frame, observer_.get(), &report_);
+    } catch (...) {
+      // A pass that fails midway (out of device memory) leaves the session usable: the
+      // next frame begins afresh.
+      frames_->abandon_frame();
+      throw;
+    }
     frames_->end_frame();
     if (trace != nullptr) {
       trace->add({"frame " + std::to_string(i), "cpu", frame_start * 1000.0,

@@ -3,7 +3,9 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <span>
 #include <sstream>
+#include <string>
 
 #include "antumbra/fg/compiler.hpp"
 #include "antumbra/fg/pass_reference.hpp"
@@ -257,18 +259,47 @@ TEST(BuiltinGraphs, MomentGraphMistakesAreLocated) {
   }
 }
 
+namespace {
+
+// One mistake written into a shipped graph: the text replaced (every occurrence with
+// `every`: a resource's writer and reader), the diagnostic expected (empty: the first
+// one) and where it must point (a prefix of its JSON Pointer).
+struct Mistake {
+  std::string from;
+  std::string to;
+  std::string code;
+  std::string pointer;
+  bool every = false;
+};
+
+void expect_mistakes_located(const std::string& file, std::span<const Mistake> mistakes) {
+  const auto registry = passes::builtin_pass_registry();
+  const std::string original = read_file(kRoot / "data" / "graphs" / file);
+  for (const Mistake& c : mistakes) {
+    std::string text = original;
+    auto at = text.find(c.from);
+    ASSERT_NE(at, std::string::npos) << c.from;
+    while (at != std::string::npos) {
+      text.replace(at, c.from.size(), c.to);
+      at = c.every ? text.find(c.from, at + c.to.size()) : std::string::npos;
+    }
+    const auto result = fg::compile_text(text, file, registry.reflection());
+    ASSERT_FALSE(result.ok()) << c.to;
+    const base::Diagnostic* d =
+        c.code.empty() ? &result.diagnostics().items().front() : result.diagnostics().find(c.code);
+    ASSERT_NE(d, nullptr) << c.to << "\n" << result.diagnostics().to_text();
+    EXPECT_EQ(d->pointer.rfind(c.pointer, 0), 0u) << c.to << ": " << d->pointer;
+    EXPECT_GT(d->line, 0) << c.to;
+  }
+}
+
+}  // namespace
+
 // The distance field: a volume too small to trace, one over the memory budget (a 512^3
 // float field is 512 MiB), one that is not kept between frames, the lighting without
 // it, and a zero resolution are refused at their place in the file.
 TEST(BuiltinGraphs, SdfGraphMistakesAreLocated) {
-  const auto registry = passes::builtin_pass_registry();
-  struct Case {
-    std::string from;
-    std::string to;
-    std::string code;
-    std::string pointer;
-  };
-  const Case cases[] = {
+  const Mistake cases[] = {
       {"\"layers\": 128", "\"layers\": 4", "SD001", "/passes/1/out/sdf"},
       {"\"format\": \"r16f\", \"size\": [128, 64], \"layers\": 128",
        "\"format\": \"r32f\", \"size\": [512, 512], \"layers\": 512", "SD002", "/passes/1"},
@@ -279,18 +310,30 @@ TEST(BuiltinGraphs, SdfGraphMistakesAreLocated) {
       {"\"band\": 8", "\"band\": 0", "FG033", "/passes/1/params/band"},
       {"\"size\": [128, 64]", "\"size\": [0, 64]", "", "/resources/sdf/size"},
   };
-  const std::string original = read_file(kRoot / "data" / "graphs" / "sdf.json");
-  for (const Case& c : cases) {
-    std::string text = original;
-    const auto at = text.find(c.from);
-    ASSERT_NE(at, std::string::npos) << c.from;
-    text.replace(at, c.from.size(), c.to);
-    const auto result = fg::compile_text(text, "sdf.json", registry.reflection());
-    ASSERT_FALSE(result.ok()) << c.to;
-    const base::Diagnostic* d =
-        c.code.empty() ? &result.diagnostics().items().front() : result.diagnostics().find(c.code);
-    ASSERT_NE(d, nullptr) << c.to << "\n" << result.diagnostics().to_text();
-    EXPECT_EQ(d->pointer.rfind(c.pointer, 0), 0u) << c.to << ": " << d->pointer;
-    EXPECT_GT(d->line, 0) << c.to;
-  }
+  expect_mistakes_located("sdf.json", cases);
+}
+
+// Penumbra wedges: a peeling depth of 0 (or 4), the third layer missing for peelingDepth 3
+// or bound without it, a third layer of another size, a penumbra map that does not divide
+// the atlas, and the lighting without the map are refused at their place in the file.
+TEST(BuiltinGraphs, PenumbraWedgeGraphMistakesAreLocated) {
+  const Mistake cases[] = {
+      {"\"peelingDepth\": 3", "\"peelingDepth\": 0", "FG033", "/passes/2/params/peelingDepth"},
+      {"\"peelingDepth\": 3", "\"peelingDepth\": 4", "FG033", "/passes/2/params/peelingDepth"},
+      {"\"outerWidth\": 1.0", "\"outerWidth\": -1", "FG033", "/passes/2/params/outerWidth"},
+      {", \"peeled\": \"peeled\" }", " }", "PW003", "/passes/2/params/peelingDepth", true},
+      {"\"peelingDepth\": 3", "\"peelingDepth\": 2", "PW003", "/passes/2/out/peeled"},
+      {"\"format\": \"d32f\", \"size\": [512, 512], \"layers\": 96 }",
+       "\"format\": \"d32f\", \"size\": [256, 256], \"layers\": 96 }", "PW004",
+       "/passes/2/out/peeled"},
+      {"\"format\": \"rg16f\", \"size\": [512, 512]", "\"format\": \"rg16f\", \"size\": [300, 300]",
+       "FG092", "/passes/2/out/penumbraMap"},
+      {"\"penumbraMap\": \"penumbraMap\", \"peeled\": \"peeled\" },\n      \"out\": { \"hdr\"",
+       "\"peeled\": \"peeled\" },\n      \"out\": { \"hdr\"", "TL009", "/passes/3/params/shadows"},
+      {"\"wedgeWidth\": \"receiver\"", "\"wedgeWidth\": \"wide\"", "FG034",
+       "/passes/3/params/wedgeWidth"},
+      {"\"beta\": 0.5", "\"beta\": 0.5, \"edgesPerFace\": 262144", "PW005",
+       "/passes/2/params/edgesPerFace"},
+  };
+  expect_mistakes_located("penumbra-wedges.json", cases);
 }

@@ -48,7 +48,8 @@ TEST(PortNames, EveryBuiltinPortIsAConstant) {
       std::string(port::kHardShadow),   std::string(port::kEsm),
       std::string(port::kTranslucency), std::string(port::kSource),
       std::string(port::kShadow),       std::string(port::kSdf),
-      std::string(port::kSdfInfo)};
+      std::string(port::kSdfInfo),      std::string(port::kPenumbraMap),
+      std::string(port::kPeeled)};
   const auto registry = builtin_pass_registry();
   int ports = 0;
   for (const auto& [type, desc] : registry.reflection().passes()) {

@@ -39,7 +39,9 @@ float analytic_width(float slab) {
 // `lower` > 0 adds a second slab at that height under the first, reaching 0.3 m past its
 // edge: the floor under both edges lies in the upper slab's inner penumbra yet in the
 // lower slab's umbra.
-std::string scene_text(float slab, float lower = 0.0f) {
+// `spot`: the light is a spot pointing straight down (a 60-degree cone), one face
+// instead of six.
+std::string scene_text(float slab, float lower = 0.0f, bool spot = false) {
   char second[200] = "";
   if (lower > 0.0f) {
     std::snprintf(second, sizeof second,
@@ -48,8 +50,9 @@ std::string scene_text(float slab, float lower = 0.0f) {
                   lower);
   }
   char text[1800];
-  std::snprintf(text, sizeof text,
-                R"({"version": 1, "name": "penumbra-width",
+  std::snprintf(
+      text, sizeof text,
+      R"({"version": 1, "name": "penumbra-width",
   "camera": {"position": [3.5, 5.0, 0.4], "target": [0, 0, 0], "fovY": 50, "near": 0.1, "far": 40},
   "ambient": [0, 0, 0],
   "materials": {"grey": {"albedo": [0.6, 0.6, 0.6], "roughness": 1.0}},
@@ -58,8 +61,9 @@ std::string scene_text(float slab, float lower = 0.0f) {
     {"name": "slab", "primitive": "box", "size": [4, 0.2, 6], "position": [-2, %.3f, 0], "material": "grey"}%s
   ],
   "lights": [{"name": "lamp", "position": [0, %.3f, 0], "color": [1, 1, 1], "intensity": 20,
-              "range": 12, "size": %.3f}]})",
-                slab, second, kLightHeight, kLightRadius);
+              "range": 12, "size": %.3f%s}]})",
+      slab, second, kLightHeight, kLightRadius,
+      spot ? R"(, "type": "spot", "direction": [0, -1, 0], "angle": 60, "innerAngle": 55)" : "");
   return text;
 }
 
@@ -296,7 +300,7 @@ TEST_F(PenumbraWidthTest, FixedFiltersDoNotFollowTheGeometry) {
   }
 }
 
-// Penumbra wedges (docs/technique.md 3, "Penumbra wedges with depth peeling"): inner
+// Penumbra wedges (docs/technique.md 2): inner
 // wedges move the umbra's edge inside the hard shadow, where the area light puts it.
 // Drawing only outer wedges (peelingDepth 1: the single-layer methods the seed improves
 // on) lets the umbra reach the hard edge, W / 2 = 0.25 m too far.
@@ -320,6 +324,26 @@ TEST_F(PenumbraWidthTest, WedgesDoNotOverestimateTheUmbra) {
   EXPECT_GT(umbra_end(*single) - expected, 0.15f);
   EXPECT_LT(mean_difference(*wedges, *reference), 0.04f);
   EXPECT_GT(mean_difference(*single, *reference), 1.5f * mean_difference(*wedges, *reference));
+}
+
+// The same under a spot light: its one face carries the silhouettes and the wedges.
+TEST_F(PenumbraWidthTest, WedgesFollowSimilarTrianglesUnderASpotLight) {
+  const std::string scene = scene_text(kHigh, 0.0f, true);
+  const auto reference = visibility("reference.json", scene);
+  const auto wedges = visibility("penumbra-wedges.json", scene);
+  ASSERT_TRUE(reference && wedges);
+  // The spot's face spans 2 tan(60 degrees) across: texels 1.7x the cube faces'.
+  const float texel = 2.0f * std::tan(glm::radians(60.0f)) * kLightHeight / kFace;
+  const float expected = 0.8f * analytic_width(kHigh);
+  std::printf(
+      "spot light: 10-90 width %.3f m (reference %.3f, 0.8 W = %.3f); umbra ends at "
+      "%.3f (reference %.3f)\n",
+      static_cast<double>(rise_width(*wedges)), static_cast<double>(rise_width(*reference)),
+      static_cast<double>(expected), static_cast<double>(umbra_end(*wedges)),
+      static_cast<double>(umbra_end(*reference)));
+  EXPECT_NEAR(rise_width(*wedges), expected, 0.3f * expected + 2.0f * texel);
+  EXPECT_NEAR(umbra_end(*wedges), umbra_end(*reference), 0.05f + texel);
+  EXPECT_LT(mean_difference(*wedges, *reference), 0.04f);
 }
 
 // Case 6 of the seed's figure 7: the floor under both slabs' edges lies in the upper

@@ -64,4 +64,12 @@ std::uint64_t FrameLoop::end_frame(const SubmitExtras& extras) {
   return slot.timeline_value;
 }
 
+void FrameLoop::abandon_frame() {
+  if (!recording_) return;
+  recording_ = false;
+  // Ended so the pool reset finds it executable or invalid, never recording; the result
+  // does not matter, as the buffer is never submitted.
+  static_cast<void>(vkEndCommandBuffer(slots_[slot_].cmd));
+}
+
 }  // namespace antumbra::gpu

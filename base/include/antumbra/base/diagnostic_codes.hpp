@@ -224,6 +224,7 @@ inline constexpr const char* kSummary = "PW001";       // note: edges, depth lay
 inline constexpr const char* kEdgesDropped = "PW002";  // warning: silhouettes over edgesPerFace
 inline constexpr const char* kPeeled = "PW003";        // `peeled` bound iff peelingDepth is 3
 inline constexpr const char* kPeeledShape = "PW004";   // `peeled` differs from the penumbra map
+inline constexpr const char* kSilhouettesTooLarge = "PW005";  // silhouette buffer over 1 GiB
 }  // namespace wedges
 
 // antumbra quality.

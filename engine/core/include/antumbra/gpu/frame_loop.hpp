@@ -28,6 +28,9 @@ class FrameLoop {
   // Ends recording and submits; extra semaphores (swapchain acquire/present) optional.
   // Returns the timeline value this frame signals.
   std::uint64_t end_frame(const SubmitExtras& extras = {});
+  // Drops the frame being recorded without submitting it (recording threw midway): the
+  // slot's pool is reset when it is next begun. No-op when no frame is open.
+  void abandon_frame();
 
   [[nodiscard]] std::uint32_t frames_in_flight() const {
     return static_cast<std::uint32_t>(slots_.size());
