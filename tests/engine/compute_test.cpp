@@ -1,4 +1,5 @@
 #include <fstream>
+#include <stdexcept>
 
 #include <gtest/gtest.h>
 
@@ -112,6 +113,28 @@ TEST_F(ComputeTest, WritesAnImageThatReadsBackAsPng) {
   ASSERT_TRUE(write_png(png, pixels));
   EXPECT_GT(std::filesystem::file_size(png), 100u);
   ASSERT_TRUE(write_pfm(dir_.path() / "fill.pfm", pixels));
+}
+
+// A frame whose recording throws midway is abandoned: the loop refuses a new frame while
+// one is open, and after abandon_frame() the next frame records and submits as usual
+// (RenderSession::render relies on it after a pass fails, e.g. out of device memory).
+TEST_F(ComputeTest, AbandonedFrameLeavesTheLoopUsable) {
+  FrameLoop frames(ctx(), 2);
+  VkCommandBuffer cmd = frames.begin_frame();
+  record_fill(cmd, 0.25f);
+  EXPECT_THROW(frames.begin_frame(), std::logic_error);
+  frames.abandon_frame();
+  EXPECT_FALSE(frames.recording());
+  EXPECT_EQ(frames.frame_number(), 0u);
+  for (int i = 0; i < 3; ++i) {
+    cmd = frames.begin_frame();
+    record_fill(cmd, 0.5f);
+    frames.end_frame();
+  }
+  frames.wait_all();
+  EXPECT_EQ(frames.frame_number(), 3u);
+  const HostImage pixels = read_image(ctx(), image_, VK_IMAGE_LAYOUT_GENERAL);
+  EXPECT_NEAR(pixels.at(3, 3, 2), 0.5f, 1.0f / 255);
 }
 
 TEST_F(ComputeTest, FrameLoopWithTimestamps) {
