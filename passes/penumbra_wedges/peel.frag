@@ -27,8 +27,10 @@ void main() {
   // Depth change across one texel: the texel's width at this distance times the tangent
   // of the surface's tilt, from the geometry rather than fwidth (undefined beside a
   // triangle's edge, which is where silhouettes are).
-  float texel = 2.0 * d * sl.projection.x / max(extent.x * max(sl.projection.z, 1e-6), 1.0);
+  float share = sl.projection.z > 0.0 ? sl.projection.z : 1.0;  // 0: the whole layer
+  float texel = 2.0 * d * sl.projection.x / max(extent.x * share, 1.0);
   float slope = texel * min(sqrt(max(1.0 - facing * facing, 0.0)) / facing, 8.0);
   float front = textureLod(previous, vec3(gl_FragCoord.xy / extent, float(layer)), 0.0).r;
-  if (front < 1.0 && d <= wedge_linearise(sl, front) + gap + 2.0 * slope) discard;
+  // Nothing in front (the layer before found no surface here): nothing behind it either.
+  if (front >= 1.0 || d <= wedge_linearise(sl, front) + gap + 2.0 * slope) discard;
 }

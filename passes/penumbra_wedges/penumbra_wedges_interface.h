@@ -10,7 +10,8 @@
 // WedgeEdge.vertices.w of an edge with one triangle.
 #define ANTUMBRA_NO_TRIANGLE 0xffffffffu
 // WedgeEdge.welded.z: the second triangle runs along the edge in the first one's
-// direction (the mesh's winding flips there), so its normal is negated.
+// direction (the mesh's winding flips there). Informational: silhouettes.comp orients the
+// second triangle by the first whatever its winding, so a flat surface stays flat.
 #define ANTUMBRA_EDGE_FLIPPED 1u
 // Vertices per silhouette edge: an outer and an inner quad, two triangles each.
 #define ANTUMBRA_WEDGE_VERTICES 12u

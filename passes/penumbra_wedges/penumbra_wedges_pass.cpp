@@ -99,6 +99,22 @@ void PenumbraWedgesPass::prepare(fgvk::PrepareContext& context) {
   name_ = context.pass.name;
   const auto& b = context.bindings;
   const auto& penumbra = b.required_image(port::kPenumbraMap);
+  // The compiler caps the buffer at 1 GiB (PW005); a device may bind less.
+  const std::uint32_t layers = std::min(b.required_image(port::kAtlas).layers, penumbra.layers);
+  const VkDeviceSize silhouette_bytes =
+      VkDeviceSize{layers} * params_.edges_per_face * sizeof(Silhouette);
+  if (silhouette_bytes > context.gpu.limits().maxStorageBufferRange) {
+    base::Diagnostics diagnostics;
+    diagnostics.add({.code = codes::wedges::kSilhouettesTooLarge,
+                     .severity = base::Severity::error,
+                     .message = "pass '" + name_ + "': " + std::to_string(layers) +
+                                " layers x edgesPerFace " + std::to_string(params_.edges_per_face) +
+                                " x 64 bytes exceed " + context.gpu.device_name() +
+                                "'s largest storage buffer (" +
+                                std::to_string(context.gpu.limits().maxStorageBufferRange) +
+                                " bytes); lower edgesPerFace"});
+    throw fgvk::PassError("penumbra-wedges: silhouette buffer too large", diagnostics);
+  }
   shader_files_.clear();
   const gpu::DescriptorSetLayoutBuilder bindings = wedge_bindings();
   auto silhouettes = load_shader(context, "penumbra_wedges/silhouettes.comp", shader_files_);
@@ -172,6 +188,8 @@ void PenumbraWedgesPass::execute(fgvk::ExecuteContext& context) {
     slot.dropped = gpu::Buffer::create(context.gpu, dropped_bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                                        gpu::MemoryUsage::readback,
                                        name_ + ".dropped." + std::to_string(context.frame.slot));
+    // Read before any frame wrote it when a frame is abandoned midway: zero, not garbage.
+    if (slot.dropped.mapped() != nullptr) std::memset(slot.dropped.mapped(), 0, dropped_bytes);
   }
   last_slot_ = context.frame.slot;
   report(context);
@@ -199,7 +217,6 @@ void PenumbraWedgesPass::execute(fgvk::ExecuteContext& context) {
     readable.dst_access = VK_ACCESS_2_SHADER_SAMPLED_READ_BIT;
     readable.range = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, VK_REMAINING_ARRAY_LAYERS};
     gpu::image_barrier(cmd, readable);
-    second_written_ = true;
   }
   if (params_.peeling_depth >= 3) {
     const auto& peeled = b.required_image(port::kPeeled);
@@ -211,29 +228,34 @@ void PenumbraWedgesPass::execute(fgvk::ExecuteContext& context) {
   draw_wedges(context, layers);
 }
 
+// Everything is built into locals and kept only once all of it exists: a failure (out of
+// memory) leaves the previous state whole, and the next frame tries again.
 void PenumbraWedgesPass::update_edges(fgvk::ExecuteContext& context) {
   const auto& frame = context.frame;
   if (frame.geometry_version == edges_version_ && edges_.handle() != VK_NULL_HANDLE) return;
-  edges_version_ = frame.geometry_version;
   EdgeList list;
   if (frame.scene != nullptr) {
     const MergedGeometry geometry = merge_scene_geometry(*frame.scene);
     list = build_edge_list(geometry.vertices, geometry.indices);
   }
-  edge_count_ = static_cast<std::uint32_t>(list.edges.size());
-  welded_vertices_ = list.welded_vertices;
-  boundary_edges_ = list.boundary + list.nonmanifold;
+  const auto count = static_cast<std::uint32_t>(list.edges.size());
   // Empty scenes keep one entry so the descriptors stay valid; edge_count says 0.
   if (list.edges.empty()) list.edges.push_back({});
   if (list.normals.empty()) list.normals.emplace_back(0.0f);
-  edges_ = gpu::Buffer::create(context.gpu, list.edges.size() * sizeof(WedgeEdge),
-                               VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, gpu::MemoryUsage::gpu_only,
-                               name_ + ".edges");
-  edges_.upload(context.gpu, list.edges.data(), list.edges.size() * sizeof(WedgeEdge));
-  normals_ = gpu::Buffer::create(context.gpu, list.normals.size() * sizeof(glm::vec4),
-                                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, gpu::MemoryUsage::gpu_only,
-                                 name_ + ".normals");
-  normals_.upload(context.gpu, list.normals.data(), list.normals.size() * sizeof(glm::vec4));
+  gpu::Buffer edges = gpu::Buffer::create(context.gpu, list.edges.size() * sizeof(WedgeEdge),
+                                          VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                          gpu::MemoryUsage::gpu_only, name_ + ".edges");
+  edges.upload(context.gpu, list.edges.data(), list.edges.size() * sizeof(WedgeEdge));
+  gpu::Buffer normals = gpu::Buffer::create(context.gpu, list.normals.size() * sizeof(glm::vec4),
+                                            VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                            gpu::MemoryUsage::gpu_only, name_ + ".normals");
+  normals.upload(context.gpu, list.normals.data(), list.normals.size() * sizeof(glm::vec4));
+  edges_ = std::move(edges);
+  normals_ = std::move(normals);
+  edge_count_ = count;
+  welded_vertices_ = list.welded_vertices;
+  boundary_edges_ = list.boundary + list.nonmanifold;
+  edges_version_ = frame.geometry_version;
 }
 
 void PenumbraWedgesPass::ensure_images(fgvk::ExecuteContext& context, VkExtent2D extent,
@@ -241,22 +263,30 @@ void PenumbraWedgesPass::ensure_images(fgvk::ExecuteContext& context, VkExtent2D
   auto& gpu = context.gpu;
   const VkDeviceSize silhouette_bytes =
       VkDeviceSize{layers} * params_.edges_per_face * sizeof(Silhouette);
-  if (silhouettes_buffer_.handle() == VK_NULL_HANDLE ||
-      silhouettes_buffer_.size() < silhouette_bytes) {
-    silhouettes_buffer_ =
+  const VkDeviceSize counts_bytes = VkDeviceSize{2} * layers * sizeof(std::uint32_t);
+  const VkDeviceSize args_bytes = VkDeviceSize{layers} * sizeof(VkDrawIndirectCommand);
+  const auto too_small = [](const gpu::Buffer& buffer, VkDeviceSize bytes) {
+    return buffer.handle() == VK_NULL_HANDLE || buffer.size() < bytes;
+  };
+  if (too_small(silhouettes_buffer_, silhouette_bytes) || too_small(counts_, counts_bytes) ||
+      too_small(args_buffer_, args_bytes)) {
+    gpu::Buffer silhouettes =
         gpu::Buffer::create(gpu, silhouette_bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                             gpu::MemoryUsage::gpu_only, name_ + ".silhouettes");
-    counts_ =
-        gpu::Buffer::create(gpu, VkDeviceSize{2} * layers * sizeof(std::uint32_t),
+    gpu::Buffer counts =
+        gpu::Buffer::create(gpu, counts_bytes,
                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
                                 VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                             gpu::MemoryUsage::gpu_only, name_ + ".counts");
-    args_buffer_ = gpu::Buffer::create(
-        gpu, VkDeviceSize{layers} * sizeof(VkDrawIndirectCommand),
-        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,
+    gpu::Buffer args = gpu::Buffer::create(
+        gpu, args_bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,
         gpu::MemoryUsage::gpu_only, name_ + ".args");
+    silhouettes_buffer_ = std::move(silhouettes);
+    counts_ = std::move(counts);
+    args_buffer_ = std::move(args);
   }
-  const bool same = second_ && second_.extent().width == extent.width &&
+  const bool same = second_ && wedge_depth_views_.size() == layers &&
+                    second_.extent().width == extent.width &&
                     second_.extent().height == extent.height && second_.layers() == layers;
   if (!same) {
     gpu::ImageDesc desc;
@@ -265,37 +295,45 @@ void PenumbraWedgesPass::ensure_images(fgvk::ExecuteContext& context, VkExtent2D
     desc.format = kSecondFormat;
     desc.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
     desc.name = name_ + ".second";
-    second_ = gpu::Image::create(gpu, desc);
-    second_views_ = layer_views(gpu, second_.handle(), kSecondFormat, layers, desc.name);
+    gpu::Image second = gpu::Image::create(gpu, desc);
+    auto second_views = layer_views(gpu, second.handle(), kSecondFormat, layers, desc.name);
     desc.format = kWedgeDepthFormat;
     desc.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT;
     desc.name = name_ + ".wedgeDepth";
-    wedge_depth_ = gpu::Image::create(gpu, desc);
-    wedge_depth_views_ =
-        layer_views(gpu, wedge_depth_.handle(), kWedgeDepthFormat, layers, desc.name);
-    second_written_ = false;
+    gpu::Image wedge_depth = gpu::Image::create(gpu, desc);
+    auto wedge_views = layer_views(gpu, wedge_depth.handle(), kWedgeDepthFormat, layers, desc.name);
+    second_views_ = std::move(second_views);
+    wedge_depth_views_ = std::move(wedge_views);
+    second_ = std::move(second);
+    wedge_depth_ = std::move(wedge_depth);
   }
   const auto& penumbra = context.bindings.required_image(port::kPenumbraMap);
   if (views_for_ != penumbra.image) {
-    views_for_ = penumbra.image;
-    penumbra_views_ =
+    auto penumbra_views =
         layer_views(gpu, penumbra.image, penumbra.format, layers, name_ + ".penumbra");
-    peeled_views_.clear();
+    std::vector<gpu::ImageView> peeled_views;
     if (const auto* peeled = context.bindings.image(port::kPeeled)) {
-      peeled_views_ = layer_views(gpu, peeled->image, peeled->format, layers, name_ + ".peeled");
+      peeled_views = layer_views(gpu, peeled->image, peeled->format, layers, name_ + ".peeled");
     }
+    penumbra_views_ = std::move(penumbra_views);
+    peeled_views_ = std::move(peeled_views);
+    views_for_ = penumbra.image;
   }
 }
 
 void PenumbraWedgesPass::extract(fgvk::ExecuteContext& context, std::uint32_t layers) {
   const VkCommandBuffer cmd = context.cmd;
   const auto& atlas = context.bindings.required_image(port::kAtlas);
-  // The previous frame's reads of the counts (args, copy) and silhouettes come first.
-  gpu::memory_barrier(
-      cmd, kCompute | VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT | VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT,
-      VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_TRANSFER_READ_BIT,
-      VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT | kCompute,
-      VK_ACCESS_2_TRANSFER_WRITE_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+  // The previous frame's reads come first: the counts (args, copy), the arguments
+  // (indirect draws) and the silhouettes (vertex shader).
+  gpu::memory_barrier(cmd,
+                      kCompute | VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT |
+                          VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT |
+                          VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT,
+                      VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_TRANSFER_READ_BIT |
+                          VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT,
+                      VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT | kCompute,
+                      VK_ACCESS_2_TRANSFER_WRITE_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
   vkCmdFillBuffer(cmd, counts_.handle(), 0, VK_WHOLE_SIZE, 0);
   gpu::buffer_barrier(cmd, counts_.handle(), VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
                       VK_ACCESS_2_TRANSFER_WRITE_BIT, kCompute,

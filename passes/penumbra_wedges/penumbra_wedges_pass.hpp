@@ -93,7 +93,6 @@ class PenumbraWedgesPass final : public fgvk::Pass {
   // The second depth layer and the wedges' depth: the pass's own images.
   gpu::Image second_;
   gpu::Image wedge_depth_;
-  bool second_written_ = false;
   std::vector<gpu::ImageView> second_views_;
   std::vector<gpu::ImageView> wedge_depth_views_;
   // Single-layer views of the graph's images, for renderings.

@@ -40,7 +40,8 @@ void main() {
   uint light = gl_WorkGroupID.y;
   if (e >= edge_count || light >= ANTUMBRA_MAX_SHADOW_LIGHTS) return;
   ShadowLight sl = shadow_lights[light];
-  if (!wedge_light_supported(sl) || uint(sl.params.z) >= layers) return;
+  uint faces = sl.direction_type.w < 0.5 ? 6u : 1u;
+  if (!wedge_light_supported(sl) || uint(sl.params.z) + faces > layers) return;
   uint layer = uint(sl.params.z);  // its segment
   vec3 source = sl.position_range.xyz;
   WedgeEdge edge = edges[e];
@@ -57,9 +58,9 @@ void main() {
   if (edge.vertices.w != ANTUMBRA_NO_TRIANGLE) {
     vec3 pb = vertex_position(edge.vertices.w);
     bool front_a = dot(cross(p1 - p0, pa - p0), source - p0) > 0.0;
-    // The second triangle runs along the edge the other way (unless flagged).
-    float flip = (edge.welded.z & ANTUMBRA_EDGE_FLIPPED) != 0u ? -1.0 : 1.0;
-    bool front_b = flip * dot(cross(p0 - p1, pb - p1), source - p1) > 0.0;
+    // The second triangle oriented as the first (along the edge the other way), whatever
+    // its own winding: where a mesh's winding flips, a flat surface stays flat.
+    bool front_b = dot(cross(p0 - p1, pb - p1), source - p1) > 0.0;
     if (front_a == front_b) return;
     if (front_b) inside = pb;
   }
@@ -72,7 +73,10 @@ void main() {
   vec3 db = corner_direction(normals[edge.welded.x].xyz, along, across);
   vec3 dc = corner_direction(normals[edge.welded.y].xyz, along, across);
   uint slot = atomicAdd(counts[layer], 1u);
-  if (slot >= wedge_segment_capacity(sl)) return;  // counted: reported as dropped
+  if (slot >= wedge_segment_capacity(sl)) {
+    atomicAdd(counts[layers + layer], 1u);  // dropped: reported as PW002
+    return;
+  }
   silhouettes[layer * capacity + slot] =
       Silhouette(vec4(p0, 0.0), vec4(p1, 0.0), vec4(db, 0.0), vec4(dc, 0.0));
 }

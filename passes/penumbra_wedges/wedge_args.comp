@@ -1,9 +1,9 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 // One indirect draw per atlas layer: the wedges of its light's silhouette segment (12
-// vertices per edge), none where the layer holds no point or spot face this frame. Also
-// the dropped edges per layer (over the segment's capacity) at counts[layers + layer],
-// read back for the frame report.
+// vertices per edge), none where the layer holds no point or spot face this frame (the
+// silhouettes shader counts the edges over a segment's capacity at counts[layers + first
+// layer], read back for the frame report).
 #include "wedges_common.glsl"
 
 layout(local_size_x = 64) in;
@@ -17,14 +17,17 @@ void main() {
   int light = wedge_face_light(layer);
   if (light < 0) {
     args[layer] = uvec4(0u, 1u, 0u, 0u);
-    counts[layers + layer] = 0u;
     return;
   }
   ShadowLight sl = shadow_lights[light];
   uint first = uint(sl.params.z);
+  uint faces = sl.direction_type.w < 0.5 ? 6u : 1u;
+  if (first + faces > layers) {
+    args[layer] = uvec4(0u, 1u, 0u, 0u);  // the light's segment would leave the buffer
+    return;
+  }
   uint found = counts[first];
   uint kept = min(found, wedge_segment_capacity(sl));
   args[layer] =
       uvec4(kept * ANTUMBRA_WEDGE_VERTICES, 1u, first * capacity * ANTUMBRA_WEDGE_VERTICES, 0u);
-  counts[layers + layer] = layer == first ? found - kept : 0u;
 }
