@@ -82,6 +82,8 @@ class PenumbraWidthTest : public RenderTest {
   };
 
   using Edit = std::function<void(fg::GraphDesc&)>;
+  // Applied to every scene the test renders (after parsing).
+  std::function<void(scene::Scene&)> scene_edit_;
 
   std::optional<Frame> render(const std::string& graph_file, const std::string& scene_json,
                               const Edit& edit = {}) {
@@ -103,6 +105,7 @@ class PenumbraWidthTest : public RenderTest {
     auto scene = scene::parse_scene_text(scene_json, "penumbra-width.json");
     EXPECT_TRUE(scene.ok()) << describe(scene.diagnostics());
     if (!scene.ok()) return std::nullopt;
+    if (scene_edit_) scene_edit_(scene.value());
     session->set_scene(std::move(scene.value()));
     session->render(2, nullptr);
     expect_no_validation_errors(*session);
@@ -324,6 +327,48 @@ TEST_F(PenumbraWidthTest, WedgesDoNotOverestimateTheUmbra) {
   EXPECT_GT(umbra_end(*single) - expected, 0.15f);
   EXPECT_LT(mean_difference(*wedges, *reference), 0.04f);
   EXPECT_GT(mean_difference(*single, *reference), 1.5f * mean_difference(*wedges, *reference));
+}
+
+// A mesh whose winding flips between neighbouring triangles (exporters write such
+// meshes): every other triangle of the slab's top is wound backwards. The edge between
+// them is no silhouette (the surface is flat): no wedge may light the umbra under the
+// slab, and the profile matches the straight mesh's.
+TEST_F(PenumbraWidthTest, FlippedWindingMakesNoSilhouettes) {
+  // A narrower slab (x from -0.8 to 0): the diagonal of its top, where the flipped and
+  // the straight triangles meet, then projects across the measured line (x = -0.84).
+  std::string scene = scene_text(kHigh);
+  const std::string wide = R"("size": [4, 0.2, 6], "position": [-2, 2.000, 0])";
+  const auto at = scene.find(wide);
+  ASSERT_NE(at, std::string::npos);
+  scene.replace(at, wide.size(), R"("size": [0.8, 0.2, 6], "position": [-0.4, 2.000, 0])");
+  const auto straight = visibility("penumbra-wedges.json", scene);
+  int flipped = 0;
+  scene_edit_ = [&flipped](scene::Scene& s) {
+    for (auto& mesh : s.meshes) {
+      if (mesh.name != "slab") continue;
+      bool flip = false;
+      for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+        if (mesh.vertices[mesh.indices[t]].normal.y < 0.9f) continue;  // the top only
+        if (flip) {
+          std::swap(mesh.indices[t + 1], mesh.indices[t + 2]);
+          ++flipped;
+        }
+        flip = !flip;
+      }
+    }
+  };
+  const auto mixed = visibility("penumbra-wedges.json", scene);
+  scene_edit_ = nullptr;
+  ASSERT_TRUE(straight && mixed);
+  ASSERT_GT(flipped, 0);
+  std::printf(
+      "flipped %d top triangles: brightest under the slab %.3f (straight %.3f), "
+      "10-90 width %.3f (straight %.3f)\n",
+      flipped, static_cast<double>(brightest(*mixed, -1.2f, -0.3f)),
+      static_cast<double>(brightest(*straight, -1.2f, -0.3f)),
+      static_cast<double>(rise_width(*mixed)), static_cast<double>(rise_width(*straight)));
+  EXPECT_LT(brightest(*mixed, -1.2f, -0.3f), 0.02f);
+  EXPECT_LT(mean_difference(*mixed, *straight), 0.01f);
 }
 
 // The same under a spot light: its one face carries the silhouettes and the wedges.
