@@ -228,6 +228,24 @@ void PenumbraWedgesPass::execute(fgvk::ExecuteContext& context) {
   draw_wedges(context, layers);
 }
 
+// One block for every dispatch and draw; `layer` and `extent` are the rendering's.
+void PenumbraWedgesPass::push_constants(VkCommandBuffer cmd, std::uint32_t layers,
+                                        std::uint32_t layer, VkExtent2D extent) const {
+  const PenumbraWedgesPush push{
+      .edge_count = edge_count_,
+      .capacity = params_.edges_per_face,
+      .layers = layers,
+      .layer = layer,
+      .outer = params_.outer,
+      .inner = params_.inner,
+      .beta = params_.beta,
+      .gap = params_.gap,
+      .peeling_depth = params_.peeling_depth,
+      .pad0 = 0,
+      .extent = {static_cast<float>(extent.width), static_cast<float>(extent.height)}};
+  vkCmdPushConstants(cmd, layout_, kStages, 0, sizeof push, &push);
+}
+
 // Everything is built into locals and kept only once all of it exists: a failure (out of
 // memory) leaves the previous state whole, and the next frame tries again.
 void PenumbraWedgesPass::update_edges(fgvk::ExecuteContext& context) {
@@ -338,17 +356,6 @@ void PenumbraWedgesPass::extract(fgvk::ExecuteContext& context, std::uint32_t la
   gpu::buffer_barrier(cmd, counts_.handle(), VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
                       VK_ACCESS_2_TRANSFER_WRITE_BIT, kCompute,
                       VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
-  const PenumbraWedgesPush push{.edge_count = edge_count_,
-                                .capacity = params_.edges_per_face,
-                                .layers = layers,
-                                .layer = 0,
-                                .outer = params_.outer,
-                                .inner = params_.inner,
-                                .beta = params_.beta,
-                                .gap = params_.gap,
-                                .peeling_depth = params_.peeling_depth,
-                                .pad0 = 0,
-                                .extent = {1.0f, 1.0f}};
   const VkBuffer vertices =
       context.frame.vertices != VK_NULL_HANDLE ? context.frame.vertices : edges_.handle();
   gpu::PushDescriptors descriptors;
@@ -366,7 +373,7 @@ void PenumbraWedgesPass::extract(fgvk::ExecuteContext& context, std::uint32_t la
                               context.samplers.nearest_clamp, atlas.layout);
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, silhouettes_);
   descriptors.push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
-  vkCmdPushConstants(cmd, layout_, kStages, 0, sizeof push, &push);
+  push_constants(cmd, layers, 0, {1, 1});
   // One row of workgroups per scene light (the shadow data's light index).
   const std::uint32_t lights =
       context.frame.scene != nullptr
@@ -410,19 +417,7 @@ void PenumbraWedgesPass::peel(fgvk::ExecuteContext& context, const PeelStep& ste
     rendering.pDepthAttachment = &depth;
     vkCmdBeginRendering(cmd, &rendering);
     set_viewport(cmd, extent);
-    const PenumbraWedgesPush push{
-        .edge_count = edge_count_,
-        .capacity = params_.edges_per_face,
-        .layers = layers,
-        .layer = layer,
-        .outer = params_.outer,
-        .inner = params_.inner,
-        .beta = params_.beta,
-        .gap = params_.gap,
-        .peeling_depth = params_.peeling_depth,
-        .pad0 = 0,
-        .extent = {static_cast<float>(extent.width), static_cast<float>(extent.height)}};
-    vkCmdPushConstants(cmd, layout_, kStages, 0, sizeof push, &push);
+    push_constants(cmd, layers, layer, extent);
     vkCmdBindVertexBuffers(cmd, 0, 1, &context.frame.vertices, &offset);
     vkCmdBindIndexBuffer(cmd, context.frame.indices, 0, VK_INDEX_TYPE_UINT32);
     vkCmdDrawIndexed(cmd, context.frame.index_count, 1, 0, 0, 0);
@@ -461,19 +456,7 @@ void PenumbraWedgesPass::draw_wedges(fgvk::ExecuteContext& context, std::uint32_
     rendering.pDepthAttachment = &depth;
     vkCmdBeginRendering(cmd, &rendering);
     set_viewport(cmd, penumbra.extent);
-    const PenumbraWedgesPush push{.edge_count = edge_count_,
-                                  .capacity = params_.edges_per_face,
-                                  .layers = layers,
-                                  .layer = layer,
-                                  .outer = params_.outer,
-                                  .inner = params_.inner,
-                                  .beta = params_.beta,
-                                  .gap = params_.gap,
-                                  .peeling_depth = params_.peeling_depth,
-                                  .pad0 = 0,
-                                  .extent = {static_cast<float>(penumbra.extent.width),
-                                             static_cast<float>(penumbra.extent.height)}};
-    vkCmdPushConstants(cmd, layout_, kStages, 0, sizeof push, &push);
+    push_constants(cmd, layers, layer, penumbra.extent);
     vkCmdDrawIndirect(cmd, args_buffer_.handle(),
                       VkDeviceSize{layer} * sizeof(VkDrawIndirectCommand), 1,
                       sizeof(VkDrawIndirectCommand));

@@ -58,6 +58,8 @@ class PenumbraWedgesPass final : public fgvk::Pass {
   void peel(fgvk::ExecuteContext& context, const PeelStep& step, VkExtent2D extent,
             std::uint32_t layers);
   void draw_wedges(fgvk::ExecuteContext& context, std::uint32_t layers);
+  void push_constants(VkCommandBuffer cmd, std::uint32_t layers, std::uint32_t layer,
+                      VkExtent2D extent) const;
   void report(fgvk::ExecuteContext& context) const;
   [[nodiscard]] fgvk::PassMessage dropped_message(std::uint32_t dropped) const;
 
