@@ -9,7 +9,7 @@ packages=(
   libglm-dev libtinygltf-dev nlohmann-json3-dev libspdlog-dev libstb-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev libglfw3-dev libimgui-dev
   xvfb xauth xdotool ccache
-  assimp-testmodels
+  assimp-testmodels renderdoc
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -7,26 +7,39 @@
 
 namespace antumbra::passes {
 
+fgvk::DrawClass draw_class(const scene::Scene& scene, const scene::Mesh& mesh) {
+  if (mesh.material < 0 || static_cast<std::size_t>(mesh.material) >= scene.materials.size()) {
+    return fgvk::DrawClass::two_sided;
+  }
+  const scene::Material& m = scene.materials[static_cast<std::size_t>(mesh.material)];
+  if (m.alpha_tested()) return fgvk::DrawClass::cut;
+  return m.double_sided ? fgvk::DrawClass::two_sided : fgvk::DrawClass::one_sided;
+}
+
 std::vector<std::size_t> merge_order(const scene::Scene& scene) {
   std::vector<std::size_t> order;
   order.reserve(scene.meshes.size());
   for (const bool dynamic : {false, true}) {
-    for (std::size_t i = 0; i < scene.meshes.size(); ++i) {
-      if (scene.meshes[i].dynamic == dynamic) order.push_back(i);
+    for (std::uint32_t c = 0; c < fgvk::kDrawClasses; ++c) {
+      for (std::size_t i = 0; i < scene.meshes.size(); ++i) {
+        const scene::Mesh& mesh = scene.meshes[i];
+        if (mesh.dynamic == dynamic && static_cast<std::uint32_t>(draw_class(scene, mesh)) == c) {
+          order.push_back(i);
+        }
+      }
     }
   }
   return order;
 }
 
-void append_world_vertices(const scene::Mesh& mesh, std::vector<GpuVertex>& out) {
-  const glm::mat3 normal_matrix = mesh.normal_matrix();
+void append_world_vertices(const scene::Mesh& mesh, std::vector<GpuVertex>& out,
+                           std::vector<GpuVertexAttributes>* attributes) {
   const auto material = static_cast<std::uint32_t>(mesh.material);
-  for (const auto& v : mesh.vertices) {
-    const glm::vec3 world = glm::vec3(mesh.transform * glm::vec4(v.position, 1.0f));
-    glm::vec3 n = normal_matrix * v.normal;
-    const float len = glm::length(n);
-    n = len > 0.0f ? n / len : glm::vec3(0.0f, 1.0f, 0.0f);
-    out.push_back({world, n, material});
+  for (const scene::Vertex& v : scene::world_vertices(mesh)) {
+    out.push_back({v.position, v.normal, material});
+    if (attributes != nullptr) {
+      attributes->push_back({glm::vec4(v.uv, v.uv1), v.tangent});
+    }
   }
 }
 
@@ -43,22 +56,52 @@ MergedGeometry merge_scene_geometry(const scene::Scene& scene) {
           static_cast<std::uint32_t>(merged.indices.size() + mesh.indices.size());
     }
     const auto base = static_cast<std::uint32_t>(merged.vertices.size());
-    append_world_vertices(mesh, merged.vertices);
+    append_world_vertices(mesh, merged.vertices, &merged.attributes);
+    fgvk::IndexRange& range =
+        merged.ranges[mesh.dynamic ? 1 : 0][static_cast<std::size_t>(draw_class(scene, mesh))];
+    if (range.count == 0) range.first = static_cast<std::uint32_t>(merged.indices.size());
+    range.count += static_cast<std::uint32_t>(mesh.indices.size());
     for (const std::uint32_t index : mesh.indices) merged.indices.push_back(base + index);
   }
   return merged;
 }
 
-std::vector<GpuMaterial> build_materials(const scene::Scene& scene) {
+std::vector<GpuMaterial> build_materials(const scene::Scene& scene, const TexturePlan& textures) {
   std::vector<GpuMaterial> materials;
   materials.reserve(scene.materials.size());
   for (const auto& m : scene.materials) {
-    materials.push_back({glm::vec4(m.albedo, 1.0f),
-                         glm::vec4(m.roughness, m.metallic, m.translucent ? 1.0f : 0.0f, 0.0f),
-                         m.transmittance});
+    GpuMaterial g;
+    g.albedo = glm::vec4(m.albedo, m.alpha);
+    g.params = glm::vec4(m.roughness, m.metallic, m.translucent ? 1.0f : 0.0f,
+                         m.alpha_tested() ? m.alpha_cutoff : -1.0f);
+    g.transmittance = m.transmittance;
+    g.emissive = glm::vec4(m.emissive, m.normal_scale);
+    const scene::TextureSlot* slots[] = {&m.base_color_texture, &m.metallic_roughness_texture,
+                                         &m.normal_texture, &m.occlusion_texture,
+                                         &m.emissive_texture};
+    for (std::size_t i = 0; i < 5; ++i) {
+      const std::uint32_t code = texture_code(textures, scene, *slots[i]);
+      if (i < 4) {
+        g.textures[static_cast<glm::length_t>(i)] = code;
+      } else {
+        g.more.x = code;
+      }
+      const auto [r0, r1] = slots[i]->uv_rows();
+      g.uv_rows[2 * i] = glm::vec4(r0, 0.0f);
+      g.uv_rows[2 * i + 1] = glm::vec4(r1, 0.0f);
+    }
+    g.more.y = (m.double_sided ? ANTUMBRA_MATERIAL_DOUBLE_SIDED : 0U) |
+               (m.alpha_tested() ? ANTUMBRA_MATERIAL_ALPHA_TESTED : 0U);
+    g.more.z = glm::floatBitsToUint(m.occlusion_strength);
+    materials.push_back(g);
   }
-  if (materials.empty())
-    materials.push_back({glm::vec4(0.8f), glm::vec4(0.5f, 0, 0, 0), glm::vec4(1.0f)});
+  if (materials.empty()) {
+    GpuMaterial g;
+    g.albedo = glm::vec4(0.8f, 0.8f, 0.8f, 1.0f);
+    g.params = glm::vec4(0.5f, 0.0f, 0.0f, -1.0f);
+    g.more.y = ANTUMBRA_MATERIAL_DOUBLE_SIDED;
+    materials.push_back(g);
+  }
   return materials;
 }
 

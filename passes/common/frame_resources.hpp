@@ -3,7 +3,9 @@
 // camera/light data of this frame. The executor hands it to passes untouched; its
 // contents are what the built-in passes share, so it is defined beside them.
 
+#include <array>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include <vulkan/vulkan.h>
@@ -15,6 +17,21 @@ struct Aabb;
 
 namespace antumbra::fgvk {
 
+// How triangles must be drawn, from their material (docs/technique.md, "Materials"):
+// double-sided and opaque (no culling), single-sided and opaque (back faces culled), or
+// cut (alphaMode MASK: a fragment shader tests alpha, and back faces of single-sided
+// ones). Rasterising passes draw each class's index range with its own pipeline, so the
+// common case keeps depth-only pipelines without a fragment shader.
+enum class DrawClass : std::uint8_t { two_sided, one_sided, cut };
+inline constexpr std::uint32_t kDrawClasses = 3;
+
+struct IndexRange {
+  std::uint32_t first = 0;
+  std::uint32_t count = 0;
+};
+// [0: static, 1: dynamic][DrawClass]
+using DrawRanges = std::array<std::array<IndexRange, kDrawClasses>, 2>;
+
 struct FrameResources {
   VkBuffer frame_uniforms = VK_NULL_HANDLE;  // FrameUniforms (frame.glsl)
   VkDeviceSize frame_uniforms_size = 0;
@@ -24,7 +41,16 @@ struct FrameResources {
   VkBuffer materials = VK_NULL_HANDLE;  // GpuMaterial[] (material.glsl)
   VkDeviceSize materials_size = 0;
   VkBuffer vertices = VK_NULL_HANDLE;  // GpuVertex[] in world space
-  VkBuffer indices = VK_NULL_HANDLE;   // uint32 triangle list
+  // GpuVertexAttributes[] (texture coordinates, tangents), parallel to `vertices`.
+  VkBuffer vertex_attributes = VK_NULL_HANDLE;
+  // The scene's textures (common/scene_textures.hpp): kTextureBuckets array views per
+  // colour space and their sampler, for common/material_textures.glsl.
+  std::span<const VkImageView> srgb_textures;
+  std::span<const VkImageView> linear_textures;
+  VkSampler texture_sampler = VK_NULL_HANDLE;
+  // Some material is alpha-tested (alphaMode MASK): depth passes must sample alpha.
+  bool alpha_tested = false;
+  VkBuffer indices = VK_NULL_HANDLE;  // uint32 triangle list
   std::uint32_t index_count = 0;
   // Changes whenever the uploaded geometry or materials change (a new GpuScene), so
   // passes that cache results derived from them (shadow faces) know to redo them.
@@ -32,6 +58,8 @@ struct FrameResources {
   // Indices [0, static_index_count) draw the static meshes, the rest the dynamic ones
   // (scene::Mesh::dynamic), whose vertices are rewritten in place when they move.
   std::uint32_t static_index_count = 0;
+  // Within each half, the index ranges of each draw class.
+  DrawRanges draw_ranges{};
   // Changes whenever a dynamic mesh moved (a frame of GpuScene::update).
   std::uint64_t dynamic_version = 0;
   // The bounds dynamic meshes left and entered this frame (old and new of each one that

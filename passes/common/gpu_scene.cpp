@@ -34,6 +34,7 @@ GpuScene::GpuScene(gpu::Context& gpu, const scene::Scene& scene, std::uint32_t f
     : gpu_(&gpu) {
   const auto geometry = merge_scene_geometry(scene);
   static_indices_ = geometry.static_indices;
+  draw_ranges_ = geometry.ranges;
   static_vertices_ = geometry.static_vertices;
   dynamic_vertex_count_ = static_cast<std::uint32_t>(geometry.vertices.size()) - static_vertices_;
   for (const std::size_t m : merge_order(scene)) {
@@ -45,13 +46,20 @@ GpuScene::GpuScene(gpu::Context& gpu, const scene::Scene& scene, std::uint32_t f
   vertices_ = upload_device_buffer(
       gpu, geometry.vertices,
       VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "scene.vertices");
+  attributes_ =
+      upload_device_buffer(gpu, geometry.attributes,
+                           VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                           "scene.vertexAttributes");
+  textures_ = SceneTextures(gpu, scene);
   indices_ = upload_device_buffer(
       gpu, geometry.indices, VK_BUFFER_USAGE_INDEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
       "scene.indices");
   index_count_ = static_cast<std::uint32_t>(geometry.indices.size());
+  alpha_tested_ = std::any_of(scene.materials.begin(), scene.materials.end(),
+                              [](const scene::Material& m) { return m.alpha_tested(); });
   geometry_version_ = next_geometry_version.fetch_add(1);
-  materials_ = upload_device_buffer(gpu, build_materials(scene), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                                    "scene.materials");
+  materials_ = upload_device_buffer(gpu, build_materials(scene, textures_.plan()),
+                                    VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "scene.materials");
   for (std::uint32_t i = 0; i < frames_in_flight; ++i) {
     Slot slot;
     slot.uniforms =
@@ -65,6 +73,10 @@ GpuScene::GpuScene(gpu::Context& gpu, const scene::Scene& scene, std::uint32_t f
           gpu::Buffer::create(gpu, VkDeviceSize{dynamic_vertex_count_} * sizeof(GpuVertex),
                               VK_BUFFER_USAGE_TRANSFER_SRC_BIT, gpu::MemoryUsage::upload,
                               "scene.dynamicVertices.staging." + std::to_string(i));
+      slot.dynamic_attributes = gpu::Buffer::create(
+          gpu, VkDeviceSize{dynamic_vertex_count_} * sizeof(GpuVertexAttributes),
+          VK_BUFFER_USAGE_TRANSFER_SRC_BIT, gpu::MemoryUsage::upload,
+          "scene.dynamicAttributes.staging." + std::to_string(i));
     }
     slots_.push_back(std::move(slot));
   }
@@ -88,20 +100,32 @@ void GpuScene::upload_dynamic(gpu::Context& gpu, VkCommandBuffer cmd, Slot& slot
   if (!moved) return;
   ++dynamic_version_;
   dynamic_scratch_.clear();
-  for (const DynamicMesh& d : dynamic_)
-    append_world_vertices(scene.meshes[d.mesh], dynamic_scratch_);
+  dynamic_attribute_scratch_.clear();
+  for (const DynamicMesh& d : dynamic_) {
+    append_world_vertices(scene.meshes[d.mesh], dynamic_scratch_, &dynamic_attribute_scratch_);
+  }
   const VkDeviceSize bytes = dynamic_scratch_.size() * sizeof(GpuVertex);
   std::memcpy(slot.dynamic_vertices.mapped(), dynamic_scratch_.data(), bytes);
+  const VkDeviceSize attribute_bytes =
+      dynamic_attribute_scratch_.size() * sizeof(GpuVertexAttributes);
+  std::memcpy(slot.dynamic_attributes.mapped(), dynamic_attribute_scratch_.data(), attribute_bytes);
   // Earlier frames may still read the range (vertex input, storage reads): every
   // stage waits, as for any in-place rewrite of shared data.
   gpu.begin_label(cmd, "scene.moveDynamic");
-  gpu::buffer_barrier(cmd, vertices_, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
-                      VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT,
-                      VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
+  for (const VkBuffer target : {vertices_.handle(), attributes_.handle()}) {
+    gpu::buffer_barrier(cmd, target, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+                        VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT,
+                        VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
+  }
   const VkBufferCopy region{0, VkDeviceSize{static_vertices_} * sizeof(GpuVertex), bytes};
   vkCmdCopyBuffer(cmd, slot.dynamic_vertices, vertices_, 1, &region);
-  gpu::buffer_barrier(cmd, vertices_, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                      VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_READ_BIT);
+  const VkBufferCopy attribute_region{
+      0, VkDeviceSize{static_vertices_} * sizeof(GpuVertexAttributes), attribute_bytes};
+  vkCmdCopyBuffer(cmd, slot.dynamic_attributes, attributes_, 1, &attribute_region);
+  for (const VkBuffer target : {vertices_.handle(), attributes_.handle()}) {
+    gpu::buffer_barrier(cmd, target, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                        VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_READ_BIT);
+  }
   gpu.end_label(cmd);
 }
 
@@ -130,10 +154,16 @@ fgvk::FrameResources GpuScene::update(VkCommandBuffer cmd, std::uint32_t slot_in
   frame.materials = materials_;
   frame.materials_size = materials_.size();
   frame.vertices = vertices_;
+  frame.vertex_attributes = attributes_;
+  frame.srgb_textures = textures_.srgb_views();
+  frame.linear_textures = textures_.linear_views();
+  frame.texture_sampler = textures_.sampler();
+  frame.alpha_tested = alpha_tested_;
   frame.indices = indices_;
   frame.index_count = index_count_;
   frame.geometry_version = geometry_version_;
   frame.static_index_count = static_indices_;
+  frame.draw_ranges = draw_ranges_;
   frame.dynamic_version = dynamic_version_;
   frame.moved_bounds = &moved_bounds_;
   frame.dynamic_bounds = &dynamic_bounds_;

@@ -11,6 +11,7 @@
 #include "antumbra/scene/scene.hpp"
 #include "frame_data.hpp"
 #include "frame_resources.hpp"
+#include "scene_textures.hpp"
 
 namespace antumbra::passes {
 
@@ -32,6 +33,7 @@ class GpuScene {
     gpu::Buffer uniforms;
     gpu::Buffer lights;
     gpu::Buffer dynamic_vertices;  // staging for the dynamic range (when there is one)
+    gpu::Buffer dynamic_attributes;
   };
   struct DynamicMesh {
     std::size_t mesh = 0;  // Scene::meshes index
@@ -43,11 +45,15 @@ class GpuScene {
                       const scene::Scene& scene);
   gpu::Context* gpu_ = nullptr;
   gpu::Buffer vertices_;
+  gpu::Buffer attributes_;  // GpuVertexAttributes[], parallel to vertices_
   gpu::Buffer indices_;
+  SceneTextures textures_;
   gpu::Buffer materials_;
   std::uint32_t index_count_ = 0;
+  bool alpha_tested_ = false;
   std::uint64_t geometry_version_ = 0;
   std::uint32_t static_indices_ = 0;
+  fgvk::DrawRanges draw_ranges_{};
   std::uint32_t static_vertices_ = 0;
   std::uint32_t dynamic_vertex_count_ = 0;
   std::uint64_t dynamic_version_ = 0;
@@ -55,6 +61,7 @@ class GpuScene {
   std::vector<scene::Aabb> moved_bounds_;
   std::vector<scene::Aabb> dynamic_bounds_;
   std::vector<GpuVertex> dynamic_scratch_;
+  std::vector<GpuVertexAttributes> dynamic_attribute_scratch_;
   std::vector<Slot> slots_;
 };
 

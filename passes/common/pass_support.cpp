@@ -178,6 +178,25 @@ void dispatch_groups(VkCommandBuffer cmd, VkExtent2D extent, std::uint32_t group
   vkCmdDispatch(cmd, group_count(extent.width, group), group_count(extent.height, group), depth);
 }
 
+void draw_by_class(VkCommandBuffer cmd, const fgvk::FrameResources& frame,
+                   std::span<const VkPipeline, fgvk::kDrawClasses> pipelines,
+                   std::array<bool, 2> halves, std::uint32_t instances,
+                   std::uint32_t first_instance) {
+  VkPipeline bound = VK_NULL_HANDLE;
+  for (std::size_t half = 0; half < 2; ++half) {
+    if (!halves[half]) continue;
+    for (std::size_t c = 0; c < fgvk::kDrawClasses; ++c) {
+      const fgvk::IndexRange& range = frame.draw_ranges[half][c];
+      if (range.count == 0 || pipelines[c] == VK_NULL_HANDLE) continue;
+      if (pipelines[c] != bound) {
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines[c]);
+        bound = pipelines[c];
+      }
+      vkCmdDrawIndexed(cmd, range.count, instances, range.first, 0, first_instance);
+    }
+  }
+}
+
 void set_viewport(VkCommandBuffer cmd, VkExtent2D extent) {
   const VkViewport viewport{
       0.0f, 0.0f, static_cast<float>(extent.width), static_cast<float>(extent.height), 0.0f, 1.0f};

@@ -1,6 +1,7 @@
 #pragma once
 // Small helpers every pass uses: shader loading with diagnostics, fullscreen draws.
 
+#include <array>
 #include <span>
 #include <string>
 #include <string_view>
@@ -12,6 +13,7 @@
 #include "antumbra/gpu/pipelines.hpp"
 #include "antumbra/gpu/shader_compiler.hpp"
 #include "antumbra/gpu/spirv_interface.hpp"
+#include "common/frame_resources.hpp"
 #include "shared/workgroups.h"
 
 namespace antumbra::passes {
@@ -33,6 +35,14 @@ Shader load_shader(fgvk::PrepareContext& context, std::string_view relative,
                    std::vector<std::string>& dependencies,
                    const std::vector<gpu::ShaderDefine>& defines = {},
                    gpu::Fnv1a64* code = nullptr);
+
+// Draws the scene's index ranges by draw class (frame_resources.hpp), each with its
+// pipeline (VK_NULL_HANDLE: the class is skipped), for the static half, the dynamic half
+// or both (`halves`). Vertex and index buffers and descriptors are the caller's.
+void draw_by_class(VkCommandBuffer cmd, const fgvk::FrameResources& frame,
+                   std::span<const VkPipeline, fgvk::kDrawClasses> pipelines,
+                   std::array<bool, 2> halves, std::uint32_t instances = 1,
+                   std::uint32_t first_instance = 0);
 
 // Checks `shader` against the pass's C++ declaration: every binding it declares exists in
 // `layout` with the same descriptor type, and its push-constant block is

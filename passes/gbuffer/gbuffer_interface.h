@@ -10,8 +10,11 @@ ANTUMBRA_SHARED_BEGIN
 
 // Vertex stage: the camera.
 ANTUMBRA_BINDING(kGbufferFrame, 0)
-// Fragment stage: the scene's materials.
+// Fragment stage: the scene's materials and textures (common/material_textures.glsl).
 ANTUMBRA_BINDING(kGbufferMaterials, 1)
+ANTUMBRA_BINDING(kGbufferSrgbTextures, 2)
+ANTUMBRA_BINDING(kGbufferLinearTextures, 3)
+ANTUMBRA_BINDING(kGbufferSampler, 4)
 
 ANTUMBRA_SHARED_END
 

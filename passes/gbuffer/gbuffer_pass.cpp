@@ -9,6 +9,7 @@
 #include "common/pass_support.hpp"
 #include "common/ports.hpp"
 #include "gbuffer_interface.h"
+#include "shared/material_textures.h"
 
 namespace antumbra::passes {
 
@@ -29,28 +30,44 @@ void GBufferPass::prepare(fgvk::PrepareContext& context) {
 
   gpu::DescriptorSetLayoutBuilder bindings;
   bindings.uniform_buffer(shared::kGbufferFrame, VK_SHADER_STAGE_VERTEX_BIT)
-      .storage_buffer(shared::kGbufferMaterials, VK_SHADER_STAGE_FRAGMENT_BIT);
+      .storage_buffer(shared::kGbufferMaterials, VK_SHADER_STAGE_FRAGMENT_BIT)
+      .add(shared::kGbufferSrgbTextures, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE,
+           VK_SHADER_STAGE_FRAGMENT_BIT, shared::kTextureBuckets)
+      .add(shared::kGbufferLinearTextures, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE,
+           VK_SHADER_STAGE_FRAGMENT_BIT, shared::kTextureBuckets)
+      .sampler(shared::kGbufferSampler, VK_SHADER_STAGE_FRAGMENT_BIT);
+  auto cut_frag = load_shader(context, "gbuffer/gbuffer.frag", shader_files_, {{"CUT", ""}});
   check_shader_interface(context.pass.name, vert, bindings, 0);
   check_shader_interface(context.pass.name, frag, bindings, 0);
+  check_shader_interface(context.pass.name, cut_frag, bindings, 0);
   set_layout_ = bindings.build(context.gpu, context.pass.name + ".set");
   const std::array<VkDescriptorSetLayout, 1> sets{set_layout_};
   layout_ = gpu::create_pipeline_layout(context.gpu, sets, {}, context.pass.name + ".layout");
-  const bool cull = params_.cull_back_faces;
-  gpu::GraphicsPipelineBuilder builder;
-  builder.shader(VK_SHADER_STAGE_VERTEX_BIT, vert)
-      .shader(VK_SHADER_STAGE_FRAGMENT_BIT, frag)
-      .vertex_binding(0, sizeof(GpuVertex))
-      .vertex_attribute(0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(GpuVertex, position))
-      .vertex_attribute(1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(GpuVertex, normal))
-      .vertex_attribute(2, 0, VK_FORMAT_R32_UINT, offsetof(GpuVertex, material))
-      .cull(cull ? VK_CULL_MODE_BACK_BIT : VK_CULL_MODE_NONE)
-      .depth(true, true, VK_COMPARE_OP_LESS)
-      .color_formats({normal.format, albedo.format})
-      .depth_format(depth.format)
-      .layout(layout_)
-      .cache(context.pipeline_cache);
-  check_vertex_inputs(context.pass.name, vert, builder.vertex_attributes());
-  pipeline_ = builder.build(context.gpu, context.pass.name + ".pipeline");
+  const auto build = [&](const Shader& fragment, VkCullModeFlags cull, const char* name) {
+    gpu::GraphicsPipelineBuilder builder;
+    builder.shader(VK_SHADER_STAGE_VERTEX_BIT, vert)
+        .shader(VK_SHADER_STAGE_FRAGMENT_BIT, fragment)
+        .vertex_binding(0, sizeof(GpuVertex))
+        .vertex_binding(1, sizeof(GpuVertexAttributes))
+        .vertex_attribute(0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(GpuVertex, position))
+        .vertex_attribute(1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(GpuVertex, normal))
+        .vertex_attribute(2, 0, VK_FORMAT_R32_UINT, offsetof(GpuVertex, material))
+        .vertex_attribute(3, 1, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(GpuVertexAttributes, uv))
+        .vertex_attribute(4, 1, VK_FORMAT_R32G32B32A32_SFLOAT,
+                          offsetof(GpuVertexAttributes, tangent))
+        .cull(cull)
+        .depth(true, true, VK_COMPARE_OP_LESS)
+        .color_formats({normal.format, albedo.format})
+        .depth_format(depth.format)
+        .layout(layout_)
+        .cache(context.pipeline_cache);
+    check_vertex_inputs(context.pass.name, vert, builder.vertex_attributes());
+    return builder.build(context.gpu, context.pass.name + name);
+  };
+  const VkCullModeFlags cull = params_.cull_back_faces ? VK_CULL_MODE_BACK_BIT : VK_CULL_MODE_NONE;
+  pipelines_[0] = build(frag, cull, ".pipeline");
+  pipelines_[1] = build(frag, VK_CULL_MODE_BACK_BIT, ".pipeline.oneSided");
+  pipelines_[2] = build(cut_frag, cull, ".pipeline.cut");
 }
 
 void GBufferPass::execute(fgvk::ExecuteContext& context) {
@@ -89,16 +106,20 @@ void GBufferPass::execute(fgvk::ExecuteContext& context) {
   const VkCommandBuffer cmd = context.cmd;
   vkCmdBeginRendering(cmd, &rendering);
   if (context.frame.index_count > 0) {
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_);
     set_viewport(cmd, depth.extent);
     gpu::PushDescriptors()
         .uniform_buffer(shared::kGbufferFrame, context.frame.frame_uniforms)
         .storage_buffer(shared::kGbufferMaterials, context.frame.materials)
+        .sampled_images(shared::kGbufferSrgbTextures, context.frame.srgb_textures)
+        .sampled_images(shared::kGbufferLinearTextures, context.frame.linear_textures)
+        .sampler(shared::kGbufferSampler, context.frame.texture_sampler)
         .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_);
-    const VkDeviceSize offset = 0;
-    vkCmdBindVertexBuffers(cmd, 0, 1, &context.frame.vertices, &offset);
+    const std::array<VkBuffer, 2> streams{context.frame.vertices, context.frame.vertex_attributes};
+    const std::array<VkDeviceSize, 2> offsets{0, 0};
+    vkCmdBindVertexBuffers(cmd, 0, 2, streams.data(), offsets.data());
     vkCmdBindIndexBuffer(cmd, context.frame.indices, 0, VK_INDEX_TYPE_UINT32);
-    vkCmdDrawIndexed(cmd, context.frame.index_count, 1, 0, 0, 0);
+    const std::array<VkPipeline, 3> pipelines{pipelines_[0], pipelines_[1], pipelines_[2]};
+    draw_by_class(cmd, context.frame, pipelines, {true, true});
   }
   vkCmdEndRendering(cmd);
 }

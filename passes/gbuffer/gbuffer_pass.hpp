@@ -2,6 +2,7 @@
 // Pass type "gbuffer". Reflection in gbuffer_desc.cpp, runtime in gbuffer_pass.cpp,
 // shaders beside them.
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -9,6 +10,7 @@
 #include "antumbra/fg/param_table.hpp"
 #include "antumbra/fgvk/pass.hpp"
 #include "antumbra/gpu/handle.hpp"
+#include "common/frame_resources.hpp"
 #include "visibility_gbuffer.hpp"
 
 namespace antumbra::passes {
@@ -38,7 +40,7 @@ class GBufferPass final : public fgvk::Pass {
   GBufferParams params_;
   gpu::DescriptorSetLayout set_layout_;
   gpu::PipelineLayout layout_;
-  gpu::Pipeline pipeline_;
+  std::array<gpu::Pipeline, fgvk::kDrawClasses> pipelines_;  // by fgvk::DrawClass
   VisibilityGBuffer visibility_;
   std::vector<std::string> shader_files_;
 };

@@ -99,8 +99,94 @@ TEST(FrameData, SpotAndDirectionalLightsCarryTypeAndDirection) {
 
 TEST(FrameData, MaterialsKeepTheirOrder) {
   const auto s = two_boxes();
-  const auto materials = passes::build_materials(s);
+  const auto materials = passes::build_materials(s, passes::plan_textures(s));
   ASSERT_EQ(materials.size(), 2u);
   EXPECT_FLOAT_EQ(materials[1].albedo.r, 1.0f);
   EXPECT_FLOAT_EQ(materials[1].albedo.g, 0.0f);
+  EXPECT_LT(materials[1].params.w, 0.0f);  // opaque: no alpha test
+  EXPECT_EQ(materials[1].textures, glm::uvec4(0u));
+  EXPECT_EQ(materials[1].more.y, ANTUMBRA_MATERIAL_DOUBLE_SIDED);
+}
+
+namespace {
+
+std::shared_ptr<const scene::ImageData> image(std::uint32_t w, std::uint32_t h) {
+  auto data = std::make_shared<scene::ImageData>();
+  data->width = w;
+  data->height = h;
+  data->rgba.assign(std::size_t{w} * h * 4, 255);
+  return data;
+}
+
+}  // namespace
+
+TEST(FrameData, TexturesGoToTheirSizeBucketAndColourSpace) {
+  EXPECT_EQ(passes::texture_bucket(1, 1), 0u);      // 64
+  EXPECT_EQ(passes::texture_bucket(64, 8), 0u);     // 64
+  EXPECT_EQ(passes::texture_bucket(65, 8), 1u);     // 128
+  EXPECT_EQ(passes::texture_bucket(300, 512), 3u);  // 512
+  EXPECT_EQ(passes::texture_bucket(2048, 2048), 5u);
+  EXPECT_EQ(passes::texture_bucket(8192, 100), 5u);  // downsampled to 2048
+  scene::Scene s;
+  s.textures.push_back({image(256, 256), true});
+  s.textures.push_back({image(200, 100), false});
+  s.textures.push_back(
+      {image(256, 128), true, scene::TextureWrap::clamp, scene::TextureWrap::mirror, true});
+  const passes::TexturePlan plan = passes::plan_textures(s);
+  ASSERT_EQ(plan.placements.size(), 3u);
+  EXPECT_EQ(plan.layers[1][2], 2u);  // two sRGB 256s
+  EXPECT_EQ(plan.layers[0][2], 1u);  // one linear 256
+  EXPECT_EQ(plan.placements[2].layer, 1u);
+  scene::TextureSlot slot;
+  EXPECT_EQ(passes::texture_code(plan, s, slot), 0u);
+  slot.texture = 2;
+  slot.texcoord = 1;
+  const std::uint32_t code = passes::texture_code(plan, s, slot);
+  EXPECT_EQ(code & 4095u, 1u);        // layer
+  EXPECT_EQ((code >> 12) & 15u, 2u);  // bucket 256
+  EXPECT_EQ((code >> 16) & 1u, 1u);   // texcoord set 1
+  EXPECT_EQ((code >> 17) & 3u, 1u);   // clamp
+  EXPECT_EQ((code >> 19) & 3u, 2u);   // mirror
+  EXPECT_EQ((code >> 21) & 1u, 1u);   // nearest
+  EXPECT_NE(code & shared::kTexturePresent, 0u);
+  // 3 layers of 256^2 RGBA8 with their 8 smaller mips (256, 128, ..., 1): 4/3 of level 0.
+  EXPECT_EQ(plan.bytes(), 1048572u);
+  EXPECT_NEAR(static_cast<double>(plan.bytes()), 3.0 * 256 * 256 * 4 * 4 / 3, 16.0);
+}
+
+TEST(FrameData, MeshesAreSortedByDrawClassWithinEachHalf) {
+  scene::Scene s;
+  s.materials.push_back({"two-sided"});
+  scene::Material one_sided{"one-sided"};
+  one_sided.double_sided = false;
+  scene::Material cut{"cut"};
+  cut.alpha_mode = scene::AlphaMode::mask;
+  cut.alpha = 0.2f;  // below the cutoff: tested even without a texture
+  scene::Material masked_opaque{"mask but alpha 1, no texture"};
+  masked_opaque.alpha_mode = scene::AlphaMode::mask;
+  s.materials.insert(s.materials.end(), {one_sided, cut, masked_opaque});
+  for (const int material : {2, 1, 0, 3, 2}) {
+    auto box = scene::make_box(glm::vec3(1.0f));
+    box.material = material;
+    s.meshes.push_back(box);
+  }
+  s.meshes[4].dynamic = true;
+  const auto merged = passes::merge_scene_geometry(s);
+  const std::uint32_t box = static_cast<std::uint32_t>(s.meshes[0].indices.size());
+  const auto& st = merged.ranges[0];
+  EXPECT_EQ(st[0].first, 0u);  // meshes 2 and 3 (mask with nothing to test is two-sided)
+  EXPECT_EQ(st[0].count, 2 * box);
+  EXPECT_EQ(st[1].first, 2 * box);  // mesh 1
+  EXPECT_EQ(st[1].count, box);
+  EXPECT_EQ(st[2].first, 3 * box);  // mesh 0
+  EXPECT_EQ(st[2].count, box);
+  EXPECT_EQ(merged.static_indices, 4 * box);
+  EXPECT_EQ(merged.ranges[1][2].first, 4 * box);  // the dynamic cut mesh
+  EXPECT_EQ(merged.ranges[1][2].count, box);
+  EXPECT_EQ(merged.ranges[1][0].count, 0u);
+  EXPECT_EQ(merged.attributes.size(), merged.vertices.size());
+  const auto materials = passes::build_materials(s, passes::plan_textures(s));
+  EXPECT_FLOAT_EQ(materials[2].params.w, 0.5f);
+  EXPECT_EQ(materials[2].more.y, ANTUMBRA_MATERIAL_DOUBLE_SIDED | ANTUMBRA_MATERIAL_ALPHA_TESTED);
+  EXPECT_EQ(materials[1].more.y, 0u);
 }

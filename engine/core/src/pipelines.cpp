@@ -61,6 +61,15 @@ PushDescriptors& PushDescriptors::combined_image_sampler(std::uint32_t binding, 
   return *this;
 }
 
+PushDescriptors& PushDescriptors::sampled_images(std::uint32_t binding,
+                                                 std::span<const VkImageView> views,
+                                                 VkImageLayout layout) {
+  writes_.push_back({binding, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, images_.size(),
+                     static_cast<std::uint32_t>(views.size())});
+  for (const VkImageView view : views) images_.push_back({VK_NULL_HANDLE, view, layout});
+  return *this;
+}
+
 PushDescriptors& PushDescriptors::sampler(std::uint32_t binding, VkSampler sampler) {
   writes_.push_back({binding, VK_DESCRIPTOR_TYPE_SAMPLER, images_.size()});
   images_.push_back({sampler, VK_NULL_HANDLE, VK_IMAGE_LAYOUT_UNDEFINED});
@@ -90,7 +99,7 @@ void PushDescriptors::push(const Context& context, VkCommandBuffer cmd,
   for (const Write& w : writes_) {
     VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
     write.dstBinding = w.binding;
-    write.descriptorCount = 1;
+    write.descriptorCount = w.count;
     write.descriptorType = w.type;
     const bool buffer =
         w.type == VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER || w.type == VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;

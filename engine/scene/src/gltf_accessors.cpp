@@ -195,15 +195,28 @@ bool read_normals(const tinygltf::Model& model, int accessor, const std::string&
 }
 
 bool read_texcoords(const tinygltf::Model& model, int accessor, const std::string& referrer,
-                    std::vector<glm::vec2>& out, GltfIssue& issue) {
+                    const char* what, std::vector<glm::vec2>& out, GltfIssue& issue) {
   Layout l;
-  if (!validate(model, accessor, referrer, TINYGLTF_TYPE_VEC2, {kFloat, kUByte, kUShort},
-                "TEXCOORD_0", l, issue)) {
+  if (!validate(model, accessor, referrer, TINYGLTF_TYPE_VEC2, {kFloat, kUByte, kUShort}, what, l,
+                issue)) {
     return false;
   }
   l.normalized = true;  // integer texcoords are always normalized in glTF
   out.resize(l.count);
   for (std::size_t i = 0; i < l.count; ++i) out[i] = {component(l, i, 0), component(l, i, 1)};
+  return true;
+}
+
+bool read_tangents(const tinygltf::Model& model, int accessor, const std::string& referrer,
+                   std::vector<glm::vec4>& out, GltfIssue& issue) {
+  Layout l;
+  if (!validate(model, accessor, referrer, TINYGLTF_TYPE_VEC4, {kFloat}, "TANGENT", l, issue)) {
+    return false;
+  }
+  out.resize(l.count);
+  for (std::size_t i = 0; i < l.count; ++i) {
+    out[i] = {component(l, i, 0), component(l, i, 1), component(l, i, 2), component(l, i, 3)};
+  }
   return true;
 }
 

@@ -30,17 +30,25 @@ bool read_positions(const tinygltf::Model& model, int accessor, const std::strin
 bool read_normals(const tinygltf::Model& model, int accessor, const std::string& referrer,
                   std::vector<glm::vec3>& out, GltfIssue& issue);
 bool read_texcoords(const tinygltf::Model& model, int accessor, const std::string& referrer,
-                    std::vector<glm::vec2>& out, GltfIssue& issue);
+                    const char* what, std::vector<glm::vec2>& out, GltfIssue& issue);
+bool read_tangents(const tinygltf::Model& model, int accessor, const std::string& referrer,
+                   std::vector<glm::vec4>& out, GltfIssue& issue);
 // Any of the three index component types; values are NOT range-checked here.
 bool read_indices(const tinygltf::Model& model, int accessor, const std::string& referrer,
                   std::vector<std::uint32_t>& out, GltfIssue& issue);
 
 // Turns one glTF primitive into `mesh` (local space): validated attributes, indices
-// (generated when absent; strips and fans become lists), normals computed when missing.
-// Points and lines leave `mesh` empty and add a warning.
+// (generated when absent; strips and fans become lists), normals computed when missing,
+// tangents read or, where `tangent_set` >= 0 (a normal map samples that coordinate
+// set) and the file has none, generated. Points and lines leave `mesh` empty and add a
+// warning.
 bool build_primitive_mesh(const tinygltf::Model& model, const tinygltf::Primitive& prim,
-                          const std::string& pointer, Mesh& mesh, GltfIssue& issue,
+                          const std::string& pointer, int tangent_set, Mesh& mesh, GltfIssue& issue,
                           std::vector<GltfIssue>& warnings);
+
+// Per-vertex tangents from the triangles' texture-coordinate gradients in set
+// `set`, orthogonalised against the normals (w: bitangent sign).
+void generate_tangents(Mesh& mesh, int set);
 
 // Type checks of the glTF JSON (gltf_schema.cpp), run before tinygltf, which ignores
 // wrongly typed properties. Geometry-relevant problems go to `errors`.

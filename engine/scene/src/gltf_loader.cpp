@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <unordered_set>
 
 #include <glm/gtc/quaternion.hpp>
@@ -12,17 +13,28 @@
 
 #include "antumbra/base/diagnostic_codes.hpp"
 #include "gltf_accessors.hpp"
+#include "gltf_materials.hpp"
 
 namespace antumbra::scene {
 namespace {
 
 using detail::GltfIssue;
+using detail::GltfMaterialInput;
 
 constexpr int kMaxNodeDepth = 1024;
 
-// Images are not needed (untextured rendering): skip decoding them entirely.
-bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, int,
-                const unsigned char*, int, void*) {
+// tinygltf hands over each image's encoded bytes (from its file, data URI or buffer
+// view); they are kept and decoded afterwards, only for images a material uses, with
+// our own checks (gltf_materials.cpp). Returning true keeps tinygltf going whatever
+// the bytes are.
+bool keep_image_bytes(tinygltf::Image*, const int index, std::string*, std::string*, int, int,
+                      const unsigned char* bytes, int size, void* user) {
+  auto& images = *static_cast<std::vector<std::vector<std::uint8_t>>*>(user);
+  if (index < 0 || bytes == nullptr || size <= 0) return true;
+  if (images.size() <= static_cast<std::size_t>(index)) {
+    images.resize(static_cast<std::size_t>(index) + 1);
+  }
+  images[static_cast<std::size_t>(index)].assign(bytes, bytes + size);
   return true;
 }
 
@@ -42,29 +54,10 @@ bool finite(const glm::mat4& m) {
   return true;
 }
 
-Material convert_material(const tinygltf::Material& m, std::size_t index) {
-  Material out;
-  out.name = m.name.empty() ? "material" + std::to_string(index) : m.name;
-  glm::vec4 base(1.0f);
-  const auto& f = m.pbrMetallicRoughness.baseColorFactor;
-  if (f.size() == 4 && std::all_of(f.begin(), f.end(), [](double v) { return std::isfinite(v); })) {
-    base = glm::clamp(glm::vec4(f[0], f[1], f[2], f[3]), 0.0f, 1.0f);
-  }
-  const auto clamp01 = [](double v, float fallback) {
-    return std::isfinite(v) ? std::clamp(static_cast<float>(v), 0.0f, 1.0f) : fallback;
-  };
-  out.albedo = glm::vec3(base);
-  out.metallic = clamp01(m.pbrMetallicRoughness.metallicFactor, 1.0f);
-  out.roughness = clamp01(m.pbrMetallicRoughness.roughnessFactor, 1.0f);
-  out.translucent = m.alphaMode == "BLEND" && base.a < 1.0f;
-  out.transmittance = base;
-  return out;
-}
-
 class Importer {
  public:
-  Importer(const tinygltf::Model& model, const GltfLimits& limits, GltfImport& out)
-      : model_(model), limits_(limits), out_(out) {}
+  Importer(const GltfMaterialInput& materials, const GltfLimits& limits, GltfImport& out)
+      : materials_(materials), model_(materials.model), limits_(limits), out_(out) {}
 
   // Returns false with `issue_` set on the first error.
   bool run();
@@ -82,6 +75,7 @@ class Importer {
   bool add_primitive(const tinygltf::Primitive& prim, const std::string& p, const std::string& name,
                      const glm::mat4& world);
 
+  const GltfMaterialInput& materials_;
   const tinygltf::Model& model_;
   const GltfLimits& limits_;
   GltfImport& out_;
@@ -100,9 +94,8 @@ bool Importer::run() {
     return fail(codes::scene::kGltfUnsupported, "required extension '" + ext + "' is not supported",
                 "/extensionsRequired");
   }
-  for (std::size_t i = 0; i < model_.materials.size(); ++i) {
-    out_.materials.push_back(convert_material(model_.materials[i], i));
-  }
+  if (!detail::convert_materials(materials_, out_.materials, out_.textures, issue_, warnings_))
+    return false;
   out_.materials.push_back(Material{.name = "default"});
   on_path_.assign(model_.nodes.size(), false);
   if (model_.scenes.empty()) {
@@ -214,17 +207,24 @@ bool Importer::add_primitive(const tinygltf::Primitive& prim, const std::string&
                              const std::string& name, const glm::mat4& world) {
   Mesh mesh;
   mesh.name = name;
-  if (!detail::build_primitive_mesh(model_, prim, p, mesh, issue_, warnings_)) return false;
+  const int material = prim.material;
+  if (material >= static_cast<int>(model_.materials.size())) {
+    return fail(codes::scene::kGltfBadReference,
+                "material " + std::to_string(material) + " does not exist", p + "/material");
+  }
+  // Tangents matter only under a normal map, in that map's coordinate set.
+  const TextureSlot& normal_map =
+      out_.materials[static_cast<std::size_t>(material < 0 ? out_.materials.size() - 1 : material)]
+          .normal_texture;
+  const int tangent_set = normal_map.used() ? normal_map.texcoord : -1;
+  if (!detail::build_primitive_mesh(model_, prim, p, tangent_set, mesh, issue_, warnings_)) {
+    return false;
+  }
   if (mesh.indices.empty()) return true;  // skipped (points/lines), with a warning
   triangles_ += mesh.triangle_count();
   if (triangles_ > limits_.max_triangles) {
     return fail(codes::scene::kGltfTooLarge,
                 "more than " + std::to_string(limits_.max_triangles) + " triangles", p);
-  }
-  const int material = prim.material;
-  if (material >= static_cast<int>(model_.materials.size())) {
-    return fail(codes::scene::kGltfBadReference,
-                "material " + std::to_string(material) + " does not exist", p + "/material");
   }
   mesh.material = material < 0 ? static_cast<int>(out_.materials.size()) - 1 : material;
   mesh.transform = world;
@@ -235,7 +235,8 @@ bool Importer::add_primitive(const tinygltf::Primitive& prim, const std::string&
 
 }  // namespace
 
-base::Result<GltfImport> load_gltf(const std::string& path, const GltfLimits& limits) {
+base::Result<GltfImport> load_gltf(const std::string& path, const GltfLimits& limits,
+                                   ImageCache* cache) {
   base::Diagnostics diagnostics;
   const auto report = [&](const char* code, base::Severity severity, std::string message,
                           std::string pointer) {
@@ -262,9 +263,10 @@ base::Result<GltfImport> load_gltf(const std::string& path, const GltfLimits& li
   std::string error;
   std::string warning;
   bool loaded = false;
+  std::vector<std::vector<std::uint8_t>> image_bytes;
   try {
     tinygltf::TinyGLTF loader;
-    loader.SetImageLoader(skip_image, nullptr);
+    loader.SetImageLoader(keep_image_bytes, &image_bytes);
     loaded = is_binary(path) ? loader.LoadBinaryFromFile(&model, &error, &warning, path)
                              : loader.LoadASCIIFromFile(&model, &error, &warning, path);
   } catch (const std::exception& e) {  // tinygltf/nlohmann on hostile input, bad_alloc
@@ -274,8 +276,14 @@ base::Result<GltfImport> load_gltf(const std::string& path, const GltfLimits& li
     while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) s.pop_back();
     return s;
   };
-  if (!trim(warning).empty()) {
-    report(codes::scene::kGltfWarning, base::Severity::warning, "tinygltf: " + trim(warning), "");
+  // Missing image files are reported per image, with their pointer (gltf_materials.cpp).
+  std::string kept;
+  std::istringstream lines(warning);
+  for (std::string line; std::getline(lines, line);) {
+    if (!line.starts_with("Failed to load external 'uri' for image")) kept += line + "\n";
+  }
+  if (!trim(kept).empty()) {
+    report(codes::scene::kGltfWarning, base::Severity::warning, "tinygltf: " + trim(kept), "");
   }
   if (!loaded) {
     report(codes::scene::kGltfParse, base::Severity::error,
@@ -284,7 +292,11 @@ base::Result<GltfImport> load_gltf(const std::string& path, const GltfLimits& li
     return diagnostics;
   }
   GltfImport out;
-  Importer importer(model, limits, out);
+  image_bytes.resize(model.images.size());
+  ImageCache own_cache;
+  const GltfMaterialInput materials{model, path, image_bytes, cache != nullptr ? *cache : own_cache,
+                                    limits.images};
+  Importer importer(materials, limits, out);
   const bool ok = importer.run();
   for (const GltfIssue& w : importer.warnings()) {
     report(w.code, base::Severity::warning, w.message, w.pointer);

@@ -62,8 +62,45 @@ void compute_normals(Mesh& mesh, bool only_unusable) {
 
 }  // namespace
 
+void generate_tangents(Mesh& mesh, int set) {
+  std::vector<glm::vec3> tangent(mesh.vertices.size(), glm::vec3(0.0f));
+  std::vector<glm::vec3> bitangent(mesh.vertices.size(), glm::vec3(0.0f));
+  const auto uv = [&](std::uint32_t v) {
+    return set == 1 ? mesh.vertices[v].uv1 : mesh.vertices[v].uv;
+  };
+  for (std::size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
+    const std::uint32_t a = mesh.indices[i], b = mesh.indices[i + 1], c = mesh.indices[i + 2];
+    const glm::vec3 e1 = mesh.vertices[b].position - mesh.vertices[a].position;
+    const glm::vec3 e2 = mesh.vertices[c].position - mesh.vertices[a].position;
+    const glm::vec2 d1 = uv(b) - uv(a);
+    const glm::vec2 d2 = uv(c) - uv(a);
+    const float det = d1.x * d2.y - d2.x * d1.y;
+    if (!std::isfinite(det) || std::abs(det) < 1e-20f) continue;  // no uv gradient
+    // Weighted by the triangle's area in position space (the unnormalised solve).
+    const float sign = det > 0.0f ? 1.0f : -1.0f;
+    const glm::vec3 t = (e1 * d2.y - e2 * d1.y) * sign;
+    const glm::vec3 bt = (e2 * d1.x - e1 * d2.x) * sign;
+    for (const std::uint32_t v : {a, b, c}) {
+      tangent[v] += t;
+      bitangent[v] += bt;
+    }
+  }
+  for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
+    Vertex& vx = mesh.vertices[v];
+    glm::vec3 t = tangent[v] - vx.normal * glm::dot(vx.normal, tangent[v]);
+    if (!usable_normal(t)) {
+      // No gradient (degenerate or constant uv): any direction across the normal.
+      t = glm::cross(vx.normal,
+                     std::abs(vx.normal.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0));
+    }
+    t = glm::normalize(t);
+    const float w = glm::dot(glm::cross(vx.normal, t), bitangent[v]) < 0.0f ? -1.0f : 1.0f;
+    vx.tangent = glm::vec4(t, w);
+  }
+}
+
 bool build_primitive_mesh(const tinygltf::Model& model, const tinygltf::Primitive& prim,
-                          const std::string& p, Mesh& mesh, GltfIssue& issue,
+                          const std::string& p, int tangent_set, Mesh& mesh, GltfIssue& issue,
                           std::vector<GltfIssue>& warnings) {
   if (prim.mode >= 0 && prim.mode < kModeTriangles) {
     warnings.push_back(
@@ -104,8 +141,32 @@ bool build_primitive_mesh(const tinygltf::Model& model, const tinygltf::Primitiv
   }
   std::vector<glm::vec2> uvs;
   if (const int id = attribute(prim, "TEXCOORD_0"); id >= 0) {
-    if (!read_texcoords(model, id, p + "/attributes/TEXCOORD_0", uvs, issue)) return false;
+    if (!read_texcoords(model, id, p + "/attributes/TEXCOORD_0", "TEXCOORD_0", uvs, issue)) {
+      return false;
+    }
     if (!check_count(uvs.size(), "TEXCOORD_0")) return false;
+  }
+  std::vector<glm::vec2> uvs1;
+  if (const int id = attribute(prim, "TEXCOORD_1"); id >= 0) {
+    if (!read_texcoords(model, id, p + "/attributes/TEXCOORD_1", "TEXCOORD_1", uvs1, issue)) {
+      return false;
+    }
+    if (!check_count(uvs1.size(), "TEXCOORD_1")) return false;
+  }
+  std::vector<glm::vec4> tangents;
+  if (const int id = attribute(prim, "TANGENT"); id >= 0 && tangent_set >= 0) {
+    if (!read_tangents(model, id, p + "/attributes/TANGENT", tangents, issue)) return false;
+    if (!check_count(tangents.size(), "TANGENT")) return false;
+    // Unusable ones (zero, NaN) make the whole set generated instead.
+    for (const glm::vec4& t : tangents) {
+      if (!usable_normal(glm::vec3(t)) || !std::isfinite(t.w)) {
+        warnings.push_back({codes::scene::kGltfNonFinite,
+                            "TANGENT has zero or non-finite vectors; tangents are generated",
+                            p + "/attributes/TANGENT"});
+        tangents.clear();
+        break;
+      }
+    }
   }
   std::vector<std::uint32_t> indices;
   if (prim.indices >= 0) {
@@ -132,9 +193,15 @@ bool build_primitive_mesh(const tinygltf::Model& model, const tinygltf::Primitiv
     mesh.vertices[i].position = positions[i];
     mesh.vertices[i].normal = normals.empty() ? glm::vec3(0.0f) : normals[i];
     mesh.vertices[i].uv = uvs.empty() ? glm::vec2(0.0f) : uvs[i];
+    mesh.vertices[i].uv1 = uvs1.empty() ? glm::vec2(0.0f) : uvs1[i];
+    if (!tangents.empty()) {
+      mesh.vertices[i].tangent =
+          glm::vec4(glm::normalize(glm::vec3(tangents[i])), tangents[i].w < 0.0f ? -1.0f : 1.0f);
+    }
   }
   mesh.indices = to_triangle_list(indices, prim.mode);
   compute_normals(mesh, /*only_unusable=*/!normals.empty());
+  if (tangent_set >= 0 && tangents.empty()) generate_tangents(mesh, tangent_set);
   return true;
 }
 

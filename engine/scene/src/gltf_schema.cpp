@@ -170,6 +170,19 @@ void check_gltf_schema(const std::string& path, std::vector<GltfIssue>& errors,
                        std::vector<GltfIssue>& warnings) {
   const json root = json::parse(json_text(path), nullptr, /*allow_exceptions=*/false);
   if (root.is_discarded() || !root.is_object()) return;  // tinygltf reports syntax errors
+  // glTF 1.0 (techniques, shaders, objects keyed by id) is another format altogether.
+  const auto asset = root.find("asset");
+  const bool version_one = (asset != root.end() && asset->is_object() &&
+                            asset->contains("version") && (*asset)["version"].is_string() &&
+                            (*asset)["version"].get<std::string>().starts_with("1")) ||
+                           (root.contains("meshes") && root["meshes"].is_object());
+  if (version_one) {
+    errors.push_back({codes::scene::kGltfUnsupported,
+                      "this is a glTF 1 file; only glTF 2.0 is supported (convert it, for "
+                      "example by importing it into Blender and exporting glTF 2.0)",
+                      asset != root.end() ? "/asset/version" : ""});
+    return;
+  }
   for (const Rule& rule : kRules) check(root, rule.pattern, "", rule, errors, warnings);
 }
 

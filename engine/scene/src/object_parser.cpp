@@ -180,7 +180,7 @@ void parse_gltf_object(ParseContext& ctx, const Json& o, const std::string& p,
                      gp);
     return;
   }
-  auto imported = load_gltf(path.string());
+  auto imported = load_gltf(path.string(), GltfLimits{}, &ctx.images);
   for (const base::Diagnostic& d : imported.diagnostics()) {
     std::string message = "in glTF '" + *relative + "': " + d.message;
     if (!d.pointer.empty()) message += " (at " + d.pointer + " in the glTF)";
@@ -195,6 +195,7 @@ void parse_gltf_object(ParseContext& ctx, const Json& o, const std::string& p,
   if (!material_override) {
     for (Material m : imported->materials) {
       m.name = *relative + "#" + m.name;
+      import_textures(m, imported->textures, ctx.scene);
       ctx.scene.materials.push_back(std::move(m));
     }
   }

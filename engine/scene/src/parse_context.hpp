@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "antumbra/base/diagnostics.hpp"
+#include "antumbra/scene/image_cache.hpp"
 #include "antumbra/scene/scene.hpp"
 #include "json_reader.hpp"
 
@@ -20,6 +21,8 @@ struct ParseContext {
   // Canonical paths of the scene files being parsed, outermost first: a file already on
   // the chain would instance itself without end.
   std::vector<std::filesystem::path>& chain;
+  // Decoded images, shared by every glTF of this load (and of the files it instances).
+  ImageCache& images;
   // Lights of instanced scenes. They follow the file's own lights in Scene::lights, so
   // that /lights/i stays scene light i for the editor.
   std::vector<PointLight> instanced_lights{};
@@ -57,6 +60,7 @@ void parse_scene_instance(ParseContext& ctx, const Json& object, const std::stri
 
 // parse_scene() for a document whose file is the last entry of `chain`.
 base::Result<Scene> parse_scene_document(const base::JsonDocument& document,
-                                         std::vector<std::filesystem::path>& chain);
+                                         std::vector<std::filesystem::path>& chain,
+                                         ImageCache& images);
 
 }  // namespace antumbra::scene::detail

@@ -32,6 +32,7 @@ std::vector<int> import_materials(ParseContext& ctx, const Scene& child, const s
     copy.name = file + "#" + m.name;
     int index = ctx.scene.find_material(copy.name);
     if (index < 0) {
+      import_textures(copy, child.textures, ctx.scene);
       index = static_cast<int>(ctx.scene.materials.size());
       ctx.scene.materials.push_back(std::move(copy));
     }
@@ -113,7 +114,7 @@ void parse_scene_instance(ParseContext& ctx, const Json& object, const std::stri
     return;
   }
   ctx.chain.push_back(canonical);
-  auto child = parse_scene_document(document.value(), ctx.chain);
+  auto child = parse_scene_document(document.value(), ctx.chain, ctx.images);
   ctx.chain.pop_back();
   r.append(child.diagnostics());  // located in the instanced file itself
   if (!child.ok()) {

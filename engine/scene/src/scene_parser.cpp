@@ -245,7 +245,8 @@ void parse_lights(JsonReader& r, const Json& root, Scene& scene,
 namespace detail {
 
 base::Result<Scene> parse_scene_document(const base::JsonDocument& document,
-                                         std::vector<std::filesystem::path>& chain) {
+                                         std::vector<std::filesystem::path>& chain,
+                                         ImageCache& images) {
   base::Diagnostics diagnostics;
   JsonReader r(document, diagnostics);
   Scene scene;
@@ -263,7 +264,8 @@ base::Result<Scene> parse_scene_document(const base::JsonDocument& document,
   }
   parse_camera(r, root, scene.camera);
   parse_materials(r, root, scene);
-  detail::ParseContext ctx{r, scene, std::filesystem::path(document.file()).parent_path(), chain};
+  detail::ParseContext ctx{r, scene, std::filesystem::path(document.file()).parent_path(), chain,
+                           images};
   if (const auto it = root.find("objects"); it != root.end()) {
     detail::parse_objects(ctx, *it, "/objects");
   }
@@ -280,25 +282,27 @@ base::Result<Scene> parse_scene_document(const base::JsonDocument& document,
 
 }  // namespace detail
 
-base::Result<Scene> parse_scene(const base::JsonDocument& document) {
+base::Result<Scene> parse_scene(const base::JsonDocument& document, ImageCache* images) {
   std::error_code ec;
+  ImageCache own_images;
   std::vector<std::filesystem::path> chain;
   if (!document.file().empty()) {
     chain.push_back(std::filesystem::weakly_canonical(document.file(), ec));
   }
-  return detail::parse_scene_document(document, chain);
+  return detail::parse_scene_document(document, chain, images != nullptr ? *images : own_images);
 }
 
-base::Result<Scene> load_scene_file(const std::string& path) {
+base::Result<Scene> load_scene_file(const std::string& path, ImageCache* images) {
   auto document = base::load_json_file(path);
   if (!document.ok()) return document.diagnostics();
-  return parse_scene(document.value());
+  return parse_scene(document.value(), images);
 }
 
-base::Result<Scene> parse_scene_text(std::string_view text, const std::string& file) {
+base::Result<Scene> parse_scene_text(std::string_view text, const std::string& file,
+                                     ImageCache* images) {
   auto document = base::parse_json(text, file);
   if (!document.ok()) return document.diagnostics();
-  return parse_scene(document.value());
+  return parse_scene(document.value(), images);
 }
 
 }  // namespace antumbra::scene

@@ -133,6 +133,10 @@ inline constexpr const char* kGltfUnsupported =
 inline constexpr const char* kGltfWarning =
     "SC041";  // warning: tinygltf, or unused property mistyped
 inline constexpr const char* kGltfTooLarge = "SC042";  // past the import limits
+inline constexpr const char* kGltfImage =
+    "SC043";  // warning: image missing, corrupt or too large (the factor is used)
+inline constexpr const char* kGltfMaterial =
+    "SC044";  // warning: material value invalid or unsupported (its default is used)
 
 // Dynamic objects (SC050-SC059), reported at the "dynamic" entry.
 inline constexpr const char* kUnknownObject = "SC050";    // names no object of the file

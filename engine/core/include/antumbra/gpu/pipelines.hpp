@@ -74,6 +74,9 @@ class PushDescriptors {
       std::uint32_t binding, VkImageView view, VkSampler sampler,
       VkImageLayout layout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
   PushDescriptors& sampler(std::uint32_t binding, VkSampler sampler);
+  // An array of descriptors: elements 0.. of `binding`.
+  PushDescriptors& sampled_images(std::uint32_t binding, std::span<const VkImageView> views,
+                                  VkImageLayout layout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
   PushDescriptors& uniform_buffer(std::uint32_t binding, VkBuffer buffer, VkDeviceSize offset = 0,
                                   VkDeviceSize range = VK_WHOLE_SIZE);
   PushDescriptors& storage_buffer(std::uint32_t binding, VkBuffer buffer, VkDeviceSize offset = 0,
@@ -87,6 +90,7 @@ class PushDescriptors {
     std::uint32_t binding;
     VkDescriptorType type;
     std::size_t info;  // index into images_ or buffers_
+    std::uint32_t count = 1;
   };
   std::vector<Write> writes_;
   std::vector<VkDescriptorImageInfo> images_;

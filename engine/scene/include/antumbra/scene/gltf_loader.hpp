@@ -2,13 +2,15 @@
 // glTF 2.0 import (.gltf with external or embedded buffers, and .glb) through tinygltf.
 // Every index, offset, stride, count and component type is checked before any byte is
 // read, because tinygltf itself does not: a malformed file gives SC03x diagnostics,
-// never a crash or an endless recursion. Images are not decoded (untextured model).
+// never a crash or an endless recursion. Images are decoded through an ImageCache
+// (image_cache.hpp); one that cannot be used leaves its material's factor, with a warning.
 
 #include <cstddef>
 #include <string>
 #include <vector>
 
 #include "antumbra/base/diagnostics.hpp"
+#include "antumbra/scene/image_cache.hpp"
 #include "antumbra/scene/scene.hpp"
 
 namespace antumbra::scene {
@@ -18,19 +20,23 @@ struct GltfImport {
   // file names none). Vertices are in the primitive's local space; `transform` is the
   // node's world matrix; `material` indexes `materials`.
   std::vector<Mesh> meshes;
-  // glTF materials in file order (baseColorFactor -> albedo, metallic/roughness
-  // factors; alphaMode BLEND with alpha < 1 -> translucent), then one default material
-  // used by primitives without a material.
+  // glTF materials in file order (factors, textures, alpha mode, double-sidedness;
+  // alphaMode BLEND with alpha < 1 -> translucent), then one default material used by
+  // primitives without a material.
   std::vector<Material> materials;
+  std::vector<Texture> textures;  // what the materials' slots index
 };
 
 struct GltfLimits {
   std::size_t max_triangles = 10'000'000;
   std::size_t max_node_visits = 100'000;  // bounds instancing blow-ups
+  ImageLimits images;
 };
 
 // Diagnostics carry file = `path` and a JSON Pointer into the glTF (e.g. /accessors/3),
 // without line numbers.
-base::Result<GltfImport> load_gltf(const std::string& path, const GltfLimits& limits = {});
+// `cache` shares decoded images across loads; without one, this load has its own.
+base::Result<GltfImport> load_gltf(const std::string& path, const GltfLimits& limits = {},
+                                   ImageCache* cache = nullptr);
 
 }  // namespace antumbra::scene

@@ -11,8 +11,10 @@
 
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -41,13 +43,18 @@ struct Aabb {
   [[nodiscard]] Aabb transformed(const glm::mat4& transform) const;
 };
 
-// Interleaved, tightly packed (32 bytes): the GPU upload can copy the vector as is.
+// Interleaved, tightly packed. The GPU upload splits it into a position stream (what
+// depth passes read) and an attribute stream (texture coordinates and tangents).
 struct Vertex {
   glm::vec3 position{0.0f};
   glm::vec3 normal{0.0f, 1.0f, 0.0f};
-  glm::vec2 uv{0.0f};
+  glm::vec2 uv{0.0f};   // texture coordinate set 0
+  glm::vec2 uv1{0.0f};  // texture coordinate set 1 (glTF TEXCOORD_1)
+  // xyz: unit tangent along +u of set 0 (same space as `normal`), w: bitangent sign
+  // (+1 or -1). All zero where no normal map needs it (nothing generated).
+  glm::vec4 tangent{0.0f};
 };
-static_assert(sizeof(Vertex) == 32, "Vertex is uploaded as raw bytes");
+static_assert(sizeof(Vertex) == 56, "Vertex is tightly packed");
 
 // Light types (scene key "type"). A point light shadows through six cube faces, a spot
 // light through one perspective face along its cone, the directional sun through one
@@ -77,6 +84,46 @@ struct PointLight {
   float spot_outer = 40.0f;
 };
 
+// A decoded image: 8-bit RGBA, rows top to bottom, tightly packed. Shared between the
+// materials of every scene that uses it (ImageCache), hence immutable once built.
+struct ImageData {
+  std::string name;  // for messages and GPU object names: the file, or "<gltf>#/images/i"
+  std::uint32_t width = 0;
+  std::uint32_t height = 0;
+  std::vector<std::uint8_t> rgba;  // width * height * 4 bytes
+};
+
+enum class TextureWrap : std::uint8_t { repeat, clamp, mirror };
+
+// An image as a material samples it: colour space and sampler state (glTF "textures"
+// with their "samplers"). One image used as colour and as data gives two textures.
+struct Texture {
+  std::shared_ptr<const ImageData> image;
+  bool srgb = true;  // colour (base colour, emissive); false for data (normals, ...)
+  TextureWrap wrap_u = TextureWrap::repeat;
+  TextureWrap wrap_v = TextureWrap::repeat;
+  bool nearest = false;  // magnification filter NEAREST (pixel art, checkerboards)
+};
+
+// A material's use of a texture: which one, which coordinate set, and the
+// KHR_texture_transform of the coordinates (uv' = offset + R(rotation) * (scale * uv)).
+struct TextureSlot {
+  int texture = -1;  // into Scene::textures; -1: none (the factor alone)
+  int texcoord = 0;  // 0 or 1
+  glm::vec2 offset{0.0f};
+  glm::vec2 scale{1.0f};
+  float rotation = 0.0f;  // radians, counter-clockwise in uv as glTF defines it
+
+  [[nodiscard]] bool used() const { return texture >= 0; }
+  // The transform as the rows of a 2x3 matrix: uv' = (dot(r0.xy, uv) + r0.z, ...).
+  [[nodiscard]] std::pair<glm::vec3, glm::vec3> uv_rows() const;
+};
+
+// How a material's alpha (base colour factor times texture alpha) is used: ignored,
+// compared with `alpha_cutoff` (cut-outs: foliage, fences; honoured in every depth
+// pass), or as translucency (the tinted-shadow path).
+enum class AlphaMode : std::uint8_t { opaque, mask, blend };
+
 struct Material {
   std::string name;
   glm::vec3 albedo{0.8f};
@@ -87,6 +134,26 @@ struct Material {
   // meaningful when `translucent` is true.
   glm::vec4 transmittance{1.0f};
   bool translucent = false;
+  // glTF materials (docs/technique.md, "Materials"). Textures multiply the factors above.
+  float alpha = 1.0f;  // base colour factor's alpha
+  AlphaMode alpha_mode = AlphaMode::opaque;
+  float alpha_cutoff = 0.5f;
+  // Single-sided surfaces neither show nor cast shadows from their back (glTF's
+  // default); the scene format's primitives are double-sided.
+  bool double_sided = true;
+  glm::vec3 emissive{0.0f};  // linear radiance added to the lit colour
+  float normal_scale = 1.0f;
+  float occlusion_strength = 1.0f;
+  TextureSlot base_color_texture;          // sRGB rgb * albedo, a * alpha
+  TextureSlot metallic_roughness_texture;  // linear: g roughness, b metallic
+  TextureSlot normal_texture;              // linear tangent-space normal
+  TextureSlot occlusion_texture;           // linear: r ambient occlusion
+  TextureSlot emissive_texture;            // sRGB rgb * emissive
+
+  // Whether depth passes must test this material's alpha per fragment.
+  [[nodiscard]] bool alpha_tested() const {
+    return alpha_mode == AlphaMode::mask && (alpha < alpha_cutoff || base_color_texture.used());
+  }
 };
 
 struct Mesh {
@@ -134,6 +201,7 @@ struct Scene {
   Camera camera;
   std::vector<PointLight> lights;
   std::vector<Material> materials;  // never empty after parsing: [0] is the default
+  std::vector<Texture> textures;    // what Material::*_texture index
   std::vector<Mesh> meshes;
   glm::vec3 ambient{0.0f};
   Aabb bounds;  // world-space bounds of all meshes (lights not included)
@@ -148,6 +216,10 @@ struct Scene {
   [[nodiscard]] int find_light(std::string_view light_name) const;
   [[nodiscard]] int find_material(std::string_view material_name) const;
 };
+
+// Points `material`'s texture slots, which index `from`, at the same textures in `to`
+// (added to to.textures where not there yet): for merging imported materials.
+void import_textures(Material& material, const std::vector<Texture>& from, Scene& to);
 
 // World-space copy of a mesh's vertices (positions by `transform`, normals by its
 // normal matrix, renormalised), for uploads that want pre-transformed static geometry.

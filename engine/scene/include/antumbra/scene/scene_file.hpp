@@ -40,6 +40,7 @@
 
 #include "antumbra/base/diagnostics.hpp"
 #include "antumbra/base/json_document.hpp"
+#include "antumbra/scene/image_cache.hpp"
 #include "antumbra/scene/scene.hpp"
 
 namespace antumbra::scene {
@@ -51,10 +52,13 @@ inline constexpr int kMaxRepeatCopies = 4096;
 inline constexpr std::size_t kMaxSceneTriangles = std::size_t{1} << 26;
 
 // Reads, parses and validates a scene file; glTF paths resolve against its folder.
-base::Result<Scene> load_scene_file(const std::string& path);
+// `images` shares decoded textures across loads (reloads); without it each load
+// decodes its own.
+base::Result<Scene> load_scene_file(const std::string& path, ImageCache* images = nullptr);
 // Validates an already parsed document; glTF paths resolve against document.file()'s folder.
-base::Result<Scene> parse_scene(const base::JsonDocument& document);
+base::Result<Scene> parse_scene(const base::JsonDocument& document, ImageCache* images = nullptr);
 // Convenience for tests and the editor: parse JSON text reported as coming from `file`.
-base::Result<Scene> parse_scene_text(std::string_view text, const std::string& file);
+base::Result<Scene> parse_scene_text(std::string_view text, const std::string& file,
+                                     ImageCache* images = nullptr);
 
 }  // namespace antumbra::scene

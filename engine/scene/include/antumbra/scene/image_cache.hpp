@@ -1,0 +1,62 @@
+#pragma once
+// Decoding of material images (PNG, JPEG, BMP, TGA, ... through stb_image) with checks
+// before any pixel is allocated, and a cache so that an image used by several
+// materials, copies or instanced files is decoded once. No Vulkan: the GPU upload reads
+// the decoded ImageData.
+
+#include <cstddef>
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <span>
+#include <string>
+#include <variant>
+
+#include "antumbra/scene/scene.hpp"
+
+namespace antumbra::scene {
+
+struct ImageLimits {
+  std::uint32_t max_side = 16384;                     // pixels, either dimension
+  std::uint64_t max_pixels = std::uint64_t{1} << 26;  // 64 Mpixel (256 MiB decoded)
+};
+
+// The decoded image, or why it could not be decoded (a sentence for a diagnostic).
+using DecodedImage = std::variant<std::shared_ptr<const ImageData>, std::string>;
+
+// Decodes encoded image bytes to RGBA8. `name` becomes ImageData::name.
+DecodedImage decode_image(std::span<const std::uint8_t> bytes, const std::string& name,
+                          const ImageLimits& limits = {});
+
+// Decoded images by key. The key names the bytes' origin and version (a file's path,
+// size and modification time; a glTF's path, version and image index), so a changed
+// file is decoded again. Owned by whoever loads scenes (one per load by default, one
+// per session to share decodes across reloads).
+class ImageCache {
+ public:
+  // The cached image for `key`, or `decode()`'s result stored under it. Failures are
+  // not cached (the next load reports them again).
+  template <class Decode>
+  DecodedImage get(const std::string& key, Decode&& decode) {
+    if (const auto it = images_.find(key); it != images_.end()) {
+      ++hits_;
+      return it->second;
+    }
+    DecodedImage result = decode();
+    if (const auto* image = std::get_if<std::shared_ptr<const ImageData>>(&result)) {
+      images_.emplace(key, *image);
+    }
+    return result;
+  }
+  [[nodiscard]] std::size_t size() const { return images_.size(); }
+  [[nodiscard]] std::size_t hits() const { return hits_; }
+
+ private:
+  std::map<std::string, std::shared_ptr<const ImageData>> images_;
+  std::size_t hits_ = 0;
+};
+
+// "<path>|<size>|<mtime>" for a file on disk, or empty when it cannot be read.
+std::string file_version_key(const std::string& path);
+
+}  // namespace antumbra::scene

@@ -1,0 +1,109 @@
+// Sampling the scene's material textures (interface/shared/material_textures.h,
+// docs/technique.md "Materials"). The including shader defines the binding numbers
+// first:
+//   MATERIAL_SRGB_TEXTURES    the sRGB arrays (base colour, emissive)
+//   MATERIAL_LINEAR_TEXTURES  the linear arrays (normal, metallic-roughness, occlusion);
+//                             optional: depth passes only need alpha
+//   MATERIAL_SAMPLER          the sampler (trilinear, anisotropic, repeat)
+// Arrays are selected by constant indices in a switch, so no descriptor indexing is
+// needed; gradients are explicit because the branches are not uniform across a draw.
+// Clamp and mirror addressing and nearest magnification are done on the coordinates:
+// one sampler serves every texture (a choice between two samplers' results crashed
+// lavapipe's LLVM 15 shader compiler).
+#ifndef ANTUMBRA_MATERIAL_TEXTURES_GLSL
+#define ANTUMBRA_MATERIAL_TEXTURES_GLSL
+
+#include "../interface/shared/material_textures.h"
+#include "material.glsl"
+
+layout(set = 0, binding = MATERIAL_SRGB_TEXTURES) uniform texture2DArray
+    material_srgb_textures[kTextureBuckets];
+#ifdef MATERIAL_LINEAR_TEXTURES
+layout(set = 0, binding = MATERIAL_LINEAR_TEXTURES) uniform texture2DArray
+    material_linear_textures[kTextureBuckets];
+#endif
+layout(set = 0, binding = MATERIAL_SAMPLER) uniform sampler material_sampler;
+
+bool texture_present(uint code) { return (code & kTexturePresent) != 0u; }
+
+// The slot's texture coordinates (its set, then its KHR_texture_transform) from both
+// sets (xy, zw); with `offset` 0, the same for a gradient of them.
+vec2 slot_uv(GpuMaterial m, uint slot, uint code, vec4 uv01, float offset) {
+  vec2 uv = ((code >> 16) & 1u) != 0u ? uv01.zw : uv01.xy;
+  vec4 r0 = m.uv_rows[2u * slot];
+  vec4 r1 = m.uv_rows[2u * slot + 1u];
+  return vec2(dot(r0.xy, uv) + r0.z * offset, dot(r1.xy, uv) + r1.z * offset);
+}
+
+// Clamp and mirror addressing on top of the samplers' repeat.
+float wrap_coordinate(float u, uint mode, float half_texel) {
+  if (mode == 1u) return clamp(u, half_texel, 1.0 - half_texel);
+  if (mode == 2u) {
+    float m = mod(u, 2.0);
+    return m > 1.0 ? 2.0 - m : m;
+  }
+  return u;
+}
+
+#define MATERIAL_SAMPLE_ARRAY(arrays, b)                                                       \
+  textureGrad(sampler2DArray(arrays[b], material_sampler), p, dx, dy)
+
+#define MATERIAL_SAMPLE_SWITCH(arrays)   \
+  switch (bucket) {                      \
+    case 0u:                             \
+      return MATERIAL_SAMPLE_ARRAY(arrays, 0); \
+    case 1u:                             \
+      return MATERIAL_SAMPLE_ARRAY(arrays, 1); \
+    case 2u:                             \
+      return MATERIAL_SAMPLE_ARRAY(arrays, 2); \
+    case 3u:                             \
+      return MATERIAL_SAMPLE_ARRAY(arrays, 3); \
+    case 4u:                             \
+      return MATERIAL_SAMPLE_ARRAY(arrays, 4); \
+    default:                             \
+      return MATERIAL_SAMPLE_ARRAY(arrays, 5); \
+  }
+
+// Samples texture `code` at `uv` with gradients dx, dy (of the unwrapped coordinates).
+vec4 sample_material_texture(uint code, vec2 uv, vec2 dx, vec2 dy, bool srgb) {
+  uint bucket = (code >> 12) & 15u;
+  float half_texel = 0.5 / float(kTextureMinSize << bucket);
+  vec3 p = vec3(wrap_coordinate(uv.x, (code >> 17) & 3u, half_texel),
+                wrap_coordinate(uv.y, (code >> 19) & 3u, half_texel), float(code & 4095u));
+  float size = float(kTextureMinSize << bucket);
+  // Nearest magnification: bilinear filtering at a texel's centre is that texel.
+  if (((code >> 21) & 1u) != 0u && max(dot(dx, dx), dot(dy, dy)) * size * size <= 1.0) {
+    p.xy = (floor(p.xy * size) + 0.5) / size;
+  }
+#ifdef MATERIAL_LINEAR_TEXTURES
+  if (!srgb) {
+    MATERIAL_SAMPLE_SWITCH(material_linear_textures)
+  }
+#endif
+  MATERIAL_SAMPLE_SWITCH(material_srgb_textures)
+}
+
+// Samples a material slot: coordinates and their screen gradients of both sets.
+vec4 sample_slot(GpuMaterial m, uint slot, uint code, vec4 uv01, vec4 dx01, vec4 dy01,
+                 bool srgb) {
+  return sample_material_texture(code, slot_uv(m, slot, code, uv01, 1.0),
+                                 slot_uv(m, slot, code, dx01, 0.0),
+                                 slot_uv(m, slot, code, dy01, 0.0), srgb);
+}
+
+// The material's alpha at a point (base colour factor times texture), for cut-outs.
+// dx01, dy01: screen gradients of both coordinate sets; zero where there are none,
+// which samples the finest level.
+float material_alpha(GpuMaterial m, vec4 uv01, vec4 dx01, vec4 dy01) {
+  float alpha = m.albedo.a;
+  uint code = m.textures.x;
+  if (texture_present(code)) alpha *= sample_slot(m, 0u, code, uv01, dx01, dy01, true).a;
+  return alpha;
+}
+
+// Whether a fragment of material `m` is cut away (alphaMode MASK below its cutoff).
+bool material_cut(GpuMaterial m, vec4 uv01, vec4 dx01, vec4 dy01) {
+  return m.params.w >= 0.0 && material_alpha(m, uv01, dx01, dy01) < m.params.w;
+}
+
+#endif

@@ -1,0 +1,218 @@
+// glTF materials, textures and images: what imports, what is shared, and what a broken
+// or hostile texture gives (a located warning and the factor, or a located error).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+
+#include "../support/gltf_builder.hpp"
+#include "antumbra/base/diagnostic_codes.hpp"
+#include "antumbra/scene/gltf_loader.hpp"
+#include "antumbra/scene/image_cache.hpp"
+
+namespace antumbra::scene {
+namespace {
+
+namespace fs = std::filesystem;
+const std::string kAssimp = ANTUMBRA_GLTF_MODELS_DIR;
+
+fs::path fresh_dir(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("antumbra_gltf_material_" + name);
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+// The test quad with one textured material whose base colour image is `uri`.
+nlohmann::json textured_quad(const std::string& uri) {
+  nlohmann::json doc = testing::quad_gltf(2.0f, 0.0f);
+  doc["materials"] =
+      nlohmann::json::array({{{"name", "checker"},
+                              {"alphaMode", "MASK"},
+                              {"alphaCutoff", 0.4},
+                              {"doubleSided", true},
+                              {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}});
+  doc["textures"] = nlohmann::json::array({{{"source", 0}, {"sampler", 0}}});
+  doc["samplers"] = nlohmann::json::array(
+      {{{"magFilter", 9728}, {"minFilter", 9987}, {"wrapS", 33071}, {"wrapT", 33648}}});
+  doc["images"] = nlohmann::json::array({{{"uri", uri}}});
+  return doc;
+}
+
+TEST(GltfMaterial, TexturedBoxHasItsSrgbBaseColourImage) {
+  const std::string path = kAssimp + "/BoxTextured-glTF/BoxTextured.gltf";
+  if (!fs::exists(path)) GTEST_SKIP() << "assimp-testmodels not installed";
+  const auto result = load_gltf(path);
+  ASSERT_TRUE(result.ok()) << result.diagnostics().to_text();
+  EXPECT_EQ(result.diagnostics().warning_count(), 0u) << result.diagnostics().to_text();
+  ASSERT_EQ(result->textures.size(), 1u);
+  const Texture& t = result->textures[0];
+  ASSERT_TRUE(t.image);
+  EXPECT_EQ(t.image->width, 211u);  // CesiumLogoFlat.png
+  EXPECT_EQ(t.image->height, 211u);
+  EXPECT_EQ(t.image->rgba.size(), 211u * 211u * 4u);
+  EXPECT_TRUE(t.srgb);
+  const Material& m = result->materials[0];
+  EXPECT_EQ(m.base_color_texture.texture, 0);
+  EXPECT_EQ(m.alpha_mode, AlphaMode::opaque);
+  EXPECT_FALSE(m.double_sided);  // glTF's default
+  // Binary and embedded copies decode to the same pixels.
+  for (const char* other : {"/BoxTextured-glTF-Binary/BoxTextured.glb",
+                            "/BoxTextured-glTF-Embedded/BoxTextured.gltf"}) {
+    const auto copy = load_gltf(kAssimp + other);
+    ASSERT_TRUE(copy.ok()) << copy.diagnostics().to_text();
+    ASSERT_EQ(copy->textures.size(), 1u);
+    EXPECT_EQ(copy->textures[0].image->rgba, t.image->rgba) << other;
+  }
+}
+
+TEST(GltfMaterial, ImagesAreDecodedOncePerCache) {
+  const std::string path = kAssimp + "/BoxTextured-glTF/BoxTextured.gltf";
+  if (!fs::exists(path)) GTEST_SKIP() << "assimp-testmodels not installed";
+  ImageCache cache;
+  const auto a = load_gltf(path, {}, &cache);
+  const auto b = load_gltf(path, {}, &cache);
+  ASSERT_TRUE(a.ok() && b.ok());
+  EXPECT_EQ(cache.size(), 1u);
+  EXPECT_EQ(cache.hits(), 1u);
+  EXPECT_EQ(a->textures[0].image.get(), b->textures[0].image.get());
+}
+
+TEST(GltfMaterial, TextureTransformsAndSecondCoordinateSetImport) {
+  const std::string path = kAssimp + "/textureTransform/TextureTransformTest.gltf";
+  if (!fs::exists(path)) GTEST_SKIP() << "assimp-testmodels not installed";
+  const auto result = load_gltf(path);
+  ASSERT_TRUE(result.ok()) << result.diagnostics().to_text();
+  const int offset_u = [&] {
+    for (std::size_t i = 0; i < result->materials.size(); ++i) {
+      if (result->materials[i].name == "Offset U") return static_cast<int>(i);
+    }
+    return -1;
+  }();
+  ASSERT_GE(offset_u, 0);
+  const TextureSlot& slot =
+      result->materials[static_cast<std::size_t>(offset_u)].base_color_texture;
+  EXPECT_EQ(slot.offset, glm::vec2(0.5f, 0.0f));
+  const auto [r0, r1] = slot.uv_rows();
+  EXPECT_EQ(r0, glm::vec3(1.0f, 0.0f, 0.5f));
+  EXPECT_EQ(r1, glm::vec3(0.0f, 1.0f, 0.0f));
+  // A rotation of 90 degrees takes u to -v (glTF rotates counter-clockwise in uv).
+  TextureSlot rotated;
+  rotated.rotation = static_cast<float>(M_PI / 2);
+  const auto [q0, q1] = rotated.uv_rows();
+  EXPECT_NEAR(q0.x, 0.0f, 1e-6f);
+  EXPECT_NEAR(q1.x, -1.0f, 1e-6f);
+}
+
+TEST(GltfMaterial, MaskSamplerAndTangentsOfAGeneratedQuad) {
+  const fs::path dir = fresh_dir("mask");
+  testing::write_file(dir / "checker.png",
+                      testing::png_bytes(8, 8, testing::checkerboard_rgba(4, 2)));
+  nlohmann::json doc = textured_quad("checker.png");
+  doc["materials"][0]["normalTexture"] = {{"index", 0}, {"scale", 0.5}};
+  testing::write_json(dir / "quad.gltf", doc);
+  const auto result = load_gltf((dir / "quad.gltf").string());
+  ASSERT_TRUE(result.ok()) << result.diagnostics().to_text();
+  const Material& m = result->materials[0];
+  EXPECT_EQ(m.alpha_mode, AlphaMode::mask);
+  EXPECT_FLOAT_EQ(m.alpha_cutoff, 0.4f);
+  EXPECT_TRUE(m.double_sided);
+  EXPECT_TRUE(m.alpha_tested());
+  EXPECT_FLOAT_EQ(m.normal_scale, 0.5f);
+  // One image, two colour spaces: two textures.
+  ASSERT_EQ(result->textures.size(), 2u);
+  const Texture& base = result->textures[static_cast<std::size_t>(m.base_color_texture.texture)];
+  const Texture& normal = result->textures[static_cast<std::size_t>(m.normal_texture.texture)];
+  EXPECT_TRUE(base.srgb);
+  EXPECT_FALSE(normal.srgb);
+  EXPECT_EQ(base.image.get(), normal.image.get());
+  EXPECT_TRUE(base.nearest);
+  EXPECT_EQ(base.wrap_u, TextureWrap::clamp);
+  EXPECT_EQ(base.wrap_v, TextureWrap::mirror);
+  EXPECT_EQ(base.image->rgba[3], 255);        // texel (0,0): opaque
+  EXPECT_EQ(base.image->rgba[2 * 4 + 3], 0);  // texel (2,0): the next cell
+  // Generated tangents point along +u: +x on this quad, right-handed with +z as +v.
+  ASSERT_EQ(result->meshes.size(), 1u);
+  for (const Vertex& v : result->meshes[0].vertices) {
+    EXPECT_NEAR(v.tangent.x, 1.0f, 1e-5f);
+    EXPECT_NEAR(std::abs(v.tangent.w), 1.0f, 0.0f);
+    const glm::vec3 bitangent = glm::cross(v.normal, glm::vec3(v.tangent)) * v.tangent.w;
+    EXPECT_NEAR(bitangent.z, 1.0f, 1e-5f);
+  }
+}
+
+struct BadImage {
+  const char* name;
+  std::vector<std::uint8_t> bytes;  // empty: no file at all
+  const char* says;
+};
+
+// A PNG header (signature and IHDR) announcing `w` x `h`, with no image data after it.
+std::vector<std::uint8_t> png_header(std::uint32_t w, std::uint32_t h) {
+  std::vector<std::uint8_t> b = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n',
+                                 0,    0,   0,   13,  'I',  'H',  'D',  'R'};
+  for (const std::uint32_t v : {w, h}) {
+    for (int s = 24; s >= 0; s -= 8) b.push_back(static_cast<std::uint8_t>(v >> s));
+  }
+  b.insert(b.end(), {8, 6, 0, 0, 0, 0, 0, 0, 0});  // 8-bit RGBA, no interlace, CRC
+  return b;
+}
+
+TEST(GltfMaterial, BrokenImagesFallBackToTheFactorWithALocatedWarning) {
+  std::vector<std::uint8_t> truncated = testing::png_bytes(8, 8, testing::checkerboard_rgba(4, 2));
+  truncated.resize(truncated.size() / 2);
+  const std::vector<BadImage> cases = {
+      {"missing.png", {}, "not found"},
+      {"garbage.png", std::vector<std::uint8_t>(64, 0x5a), "not a decodable image"},
+      {"truncated.png", truncated, "corrupt"},
+      {"corrupt.jpg",
+       {0xff, 0xd8, 0xff, 0xe0, 0, 16, 'J', 'F', 'I', 'F', 0, 1, 1, 0, 0, 1},
+       "cannot be used"},
+      {"huge.png", png_header(16385, 100), "past the limit"},
+  };
+  for (const BadImage& c : cases) {
+    const fs::path dir = fresh_dir(std::string("bad_") + c.name);
+    if (!c.bytes.empty()) testing::write_file(dir / c.name, c.bytes);
+    testing::write_json(dir / "quad.gltf", textured_quad(c.name));
+    const auto result = load_gltf((dir / "quad.gltf").string());
+    ASSERT_TRUE(result.ok()) << c.name << ": " << result.diagnostics().to_text();
+    const base::Diagnostic* d = result.diagnostics().find(codes::scene::kGltfImage);
+    ASSERT_NE(d, nullptr) << c.name << ": " << result.diagnostics().to_text();
+    EXPECT_EQ(d->severity, base::Severity::warning);
+    EXPECT_EQ(d->pointer, "/images/0/uri") << c.name;
+    EXPECT_EQ(d->file, (dir / "quad.gltf").string());
+    EXPECT_NE(d->message.find(c.says), std::string::npos) << c.name << ": " << d->message;
+    EXPECT_NE(d->message.find(c.name), std::string::npos) << d->message;
+    EXPECT_FALSE(result->materials[0].base_color_texture.used()) << c.name;
+    EXPECT_TRUE(result->textures.empty());
+  }
+}
+
+TEST(GltfMaterial, ATextureIndexThatNamesNothingIsALocatedError) {
+  const fs::path dir = fresh_dir("bad_index");
+  testing::write_file(dir / "checker.png",
+                      testing::png_bytes(8, 8, testing::checkerboard_rgba(4, 2)));
+  nlohmann::json doc = textured_quad("checker.png");
+  doc["materials"][0]["emissiveTexture"] = {{"index", 7}};
+  testing::write_json(dir / "quad.gltf", doc);
+  const auto result = load_gltf((dir / "quad.gltf").string());
+  ASSERT_FALSE(result.ok());
+  const base::Diagnostic* d = result.diagnostics().find(codes::scene::kGltfBadReference);
+  ASSERT_NE(d, nullptr) << result.diagnostics().to_text();
+  EXPECT_EQ(d->pointer, "/materials/0/emissiveTexture/index");
+  EXPECT_NE(d->message.find("texture 7 does not exist"), std::string::npos) << d->message;
+}
+
+TEST(GltfMaterial, GltfOneIsRefusedWithAClearMessage) {
+  const std::string path =
+      std::string(ANTUMBRA_GLTF1_MODELS_DIR) + "/CesiumMilkTruck/CesiumMilkTruck.gltf";
+  if (!fs::exists(path)) GTEST_SKIP() << "assimp-testmodels not installed";
+  const auto result = load_gltf(path);
+  ASSERT_FALSE(result.ok());
+  const std::string text = result.diagnostics().to_text();
+  EXPECT_NE(text.find("glTF 1"), std::string::npos) << text;
+  EXPECT_NE(text.find("glTF 2.0"), std::string::npos) << text;
+}
+
+}  // namespace
+}  // namespace antumbra::scene
