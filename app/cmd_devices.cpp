@@ -34,7 +34,8 @@ int run_devices(const std::string& device, bool validation) {
                 info.name.c_str(), type, VK_API_VERSION_MAJOR(info.api_version),
                 VK_API_VERSION_MINOR(info.api_version), VK_API_VERSION_PATCH(info.api_version));
   }
-  std::printf("--device %s picks: %s\n", device.c_str(), context.device_name().c_str());
+  std::printf("--device %s picks: %s (%s)\n", device.c_str(), context.device_name().c_str(),
+              context.api_summary().c_str());
   return runtime::kExitOk;
 }
 

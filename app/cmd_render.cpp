@@ -156,6 +156,8 @@ runtime::SessionOptions session_options_for(const RenderOptions& options, unsign
   session_options.device = options.device;
   session_options.validation = options.validation;
   session_options.viewport = {width, height};
+  // `renderdoccmd capture ... render` captures the frame written (README).
+  session_options.capture_last_frame = true;
   return session_options;
 }
 

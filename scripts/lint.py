@@ -2,6 +2,8 @@
 """make lint: clang-format and clang-tidy over the project's own C++ sources.
 
 clang-format: every tracked .cpp/.hpp/.h file must already be formatted (no diff).
+Vulkan 1.3 core commands: no source calls those a Vulkan 1.2 device offers only through
+extensions (vkCmdBeginRendering, ...); they go through engine/core's vk_commands.hpp.
 clang-tidy: every translation unit of the build's compile_commands.json that lives in the
 repository is checked with the repository's .clang-tidy. Its WarningsAsErrors (naming,
 function size) fail the run; other findings are printed and counted.
@@ -17,6 +19,7 @@ import concurrent.futures
 import hashlib
 import json
 import os
+import re
 import shlex
 import subprocess
 import sys
@@ -43,6 +46,36 @@ def check_format(files):
                          "(run clang-format -i on them)\n")
         return False
     print(f"lint: clang-format: {len(files)} files formatted")
+    return True
+
+
+# Vulkan 1.3 commands that a 1.2 device (RenderDoc 1.24 reports every device as one) has
+# only under their KHR names: called directly, they crash there. vk_commands.cpp binds them.
+PROMOTED_COMMANDS = re.compile(
+    r"\bvk(CmdBeginRendering|CmdEndRendering|CmdPipelineBarrier2|CmdWriteTimestamp2|"
+    r"QueueSubmit2|GetDeviceImageMemoryRequirements|GetDeviceBufferMemoryRequirements|"
+    r"CmdSetEvent2|CmdWaitEvents2|CmdResetEvent2|CmdCopyBuffer2|CmdCopyImage2|CmdBlitImage2|"
+    r"CmdCopyBufferToImage2|CmdCopyImageToBuffer2|CmdResolveImage2)\s*\(")
+PROMOTED_ALLOWED = {"engine/core/src/vk_commands.cpp"}
+
+
+def check_promoted_commands(files):
+    failures = 0
+    for name in files:
+        if name in PROMOTED_ALLOWED or not (ROOT / name).is_file():
+            continue
+        text = (ROOT / name).read_text(errors="replace")
+        for number, line in enumerate(text.splitlines(), 1):
+            match = PROMOTED_COMMANDS.search(line)
+            if match:
+                failures += 1
+                sys.stderr.write(f"{name}:{number}: vk{match.group(1)} is Vulkan 1.3 core; call "
+                                 "its antumbra::gpu wrapper (antumbra/gpu/vk_commands.hpp), "
+                                 "which Vulkan 1.2 devices support through extensions\n")
+    if failures:
+        sys.stderr.write(f"lint: {failures} direct call(s) of Vulkan 1.3 commands\n")
+        return False
+    print(f"lint: Vulkan 1.3 commands: {len(files)} files call none directly")
     return True
 
 
@@ -133,7 +166,9 @@ def main():
     args = parser.parse_args()
     cache = Path(os.environ.get("ANTUMBRA_TIDY_CACHE",
                                 Path.home() / ".cache" / "antumbra-tidy"))
-    ok = check_format(tracked_sources())
+    sources = tracked_sources()
+    ok = check_format(sources)
+    ok = check_promoted_commands(sources) and ok
     if not args.format_only:
         ok = check_tidy((ROOT / args.build).resolve() if not Path(args.build).is_absolute()
                         else Path(args.build), args.jobs, cache) and ok

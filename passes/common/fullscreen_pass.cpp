@@ -1,6 +1,7 @@
 #include "fullscreen_pass.hpp"
 
 #include "antumbra/gpu/pipelines.hpp"
+#include "antumbra/gpu/vk_commands.hpp"
 #include "pass_support.hpp"
 
 namespace antumbra::passes {
@@ -34,13 +35,13 @@ void begin_fullscreen(VkCommandBuffer cmd, const fgvk::BoundImage& target) {
   rendering.layerCount = 1;
   rendering.colorAttachmentCount = 1;
   rendering.pColorAttachments = &color;
-  vkCmdBeginRendering(cmd, &rendering);
+  gpu::cmd_begin_rendering(cmd, &rendering);
   set_viewport(cmd, target.extent);
 }
 
 void end_fullscreen(VkCommandBuffer cmd) {
   vkCmdDraw(cmd, 3, 1, 0, 0);
-  vkCmdEndRendering(cmd);
+  gpu::cmd_end_rendering(cmd);
 }
 
 }  // namespace antumbra::passes

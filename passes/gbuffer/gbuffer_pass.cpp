@@ -4,6 +4,7 @@
 
 #include "antumbra/gpu/context.hpp"
 #include "antumbra/gpu/pipelines.hpp"
+#include "antumbra/gpu/vk_commands.hpp"
 #include "common/frame_data.hpp"
 #include "common/frame_resources.hpp"
 #include "common/pass_support.hpp"
@@ -104,7 +105,7 @@ void GBufferPass::execute(fgvk::ExecuteContext& context) {
   rendering.pDepthAttachment = &depth_attachment;
 
   const VkCommandBuffer cmd = context.cmd;
-  vkCmdBeginRendering(cmd, &rendering);
+  gpu::cmd_begin_rendering(cmd, &rendering);
   if (context.frame.index_count > 0) {
     set_viewport(cmd, depth.extent);
     gpu::PushDescriptors()
@@ -121,7 +122,7 @@ void GBufferPass::execute(fgvk::ExecuteContext& context) {
     const std::array<VkPipeline, 3> pipelines{pipelines_[0], pipelines_[1], pipelines_[2]};
     draw_by_class(cmd, context.frame, pipelines, {true, true});
   }
-  vkCmdEndRendering(cmd);
+  gpu::cmd_end_rendering(cmd);
 }
 
 }  // namespace antumbra::passes

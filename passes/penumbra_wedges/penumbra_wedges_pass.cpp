@@ -9,6 +9,7 @@
 #include "antumbra/gpu/context.hpp"
 #include "antumbra/gpu/pipelines.hpp"
 #include "antumbra/gpu/vk_check.hpp"
+#include "antumbra/gpu/vk_commands.hpp"
 #include "antumbra/scene/scene.hpp"
 #include "common/frame_data.hpp"
 #include "common/frame_resources.hpp"
@@ -415,13 +416,13 @@ void PenumbraWedgesPass::peel(fgvk::ExecuteContext& context, const PeelStep& ste
     rendering.renderArea = {{0, 0}, extent};
     rendering.layerCount = 1;
     rendering.pDepthAttachment = &depth;
-    vkCmdBeginRendering(cmd, &rendering);
+    gpu::cmd_begin_rendering(cmd, &rendering);
     set_viewport(cmd, extent);
     push_constants(cmd, layers, layer, extent);
     vkCmdBindVertexBuffers(cmd, 0, 1, &context.frame.vertices, &offset);
     vkCmdBindIndexBuffer(cmd, context.frame.indices, 0, VK_INDEX_TYPE_UINT32);
     vkCmdDrawIndexed(cmd, context.frame.index_count, 1, 0, 0, 0);
-    vkCmdEndRendering(cmd);
+    gpu::cmd_end_rendering(cmd);
   }
 }
 
@@ -454,13 +455,13 @@ void PenumbraWedgesPass::draw_wedges(fgvk::ExecuteContext& context, std::uint32_
     rendering.colorAttachmentCount = 1;
     rendering.pColorAttachments = &colour;
     rendering.pDepthAttachment = &depth;
-    vkCmdBeginRendering(cmd, &rendering);
+    gpu::cmd_begin_rendering(cmd, &rendering);
     set_viewport(cmd, penumbra.extent);
     push_constants(cmd, layers, layer, penumbra.extent);
     vkCmdDrawIndirect(cmd, args_buffer_.handle(),
                       VkDeviceSize{layer} * sizeof(VkDrawIndirectCommand), 1,
                       sizeof(VkDrawIndirectCommand));
-    vkCmdEndRendering(cmd);
+    gpu::cmd_end_rendering(cmd);
   }
 }
 

@@ -13,6 +13,7 @@
 #include "antumbra/gpu/context.hpp"
 #include "antumbra/gpu/pipelines.hpp"
 #include "antumbra/gpu/vk_check.hpp"
+#include "antumbra/gpu/vk_commands.hpp"
 #include "antumbra/scene/scene.hpp"
 #include "common/frame_data.hpp"
 #include "common/frame_resources.hpp"
@@ -514,7 +515,7 @@ void PointShadowAtlasPass::draw_layered(fgvk::ExecuteContext& context, const Atl
   }
   const VkCommandBuffer cmd = context.cmd;
   draw_over_cache(context, frame, draws);
-  vkCmdBeginRendering(cmd, &rendering);
+  gpu::cmd_begin_rendering(cmd, &rendering);
   set_viewport(cmd, atlas.extent);
   // One rect per run of consecutive layers.
   const auto runs = [&](auto&& wanted) {
@@ -557,7 +558,7 @@ void PointShadowAtlasPass::draw_layered(fgvk::ExecuteContext& context, const Atl
     draw_scene(context, draws, drawn_all, cached, context.frame.static_index_count,
                context.frame.index_count - context.frame.static_index_count);
   }
-  vkCmdEndRendering(cmd);
+  gpu::cmd_end_rendering(cmd);
 }
 
 // Before the atlas's rendering: faces whose cache is new get the static meshes drawn into
@@ -606,13 +607,13 @@ void PointShadowAtlasPass::draw_per_face(fgvk::ExecuteContext& context, const At
       rendering.colorAttachmentCount = 1;
       rendering.pColorAttachments = &colour_attachment;
     }
-    vkCmdBeginRendering(context.cmd, &rendering);
+    gpu::cmd_begin_rendering(context.cmd, &rendering);
     set_viewport(context.cmd, atlas.extent);
     if (entry[layer] >= 0) {
       draw_scene(context, draws, static_cast<std::uint32_t>(entry[layer]), 1, 0,
                  context.frame.index_count);
     }
-    vkCmdEndRendering(context.cmd);
+    gpu::cmd_end_rendering(context.cmd);
   }
 }
 

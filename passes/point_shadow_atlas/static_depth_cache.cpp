@@ -5,6 +5,7 @@
 #include "antumbra/gpu/commands.hpp"
 #include "antumbra/gpu/context.hpp"
 #include "antumbra/gpu/pipelines.hpp"
+#include "antumbra/gpu/vk_commands.hpp"
 #include "common/frame_resources.hpp"
 #include "common/pass_support.hpp"
 #include "point_shadow_atlas_interface.h"
@@ -99,7 +100,7 @@ void StaticDepthCache::fill(fgvk::ExecuteContext& context, VkBuffer draws, std::
   rendering.layerCount = layers_;
   rendering.pDepthAttachment = &depth;
   context.gpu.begin_label(cmd, context.pass.name + ".fillStaticCache");
-  vkCmdBeginRendering(cmd, &rendering);
+  gpu::cmd_begin_rendering(cmd, &rendering);
   set_viewport(cmd, extent_);
   std::vector<VkClearRect> rects;
   rects.reserve(layers.size());
@@ -120,7 +121,7 @@ void StaticDepthCache::fill(fgvk::ExecuteContext& context, VkBuffer draws, std::
         .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout);
     vkCmdDrawIndexed(cmd, context.frame.static_index_count, count, 0, 0, first);
   }
-  vkCmdEndRendering(cmd);
+  gpu::cmd_end_rendering(cmd);
   context.gpu.end_label(cmd);
 }
 

@@ -6,6 +6,7 @@
 #include "antumbra/gpu/commands.hpp"
 #include "antumbra/gpu/context.hpp"
 #include "antumbra/gpu/pipelines.hpp"
+#include "antumbra/gpu/vk_commands.hpp"
 #include "common/frame_resources.hpp"
 #include "common/pass_support.hpp"
 #include "common/ports.hpp"
@@ -257,7 +258,7 @@ void ShadowReferencePass::render_faces(fgvk::ExecuteContext& context, const refe
     target.depth.imageView = faces_.view();
     target.colour.imageView = tints_.view();
     target.rendering.layerCount = faces_.layers();
-    vkCmdBeginRendering(cmd, &target.rendering);
+    gpu::cmd_begin_rendering(cmd, &target.rendering);
     bind(opaque);
     for (std::size_t i = begin; i < run; ++i) {
       draw(batch.runs[i], batch.runs[i].first_face, batch.runs[i].face_count, false);
@@ -268,7 +269,7 @@ void ShadowReferencePass::render_faces(fgvk::ExecuteContext& context, const refe
         draw(batch.runs[i], batch.runs[i].first_face, batch.runs[i].face_count, true);
       }
     }
-    vkCmdEndRendering(cmd);
+    gpu::cmd_end_rendering(cmd);
     return;
   }
   // Without gl_Layer from the vertex stage: one rendering per layer (every layer is
@@ -277,7 +278,7 @@ void ShadowReferencePass::render_faces(fgvk::ExecuteContext& context, const refe
   for (std::uint32_t layer = 0; layer < faces_.layers(); ++layer) {
     target.depth.imageView = faces_.layer_view(layer);
     if (batch.tinted) target.colour.imageView = tints_.layer_view(layer);
-    vkCmdBeginRendering(cmd, &target.rendering);
+    gpu::cmd_begin_rendering(cmd, &target.rendering);
     const std::uint32_t slot = layer / reference::kFacesPerLight;
     const std::uint32_t face = layer % reference::kFacesPerLight;
     for (const bool tint : {false, true}) {
@@ -290,7 +291,7 @@ void ShadowReferencePass::render_faces(fgvk::ExecuteContext& context, const refe
         }
       }
     }
-    vkCmdEndRendering(cmd);
+    gpu::cmd_end_rendering(cmd);
   }
 }
 

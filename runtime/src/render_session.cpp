@@ -186,7 +186,10 @@ void RenderSession::render(int frames, TraceWriter* trace, const BeforeFrame& be
       frames_->abandon_frame();
       throw;
     }
+    const bool capture = options_.capture_last_frame && i + 1 == frames;
+    if (capture) gpu_->begin_debugger_capture();
     frames_->end_frame();
+    if (capture) gpu_->end_debugger_capture();
     if (trace != nullptr) {
       trace->add({"frame " + std::to_string(i), "cpu", frame_start * 1000.0,
                   (clock.elapsed_ms() - frame_start) * 1000.0, 1});

@@ -13,10 +13,29 @@ TEST_F(GpuTest, ContextWithValidationHasRequiredFeatures) {
   EXPECT_TRUE(ctx().validation_enabled());
   EXPECT_NE(ctx().device(), VK_NULL_HANDLE);
   EXPECT_NE(ctx().queue(), VK_NULL_HANDLE);
-  EXPECT_GE(ctx().properties().apiVersion, VK_API_VERSION_1_3);
+  EXPECT_GE(ctx().properties().apiVersion, VK_API_VERSION_1_2);
+  EXPECT_GE(ctx().api_version(), VK_API_VERSION_1_2);
   EXPECT_FALSE(ctx().device_name().empty());
   EXPECT_NE(ctx().ext().cmd_push_descriptor_set, nullptr);
   EXPECT_FALSE(ctx().devices().empty());
+}
+
+// Contexts alive at once share the binding of the Vulkan 1.3 commands (vk_commands.hpp):
+// one on a device used as 1.2 beside one on a 1.3 device is refused, with the reason.
+TEST_F(GpuTest, AContextOfTheOtherVulkanVersionIsRefusedWhileOneLives) {
+  if (ctx().api_version() < VK_API_VERSION_1_3) {
+    GTEST_SKIP() << "the device is used as Vulkan 1.2 (ANTUMBRA_VULKAN_API or RenderDoc)";
+  }
+  ContextOptions options = testing::validation_options();
+  options.max_api_version = VK_API_VERSION_1_2;
+  try {
+    const Context other(options);
+    ADD_FAILURE() << "a Vulkan 1.2 Context was created beside a 1.3 one";
+  } catch (const DeviceSelectionError& error) {
+    EXPECT_NE(std::string(error.what()).find("cannot be used while a Context on a Vulkan 1.3"),
+              std::string::npos)
+        << error.what();
+  }
 }
 
 TEST_F(GpuTest, SubmitsSignalTheTimeline) {

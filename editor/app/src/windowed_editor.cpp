@@ -286,8 +286,11 @@ class FrameLoop {
   }
 
   void render_and_present(const gpu::CpuTimer& frame_clock) {
-    session_.render(1, nullptr);
     const bool last = options_.frames > 0 && presented_ + 1 >= options_.frames;
+    // Under a graphics debugger (RenderDoc) the last of --frames is captured whole: graph,
+    // UI and present, with no key to press in the window.
+    if (last) session_.gpu().begin_debugger_capture();
+    session_.render(1, nullptr);
     // The window as presented where the swapchain can be read, else the graph's image.
     const bool from_window = presenter_.swapchain().readable();
     const fgvk::BoundImage* shown = session_.executor().image(state_.shown_resource());
@@ -305,6 +308,7 @@ class FrameLoop {
       // Scripts that drive the window wait for these lines.
       if (presented_ == 1 || options_.frame_log) std::fflush(stdout);
     }
+    if (last) session_.gpu().end_debugger_capture();
   }
 
   void finish_frame() {

@@ -3,6 +3,7 @@
 
 #include "antumbra/gpu/commands.hpp"
 #include "antumbra/gpu/resources.hpp"
+#include "antumbra/gpu/vk_commands.hpp"
 
 namespace antumbra::gpu {
 
@@ -101,7 +102,7 @@ VkMemoryRequirements Buffer::memory_requirements(const Context& context, VkDevic
   VkDeviceBufferMemoryRequirements query{VK_STRUCTURE_TYPE_DEVICE_BUFFER_MEMORY_REQUIREMENTS};
   query.pCreateInfo = &info;
   VkMemoryRequirements2 result{VK_STRUCTURE_TYPE_MEMORY_REQUIREMENTS_2};
-  vkGetDeviceBufferMemoryRequirements(context.device(), &query, &result);
+  get_device_buffer_memory_requirements(context.device(), &query, &result);
   return result.memoryRequirements;
 }
 

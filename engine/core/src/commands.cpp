@@ -1,5 +1,7 @@
 #include "antumbra/gpu/commands.hpp"
 
+#include "antumbra/gpu/vk_commands.hpp"
+
 namespace antumbra::gpu {
 
 VkImageMemoryBarrier2 to_vk(const ImageBarrier& barrier) {
@@ -22,7 +24,7 @@ void image_barrier(VkCommandBuffer cmd, const ImageBarrier& barrier) {
   VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
   dependency.imageMemoryBarrierCount = 1;
   dependency.pImageMemoryBarriers = &vk;
-  vkCmdPipelineBarrier2(cmd, &dependency);
+  cmd_pipeline_barrier2(cmd, &dependency);
 }
 
 void buffer_barrier(VkCommandBuffer cmd, VkBuffer buffer, VkPipelineStageFlags2 src_stage,
@@ -41,7 +43,7 @@ void buffer_barrier(VkCommandBuffer cmd, VkBuffer buffer, VkPipelineStageFlags2 
   VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
   dependency.bufferMemoryBarrierCount = 1;
   dependency.pBufferMemoryBarriers = &vk;
-  vkCmdPipelineBarrier2(cmd, &dependency);
+  cmd_pipeline_barrier2(cmd, &dependency);
 }
 
 void memory_barrier(VkCommandBuffer cmd, VkPipelineStageFlags2 src_stage, VkAccessFlags2 src_access,
@@ -54,7 +56,7 @@ void memory_barrier(VkCommandBuffer cmd, VkPipelineStageFlags2 src_stage, VkAcce
   VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
   dependency.memoryBarrierCount = 1;
   dependency.pMemoryBarriers = &vk;
-  vkCmdPipelineBarrier2(cmd, &dependency);
+  cmd_pipeline_barrier2(cmd, &dependency);
 }
 
 void set_viewport_scissor(VkCommandBuffer cmd, VkExtent2D extent) {

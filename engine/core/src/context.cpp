@@ -1,13 +1,16 @@
 // Context creation: instance, validation, device selection, device and queue.
 #include <algorithm>
 #include <cctype>
+#include <cstdlib>
 #include <cstring>
 #include <optional>
 #include <sstream>
+#include <stdexcept>
 
 #include <spdlog/spdlog.h>
 
 #include "antumbra/gpu/context.hpp"
+#include "antumbra/gpu/vk_commands.hpp"
 #include "device_selection.hpp"
 
 namespace antumbra::gpu {
@@ -43,12 +46,32 @@ void add_unique(std::vector<const char*>& list, const char* name) {
   }
 }
 
-void require_vulkan_1_3() {
+// ContextOptions::max_api_version, else ANTUMBRA_VULKAN_API, else 1.3.
+std::uint32_t requested_api_version(const ContextOptions& options) {
+  if (options.max_api_version != 0) return options.max_api_version;
+  const char* value = std::getenv("ANTUMBRA_VULKAN_API");
+  if (value == nullptr || *value == '\0') return VK_API_VERSION_1_3;
+  const std::string text = value;
+  if (text == "1.3") return VK_API_VERSION_1_3;
+  if (text == "1.2") return VK_API_VERSION_1_2;
+  // A configuration mistake, not a missing device: GPU tests fail on it instead of skipping.
+  throw std::invalid_argument("ANTUMBRA_VULKAN_API is '" + text + "': it must be 1.2 or 1.3");
+}
+
+// The instance's apiVersion: the requested version, unless the loader is older.
+std::uint32_t instance_api_version(const ContextOptions& options) {
+  const std::uint32_t requested = requested_api_version(options);
+  if (requested < VK_API_VERSION_1_2) {
+    throw std::invalid_argument("max_api_version below Vulkan 1.2: the engine needs 1.2 or 1.3");
+  }
   std::uint32_t loader_version = 0;
   if (vkEnumerateInstanceVersion(&loader_version) != VK_SUCCESS ||
-      loader_version < VK_API_VERSION_1_3) {
-    throw NoVulkanDeviceError("the Vulkan loader does not offer Vulkan 1.3");
+      loader_version < VK_API_VERSION_1_2) {
+    throw NoVulkanDeviceError("the Vulkan loader offers neither Vulkan 1.3 nor 1.2");
   }
+  const std::uint32_t loader = VK_MAKE_API_VERSION(0, VK_API_VERSION_MAJOR(loader_version),
+                                                   VK_API_VERSION_MINOR(loader_version), 0);
+  return std::min(requested, loader);
 }
 
 // Validation asked for but not installed fails loudly: a run without it would look clean.
@@ -106,6 +129,8 @@ void load_debug_utils_functions(VkInstance instance, ExtensionFunctions& ext) {
       vkGetInstanceProcAddr(instance, "vkCmdBeginDebugUtilsLabelEXT"));
   ext.cmd_end_label = reinterpret_cast<PFN_vkCmdEndDebugUtilsLabelEXT>(
       vkGetInstanceProcAddr(instance, "vkCmdEndDebugUtilsLabelEXT"));
+  ext.queue_insert_label = reinterpret_cast<PFN_vkQueueInsertDebugUtilsLabelEXT>(
+      vkGetInstanceProcAddr(instance, "vkQueueInsertDebugUtilsLabelEXT"));
 }
 
 }  // namespace
@@ -138,6 +163,7 @@ Context::Context(const ContextOptions& options) {
       allocator_.reset();
       vkDestroyDevice(device_, nullptr);
     }
+    if (commands_bound_) detail::unbind_vulkan13_commands();
     if (messenger_) {
       auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
           vkGetInstanceProcAddr(instance_, "vkDestroyDebugUtilsMessengerEXT"));
@@ -146,8 +172,9 @@ Context::Context(const ContextOptions& options) {
     if (instance_) vkDestroyInstance(instance_, nullptr);
     throw;
   }
-  spdlog::info("Vulkan device: {} ({}), validation {}", device_name_,
-               device_type_name(properties_.deviceType), validation_ ? "on" : "off");
+  spdlog::info("Vulkan device: {} ({}, {}), validation {}", device_name_,
+               device_type_name(properties_.deviceType), api_summary(), validation_ ? "on" : "off");
+  if (!capture_tool_.empty()) spdlog::info("graphics debugger: {}", capture_tool_);
 }
 
 Context::~Context() {
@@ -163,6 +190,7 @@ Context::~Context() {
     allocator_.reset();
     vkDestroyDevice(device_, nullptr);
   }
+  if (commands_bound_) detail::unbind_vulkan13_commands();
   if (messenger_) {
     auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
         vkGetInstanceProcAddr(instance_, "vkDestroyDebugUtilsMessengerEXT"));
@@ -175,8 +203,22 @@ bool Context::is_cpu() const {
   return properties_.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
 }
 
+std::string Context::api_summary() const {
+  std::string text = "Vulkan " + std::to_string(VK_API_VERSION_MAJOR(api_version_)) + "." +
+                     std::to_string(VK_API_VERSION_MINOR(api_version_));
+  if (api_version_ < VK_API_VERSION_1_3) {
+    const char* separator = " with ";
+    for (const char* name : kVulkan13Extensions) {
+      text += separator;
+      text += name;
+      separator = ", ";
+    }
+  }
+  return text;
+}
+
 void Context::create_instance(const ContextOptions& options) {
-  require_vulkan_1_3();
+  max_api_version_ = instance_api_version(options);
   validation_ = options.validation;
   const std::vector<const char*> layers = instance_layers(validation_);
   const InstanceExtensions extensions = choose_instance_extensions(options.instance_extensions);
@@ -185,7 +227,9 @@ void Context::create_instance(const ContextOptions& options) {
   VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
   app.pApplicationName = options.app_name.c_str();
   app.pEngineName = "antumbra";
-  app.apiVersion = VK_API_VERSION_1_3;
+  // A 1.3 device under a 1.2 instance is used as a 1.2 device: the validation layer then
+  // checks that nothing of 1.3 is used without its extension.
+  app.apiVersion = max_api_version_;
 
   // The messenger is chained into instance creation too, so messages from
   // vkCreateInstance/vkDestroyInstance are counted as well.
@@ -218,7 +262,7 @@ void Context::create_instance(const ContextOptions& options) {
   const VkResult result = vkCreateInstance(&info, nullptr, &instance_);
   if (result == VK_ERROR_INCOMPATIBLE_DRIVER) {
     throw NoVulkanDeviceError(
-        "no Vulkan 1.3 driver (vkCreateInstance: VK_ERROR_INCOMPATIBLE_DRIVER)");
+        "no Vulkan 1.2 or 1.3 driver (vkCreateInstance: VK_ERROR_INCOMPATIBLE_DRIVER)");
   }
   check(result, "vkCreateInstance");
 
@@ -242,15 +286,38 @@ void Context::select_physical_device(const ContextOptions& options) {
 
   std::vector<DeviceCandidate> candidates;
   for (std::uint32_t i = 0; i < count; ++i) {
-    candidates.push_back(
-        describe_device(physical[i], i, options.device_extensions, !options.headless));
+    candidates.push_back(describe_device(physical[i], i, options.device_extensions,
+                                         !options.headless, max_api_version_));
     devices_.push_back(candidates.back().info);
   }
   const DeviceCandidate& chosen = choose_device(candidates, options.device);
   physical_device_ = physical[chosen.info.index];
   queue_family_ = chosen.queue_family;
+  api_version_ = chosen.api_version;
   vkGetPhysicalDeviceProperties(physical_device_, &properties_);
   device_name_ = properties_.deviceName;
+  find_capture_tool();
+}
+
+void Context::find_capture_tool() {
+  // Core in 1.3; VK_EXT_tooling_info on a 1.2 device (RenderDoc offers it). A
+  // physical-device command of a device extension needs no enabled extension.
+  auto tools = reinterpret_cast<PFN_vkGetPhysicalDeviceToolProperties>(vkGetInstanceProcAddr(
+      instance_, api_version_ >= VK_API_VERSION_1_3 ? "vkGetPhysicalDeviceToolProperties"
+                                                    : "vkGetPhysicalDeviceToolPropertiesEXT"));
+  if (tools == nullptr) return;
+  std::uint32_t count = 0;
+  // A device without the extension may refuse the query: then no tool is known.
+  if (tools(physical_device_, &count, nullptr) != VK_SUCCESS) return;
+  std::vector<VkPhysicalDeviceToolProperties> properties(
+      count, VkPhysicalDeviceToolProperties{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_TOOL_PROPERTIES});
+  if (tools(physical_device_, &count, properties.data()) < VK_SUCCESS) return;
+  for (std::uint32_t i = 0; i < count; ++i) {
+    if ((properties[i].purposes & VK_TOOL_PURPOSE_TRACING_BIT) != 0) {
+      capture_tool_ = properties[i].name;
+      return;
+    }
+  }
 }
 
 }  // namespace antumbra::gpu

@@ -5,6 +5,7 @@
 #include <spdlog/spdlog.h>
 
 #include "antumbra/gpu/context.hpp"
+#include "antumbra/gpu/vk_commands.hpp"
 
 namespace antumbra::gpu {
 
@@ -30,6 +31,28 @@ void Context::begin_label(VkCommandBuffer cmd, std::string_view name,
 
 void Context::end_label(VkCommandBuffer cmd) const {
   if (ext_.cmd_end_label) ext_.cmd_end_label(cmd);
+}
+
+namespace {
+
+// RenderDoc starts and ends a capture on these queue labels: its in-application capture
+// API without linking or loading RenderDoc (Debian's 1.24 has them).
+void insert_queue_label(const ExtensionFunctions& ext, VkQueue queue, const char* name) {
+  VkDebugUtilsLabelEXT label{VK_STRUCTURE_TYPE_DEBUG_UTILS_LABEL_EXT};
+  label.pLabelName = name;
+  ext.queue_insert_label(queue, &label);
+}
+
+}  // namespace
+
+void Context::begin_debugger_capture() const {
+  if (capture_tool_.empty() || !ext_.queue_insert_label) return;
+  insert_queue_label(ext_, queue_, "capture-marker,begin_capture");
+}
+
+void Context::end_debugger_capture() const {
+  if (capture_tool_.empty() || !ext_.queue_insert_label) return;
+  insert_queue_label(ext_, queue_, "capture-marker,end_capture");
 }
 
 VKAPI_ATTR VkBool32 VKAPI_CALL Context::debug_callback(
@@ -89,7 +112,7 @@ std::uint64_t Context::submit(VkCommandBuffer cmd, const SubmitExtras& extras) {
   info.pCommandBufferInfos = &cmd_info;
   info.signalSemaphoreInfoCount = static_cast<std::uint32_t>(signals.size());
   info.pSignalSemaphoreInfos = signals.data();
-  check(vkQueueSubmit2(queue_, 1, &info, extras.fence), "vkQueueSubmit2");
+  check(queue_submit2(queue_, 1, &info, extras.fence), "vkQueueSubmit2");
   last_submitted_ = value;
   return value;
 }

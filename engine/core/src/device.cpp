@@ -1,23 +1,11 @@
 // Device creation: required features plus the optional ones the device offers.
 #include "antumbra/gpu/context.hpp"
+#include "antumbra/gpu/vk_commands.hpp"
 #include "device_selection.hpp"
 
 namespace antumbra::gpu {
 
 namespace {
-
-// The structs vkGetPhysicalDeviceFeatures2 fills and vkCreateDevice reads, chained by
-// pNext into the object itself, hence not copyable.
-struct FeatureChain {
-  FeatureChain() = default;
-  FeatureChain(const FeatureChain&) = delete;
-  FeatureChain& operator=(const FeatureChain&) = delete;
-
-  VkPhysicalDeviceVulkan13Features v13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
-  VkPhysicalDeviceVulkan12Features v12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES, &v13};
-  VkPhysicalDeviceVulkan11Features v11{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_FEATURES, &v12};
-  VkPhysicalDeviceFeatures2 features2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &v11};
-};
 
 // Optional: enable what is there and remember it.
 void enable_optional_features(const FeatureChain& supported, FeatureChain& enabled,
@@ -77,15 +65,23 @@ void enable_optional_features(const FeatureChain& supported, FeatureChain& enabl
 }  // namespace
 
 void Context::create_device(const ContextOptions& options) {
-  FeatureChain supported;
+  const bool core13 = api_version_ >= VK_API_VERSION_1_3;
+  FeatureChain supported(core13);
   vkGetPhysicalDeviceFeatures2(physical_device_, &supported.features2);
-  FeatureChain enabled;
+  FeatureChain enabled(core13);
 
-  // Required (checked during selection).
-  enabled.v13.dynamicRendering = VK_TRUE;
-  enabled.v13.synchronization2 = VK_TRUE;
-  // maintenance4: vkGetDeviceImageMemoryRequirements, for aliasing.
-  enabled.v13.maintenance4 = supported.v13.maintenance4;
+  // Required (checked during selection). maintenance4's commands
+  // (vkGetDeviceImageMemoryRequirements, for aliasing) come with 1.3 or the extension;
+  // its feature bit only adds guarantees, so it is taken where offered.
+  if (core13) {
+    enabled.v13.dynamicRendering = VK_TRUE;
+    enabled.v13.synchronization2 = VK_TRUE;
+    enabled.v13.maintenance4 = supported.v13.maintenance4;
+  } else {
+    enabled.dynamic_rendering.dynamicRendering = VK_TRUE;
+    enabled.synchronization2.synchronization2 = VK_TRUE;
+    enabled.maintenance4.maintenance4 = supported.maintenance4.maintenance4;
+  }
   enabled.v12.timelineSemaphore = VK_TRUE;
   enable_optional_features(supported, enabled, features_);
 
@@ -96,7 +92,7 @@ void Context::create_device(const ContextOptions& options) {
   queue_info.pQueuePriorities = &priority;
 
   const auto extension_names =
-      required_device_extensions(options.device_extensions, !options.headless);
+      required_device_extensions(options.device_extensions, !options.headless, api_version_);
   std::vector<const char*> extensions;
   extensions.reserve(extension_names.size());
   for (const auto& name : extension_names) extensions.push_back(name.c_str());
@@ -107,6 +103,8 @@ void Context::create_device(const ContextOptions& options) {
   info.enabledExtensionCount = static_cast<std::uint32_t>(extensions.size());
   info.ppEnabledExtensionNames = extensions.data();
   check(vkCreateDevice(physical_device_, &info, nullptr, &device_), "vkCreateDevice");
+  detail::bind_vulkan13_commands(instance_, !core13);
+  commands_bound_ = true;
   vkGetDeviceQueue(device_, queue_family_, 0, &queue_);
   ext_.cmd_push_descriptor_set = reinterpret_cast<PFN_vkCmdPushDescriptorSetKHR>(
       vkGetDeviceProcAddr(device_, "vkCmdPushDescriptorSetKHR"));

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cstring>
+#include <iterator>
 #include <sstream>
 
 namespace antumbra::gpu {
@@ -38,9 +39,12 @@ bool is_index(const std::string& text) {
 }  // namespace
 
 std::vector<std::string> required_device_extensions(const std::vector<std::string>& extra,
-                                                    bool swapchain) {
+                                                    bool swapchain, std::uint32_t api_version) {
   std::vector<std::string> names = {VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME};
   if (swapchain) names.emplace_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
+  if (api_version < VK_API_VERSION_1_3) {
+    for (const char* name : kVulkan13Extensions) names.emplace_back(name);
+  }
   for (const auto& name : extra) {
     if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
   }
@@ -48,13 +52,21 @@ std::vector<std::string> required_device_extensions(const std::vector<std::strin
 }
 
 DeviceCandidate describe_device(VkPhysicalDevice device, std::uint32_t index,
-                                const std::vector<std::string>& extra_extensions, bool swapchain) {
+                                const std::vector<std::string>& extra_extensions, bool swapchain,
+                                std::uint32_t max_api_version) {
   VkPhysicalDeviceProperties properties{};
   vkGetPhysicalDeviceProperties(device, &properties);
   DeviceCandidate candidate;
   candidate.info = {index, properties.deviceName, properties.deviceType, properties.apiVersion};
+  // The instance's apiVersion caps what the device may be used as (a 1.3 device under a
+  // 1.2 instance is a 1.2 device); the patch number says nothing about features.
+  candidate.api_version =
+      std::min(VK_MAKE_API_VERSION(0, VK_API_VERSION_MAJOR(properties.apiVersion),
+                                   VK_API_VERSION_MINOR(properties.apiVersion), 0),
+               max_api_version);
+  const bool core13 = candidate.api_version >= VK_API_VERSION_1_3;
   std::vector<std::string> missing;
-  if (properties.apiVersion < VK_API_VERSION_1_3) missing.emplace_back("Vulkan 1.3");
+  if (candidate.api_version < VK_API_VERSION_1_2) missing.emplace_back("Vulkan 1.2");
 
   std::uint32_t family_count = 0;
   vkGetPhysicalDeviceQueueFamilyProperties(device, &family_count, nullptr);
@@ -72,24 +84,42 @@ DeviceCandidate describe_device(VkPhysicalDevice device, std::uint32_t index,
   if (!found_queue) missing.emplace_back("a graphics+compute queue");
 
   std::uint32_t extension_count = 0;
-  vkEnumerateDeviceExtensionProperties(device, nullptr, &extension_count, nullptr);
+  check(vkEnumerateDeviceExtensionProperties(device, nullptr, &extension_count, nullptr),
+        "vkEnumerateDeviceExtensionProperties");
   std::vector<VkExtensionProperties> extensions(extension_count);
-  vkEnumerateDeviceExtensionProperties(device, nullptr, &extension_count, extensions.data());
-  for (const auto& name : required_device_extensions(extra_extensions, swapchain)) {
-    const bool present = std::any_of(extensions.begin(), extensions.end(),
-                                     [&](const auto& e) { return name == e.extensionName; });
-    if (!present) missing.push_back(name);
+  check(vkEnumerateDeviceExtensionProperties(device, nullptr, &extension_count, extensions.data()),
+        "vkEnumerateDeviceExtensionProperties");
+  auto offers = [&](const std::string& name) {
+    return std::any_of(extensions.begin(), extensions.end(),
+                       [&](const auto& e) { return name == e.extensionName; });
+  };
+  bool extensions_present = true;
+  for (const auto& name :
+       required_device_extensions(extra_extensions, swapchain, candidate.api_version)) {
+    if (!offers(name)) {
+      // Said of a 1.2 device only (1.3 has these in core), so the note tells why.
+      const bool for13 = std::any_of(std::begin(kVulkan13Extensions), std::end(kVulkan13Extensions),
+                                     [&](const char* n) { return name == n; });
+      missing.push_back(for13 ? name + " (needed below Vulkan 1.3)" : name);
+      extensions_present = false;
+    }
   }
 
-  if (properties.apiVersion >= VK_API_VERSION_1_3) {
-    VkPhysicalDeviceVulkan13Features f13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
-    VkPhysicalDeviceVulkan12Features f12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES,
-                                         &f13};
-    VkPhysicalDeviceFeatures2 f2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &f12};
-    vkGetPhysicalDeviceFeatures2(device, &f2);
-    if (!f13.dynamicRendering) missing.emplace_back("dynamicRendering");
-    if (!f13.synchronization2) missing.emplace_back("synchronization2");
-    if (!f12.timelineSemaphore) missing.emplace_back("timelineSemaphore");
+  if (candidate.api_version >= VK_API_VERSION_1_2 && (core13 || extensions_present)) {
+    FeatureChain features(core13);
+    vkGetPhysicalDeviceFeatures2(device, &features.features2);
+    if (core13) {
+      if (!features.v13.dynamicRendering) missing.emplace_back("dynamicRendering");
+      if (!features.v13.synchronization2) missing.emplace_back("synchronization2");
+    } else {
+      if (!features.dynamic_rendering.dynamicRendering) {
+        missing.emplace_back("dynamicRendering (of " VK_KHR_DYNAMIC_RENDERING_EXTENSION_NAME ")");
+      }
+      if (!features.synchronization2.synchronization2) {
+        missing.emplace_back("synchronization2 (of " VK_KHR_SYNCHRONIZATION_2_EXTENSION_NAME ")");
+      }
+    }
+    if (!features.v12.timelineSemaphore) missing.emplace_back("timelineSemaphore");
   }
   for (std::size_t i = 0; i < missing.size(); ++i) {
     candidate.missing += (i ? ", " : "") + missing[i];
@@ -104,7 +134,14 @@ std::string format_device_list(const std::vector<DeviceCandidate>& candidates) {
     out << "\n  [" << c.info.index << "] " << c.info.name << " (" << device_type_name(c.info.type)
         << ", Vulkan " << VK_API_VERSION_MAJOR(c.info.api_version) << "."
         << VK_API_VERSION_MINOR(c.info.api_version) << "."
-        << VK_API_VERSION_PATCH(c.info.api_version) << ")";
+        << VK_API_VERSION_PATCH(c.info.api_version);
+    const std::uint32_t reported = VK_MAKE_API_VERSION(0, VK_API_VERSION_MAJOR(c.info.api_version),
+                                                       VK_API_VERSION_MINOR(c.info.api_version), 0);
+    if (c.api_version < reported && c.api_version >= VK_API_VERSION_1_2) {
+      out << ", used as " << VK_API_VERSION_MAJOR(c.api_version) << "."
+          << VK_API_VERSION_MINOR(c.api_version);
+    }
+    out << ")";
     if (!c.missing.empty()) out << " unsuitable: lacks " << c.missing;
   }
   return out.str();

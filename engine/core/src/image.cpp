@@ -4,6 +4,7 @@
 
 #include "antumbra/gpu/commands.hpp"
 #include "antumbra/gpu/resources.hpp"
+#include "antumbra/gpu/vk_commands.hpp"
 
 namespace antumbra::gpu {
 
@@ -104,7 +105,7 @@ VkMemoryRequirements Image::memory_requirements(const Context& context, const Im
   VkDeviceImageMemoryRequirements query{VK_STRUCTURE_TYPE_DEVICE_IMAGE_MEMORY_REQUIREMENTS};
   query.pCreateInfo = &info;
   VkMemoryRequirements2 result{VK_STRUCTURE_TYPE_MEMORY_REQUIREMENTS_2};
-  vkGetDeviceImageMemoryRequirements(context.device(), &query, &result);
+  get_device_image_memory_requirements(context.device(), &query, &result);
   return result.memoryRequirements;
 }
 

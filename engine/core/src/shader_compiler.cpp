@@ -330,8 +330,10 @@ base::Result<ShaderBinary> ShaderCompiler::compile_glsl(const std::string& sourc
   shader.setEntryPoint("main");
   if (entry_point != "main") shader.setSourceEntryPoint(entry_point.c_str());
   shader.setEnvInput(glslang::EShSourceGlsl, language, glslang::EShClientVulkan, 100);
-  shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_3);
-  shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_6);
+  // Vulkan 1.2 / SPIR-V 1.5 for every device: a 1.2 device (RenderDoc 1.24 reports every
+  // device as one) rejects SPIR-V 1.6, and no shader needs what 1.6 adds.
+  shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_2);
+  shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_5);
 
   Includer includer(options_.include_dirs);
   const auto messages = static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules);

@@ -18,7 +18,7 @@ namespace fs = std::filesystem;
 
 namespace {
 // Bump when the compile settings change in a way that changes the SPIR-V.
-constexpr std::string_view kCacheVersion = "antumbra-spirv-3 glslang12 spv1.6 vk1.3";
+constexpr std::string_view kCacheVersion = "antumbra-spirv-4 glslang12 spv1.5 vk1.2";
 }  // namespace
 
 std::optional<std::string> read_text(const fs::path& path) {

@@ -2,6 +2,8 @@
 
 #include <string>
 
+#include "antumbra/gpu/vk_commands.hpp"
+
 namespace antumbra::gpu {
 
 namespace {
@@ -42,7 +44,7 @@ std::uint32_t GpuTimer::begin_scope(VkCommandBuffer cmd, std::string_view name) 
   scopes.names.emplace_back(name);
   scopes.depths.push_back(depth_++);
   scopes.pending = true;
-  vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, pool_,
+  cmd_write_timestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, pool_,
                        (slot_ * max_scopes_ + id) * 2);
   return id;
 }
@@ -50,7 +52,7 @@ std::uint32_t GpuTimer::begin_scope(VkCommandBuffer cmd, std::string_view name) 
 void GpuTimer::end_scope(VkCommandBuffer cmd, std::uint32_t scope) {
   if (depth_ > 0) --depth_;
   if (scope == kNoScope) return;
-  vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, pool_,
+  cmd_write_timestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, pool_,
                        (slot_ * max_scopes_ + scope) * 2 + 1);
 }
 

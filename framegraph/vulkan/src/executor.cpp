@@ -9,6 +9,7 @@
 #include "antumbra/gpu/context.hpp"
 #include "antumbra/gpu/handle.hpp"
 #include "antumbra/gpu/resources.hpp"
+#include "antumbra/gpu/vk_commands.hpp"
 
 namespace antumbra::fgvk {
 
@@ -305,7 +306,7 @@ void Executor::record_barriers(VkCommandBuffer cmd, const std::vector<fg::PlanBa
   dependency.pImageMemoryBarriers = image_barriers.data();
   dependency.bufferMemoryBarrierCount = static_cast<std::uint32_t>(buffer_barriers.size());
   dependency.pBufferMemoryBarriers = buffer_barriers.data();
-  vkCmdPipelineBarrier2(cmd, &dependency);
+  gpu::cmd_pipeline_barrier2(cmd, &dependency);
 }
 
 void Executor::record(VkCommandBuffer cmd, const FrameResources& frame, PassObserver* observer,

@@ -31,6 +31,9 @@ struct SessionOptions {
   // The windowed editor: surface extensions (GLFW's) and VK_KHR_swapchain on the device.
   std::vector<std::string> instance_extensions;
   bool present = false;
+  // Under a graphics debugger (RenderDoc), capture the last frame of every render() call:
+  // frames rendered headless have no present at which the debugger would capture.
+  bool capture_last_frame = false;
 };
 
 struct PassTiming {

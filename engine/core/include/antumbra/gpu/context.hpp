@@ -34,10 +34,22 @@ struct ContextOptions {
   std::vector<std::string> instance_extensions;
   std::vector<std::string> device_extensions;
   bool headless = true;  // false: VK_KHR_swapchain is enabled on the device as well
+  // The highest Vulkan version to use: VK_API_VERSION_1_2 treats every device as a 1.2
+  // device (the path RenderDoc 1.24 takes: dynamic rendering, synchronization2 and
+  // maintenance4 through their KHR extensions). 0: the ANTUMBRA_VULKAN_API environment
+  // variable ("1.2" or "1.3") when it is set, else 1.3.
+  std::uint32_t max_api_version = 0;
 };
 
+// Vulkan 1.3, or 1.2 with these extensions: a 1.2 device needs them (with their
+// dynamicRendering, synchronization2 features) for what 1.3 has in core.
+inline constexpr const char* kVulkan13Extensions[] = {VK_KHR_DYNAMIC_RENDERING_EXTENSION_NAME,
+                                                      VK_KHR_SYNCHRONIZATION_2_EXTENSION_NAME,
+                                                      VK_KHR_MAINTENANCE_4_EXTENSION_NAME};
+
 // Optional features that were found and enabled (required ones are always on:
-// dynamicRendering, synchronization2, timelineSemaphore, VK_KHR_push_descriptor).
+// dynamicRendering, synchronization2, timelineSemaphore, VK_KHR_push_descriptor, and on a
+// Vulkan 1.2 device kVulkan13Extensions).
 struct DeviceFeatures {
   bool sampler_anisotropy = false;
   bool storage_image_write_without_format = false;
@@ -59,7 +71,7 @@ struct DeviceInfo {
   std::uint32_t index = 0;
   std::string name;
   VkPhysicalDeviceType type = VK_PHYSICAL_DEVICE_TYPE_OTHER;
-  std::uint32_t api_version = 0;
+  std::uint32_t api_version = 0;  // what the device reports
 };
 
 struct ValidationMessage {
@@ -81,6 +93,7 @@ struct ExtensionFunctions {
   PFN_vkSetDebugUtilsObjectNameEXT set_object_name = nullptr;
   PFN_vkCmdBeginDebugUtilsLabelEXT cmd_begin_label = nullptr;
   PFN_vkCmdEndDebugUtilsLabelEXT cmd_end_label = nullptr;
+  PFN_vkQueueInsertDebugUtilsLabelEXT queue_insert_label = nullptr;
   PFN_vkCmdPushDescriptorSetKHR cmd_push_descriptor_set = nullptr;
 };
 
@@ -104,6 +117,10 @@ class Context {
   [[nodiscard]] const VkPhysicalDeviceLimits& limits() const { return properties_.limits; }
   [[nodiscard]] const std::string& device_name() const { return device_name_; }
   [[nodiscard]] bool is_cpu() const;
+  // The Vulkan version in use: the device's, capped by the instance's (max_api_version).
+  [[nodiscard]] std::uint32_t api_version() const { return api_version_; }
+  // "Vulkan 1.3", or "Vulkan 1.2 with VK_KHR_dynamic_rendering, ..." (logs, `devices`).
+  [[nodiscard]] std::string api_summary() const;
   [[nodiscard]] const DeviceFeatures& features() const { return features_; }
   [[nodiscard]] const ExtensionFunctions& ext() const { return ext_; }
   [[nodiscard]] Allocator& allocator() { return *allocator_; }
@@ -120,6 +137,15 @@ class Context {
   void begin_label(VkCommandBuffer cmd, std::string_view name,
                    std::array<float, 4> color = {0.f, 0.f, 0.f, 0.f}) const;
   void end_label(VkCommandBuffer cmd) const;
+
+  // The graphics debugger that captures frames in this process (RenderDoc), as the device
+  // reports it among its tools with the tracing purpose; empty when there is none.
+  [[nodiscard]] const std::string& capture_tool() const { return capture_tool_; }
+  // A debugger captures from one present to the next, and headless frames have none:
+  // these ask it to start and end a capture around submissions (the queue labels
+  // RenderDoc acts on). No-ops without a capture tool or VK_EXT_debug_utils.
+  void begin_debugger_capture() const;
+  void end_debugger_capture() const;
 
   // Validation-layer messages seen so far (errors and warnings, any thread).
   [[nodiscard]] std::size_t validation_error_count() const { return errors_.load(); }
@@ -159,10 +185,14 @@ class Context {
   void create_instance(const ContextOptions& options);
   void select_physical_device(const ContextOptions& options);
   void create_device(const ContextOptions& options);
+  void find_capture_tool();
   void destroy_now(const PendingDestroy& object);
 
   bool validation_ = false;
   bool debug_utils_ = false;
+  std::uint32_t max_api_version_ = VK_API_VERSION_1_3;  // the instance's apiVersion
+  std::uint32_t api_version_ = 0;
+  bool commands_bound_ = false;  // vk_commands.hpp bound for this device
   VkInstance instance_ = VK_NULL_HANDLE;
   VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
   VkPhysicalDevice physical_device_ = VK_NULL_HANDLE;
@@ -171,6 +201,7 @@ class Context {
   std::uint32_t queue_family_ = 0;
   VkPhysicalDeviceProperties properties_{};
   std::string device_name_;
+  std::string capture_tool_;
   DeviceFeatures features_;
   ExtensionFunctions ext_;
   std::vector<DeviceInfo> devices_;

@@ -104,7 +104,7 @@ class Image {
   // Binds into `heap` at `offset` (must respect memory_requirements().alignment).
   static Image create_placed(Context& context, const ImageDesc& desc, const MemoryHeap& heap,
                              VkDeviceSize offset);
-  // Without creating the image (vkGetDeviceImageMemoryRequirements).
+  // Without creating the image (get_device_image_memory_requirements).
   static VkMemoryRequirements memory_requirements(const Context& context, const ImageDesc& desc);
   Image(Image&& other) noexcept;
   Image& operator=(Image&& other) noexcept;
