@@ -178,6 +178,13 @@ void dispatch_groups(VkCommandBuffer cmd, VkExtent2D extent, std::uint32_t group
   vkCmdDispatch(cmd, group_count(extent.width, group), group_count(extent.height, group), depth);
 }
 
+void bind_scene_geometry(VkCommandBuffer cmd, const fgvk::FrameResources& frame) {
+  const std::array<VkBuffer, 2> streams{frame.vertices, frame.vertex_attributes};
+  const std::array<VkDeviceSize, 2> offsets{0, 0};
+  vkCmdBindVertexBuffers(cmd, 0, 2, streams.data(), offsets.data());
+  vkCmdBindIndexBuffer(cmd, frame.indices, 0, VK_INDEX_TYPE_UINT32);
+}
+
 void draw_by_class(VkCommandBuffer cmd, const fgvk::FrameResources& frame,
                    std::span<const VkPipeline, fgvk::kDrawClasses> pipelines,
                    std::array<bool, 2> halves, std::uint32_t instances,

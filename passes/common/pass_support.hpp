@@ -36,6 +36,9 @@ Shader load_shader(fgvk::PrepareContext& context, std::string_view relative,
                    const std::vector<gpu::ShaderDefine>& defines = {},
                    gpu::Fnv1a64* code = nullptr);
 
+// Binds the scene's two vertex streams (positions, attributes) and its index buffer.
+void bind_scene_geometry(VkCommandBuffer cmd, const fgvk::FrameResources& frame);
+
 // Draws the scene's index ranges by draw class (frame_resources.hpp), each with its
 // pipeline (VK_NULL_HANDLE: the class is skipped), for the static half, the dynamic half
 // or both (`halves`). Vertex and index buffers and descriptors are the caller's.

@@ -115,10 +115,7 @@ void GBufferPass::execute(fgvk::ExecuteContext& context) {
         .sampled_images(shared::kGbufferLinearTextures, context.frame.linear_textures)
         .sampler(shared::kGbufferSampler, context.frame.texture_sampler)
         .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_);
-    const std::array<VkBuffer, 2> streams{context.frame.vertices, context.frame.vertex_attributes};
-    const std::array<VkDeviceSize, 2> offsets{0, 0};
-    vkCmdBindVertexBuffers(cmd, 0, 2, streams.data(), offsets.data());
-    vkCmdBindIndexBuffer(cmd, context.frame.indices, 0, VK_INDEX_TYPE_UINT32);
+    bind_scene_geometry(cmd, context.frame);
     const std::array<VkPipeline, 3> pipelines{pipelines_[0], pipelines_[1], pipelines_[2]};
     draw_by_class(cmd, context.frame, pipelines, {true, true});
   }

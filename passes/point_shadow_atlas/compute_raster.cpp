@@ -13,6 +13,7 @@
 #include "common/own_buffer_sync.hpp"
 #include "common/ports.hpp"
 #include "common/shadow_data.hpp"
+#include "shared/material_textures.h"
 
 namespace antumbra::passes {
 namespace {
@@ -42,9 +43,12 @@ gpu::DescriptorSetLayoutBuilder raster_bindings() {
        {shared::kRasterClusters, shared::kRasterIndices, shared::kRasterVertices,
         shared::kRasterFaces, shared::kRasterCounters, shared::kRasterItems, shared::kRasterDepth,
         shared::kRasterTint, shared::kRasterMaterials, shared::kRasterDrawFlags,
-        shared::kRasterResolveList}) {
+        shared::kRasterResolveList, shared::kRasterAttributes}) {
     b.storage_buffer(binding, VK_SHADER_STAGE_COMPUTE_BIT);
   }
+  b.add(shared::kRasterSrgbTextures, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT,
+        shared::kTextureBuckets)
+      .sampler(shared::kRasterSampler, VK_SHADER_STAGE_COMPUTE_BIT);
   b.storage_image(shared::kRasterAtlas, VK_SHADER_STAGE_COMPUTE_BIT)
       .storage_image(shared::kRasterColour, VK_SHADER_STAGE_COMPUTE_BIT);
   return b;
@@ -287,7 +291,10 @@ void ComputeRasterizer::bind(fgvk::ExecuteContext& context, const ComputePipelin
       .storage_buffer(shared::kRasterTint, tint_ ? tint_.handle() : depth_.handle())
       .storage_buffer(shared::kRasterMaterials, context.frame.materials)
       .storage_buffer(shared::kRasterDrawFlags, decision_.draw_flags())
-      .storage_buffer(shared::kRasterResolveList, decision_.list());
+      .storage_buffer(shared::kRasterResolveList, decision_.list())
+      .storage_buffer(shared::kRasterAttributes, context.frame.vertex_attributes)
+      .sampled_images(shared::kRasterSrgbTextures, context.frame.srgb_textures)
+      .sampler(shared::kRasterSampler, context.frame.texture_sampler);
   if (&pipeline == &resolve_ && storage_atlas_) {
     descriptors.storage_image(shared::kRasterAtlas,
                               context.bindings.required_image(port::kAtlas).view);

@@ -83,6 +83,10 @@ ANTUMBRA_BINDING(kRasterAtlas, 9)         // r32f atlas, image2DArray (shadow_ra
 ANTUMBRA_BINDING(kRasterColour, 10)       // rgba8 colour map, image2DArray (the same)
 ANTUMBRA_BINDING(kRasterDrawFlags, 11)    // uint per record: the GPU decided to draw it
 ANTUMBRA_BINDING(kRasterResolveList, 12)  // uint records to resolve (face_decision.hpp)
+// Cut materials (shadow_raster.comp): texture coordinates and base-colour textures.
+ANTUMBRA_BINDING(kRasterAttributes, 13)    // GpuVertexAttributes[], parallel to the vertices
+ANTUMBRA_BINDING(kRasterSrgbTextures, 14)  // texture2DArray[kTextureBuckets]
+ANTUMBRA_BINDING(kRasterSampler, 15)
 
 // shadow_raster_resolve.comp's square workgroups.
 const uint kResolveGroup = 16;

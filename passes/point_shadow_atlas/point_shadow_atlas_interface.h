@@ -16,6 +16,9 @@ ANTUMBRA_BINDING(kAtlasFaces, 0)
 ANTUMBRA_BINDING(kAtlasMaterials, 1)
 // Fragment stage of the restore (shadow_restore.frag): the static depth cache, all layers.
 ANTUMBRA_BINDING(kAtlasCache, 2)
+// Fragment stage of cut draws (shadow_cut.frag): base-colour textures for alpha.
+ANTUMBRA_BINDING(kAtlasSrgbTextures, 3)
+ANTUMBRA_BINDING(kAtlasSampler, 4)
 
 ANTUMBRA_SHARED_END
 

@@ -20,6 +20,7 @@
 #include "common/pass_support.hpp"
 #include "common/ports.hpp"
 #include "point_shadow_atlas_interface.h"
+#include "shared/material_textures.h"
 
 namespace antumbra::passes {
 namespace {
@@ -57,8 +58,45 @@ gpu::DescriptorSetLayoutBuilder atlas_bindings() {
   gpu::DescriptorSetLayoutBuilder bindings;
   bindings.storage_buffer(shared::kAtlasFaces, VK_SHADER_STAGE_VERTEX_BIT)
       .storage_buffer(shared::kAtlasMaterials,
-                      VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT);
+                      VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT)
+      .add(shared::kAtlasSrgbTextures, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE,
+           VK_SHADER_STAGE_FRAGMENT_BIT, shared::kTextureBuckets)
+      .sampler(shared::kAtlasSampler, VK_SHADER_STAGE_FRAGMENT_BIT);
   return bindings;
+}
+
+gpu::GraphicsPipelineBuilder atlas_pipeline_base(const fgvk::PrepareContext& context,
+                                                 VkPipelineLayout layout, VkFormat depth,
+                                                 VkFormat colour) {
+  gpu::GraphicsPipelineBuilder b;
+  b.vertex_binding(0, sizeof(GpuVertex))
+      .vertex_attribute(0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(GpuVertex, position))
+      .vertex_attribute(2, 0, VK_FORMAT_R32_UINT, offsetof(GpuVertex, material))
+      .cull(VK_CULL_MODE_NONE)  // thin panes and open meshes cast from both sides
+      .depth_format(depth)
+      .layout(layout)
+      .cache(context.pipeline_cache);
+  if (colour != VK_FORMAT_UNDEFINED) b.color_formats({colour});
+  return b;
+}
+
+// One-sided and alpha-tested casters: the depth draw with a fragment shader that discards
+// (shadow_cut.frag), texture coordinates from the attribute stream. With a colour map
+// (`colour`) the attachment is declared but masked off, as for the plain depth draw.
+gpu::Pipeline build_cut_pipeline(fgvk::PrepareContext& context, VkPipelineLayout layout,
+                                 VkFormat depth, VkFormat colour,
+                                 std::array<const Shader*, 2> shaders,
+                                 const PointShadowAtlasParams& params, const char* name) {
+  auto cut = atlas_pipeline_base(context, layout, depth, colour);
+  cut.vertex_binding(1, sizeof(GpuVertexAttributes))
+      .vertex_attribute(3, 1, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(GpuVertexAttributes, uv))
+      .shader(VK_SHADER_STAGE_VERTEX_BIT, *shaders[0])
+      .shader(VK_SHADER_STAGE_FRAGMENT_BIT, *shaders[1])
+      .depth(true, true, VK_COMPARE_OP_LESS)
+      .depth_bias(params.depth_bias, params.slope_bias);
+  if (colour != VK_FORMAT_UNDEFINED) cut.color_write_mask(0, 0);
+  check_vertex_inputs(context.pass.name, *shaders[0], cut.vertex_attributes());
+  return cut.build(context.gpu, context.pass.name + name);
 }
 
 }  // namespace
@@ -150,24 +188,24 @@ void PointShadowAtlasPass::prepare_hardware(fgvk::PrepareContext& context,
   if (colour_) depth_defines.push_back({"SKIP_TRANSLUCENT", ""});
   auto depth_vert = load_shader(context, "point_shadow_atlas/shadow_atlas.vert", shader_files_,
                                 depth_defines, &key);
+  std::vector<gpu::ShaderDefine> cut_defines = depth_defines;
+  cut_defines.push_back({"CUT", ""});
+  auto cut_vert = load_shader(context, "point_shadow_atlas/shadow_atlas.vert", shader_files_,
+                              cut_defines, &key);
+  auto cut_frag =
+      load_shader(context, "point_shadow_atlas/shadow_cut.frag", shader_files_, {}, &key);
 
   const gpu::DescriptorSetLayoutBuilder bindings = atlas_bindings();
   check_shader_interface(context.pass.name, depth_vert, bindings, 0);
+  check_shader_interface(context.pass.name, cut_vert, bindings, 0);
+  check_shader_interface(context.pass.name, cut_frag, bindings, 0);
   set_layout_ = bindings.build(context.gpu, context.pass.name + ".set");
   const std::array<VkDescriptorSetLayout, 1> sets{set_layout_};
   layout_ = gpu::create_pipeline_layout(context.gpu, sets, {}, context.pass.name + ".layout");
 
-  auto base = [&]() {
-    gpu::GraphicsPipelineBuilder b;
-    b.vertex_binding(0, sizeof(GpuVertex))
-        .vertex_attribute(0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(GpuVertex, position))
-        .vertex_attribute(2, 0, VK_FORMAT_R32_UINT, offsetof(GpuVertex, material))
-        .cull(VK_CULL_MODE_NONE)  // thin panes and open meshes cast from both sides
-        .depth_format(atlas.format)
-        .layout(layout_)
-        .cache(context.pipeline_cache);
-    if (colour_map_) b.color_formats({colour->format});
-    return b;
+  const VkFormat colour_format = colour_map_ ? colour->format : VK_FORMAT_UNDEFINED;
+  const auto base = [&]() {
+    return atlas_pipeline_base(context, layout_, atlas.format, colour_format);
   };
   // Depth only: no fragment shader; with a colour map bound it is declared (the
   // rendering has it) but masked off.
@@ -178,6 +216,12 @@ void PointShadowAtlasPass::prepare_hardware(fgvk::PrepareContext& context,
   if (colour_map_) depth.color_write_mask(0, 0);
   check_vertex_inputs(context.pass.name, depth_vert, depth.vertex_attributes());
   depth_pipeline_ = depth.build(context.gpu, context.pass.name + ".depth");
+  const auto cut_pipeline = [&](bool with_colour) {
+    return build_cut_pipeline(
+        context, layout_, atlas.format, with_colour ? colour_format : VK_FORMAT_UNDEFINED,
+        {&cut_vert, &cut_frag}, params_, with_colour ? ".depthCut" : ".staticDepthCut");
+  };
+  cut_pipeline_ = cut_pipeline(true);
   if (static_cache_enabled_) {
     // The cache's rendering has no colour attachment: the same depth draw without one.
     auto fill = base();
@@ -187,7 +231,8 @@ void PointShadowAtlasPass::prepare_hardware(fgvk::PrepareContext& context,
         .depth_bias(params_.depth_bias, params_.slope_bias);
     static_cache_.prepare(context, atlas, colour_map_ ? colour->format : VK_FORMAT_UNDEFINED,
                           shader_files_, key);
-    static_cache_.set_fill_pipeline(fill.build(context.gpu, context.pass.name + ".staticDepth"));
+    static_cache_.set_fill_pipelines(fill.build(context.gpu, context.pass.name + ".staticDepth"),
+                                     cut_pipeline(false));
   }
   if (colour_) {
     auto colour_vert = load_shader(context, "point_shadow_atlas/shadow_atlas.vert", shader_files_,
@@ -471,22 +516,19 @@ bool PointShadowAtlasPass::layer_tinted(const AtlasFrame& frame, std::uint32_t l
 
 void PointShadowAtlasPass::draw_scene(fgvk::ExecuteContext& context, VkBuffer draws,
                                       std::uint32_t first, std::uint32_t count,
-                                      std::uint32_t first_index, std::uint32_t indices) {
-  if (indices == 0 || count == 0) return;
+                                      std::array<bool, 2> halves) {
+  if (count == 0) return;
   const VkCommandBuffer cmd = context.cmd;
-  const VkDeviceSize offset = 0;
-  vkCmdBindVertexBuffers(cmd, 0, 1, &context.frame.vertices, &offset);
-  vkCmdBindIndexBuffer(cmd, context.frame.indices, 0, VK_INDEX_TYPE_UINT32);
-  std::array<VkPipeline, 2> pipelines{depth_pipeline_, colour_pipeline_};
-  for (VkPipeline pipeline : pipelines) {
-    if (pipeline == VK_NULL_HANDLE) continue;
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
-    gpu::PushDescriptors()
-        .storage_buffer(shared::kAtlasFaces, draws)
-        .storage_buffer(shared::kAtlasMaterials, context.frame.materials)
-        .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_);
-    // Instance = face entry (firstInstance offsets gl_InstanceIndex in the fallback).
-    vkCmdDrawIndexed(cmd, indices, count, first_index, 0, first);
+  push_scene_draw_descriptors(context, draws, layout_);
+  // Instance = face entry (firstInstance offsets gl_InstanceIndex in the fallback).
+  const std::array<VkPipeline, fgvk::kDrawClasses> depth{depth_pipeline_, cut_pipeline_,
+                                                         cut_pipeline_};
+  draw_by_class(cmd, context.frame, depth, halves, count, first);
+  if (colour_pipeline_) {
+    // Translucent tints: every class alike (one-sidedness is the colour shader's own).
+    const VkPipeline c = colour_pipeline_;
+    draw_by_class(cmd, context.frame, std::array<VkPipeline, fgvk::kDrawClasses>{c, c, c}, halves,
+                  count, first);
   }
 }
 
@@ -550,13 +592,12 @@ void PointShadowAtlasPass::draw_layered(fgvk::ExecuteContext& context, const Atl
       vkCmdClearAttachments(cmd, 1, &clear, static_cast<std::uint32_t>(rects.size()), rects.data());
     }
   }
-  draw_scene(context, draws, 0, drawn_all, 0, context.frame.index_count);
+  draw_scene(context, draws, 0, drawn_all, {true, true});
   const auto cached = static_cast<std::uint32_t>(draw_order_.size()) - drawn_all;
   if (cached > 0) {
     // The static depth copied in, then only the dynamic meshes over it.
     static_cache_.restore(context, draws, drawn_all, cached);
-    draw_scene(context, draws, drawn_all, cached, context.frame.static_index_count,
-               context.frame.index_count - context.frame.static_index_count);
+    draw_scene(context, draws, drawn_all, cached, {false, true});
   }
   gpu::cmd_end_rendering(cmd);
 }
@@ -610,8 +651,7 @@ void PointShadowAtlasPass::draw_per_face(fgvk::ExecuteContext& context, const At
     gpu::cmd_begin_rendering(context.cmd, &rendering);
     set_viewport(context.cmd, atlas.extent);
     if (entry[layer] >= 0) {
-      draw_scene(context, draws, static_cast<std::uint32_t>(entry[layer]), 1, 0,
-                 context.frame.index_count);
+      draw_scene(context, draws, static_cast<std::uint32_t>(entry[layer]), 1, {true, true});
     }
     gpu::cmd_end_rendering(context.cmd);
   }

@@ -97,9 +97,10 @@ class PointShadowAtlasPass final : public fgvk::Pass {
   void draw_per_face(fgvk::ExecuteContext& context, const AtlasFrame& frame, VkBuffer draws);
   void prepare_hardware(fgvk::PrepareContext& context, const fgvk::BoundImage& atlas,
                         const fgvk::BoundImage* colour, gpu::Fnv1a64& key);
-  // Draw entries [first, first + count), indices [first_index, first_index + indices).
+  // Draw entries [first, first + count) of the static and/or dynamic half (`halves`),
+  // each draw class with its pipeline.
   void draw_scene(fgvk::ExecuteContext& context, VkBuffer draws, std::uint32_t first,
-                  std::uint32_t count, std::uint32_t first_index, std::uint32_t indices);
+                  std::uint32_t count, std::array<bool, 2> halves);
   // The layered path's faces that go through the static cache (fill, then restore + draw).
   void draw_over_cache(fgvk::ExecuteContext& context, const AtlasFrame& frame, VkBuffer draws);
 
@@ -127,6 +128,7 @@ class PointShadowAtlasPass final : public fgvk::Pass {
   gpu::DescriptorSetLayout set_layout_;
   gpu::PipelineLayout layout_;
   gpu::Pipeline depth_pipeline_;
+  gpu::Pipeline cut_pipeline_;  // one-sided and alpha-tested casters (shadow_cut.frag)
   gpu::Pipeline colour_pipeline_;
   std::vector<gpu::ImageView> depth_layer_views_;   // fallback path only
   std::vector<gpu::ImageView> colour_layer_views_;  // fallback path only

@@ -32,6 +32,17 @@ layout(location = 1) out float out_away;
 layout(location = 2) out float out_distance;
 #endif
 
+#ifdef CUT
+// Cut draws (one-sided and alpha-tested materials): shadow_cut.frag decides per fragment.
+layout(location = 3) in vec4 in_uv;
+layout(location = 0) flat out uint out_material;
+layout(location = 1) out vec4 out_uv;
+// 1 where the face's projection mirrors (cube faces follow the cube-map table, whose
+// (s, t, forward) is left-handed), so that gl_FrontFacing is flipped back to mean "the
+// surface's front faces the light" as it does for the camera and spot faces.
+layout(location = 2) flat out uint out_mirrored;
+#endif
+
 void main() {
   FaceDraw face = faces[gl_InstanceIndex];
   bool translucent = materials[in_material].params.z > 0.5;
@@ -53,6 +64,8 @@ void main() {
                                      dot(rw, in_normal) * clip.w
                                : dot(rz, in_normal);
   out_distance = dot(rw, rw) > 0.0 ? clip.w / max(uintBitsToFloat(face.info.z), 1e-6) : clip.z;
+#elif defined(CUT) && defined(SKIP_TRANSLUCENT)
+  bool keep = !translucent;
 #elif defined(SKIP_TRANSLUCENT)
   bool keep = !translucent;  // translucent casters tint through the colour map instead
 #else
@@ -61,6 +74,17 @@ void main() {
   // Every vertex of a dropped triangle lands beyond the far plane, so the triangle is
   // clipped before rasterisation (materials are per triangle, so all three agree).
   vec4 position = face.view_proj * vec4(in_position, 1.0);
+#ifdef CUT
+  {
+    mat4 m = face.view_proj;
+    vec3 rw = vec3(m[0][3], m[1][3], m[2][3]);
+    vec3 third = dot(rw, rw) > 0.0 ? rw : vec3(m[0][2], m[1][2], m[2][2]);
+    mat3 rows = mat3(vec3(m[0][0], m[1][0], m[2][0]), vec3(m[0][1], m[1][1], m[2][1]), third);
+    out_mirrored = determinant(rows) < 0.0 ? 1u : 0u;
+    out_material = in_material;
+    out_uv = in_uv;
+  }
+#endif
   // A face smaller than the layer fills the square [0, share) of its uv: the face's
   // [-w, w] maps onto [-w, (2 share - 1) w]; what lands beyond it is never read.
   float share = uintBitsToFloat(face.info.w);

@@ -9,8 +9,20 @@
 #include "common/frame_resources.hpp"
 #include "common/pass_support.hpp"
 #include "point_shadow_atlas_interface.h"
+#include "shared/material_textures.h"
 
 namespace antumbra::passes {
+
+void push_scene_draw_descriptors(fgvk::ExecuteContext& context, VkBuffer draws,
+                                 VkPipelineLayout layout) {
+  bind_scene_geometry(context.cmd, context.frame);
+  gpu::PushDescriptors()
+      .storage_buffer(shared::kAtlasFaces, draws)
+      .storage_buffer(shared::kAtlasMaterials, context.frame.materials)
+      .sampled_images(shared::kAtlasSrgbTextures, context.frame.srgb_textures)
+      .sampler(shared::kAtlasSampler, context.frame.texture_sampler)
+      .push(context.gpu, context.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout);
+}
 namespace {
 
 constexpr VkPipelineStageFlags2 kDepthStages =
@@ -111,15 +123,10 @@ void StaticDepthCache::fill(fgvk::ExecuteContext& context, VkBuffer draws, std::
     vkCmdClearAttachments(cmd, 1, &clear, static_cast<std::uint32_t>(rects.size()), rects.data());
   }
   if (context.frame.static_index_count > 0 && count > 0) {
-    const VkDeviceSize offset = 0;
-    vkCmdBindVertexBuffers(cmd, 0, 1, &context.frame.vertices, &offset);
-    vkCmdBindIndexBuffer(cmd, context.frame.indices, 0, VK_INDEX_TYPE_UINT32);
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, fill_pipeline_);
-    gpu::PushDescriptors()
-        .storage_buffer(shared::kAtlasFaces, draws)
-        .storage_buffer(shared::kAtlasMaterials, context.frame.materials)
-        .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout);
-    vkCmdDrawIndexed(cmd, context.frame.static_index_count, count, 0, 0, first);
+    push_scene_draw_descriptors(context, draws, layout);
+    const std::array<VkPipeline, fgvk::kDrawClasses> pipelines{fill_pipeline_, cut_fill_pipeline_,
+                                                               cut_fill_pipeline_};
+    draw_by_class(cmd, context.frame, pipelines, {true, false}, count, first);
   }
   gpu::cmd_end_rendering(cmd);
   context.gpu.end_label(cmd);

@@ -16,6 +16,11 @@
 
 namespace antumbra::passes {
 
+// Binds the scene's geometry and pushes the atlas set for a scene draw into the faces of
+// `draws` (shadow_atlas.vert, shadow_cut.frag): the atlas's draws and the cache's fill.
+void push_scene_draw_descriptors(fgvk::ExecuteContext& context, VkBuffer draws,
+                                 VkPipelineLayout layout);
+
 class StaticDepthCache {
  public:
   // Builds the restore pipeline for `atlas` (and, when `colour_format` is not undefined,
@@ -24,7 +29,11 @@ class StaticDepthCache {
                std::vector<std::string>& shader_files, gpu::Fnv1a64& key);
   // The pipeline that draws static meshes into the cache (the atlas's depth pipeline
   // without its colour attachment), built by the pass.
-  void set_fill_pipeline(gpu::Pipeline pipeline) { fill_pipeline_ = std::move(pipeline); }
+  // The static depth draw: two-sided casters, and one-sided and cut ones.
+  void set_fill_pipelines(gpu::Pipeline pipeline, gpu::Pipeline cut) {
+    fill_pipeline_ = std::move(pipeline);
+    cut_fill_pipeline_ = std::move(cut);
+  }
 
   // Outside any rendering: clears `layers` of the cache and draws the static meshes
   // (indices [0, static_indices)) of draw entries [first, first + count) into them.
@@ -53,6 +62,7 @@ class StaticDepthCache {
   gpu::PipelineLayout restore_layout_;
   gpu::Pipeline restore_pipeline_;
   gpu::Pipeline fill_pipeline_;
+  gpu::Pipeline cut_fill_pipeline_;
 };
 
 }  // namespace antumbra::passes

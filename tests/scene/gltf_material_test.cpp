@@ -17,7 +17,7 @@ namespace fs = std::filesystem;
 const std::string kAssimp = ANTUMBRA_GLTF_MODELS_DIR;
 
 fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("antumbra_gltf_material_" + name);
+  fs::path dir = fs::temp_directory_path() / ("antumbra_gltf_material_" + name);
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;

@@ -60,6 +60,54 @@ void compute_normals(Mesh& mesh, bool only_unusable) {
   }
 }
 
+// An attribute of `n` elements beside POSITION's `count`.
+bool same_count(std::size_t n, std::size_t count, const char* what, const std::string& p,
+                GltfIssue& issue) {
+  if (n == count) return true;
+  return fail(issue, codes::scene::kGltfCountMismatch,
+              std::string(what) + " has " + std::to_string(n) + " elements but POSITION has " +
+                  std::to_string(count),
+              p + "/attributes/" + what);
+}
+
+struct ShadingAttributes {
+  std::vector<glm::vec2> uvs;
+  std::vector<glm::vec2> uvs1;
+  std::vector<glm::vec4> tangents;  // read only when a normal map needs them
+};
+
+// TEXCOORD_0, TEXCOORD_1 and TANGENT, each `count` long when present.
+bool read_shading_attributes(const tinygltf::Model& model, const tinygltf::Primitive& prim,
+                             const std::string& p, std::size_t count, bool want_tangents,
+                             ShadingAttributes& out, GltfIssue& issue,
+                             std::vector<GltfIssue>& warnings) {
+  const auto check_count = [&](std::size_t n, const char* what) {
+    return same_count(n, count, what, p, issue);
+  };
+  for (const char* set : {"TEXCOORD_0", "TEXCOORD_1"}) {
+    const int id = attribute(prim, set);
+    if (id < 0) continue;
+    auto& target = std::string_view(set) == "TEXCOORD_0" ? out.uvs : out.uvs1;
+    if (!read_texcoords(model, id, p + "/attributes/" + set, set, target, issue)) return false;
+    if (!check_count(target.size(), set)) return false;
+  }
+  const int id = attribute(prim, "TANGENT");
+  if (id < 0 || !want_tangents) return true;
+  if (!read_tangents(model, id, p + "/attributes/TANGENT", out.tangents, issue)) return false;
+  if (!check_count(out.tangents.size(), "TANGENT")) return false;
+  // Unusable ones (zero, NaN) make the whole set generated instead.
+  for (const glm::vec4& t : out.tangents) {
+    if (!usable_normal(glm::vec3(t)) || !std::isfinite(t.w)) {
+      warnings.push_back({codes::scene::kGltfNonFinite,
+                          "TANGENT has zero or non-finite vectors; tangents are generated",
+                          p + "/attributes/TANGENT"});
+      out.tangents.clear();
+      break;
+    }
+  }
+  return true;
+}
+
 }  // namespace
 
 void generate_tangents(Mesh& mesh, int set) {
@@ -128,46 +176,20 @@ bool build_primitive_mesh(const tinygltf::Model& model, const tinygltf::Primitiv
   }
   const std::size_t count = positions.size();
   const auto check_count = [&](std::size_t n, const char* what) {
-    if (n == count) return true;
-    return fail(issue, codes::scene::kGltfCountMismatch,
-                std::string(what) + " has " + std::to_string(n) + " elements but POSITION has " +
-                    std::to_string(count),
-                p + "/attributes/" + what);
+    return same_count(n, count, what, p, issue);
   };
   std::vector<glm::vec3> normals;
   if (const int id = attribute(prim, "NORMAL"); id >= 0) {
     if (!read_normals(model, id, p + "/attributes/NORMAL", normals, issue)) return false;
     if (!check_count(normals.size(), "NORMAL")) return false;
   }
-  std::vector<glm::vec2> uvs;
-  if (const int id = attribute(prim, "TEXCOORD_0"); id >= 0) {
-    if (!read_texcoords(model, id, p + "/attributes/TEXCOORD_0", "TEXCOORD_0", uvs, issue)) {
-      return false;
-    }
-    if (!check_count(uvs.size(), "TEXCOORD_0")) return false;
+  ShadingAttributes shading;
+  if (!read_shading_attributes(model, prim, p, count, tangent_set >= 0, shading, issue, warnings)) {
+    return false;
   }
-  std::vector<glm::vec2> uvs1;
-  if (const int id = attribute(prim, "TEXCOORD_1"); id >= 0) {
-    if (!read_texcoords(model, id, p + "/attributes/TEXCOORD_1", "TEXCOORD_1", uvs1, issue)) {
-      return false;
-    }
-    if (!check_count(uvs1.size(), "TEXCOORD_1")) return false;
-  }
-  std::vector<glm::vec4> tangents;
-  if (const int id = attribute(prim, "TANGENT"); id >= 0 && tangent_set >= 0) {
-    if (!read_tangents(model, id, p + "/attributes/TANGENT", tangents, issue)) return false;
-    if (!check_count(tangents.size(), "TANGENT")) return false;
-    // Unusable ones (zero, NaN) make the whole set generated instead.
-    for (const glm::vec4& t : tangents) {
-      if (!usable_normal(glm::vec3(t)) || !std::isfinite(t.w)) {
-        warnings.push_back({codes::scene::kGltfNonFinite,
-                            "TANGENT has zero or non-finite vectors; tangents are generated",
-                            p + "/attributes/TANGENT"});
-        tangents.clear();
-        break;
-      }
-    }
-  }
+  const auto& uvs = shading.uvs;
+  const auto& uvs1 = shading.uvs1;
+  const auto& tangents = shading.tangents;
   std::vector<std::uint32_t> indices;
   if (prim.indices >= 0) {
     if (!read_indices(model, prim.indices, p + "/indices", indices, issue)) return false;

@@ -30,7 +30,7 @@ DecodedImage decode_image(std::span<const std::uint8_t> bytes, const std::string
       w * h > limits.max_pixels) {
     return "its size " + std::to_string(width) + "x" + std::to_string(height) +
            " is past the limit (" + std::to_string(limits.max_side) + " pixels a side, " +
-           std::to_string(limits.max_pixels / (1024 * 1024)) + " Mpixel)";
+           std::to_string(limits.max_pixels / (std::uint64_t{1024} * 1024)) + " Mpixel)";
   }
   int got_w = 0;
   int got_h = 0;
