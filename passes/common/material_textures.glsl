@@ -106,4 +106,36 @@ bool material_cut(GpuMaterial m, vec4 uv01, vec4 dx01, vec4 dy01) {
   return m.params.w >= 0.0 && material_alpha(m, uv01, dx01, dy01) < m.params.w;
 }
 
+#ifdef MATERIAL_LINEAR_TEXTURES
+// What the G-buffer stores for a point of material `m` (gbuffer.frag and the compute
+// G-buffer's resolve): the view-space normal `n` (unit, already turned towards the
+// viewer on back faces) bent by the normal map along the view-space tangent `t` (w: the
+// bitangent's sign, 0 where there is none), roughness, albedo and metallic.
+void material_gbuffer(GpuMaterial m, vec3 n, vec4 t, vec4 uv, vec4 dx, vec4 dy,
+                      out vec4 normal_roughness, out vec4 albedo_metallic) {
+  vec4 base = vec4(m.albedo.rgb, 1.0);
+  if (texture_present(m.textures.x)) base *= sample_slot(m, 0u, m.textures.x, uv, dx, dy, true);
+  float roughness = m.params.x;
+  float metallic = m.params.y;
+  if (texture_present(m.textures.y)) {
+    vec4 mr = sample_slot(m, 1u, m.textures.y, uv, dx, dy, false);
+    roughness *= mr.g;
+    metallic *= mr.b;
+  }
+  if (texture_present(m.textures.z) && t.w != 0.0) {
+    vec3 tn = sample_slot(m, 2u, m.textures.z, uv, dx, dy, false).xyz * 2.0 - 1.0;
+    tn.xy *= m.emissive.w;  // normalTexture.scale
+    vec3 tangent = t.xyz - n * dot(n, t.xyz);
+    if (dot(tangent, tangent) > 1e-12) {
+      tangent = normalize(tangent);
+      vec3 bitangent = cross(n, tangent) * (t.w < 0.0 ? -1.0 : 1.0);
+      vec3 mapped = tangent * tn.x + bitangent * tn.y + n * tn.z;
+      if (dot(mapped, mapped) > 1e-12) n = normalize(mapped);
+    }
+  }
+  normal_roughness = vec4(n, roughness);
+  albedo_metallic = vec4(base.rgb, metallic);
+}
+#endif
+
 #endif

@@ -27,29 +27,11 @@ void main() {
   if (material_cut(m, in_uv, dx, dy)) discard;
 #endif
   vec3 n = normalize(in_view_normal);
-  vec3 t = in_view_tangent.xyz;
+  vec4 t = in_view_tangent;
   // Two-sided: thin panes and planes are seen from both sides.
   if (!gl_FrontFacing) {
     n = -n;
-    t = -t;
+    t.xyz = -t.xyz;
   }
-  vec4 base = vec4(m.albedo.rgb, 1.0);
-  if (texture_present(m.textures.x)) base *= sample_slot(m, 0u, m.textures.x, in_uv, dx, dy, true);
-  float roughness = m.params.x;
-  float metallic = m.params.y;
-  if (texture_present(m.textures.y)) {
-    vec4 mr = sample_slot(m, 1u, m.textures.y, in_uv, dx, dy, false);
-    roughness *= mr.g;
-    metallic *= mr.b;
-  }
-  if (texture_present(m.textures.z) && in_view_tangent.w != 0.0) {
-    vec3 tn = sample_slot(m, 2u, m.textures.z, in_uv, dx, dy, false).xyz * 2.0 - 1.0;
-    tn.xy *= m.emissive.w;  // normalTexture.scale
-    t = normalize(t - n * dot(n, t));
-    vec3 b = cross(n, t) * (in_view_tangent.w < 0.0 ? -1.0 : 1.0);
-    vec3 mapped = t * tn.x + b * tn.y + n * tn.z;
-    if (dot(mapped, mapped) > 1e-12) n = normalize(mapped);
-  }
-  out_normal = vec4(n, roughness);
-  out_albedo = vec4(base.rgb, metallic);
+  material_gbuffer(m, n, t, in_uv, dx, dy, out_normal, out_albedo);
 }

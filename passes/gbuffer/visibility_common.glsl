@@ -39,6 +39,18 @@ struct VisHit {
   float facing;  // > 0: the ray meets the triangle's counter-clockwise side
 };
 
+// Barycentrics (weights of vertices 1 and 2) where a ray meets the triangle's plane,
+// inside the triangle or not: texture-coordinate differentials of neighbouring pixels.
+vec2 vis_plane_bary(vec3 origin, vec3 dir, vec3 a, vec3 b, vec3 c) {
+  vec3 e1 = b - a;
+  vec3 e2 = c - a;
+  vec3 p = cross(dir, e2);
+  float det = dot(e1, p);
+  if (abs(det) < 1e-20) return vec2(0.0);
+  vec3 s = origin - a;
+  return vec2(dot(s, p), dot(dir, cross(s, e1))) / det;
+}
+
 // Möller-Trumbore with inclusive edges (a pixel on a shared edge is claimed by both
 // triangles; the nearer, then the lower index, keeps it).
 VisHit vis_intersect(vec3 origin, vec3 dir, vec3 a, vec3 b, vec3 c) {

@@ -7,6 +7,7 @@
 #include "common/frame_resources.hpp"
 #include "common/own_buffer_sync.hpp"
 #include "common/ports.hpp"
+#include "shared/material_textures.h"
 #include "visibility_interface.h"
 
 namespace antumbra::passes {
@@ -22,6 +23,17 @@ const char* storage_format(VkFormat format) {
     default:
       return "rgba8";
   }
+}
+
+// Both dispatches read materials' textures (material_textures.glsl): every array of
+// both colour spaces and their sampler.
+void add_material_textures(gpu::DescriptorSetLayoutBuilder& bindings) {
+  bindings.storage_buffer(shared::kVisAttributes, kCompute)
+      .add(shared::kVisSrgbTextures, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, kCompute,
+           shared::kTextureBuckets)
+      .add(shared::kVisLinearTextures, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, kCompute,
+           shared::kTextureBuckets)
+      .sampler(shared::kVisSampler, kCompute);
 }
 
 }  // namespace
@@ -43,15 +55,21 @@ void VisibilityGBuffer::prepare(fgvk::PrepareContext& context,
       .storage_buffer(shared::kVisVertices, kCompute)
       .storage_buffer(shared::kVisIndices, kCompute)
       .storage_buffer(shared::kVisBuffer, kCompute)
-      .storage_buffer(shared::kVisLarge, kCompute);
+      .storage_buffer(shared::kVisLarge, kCompute)
+      .storage_buffer(shared::kVisMaterials, kCompute);
+  add_material_textures(raster);
   const auto bytes = static_cast<std::uint32_t>(sizeof(shared::VisibilityPush));
+  // The hardware path's front face is counter-clockwise on screen; the ray test's sign
+  // for that side, found against it (VisibilityGBufferGpuTest). The raster needs it for
+  // one-sided materials, the resolve for turning normals.
+  const gpu::ShaderDefine front{"FRONT_SIGN", "-1.0"};
   small_ = build_compute_pipeline(
       context,
-      load_shader(context, "gbuffer/visibility_raster.comp", shader_files, {{"SMALL", "1"}}),
+      load_shader(context, "gbuffer/visibility_raster.comp", shader_files, {{"SMALL", "1"}, front}),
       raster, bytes);
   large_ = build_compute_pipeline(
-      context, load_shader(context, "gbuffer/visibility_raster.comp", shader_files, {}), raster,
-      bytes);
+      context, load_shader(context, "gbuffer/visibility_raster.comp", shader_files, {front}),
+      raster, bytes);
   gpu::DescriptorSetLayoutBuilder resolve;
   resolve.uniform_buffer(shared::kVisFrame, kCompute)
       .storage_buffer(shared::kVisVertices, kCompute)
@@ -61,14 +79,13 @@ void VisibilityGBuffer::prepare(fgvk::PrepareContext& context,
       .storage_buffer(shared::kVisDepth, kCompute)
       .storage_image(shared::kVisNormal, kCompute)
       .storage_image(shared::kVisAlbedo, kCompute);
-  // The hardware path's front face is counter-clockwise on screen; the ray test's sign
-  // for that side, found against it (VisibilityGBufferGpuTest).
+  add_material_textures(resolve);
   resolve_ =
       build_compute_pipeline(context,
                              load_shader(context, "gbuffer/visibility_resolve.comp", shader_files,
                                          {{"NORMAL_FORMAT", storage_format(normal.format)},
                                           {"ALBEDO_FORMAT", storage_format(albedo.format)},
-                                          {"FRONT_SIGN", "-1.0"}}),
+                                          front}),
                              resolve, bytes);
 
   extent_ = depth.extent;
@@ -96,12 +113,16 @@ void VisibilityGBuffer::bind(fgvk::ExecuteContext& context, const ComputePipelin
   descriptors.uniform_buffer(shared::kVisFrame, context.frame.frame_uniforms)
       .storage_buffer(shared::kVisVertices, context.frame.vertices)
       .storage_buffer(shared::kVisIndices, context.frame.indices)
-      .storage_buffer(shared::kVisBuffer, vis_);
+      .storage_buffer(shared::kVisBuffer, vis_)
+      .storage_buffer(shared::kVisMaterials, context.frame.materials)
+      .storage_buffer(shared::kVisAttributes, context.frame.vertex_attributes)
+      .sampled_images(shared::kVisSrgbTextures, context.frame.srgb_textures)
+      .sampled_images(shared::kVisLinearTextures, context.frame.linear_textures)
+      .sampler(shared::kVisSampler, context.frame.texture_sampler);
   if (&pipeline == &resolve_) {
     const auto& normal = context.bindings.required_image(port::kNormal);
     const auto& albedo = context.bindings.required_image(port::kAlbedo);
-    descriptors.storage_buffer(shared::kVisMaterials, context.frame.materials)
-        .storage_buffer(shared::kVisDepth, depth_)
+    descriptors.storage_buffer(shared::kVisDepth, depth_)
         .storage_image(shared::kVisNormal, normal.view, normal.layout)
         .storage_image(shared::kVisAlbedo, albedo.view, albedo.layout);
   } else {

@@ -17,6 +17,12 @@ ANTUMBRA_BINDING(kVisMaterials, 5)  // GpuMaterial[]
 ANTUMBRA_BINDING(kVisDepth, 6)      // float per pixel, copied into the depth image
 ANTUMBRA_BINDING(kVisNormal, 7)     // storage image: view-space normal, roughness
 ANTUMBRA_BINDING(kVisAlbedo, 8)     // storage image: albedo, metallic
+// Materials' textures (common/material_textures.glsl): the raster tests cut materials'
+// alpha, the resolve samples every map.
+ANTUMBRA_BINDING(kVisAttributes, 9)  // GpuVertexAttributes[], parallel to the vertices
+ANTUMBRA_BINDING(kVisSrgbTextures, 10)
+ANTUMBRA_BINDING(kVisLinearTextures, 11)
+ANTUMBRA_BINDING(kVisSampler, 12)
 
 // Pixels of a triangle's screen box above which the triangle goes to the large list,
 // walked by workgroups instead of its own thread.

@@ -8,14 +8,23 @@
 // SMALL (one thread per triangle): a triangle whose screen box has at most
 // kVisSmallPixels pixels is walked by its thread; larger ones, and ones crossing the near
 // plane, go to the large list. LARGE: kVisBands workgroups per listed triangle, each
-// walking a band of the box's rows, a pixel per thread.
+// walking a band of the box's rows, a pixel per thread. Cut materials as gbuffer.frag's
+// cut draws: one-sided back faces and texels below the alpha cutoff are skipped (alpha
+// from the finest mip level: a compute raster has no screen derivatives).
 
 #include "../common/frame.glsl"
 #include "visibility_interface.h"
+#define MATERIAL_SRGB_TEXTURES kVisSrgbTextures
+#define MATERIAL_SAMPLER kVisSampler
+#include "../common/material_textures.glsl"
 #include "visibility_common.glsl"
 
 layout(local_size_x = kVisGroup) in;
 layout(std430, set = 0, binding = kVisBuffer) buffer Vis { uint64_t vis[]; };
+layout(std430, set = 0, binding = kVisMaterials) readonly buffer Materials { GpuMaterial materials[]; };
+layout(std430, set = 0, binding = kVisAttributes) readonly buffer Attributes {
+  GpuVertexAttributes attributes[];
+};
 layout(std430, set = 0, binding = kVisLarge) buffer Large {
   uint large_args[3];
   uint large_total;
@@ -65,9 +74,29 @@ Triangle load_triangle(uint t, out bool crosses_near) {
   return tri;
 }
 
-void cover(uint t, Triangle tri, ivec2 pixel, vec3 origin) {
+// The triangle's material flags when it needs a test per pixel (0: none).
+uint cut_flags(uint t) {
+  uint flags = materials[vis_material(indices[3u * t])].more.y;
+  bool one_sided = (flags & ANTUMBRA_MATERIAL_DOUBLE_SIDED) == 0u;
+  return one_sided || (flags & ANTUMBRA_MATERIAL_ALPHA_TESTED) != 0u ? flags | 0x80000000u : 0u;
+}
+
+bool cut_away(uint t, uint flags, VisHit h) {
+  if ((flags & ANTUMBRA_MATERIAL_DOUBLE_SIDED) == 0u && !(FRONT_SIGN * h.facing > 0.0)) {
+    return true;
+  }
+  if ((flags & ANTUMBRA_MATERIAL_ALPHA_TESTED) == 0u) return false;
+  uint i0 = indices[3u * t];
+  vec4 uv = (1.0 - h.bary.x - h.bary.y) * attributes[i0].uv +
+            h.bary.x * attributes[indices[3u * t + 1u]].uv +
+            h.bary.y * attributes[indices[3u * t + 2u]].uv;
+  return material_cut(materials[vis_material(i0)], uv, vec4(0.0), vec4(0.0));
+}
+
+void cover(uint t, Triangle tri, ivec2 pixel, vec3 origin, uint flags) {
   VisHit h = vis_intersect(origin, vis_ray(pixel), tri.a, tri.b, tri.c);
   if (!h.hit) return;
+  if (flags != 0u && cut_away(t, flags, h)) return;
   uint64_t value = (uint64_t(floatBitsToUint(h.depth)) << 32) | uint64_t(t);
   atomicMin(vis[uint(pixel.y) * vis_width + uint(pixel.x)], value);
 }
@@ -90,8 +119,9 @@ void main() {
       return;
     }
   }
+  uint flags = cut_flags(t);
   for (int y = tri.box.y; y <= tri.box.w; ++y)
-    for (int x = tri.box.x; x <= tri.box.z; ++x) cover(t, tri, ivec2(x, y), origin);
+    for (int x = tri.box.x; x <= tri.box.z; ++x) cover(t, tri, ivec2(x, y), origin, flags);
 #else
   uint t = large[gl_WorkGroupID.x];
   bool crosses_near;
@@ -104,8 +134,9 @@ void main() {
   int y1 = min(y0 + band - 1, tri.box.w);
   if (y0 > y1) return;
   int pixels = (y1 - y0 + 1) * width;
+  uint flags = cut_flags(t);
   for (int i = int(gl_LocalInvocationIndex); i < pixels; i += int(kVisGroup)) {
-    cover(t, tri, ivec2(tri.box.x + i % width, y0 + i / width), origin);
+    cover(t, tri, ivec2(tri.box.x + i % width, y0 + i / width), origin, flags);
   }
 #endif
 }

@@ -7,16 +7,24 @@
 // on back faces: two-sided), roughness, albedo and metallic of the triangle's material
 // (its first vertex's, the provoking vertex of the hardware path), and the raster's depth,
 // into a buffer the pass copies into the depth image. Background pixels: depth 1, zeros.
+// Textures as gbuffer.frag samples them, with the coordinates' differentials from the
+// neighbouring pixels' rays meeting the triangle's plane.
 
 #include "../common/frame.glsl"
-#include "../common/material.glsl"
 #include "visibility_interface.h"
+#define MATERIAL_SRGB_TEXTURES kVisSrgbTextures
+#define MATERIAL_LINEAR_TEXTURES kVisLinearTextures
+#define MATERIAL_SAMPLER kVisSampler
+#include "../common/material_textures.glsl"
 #include "visibility_common.glsl"
 
 layout(local_size_x = kVisResolveGroup, local_size_y = kVisResolveGroup) in;
 layout(std430, set = 0, binding = kVisBuffer) readonly buffer Vis { uint64_t vis[]; };
 layout(std430, set = 0, binding = kVisMaterials) readonly buffer Materials { GpuMaterial materials[]; };
 layout(std430, set = 0, binding = kVisDepth) writeonly buffer Depth { float depth_out[]; };
+layout(std430, set = 0, binding = kVisAttributes) readonly buffer Attributes {
+  GpuVertexAttributes attributes[];
+};
 layout(set = 0, binding = kVisNormal, NORMAL_FORMAT) uniform writeonly image2D normal_out;
 layout(set = 0, binding = kVisAlbedo, ALBEDO_FORMAT) uniform writeonly image2D albedo_out;
 
@@ -38,11 +46,32 @@ void main() {
   VisHit h = vis_intersect(frame.camera_world.xyz, vis_ray(pixel), vis_position(i0),
                            vis_position(i1), vis_position(i2));
   vec2 b = h.bary;
-  vec3 n_world = (1.0 - b.x - b.y) * vis_normal(i0) + b.x * vis_normal(i1) + b.y * vis_normal(i2);
+  vec3 w = vec3(1.0 - b.x - b.y, b.x, b.y);
+  vec3 n_world = w.x * vis_normal(i0) + w.y * vis_normal(i1) + w.z * vis_normal(i2);
   vec3 n = normalize(mat3(frame.view) * n_world);
-  if (!(FRONT_SIGN * h.facing > 0.0)) n = -n;  // two-sided, as gl_FrontFacing there
+  GpuVertexAttributes a0 = attributes[i0];
+  GpuVertexAttributes a1 = attributes[i1];
+  GpuVertexAttributes a2 = attributes[i2];
+  vec4 t_world = w.x * a0.tangent + w.y * a1.tangent + w.z * a2.tangent;
+  vec4 tangent = vec4(mat3(frame.view) * t_world.xyz, a0.tangent.w);
+  if (!(FRONT_SIGN * h.facing > 0.0)) {  // two-sided, as gl_FrontFacing there
+    n = -n;
+    tangent.xyz = -tangent.xyz;
+  }
+  vec4 uv = w.x * a0.uv + w.y * a1.uv + w.z * a2.uv;
+  vec3 p0 = vis_position(i0);
+  vec3 p1 = vis_position(i1);
+  vec3 p2 = vis_position(i2);
+  vec3 origin = frame.camera_world.xyz;
+  vec2 bx = vis_plane_bary(origin, vis_ray(pixel + ivec2(1, 0)), p0, p1, p2);
+  vec2 by = vis_plane_bary(origin, vis_ray(pixel + ivec2(0, 1)), p0, p1, p2);
+  vec4 dx = (bx.x - b.x) * (a1.uv - a0.uv) + (bx.y - b.y) * (a2.uv - a0.uv);
+  vec4 dy = (by.x - b.x) * (a1.uv - a0.uv) + (by.y - b.y) * (a2.uv - a0.uv);
   GpuMaterial m = materials[vis_material(i0)];
+  vec4 normal_roughness;
+  vec4 albedo_metallic;
+  material_gbuffer(m, n, tangent, uv, dx, dy, normal_roughness, albedo_metallic);
   depth_out[at] = uintBitsToFloat(uint(value >> 32));
-  imageStore(normal_out, pixel, vec4(n, m.params.x));
-  imageStore(albedo_out, pixel, vec4(m.albedo.rgb, m.params.y));
+  imageStore(normal_out, pixel, normal_roughness);
+  imageStore(albedo_out, pixel, albedo_metallic);
 }
