@@ -77,3 +77,26 @@ TEST(Camera, CounterClockwiseFrontFaceStaysCounterClockwiseForVulkan) {
 
 }  // namespace
 }  // namespace antumbra::scene
+
+// Every corner of a framed box is on screen and between the planes, whatever its size.
+TEST(Camera, FramingCameraShowsTheWholeBox) {
+  for (const float size : {0.01f, 1.0f, 250.0f}) {
+    for (const float aspect : {16.0f / 9.0f, 0.5f}) {
+      const glm::vec3 min(-size, 0.0f, -2.0f * size);
+      const glm::vec3 max(3.0f * size, size, size);
+      const antumbra::scene::Camera camera = antumbra::scene::framing_camera(min, max, aspect);
+      const glm::mat4 m = camera.view_projection(aspect);
+      for (int i = 0; i < 8; ++i) {
+        const glm::vec3 corner((i & 1) ? max.x : min.x, (i & 2) ? max.y : min.y,
+                               (i & 4) ? max.z : min.z);
+        const glm::vec4 clip = m * glm::vec4(corner, 1.0f);
+        ASSERT_GT(clip.w, 0.0f);
+        const glm::vec3 ndc = glm::vec3(clip) / clip.w;
+        EXPECT_LE(std::abs(ndc.x), 1.0f) << size << " " << aspect << " corner " << i;
+        EXPECT_LE(std::abs(ndc.y), 1.0f) << size << " " << aspect << " corner " << i;
+        EXPECT_GT(ndc.z, 0.0f);
+        EXPECT_LT(ndc.z, 1.0f);
+      }
+    }
+  }
+}

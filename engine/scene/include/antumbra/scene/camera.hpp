@@ -32,4 +32,10 @@ struct Camera {
   [[nodiscard]] float linear_depth(float depth01) const;
 };
 
+// A camera that shows the whole box from above and in front (+Z, a third of the way up),
+// with near and far planes around it: for models that bring no camera of their own.
+// `aspect` (width / height) widens the view where the image is wider than tall.
+Camera framing_camera(const glm::vec3& min, const glm::vec3& max, float aspect = 16.0f / 9.0f,
+                      float fov_y_degrees = 50.0f);
+
 }  // namespace antumbra::scene
