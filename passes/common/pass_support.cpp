@@ -1,5 +1,7 @@
 #include "pass_support.hpp"
 
+#include "frame_data.hpp"
+
 #include <algorithm>
 #include <array>
 #include <filesystem>
@@ -176,6 +178,44 @@ ComputePipeline build_compute_pipeline(fgvk::PrepareContext& context, const Shad
 void dispatch_groups(VkCommandBuffer cmd, VkExtent2D extent, std::uint32_t group,
                      std::uint32_t depth) {
   vkCmdDispatch(cmd, group_count(extent.width, group), group_count(extent.height, group), depth);
+}
+
+gpu::GraphicsPipelineBuilder scene_vertex_attributes(std::vector<std::uint32_t> locations) {
+  if (locations.empty()) locations = {0, 1, 2, 3, 4};
+  const auto has = [&](std::uint32_t l) {
+    return std::find(locations.begin(), locations.end(), l) != locations.end();
+  };
+  gpu::GraphicsPipelineBuilder b;
+  b.vertex_binding(0, sizeof(GpuVertex));
+  if (has(3) || has(4)) b.vertex_binding(1, sizeof(GpuVertexAttributes));
+  if (has(0)) b.vertex_attribute(0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(GpuVertex, position));
+  if (has(1)) b.vertex_attribute(1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(GpuVertex, normal));
+  if (has(2)) b.vertex_attribute(2, 0, VK_FORMAT_R32_UINT, offsetof(GpuVertex, material));
+  if (has(3)) {
+    b.vertex_attribute(3, 1, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(GpuVertexAttributes, uv));
+  }
+  if (has(4)) {
+    b.vertex_attribute(4, 1, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(GpuVertexAttributes, tangent));
+  }
+  return b;
+}
+
+bool draws_class(const fgvk::FrameResources& frame, fgvk::DrawClass draw_class,
+                 std::array<bool, 2> halves) {
+  const auto c = static_cast<std::size_t>(draw_class);
+  return (halves[0] && frame.draw_ranges[0][c].count > 0) ||
+         (halves[1] && frame.draw_ranges[1][c].count > 0);
+}
+
+std::array<VkPipeline, fgvk::kDrawClasses> needed_pipelines(
+    const fgvk::FrameResources& frame, std::span<LazyPipeline, fgvk::kDrawClasses> lazy,
+    std::array<bool, 2> halves) {
+  std::array<VkPipeline, fgvk::kDrawClasses> out{};
+  for (std::size_t c = 0; c < fgvk::kDrawClasses; ++c) {
+    out[c] = draws_class(frame, static_cast<fgvk::DrawClass>(c), halves) ? lazy[c].get()
+                                                                         : VK_NULL_HANDLE;
+  }
+  return out;
 }
 
 void bind_scene_geometry(VkCommandBuffer cmd, const fgvk::FrameResources& frame) {

@@ -14,6 +14,7 @@
 #include "antumbra/gpu/shader_compiler.hpp"
 #include "antumbra/gpu/spirv_interface.hpp"
 #include "common/frame_resources.hpp"
+#include "common/lazy_pipeline.hpp"
 #include "shared/workgroups.h"
 
 namespace antumbra::passes {
@@ -38,6 +39,21 @@ Shader load_shader(fgvk::PrepareContext& context, std::string_view relative,
 
 // Binds the scene's two vertex streams (positions, attributes) and its index buffer.
 void bind_scene_geometry(VkCommandBuffer cmd, const fgvk::FrameResources& frame);
+
+// A pipeline builder with the scene's two vertex streams (binding 0 GpuVertex: position
+// at location 0, normal 1, material 2; binding 1 GpuVertexAttributes: uv 3, tangent 4),
+// all of them unless `locations` lists the ones the vertex shader reads.
+gpu::GraphicsPipelineBuilder scene_vertex_attributes(std::vector<std::uint32_t> locations);
+
+// Whether the frame has triangles of `draw_class` in `halves` (static, dynamic).
+bool draws_class(const fgvk::FrameResources& frame, fgvk::DrawClass draw_class,
+                 std::array<bool, 2> halves);
+
+// The pipelines of `lazy` for the draw classes the frame has in `halves` (built now if
+// they were not), VK_NULL_HANDLE for the others.
+std::array<VkPipeline, fgvk::kDrawClasses> needed_pipelines(
+    const fgvk::FrameResources& frame, std::span<LazyPipeline, fgvk::kDrawClasses> lazy,
+    std::array<bool, 2> halves);
 
 // Draws the scene's index ranges by draw class (frame_resources.hpp), each with its
 // pipeline (VK_NULL_HANDLE: the class is skipped), for the static half, the dynamic half

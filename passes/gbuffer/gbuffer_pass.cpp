@@ -1,6 +1,7 @@
 #include "gbuffer_pass.hpp"
 
 #include <array>
+#include <memory>
 
 #include "antumbra/gpu/context.hpp"
 #include "antumbra/gpu/pipelines.hpp"
@@ -44,31 +45,35 @@ void GBufferPass::prepare(fgvk::PrepareContext& context) {
   set_layout_ = bindings.build(context.gpu, context.pass.name + ".set");
   const std::array<VkDescriptorSetLayout, 1> sets{set_layout_};
   layout_ = gpu::create_pipeline_layout(context.gpu, sets, {}, context.pass.name + ".layout");
-  const auto build = [&](const Shader& fragment, VkCullModeFlags cull, const char* name) {
-    gpu::GraphicsPipelineBuilder builder;
-    builder.shader(VK_SHADER_STAGE_VERTEX_BIT, vert)
-        .shader(VK_SHADER_STAGE_FRAGMENT_BIT, fragment)
-        .vertex_binding(0, sizeof(GpuVertex))
-        .vertex_binding(1, sizeof(GpuVertexAttributes))
-        .vertex_attribute(0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(GpuVertex, position))
-        .vertex_attribute(1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(GpuVertex, normal))
-        .vertex_attribute(2, 0, VK_FORMAT_R32_UINT, offsetof(GpuVertex, material))
-        .vertex_attribute(3, 1, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(GpuVertexAttributes, uv))
-        .vertex_attribute(4, 1, VK_FORMAT_R32G32B32A32_SFLOAT,
-                          offsetof(GpuVertexAttributes, tangent))
-        .cull(cull)
-        .depth(true, true, VK_COMPARE_OP_LESS)
-        .color_formats({normal.format, albedo.format})
-        .depth_format(depth.format)
-        .layout(layout_)
-        .cache(context.pipeline_cache);
-    check_vertex_inputs(context.pass.name, vert, builder.vertex_attributes());
-    return builder.build(context.gpu, context.pass.name + name);
-  };
+  // Built on first use except the two-sided one (lazy_pipeline.hpp); the shaders are
+  // shared by the builders, which outlive prepare().
+  auto vertex = std::make_shared<Shader>(std::move(vert));
+  check_vertex_inputs(context.pass.name, *vertex, scene_vertex_attributes({}).vertex_attributes());
+  const auto build =
+      [vertex, gpu = &context.gpu, cache = context.pipeline_cache, layout = layout_.get(),
+       name = context.pass.name, formats = std::vector<VkFormat>{normal.format, albedo.format},
+       depth_format = depth.format](const std::shared_ptr<Shader>& fragment, VkCullModeFlags cull,
+                                    const std::string& suffix) {
+        return [=]() {
+          gpu::GraphicsPipelineBuilder builder = scene_vertex_attributes({});
+          builder.shader(VK_SHADER_STAGE_VERTEX_BIT, *vertex)
+              .shader(VK_SHADER_STAGE_FRAGMENT_BIT, *fragment)
+              .cull(cull)
+              .depth(true, true, VK_COMPARE_OP_LESS)
+              .color_formats(formats)
+              .depth_format(depth_format)
+              .layout(layout)
+              .cache(cache);
+          return builder.build(*gpu, name + suffix);
+        };
+      };
   const VkCullModeFlags cull = params_.cull_back_faces ? VK_CULL_MODE_BACK_BIT : VK_CULL_MODE_NONE;
-  pipelines_[0] = build(frag, cull, ".pipeline");
-  pipelines_[1] = build(frag, VK_CULL_MODE_BACK_BIT, ".pipeline.oneSided");
-  pipelines_[2] = build(cut_frag, cull, ".pipeline.cut");
+  auto plain = std::make_shared<Shader>(std::move(frag));
+  auto cut = std::make_shared<Shader>(std::move(cut_frag));
+  pipelines_[0] = LazyPipeline(build(plain, cull, ".pipeline"));
+  pipelines_[1] = LazyPipeline(build(plain, VK_CULL_MODE_BACK_BIT, ".pipeline.oneSided"));
+  pipelines_[2] = LazyPipeline(build(cut, cull, ".pipeline.cut"));
+  pipelines_[0].get();
 }
 
 void GBufferPass::execute(fgvk::ExecuteContext& context) {
@@ -116,8 +121,8 @@ void GBufferPass::execute(fgvk::ExecuteContext& context) {
         .sampler(shared::kGbufferSampler, context.frame.texture_sampler)
         .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_);
     bind_scene_geometry(cmd, context.frame);
-    const std::array<VkPipeline, 3> pipelines{pipelines_[0], pipelines_[1], pipelines_[2]};
-    draw_by_class(cmd, context.frame, pipelines, {true, true});
+    draw_by_class(cmd, context.frame, needed_pipelines(context.frame, pipelines_, {true, true}),
+                  {true, true});
   }
   gpu::cmd_end_rendering(cmd);
 }

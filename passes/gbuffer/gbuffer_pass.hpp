@@ -11,6 +11,7 @@
 #include "antumbra/fgvk/pass.hpp"
 #include "antumbra/gpu/handle.hpp"
 #include "common/frame_resources.hpp"
+#include "common/lazy_pipeline.hpp"
 #include "visibility_gbuffer.hpp"
 
 namespace antumbra::passes {
@@ -40,7 +41,7 @@ class GBufferPass final : public fgvk::Pass {
   GBufferParams params_;
   gpu::DescriptorSetLayout set_layout_;
   gpu::PipelineLayout layout_;
-  std::array<gpu::Pipeline, fgvk::kDrawClasses> pipelines_;  // by fgvk::DrawClass
+  std::array<LazyPipeline, fgvk::kDrawClasses> pipelines_;  // by fgvk::DrawClass
   VisibilityGBuffer visibility_;
   std::vector<std::string> shader_files_;
 };

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstring>
 #include <map>
+#include <memory>
 
 #include <nlohmann/json.hpp>
 
@@ -83,20 +84,26 @@ gpu::GraphicsPipelineBuilder atlas_pipeline_base(const fgvk::PrepareContext& con
 // One-sided and alpha-tested casters: the depth draw with a fragment shader that discards
 // (shadow_cut.frag), texture coordinates from the attribute stream. With a colour map
 // (`colour`) the attachment is declared but masked off, as for the plain depth draw.
-gpu::Pipeline build_cut_pipeline(fgvk::PrepareContext& context, VkPipelineLayout layout,
-                                 VkFormat depth, VkFormat colour,
-                                 std::array<const Shader*, 2> shaders,
-                                 const PointShadowAtlasParams& params, const char* name) {
-  auto cut = atlas_pipeline_base(context, layout, depth, colour);
-  cut.vertex_binding(1, sizeof(GpuVertexAttributes))
-      .vertex_attribute(3, 1, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(GpuVertexAttributes, uv))
-      .shader(VK_SHADER_STAGE_VERTEX_BIT, *shaders[0])
-      .shader(VK_SHADER_STAGE_FRAGMENT_BIT, *shaders[1])
-      .depth(true, true, VK_COMPARE_OP_LESS)
-      .depth_bias(params.depth_bias, params.slope_bias);
-  if (colour != VK_FORMAT_UNDEFINED) cut.color_write_mask(0, 0);
-  check_vertex_inputs(context.pass.name, *shaders[0], cut.vertex_attributes());
-  return cut.build(context.gpu, context.pass.name + name);
+// Built on the first frame that has such casters (lazy_pipeline.hpp).
+LazyPipeline cut_pipeline(const fgvk::PrepareContext& context, VkPipelineLayout layout,
+                          VkFormat depth, VkFormat colour,
+                          std::array<std::shared_ptr<Shader>, 2> shaders,
+                          const PointShadowAtlasParams& params, const char* suffix) {
+  auto probe = atlas_pipeline_base(context, layout, depth, colour);
+  probe.vertex_binding(1, sizeof(GpuVertexAttributes))
+      .vertex_attribute(3, 1, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(GpuVertexAttributes, uv));
+  check_vertex_inputs(context.pass.name, *shaders[0], probe.vertex_attributes());
+  const float bias = params.depth_bias;
+  const float slope = params.slope_bias;
+  return LazyPipeline([gpu = &context.gpu, cut = std::move(probe), shaders, bias, slope, colour,
+                       name = context.pass.name + suffix]() mutable {
+    cut.shader(VK_SHADER_STAGE_VERTEX_BIT, *shaders[0])
+        .shader(VK_SHADER_STAGE_FRAGMENT_BIT, *shaders[1])
+        .depth(true, true, VK_COMPARE_OP_LESS)
+        .depth_bias(bias, slope);
+    if (colour != VK_FORMAT_UNDEFINED) cut.color_write_mask(0, 0);
+    return cut.build(*gpu, name);
+  });
 }
 
 }  // namespace
@@ -216,12 +223,10 @@ void PointShadowAtlasPass::prepare_hardware(fgvk::PrepareContext& context,
   if (colour_map_) depth.color_write_mask(0, 0);
   check_vertex_inputs(context.pass.name, depth_vert, depth.vertex_attributes());
   depth_pipeline_ = depth.build(context.gpu, context.pass.name + ".depth");
-  const auto cut_pipeline = [&](bool with_colour) {
-    return build_cut_pipeline(
-        context, layout_, atlas.format, with_colour ? colour_format : VK_FORMAT_UNDEFINED,
-        {&cut_vert, &cut_frag}, params_, with_colour ? ".depthCut" : ".staticDepthCut");
-  };
-  cut_pipeline_ = cut_pipeline(true);
+  const std::array<std::shared_ptr<Shader>, 2> cut_shaders{
+      std::make_shared<Shader>(std::move(cut_vert)), std::make_shared<Shader>(std::move(cut_frag))};
+  cut_pipeline_ = cut_pipeline(context, layout_, atlas.format, colour_format, cut_shaders, params_,
+                               ".depthCut");
   if (static_cache_enabled_) {
     // The cache's rendering has no colour attachment: the same depth draw without one.
     auto fill = base();
@@ -231,8 +236,10 @@ void PointShadowAtlasPass::prepare_hardware(fgvk::PrepareContext& context,
         .depth_bias(params_.depth_bias, params_.slope_bias);
     static_cache_.prepare(context, atlas, colour_map_ ? colour->format : VK_FORMAT_UNDEFINED,
                           shader_files_, key);
-    static_cache_.set_fill_pipelines(fill.build(context.gpu, context.pass.name + ".staticDepth"),
-                                     cut_pipeline(false));
+    static_cache_.set_fill_pipelines(
+        fill.build(context.gpu, context.pass.name + ".staticDepth"),
+        cut_pipeline(context, layout_, atlas.format, VK_FORMAT_UNDEFINED, cut_shaders, params_,
+                     ".staticDepthCut"));
   }
   if (colour_) {
     auto colour_vert = load_shader(context, "point_shadow_atlas/shadow_atlas.vert", shader_files_,
@@ -521,8 +528,11 @@ void PointShadowAtlasPass::draw_scene(fgvk::ExecuteContext& context, VkBuffer dr
   const VkCommandBuffer cmd = context.cmd;
   push_scene_draw_descriptors(context, draws, layout_);
   // Instance = face entry (firstInstance offsets gl_InstanceIndex in the fallback).
-  const std::array<VkPipeline, fgvk::kDrawClasses> depth{depth_pipeline_, cut_pipeline_,
-                                                         cut_pipeline_};
+  const bool cut = draws_class(context.frame, fgvk::DrawClass::one_sided, halves) ||
+                   draws_class(context.frame, fgvk::DrawClass::cut, halves);
+  const VkPipeline cut_pipeline = cut ? cut_pipeline_.get() : VK_NULL_HANDLE;
+  const std::array<VkPipeline, fgvk::kDrawClasses> depth{depth_pipeline_, cut_pipeline,
+                                                         cut_pipeline};
   draw_by_class(cmd, context.frame, depth, halves, count, first);
   if (colour_pipeline_) {
     // Translucent tints: every class alike (one-sidedness is the colour shader's own).

@@ -23,6 +23,7 @@
 #include "antumbra/gpu/resources.hpp"
 #include "antumbra/scene/scene.hpp"
 #include "atlas_planner.hpp"
+#include "common/lazy_pipeline.hpp"
 #include "compute_raster.hpp"
 #include "static_depth_cache.hpp"
 
@@ -128,7 +129,7 @@ class PointShadowAtlasPass final : public fgvk::Pass {
   gpu::DescriptorSetLayout set_layout_;
   gpu::PipelineLayout layout_;
   gpu::Pipeline depth_pipeline_;
-  gpu::Pipeline cut_pipeline_;  // one-sided and alpha-tested casters (shadow_cut.frag)
+  LazyPipeline cut_pipeline_;  // one-sided and alpha-tested casters (shadow_cut.frag)
   gpu::Pipeline colour_pipeline_;
   std::vector<gpu::ImageView> depth_layer_views_;   // fallback path only
   std::vector<gpu::ImageView> colour_layer_views_;  // fallback path only

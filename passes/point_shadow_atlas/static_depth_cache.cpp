@@ -124,8 +124,10 @@ void StaticDepthCache::fill(fgvk::ExecuteContext& context, VkBuffer draws, std::
   }
   if (context.frame.static_index_count > 0 && count > 0) {
     push_scene_draw_descriptors(context, draws, layout);
-    const std::array<VkPipeline, fgvk::kDrawClasses> pipelines{fill_pipeline_, cut_fill_pipeline_,
-                                                               cut_fill_pipeline_};
+    const bool cut = draws_class(context.frame, fgvk::DrawClass::one_sided, {true, false}) ||
+                     draws_class(context.frame, fgvk::DrawClass::cut, {true, false});
+    const VkPipeline cut_fill = cut ? cut_fill_pipeline_.get() : VK_NULL_HANDLE;
+    const std::array<VkPipeline, fgvk::kDrawClasses> pipelines{fill_pipeline_, cut_fill, cut_fill};
     draw_by_class(cmd, context.frame, pipelines, {true, false}, count, first);
   }
   gpu::cmd_end_rendering(cmd);

@@ -13,6 +13,7 @@
 #include "antumbra/gpu/handle.hpp"
 #include "antumbra/gpu/hash.hpp"
 #include "antumbra/gpu/resources.hpp"
+#include "common/lazy_pipeline.hpp"
 
 namespace antumbra::passes {
 
@@ -30,7 +31,7 @@ class StaticDepthCache {
   // The pipeline that draws static meshes into the cache (the atlas's depth pipeline
   // without its colour attachment), built by the pass.
   // The static depth draw: two-sided casters, and one-sided and cut ones.
-  void set_fill_pipelines(gpu::Pipeline pipeline, gpu::Pipeline cut) {
+  void set_fill_pipelines(gpu::Pipeline pipeline, LazyPipeline cut) {
     fill_pipeline_ = std::move(pipeline);
     cut_fill_pipeline_ = std::move(cut);
   }
@@ -62,7 +63,7 @@ class StaticDepthCache {
   gpu::PipelineLayout restore_layout_;
   gpu::Pipeline restore_pipeline_;
   gpu::Pipeline fill_pipeline_;
-  gpu::Pipeline cut_fill_pipeline_;
+  LazyPipeline cut_fill_pipeline_;
 };
 
 }  // namespace antumbra::passes
