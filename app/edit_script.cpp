@@ -600,7 +600,7 @@ int run_edit(const EditOptions& options) {
   }
   const fgvk::PassRegistry registry = passes::builtin_pass_registry();
   auto lookup = editor::lookup_in(registry.reflection());
-  auto scene = editor::SceneDocument::load(scene_path);
+  auto scene = editor::SceneDocument::open(scene_path);
   auto graph = editor::GraphDocument::load(graph_path, lookup);
   print(scene.diagnostics());
   print(graph.diagnostics());

@@ -348,3 +348,36 @@ TEST(SceneDocument, TheAtriumKeepsItsLayoutWhenALightMoves) {
 
 }  // namespace
 }  // namespace antumbra::editor
+
+namespace antumbra::editor {
+namespace {
+
+// A glTF opened in the editor: edits go to "<model>.scene.json" beside it, written only
+// on save; the model's bytes never change; the next open reads the saved edits.
+TEST(SceneDocument, AGltfOpensAsASceneWhoseEditsAreSavedBesideTheModel) {
+  const std::filesystem::path model =
+      std::string(ANTUMBRA_GLTF_MODELS_DIR) + "/BoxTextured-glTF-Binary/BoxTextured.glb";
+  if (!std::filesystem::exists(model)) GTEST_SKIP() << "assimp-testmodels not installed";
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / "antumbra_editor_gltf_scene";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const std::filesystem::path copy = dir / "Box.glb";
+  std::filesystem::copy_file(model, copy);
+  const std::string bytes = testing::read(copy);
+  auto doc = testing::take(SceneDocument::open(copy));
+  EXPECT_EQ(doc.file(), dir / "Box.glb.scene.json");
+  EXPECT_FALSE(std::filesystem::exists(doc.file()));
+  ASSERT_EQ(doc.lights().size(), 3u);
+  ASSERT_TRUE(doc.set_intensity(0, 42.0f).ok);
+  doc.save();
+  EXPECT_EQ(testing::read(copy), bytes);
+  const auto reopened = testing::take(SceneDocument::open(copy));
+  EXPECT_FLOAT_EQ(reopened.lights()[0].intensity, 42.0f);
+  const auto scene = scene::load_scene_file(copy.string());
+  ASSERT_TRUE(scene.ok()) << scene.diagnostics().to_text();
+  EXPECT_FLOAT_EQ(scene->lights[0].intensity, 42.0f);
+}
+
+}  // namespace
+}  // namespace antumbra::editor

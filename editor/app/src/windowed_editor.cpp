@@ -156,7 +156,7 @@ std::optional<Documents> load_documents(const WindowedOptions& options,
       options.graph.empty() ? paths.graphs() / "layered-ssss.json" : fs::path(options.graph);
   const fs::path scene_path =
       options.scene.empty() ? paths.scenes() / "atrium.json" : fs::path(options.scene);
-  auto scene = editor::SceneDocument::load(scene_path);
+  auto scene = editor::SceneDocument::open(scene_path);
   auto graph = editor::GraphDocument::load(graph_path, editor::lookup_in(registry.reflection()));
   print(scene.diagnostics());
   print(graph.diagnostics());

@@ -2,6 +2,8 @@
 // scene_edits.cpp, saving and the recovery file in json_file.cpp.
 #include "antumbra/editor/scene_document.hpp"
 
+#include "antumbra/scene/gltf_scene.hpp"
+
 #include "antumbra/base/diagnostic_codes.hpp"
 #include "antumbra/scene/scene_file.hpp"
 #include "light_json.hpp"
@@ -37,6 +39,16 @@ base::Result<SceneDocument> SceneDocument::load(const std::filesystem::path& fil
   auto text = read_text_file(file);
   if (!text.ok()) return text.diagnostics();
   return parse(text.value(), file);
+}
+
+base::Result<SceneDocument> SceneDocument::open(const std::filesystem::path& file) {
+  if (!scene::is_gltf_file(file)) return load(file);
+  const std::filesystem::path settings = scene::gltf_scene_file(file);
+  std::error_code ec;
+  if (std::filesystem::is_regular_file(settings, ec)) return load(settings);
+  auto text = scene::gltf_scene_text(file);
+  if (!text.ok()) return text.diagnostics();
+  return parse(text.value(), settings);
 }
 
 base::Result<SceneDocument> SceneDocument::parse(std::string_view text,

@@ -72,6 +72,7 @@ class Importer {
   bool node_matrix(const tinygltf::Node& node, const std::string& p, glm::mat4& out);
   bool visit(int node, const std::string& referrer, const glm::mat4& parent, int depth);
   bool add_mesh(int mesh, const std::string& referrer, const glm::mat4& world);
+  void add_camera(int camera, const glm::mat4& world);
   bool add_primitive(const tinygltf::Primitive& prim, const std::string& p, const std::string& name,
                      const glm::mat4& world);
 
@@ -176,6 +177,7 @@ bool Importer::visit(int node, const std::string& referrer, const glm::mat4& par
   const glm::mat4 world = parent * local;
   const tinygltf::Node& nd = model_.nodes[n];
   if (nd.mesh >= 0 && !add_mesh(nd.mesh, p + "/mesh", world)) return false;
+  if (nd.camera >= 0 && !out_.camera) add_camera(nd.camera, world);
   on_path_[n] = true;
   for (std::size_t i = 0; i < nd.children.size(); ++i) {
     if (!visit(nd.children[i], p + "/children/" + std::to_string(i), world, depth + 1))
@@ -183,6 +185,35 @@ bool Importer::visit(int node, const std::string& referrer, const glm::mat4& par
   }
   on_path_[n] = false;
   return true;
+}
+
+// glTF cameras look down their node's -Z with +Y up; orthographic ones are skipped.
+void Importer::add_camera(int camera, const glm::mat4& world) {
+  if (static_cast<std::size_t>(camera) >= model_.cameras.size()) {
+    warnings_.push_back({codes::scene::kGltfBadReference,
+                         "camera " + std::to_string(camera) + " does not exist; ignored",
+                         "/cameras"});
+    return;
+  }
+  const tinygltf::Camera& c = model_.cameras[static_cast<std::size_t>(camera)];
+  if (c.type != "perspective") return;
+  const double yfov = c.perspective.yfov;
+  const glm::vec3 position(world * glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+  const glm::vec3 forward(world * glm::vec4(0.0f, 0.0f, -1.0f, 0.0f));
+  const glm::vec3 up(world * glm::vec4(0.0f, 1.0f, 0.0f, 0.0f));
+  if (!(yfov > 0.0 && yfov < 3.1) || glm::length(forward) < 1e-6f || glm::length(up) < 1e-6f) {
+    return;
+  }
+  Camera out;
+  out.position = position;
+  out.target = position + glm::normalize(forward);
+  out.up = glm::normalize(up);
+  out.fov_y_degrees = static_cast<float>(glm::degrees(yfov));
+  if (c.perspective.znear > 0.0) out.near = static_cast<float>(c.perspective.znear);
+  // zfar absent (0) means infinite: the caller fits a far plane to the scene.
+  out.far =
+      c.perspective.zfar > c.perspective.znear ? static_cast<float>(c.perspective.zfar) : 0.0f;
+  out_.camera = out;
 }
 
 bool Importer::add_mesh(int mesh, const std::string& referrer, const glm::mat4& world) {

@@ -9,6 +9,8 @@
 
 #include "antumbra/base/diagnostic_codes.hpp"
 #include "antumbra/scene/scene_file.hpp"
+
+#include "antumbra/scene/gltf_scene.hpp"
 #include "parse_context.hpp"
 
 namespace antumbra::scene {
@@ -293,6 +295,19 @@ base::Result<Scene> parse_scene(const base::JsonDocument& document, ImageCache* 
 }
 
 base::Result<Scene> load_scene_file(const std::string& path, ImageCache* images) {
+  if (is_gltf_file(path)) {
+    // A model as the whole scene: its saved scene file when there is one, else a view
+    // generated for it (gltf_scene.hpp).
+    const std::filesystem::path settings = gltf_scene_file(path);
+    std::error_code ec;
+    if (std::filesystem::is_regular_file(settings, ec))
+      return load_scene_file(settings.string(), images);
+    ImageCache own_images;
+    ImageCache& cache = images != nullptr ? *images : own_images;
+    auto text = gltf_scene_text(path, &cache);
+    if (!text.ok()) return text.diagnostics();
+    return parse_scene_text(text.value(), settings.string(), &cache);
+  }
   auto document = base::load_json_file(path);
   if (!document.ok()) return document.diagnostics();
   return parse_scene(document.value(), images);

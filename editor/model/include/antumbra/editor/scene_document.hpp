@@ -46,6 +46,10 @@ class SceneDocument {
   // diagnostics with file and line:column. recovery_available() tells whether a newer
   // recovery file was found beside the file.
   static base::Result<SceneDocument> load(const std::filesystem::path& file);
+  // load(), except that a .gltf or .glb opens the model as the whole scene: its scene
+  // file beside it when saved before, else a generated one (scene/gltf_scene.hpp), not
+  // written until saved. Edits never touch the model.
+  static base::Result<SceneDocument> open(const std::filesystem::path& file);
   static base::Result<SceneDocument> parse(std::string_view text,
                                            const std::filesystem::path& file);
 

@@ -6,6 +6,7 @@
 // (image_cache.hpp); one that cannot be used leaves its material's factor, with a warning.
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,10 @@ struct GltfImport {
   // primitives without a material.
   std::vector<Material> materials;
   std::vector<Texture> textures;  // what the materials' slots index
+  // The first perspective camera met in the default scene's node tree (depth first), in
+  // world space; none when the file has none. `far` is 0 where the file leaves it
+  // infinite.
+  std::optional<Camera> camera;
 };
 
 struct GltfLimits {

@@ -51,7 +51,8 @@ inline constexpr int kMaxRepeatCopies = 4096;
 // Scene instancing may not make a scene larger than this (copies of copies multiply).
 inline constexpr std::size_t kMaxSceneTriangles = std::size_t{1} << 26;
 
-// Reads, parses and validates a scene file; glTF paths resolve against its folder.
+// Reads, parses and validates a scene file; glTF paths resolve against its folder. A
+// .gltf or .glb path opens the model as the whole scene (gltf_scene.hpp).
 // `images` shares decoded textures across loads (reloads); without it each load
 // decodes its own.
 base::Result<Scene> load_scene_file(const std::string& path, ImageCache* images = nullptr);
