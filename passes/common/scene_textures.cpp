@@ -84,7 +84,11 @@ SceneTextures::SceneTextures(gpu::Context& gpu, const scene::Scene& scene)
   }
   gpu::SamplerDesc linear;
   linear.address = VK_SAMPLER_ADDRESS_MODE_REPEAT;
-  linear.max_anisotropy = 16.0f;
+  // Anisotropic filtering, except on CPU devices: lavapipe (Mesa 22.3) takes the
+  // footprint from the neighbouring lanes' coordinates even under explicit gradients, so
+  // pixels whose 2x2 quad straddles a triangle edge (and every compute invocation) sample
+  // texels far away (docs/technique.md, "Textures on the GPU").
+  linear.max_anisotropy = gpu.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU ? 1.0f : 16.0f;
   sampler_ = gpu::create_sampler(gpu, linear, "scene.textures.sampler");
 }
 

@@ -101,13 +101,12 @@ TEST_F(TexturedModelsTest, CorpusModelsRenderWithTheirTexturesOnBothRasterisers)
     const Image8 hardware = render(s, kSmall, "hardware", "albedo");
     const Image8 compute = render(s, kSmall, "compute", "albedo");
     ASSERT_EQ(hardware.width, kSmall.width) << file;
-    // The two rasterisers agree (to the pixel on an NVIDIA H200; lavapipe's own
-    // rasteriser misplaces texture coordinates on pixels along shared triangle edges and
-    // its explicit-gradient sampling in compute picks coarser mips, 7-10 % of the pixels).
+    // The two rasterisers agree but for a few silhouette pixels (lavapipe: at most 38 of
+    // 14 400 on these models; an NVIDIA H200: none differed on the textured box).
     const DiffStats agree = diff_images(hardware, compute, 8);
     std::printf("%s: hardware vs compute %s\n", file, describe(agree).c_str());
-    EXPECT_LT(agree.mean_abs, 4.0) << file << ": " << describe(agree);
-    EXPECT_GT(agree.fraction_within(), 0.85) << file << ": " << describe(agree);
+    EXPECT_LT(agree.mean_abs, 0.5) << file << ": " << describe(agree);
+    EXPECT_GT(agree.fraction_within(), 0.99) << file << ": " << describe(agree);
     if (s.textures.empty()) continue;
     // Textures matter: without them the frame differs visibly.
     const Image8 plain = render(model_scene(path, false), kSmall, "hardware", "albedo");
@@ -180,9 +179,7 @@ TEST_F(TexturedModelsTest, EveryPixelShowsTheTexelItsPositionMapsTo) {
     }
     std::printf("[ %s ] %d of %d quad pixels show their texel\n", rasterizer, right, quad);
     EXPECT_GT(quad, 5000) << rasterizer;
-    // Lavapipe misplaces coordinates on pixels along shared triangle edges (4 % of them
-    // here with its own rasteriser); an H200 shows every texel.
-    EXPECT_GT(right, quad * 90 / 100) << rasterizer;
+    EXPECT_GT(right, quad * 98 / 100) << rasterizer;
   }
 }
 
