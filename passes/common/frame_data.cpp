@@ -61,7 +61,14 @@ MergedGeometry merge_scene_geometry(const scene::Scene& scene) {
         merged.ranges[mesh.dynamic ? 1 : 0][static_cast<std::size_t>(draw_class(scene, mesh))];
     if (range.count == 0) range.first = static_cast<std::uint32_t>(merged.indices.size());
     range.count += static_cast<std::uint32_t>(mesh.indices.size());
-    for (const std::uint32_t index : mesh.indices) merged.indices.push_back(base + index);
+    // A mirroring transform turns counter-clockwise triangles clockwise (glTF says so for
+    // negative-determinant nodes): two indices swap to keep fronts counter-clockwise.
+    const bool mirrored = glm::determinant(glm::mat3(mesh.transform)) < 0.0f;
+    for (std::size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
+      merged.indices.push_back(base + mesh.indices[i]);
+      merged.indices.push_back(base + mesh.indices[mirrored ? i + 2 : i + 1]);
+      merged.indices.push_back(base + mesh.indices[mirrored ? i + 1 : i + 2]);
+    }
   }
   return merged;
 }

@@ -39,8 +39,9 @@ vec2 slot_uv(GpuMaterial m, uint slot, uint code, vec4 uv01, float offset) {
 float wrap_coordinate(float u, uint mode, float half_texel) {
   if (mode == 1u) return clamp(u, half_texel, 1.0 - half_texel);
   if (mode == 2u) {
+    // Held off the fold by half a texel: the repeat sampler would blend across it.
     float m = mod(u, 2.0);
-    return m > 1.0 ? 2.0 - m : m;
+    return clamp(m > 1.0 ? 2.0 - m : m, half_texel, 1.0 - half_texel);
   }
   return u;
 }

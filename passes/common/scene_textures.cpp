@@ -65,6 +65,16 @@ SceneTextures::SceneTextures(gpu::Context& gpu, const scene::Scene& scene)
     : plan_(plan_textures(scene)) {
   require_blit(gpu, format_of(true));
   require_blit(gpu, format_of(false));
+  for (const auto& space : plan_.layers) {
+    for (std::uint32_t b = 0; b < shared::kTextureBuckets; ++b) {
+      if (space[b] > gpu.limits().maxImageArrayLayers) {
+        throw std::runtime_error("the scene has " + std::to_string(space[b]) + " textures of " +
+                                 std::to_string(bucket_size(b)) + " texels; the device holds " +
+                                 std::to_string(gpu.limits().maxImageArrayLayers) +
+                                 " in one array");
+      }
+    }
+  }
   for (int space = 0; space < 2; ++space) {
     const bool srgb = space == 1;
     gpu::ImageDesc desc;

@@ -28,10 +28,11 @@ void main() {
 #endif
   vec3 n = normalize(in_view_normal);
   vec4 t = in_view_tangent;
-  // Two-sided: thin panes and planes are seen from both sides.
+  // Two-sided: thin panes and planes are seen from both sides, their whole tangent
+  // frame turned over (the bitangent's sign too: cross(-n, -t) alone would keep it).
   if (!gl_FrontFacing) {
     n = -n;
-    t.xyz = -t.xyz;
+    t = -t;
   }
   material_gbuffer(m, n, t, in_uv, dx, dy, out_normal, out_albedo);
 }

@@ -56,7 +56,7 @@ void main() {
   vec4 tangent = vec4(mat3(frame.view) * t_world.xyz, a0.tangent.w);
   if (!(FRONT_SIGN * h.facing > 0.0)) {  // two-sided, as gl_FrontFacing there
     n = -n;
-    tangent.xyz = -tangent.xyz;
+    tangent = -tangent;  // the bitangent's sign too, as gbuffer.frag
   }
   vec4 uv = w.x * a0.uv + w.y * a1.uv + w.z * a2.uv;
   vec3 p0 = vis_position(i0);

@@ -95,8 +95,10 @@ LazyPipeline cut_pipeline(const fgvk::PrepareContext& context, VkPipelineLayout 
   check_vertex_inputs(context.pass.name, *shaders[0], probe.vertex_attributes());
   const float bias = params.depth_bias;
   const float slope = params.slope_bias;
-  return LazyPipeline([gpu = &context.gpu, cut = std::move(probe), shaders, bias, slope, colour,
-                       name = context.pass.name + suffix]() mutable {
+  // Each build starts from a copy, so a build that throws can be retried next frame.
+  return LazyPipeline([gpu = &context.gpu, base = std::move(probe), shaders, bias, slope, colour,
+                       name = context.pass.name + suffix]() {
+    gpu::GraphicsPipelineBuilder cut = base;
     cut.shader(VK_SHADER_STAGE_VERTEX_BIT, *shaders[0])
         .shader(VK_SHADER_STAGE_FRAGMENT_BIT, *shaders[1])
         .depth(true, true, VK_COMPARE_OP_LESS)

@@ -190,3 +190,22 @@ TEST(FrameData, MeshesAreSortedByDrawClassWithinEachHalf) {
   EXPECT_EQ(materials[2].more.y, ANTUMBRA_MATERIAL_DOUBLE_SIDED | ANTUMBRA_MATERIAL_ALPHA_TESTED);
   EXPECT_EQ(materials[1].more.y, 0u);
 }
+
+// A mirroring transform (a glTF node scaled by -1) keeps triangles counter-clockwise seen
+// from outside: every merged triangle's winding agrees with its vertices' normals.
+TEST(FrameData, MirroredMeshesKeepTheirFrontsOutside) {
+  scene::Scene s;
+  s.materials.push_back({"default"});
+  auto box = scene::make_box(glm::vec3(1.0f, 2.0f, 3.0f));
+  box.transform = glm::scale(glm::mat4(1.0f), glm::vec3(-1.0f, 1.0f, 1.0f));
+  s.meshes.push_back(box);
+  const auto merged = passes::merge_scene_geometry(s);
+  ASSERT_EQ(merged.indices.size(), box.indices.size());
+  for (std::size_t i = 0; i < merged.indices.size(); i += 3) {
+    const auto& a = merged.vertices[merged.indices[i]];
+    const auto& b = merged.vertices[merged.indices[i + 1]];
+    const auto& c = merged.vertices[merged.indices[i + 2]];
+    const glm::vec3 winding = glm::cross(b.position - a.position, c.position - a.position);
+    EXPECT_GT(glm::dot(winding, a.normal), 0.0f) << "triangle " << i / 3;
+  }
+}

@@ -131,13 +131,14 @@ TEST(GltfMaterial, MaskSamplerAndTangentsOfAGeneratedQuad) {
   EXPECT_EQ(base.wrap_v, TextureWrap::mirror);
   EXPECT_EQ(base.image->rgba[3], 255);        // texel (0,0): opaque
   EXPECT_EQ(base.image->rgba[2 * 4 + 3], 0);  // texel (2,0): the next cell
-  // Generated tangents point along +u: +x on this quad, right-handed with +z as +v.
+  // Generated tangents point along +u (+x on this quad); the bitangent runs against +v
+  // (-z), as glTF's normal maps expect (green up the image, v down it).
   ASSERT_EQ(result->meshes.size(), 1u);
   for (const Vertex& v : result->meshes[0].vertices) {
     EXPECT_NEAR(v.tangent.x, 1.0f, 1e-5f);
     EXPECT_NEAR(std::abs(v.tangent.w), 1.0f, 0.0f);
     const glm::vec3 bitangent = glm::cross(v.normal, glm::vec3(v.tangent)) * v.tangent.w;
-    EXPECT_NEAR(bitangent.z, 1.0f, 1e-5f);
+    EXPECT_NEAR(bitangent.z, -1.0f, 1e-5f);
   }
 }
 

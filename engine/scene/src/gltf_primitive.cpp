@@ -142,7 +142,9 @@ void generate_tangents(Mesh& mesh, int set) {
                      std::abs(vx.normal.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0));
     }
     t = glm::normalize(t);
-    const float w = glm::dot(glm::cross(vx.normal, t), bitangent[v]) < 0.0f ? -1.0f : 1.0f;
+    // glTF's v runs down the image while a normal map's green points up it: the
+    // bitangent, cross(normal, tangent) * w, runs against the coordinates' v gradient.
+    const float w = glm::dot(glm::cross(vx.normal, t), bitangent[v]) > 0.0f ? -1.0f : 1.0f;
     vx.tangent = glm::vec4(t, w);
   }
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 
 #include <nlohmann/json.hpp>
 
@@ -32,6 +33,10 @@ base::Result<std::string> gltf_scene_text(const std::filesystem::path& model, Im
   if (!imported.ok()) return imported.diagnostics();
   Aabb box;
   for (const Mesh& mesh : imported->meshes) box.expand(mesh.bounds);
+  const glm::vec3 extent = box.extent();
+  if (box.empty() || !std::isfinite(extent.x + extent.y + extent.z)) {
+    box = Aabb{glm::vec3(-1.0f), glm::vec3(1.0f)};  // nothing to frame: a unit box
+  }
   const glm::vec3 size = box.extent();
   const float radius = std::max(0.5f * glm::length(size), 1e-3f);
   const glm::vec3 centre = box.center();

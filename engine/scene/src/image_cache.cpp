@@ -40,6 +40,10 @@ DecodedImage decode_image(std::span<const std::uint8_t> bytes, const std::string
     return std::string("the image data is corrupt (") + (reason != nullptr ? reason : "unknown") +
            ")";
   }
+  if (got_w != width || got_h != height) {
+    stbi_image_free(pixels);
+    return std::string("the image decodes to another size than its header gives");
+  }
   auto image = std::make_shared<ImageData>();
   image->name = name;
   image->width = static_cast<std::uint32_t>(got_w);
