@@ -107,12 +107,24 @@ TEST(SceneInstance, LightNamesStayUnique) {
   ASSERT_NE(d, nullptr) << twice.diagnostics().to_text();
   EXPECT_EQ(d->pointer, "/objects/1");
 
-  const auto clash = parse(R"([{"name": "r", "scene": "room.json"}])",
-                           R"([{"name": "r/a", "position": [0, 5, 0]}])");
-  ASSERT_FALSE(clash.ok());
-  const base::Diagnostic* own = clash.diagnostics().find("SC021");
-  ASSERT_NE(own, nullptr) << clash.diagnostics().to_text();
-  EXPECT_EQ(own->pointer, "/lights/0/name");
+  // A light of the file named like an instanced one overrides it (keys it gives only).
+  const auto once = parse(R"([{"name": "r", "scene": "room.json"}])");
+  const auto overridden = parse(R"([{"name": "r", "scene": "room.json"}])",
+                                R"([{"name": "r/a", "position": [0, 5, 0]}])");
+  ASSERT_TRUE(overridden.ok()) << overridden.diagnostics().to_text();
+  ASSERT_TRUE(once.ok()) << once.diagnostics().to_text();
+  ASSERT_EQ(overridden->lights.size(), once->lights.size());
+  EXPECT_EQ(overridden->lights[0].name, "r/a");
+  EXPECT_EQ(overridden->lights[0].position, glm::vec3(0, 5, 0));
+  const int a = [&] {
+    for (std::size_t i = 0; i < once->lights.size(); ++i) {
+      if (once->lights[i].name == "r/a") return static_cast<int>(i);
+    }
+    return -1;
+  }();
+  ASSERT_GE(a, 0);
+  EXPECT_EQ(overridden->lights[0].intensity, once->lights[static_cast<std::size_t>(a)].intensity);
+  EXPECT_EQ(overridden->lights[0].range, once->lights[static_cast<std::size_t>(a)].range);
 }
 
 TEST(SceneInstance, ObjectKindsAreExclusive) {

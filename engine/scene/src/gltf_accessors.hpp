@@ -9,6 +9,7 @@
 #include <vector>
 
 #include <glm/glm.hpp>
+#include <nlohmann/json.hpp>
 
 #include "antumbra/scene/scene.hpp"
 
@@ -51,8 +52,9 @@ bool build_primitive_mesh(const tinygltf::Model& model, const tinygltf::Primitiv
 void generate_tangents(Mesh& mesh, int set);
 
 // Type checks of the glTF JSON (gltf_schema.cpp), run before tinygltf, which ignores
-// wrongly typed properties. Geometry-relevant problems go to `errors`.
-void check_gltf_schema(const std::string& path, std::vector<GltfIssue>& errors,
-                       std::vector<GltfIssue>& warnings);
+// wrongly typed properties. Geometry-relevant problems go to `errors`. Returns the
+// parsed JSON (discarded when it does not parse: tinygltf reports that).
+nlohmann::json check_gltf_schema(const std::string& path, std::vector<GltfIssue>& errors,
+                                 std::vector<GltfIssue>& warnings);
 
 }  // namespace antumbra::scene::detail

@@ -13,6 +13,7 @@
 
 #include "antumbra/base/diagnostic_codes.hpp"
 #include "gltf_accessors.hpp"
+#include "gltf_lights.hpp"
 #include "gltf_materials.hpp"
 
 namespace antumbra::scene {
@@ -20,6 +21,7 @@ namespace {
 
 using detail::GltfIssue;
 using detail::GltfMaterialInput;
+using detail::PunctualLights;
 
 constexpr int kMaxNodeDepth = 1024;
 
@@ -56,8 +58,13 @@ bool finite(const glm::mat4& m) {
 
 class Importer {
  public:
-  Importer(const GltfMaterialInput& materials, const GltfLimits& limits, GltfImport& out)
-      : materials_(materials), model_(materials.model), limits_(limits), out_(out) {}
+  Importer(const GltfMaterialInput& materials, const PunctualLights& lights,
+           const GltfLimits& limits, GltfImport& out)
+      : materials_(materials),
+        lights_(lights),
+        model_(materials.model),
+        limits_(limits),
+        out_(out) {}
 
   // Returns false with `issue_` set on the first error.
   bool run();
@@ -73,10 +80,12 @@ class Importer {
   bool visit(int node, const std::string& referrer, const glm::mat4& parent, int depth);
   bool add_mesh(int mesh, const std::string& referrer, const glm::mat4& world);
   void add_camera(int camera, const glm::mat4& world);
+  void place_lights();
   bool add_primitive(const tinygltf::Primitive& prim, const std::string& p, const std::string& name,
                      const glm::mat4& world);
 
   const GltfMaterialInput& materials_;
+  const PunctualLights& lights_;
   const tinygltf::Model& model_;
   const GltfLimits& limits_;
   GltfImport& out_;
@@ -85,13 +94,23 @@ class Importer {
   std::vector<bool> on_path_;
   std::size_t visits_ = 0;
   std::size_t triangles_ = 0;
+  // Lights met in the node tree, placed once the model's size is known.
+  struct LightNode {
+    int definition;
+    glm::mat4 world;
+    std::string name;
+  };
+  std::vector<LightNode> light_nodes_;
 };
 
 bool Importer::run() {
   for (const std::string& ext : model_.extensionsRequired) {
     // Material and texture extensions only refine shading we do not use; geometry
     // compression/quantisation would leave us reading encoded bytes as floats.
-    if (ext.starts_with("KHR_materials_") || ext.starts_with("KHR_texture_")) continue;
+    if (ext.starts_with("KHR_materials_") || ext.starts_with("KHR_texture_") ||
+        ext == "KHR_lights_punctual") {
+      continue;
+    }
     return fail(codes::scene::kGltfUnsupported, "required extension '" + ext + "' is not supported",
                 "/extensionsRequired");
   }
@@ -121,7 +140,29 @@ bool Importer::run() {
                 "scene " + std::to_string(scene) + " contains no triangles",
                 "/scenes/" + std::to_string(scene));
   }
+  place_lights();
   return true;
+}
+
+// Named after their node (Blender's object name), else the light, else the index; a
+// light placed by several unnamed nodes gets "#2", "#3", ...
+void Importer::place_lights() {
+  Aabb box;
+  for (const Mesh& mesh : out_.meshes) box.expand(mesh.bounds);
+  const float diagonal = box.empty() ? 1.0f : glm::length(box.extent());
+  std::unordered_set<std::string> taken;
+  for (const LightNode& node : light_nodes_) {
+    const auto& definition = *lights_.definitions[static_cast<std::size_t>(node.definition)];
+    PointLight light = detail::place_punctual_light(definition, node.world, diagonal);
+    std::string name = !node.name.empty()               ? node.name
+                       : !definition.light.name.empty() ? definition.light.name
+                                                        : "light" + std::to_string(node.definition);
+    light.name = name;
+    for (int copy = 2; !taken.insert(light.name).second; ++copy) {
+      light.name = name + "#" + std::to_string(copy);
+    }
+    out_.lights.push_back(std::move(light));
+  }
 }
 
 bool Importer::node_matrix(const tinygltf::Node& node, const std::string& p, glm::mat4& out) {
@@ -178,6 +219,12 @@ bool Importer::visit(int node, const std::string& referrer, const glm::mat4& par
   const tinygltf::Node& nd = model_.nodes[n];
   if (nd.mesh >= 0 && !add_mesh(nd.mesh, p + "/mesh", world)) return false;
   if (nd.camera >= 0 && !out_.camera) add_camera(nd.camera, world);
+  if (n < lights_.light_of_node.size()) {
+    const int light = lights_.light_of_node[n];
+    if (light >= 0 && lights_.definitions[static_cast<std::size_t>(light)]) {
+      light_nodes_.push_back({light, world, nd.name});
+    }
+  }
   on_path_[n] = true;
   for (std::size_t i = 0; i < nd.children.size(); ++i) {
     if (!visit(nd.children[i], p + "/children/" + std::to_string(i), world, depth + 1))
@@ -281,7 +328,8 @@ base::Result<GltfImport> load_gltf(const std::string& path, const GltfLimits& li
   }
   std::vector<GltfIssue> schema_errors;
   std::vector<GltfIssue> schema_warnings;
-  detail::check_gltf_schema(path, schema_errors, schema_warnings);
+  const nlohmann::json root = detail::check_gltf_schema(path, schema_errors, schema_warnings);
+  const PunctualLights lights = detail::read_punctual_lights(root, schema_warnings);
   for (const GltfIssue& w : schema_warnings) {
     report(w.code, base::Severity::warning, w.message, w.pointer);
   }
@@ -327,7 +375,7 @@ base::Result<GltfImport> load_gltf(const std::string& path, const GltfLimits& li
   ImageCache own_cache;
   const GltfMaterialInput materials{model, path, image_bytes, cache != nullptr ? *cache : own_cache,
                                     limits.images};
-  Importer importer(materials, limits, out);
+  Importer importer(materials, lights, limits, out);
   const bool ok = importer.run();
   for (const GltfIssue& w : importer.warnings()) {
     report(w.code, base::Severity::warning, w.message, w.pointer);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <span>
 
 #include <nlohmann/json.hpp>
 
@@ -68,7 +69,10 @@ base::Result<std::string> gltf_scene_text(const std::filesystem::path& model, Im
                      {"fill", {-1.0f, 0.4f, 0.6f}, 0.35f, {0.8f, 0.88f, 1.0f}},
                      {"rim", {0.2f, 0.8f, -1.0f}, 0.5f, {1.0f, 1.0f, 1.0f}}};
   nlohmann::json lights = nlohmann::json::array();
-  for (const Rig& r : rig) {
+  // The file's own lights (KHR_lights_punctual) come in through the object, named
+  // "model/<light>"; the rig only stands in for them when there are none.
+  for (const Rig& r :
+       imported->lights.empty() ? std::span<const Rig>(rig) : std::span<const Rig>()) {
     const glm::vec3 at = centre + glm::normalize(r.direction) * radius * 2.0f;
     const float d = glm::length(at - centre);
     lights.push_back({{"name", r.name},

@@ -166,10 +166,10 @@ std::string json_text(const std::string& path) {
 
 }  // namespace
 
-void check_gltf_schema(const std::string& path, std::vector<GltfIssue>& errors,
+json check_gltf_schema(const std::string& path, std::vector<GltfIssue>& errors,
                        std::vector<GltfIssue>& warnings) {
-  const json root = json::parse(json_text(path), nullptr, /*allow_exceptions=*/false);
-  if (root.is_discarded() || !root.is_object()) return;  // tinygltf reports syntax errors
+  json root = json::parse(json_text(path), nullptr, /*allow_exceptions=*/false);
+  if (root.is_discarded() || !root.is_object()) return root;  // tinygltf reports syntax errors
   // glTF 1.0 (techniques, shaders, objects keyed by id) is another format altogether.
   const auto asset = root.find("asset");
   const bool version_one = (asset != root.end() && asset->is_object() &&
@@ -181,9 +181,10 @@ void check_gltf_schema(const std::string& path, std::vector<GltfIssue>& errors,
                       "this is a glTF 1 file; only glTF 2.0 is supported (convert it, for "
                       "example by importing it into Blender and exporting glTF 2.0)",
                       asset != root.end() ? "/asset/version" : ""});
-    return;
+    return root;
   }
   for (const Rule& rule : kRules) check(root, rule.pattern, "", rule, errors, warnings);
+  return root;
 }
 
 }  // namespace antumbra::scene::detail

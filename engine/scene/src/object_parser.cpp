@@ -203,6 +203,7 @@ void parse_gltf_object(ParseContext& ctx, const Json& o, const std::string& p,
     mesh.material = material_override ? *material_override : first_material + mesh.material;
     add_copies(ctx, mesh, placement, name + "/" + mesh.name);
   }
+  import_lights(ctx, imported->lights, placement, {name, p, "/gltf", "the glTF", true});
 }
 
 void parse_object(ParseContext& ctx, const Json& o, const std::string& p, std::size_t index) {

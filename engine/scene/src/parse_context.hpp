@@ -26,6 +26,9 @@ struct ParseContext {
   // Lights of instanced scenes. They follow the file's own lights in Scene::lights, so
   // that /lights/i stays scene light i for the editor.
   std::vector<PointLight> instanced_lights{};
+  // Where each instanced light came from (the object's "scene" or "gltf" key), for
+  // messages about them.
+  std::vector<std::string> instanced_light_pointers{};
   // The file's objects in order: their names and the meshes each added, for "dynamic".
   struct ObjectRecord {
     std::string name;
@@ -51,6 +54,21 @@ void parse_dynamic(ParseContext& ctx, const Json& entries, const std::string& po
 // One mesh per copy of `placement`, named `name` plus the copy's suffix.
 void add_copies(ParseContext& ctx, const Mesh& prototype, const Placement& placement,
                 const std::string& name);
+
+// Where imported lights come from: the object's name (their names' prefix), its JSON
+// Pointer and key, how messages call the source, and whether its sun comes along.
+struct LightImport {
+  std::string name;
+  std::string pointer;
+  std::string key;   // "/scene" or "/gltf"
+  std::string what;  // "the instanced scene", "the glTF"
+  bool keep_sun = false;
+};
+
+// Appends `lights` (in the source's space) to ctx.instanced_lights, once per copy of
+// `placement`, named "<object>/<light>[copy]".
+void import_lights(ParseContext& ctx, const std::vector<PointLight>& lights,
+                   const Placement& placement, const LightImport& from);
 
 // An object with a "scene" key: that file's meshes, materials and lights, placed like
 // any object (scene_instance.cpp).

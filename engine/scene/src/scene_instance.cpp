@@ -41,10 +41,12 @@ std::vector<int> import_materials(ParseContext& ctx, const Scene& child, const s
   return index_of;
 }
 
+}  // namespace
+
 // Copies are the outer loop, so the lights of one copy stay together (a district's first
 // 16 lights are its first hall).
-void import_lights(ParseContext& ctx, const Scene& child, const Placement& placement,
-                   const std::string& name, const std::string& pointer) {
+void import_lights(ParseContext& ctx, const std::vector<PointLight>& lights,
+                   const Placement& placement, const LightImport& from) {
   std::unordered_set<std::string> taken;
   for (const PointLight& l : ctx.instanced_lights) taken.insert(l.name);
   bool sun_skipped = false;
@@ -53,38 +55,40 @@ void import_lights(ParseContext& ctx, const Scene& child, const Placement& place
     const auto linear = glm::mat3(m);
     // Ranges and radii follow the volume's scale (exact for a uniform scale).
     const float scale = std::cbrt(std::abs(glm::determinant(linear)));
-    for (const PointLight& source : child.lights) {
-      if (source.type == LightType::directional) {
-        sun_skipped = true;
+    for (const PointLight& source : lights) {
+      // A sun is one per scene and the same for every copy.
+      if (source.type == LightType::directional && (!from.keep_sun || c > 0)) {
+        sun_skipped = sun_skipped || !from.keep_sun;
         continue;
       }
       PointLight light = source;
-      light.name =
-          name + "/" + source.name + (placement.offsets.size() > 1 ? placement.suffixes[c] : "");
+      light.name = from.name + "/" + source.name +
+                   (placement.offsets.size() > 1 ? placement.suffixes[c] : "");
       light.position = glm::vec3(m * glm::vec4(source.position, 1.0f));
       light.direction = glm::normalize(linear * source.direction);
-      light.range *= scale;
-      light.size *= scale;
+      if (light.type != LightType::directional) {
+        light.range *= scale;
+        light.size *= scale;
+      }
       if (!taken.insert(light.name).second) {
         ctx.reader.error(codes::scene::kLightNameDuplicate,
-                         "light '" + light.name +
-                             "' of the instanced scene is already defined by an earlier "
-                             "instance; give this object another 'name'",
-                         pointer);
+                         "light '" + light.name + "' of " + from.what +
+                             " is already defined by an earlier object; give this object "
+                             "another 'name'",
+                         from.pointer);
         return;
       }
       ctx.instanced_lights.push_back(std::move(light));
+      ctx.instanced_light_pointers.push_back(from.pointer + from.key);
     }
   }
   if (sun_skipped) {
     ctx.reader.warning(codes::scene::kInstanceSunSkipped,
                        "the directional light of an instanced scene is not imported: a scene has "
                        "one sun, its own",
-                       pointer + "/scene");
+                       from.pointer + from.key);
   }
 }
-
-}  // namespace
 
 void parse_scene_instance(ParseContext& ctx, const Json& object, const std::string& pointer,
                           const Placement& placement, std::optional<int> material_override,
@@ -140,7 +144,8 @@ void parse_scene_instance(ParseContext& ctx, const Json& object, const std::stri
                                       : material_of[static_cast<std::size_t>(source.material)];
     add_copies(ctx, mesh, placement, name + "/" + source.name);
   }
-  import_lights(ctx, scene, placement, name, pointer);
+  import_lights(ctx, scene.lights, placement,
+                {name, pointer, "/scene", "the instanced scene", false});
 }
 
 }  // namespace antumbra::scene::detail

@@ -121,46 +121,12 @@ void parse_materials(JsonReader& r, const Json& root, Scene& scene) {
   }
 }
 
-// Light keys by type: "position" (point, spot), "direction" (spot, directional),
-// "angle" / "innerAngle" (spot cone half-angles, degrees), "range" (point, spot);
-// "size" is a radius in metres for point/spot and the sun's angular radius in degrees
-// for directional lights.
-void parse_light(JsonReader& r, const Json& l, const std::string& p, PointLight& out) {
-  if (!r.check_object(l, p, "a light",
-                      {"name", "type", "position", "direction", "angle", "innerAngle", "color",
-                       "intensity", "range", "size", "castsShadows"})) {
-    return;
-  }
-  if (auto v = r.get_string(l, p, "name", std::nullopt)) out.name = *v;
-  if (auto v = r.get_string(l, p, "type", "point")) {
-    if (*v == "spot") {
-      out.type = LightType::spot;
-    } else if (*v == "directional") {
-      out.type = LightType::directional;
-    } else if (*v != "point") {
-      r.error(codes::scene::kLightTypeUnsupported,
-              "light type '" + *v + "' is unknown; expected 'point', 'spot' or 'directional'",
-              p + "/type");
-    }
-  }
-  const bool directional = out.type == LightType::directional;
-  if (directional) {
-    // The sun has no position and reaches everything: no attenuation, no range.
-    out.range = std::numeric_limits<float>::infinity();
-    out.size = 0.27f;
-    for (const char* key : {"position", "range"}) {
-      if (l.contains(key)) {
-        r.warning(codes::scene::kLightKeyIgnored,
-                  std::string("'") + key + "' has no effect on a directional light", p + "/" + key,
-                  true);
-      }
-    }
-  } else {
-    if (auto v = r.get_vec3(l, p, "position", std::nullopt)) out.position = *v;
-    if (auto v = r.get_float(l, p, "range", out.range, Range::positive())) out.range = *v;
-  }
+// A light's "direction" and spot cone; `keep_cone`: an override of an imported spot.
+void parse_light_aim(JsonReader& r, const Json& l, const std::string& p, PointLight& out,
+                     bool keep_cone, bool overriding) {
   if (out.type != LightType::point) {
-    if (auto v = r.get_vec3(l, p, "direction", std::nullopt)) {
+    const auto kept_direction = overriding ? std::optional(out.direction) : std::nullopt;
+    if (auto v = r.get_vec3(l, p, "direction", kept_direction)) {
       if (glm::length(*v) < 1e-6f) {
         r.error(codes::scene::kLightDirectionZero, "light 'direction' must not be zero",
                 p + "/direction");
@@ -176,7 +142,7 @@ void parse_light(JsonReader& r, const Json& l, const std::string& p, PointLight&
     if (auto v = r.get_float(l, p, "angle", out.spot_outer, {0.0, 90.0, true, false})) {
       out.spot_outer = *v;
     }
-    out.spot_inner = 0.8f * out.spot_outer;
+    out.spot_inner = keep_cone ? std::min(out.spot_inner, out.spot_outer) : 0.8f * out.spot_outer;
     if (auto v = r.get_float(l, p, "innerAngle", out.spot_inner, {0.0, 90.0, false, false})) {
       out.spot_inner = *v;
       if (*v > out.spot_outer) {
@@ -192,54 +158,134 @@ void parse_light(JsonReader& r, const Json& l, const std::string& p, PointLight&
       }
     }
   }
+}
+
+// Light keys by type: "position" (point, spot), "direction" (spot, directional),
+// "angle" / "innerAngle" (spot cone half-angles, degrees), "range" (point, spot);
+// "size" is a radius in metres for point/spot and the sun's angular radius in degrees
+// for directional lights.
+// With `overriding`, `out` holds an imported light (of a glTF or an instanced scene) and
+// the entry changes only the keys it gives.
+void parse_light(JsonReader& r, const Json& l, const std::string& p, PointLight& out,
+                 bool overriding) {
+  const LightType imported_type = out.type;
+  if (!r.check_object(l, p, "a light",
+                      {"name", "type", "position", "direction", "angle", "innerAngle", "color",
+                       "intensity", "range", "size", "castsShadows"})) {
+    return;
+  }
+  if (auto v = r.get_string(l, p, "name", std::nullopt)) out.name = *v;
+  const char* type_default = !overriding                               ? "point"
+                             : imported_type == LightType::spot        ? "spot"
+                             : imported_type == LightType::directional ? "directional"
+                                                                       : "point";
+  if (auto v = r.get_string(l, p, "type", type_default)) {
+    out.type = LightType::point;
+    if (*v == "spot") {
+      out.type = LightType::spot;
+    } else if (*v == "directional") {
+      out.type = LightType::directional;
+    } else if (*v != "point") {
+      r.error(codes::scene::kLightTypeUnsupported,
+              "light type '" + *v + "' is unknown; expected 'point', 'spot' or 'directional'",
+              p + "/type");
+    }
+  }
+  const bool directional = out.type == LightType::directional;
+  if (directional) {
+    // The sun has no position and reaches everything: no attenuation, no range.
+    out.range = std::numeric_limits<float>::infinity();
+    if (!overriding || imported_type != LightType::directional) out.size = 0.27f;
+    for (const char* key : {"position", "range"}) {
+      if (l.contains(key)) {
+        r.warning(codes::scene::kLightKeyIgnored,
+                  std::string("'") + key + "' has no effect on a directional light", p + "/" + key,
+                  true);
+      }
+    }
+  } else {
+    const auto kept_position = overriding ? std::optional(out.position) : std::nullopt;
+    if (auto v = r.get_vec3(l, p, "position", kept_position)) out.position = *v;
+    if (auto v = r.get_float(l, p, "range", out.range, Range::positive())) out.range = *v;
+  }
+  parse_light_aim(r, l, p, out, overriding && imported_type == LightType::spot, overriding);
   if (auto v = r.get_vec3(l, p, "color", out.color, Range::non_negative())) out.color = *v;
   if (auto v = r.get_float(l, p, "intensity", out.intensity, Range::non_negative())) {
     out.intensity = *v;
   }
   const Range size_range = directional ? Range{0.0, 10.0, false, false} : Range::non_negative();
   if (auto v = r.get_float(l, p, "size", out.size, size_range)) out.size = *v;
-  if (auto v = r.get_bool(l, p, "castsShadows", true)) out.casts_shadows = *v;
+  if (auto v = r.get_bool(l, p, "castsShadows", out.casts_shadows)) out.casts_shadows = *v;
 }
 
-void parse_lights(JsonReader& r, const Json& root, Scene& scene,
-                  const std::vector<PointLight>& instanced) {
-  const auto it = root.find("lights");
-  if (it == root.end() || !r.check_type(*it, "/lights", Json::value_t::array)) return;
-  std::unordered_map<std::string, std::size_t> seen;  // name -> first index
-  std::unordered_set<std::string_view> instanced_names;
-  for (const PointLight& l : instanced) instanced_names.insert(l.name);
+// The file's lights, then the imported ones it does not override: an entry named like an
+// imported light ("<object>/<light>") changes that light in place of adding one. One sun
+// per scene: the file's own, else the first imported one.
+void parse_lights(JsonReader& r, const Json& root, Scene& scene, detail::ParseContext& ctx) {
+  const std::vector<PointLight>& imported = ctx.instanced_lights;
+  std::unordered_map<std::string_view, std::size_t> imported_index;
+  for (std::size_t k = 0; k < imported.size(); ++k) imported_index.emplace(imported[k].name, k);
+  std::vector<bool> overridden(imported.size(), false);
   int directional = -1;  // the sun gets its own shadow layer: one per scene
-  for (std::size_t i = 0; i < it->size(); ++i) {
-    const std::string p = base::pointer_append("/lights", i);
-    PointLight light;
-    parse_light(r, (*it)[i], p, light);
-    const bool has_name = (*it)[i].is_object() && (*it)[i].contains("name");
-    if (has_name && (*it)[i]["name"].is_string()) {
-      if (light.name.empty()) {
-        r.error(codes::scene::kLightNameEmpty, "light name is empty", p + "/name");
-      } else if (const auto [first, inserted] = seen.emplace(light.name, i); !inserted) {
-        r.error(codes::scene::kLightNameDuplicate,
-                "duplicate light name '" + light.name + "' (first used by /lights/" +
-                    std::to_string(first->second) + ")",
-                p + "/name");
-      } else if (instanced_names.contains(light.name)) {
-        r.error(codes::scene::kLightNameDuplicate,
-                "duplicate light name '" + light.name + "' (a light of an instanced scene)",
-                p + "/name");
+  const auto it = root.find("lights");
+  if (it != root.end() && r.check_type(*it, "/lights", Json::value_t::array)) {
+    std::unordered_map<std::string, std::size_t> seen;  // name -> first index
+    for (std::size_t i = 0; i < it->size(); ++i) {
+      const std::string p = base::pointer_append("/lights", i);
+      const Json& entry = (*it)[i];
+      const bool has_name = entry.is_object() && entry.contains("name");
+      PointLight light;
+      bool overriding = false;
+      if (has_name && entry["name"].is_string()) {
+        const auto found = imported_index.find(entry["name"].get_ref<const std::string&>());
+        if (found != imported_index.end() && !overridden[found->second]) {
+          light = imported[found->second];
+          overridden[found->second] = true;
+          overriding = true;
+        }
       }
-    }
-    if (light.type == LightType::directional) {
-      if (directional >= 0) {
-        r.error(codes::scene::kSecondDirectional,
-                "a scene has at most one directional light (the first is /lights/" +
-                    std::to_string(directional) + ")",
-                p + "/type");
-      } else {
-        directional = static_cast<int>(i);
+      parse_light(r, entry, p, light, overriding);
+      if (has_name && entry["name"].is_string()) {
+        if (light.name.empty()) {
+          r.error(codes::scene::kLightNameEmpty, "light name is empty", p + "/name");
+        } else if (const auto [first, inserted] = seen.emplace(light.name, i); !inserted) {
+          r.error(codes::scene::kLightNameDuplicate,
+                  "duplicate light name '" + light.name + "' (first used by /lights/" +
+                      std::to_string(first->second) + ")",
+                  p + "/name");
+        }
       }
+      if (light.type == LightType::directional) {
+        if (directional >= 0) {
+          r.error(codes::scene::kSecondDirectional,
+                  "a scene has at most one directional light (the first is /lights/" +
+                      std::to_string(directional) + ")",
+                  p + "/type");
+        } else {
+          directional = static_cast<int>(i);
+        }
+      }
+      scene.lights.push_back(std::move(light));
     }
-    scene.lights.push_back(std::move(light));
   }
+  for (std::size_t k = 0; k < imported.size(); ++k) {
+    if (overridden[k]) continue;
+    if (imported[k].type == LightType::directional) {
+      if (directional >= 0) {
+        r.warning(codes::scene::kInstanceSunSkipped,
+                  "directional light '" + imported[k].name +
+                      "' is not imported: a scene has one sun, and this one has " +
+                      (static_cast<std::size_t>(directional) < scene.lights.size()
+                           ? "'" + scene.lights[static_cast<std::size_t>(directional)].name + "'"
+                           : std::string("another")),
+                  ctx.instanced_light_pointers[k]);
+        continue;
+      }
+      directional = static_cast<int>(scene.lights.size());
+    }
+    scene.lights.push_back(imported[k]);
+  }
+  scene.imported_lights = imported;
 }
 
 }  // namespace
@@ -274,9 +320,7 @@ base::Result<Scene> parse_scene_document(const base::JsonDocument& document,
   if (const auto it = root.find("dynamic"); it != root.end()) {
     detail::parse_dynamic(ctx, *it, "/dynamic");
   }
-  parse_lights(r, root, scene, ctx.instanced_lights);
-  std::move(ctx.instanced_lights.begin(), ctx.instanced_lights.end(),
-            std::back_inserter(scene.lights));
+  parse_lights(r, root, scene, ctx);
   scene.bounds = scene.compute_bounds();
   if (diagnostics.has_errors()) return diagnostics;
   return base::Result<Scene>(std::move(scene), std::move(diagnostics));

@@ -137,6 +137,8 @@ inline constexpr const char* kGltfImage =
     "SC043";  // warning: image missing, corrupt or too large (the factor is used)
 inline constexpr const char* kGltfMaterial =
     "SC044";  // warning: material value invalid or unsupported (its default is used)
+inline constexpr const char* kGltfLight =
+    "SC045";  // warning: KHR_lights_punctual light or reference invalid (skipped)
 
 // Dynamic objects (SC050-SC059), reported at the "dynamic" entry.
 inline constexpr const char* kUnknownObject = "SC050";    // names no object of the file

@@ -30,6 +30,10 @@ struct GltfImport {
   // world space; none when the file has none. `far` is 0 where the file leaves it
   // infinite.
   std::optional<Camera> camera;
+  // KHR_lights_punctual lights placed by the default scene's nodes, in world space and
+  // engine units (docs/technique.md section 6, "Lights from glTF"); several may be
+  // directional. Invalid ones are skipped with warning SC045.
+  std::vector<PointLight> lights;
 };
 
 struct GltfLimits {

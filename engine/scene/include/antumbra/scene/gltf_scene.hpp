@@ -20,10 +20,10 @@ bool is_gltf_file(const std::filesystem::path& path);
 std::filesystem::path gltf_scene_file(const std::filesystem::path& model);
 
 // The scene file's text for `model` (its diagnostics are the model's): version 1, the
-// model as the one object, the model's camera or a framing one, a dim ambient and, as
-// the engine does not read glTF lights yet, a three-light rig (key, fill, rim) sized to
-// the model's bounds. The text refers to the model by file name (the scene file lives
-// beside it).
+// model as the one object (named "model": its lights become "model/<light>"), the model's
+// camera or a framing one, a dim ambient and, when the model has no lights of its own
+// (KHR_lights_punctual), a three-light rig (key, fill, rim) sized to the model's bounds. The text
+// refers to the model by file name (the scene file lives beside it).
 base::Result<std::string> gltf_scene_text(const std::filesystem::path& model,
                                           ImageCache* images = nullptr);
 

@@ -200,6 +200,10 @@ struct Scene {
   std::string name;
   Camera camera;
   std::vector<PointLight> lights;
+  // The lights objects brought in (glTF KHR_lights_punctual, instanced scenes) as they
+  // came, before the file's entries of the same name overrode them: what the editor
+  // reverts an override to. The ones not overridden are also at the end of `lights`.
+  std::vector<PointLight> imported_lights;
   std::vector<Material> materials;  // never empty after parsing: [0] is the default
   std::vector<Texture> textures;    // what Material::*_texture index
   std::vector<Mesh> meshes;
