@@ -10,9 +10,10 @@ gpu::Pipeline build_fullscreen_pipeline(fgvk::PrepareContext& context, std::stri
                                         const gpu::DescriptorSetLayoutBuilder& bindings,
                                         std::uint32_t push_constant_bytes, VkPipelineLayout layout,
                                         VkFormat color_format,
-                                        std::vector<std::string>& dependencies) {
+                                        std::vector<std::string>& dependencies,
+                                        const std::vector<gpu::ShaderDefine>& defines) {
   auto vert = load_shader(context, "common/fullscreen.vert", dependencies);
-  auto frag = load_shader(context, fragment, dependencies);
+  auto frag = load_shader(context, fragment, dependencies, defines);
   check_shader_interface(context.pass.name, vert, bindings, 0);
   check_shader_interface(context.pass.name, frag, bindings, push_constant_bytes);
   return gpu::GraphicsPipelineBuilder()

@@ -8,6 +8,7 @@
 #include "antumbra/fgvk/pass.hpp"
 #include "antumbra/gpu/handle.hpp"
 #include "antumbra/gpu/pipelines.hpp"
+#include "antumbra/gpu/shader_compiler.hpp"
 
 namespace antumbra::passes {
 
@@ -17,7 +18,8 @@ gpu::Pipeline build_fullscreen_pipeline(fgvk::PrepareContext& context, std::stri
                                         const gpu::DescriptorSetLayoutBuilder& bindings,
                                         std::uint32_t push_constant_bytes, VkPipelineLayout layout,
                                         VkFormat color_format,
-                                        std::vector<std::string>& dependencies);
+                                        std::vector<std::string>& dependencies,
+                                        const std::vector<gpu::ShaderDefine>& defines = {});
 
 // Begins dynamic rendering into `target` (contents discarded) and sets viewport/scissor.
 void begin_fullscreen(VkCommandBuffer cmd, const fgvk::BoundImage& target);

@@ -39,6 +39,18 @@ fg::PortDesc compute_buffer_input(fg::PortId name, std::string description) {
           .description = std::move(description)};
 }
 
+fg::PortDesc emissive_input(fg::Stage stage) {
+  return {.name = port::kEmissive,
+          .access = Access::sampled,
+          .stage = stage,
+          .formats = {Format::rgba16f, Format::rgba32f},
+          .optional = true,
+          .size_group = "screen",
+          .description =
+              "G-buffer emission (added unshadowed) and occlusion (scales the "
+              "ambient term); unbound: none, as before."};
+}
+
 std::vector<fg::PortDesc> lighting_ports() {
   return {
       compute_input(port::kDepth, {Format::d32f, Format::d16, Format::d24s8}, "G-buffer depth.",
@@ -47,6 +59,7 @@ std::vector<fg::PortDesc> lighting_ports() {
                     "G-buffer view-space normal and roughness.", "screen"),
       compute_input(port::kAlbedo, {Format::rgba8, Format::rgba16f},
                     "G-buffer albedo and metallic.", "screen"),
+      emissive_input(Stage::compute),
       {.name = port::kHdr,
        .direction = PortDirection::output,
        .access = Access::storage_write,

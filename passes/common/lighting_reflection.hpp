@@ -23,7 +23,13 @@ fg::PortDesc compute_array_input(fg::PortId name, std::vector<fg::Format> format
 // A buffer read as a storage buffer in compute (shadowData, layerTable).
 fg::PortDesc compute_buffer_input(fg::PortId name, std::string description);
 
-// depth, normal, albedo sampled in compute; hdr written as a storage image.
+// The G-buffer's optional emission + occlusion image (gbuffer's `emissive`), sampled at
+// `stage`: every lighting pass adds the emission unshadowed and scales its ambient term
+// by the occlusion (docs/technique.md, "The G-buffer").
+fg::PortDesc emissive_input(fg::Stage stage);
+
+// depth, normal, albedo (and optionally emissive) sampled in compute; hdr written as a
+// storage image, last.
 std::vector<fg::PortDesc> lighting_ports();
 // exposure, ambient, specular: the lighting terms every lighting pass shares.
 struct LightingParams {

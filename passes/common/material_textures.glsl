@@ -137,6 +137,22 @@ void material_gbuffer(GpuMaterial m, vec3 n, vec4 t, vec4 uv, vec4 dx, vec4 dy,
   normal_roughness = vec4(n, roughness);
   albedo_metallic = vec4(base.rgb, metallic);
 }
+
+// The G-buffer's optional `emissive` target for a point of material `m`: emitted
+// radiance (emissiveFactor, times KHR_materials_emissive_strength, times the emissive
+// texture) in rgb, unbounded; glTF's occlusion 1 + strength * (texture.r - 1) in a, which
+// the lighting passes multiply into the ambient term only (docs/technique.md, "The
+// G-buffer").
+vec4 material_emission_occlusion(GpuMaterial m, vec4 uv, vec4 dx, vec4 dy) {
+  vec3 emission = m.emissive.rgb;
+  if (texture_present(m.more.x)) emission *= sample_slot(m, 4u, m.more.x, uv, dx, dy, true).rgb;
+  float occlusion = 1.0;
+  if (texture_present(m.textures.w)) {
+    float ao = sample_slot(m, 3u, m.textures.w, uv, dx, dy, false).r;
+    occlusion = 1.0 + uintBitsToFloat(m.more.z) * (ao - 1.0);
+  }
+  return vec4(emission, occlusion);
+}
 #endif
 
 #endif

@@ -13,6 +13,7 @@ namespace antumbra::passes::port {
 inline constexpr fg::PortId kDepth{"depth"};
 inline constexpr fg::PortId kNormal{"normal"};
 inline constexpr fg::PortId kAlbedo{"albedo"};
+inline constexpr fg::PortId kEmissive{"emissive"};
 inline constexpr fg::PortId kHdr{"hdr"};
 inline constexpr fg::PortId kLdr{"ldr"};
 inline constexpr fg::PortId kView{"view"};

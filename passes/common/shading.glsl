@@ -59,4 +59,13 @@ bool shade_light(GpuLight light, Surface s, float specular, out vec3 radiance, o
   return true;
 }
 
+// The unshadowed terms of a lit surface with the G-buffer's optional `emissive` target
+// (rgb emitted radiance, a glTF occlusion): emission + ambient * occlusion * albedo.
+// Occlusion darkens the ambient (indirect) light only, as glTF specifies; direct lights
+// are never scaled by it (docs/technique.md, "The G-buffer"). Passes without the target
+// keep their `ambient * albedo` unchanged.
+vec3 ambient_and_emission(vec3 ambient, vec3 albedo, vec4 emission_occlusion) {
+  return ambient * emission_occlusion.a * albedo + emission_occlusion.rgb;
+}
+
 #endif

@@ -12,6 +12,9 @@ layout(set = 0, binding = kDeferredLights) readonly buffer Lights { GpuLight lig
 layout(set = 0, binding = kDeferredDepth) uniform sampler2D g_depth;
 layout(set = 0, binding = kDeferredNormal) uniform sampler2D g_normal;
 layout(set = 0, binding = kDeferredAlbedo) uniform sampler2D g_albedo;
+#ifdef HAS_EMISSIVE
+layout(set = 0, binding = kDeferredEmissive) uniform sampler2D g_emissive;
+#endif
 
 layout(location = 0) in vec2 in_uv;
 layout(location = 0) out vec4 out_color;
@@ -27,7 +30,12 @@ void main() {
   }
   Surface surface = make_surface(view_position(in_uv, depth), texelFetch(g_normal, pixel, 0),
                                  texelFetch(g_albedo, pixel, 0));
+#ifdef HAS_EMISSIVE
+  vec3 color = ambient_and_emission(frame.ambient.rgb * ambient_scale, surface.albedo,
+                                    texelFetch(g_emissive, pixel, 0));
+#else
   vec3 color = frame.ambient.rgb * ambient_scale * surface.albedo;
+#endif
   uint count = frame.counts.x;
   for (uint i = 0u; i < count; ++i) {
     vec3 radiance;

@@ -33,6 +33,7 @@ fg::PassDesc DeferredLightingPass::describe() {
        .formats = {Format::rgba8, Format::rgba16f},
        .size_group = "screen",
        .description = "G-buffer albedo and metallic."},
+      emissive_input(Stage::fragment),
       {.name = port::kHdr,
        .direction = PortDirection::output,
        .access = Access::color_attachment,

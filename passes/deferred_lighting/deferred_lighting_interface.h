@@ -13,6 +13,8 @@ ANTUMBRA_BINDING(kDeferredLights, 1)
 ANTUMBRA_BINDING(kDeferredDepth, 2)
 ANTUMBRA_BINDING(kDeferredNormal, 3)
 ANTUMBRA_BINDING(kDeferredAlbedo, 4)
+// HAS_EMISSIVE: the G-buffer's emission and occlusion.
+ANTUMBRA_BINDING(kDeferredEmissive, 5)
 
 ANTUMBRA_PUSH_CONSTANTS(DeferredLightingPush) {
   float exposure;

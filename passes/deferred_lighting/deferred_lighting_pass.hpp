@@ -23,6 +23,7 @@ class DeferredLightingPass final : public fgvk::Pass {
 
  private:
   LightingParams params_;
+  bool has_emissive_ = false;  // the G-buffer's emission and occlusion are bound
   gpu::DescriptorSetLayout set_layout_;
   gpu::PipelineLayout layout_;
   gpu::Pipeline pipeline_;

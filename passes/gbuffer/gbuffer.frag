@@ -15,6 +15,9 @@ layout(location = 3) in vec4 in_view_tangent;
 
 layout(location = 0) out vec4 out_normal;  // view-space normal, roughness
 layout(location = 1) out vec4 out_albedo;  // linear albedo, metallic
+#ifdef HAS_EMISSIVE
+layout(location = 2) out vec4 out_emissive;  // emitted radiance, occlusion
+#endif
 
 void main() {
   GpuMaterial m = materials[in_material];
@@ -35,4 +38,7 @@ void main() {
     t = -t;
   }
   material_gbuffer(m, n, t, in_uv, dx, dy, out_normal, out_albedo);
+#ifdef HAS_EMISSIVE
+  out_emissive = material_emission_occlusion(m, in_uv, dx, dy);
+#endif
 }

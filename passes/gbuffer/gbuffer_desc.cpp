@@ -15,7 +15,7 @@ bool uses_compute(const fg::Json& params) {
   return it != params.end() && *it == "compute";
 }
 
-// The compute path writes normal and albedo as storage images and fills the depth image
+// The compute path writes normal, albedo and emissive as storage images and fills the depth image
 // by a copy from its own buffer (visibility_gbuffer.hpp); the graph's barriers follow.
 std::optional<fg::PortUse> port_use(const fg::PortDesc& port, const fg::Json& params,
                                     fg::Format /*format*/) {
@@ -49,7 +49,8 @@ fg::PassDesc GBufferPass::describe() {
   fg::PassDesc desc;
   desc.type = "gbuffer";
   desc.description =
-      "Rasterises the scene into depth, view-space normals (+ roughness) and albedo (+ metallic).";
+      "Rasterises the scene into depth, view-space normals (+ roughness), albedo (+ metallic) "
+      "and optionally emission (+ occlusion).";
   desc.ports = {
       {.name = port::kDepth,
        .direction = PortDirection::output,
@@ -72,6 +73,16 @@ fg::PassDesc GBufferPass::describe() {
        .formats = {Format::rgba8, Format::rgba16f},
        .size_group = "gbuffer",
        .description = "Linear albedo in rgb, metallic in a."},
+      {.name = port::kEmissive,
+       .direction = PortDirection::output,
+       .access = Access::color_attachment,
+       .stage = Stage::fragment,
+       .formats = {Format::rgba16f, Format::rgba32f},
+       .optional = true,
+       .size_group = "gbuffer",
+       .description = "Emitted radiance in rgb (linear, may exceed 1), glTF occlusion in a "
+                      "(scales the ambient term only); cleared to 0. Unbound: no emission, "
+                      "no occlusion."},
   };
   desc.params = param_table().descs();
   desc.port_use = &port_use;

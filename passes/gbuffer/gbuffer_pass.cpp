@@ -2,6 +2,7 @@
 
 #include <array>
 #include <memory>
+#include <vector>
 
 #include "antumbra/gpu/context.hpp"
 #include "antumbra/gpu/pipelines.hpp"
@@ -24,11 +25,19 @@ void GBufferPass::prepare(fgvk::PrepareContext& context) {
     visibility_.prepare(context, shader_files_);
     return;
   }
-  auto vert = load_shader(context, "gbuffer/gbuffer.vert", shader_files_);
-  auto frag = load_shader(context, "gbuffer/gbuffer.frag", shader_files_);
   const auto& depth = context.bindings.required_image(port::kDepth);
   const auto& normal = context.bindings.required_image(port::kNormal);
   const auto& albedo = context.bindings.required_image(port::kAlbedo);
+  const auto* emissive = context.bindings.image(port::kEmissive);
+  // Without the optional target the shaders are exactly the two-target ones.
+  std::vector<gpu::ShaderDefine> defines;
+  std::vector<VkFormat> formats{normal.format, albedo.format};
+  if (emissive != nullptr) {
+    defines.push_back({"HAS_EMISSIVE", ""});
+    formats.push_back(emissive->format);
+  }
+  auto vert = load_shader(context, "gbuffer/gbuffer.vert", shader_files_);
+  auto frag = load_shader(context, "gbuffer/gbuffer.frag", shader_files_, defines);
 
   gpu::DescriptorSetLayoutBuilder bindings;
   bindings.uniform_buffer(shared::kGbufferFrame, VK_SHADER_STAGE_VERTEX_BIT)
@@ -38,7 +47,8 @@ void GBufferPass::prepare(fgvk::PrepareContext& context) {
       .add(shared::kGbufferLinearTextures, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE,
            VK_SHADER_STAGE_FRAGMENT_BIT, shared::kTextureBuckets)
       .sampler(shared::kGbufferSampler, VK_SHADER_STAGE_FRAGMENT_BIT);
-  auto cut_frag = load_shader(context, "gbuffer/gbuffer.frag", shader_files_, {{"CUT", ""}});
+  defines.push_back({"CUT", ""});
+  auto cut_frag = load_shader(context, "gbuffer/gbuffer.frag", shader_files_, defines);
   check_shader_interface(context.pass.name, vert, bindings, 0);
   check_shader_interface(context.pass.name, frag, bindings, 0);
   check_shader_interface(context.pass.name, cut_frag, bindings, 0);
@@ -49,24 +59,24 @@ void GBufferPass::prepare(fgvk::PrepareContext& context) {
   // shared by the builders, which outlive prepare().
   auto vertex = std::make_shared<Shader>(std::move(vert));
   check_vertex_inputs(context.pass.name, *vertex, scene_vertex_attributes({}).vertex_attributes());
-  const auto build =
-      [vertex, gpu = &context.gpu, cache = context.pipeline_cache, layout = layout_.get(),
-       name = context.pass.name, formats = std::vector<VkFormat>{normal.format, albedo.format},
-       depth_format = depth.format](const std::shared_ptr<Shader>& fragment, VkCullModeFlags cull,
-                                    const std::string& suffix) {
-        return [=]() {
-          gpu::GraphicsPipelineBuilder builder = scene_vertex_attributes({});
-          builder.shader(VK_SHADER_STAGE_VERTEX_BIT, *vertex)
-              .shader(VK_SHADER_STAGE_FRAGMENT_BIT, *fragment)
-              .cull(cull)
-              .depth(true, true, VK_COMPARE_OP_LESS)
-              .color_formats(formats)
-              .depth_format(depth_format)
-              .layout(layout)
-              .cache(cache);
-          return builder.build(*gpu, name + suffix);
-        };
-      };
+  const auto build = [vertex, gpu = &context.gpu, cache = context.pipeline_cache,
+                      layout = layout_.get(), name = context.pass.name, formats,
+                      depth_format = depth.format](const std::shared_ptr<Shader>& fragment,
+                                                   VkCullModeFlags cull,
+                                                   const std::string& suffix) {
+    return [=]() {
+      gpu::GraphicsPipelineBuilder builder = scene_vertex_attributes({});
+      builder.shader(VK_SHADER_STAGE_VERTEX_BIT, *vertex)
+          .shader(VK_SHADER_STAGE_FRAGMENT_BIT, *fragment)
+          .cull(cull)
+          .depth(true, true, VK_COMPARE_OP_LESS)
+          .color_formats(formats)
+          .depth_format(depth_format)
+          .layout(layout)
+          .cache(cache);
+      return builder.build(*gpu, name + suffix);
+    };
+  };
   const VkCullModeFlags cull = params_.cull_back_faces ? VK_CULL_MODE_BACK_BIT : VK_CULL_MODE_NONE;
   auto plain = std::make_shared<Shader>(std::move(frag));
   auto cut = std::make_shared<Shader>(std::move(cut_frag));
@@ -84,10 +94,12 @@ void GBufferPass::execute(fgvk::ExecuteContext& context) {
   const auto& depth = context.bindings.required_image(port::kDepth);
   const auto& normal = context.bindings.required_image(port::kNormal);
   const auto& albedo = context.bindings.required_image(port::kAlbedo);
+  const auto* emissive = context.bindings.image(port::kEmissive);
 
-  std::array<VkRenderingAttachmentInfo, 2> colors{};
-  const std::array<const fgvk::BoundImage*, 2> targets{&normal, &albedo};
-  for (std::size_t i = 0; i < colors.size(); ++i) {
+  std::array<VkRenderingAttachmentInfo, 3> colors{};
+  const std::array<const fgvk::BoundImage*, 3> targets{&normal, &albedo, emissive};
+  const std::size_t count = emissive != nullptr ? 3 : 2;
+  for (std::size_t i = 0; i < count; ++i) {
     colors[i].sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO;
     colors[i].imageView = targets[i]->view;
     colors[i].imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
@@ -105,7 +117,7 @@ void GBufferPass::execute(fgvk::ExecuteContext& context) {
   VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
   rendering.renderArea = {{0, 0}, depth.extent};
   rendering.layerCount = 1;
-  rendering.colorAttachmentCount = static_cast<std::uint32_t>(colors.size());
+  rendering.colorAttachmentCount = static_cast<std::uint32_t>(count);
   rendering.pColorAttachments = colors.data();
   rendering.pDepthAttachment = &depth_attachment;
 

@@ -1,6 +1,7 @@
 #include "visibility_gbuffer.hpp"
 
 #include <string>
+#include <vector>
 
 #include "antumbra/gpu/context.hpp"
 #include "antumbra/gpu/pipelines.hpp"
@@ -50,6 +51,7 @@ void VisibilityGBuffer::prepare(fgvk::PrepareContext& context,
   const auto& depth = context.bindings.required_image(port::kDepth);
   const auto& normal = context.bindings.required_image(port::kNormal);
   const auto& albedo = context.bindings.required_image(port::kAlbedo);
+  const auto* emissive = context.bindings.image(port::kEmissive);
   gpu::DescriptorSetLayoutBuilder raster;
   raster.uniform_buffer(shared::kVisFrame, kCompute)
       .storage_buffer(shared::kVisVertices, kCompute)
@@ -80,13 +82,18 @@ void VisibilityGBuffer::prepare(fgvk::PrepareContext& context,
       .storage_image(shared::kVisNormal, kCompute)
       .storage_image(shared::kVisAlbedo, kCompute);
   add_material_textures(resolve);
-  resolve_ =
-      build_compute_pipeline(context,
-                             load_shader(context, "gbuffer/visibility_resolve.comp", shader_files,
-                                         {{"NORMAL_FORMAT", storage_format(normal.format)},
-                                          {"ALBEDO_FORMAT", storage_format(albedo.format)},
-                                          front}),
-                             resolve, bytes);
+  std::vector<gpu::ShaderDefine> defines{{"NORMAL_FORMAT", storage_format(normal.format)},
+                                         {"ALBEDO_FORMAT", storage_format(albedo.format)},
+                                         front};
+  has_emissive_ = emissive != nullptr;
+  if (has_emissive_) {
+    resolve.storage_image(shared::kVisEmissive, kCompute);
+    defines.push_back({"HAS_EMISSIVE", ""});
+    defines.push_back({"EMISSIVE_FORMAT", storage_format(emissive->format)});
+  }
+  resolve_ = build_compute_pipeline(
+      context, load_shader(context, "gbuffer/visibility_resolve.comp", shader_files, defines),
+      resolve, bytes);
 
   extent_ = depth.extent;
   const VkDeviceSize pixels = VkDeviceSize{extent_.width} * extent_.height;
@@ -125,6 +132,10 @@ void VisibilityGBuffer::bind(fgvk::ExecuteContext& context, const ComputePipelin
     descriptors.storage_buffer(shared::kVisDepth, depth_)
         .storage_image(shared::kVisNormal, normal.view, normal.layout)
         .storage_image(shared::kVisAlbedo, albedo.view, albedo.layout);
+    if (has_emissive_) {
+      const auto& emissive = context.bindings.required_image(port::kEmissive);
+      descriptors.storage_image(shared::kVisEmissive, emissive.view, emissive.layout);
+    }
   } else {
     descriptors.storage_buffer(shared::kVisLarge, list_);
   }

@@ -3,7 +3,8 @@
 // visibility buffer (per pixel the nearest triangle, by 64-bit atomic min) written by
 // compute shaders, then resolved into the same depth, normal and albedo images as the
 // hardware path. The depth image is filled by a copy from the pass's own buffer, so the
-// graph declares it transfer_dst; normal and albedo are storage images.
+// graph declares it transfer_dst; normal, albedo and the optional emissive are storage
+// images.
 
 #include <cstdint>
 #include <string>
@@ -34,6 +35,7 @@ class VisibilityGBuffer {
   gpu::Buffer list_;   // the large list: dispatch args, total, triangle ids
   gpu::Buffer depth_;  // float per pixel, copied into the depth image
   VkExtent2D extent_{};
+  bool has_emissive_ = false;  // the optional emissive target is bound
 };
 
 }  // namespace antumbra::passes

@@ -23,6 +23,8 @@ ANTUMBRA_BINDING(kVisAttributes, 9)  // GpuVertexAttributes[], parallel to the v
 ANTUMBRA_BINDING(kVisSrgbTextures, 10)
 ANTUMBRA_BINDING(kVisLinearTextures, 11)
 ANTUMBRA_BINDING(kVisSampler, 12)
+// The resolve with HAS_EMISSIVE: storage image of emitted radiance, occlusion.
+ANTUMBRA_BINDING(kVisEmissive, 13)
 
 // Pixels of a triangle's screen box above which the triangle goes to the large list,
 // walked by workgroups instead of its own thread.

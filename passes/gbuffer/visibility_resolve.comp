@@ -6,7 +6,8 @@
 // G-buffer gets what gbuffer.frag writes: the interpolated normal in view space (flipped
 // on back faces: two-sided), roughness, albedo and metallic of the triangle's material
 // (its first vertex's, the provoking vertex of the hardware path), and the raster's depth,
-// into a buffer the pass copies into the depth image. Background pixels: depth 1, zeros.
+// into a buffer the pass copies into the depth image, and with HAS_EMISSIVE the emission
+// and occlusion. Background pixels: depth 1, zeros.
 // Textures as gbuffer.frag samples them, with the coordinates' differentials from the
 // neighbouring pixels' rays meeting the triangle's plane.
 
@@ -27,6 +28,9 @@ layout(std430, set = 0, binding = kVisAttributes) readonly buffer Attributes {
 };
 layout(set = 0, binding = kVisNormal, NORMAL_FORMAT) uniform writeonly image2D normal_out;
 layout(set = 0, binding = kVisAlbedo, ALBEDO_FORMAT) uniform writeonly image2D albedo_out;
+#ifdef HAS_EMISSIVE
+layout(set = 0, binding = kVisEmissive, EMISSIVE_FORMAT) uniform writeonly image2D emissive_out;
+#endif
 
 void main() {
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
@@ -38,6 +42,9 @@ void main() {
     depth_out[at] = 1.0;
     imageStore(normal_out, pixel, vec4(0.0));
     imageStore(albedo_out, pixel, vec4(0.0));
+#ifdef HAS_EMISSIVE
+    imageStore(emissive_out, pixel, vec4(0.0));
+#endif
     return;
   }
   uint i0 = indices[3u * t];
@@ -74,4 +81,7 @@ void main() {
   depth_out[at] = uintBitsToFloat(uint(value >> 32));
   imageStore(normal_out, pixel, normal_roughness);
   imageStore(albedo_out, pixel, albedo_metallic);
+#ifdef HAS_EMISSIVE
+  imageStore(emissive_out, pixel, material_emission_occlusion(m, uv, dx, dy));
+#endif
 }

@@ -1,8 +1,9 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// Writes the reference's outputs from the accumulator: ambient + shadowed lights, times
-// exposure (background as tiled-lighting draws it), and the penumbra light count.
-// Defines: HDR_FORMAT, HAS_PENUMBRA.
+// Writes the reference's outputs from the accumulator: ambient + shadowed lights (with
+// HAS_EMISSIVE: + emission, the ambient scaled by occlusion, as every lighting pass does;
+// common/shading.glsl), times exposure (background as tiled-lighting draws it), and the
+// penumbra light count. Defines: HDR_FORMAT, HAS_PENUMBRA, HAS_EMISSIVE.
 #include "../common/frame.glsl"
 #define ANTUMBRA_REFERENCE_FINAL_SHADER
 #include "reference_interface.h"
@@ -18,6 +19,10 @@ layout(set = 0, binding = kRefFinalHdr, HDR_FORMAT) uniform writeonly image2D ou
 #if HAS_PENUMBRA
 layout(set = 0, binding = kRefFinalPenumbra, r32f) uniform writeonly image2D out_penumbra;
 #endif
+#if HAS_EMISSIVE
+#include "../common/shading.glsl"
+layout(set = 0, binding = kRefFinalEmissive) uniform sampler2D g_emissive;
+#endif
 
 void main() {
   uvec2 pixel = gl_GlobalInvocationID.xy;
@@ -28,7 +33,14 @@ void main() {
   float penumbra = 0.0;
   if (depth < 1.0) {
     vec3 albedo = texelFetch(g_albedo, ivec2(pixel), 0).rgb;
+#if HAS_EMISSIVE
+    color = (ambient_and_emission(frame.ambient.rgb * ambient_scale, albedo,
+                                  texelFetch(g_emissive, ivec2(pixel), 0)) +
+             sum.rgb) *
+            exposure;
+#else
     color = (frame.ambient.rgb * ambient_scale * albedo + sum.rgb) * exposure;
+#endif
     penumbra = sum.a;
   }
   imageStore(out_hdr, ivec2(pixel), vec4(color, 1.0));

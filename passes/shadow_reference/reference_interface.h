@@ -44,6 +44,8 @@ ANTUMBRA_BINDING(kRefFinalAlbedo, 2)
 ANTUMBRA_BINDING(kRefFinalAccum, 3)
 ANTUMBRA_BINDING(kRefFinalHdr, 4)
 ANTUMBRA_BINDING(kRefFinalPenumbra, 5)
+// HAS_EMISSIVE: the G-buffer's emission and occlusion.
+ANTUMBRA_BINDING(kRefFinalEmissive, 6)
 
 // reference_depth.vert
 #if defined(__cplusplus) || defined(ANTUMBRA_REFERENCE_DEPTH_SHADER)

@@ -50,6 +50,7 @@ void ShadowReferencePass::prepare(fgvk::PrepareContext& context) {
   const auto& b = context.bindings;
   const auto& hdr = b.required_image(port::kHdr);
   has_penumbra_ = b.image(port::kPenumbraCount) != nullptr;
+  has_emissive_ = b.image(port::kEmissive) != nullptr;
   layered_ = context.gpu.features().shader_output_layer;
   shader_files_.clear();
   prepare_raster_pipelines(context);
@@ -168,9 +169,11 @@ void ShadowReferencePass::prepare_compute_pipelines(fgvk::PrepareContext& contex
       .storage_buffer(shared::kRefFinalAccum, kComp)
       .storage_image(shared::kRefFinalHdr, kComp);
   if (has_penumbra_) final_builder.storage_image(shared::kRefFinalPenumbra, kComp);
+  if (has_emissive_) final_builder.combined_image_sampler(shared::kRefFinalEmissive, kComp);
   compute("reference_final.comp", final_builder, sizeof(shared::ReferenceFinalPush),
           {{"HDR_FORMAT", hdr_format == VK_FORMAT_R32G32B32A32_SFLOAT ? "rgba32f" : "rgba16f"},
-           {"HAS_PENUMBRA", has_penumbra_ ? "1" : "0"}},
+           {"HAS_PENUMBRA", has_penumbra_ ? "1" : "0"},
+           {"HAS_EMISSIVE", has_emissive_ ? "1" : "0"}},
           final_set_, final_layout_, final_pipeline_);
 }
 

@@ -81,6 +81,7 @@ class ShadowReferencePass final : public fgvk::Pass {
   // Pipelines.
   bool layered_ = false;
   bool has_penumbra_ = false;
+  bool has_emissive_ = false;  // the G-buffer's emission and occlusion are bound
   gpu::DescriptorSetLayout depth_set_, accumulate_set_, resolve_set_, final_set_;
   gpu::PipelineLayout depth_layout_, accumulate_layout_, resolve_layout_, final_layout_;
   gpu::Pipeline depth_pipeline_, accumulate_pipeline_, resolve_pipeline_, final_pipeline_;

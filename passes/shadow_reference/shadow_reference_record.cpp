@@ -316,6 +316,11 @@ void ShadowReferencePass::record_final(fgvk::ExecuteContext& context) {
     const auto& penumbra = b.required_image(port::kPenumbraCount);
     descriptors.storage_image(shared::kRefFinalPenumbra, penumbra.view, penumbra.layout);
   }
+  if (has_emissive_) {
+    const auto& emissive = b.required_image(port::kEmissive);
+    descriptors.combined_image_sampler(shared::kRefFinalEmissive, emissive.view, nearest,
+                                       emissive.layout);
+  }
   descriptors.push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, final_layout_);
   const shared::ReferenceFinalPush push{
       {hdr.extent.width, hdr.extent.height}, params_.lighting.exposure, params_.lighting.ambient};

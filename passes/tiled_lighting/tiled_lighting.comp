@@ -20,6 +20,9 @@ layout(set = 0, binding = kTiledLights, std430) readonly buffer Lights { GpuLigh
 layout(set = 0, binding = kTiledDepth) uniform sampler2D g_depth;
 layout(set = 0, binding = kTiledNormal) uniform sampler2D g_normal;
 layout(set = 0, binding = kTiledAlbedo) uniform sampler2D g_albedo;
+#if HAS_EMISSIVE
+layout(set = 0, binding = kTiledEmissive) uniform sampler2D g_emissive;
+#endif
 layout(set = 0, binding = kTiledHdr, HDR_FORMAT) uniform writeonly image2D out_hdr;
 
 #if HAS_ATLAS
@@ -104,7 +107,12 @@ void main() {
   vec3 color = frame.ambient.rgb * 0.5;  // background
   if (geometry) {
     surface = make_surface(p, texelFetch(g_normal, pixel, 0), texelFetch(g_albedo, pixel, 0));
+#if HAS_EMISSIVE
+    color = ambient_and_emission(frame.ambient.rgb * ambient_scale, surface.albedo,
+                                 texelFetch(g_emissive, pixel, 0));
+#else
     color = frame.ambient.rgb * ambient_scale * surface.albedo;
+#endif
     p_world = (frame.inv_view * vec4(p, 1.0)).xyz;
     n_world = normalize(mat3(frame.inv_view) * surface.n);
 #if SHADOW_MODE == 4

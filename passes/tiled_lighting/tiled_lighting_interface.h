@@ -33,6 +33,8 @@ ANTUMBRA_BINDING(kTiledSdfInfo, 14)
 // layer.
 ANTUMBRA_BINDING(kTiledPenumbraMap, 15)
 ANTUMBRA_BINDING(kTiledPeeled, 16)
+// HAS_EMISSIVE: the G-buffer's emission and occlusion.
+ANTUMBRA_BINDING(kTiledEmissive, 17)
 
 ANTUMBRA_PUSH_CONSTANTS(TiledLightingPush) {
   float exposure;

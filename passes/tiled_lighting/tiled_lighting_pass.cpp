@@ -92,6 +92,7 @@ void TiledLightingPass::prepare(fgvk::PrepareContext& context) {
   has_colour_ = mode_ == ShadowMode::layered && b.image(port::kColour) != nullptr;
   has_hard_bits_ = mode_ == ShadowMode::layered && b.image(port::kHardShadow) != nullptr;
   has_moments_ = is_moment_mode(mode_) && b.image(port::kMoments) != nullptr;
+  has_emissive_ = b.image(port::kEmissive) != nullptr;
 
   constexpr VkShaderStageFlags kComp = VK_SHADER_STAGE_COMPUTE_BIT;
   gpu::DescriptorSetLayoutBuilder builder;
@@ -101,6 +102,7 @@ void TiledLightingPass::prepare(fgvk::PrepareContext& context) {
       .combined_image_sampler(shared::kTiledNormal, kComp)
       .combined_image_sampler(shared::kTiledAlbedo, kComp)
       .storage_image(shared::kTiledHdr, kComp);
+  if (has_emissive_) builder.combined_image_sampler(shared::kTiledEmissive, kComp);
   if (has_atlas_)
     builder.combined_image_sampler(shared::kTiledAtlas, kComp)
         .storage_buffer(shared::kTiledShadowData, kComp);
@@ -144,6 +146,7 @@ void TiledLightingPass::prepare(fgvk::PrepareContext& context) {
       {"BLEEDING_REDUCTION", std::to_string(params_.bleeding_reduction)},
       {"HAS_PEELED", has_peeled_ ? "1" : "0"},
       {"WEDGE_RECEIVER", params_.wedge_receiver ? "1" : "0"},
+      {"HAS_EMISSIVE", has_emissive_ ? "1" : "0"},
   };
   shader_files_.clear();
   auto module = load_shader(context, "tiled_lighting/tiled_lighting.comp", shader_files_, defines);
@@ -169,6 +172,11 @@ void TiledLightingPass::execute(fgvk::ExecuteContext& context) {
       .combined_image_sampler(shared::kTiledNormal, normal.view, nearest, normal.layout)
       .combined_image_sampler(shared::kTiledAlbedo, albedo.view, nearest, albedo.layout)
       .storage_image(shared::kTiledHdr, hdr.view, hdr.layout);
+  if (has_emissive_) {
+    const auto& emissive = b.required_image(port::kEmissive);
+    descriptors.combined_image_sampler(shared::kTiledEmissive, emissive.view, nearest,
+                                       emissive.layout);
+  }
   if (has_atlas_) {
     const auto& atlas = b.required_image(port::kAtlas);
     descriptors.combined_image_sampler(shared::kTiledAtlas, atlas.array_view, nearest, atlas.layout)

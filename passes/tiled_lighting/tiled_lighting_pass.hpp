@@ -89,6 +89,7 @@ class TiledLightingPass final : public fgvk::Pass {
   bool has_hard_bits_ = false;  // layered: full-resolution hard bits for sharp edges
   bool has_moments_ = false;    // vsm .. vssm: the filtered moment map
   bool has_peeled_ = false;     // penumbra-map: the third depth layer
+  bool has_emissive_ = false;   // the G-buffer's emission and occlusion
   gpu::DescriptorSetLayout set_layout_;
   gpu::PipelineLayout layout_;
   gpu::Pipeline pipeline_;

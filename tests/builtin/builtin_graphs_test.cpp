@@ -124,8 +124,8 @@ TEST(BuiltinGraphs, DeferredPlanOrderAndBarriers) {
   EXPECT_EQ(plan.passes[0].type, "gbuffer");
   EXPECT_EQ(plan.passes[1].type, "deferred-lighting");
   EXPECT_EQ(plan.passes[2].type, "tonemap");
-  // Lighting samples what the G-buffer wrote: each of the three inputs moves from an
-  // attachment write to a sampled read before the pass.
+  // Lighting samples what the G-buffer wrote: each of the four inputs (depth, normal,
+  // albedo, emissive) moves from an attachment write to a sampled read before the pass.
   int sampled = 0;
   for (const auto& b : plan.passes[1].barriers) {
     if (b.to == fg::Access::sampled) {
@@ -133,7 +133,7 @@ TEST(BuiltinGraphs, DeferredPlanOrderAndBarriers) {
       EXPECT_TRUE(b.from == fg::Access::color_attachment || b.from == fg::Access::depth_attachment);
     }
   }
-  EXPECT_EQ(sampled, 3);
+  EXPECT_EQ(sampled, 4);
   ASSERT_GE(plan.output, 0);
   EXPECT_EQ(plan.resources[static_cast<std::size_t>(plan.output)].name, "ldr");
   EXPECT_FALSE(plan.resources[static_cast<std::size_t>(plan.output)].aliased);
@@ -305,8 +305,8 @@ TEST(BuiltinGraphs, SdfGraphMistakesAreLocated) {
        "\"format\": \"r32f\", \"size\": [512, 512], \"layers\": 512", "SD002", "/passes/1"},
       {"\"band\": 8", "\"band\": 8, \"memoryBudget\": 1", "SD002", "/passes/1/params/memoryBudget"},
       {"\"layers\": 128, \"persistent\": true", "\"layers\": 128", "SD003", "/passes/1/out/sdf"},
-      {"\"albedo\": \"albedo\", \"sdf\": \"sdf\", \"sdfInfo\": \"sdfInfo\" }",
-       "\"albedo\": \"albedo\", \"sdf\": \"sdf\" }", "TL008", "/passes/2/params/shadows"},
+      {"\"emissive\": \"emissive\", \"sdf\": \"sdf\", \"sdfInfo\": \"sdfInfo\" }",
+       "\"emissive\": \"emissive\", \"sdf\": \"sdf\" }", "TL008", "/passes/2/params/shadows"},
       {"\"band\": 8", "\"band\": 0", "FG033", "/passes/1/params/band"},
       {"\"size\": [128, 64]", "\"size\": [0, 64]", "", "/resources/sdf/size"},
   };

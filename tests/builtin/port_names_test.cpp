@@ -49,7 +49,7 @@ TEST(PortNames, EveryBuiltinPortIsAConstant) {
       std::string(port::kTranslucency), std::string(port::kSource),
       std::string(port::kShadow),       std::string(port::kSdf),
       std::string(port::kSdfInfo),      std::string(port::kPenumbraMap),
-      std::string(port::kPeeled)};
+      std::string(port::kPeeled),       std::string(port::kEmissive)};
   const auto registry = builtin_pass_registry();
   int ports = 0;
   for (const auto& [type, desc] : registry.reflection().passes()) {
