@@ -59,7 +59,8 @@ glm::vec4 texel(const gpu::HostImage& image, std::uint32_t x, std::uint32_t y) {
 
 glm::dvec3 reference_radiance(const scene::Scene& scene, VkExtent2D viewport, std::uint32_t x,
                               std::uint32_t y, float depth, const glm::vec4& normal_rough,
-                              const glm::vec4& albedo_metal, const LightingParams& params) {
+                              const glm::vec4& albedo_metal, const LightingParams& params,
+                              const glm::vec4& emission_occlusion) {
   const auto frame = passes::build_frame_uniforms(scene, viewport.width, viewport.height, 0);
   const auto lights = passes::build_lights(scene, frame.view);
   const glm::dvec2 uv((x + 0.5) / viewport.width, (y + 0.5) / viewport.height);
@@ -70,7 +71,10 @@ glm::dvec3 reference_radiance(const scene::Scene& scene, VkExtent2D viewport, st
   const glm::dvec3 v = glm::normalize(-p);
   const glm::dvec3 albedo(albedo_metal);
   const double shininess = 128.0 + (4.0 - 128.0) * std::clamp<double>(normal_rough.w, 0.0, 1.0);
-  glm::dvec3 color = glm::dvec3(frame.ambient) * double(params.ambient) * albedo;
+  // Occlusion darkens the ambient (indirect) term only; emission is added unshadowed.
+  glm::dvec3 color =
+      glm::dvec3(frame.ambient) * double(params.ambient) * double(emission_occlusion.a) * albedo +
+      glm::dvec3(emission_occlusion);
   for (const auto& light : lights) {
     glm::dvec3 l;
     double attenuation = 1.0;

@@ -31,10 +31,14 @@ struct LightingParams {
 };
 
 // deferred_lighting.frag's sum over every scene light, in double precision, from the
-// read-back G-buffer texels of one pixel.
+// read-back G-buffer texels of one pixel: emission + ambient * occlusion * albedo + the
+// lights, times exposure. `emission_occlusion` is the optional emissive target's texel
+// (rgb emission, a occlusion); the default is what a graph without it shades.
 glm::dvec3 reference_radiance(const scene::Scene& scene, VkExtent2D viewport, std::uint32_t x,
                               std::uint32_t y, float depth, const glm::vec4& normal_rough,
-                              const glm::vec4& albedo_metal, const LightingParams& params = {});
+                              const glm::vec4& albedo_metal, const LightingParams& params = {},
+                              const glm::vec4& emission_occlusion = glm::vec4(0.0f, 0.0f, 0.0f,
+                                                                              1.0f));
 
 // The pixel where a world point lands (rounded down), for the scene's camera.
 glm::ivec2 project_to_pixel(const scene::Scene& scene, VkExtent2D viewport, const glm::vec3& p);
