@@ -493,6 +493,9 @@ int run_windowed(const EditOptions& options) {
   windowed.screenshot = options.out;
   windowed.select = options.select;
   windowed.frame_log = options.frame_log;
+  windowed.layout_file = options.layout_file;
+  windowed.ui_scale = options.ui_scale;
+  windowed.layout_report = options.layout_report;
   if (!parse_size(options.size, windowed.width, windowed.height)) {
     std::fprintf(stderr, "antumbra edit: --size must be WxH, got \"%s\"\n", options.size.c_str());
     return runtime::kExitUsage;

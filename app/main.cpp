@@ -136,7 +136,15 @@ int dispatch(int argc, char** argv) {
   edit_cmd->add_option("--select", edit.select, "Window: the light selected at start (by name)");
   edit_cmd->add_flag("--frame-log", edit.frame_log,
                      "Window: print a line per presented frame (for scripts driving it)");
-  edit_cmd->add_option("--size", edit.size, "Viewport WxH")->capture_default_str();
+  edit_cmd->add_option("--size", edit.size, "Window WxH (headless: the viewport)")
+      ->capture_default_str();
+  edit_cmd->add_option("--layout-file", edit.layout_file,
+                       "Window: layout file (default: $ANTUMBRA_CONFIG_DIR/editor.ini, else "
+                       "$XDG_CONFIG_HOME/antumbra/editor.ini or ~/.config/antumbra/editor.ini)");
+  edit_cmd->add_option("--ui-scale", edit.ui_scale, "Window: UI scale instead of the screen's DPI")
+      ->check(CLI::Range(0.5f, 4.0f));
+  edit_cmd->add_option("--layout-report", edit.layout_report,
+                       "Window: JSON of the panels', viewport's and image's rectangles on exit");
   edit_cmd->add_option("--out,--screenshot", edit.out,
                        "PNG of the last frame (windowed: the window as presented, UI included)");
 

@@ -19,7 +19,9 @@ low_position() {
     | sed 's/"position":\[//; s/\]//; s/,/ /g'
 }
 
-# 960x540: the lamp at (0, 0.5, 2) projects to (480, 465), below the panels.
+# A 960x540 window: the panels' column (400 px) on the right, the status bar (30 px)
+# below, a 560x510 viewport at the top left. The lamp at (0, 0.5, 2) projects to
+# (280, 439) there: the middle of the image across, 86 % of its height down.
 cat > "$tmp/input.sh" <<'INPUT'
 #!/usr/bin/env bash
 set -u
@@ -27,33 +29,12 @@ log="$2/log.txt"
 "$1" edit --validation --frame-log --size 960x540 --scene "$2/scene.json" \
   --graph "$2/graph.json" > "$log" 2>&1 &
 editor=$!
-frames() { grep -c '^editor: frame ' "$log"; }
-# Waits (up to 60 s) until `pattern` is in the log.
-wait_for() {
-  for _ in $(seq 1 600); do grep -q "$1" "$log" && return 0; sleep 0.1; done
-  echo "timed out waiting for: $1"
-  return 1
-}
-# Each event, then two whole frames: the frame that polled it has finished with it.
-step() {
-  local before
-  before=$(frames)
-  xdotool "$@"
-  for _ in $(seq 1 600); do [ "$(frames)" -ge $((before + 2)) ] && return 0; sleep 0.1; done
-  echo "timed out after: xdotool $*"
-}
-# `n` more whole frames.
-settle() {
-  local before
-  before=$(frames)
-  for _ in $(seq 1 600); do [ "$(frames)" -ge $((before + $1)) ] && return 0; sleep 0.1; done
-  echo "timed out waiting for $1 frames"
-}
+source "$editor_driver"
 wait_for "first frame presented"
-step mousemove 480 465
+step mousemove 280 439
 step mousedown 1
-step mousemove 530 465
-step mousemove 580 465
+step mousemove 330 439
+step mousemove 380 439
 step mouseup 1
 step key ctrl+s
 cp "$2/scene.json" "$2/after-drag.json"
@@ -62,26 +43,23 @@ step key ctrl+s
 cp "$2/scene.json" "$2/after-undo.json"
 # The whole drag between two frames (press, move, release in one burst, as a fast hand
 # or a slow lavapipe frame makes it): the queued press is replayed where it happened.
-step mousemove 480 465 mousedown 1 mousemove 580 465 mouseup 1
+step mousemove 280 439 mousedown 1 mousemove 380 439 mouseup 1
 # The burst's press and release are replayed one frame each, and the Ctrl+S after them
 # waits for both: under a loaded CI machine that can take frames beyond step's two.
 settle 4
 step key ctrl+s
 settle 4
 cp "$2/scene.json" "$2/after-burst.json"
-# Resizing (no window manager under Xvfb: X resizes directly): the graph follows.
+# Resizing (no window manager under Xvfb: X resizes directly): the graph follows the
+# viewport, 800x450 less the column and the status bar.
 xdotool search --name "antumbra edit" windowsize 800 450
-wait_for "graph resized to 800x450"
+wait_for "graph resized to 400x420"
 # The cap lowered in the file on disk: the reload says, located, that the two
 # overlapping lamps need more layers than it allows (LY001), not only at start.
 sed 's/"maxLayers": 4/"maxLayers": 1/' "$2/graph.json" > "$2/graph.tmp" && mv "$2/graph.tmp" "$2/graph.json"
 wait_for "graph reloaded from disk"
 wait_for "graph.json:[0-9]*:[0-9]*: warning\[LY001\]"
-xdotool key ctrl+q  # no frames follow: the editor closes
-for _ in $(seq 1 600); do kill -0 $editor 2>/dev/null || break; sleep 0.1; done
-kill $editor 2>/dev/null && echo "the editor did not close on Ctrl+Q"
-wait $editor
-echo "editor exit $?"
+quit_editor $editor
 INPUT
 chmod +x "$tmp/input.sh"
 start=$(date +%s.%N)
@@ -91,12 +69,13 @@ log="$tmp/log.txt"
 fail() { echo "FAIL: $*"; echo "--- driver:"; cat "$tmp/driver.txt"; echo "--- log:"; cat "$log"; exit 1; }
 grep -q "editor exit 0" "$tmp/driver.txt" || fail "the editor did not exit 0 on Ctrl+Q"
 grep -q "validation: 0 error(s)" "$log" || fail "no clean validation summary"
-grep -q "graph resized to 800x450" "$log" || fail "the graph did not follow the window's new size"
+grep -q "graph resized to 400x420" "$log" || fail "the graph did not follow the viewport's new size"
 grep -q "warning\[LY001\]" "$log" || fail "the lowered cap's reload did not warn"
 cp "$tmp/after-drag.json" "$tmp/scene.json"
 read -r x y z <<<"$(low_position)"
 echo "after the drag: $x $y $z"
-# 100 px right at 6 m depth (focal 467.6 px): about +1.28 m in x; y and z stay.
+# 100 px right at 6 m depth (focal 441.6 px in the 510 px high image): about +1.36 m in
+# x; y and z stay.
 awk -v x="$x" -v y="$y" -v z="$z" 'BEGIN { exit !(x > 0.9 && x < 1.7 && y == 0.5 && z > 1.8 && z < 2.2) }' \
   || fail "the drag did not move the light to x ~ 1.28 on its plane: $x $y $z"
 cp "$tmp/after-undo.json" "$tmp/scene.json"

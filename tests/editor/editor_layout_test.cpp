@@ -161,10 +161,12 @@ TEST(EditorLayoutFile, BadLinesAreNamedAndTheRestIsRead) {
 }
 
 TEST(EditorLayoutFile, GarbageIsTheDefaults) {
+  // Binary bytes, NULs included (the literal would stop at its first NUL).
   std::string garbage =
       "\x7f"
-      "ELF\x01\x02\x00\xff\xfe[[[]\n==\n";
+      "ELF\x01\x02\xff\xfe[[[]\n==\n";
   garbage += std::string(1000, '\0');
+  garbage += "\x01\x02";
   const ParsedLayout parsed = parse_layout(garbage);
   EXPECT_FALSE(parsed.problems.empty());
   LayoutSettings defaults;

@@ -165,9 +165,8 @@ void draw_resources(EditorState& state) {
 
 }  // namespace
 
-void draw_graph_panel(EditorState& state) {
-  place_panel(2, 420.0f);
-  if (!ImGui::Begin("Frame graph")) {
+void draw_graph_panel(EditorState& state, PanelSlot& slot) {
+  if (!begin_panel("Frame graph", slot)) {
     ImGui::End();
     return;
   }

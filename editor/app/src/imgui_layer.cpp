@@ -1,5 +1,7 @@
 #include "imgui_layer.hpp"
 
+#include <cmath>
+
 #include <imgui.h>
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_vulkan.h>
@@ -10,6 +12,8 @@
 namespace antumbra::editor_app {
 namespace {
 
+constexpr float kBaseFontPixels = 13.0f;  // ImGui's built-in font at scale 1
+
 // The backend reports every VkResult here: fail like the rest of the engine does.
 void check_imgui_result(VkResult result) {
   gpu::check(result, "Dear ImGui Vulkan backend");
@@ -17,7 +21,8 @@ void check_imgui_result(VkResult result) {
 
 }  // namespace
 
-ImguiLayer::ImguiLayer(gpu::Context& gpu, Window& window, const Swapchain& swapchain) : gpu_(gpu) {
+ImguiLayer::ImguiLayer(gpu::Context& gpu, Window& window, const Swapchain& swapchain, float scale)
+    : gpu_(gpu), font_scale_(scale) {
   // One combined image sampler: the font atlas (the only texture the UI uses).
   VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1};
   VkDescriptorPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
@@ -33,8 +38,14 @@ ImguiLayer::ImguiLayer(gpu::Context& gpu, Window& window, const Swapchain& swapc
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
   ImGuiIO& io = ImGui::GetIO();
-  io.IniFilename = nullptr;  // layout is code's: no imgui.ini left in the working folder
-  ImGui::StyleColorsDark();
+  // ImGui's state goes into the editor's per-user layout file (LayoutView), never an
+  // imgui.ini in the working folder.
+  io.IniFilename = nullptr;
+  // The built-in font at the scaled size: crisp text at 2x, not a magnified bitmap.
+  ImFontConfig font;
+  font.SizePixels = std::round(kBaseFontPixels * scale);
+  io.Fonts->AddFontDefault(&font);
+  set_scale(scale);
   ImGui_ImplGlfw_InitForVulkan(window.handle(), true);
 
   ImGui_ImplVulkan_InitInfo info{};
@@ -77,6 +88,18 @@ void ImguiLayer::begin_frame(Window& window) {
 
 void ImguiLayer::end_frame() {
   ImGui::Render();
+}
+
+void ImguiLayer::set_scale(float scale) {
+  scale_ = scale;
+  ImGuiStyle style;
+  ImGui::StyleColorsDark(&style);
+  style.ScaleAllSizes(scale);
+  // The layout sizes every window; ImGui's minimum would push a collapsed panel's
+  // neighbour or the status bar past their rectangles.
+  style.WindowMinSize = {1.0f, 1.0f};
+  ImGui::GetStyle() = style;
+  ImGui::GetIO().FontGlobalScale = scale / font_scale_;
 }
 
 void ImguiLayer::draw(VkCommandBuffer cmd) {

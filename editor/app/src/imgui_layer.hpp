@@ -19,7 +19,8 @@ class ImguiLayer {
   // frames in flight, so a buffer is rewritten only after its last frame finished.
   static constexpr std::uint32_t kBufferedFrames = 2;
 
-  ImguiLayer(gpu::Context& gpu, Window& window, const Swapchain& swapchain);
+  // `scale`: the UI scale (DPI); the font is rasterised at its size.
+  ImguiLayer(gpu::Context& gpu, Window& window, const Swapchain& swapchain, float scale);
   ImguiLayer(const ImguiLayer&) = delete;
   ImguiLayer& operator=(const ImguiLayer&) = delete;
   ~ImguiLayer();
@@ -27,10 +28,17 @@ class ImguiLayer {
   void begin_frame(Window& window);  // input (queued clicks first), then ImGui::NewFrame()
   void end_frame();                  // ImGui::Render(): the draw data for draw()
   void draw(VkCommandBuffer cmd);    // inside the swapchain's UI render pass
+  // Scales the style's sizes and the text for a new DPI scale (call between frames). The
+  // font stays rasterised at the first scale (the 1.86 backend cannot upload it again),
+  // magnified or reduced to the new one until the next start.
+  void set_scale(float scale);
+  [[nodiscard]] float scale() const { return scale_; }
 
  private:
   gpu::Context& gpu_;
   gpu::DescriptorPool pool_;
+  float font_scale_ = 1.0f;  // the scale the font atlas was built at
+  float scale_ = 1.0f;
 };
 
 }  // namespace antumbra::editor_app

@@ -121,9 +121,8 @@ void draw_fix(EditorState& state) {
 
 }  // namespace
 
-void draw_layers_panel(EditorState& state) {
-  place_panel(1, 420.0f);
-  if (!ImGui::Begin("Layers")) {
+void draw_layers_panel(EditorState& state, PanelSlot& slot) {
+  if (!begin_panel("Layers", slot)) {
     ImGui::End();
     return;
   }

@@ -42,17 +42,8 @@ void draw_light_fields(EditorState& state, std::size_t index) {
 
 }  // namespace
 
-void place_panel(int column, float height) {
-  const ImVec2 size = ImGui::GetMainViewport()->Size;
-  const float width = size.x / 3.0f - 10.0f;
-  ImGui::SetNextWindowPos({8.0f + static_cast<float>(column) * (width + 6.0f), 8.0f},
-                          ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize({width, std::min(height, size.y - 44.0f)}, ImGuiCond_FirstUseEver);
-}
-
-void draw_lights_panel(EditorState& state) {
-  place_panel(0, 330.0f);
-  if (!ImGui::Begin("Lights")) {
+void draw_lights_panel(EditorState& state, PanelSlot& slot) {
+  if (!begin_panel("Lights", slot)) {
     ImGui::End();
     return;
   }

@@ -7,6 +7,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include "antumbra/editor/editor_layout.hpp"
 #include "antumbra/editor/viewport.hpp"
 #include "antumbra/gpu/commands.hpp"
 #include "antumbra/gpu/image_io.hpp"
@@ -18,13 +19,16 @@ namespace {
 constexpr VkClearColorValue kBackground{{0.08f, 0.08f, 0.09f, 1.0f}};
 constexpr VkImageSubresourceRange kColorLayer0{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
 
-// The largest rectangle with the source's aspect ratio, centred in the target (the same
-// rectangle the viewport maps the mouse through).
-std::array<VkOffset3D, 2> letterbox(VkExtent2D source, VkExtent2D target) {
+// The largest rectangle with the source's aspect ratio, centred in the area (the same
+// rectangle the viewport maps the mouse through), kept inside the target: an area from
+// a layout a frame older than a shrunk swapchain must not blit out of bounds.
+std::array<VkOffset3D, 2> fit(VkExtent2D source, const editor::PixelRect& area, VkExtent2D target) {
   const editor::PixelRect r =
-      editor::letterbox({static_cast<int>(source.width), static_cast<int>(source.height)},
-                        {static_cast<int>(target.width), static_cast<int>(target.height)});
-  return {VkOffset3D{r.x, r.y, 0}, VkOffset3D{r.x + r.width, r.y + r.height, 1}};
+      editor::fit_image({static_cast<int>(source.width), static_cast<int>(source.height)}, area);
+  const auto clamp_x = [&](int x) { return std::clamp(x, 0, static_cast<int>(target.width)); };
+  const auto clamp_y = [&](int y) { return std::clamp(y, 0, static_cast<int>(target.height)); };
+  return {VkOffset3D{clamp_x(r.x), clamp_y(r.y), 0},
+          VkOffset3D{clamp_x(r.x + r.width), clamp_y(r.y + r.height), 1}};
 }
 
 }  // namespace
@@ -70,7 +74,8 @@ void Presenter::rebuild(VkExtent2D extent) {
                 swapchain_.extent().height);
 }
 
-void Presenter::record_blit(VkCommandBuffer cmd, const fgvk::BoundImage* source, VkImage target) {
+void Presenter::record_blit(VkCommandBuffer cmd, const fgvk::BoundImage* source, VkImage target,
+                            const editor::PixelRect& area) {
   // The acquire semaphore's wait covers ALL_TRANSFER: the first use of the image.
   gpu::image_barrier(
       cmd, {target, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
@@ -85,6 +90,9 @@ void Presenter::record_blit(VkCommandBuffer cmd, const fgvk::BoundImage* source,
     vkGetPhysicalDeviceFormatProperties(gpu_.physical_device(), source->format, &props);
     blittable = (props.optimalTilingFeatures & VK_FORMAT_FEATURE_BLIT_SRC_BIT) != 0;
   }
+  const auto rect =
+      blittable ? fit(source->extent, area, swapchain_.extent()) : std::array<VkOffset3D, 2>{};
+  blittable = blittable && rect[1].x > rect[0].x && rect[1].y > rect[0].y;  // else off-screen
   if (blittable) {
     // The clear and the blit both write the target: order them.
     gpu::image_barrier(
@@ -102,7 +110,6 @@ void Presenter::record_blit(VkCommandBuffer cmd, const fgvk::BoundImage* source,
     region.srcOffsets[1] = {static_cast<int>(source->extent.width),
                             static_cast<int>(source->extent.height), 1};
     region.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-    const auto rect = letterbox(source->extent, swapchain_.extent());
     region.dstOffsets[0] = rect[0];
     region.dstOffsets[1] = rect[1];
     const bool linear =
@@ -124,7 +131,7 @@ void Presenter::record_blit(VkCommandBuffer cmd, const fgvk::BoundImage* source,
             kColorLayer0});
 }
 
-bool Presenter::present(const fgvk::BoundImage* source,
+bool Presenter::present(const fgvk::BoundImage* source, const editor::PixelRect& area,
                         const std::function<void(VkCommandBuffer)>& draw_ui,
                         const std::string& screenshot) {
   Slot& slot = slots_[slot_];
@@ -140,7 +147,7 @@ bool Presenter::present(const fgvk::BoundImage* source,
   const VkImage image = swapchain_.image(*index);
   {
     gpu::CommandLabel label(gpu_, slot.cmd, "editor: blit graph output");
-    record_blit(slot.cmd, source, image);
+    record_blit(slot.cmd, source, image, area);
   }
   record_ui(slot.cmd, *index, draw_ui);
   std::optional<gpu::Buffer> readback;

@@ -13,6 +13,8 @@
 
 #include <vulkan/vulkan.h>
 
+#include "antumbra/editor/editor_layout.hpp"
+#include "antumbra/editor/viewport.hpp"
 #include "antumbra/fgvk/pass.hpp"
 #include "antumbra/gpu/context.hpp"
 #include "antumbra/gpu/handle.hpp"
@@ -35,11 +37,13 @@ class Presenter {
 
   // False when the window is minimised: nothing can be drawn, wait for events.
   bool ready();
-  // Draws one frame: `source` (may be null: the window is cleared) under the UI that
-  // `draw_ui` records in the UI render pass. With a screenshot path, the presented
-  // image is read back and written as PNG. Returns false when the frame was skipped
-  // (the swapchain went out of date and was rebuilt).
-  bool present(const fgvk::BoundImage* source, const std::function<void(VkCommandBuffer)>& draw_ui,
+  // Draws one frame: `source` (may be null: the window is cleared) fitted into `area`
+  // (the viewport beside the panels, framebuffer pixels; clamped to the swapchain) under
+  // the UI that `draw_ui` records in the UI render pass. With a screenshot path, the
+  // presented image is read back and written as PNG. Returns false when the frame was
+  // skipped (the swapchain went out of date and was rebuilt).
+  bool present(const fgvk::BoundImage* source, const editor::PixelRect& area,
+               const std::function<void(VkCommandBuffer)>& draw_ui,
                const std::string& screenshot = {});
   [[nodiscard]] std::uint64_t presented() const { return presented_; }
   [[nodiscard]] std::uint32_t recreations() const { return recreations_; }
@@ -55,7 +59,8 @@ class Presenter {
   void rebuild(VkExtent2D extent);
   // Nothing when the swapchain is out of date: it is rebuilt before the next frame.
   std::optional<std::uint32_t> acquire_image(const Slot& slot);
-  void record_blit(VkCommandBuffer cmd, const fgvk::BoundImage* source, VkImage target);
+  void record_blit(VkCommandBuffer cmd, const fgvk::BoundImage* source, VkImage target,
+                   const editor::PixelRect& area);
   void record_ui(VkCommandBuffer cmd, std::uint32_t index,
                  const std::function<void(VkCommandBuffer)>& draw_ui);
   // Copies the presented image into a host-visible buffer, read once the frame is done.

@@ -41,9 +41,9 @@ bool same_aspect(glm::ivec2 a, glm::ivec2 b) {
 }  // namespace
 
 void ViewportView::update(EditorState& state, const std::vector<KeyPress>& presses, glm::ivec2 view,
-                          glm::ivec2 shown, glm::ivec2 framebuffer) {
+                          glm::ivec2 shown, const editor::PixelRect& area) {
   const bool camera_image = same_aspect(view, shown);
-  const editor::PixelRect rect = editor::letterbox(shown, framebuffer);
+  const editor::PixelRect rect = editor::fit_image(shown, area);
   const glm::vec2 mouse_fb = to_framebuffer(ImGui::GetIO().MousePos);
   const bool over_image =
       camera_image && !ImGui::GetIO().WantCaptureMouse && rect.contains(mouse_fb);
@@ -224,8 +224,8 @@ void ViewportView::draw_overlays(EditorState& state, glm::ivec2 view, const edit
       ImGui::SetTooltip("%s", tip.c_str());
     }
   }
-  const float status_bar_top = ImGui::GetMainViewport()->Size.y - 26.0f;
-  draw->AddText({clip_min.x + 6.0f, std::min(clip_max.y, status_bar_top) - 18.0f},
+  // Along the image's bottom edge, which the layout keeps clear of the status bar.
+  draw->AddText({clip_min.x + 6.0f, clip_max.y - ImGui::GetFontSize() - 5.0f},
                 IM_COL32(230, 230, 230, 170), kHelp);
   draw->PopClipRect();
 }

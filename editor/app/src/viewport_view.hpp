@@ -12,6 +12,7 @@
 
 #include <glm/glm.hpp>
 
+#include "antumbra/editor/editor_layout.hpp"
 #include "antumbra/editor/viewport.hpp"
 #include "editor_state.hpp"
 #include "window.hpp"
@@ -21,11 +22,12 @@ namespace antumbra::editor_app {
 class ViewportView {
  public:
   // `view`: the extent the camera renders (the graph's viewport); `shown`: the extent of
-  // the image on screen; `framebuffer`: the window's. Overlays and picking are off when
-  // the shown image is not a camera view of the same aspect (an atlas, say).
+  // the image on screen; `area`: the viewport's rectangle in the window (framebuffer
+  // pixels, beside the panels), where the image is fitted. Overlays and picking are off
+  // when the shown image is not a camera view of the same aspect (an atlas, say).
   // `presses`: this frame's key presses (F, Home), taken from the window.
   void update(EditorState& state, const std::vector<KeyPress>& presses, glm::ivec2 view,
-              glm::ivec2 shown, glm::ivec2 framebuffer);
+              glm::ivec2 shown, const editor::PixelRect& area);
   // A light drag holds the scene gesture open across frames.
   [[nodiscard]] bool dragging() const { return drag_.has_value(); }
 

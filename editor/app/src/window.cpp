@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <utility>
 
 #include <stdexcept>
 
@@ -56,6 +57,7 @@ Window::Window(int width, int height, const std::string& title) {
   glfwSetKeyCallback(window_, &Window::on_key);
   glfwSetMouseButtonCallback(window_, &Window::on_mouse_button);
   glfwSetCursorPosCallback(window_, &Window::on_cursor);
+  glfwSetWindowContentScaleCallback(window_, &Window::on_content_scale);
   glfwGetCursorPos(window_, &cursor_x_, &cursor_y_);
 }
 
@@ -126,6 +128,29 @@ VkExtent2D Window::framebuffer_size() const {
   int height = 0;
   glfwGetFramebufferSize(window_, &width, &height);
   return {static_cast<std::uint32_t>(width), static_cast<std::uint32_t>(height)};
+}
+
+VkExtent2D Window::window_size() const {
+  int width = 0;
+  int height = 0;
+  glfwGetWindowSize(window_, &width, &height);
+  return {static_cast<std::uint32_t>(width), static_cast<std::uint32_t>(height)};
+}
+
+float Window::content_scale() const {
+  float x = 1.0f;
+  float y = 1.0f;
+  glfwGetWindowContentScale(window_, &x, &y);
+  return x > 0.0f ? x : 1.0f;
+}
+
+void Window::on_content_scale(GLFWwindow* window, float /*x*/, float /*y*/) {
+  auto* self = static_cast<Window*>(glfwGetWindowUserPointer(window));
+  if (self != nullptr) self->scale_changed_ = true;
+}
+
+bool Window::take_content_scale_change() {
+  return std::exchange(scale_changed_, false);
 }
 
 bool Window::minimised() const {

@@ -54,6 +54,13 @@ class Window {
 
   [[nodiscard]] GLFWwindow* handle() const { return window_; }
   [[nodiscard]] VkExtent2D framebuffer_size() const;
+  // In screen coordinates (ImGui's units); the framebuffer may have more pixels (macOS).
+  [[nodiscard]] VkExtent2D window_size() const;
+  // The DPI scale the desktop asks for (1 at 96 dpi), GLFW's content scale.
+  [[nodiscard]] float content_scale() const;
+  // True once after the window moved to a screen of another scale (or the setting
+  // changed): the UI is then scaled again.
+  [[nodiscard]] bool take_content_scale_change();
   // Iconified, or a 0x0 framebuffer (how some platforms report it): nothing to draw.
   [[nodiscard]] bool minimised() const;
   [[nodiscard]] bool should_close() const;
@@ -73,6 +80,7 @@ class Window {
   static void on_key(GLFWwindow* window, int key, int scancode, int action, int mods);
   static void on_mouse_button(GLFWwindow* window, int button, int action, int mods);
   static void on_cursor(GLFWwindow* window, double x, double y);
+  static void on_content_scale(GLFWwindow* window, float x, float y);
 
   GLFWwindow* window_ = nullptr;
   std::vector<KeyPress> presses_;
@@ -82,6 +90,7 @@ class Window {
   std::optional<std::uint64_t> delivered_now_;  // the mouse event replayed this frame
   double cursor_x_ = 0.0;                       // the cursor in event order (window coordinates)
   double cursor_y_ = 0.0;
+  bool scale_changed_ = false;
 };
 
 // The window's VkSurfaceKHR, destroyed with the object (before the instance goes).

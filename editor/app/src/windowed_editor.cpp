@@ -17,6 +17,7 @@
 #include "antumbra/runtime/exit_codes.hpp"
 #include "editor_state.hpp"
 #include "imgui_layer.hpp"
+#include "layout_view.hpp"
 #include "panels.hpp"
 #include "presenter.hpp"
 #include "register_builtin_passes.hpp"
@@ -62,13 +63,18 @@ void handle_shortcuts(EditorState& state, const std::vector<KeyPress>& presses, 
   }
 }
 
-void draw_status_bar(EditorState& state) {
-  const ImGuiViewport* viewport = ImGui::GetMainViewport();
-  ImGui::SetNextWindowPos({viewport->Pos.x, viewport->Pos.y + viewport->Size.y - 26});
-  ImGui::SetNextWindowSize({viewport->Size.x, 26});
+// The status bar: the layout's bottom strip, under the viewport and the column.
+void draw_status_bar(EditorState& state, const editor::Rect& rect) {
+  if (rect.empty()) return;
+  ImGui::SetNextWindowPos({rect.x, rect.y});
+  ImGui::SetNextWindowSize({rect.width, rect.height});
+  // Less padding above and below than ImGui's: one line fits the bar's smallest height.
+  const ImGuiStyle& style = ImGui::GetStyle();
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, {style.WindowPadding.x, style.FramePadding.y});
   ImGui::Begin("##status", nullptr,
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing);
+  ImGui::PopStyleVar();
   ImGui::BeginDisabled(!state.can_undo());
   if (ImGui::SmallButton("Undo")) state.undo();
   ImGui::EndDisabled();
@@ -88,9 +94,14 @@ glm::ivec2 size_of(VkExtent2D extent) {
   return {static_cast<int>(extent.width), static_cast<int>(extent.height)};
 }
 
-// The graph follows the window's size once it has stopped changing for a moment, so a
-// drag of the window's border reallocates the graph's images once, not every frame. A
-// size that failed is not retried until the window's size changes again.
+VkExtent2D extent_of(const editor::PixelRect& rect) {
+  return {static_cast<std::uint32_t>(rect.width), static_cast<std::uint32_t>(rect.height)};
+}
+
+// The graph follows the viewport's size (the window's less the panels) once it has
+// stopped changing for a moment, so a drag of the window's border or of a splitter
+// reallocates the graph's images once, not every frame; meanwhile the image is fitted
+// into the viewport. A size that failed is not retried until the size changes again.
 struct PendingResize {
   VkExtent2D extent{0, 0};
   VkExtent2D failed{0, 0};
@@ -179,11 +190,12 @@ bool open_window(const WindowedOptions& options, std::optional<Window>& window) 
   return true;
 }
 
-runtime::SessionOptions session_options_for(const WindowedOptions& options, const Window& window) {
+runtime::SessionOptions session_options_for(const WindowedOptions& options, const Window& window,
+                                            VkExtent2D viewport) {
   runtime::SessionOptions session_options;
   session_options.device = options.device;
   session_options.validation = options.validation;
-  session_options.viewport = {options.width, options.height};
+  session_options.viewport = viewport;
   session_options.instance_extensions = window.required_instance_extensions();
   session_options.present = true;
   return session_options;
@@ -206,13 +218,14 @@ bool select_light(EditorState& state, const std::string& name) {
 class FrameLoop {
  public:
   FrameLoop(const WindowedOptions& options, Window& window, runtime::RenderSession& session,
-            Presenter& presenter, ImguiLayer& ui, EditorState& state, fs::path scene_file,
-            fs::path graph_file)
+            Presenter& presenter, ImguiLayer& ui, LayoutView& layout, EditorState& state,
+            fs::path scene_file, fs::path graph_file)
       : options_(options),
         window_(window),
         session_(session),
         presenter_(presenter),
         ui_(ui),
+        layout_(layout),
         state_(state),
         scene_file_(std::move(scene_file)),
         graph_file_(std::move(graph_file)) {}
@@ -232,15 +245,22 @@ class FrameLoop {
       }
       if (paused_) std::printf("editor: window restored, rendering resumed\n");
       paused_ = false;
-      follow_window_size(state_, presenter_.swapchain().extent(), resize_);
+      follow_content_scale();
       gpu::CpuTimer frame_clock;
       build_ui(close_requested);
+      follow_window_size(state_, extent_of(layout_.viewport_pixels()), resize_);
       render_and_present(frame_clock);
       finish_frame();
     }
   }
 
   [[nodiscard]] int presented() const { return presented_; }
+  // Where the last frame put the graph's image (framebuffer pixels).
+  [[nodiscard]] editor::PixelRect shown_rect() const {
+    const fgvk::BoundImage* shown = session_.executor().image(state_.shown_resource());
+    const VkExtent2D extent = shown != nullptr ? shown->extent : session_.viewport();
+    return editor::fit_image(size_of(extent), layout_.viewport_pixels());
+  }
   [[nodiscard]] bool presented_all_frames() const {
     return options_.frames > 0 && presented_ >= options_.frames;
   }
@@ -254,15 +274,26 @@ class FrameLoop {
     window_.wait_events();  // nothing to draw until it is restored
   }
 
+  // A window moved to a screen of another density: the UI follows (not under --ui-scale).
+  void follow_content_scale() {
+    if (!window_.take_content_scale_change() || options_.ui_scale > 0.0f) return;
+    const float scale = window_.content_scale();
+    if (scale == ui_.scale()) return;
+    ui_.set_scale(scale);
+    layout_.set_scale(scale);
+    std::printf("editor: UI scale %.2f\n", scale);
+  }
+
   void build_ui(bool close_requested) {
     ui_.begin_frame(window_);
+    layout_.begin_frame();
     const std::vector<KeyPress> presses = window_.take_key_presses();
     handle_shortcuts(state_, presses, window_);
     update_viewport(presses);
-    draw_lights_panel(state_);
-    draw_layers_panel(state_);
-    draw_graph_panel(state_);
-    draw_status_bar(state_);
+    draw_lights_panel(state_, layout_.slot(editor::Panel::lights));
+    draw_layers_panel(state_, layout_.slot(editor::Panel::layers));
+    draw_graph_panel(state_, layout_.slot(editor::Panel::graph));
+    draw_status_bar(state_, layout_.layout().status);
     switch (draw_close_prompt(state_, close_requested && prompt_)) {
       case CloseChoice::close:
         quit_ = true;
@@ -274,15 +305,16 @@ class FrameLoop {
         break;
     }
     state_.end_frame(ImGui::IsAnyItemActive() || viewport_.dragging());
+    layout_.end_frame();
     ui_.end_frame();
   }
 
   void update_viewport(const std::vector<KeyPress>& presses) {
     const fgvk::BoundImage* shown = session_.executor().image(state_.shown_resource());
     const VkExtent2D view = session_.viewport();
-    const VkExtent2D window_extent = presenter_.swapchain().extent();
     const VkExtent2D shown_extent = shown != nullptr ? shown->extent : view;
-    viewport_.update(state_, presses, size_of(view), size_of(shown_extent), size_of(window_extent));
+    viewport_.update(state_, presses, size_of(view), size_of(shown_extent),
+                     layout_.viewport_pixels());
   }
 
   void render_and_present(const gpu::CpuTimer& frame_clock) {
@@ -295,7 +327,7 @@ class FrameLoop {
     const bool from_window = presenter_.swapchain().readable();
     const fgvk::BoundImage* shown = session_.executor().image(state_.shown_resource());
     if (presenter_.present(
-            shown, [&](VkCommandBuffer cmd) { ui_.draw(cmd); },
+            shown, layout_.viewport_pixels(), [&](VkCommandBuffer cmd) { ui_.draw(cmd); },
             last && from_window ? options_.screenshot : std::string())) {
       if (last && !from_window && !options_.screenshot.empty()) {
         session_.write_image(state_.shown_resource(), options_.screenshot);
@@ -327,6 +359,7 @@ class FrameLoop {
   runtime::RenderSession& session_;
   Presenter& presenter_;
   ImguiLayer& ui_;
+  LayoutView& layout_;
   EditorState& state_;
   fs::path scene_file_;
   fs::path graph_file_;
@@ -378,14 +411,18 @@ int run_windowed_editor(const WindowedOptions& options) {
 
   std::optional<Window> window;
   if (!open_window(options, window)) return runtime::kExitRuntime;
-  runtime::RenderSession session(runtime::find_data_paths(), session_options_for(options, *window));
+  LayoutView layout({options.layout_file, options.ui_scale}, *window);
+  runtime::RenderSession session(
+      runtime::find_data_paths(),
+      session_options_for(options, *window, layout.initial_viewport(*window)));
   std::printf("device: %s%s\n", session.gpu().device_name().c_str(),
               options.validation ? " (validation + synchronization validation on)" : "");
 
   // Declared after the session, so destroyed before its device and instance.
   Surface surface(session.gpu().instance(), *window);
   Presenter presenter(session.gpu(), *window, surface.handle());
-  ImguiLayer ui(session.gpu(), *window, presenter.swapchain());
+  ImguiLayer ui(session.gpu(), *window, presenter.swapchain(), layout.scale());
+  layout.restore_imgui_state();
   EditorState state(session, std::move(documents->scene), std::move(documents->graph),
                     editor::lookup_in(registry.reflection()));
   if (!state.start()) return runtime::kExitDiagnostics;
@@ -393,8 +430,13 @@ int run_windowed_editor(const WindowedOptions& options) {
     return runtime::kExitUsage;
   }
 
-  FrameLoop loop(options, *window, session, presenter, ui, state, scene_file, graph_file);
+  FrameLoop loop(options, *window, session, presenter, ui, layout, state, scene_file, graph_file);
   loop.run();
+  layout.save();
+  if (!options.layout_report.empty() && loop.presented() > 0 &&
+      !layout.write_report(options.layout_report, session.viewport(), loop.shown_rect())) {
+    return runtime::kExitRuntime;
+  }
   close_documents(state, loop);
   session.gpu().wait_idle();
   print_summary(session, presenter, loop, options);

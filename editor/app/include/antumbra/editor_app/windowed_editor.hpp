@@ -11,12 +11,15 @@ struct WindowedOptions {
   std::string scene;  // empty: the default scene
   std::string device = "auto";
   bool validation = false;
-  int frames = 0;  // > 0: close after this many presented frames (tests)
-  unsigned width = 1280;
+  int frames = 0;         // > 0: close after this many presented frames (tests)
+  unsigned width = 1280;  // the window; the graph renders at the viewport beside the panels
   unsigned height = 720;
-  std::string screenshot;  // PNG of the last presented window image (UI included)
-  std::string select;      // a light's name: selected at start (its range sphere shown)
-  bool frame_log = false;  // "editor: frame N" per presented frame, flushed (input scripts)
+  std::string screenshot;     // PNG of the last presented window image (UI included)
+  std::string select;         // a light's name: selected at start (its range sphere shown)
+  bool frame_log = false;     // "editor: frame N" per presented frame, flushed (input scripts)
+  std::string layout_file;    // empty: the per-user editor.ini (ANTUMBRA_CONFIG_DIR, XDG, ~)
+  float ui_scale = 0.0f;      // > 0: instead of the window's DPI scale
+  std::string layout_report;  // JSON of the window's layout as last drawn, written on exit
 };
 
 // Exit codes as the rest of the command line: 0 ok, 1 diagnostics (bad files, or
