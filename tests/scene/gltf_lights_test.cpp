@@ -28,36 +28,8 @@ fs::path fresh_dir(const std::string& name) {
   return dir;
 }
 
-// A 2 m quad lit by a point light at (1, 2, 3), a spot at (0, 4, 0) pointing down and a
-// sun shining along -Y turned 30 degrees towards +X... nodes 1, 2, 3.
 json lit_quad() {
-  json doc = antumbra::testing::quad_gltf(2.0f, 0.0f);
-  doc["materials"] = json::array({{{"name", "grey"}}});
-  doc["extensionsUsed"] = {"KHR_lights_punctual"};
-  doc["extensions"]["KHR_lights_punctual"]["lights"] =
-      json::array({{{"name", "bulb"},
-                    {"type", "point"},
-                    {"color", {1.0, 0.5, 0.25}},
-                    {"intensity", 100.0},
-                    {"range", 5.0}},
-                   {{"name", "cone"},
-                    {"type", "spot"},
-                    {"intensity", 50.0},
-                    {"spot", {{"innerConeAngle", 0.2}, {"outerConeAngle", 0.5}}}},
-                   {{"type", "directional"}, {"intensity", 3.0}}});
-  const double h = std::sqrt(0.5);
-  // -Z turned to -Y: a quarter turn about X.
-  doc["nodes"].push_back({{"name", "bulb node"},
-                          {"translation", {1.0, 2.0, 3.0}},
-                          {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
-  doc["nodes"].push_back({{"translation", {0.0, 4.0, 0.0}},
-                          {"rotation", {-h, 0.0, 0.0, h}},
-                          {"extensions", {{"KHR_lights_punctual", {{"light", 1}}}}}});
-  doc["nodes"].push_back({{"name", "sun"},
-                          {"rotation", {-h, 0.0, 0.0, h}},
-                          {"extensions", {{"KHR_lights_punctual", {{"light", 2}}}}}});
-  doc["scenes"][0]["nodes"] = {0, 1, 2, 3};
-  return doc;
+  return antumbra::testing::lit_quad_gltf();
 }
 
 void expect_near(glm::vec3 actual, glm::vec3 expected, const std::string& what) {

@@ -3,6 +3,7 @@
 // lights or images), written next to its PNG images in a folder of the test's. Header-only;
 // link PkgConfig::STB for the PNG writer.
 
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -76,6 +77,40 @@ inline nlohmann::json quad_gltf(float size, float y) {
         {"max", {h, y, h}}},
        {{"bufferView", 1}, {"componentType", 5126}, {"count", 4}, {"type", "VEC2"}},
        {{"bufferView", 2}, {"componentType", 5123}, {"count", 6}, {"type", "SCALAR"}}});
+  return doc;
+}
+
+// quad_gltf(2, 0) with KHR_lights_punctual: node "bulb node" places point light "bulb"
+// (colour (1, 0.5, 0.25), 100 cd, range 5) at (1, 2, 3); an unnamed node places spot
+// "cone" (50 cd, cone 0.2 / 0.5 rad, no range) at (0, 4, 0) pointing down; node "sun"
+// turns an unnamed 3 lux directional light to shine down.
+inline nlohmann::json lit_quad_gltf() {
+  nlohmann::json doc = quad_gltf(2.0f, 0.0f);
+  doc["materials"] = nlohmann::json::array({{{"name", "grey"}}});
+  doc["extensionsUsed"] = {"KHR_lights_punctual"};
+  doc["extensions"]["KHR_lights_punctual"]["lights"] =
+      nlohmann::json::array({{{"name", "bulb"},
+                              {"type", "point"},
+                              {"color", {1.0, 0.5, 0.25}},
+                              {"intensity", 100.0},
+                              {"range", 5.0}},
+                             {{"name", "cone"},
+                              {"type", "spot"},
+                              {"intensity", 50.0},
+                              {"spot", {{"innerConeAngle", 0.2}, {"outerConeAngle", 0.5}}}},
+                             {{"type", "directional"}, {"intensity", 3.0}}});
+  const double h = std::sqrt(0.5);
+  // -Z turned to -Y: a quarter turn about X.
+  doc["nodes"].push_back({{"name", "bulb node"},
+                          {"translation", {1.0, 2.0, 3.0}},
+                          {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
+  doc["nodes"].push_back({{"translation", {0.0, 4.0, 0.0}},
+                          {"rotation", {-h, 0.0, 0.0, h}},
+                          {"extensions", {{"KHR_lights_punctual", {{"light", 1}}}}}});
+  doc["nodes"].push_back({{"name", "sun"},
+                          {"rotation", {-h, 0.0, 0.0, h}},
+                          {"extensions", {{"KHR_lights_punctual", {{"light", 2}}}}}});
+  doc["scenes"][0]["nodes"] = {0, 1, 2, 3};
   return doc;
 }
 

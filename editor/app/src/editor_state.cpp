@@ -237,14 +237,12 @@ void EditorState::redo() {
   }
 }
 
-// The editor edits lights only, so after the first upload only they are replaced.
+// The editor edits lights only, so after the first upload only they are replaced. The
+// document's lights are the engine's (overrides of imported lights merged the same way),
+// and validated edits keep the file loadable, so the scene (its glTF geometry and images
+// above all) is not parsed again on every slider step.
 void EditorState::sync_lights() {
-  auto parsed = scene::parse_scene_text(scene_.to_text(), scene_.file().string());
-  if (!parsed.ok()) {
-    message_ = "the edited scene no longer parses; the last good lights keep rendering";
-    return;
-  }
-  session_.set_lights(std::move(parsed.value().lights));
+  session_.set_lights(scene_.lights());
   status_.update(scene_);
 }
 

@@ -1,5 +1,6 @@
 #include "light_json.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <limits>
@@ -65,7 +66,10 @@ class LightReader {
     return v;
   }
 
-  void read(const Json& light, const std::string& p, scene::PointLight& out) {
+  // With `overriding`, `out` holds the imported light the entry overrides: absent keys
+  // keep its values (engine/scene's parser does the same).
+  void read(const Json& light, const std::string& p, scene::PointLight& out, bool overriding) {
+    const scene::LightType imported_type = out.type;
     if (const auto it = light.find(kName); it == light.end() || !it->is_string()) {
       error(codes::editor::kLightName,
             "a light needs a 'name' string (lights are selected by name)",
@@ -75,6 +79,7 @@ class LightReader {
     }
     if (const auto it = light.find(kType); it != light.end()) {
       const std::string type = it->is_string() ? it->get<std::string>() : "";
+      out.type = scene::LightType::point;
       if (type == "spot") {
         out.type = scene::LightType::spot;
       } else if (type == "directional") {
@@ -87,10 +92,10 @@ class LightReader {
     const bool sun = out.type == scene::LightType::directional;
     if (sun) {
       out.range = std::numeric_limits<float>::infinity();
-      out.size = 0.27f;
+      if (!overriding || imported_type != scene::LightType::directional) out.size = 0.27f;
     } else {
       if (auto v = vec3(light, p, kPosition, false)) out.position = *v;
-      if (!light.contains(kPosition))
+      if (!light.contains(kPosition) && !overriding)
         error(codes::editor::kLightField, "a light needs a 'position'", p);
       if (auto v = number(light, p, kRange, 0.0f, true)) out.range = *v;
     }
@@ -99,11 +104,13 @@ class LightReader {
     } else if (v) {
       error(codes::editor::kLightField, "light 'direction' must not be zero", p + "/" + kDirection);
     }
-    if (out.type != scene::LightType::point && !light.contains(kDirection))
+    if (out.type != scene::LightType::point && !light.contains(kDirection) && !overriding)
       error(codes::editor::kLightField, "a spot or directional light needs a 'direction'", p);
     if (out.type == scene::LightType::spot) {
       if (auto v = number(light, p, kAngle, 0.0f, true)) out.spot_outer = *v;
-      out.spot_inner = 0.8f * out.spot_outer;
+      const bool keep_inner = overriding && imported_type == scene::LightType::spot;
+      out.spot_inner =
+          keep_inner ? std::min(out.spot_inner, out.spot_outer) : 0.8f * out.spot_outer;
       if (auto v = number(light, p, kInnerAngle, 0.0f, true)) out.spot_inner = *v;
     }
     if (auto v = vec3(light, p, kColor, true)) out.color = *v;
@@ -127,47 +134,94 @@ class LightReader {
 }  // namespace
 
 std::vector<scene::PointLight> read_lights(const Json& root, const base::JsonDocument* located,
-                                           base::Diagnostics& diagnostics) {
+                                           base::Diagnostics& diagnostics,
+                                           const std::vector<scene::PointLight>& imported,
+                                           std::vector<LightOrigin>* origins) {
   std::vector<scene::PointLight> lights;
+  std::vector<LightOrigin> origin;
   LightReader reader(located, diagnostics);
-  const auto it = root.find("lights");
-  if (it == root.end()) return lights;
-  if (!it->is_array()) {
-    reader.error(codes::editor::kLightsNotArray, "'lights' must be an array", "/lights");
-    return lights;
-  }
-  std::unordered_map<std::string, std::size_t> names;
+  std::unordered_map<std::string_view, std::size_t> imported_index;
+  for (std::size_t k = 0; k < imported.size(); ++k) imported_index.emplace(imported[k].name, k);
+  std::vector<bool> overridden(imported.size(), false);
   int sun = -1;
-  for (std::size_t i = 0; i < it->size(); ++i) {
-    const std::string p = base::pointer_append("/lights", i);
-    scene::PointLight light;
-    if (!(*it)[i].is_object()) {
-      reader.error(codes::editor::kLightNotObject, "a light must be an object", p);
-    } else {
-      reader.read((*it)[i], p, light);
-    }
-    if ((*it)[i].contains(kName) && light.name.empty()) {
-      reader.error(codes::editor::kLightName, "light name is empty", p + "/" + kName);
-    } else if (!light.name.empty()) {
-      if (const auto [first, inserted] = names.emplace(light.name, i); !inserted) {
-        reader.error(codes::editor::kLightName,
-                     "duplicate light name '" + light.name + "' (first used by /lights/" +
-                         std::to_string(first->second) + ")",
-                     p + "/" + kName);
+  const auto it = root.find("lights");
+  if (it != root.end() && !it->is_array()) {
+    reader.error(codes::editor::kLightsNotArray, "'lights' must be an array", "/lights");
+  } else if (it != root.end()) {
+    std::unordered_map<std::string, std::size_t> names;
+    for (std::size_t i = 0; i < it->size(); ++i) {
+      const std::string p = base::pointer_append("/lights", i);
+      const Json& entry = (*it)[i];
+      scene::PointLight light;
+      bool overriding = false;
+      if (entry.is_object() && entry.contains(kName) && entry[kName].is_string()) {
+        const auto found = imported_index.find(entry[kName].get_ref<const std::string&>());
+        if (found != imported_index.end() && !overridden[found->second]) {
+          light = imported[found->second];
+          overridden[found->second] = true;
+          overriding = true;
+        }
       }
-    }
-    if (light.type == scene::LightType::directional) {
-      if (sun >= 0) {
-        reader.error(codes::editor::kSecondSun,
-                     "a scene has at most one directional light (the first is /lights/" +
-                         std::to_string(sun) + ")",
-                     p + "/" + kType);
+      if (!entry.is_object()) {
+        reader.error(codes::editor::kLightNotObject, "a light must be an object", p);
+      } else {
+        reader.read(entry, p, light, overriding);
       }
-      sun = static_cast<int>(i);
+      if (entry.contains(kName) && light.name.empty()) {
+        reader.error(codes::editor::kLightName, "light name is empty", p + "/" + kName);
+      } else if (!light.name.empty()) {
+        if (const auto [first, inserted] = names.emplace(light.name, i); !inserted) {
+          reader.error(codes::editor::kLightName,
+                       "duplicate light name '" + light.name + "' (first used by /lights/" +
+                           std::to_string(first->second) + ")",
+                       p + "/" + kName);
+        }
+      }
+      if (light.type == scene::LightType::directional) {
+        if (sun >= 0) {
+          reader.error(codes::editor::kSecondSun,
+                       "a scene has at most one directional light (the first is /lights/" +
+                           std::to_string(sun) + ")",
+                       p + "/" + kType);
+        }
+        sun = static_cast<int>(i);
+      }
+      lights.push_back(std::move(light));
+      origin.push_back(overriding ? LightOrigin::override : LightOrigin::own);
     }
-    lights.push_back(std::move(light));
   }
+  // The engine's order: imported lights nobody overrides follow, the scene's own sun
+  // displacing an imported one.
+  for (std::size_t k = 0; k < imported.size(); ++k) {
+    if (overridden[k]) continue;
+    if (imported[k].type == scene::LightType::directional) {
+      if (sun >= 0) continue;
+      sun = static_cast<int>(lights.size());
+    }
+    lights.push_back(imported[k]);
+    origin.push_back(LightOrigin::imported);
+  }
+  if (origins != nullptr) *origins = std::move(origin);
   return lights;
+}
+
+Json light_to_json(const scene::PointLight& light) {
+  const bool sun = light.type == scene::LightType::directional;
+  Json out = Json::object();
+  out[kName] = light.name;
+  if (light.type != scene::LightType::point) out[kType] = std::string(type_name(light.type));
+  if (!sun) out[kPosition] = tidy(light.position);
+  if (light.type != scene::LightType::point) out[kDirection] = tidy(light.direction);
+  if (light.type == scene::LightType::spot) {
+    out[kAngle] = tidy(light.spot_outer);
+    out[kInnerAngle] = tidy(light.spot_inner);
+  }
+  out[kColor] = tidy(light.color);
+  out[kIntensity] = tidy(light.intensity);
+  if (!sun) out[kRange] = tidy(light.range);
+  out[kSize] = tidy(light.size);
+  out[kCastsShadows] = light.casts_shadows;
+  return out;
 }
 
 Json tidy(float value) {

@@ -2,6 +2,8 @@
 // scene_edits.cpp, saving and the recovery file in json_file.cpp.
 #include "antumbra/editor/scene_document.hpp"
 
+#include <algorithm>
+
 #include "antumbra/scene/gltf_scene.hpp"
 
 #include "antumbra/base/diagnostic_codes.hpp"
@@ -11,8 +13,23 @@
 namespace antumbra::editor {
 namespace {
 
+// Lights the scene's objects import (glTF lights, instanced scenes' lights), read by the
+// engine's parser; only files with such objects pay for the load.
+std::vector<scene::PointLight> imported_lights_of(const base::JsonDocument& document) {
+  const auto objects = document.root().find("objects");
+  if (objects == document.root().end() || !objects->is_array()) return {};
+  const bool imports = std::any_of(objects->begin(), objects->end(), [](const base::Json& o) {
+    return o.is_object() && (o.contains("gltf") || o.contains("scene"));
+  });
+  if (!imports) return {};
+  auto parsed = scene::parse_scene(document);
+  return parsed.ok() ? parsed->imported_lights : std::vector<scene::PointLight>{};
+}
+
 // What the editor needs before it can edit a scene safely; the lights come back read.
 std::vector<scene::PointLight> check_scene(const base::JsonDocument& document,
+                                           const std::vector<scene::PointLight>& imported,
+                                           std::vector<LightOrigin>& origins,
                                            base::Diagnostics& diagnostics) {
   const base::Json& root = document.root();
   if (!root.is_object()) {
@@ -30,7 +47,7 @@ std::vector<scene::PointLight> check_scene(const base::JsonDocument& document,
                                   "/version"));
     return {};
   }
-  return detail::read_lights(root, &document, diagnostics);
+  return detail::read_lights(root, &document, diagnostics, imported, &origins);
 }
 
 }  // namespace
@@ -56,11 +73,16 @@ base::Result<SceneDocument> SceneDocument::parse(std::string_view text,
   auto document = base::parse_json(text, file.string());
   if (!document.ok()) return document.diagnostics();
   base::Diagnostics diagnostics;
-  std::vector<scene::PointLight> lights = check_scene(document.value(), diagnostics);
+  std::vector<scene::PointLight> imported = imported_lights_of(document.value());
+  std::vector<LightOrigin> origins;
+  std::vector<scene::PointLight> lights =
+      check_scene(document.value(), imported, origins, diagnostics);
   if (diagnostics.has_errors()) return diagnostics;
   SceneDocument doc;
   doc.file_ = JsonFile(file, std::move(document.value()), std::string(text));
   doc.lights_ = std::move(lights);
+  doc.origins_ = std::move(origins);
+  doc.imported_ = std::move(imported);
   return base::Result<SceneDocument>(std::move(doc), std::move(diagnostics));
 }
 
@@ -75,9 +97,18 @@ void SceneDocument::select(int index) {
   selected_ = index >= 0 && static_cast<std::size_t>(index) < lights_.size() ? index : -1;
 }
 
+LightOrigin SceneDocument::origin(std::size_t light) const {
+  return light < origins_.size() ? origins_[light] : LightOrigin::own;
+}
+
+std::size_t SceneDocument::file_light_count() const {
+  return static_cast<std::size_t>(std::count_if(
+      origins_.begin(), origins_.end(), [](LightOrigin o) { return o != LightOrigin::imported; }));
+}
+
 void SceneDocument::refresh() {
   base::Diagnostics ignored;  // edits are validated before they are made
-  lights_ = detail::read_lights(file_.root(), nullptr, ignored);
+  lights_ = detail::read_lights(file_.root(), nullptr, ignored, imported_, &origins_);
   select(selected_);
 }
 
@@ -114,7 +145,8 @@ base::Diagnostics SceneDocument::recover() {
   auto document = file_.read_recovery();
   if (!document.ok()) return document.diagnostics();
   base::Diagnostics diagnostics;
-  (void)check_scene(document.value(), diagnostics);
+  std::vector<LightOrigin> origins;
+  (void)check_scene(document.value(), imported_, origins, diagnostics);
   if (diagnostics.has_errors()) return diagnostics;
   file_.replace_content(document->root());
   selected_ = -1;

@@ -40,6 +40,17 @@ class PendingChanges {
     }
     return out;
   }
+  // The object with the changes made (a new entry built in one piece).
+  [[nodiscard]] Json applied_to(Json object) const {
+    for (const auto& [key, value] : changes_) {
+      if (value) {
+        object[key] = *value;
+      } else {
+        object.erase(key);
+      }
+    }
+    return object;
+  }
 
  private:
   std::vector<std::pair<std::string, std::optional<Json>>> changes_;
@@ -50,6 +61,33 @@ bool has_sun(const std::vector<scene::PointLight>& lights, std::size_t except = 
     if (i != except && lights[i].type == scene::LightType::directional) return true;
   }
   return false;
+}
+
+// The keys a type change sets or removes. An override keeps the imported light's
+// direction and position where it gives none (`own` false).
+void change_type(PendingChanges& pending, scene::LightType before, scene::LightType type,
+                 const Json& entry, bool own) {
+  const bool sun = type == scene::LightType::directional;
+  pending.set(detail::kType, Json(std::string(detail::type_name(type))));
+  // Keys the new type does not read would only draw "no effect" warnings.
+  if (sun) {
+    pending.set(detail::kPosition, std::nullopt);
+    pending.set(detail::kRange, std::nullopt);
+  }
+  if (type != scene::LightType::spot) {
+    pending.set(detail::kAngle, std::nullopt);
+    pending.set(detail::kInnerAngle, std::nullopt);
+  }
+  // Spot and sun need a direction (the engine requires it), a point light ignores it.
+  if (type == scene::LightType::point) {
+    pending.set(detail::kDirection, std::nullopt);
+  } else if (!entry.contains(detail::kDirection) && own) {
+    pending.set(detail::kDirection, tidy(SceneDocument::kNewLightDirection));
+  }
+  if (before == scene::LightType::directional && own)
+    pending.set(detail::kPosition, tidy(SceneDocument::kNewLightPosition));
+  // The sun's size is an angle in degrees, the others' a radius in metres: start over.
+  if ((before == scene::LightType::directional) != sun) pending.set(detail::kSize, std::nullopt);
 }
 
 }  // namespace
@@ -67,9 +105,18 @@ EditResult SceneDocument::apply(std::size_t light, const LightChanges& c, std::s
   const scene::PointLight& now = lights_[light];
   const scene::LightType type = c.type.value_or(now.type);
   const bool sun = type == scene::LightType::directional;
+  const LightOrigin from = origin(light);
+  // An imported light is edited through a new entry holding its name and the changes.
+  const Json entry = from == LightOrigin::imported ? Json{{detail::kName, now.name}}
+                                                   : file_.root()["lights"][light];
   PendingChanges pending;
 
   if (c.name && *c.name != now.name) {
+    if (from != LightOrigin::own) {
+      return EditResult::refused(base::quote_name(now.name) +
+                                 " comes from an object of the scene (a glTF or an instanced "
+                                 "scene): its name ties the scene file's changes to it");
+    }
     if (c.name->empty()) return EditResult::refused("a light name must not be empty");
     if (find_light(*c.name) >= 0)
       return EditResult::refused("another light is already named " + base::quote_name(*c.name));
@@ -78,28 +125,7 @@ EditResult SceneDocument::apply(std::size_t light, const LightChanges& c, std::s
   if (c.type && *c.type != now.type) {
     if (sun && has_sun(lights_, light))
       return EditResult::refused("a scene has at most one directional light");
-    pending.set(detail::kType, Json(std::string(detail::type_name(type))));
-    // Keys the new type does not read would only draw "no effect" warnings.
-    if (sun) {
-      pending.set(detail::kPosition, std::nullopt);
-      pending.set(detail::kRange, std::nullopt);
-    }
-    if (type != scene::LightType::spot) {
-      pending.set(detail::kAngle, std::nullopt);
-      pending.set(detail::kInnerAngle, std::nullopt);
-    }
-    // Spot and sun need a direction (the engine requires it), a point light ignores it.
-    const base::Json& object = file_.root()["lights"][light];
-    if (type == scene::LightType::point) {
-      pending.set(detail::kDirection, std::nullopt);
-    } else if (!object.contains(detail::kDirection)) {
-      pending.set(detail::kDirection, tidy(kNewLightDirection));
-    }
-    if (now.type == scene::LightType::directional)
-      pending.set(detail::kPosition, tidy(kNewLightPosition));
-    // The sun's size is an angle in degrees, the others' a radius in metres: start over.
-    if ((now.type == scene::LightType::directional) != sun)
-      pending.set(detail::kSize, std::nullopt);
+    change_type(pending, now.type, type, entry, from == LightOrigin::own);
   }
   if (c.position && (*c.position != now.position || c.type)) {
     if (sun) return EditResult::refused("a directional light has no position");
@@ -132,13 +158,31 @@ EditResult SceneDocument::apply(std::size_t light, const LightChanges& c, std::s
   if (c.casts_shadows && *c.casts_shadows != now.casts_shadows)
     pending.set(detail::kCastsShadows, Json(*c.casts_shadows));
 
+  if (description.empty()) description = "Edit " + base::quote_name(now.name);
+  if (from == LightOrigin::imported) {
+    Json override_entry = pending.applied_to(entry);
+    if (override_entry == entry) return {};
+    return run(
+        insert_light(std::move(override_entry), std::move(description), static_cast<int>(light)));
+  }
   const std::string pointer = base::pointer_append("/lights", light);
-  Command command{
-      description.empty() ? "Edit " + base::quote_name(now.name) : std::move(description),
-      pending.edits(file_.root()["lights"][light], pointer), static_cast<int>(light),
-      static_cast<int>(light)};
+  Command command{std::move(description), pending.edits(entry, pointer), static_cast<int>(light),
+                  static_cast<int>(light)};
   if (command.edits.empty()) return {};  // nothing changes: no undo step, not dirty
   return run(std::move(command));
+}
+
+// The file's entries come first in lights_, so a new entry at the end of /lights is
+// light file_light_count().
+Command SceneDocument::insert_light(Json entry, std::string description, int focus_before) const {
+  const std::size_t at = file_light_count();
+  Command command{std::move(description), {}, focus_before, static_cast<int>(at)};
+  if (file_.root().contains("lights")) {
+    command.edits.push_back(JsonEdit::insert("/lights", at, std::move(entry)));
+  } else {
+    command.edits.push_back(JsonEdit::set("", "lights", std::nullopt, Json::array({entry})));
+  }
+  return command;
 }
 
 EditResult SceneDocument::set_name(std::size_t light, std::string name) {
@@ -207,23 +251,23 @@ EditResult SceneDocument::add_light(scene::LightType type, glm::vec3 position) {
     light[detail::kSize] = tidy(kNewLightSize);
   }
   light[detail::kCastsShadows] = true;
-
-  const auto index = static_cast<int>(lights_.size());
-  Command command{"Add " + base::quote_name(name), {}, selected_, index};
-  if (file_.root().contains("lights")) {
-    command.edits.push_back(JsonEdit::insert("/lights", lights_.size(), std::move(light)));
-  } else {
-    command.edits.push_back(JsonEdit::set("", "lights", std::nullopt, Json::array({light})));
-  }
-  return run(std::move(command));
+  return run(insert_light(std::move(light), "Add " + base::quote_name(name), selected_));
 }
 
 EditResult SceneDocument::duplicate_light(std::size_t light) {
   if (auto checked = check_light(light); !checked) return checked;
   if (lights_[light].type == scene::LightType::directional)
     return EditResult::refused("a scene has at most one directional light");
-  Json copy = file_.root()["lights"][light];
   const std::string name = unique_name(lights_[light].name + " copy");
+  if (origin(light) != LightOrigin::own) {  // a light of its own, with every value
+    scene::PointLight copy = lights_[light];
+    copy.name = name;
+    return run(insert_light(
+        detail::light_to_json(copy),
+        "Duplicate " + base::quote_name(lights_[light].name) + " as " + base::quote_name(name),
+        static_cast<int>(light)));
+  }
+  Json copy = file_.root()["lights"][light];
   copy[detail::kName] = name;
   const auto index = static_cast<int>(light + 1);
   return run(
@@ -235,13 +279,21 @@ EditResult SceneDocument::duplicate_light(std::size_t light) {
 
 EditResult SceneDocument::delete_light(std::size_t light) {
   if (auto checked = check_light(light); !checked) return checked;
+  if (origin(light) == LightOrigin::imported) {
+    return EditResult::refused(base::quote_name(lights_[light].name) +
+                               " comes from an object of the scene (a glTF or an instanced "
+                               "scene) and cannot be deleted here; set its intensity to 0 or "
+                               "turn its shadows off");
+  }
+  // Deleting an override brings the imported light back as it came, after the file's.
+  const bool reverts = origin(light) == LightOrigin::override;
   int after = selected_;
   if (after == static_cast<int>(light)) {
     after = -1;
   } else if (after > static_cast<int>(light)) {
     --after;
   }
-  return run({"Delete " + base::quote_name(lights_[light].name),
+  return run({(reverts ? "Revert " : "Delete ") + base::quote_name(lights_[light].name),
               {JsonEdit::erase("/lights", light, file_.root()["lights"][light])},
               static_cast<int>(light),
               after});

@@ -33,6 +33,11 @@ struct LightChanges {
   std::optional<bool> casts_shadows;
 };
 
+// Where a light of SceneDocument::lights() comes from: an entry of the scene file, an
+// entry overriding a light an object imports (a glTF's KHR_lights_punctual light or a
+// light of an instanced scene, named "<object>/<light>"), or such a light as imported.
+enum class LightOrigin { own, override, imported };
+
 class SceneDocument {
  public:
   // Defaults for add_light (a point light a little above the floor, like the atrium's).
@@ -55,7 +60,14 @@ class SceneDocument {
 
   [[nodiscard]] const std::filesystem::path& file() const { return file_.path(); }
   [[nodiscard]] const base::Json& json() const { return file_.root(); }
+  // The engine's lights, in its order: the file's entries (overrides applied), then the
+  // imported lights no entry overrides.
   [[nodiscard]] const std::vector<scene::PointLight>& lights() const { return lights_; }
+  [[nodiscard]] LightOrigin origin(std::size_t light) const;
+  // The lights the scene's objects import, as they come (read with the engine's parser
+  // when the document is opened). Edits to them are saved as overrides in the scene file;
+  // deleting an override reverts the light.
+  [[nodiscard]] const std::vector<scene::PointLight>& imported_lights() const { return imported_; }
   [[nodiscard]] int find_light(std::string_view name) const;  // -1 when absent
 
   // Selection is view state: it is not undoable and does not make the document dirty.
@@ -75,7 +87,8 @@ class SceneDocument {
   // Adds at the end with a unique name ("light1", "light2", ...) and selects it.
   EditResult add_light(scene::LightType type = scene::LightType::point,
                        glm::vec3 position = kNewLightPosition);
-  // Inserts a copy ("<name> copy") right after the light and selects it.
+  // Inserts a copy ("<name> copy") right after the light (after the file's lights for an
+  // imported one) and selects it.
   EditResult duplicate_light(std::size_t light);
   EditResult delete_light(std::size_t light);
 
@@ -116,6 +129,9 @@ class SceneDocument {
  private:
   SceneDocument() = default;
   EditResult check_light(std::size_t light) const;
+  [[nodiscard]] std::size_t file_light_count() const;  // entries of /lights
+  [[nodiscard]] Command insert_light(base::Json entry, std::string description,
+                                     int focus_before) const;
   EditResult run(Command command);
   void refresh();
   void after_history(const Command* command, bool undone);
@@ -124,6 +140,8 @@ class SceneDocument {
 
   JsonFile file_;
   std::vector<scene::PointLight> lights_;
+  std::vector<LightOrigin> origins_;  // parallel to lights_
+  std::vector<scene::PointLight> imported_;
   int selected_ = -1;
 };
 

@@ -1,0 +1,147 @@
+// Lights a scene's objects import (a glTF's KHR_lights_punctual lights): listed after the
+// file's own, edited through overrides in the scene file (never by rewriting the glTF),
+// reverted by deleting the override, and always read as the engine reads them.
+#include <gtest/gtest.h>
+
+#include "../support/gltf_builder.hpp"
+#include "antumbra/editor/scene_document.hpp"
+#include "antumbra/scene/gltf_scene.hpp"
+#include "antumbra/scene/scene_file.hpp"
+#include "editor_test_support.hpp"
+
+namespace antumbra::editor {
+namespace {
+
+using testing::read;
+using testing::ScratchDir;
+using testing::take;
+
+void expect_engine_agrees(const SceneDocument& doc) {
+  const auto parsed = scene::parse_scene_text(doc.to_text(), doc.file().string());
+  ASSERT_TRUE(parsed.ok()) << parsed.diagnostics().to_text() << "\n" << doc.to_text();
+  ASSERT_EQ(parsed->lights.size(), doc.lights().size()) << doc.to_text();
+  for (std::size_t i = 0; i < doc.lights().size(); ++i) {
+    const scene::PointLight& a = parsed->lights[i];
+    const scene::PointLight& b = doc.lights()[i];
+    SCOPED_TRACE(a.name);
+    EXPECT_EQ(a.name, b.name);
+    EXPECT_EQ(a.type, b.type);
+    EXPECT_EQ(a.position, b.position);
+    EXPECT_EQ(a.direction, b.direction);
+    EXPECT_EQ(a.color, b.color);
+    EXPECT_EQ(a.intensity, b.intensity);
+    EXPECT_EQ(a.range, b.range);
+    EXPECT_EQ(a.size, b.size);
+    EXPECT_EQ(a.spot_inner, b.spot_inner);
+    EXPECT_EQ(a.spot_outer, b.spot_outer);
+    EXPECT_EQ(a.casts_shadows, b.casts_shadows);
+  }
+}
+
+// A scene with one light of its own and the lit quad as object "lamp".
+std::filesystem::path lamp_scene(const ScratchDir& dir) {
+  ::antumbra::testing::write_json(dir.path() / "lit.gltf", ::antumbra::testing::lit_quad_gltf());
+  testing::write(dir.path() / "scene.json", R"({
+  "version": 1,
+  "camera": { "position": [0, 5, 10], "target": [0, 0, 0] },
+  "objects": [ { "name": "lamp", "gltf": "lit.gltf" } ],
+  "lights": [ { "name": "own", "position": [0, 1, 0] } ]
+}
+)");
+  return dir.path() / "scene.json";
+}
+
+TEST(ImportedLights, AreListedAfterTheFilesOwnAsTheEngineHasThem) {
+  ScratchDir dir;
+  SceneDocument doc = take(SceneDocument::load(lamp_scene(dir)));
+  ASSERT_EQ(doc.lights().size(), 4u);
+  EXPECT_EQ(doc.origin(0), LightOrigin::own);
+  EXPECT_EQ(doc.lights()[1].name, "lamp/bulb node");
+  EXPECT_EQ(doc.origin(1), LightOrigin::imported);
+  EXPECT_EQ(doc.imported_lights().size(), 3u);
+  expect_engine_agrees(doc);
+}
+
+TEST(ImportedLights, AnEditBecomesAnOverrideAndUndoRemovesIt) {
+  ScratchDir dir;
+  const auto file = lamp_scene(dir);
+  const std::string gltf_before = read(dir.path() / "lit.gltf");
+  SceneDocument doc = take(SceneDocument::load(file));
+  ASSERT_TRUE(doc.set_intensity(2, 7.0f));  // lamp/cone
+  // The override is the file's second entry now: light 1, selected.
+  ASSERT_EQ(doc.lights().size(), 4u);
+  EXPECT_EQ(doc.lights()[1].name, "lamp/cone");
+  EXPECT_EQ(doc.origin(1), LightOrigin::override);
+  EXPECT_EQ(doc.selected(), 1);
+  EXPECT_EQ(doc.lights()[1].intensity, 7.0f);
+  EXPECT_EQ(doc.lights()[1].position, glm::vec3(0, 4, 0));  // still the glTF's
+  EXPECT_EQ(doc.json()["lights"][1],
+            base::Json::parse(R"({"name": "lamp/cone", "intensity": 7.0})"));
+  expect_engine_agrees(doc);
+
+  ASSERT_TRUE(doc.set_position(1, {1, 3, 0}));  // edits the override's keys
+  EXPECT_EQ(doc.json()["lights"][1]["position"], base::Json::parse("[1.0, 3.0, 0.0]"));
+  expect_engine_agrees(doc);
+
+  doc.save();
+  EXPECT_EQ(read(dir.path() / "lit.gltf"), gltf_before);  // the model is never rewritten
+  const auto reloaded = scene::load_scene_file(file.string());
+  ASSERT_TRUE(reloaded.ok()) << reloaded.diagnostics().to_text();
+  EXPECT_EQ(reloaded->lights[1].intensity, 7.0f);
+
+  ASSERT_TRUE(doc.undo());
+  ASSERT_TRUE(doc.undo());
+  EXPECT_EQ(doc.json()["lights"].size(), 1u);
+  EXPECT_EQ(doc.origin(2), LightOrigin::imported);
+  EXPECT_EQ(doc.lights()[2].name, "lamp/cone");
+  expect_engine_agrees(doc);
+}
+
+TEST(ImportedLights, DeletingAnOverrideRevertsAndImportedLightsKeepTheirNames) {
+  ScratchDir dir;
+  SceneDocument doc = take(SceneDocument::load(lamp_scene(dir)));
+  const float gltf_intensity = doc.lights()[2].intensity;
+  ASSERT_TRUE(doc.set_intensity(2, 0.0f));
+  ASSERT_EQ(doc.origin(1), LightOrigin::override);
+  ASSERT_TRUE(doc.delete_light(1));  // "Revert 'lamp/cone'": back in the glTF's order
+  EXPECT_EQ(doc.lights().size(), 4u);
+  EXPECT_EQ(doc.lights()[2].name, "lamp/cone");
+  EXPECT_EQ(doc.lights()[2].intensity, gltf_intensity);
+  expect_engine_agrees(doc);
+
+  EXPECT_FALSE(doc.delete_light(1));  // imported: refused, nothing changes
+  EXPECT_FALSE(doc.set_name(1, "renamed"));
+  EXPECT_EQ(doc.lights().size(), 4u);
+
+  // A copy is a light of the file's own, with every value spelled out.
+  ASSERT_TRUE(doc.duplicate_light(2));
+  EXPECT_EQ(doc.origin(1), LightOrigin::own);
+  EXPECT_EQ(doc.lights()[1].name, "lamp/cone copy");
+  ASSERT_EQ(doc.lights()[3].name, "lamp/cone");
+  EXPECT_EQ(doc.lights()[1].type, scene::LightType::spot);
+  EXPECT_NEAR(doc.lights()[1].spot_outer, doc.lights()[3].spot_outer, 1e-4f);
+  // Written with the editor's 4 decimals.
+  EXPECT_LT(glm::length(doc.lights()[1].direction - doc.lights()[3].direction), 1e-4f);
+  expect_engine_agrees(doc);
+}
+
+TEST(ImportedLights, AModelOpenedAsTheSceneSavesItsEditsBesideIt) {
+  ScratchDir dir;
+  const auto model = dir.path() / "lit.gltf";
+  ::antumbra::testing::write_json(model, ::antumbra::testing::lit_quad_gltf());
+  const std::string gltf_before = read(model);
+  SceneDocument doc = take(SceneDocument::open(model));
+  ASSERT_EQ(doc.lights().size(), 3u);  // the file's lights, no default rig
+  EXPECT_EQ(doc.lights()[0].name, "model/bulb node");
+  ASSERT_TRUE(doc.set_color(0, {0.0f, 1.0f, 0.0f}));
+  doc.save();
+  EXPECT_EQ(read(model), gltf_before);
+  const auto reopened = scene::load_scene_file(model.string());
+  ASSERT_TRUE(reopened.ok()) << reopened.diagnostics().to_text();
+  EXPECT_EQ(reopened->source_file, scene::gltf_scene_file(model).string());
+  EXPECT_EQ(reopened->lights[0].color, glm::vec3(0, 1, 0));
+  EXPECT_EQ(reopened->lights[0].position, glm::vec3(1, 2, 3));
+}
+
+}  // namespace
+}  // namespace antumbra::editor
