@@ -12,6 +12,13 @@ void draw_light_fields(EditorState& state, std::size_t index) {
   auto& scene = state.scene();
   const scene::PointLight light = scene.lights()[index];  // a copy: edits replace the list
   ImGui::Text("%s", light.name.c_str());
+  if (scene.origin(index) != editor::LightOrigin::own) {
+    // Imported lights (glTF, instanced scenes) are changed through overrides in the scene
+    // file; the artist should know the model itself stays as it is.
+    ImGui::TextDisabled(scene.origin(index) == editor::LightOrigin::override
+                            ? "from an object, changed here (Revert restores it)"
+                            : "from an object: changes are saved as overrides");
+  }
   glm::vec3 position = light.position;
   const bool moved = ImGui::DragFloat3("position", &position.x, 0.05f);
   track_gesture(state, DocKind::scene);
@@ -21,7 +28,10 @@ void draw_light_fields(EditorState& state, std::size_t index) {
   track_gesture(state, DocKind::scene);
   if (recoloured) state.scene_edited(scene.set_color(index, color));
   float intensity = light.intensity;
-  const bool brighter = ImGui::DragFloat("intensity", &intensity, 0.1f, 0.0f, 1000.0f);
+  // glTF lights arrive in photometric units (docs/technique.md section 6): a sun can be
+  // 30 000, so the step follows the value and nothing clamps it.
+  const bool brighter =
+      ImGui::DragFloat("intensity", &intensity, std::max(0.1f, intensity * 0.01f), 0.0f, 1e7f);
   track_gesture(state, DocKind::scene);
   if (brighter) state.scene_edited(scene.set_intensity(index, intensity));
   if (light.type != scene::LightType::directional) {
@@ -58,15 +68,20 @@ void draw_lights_panel(EditorState& state, PanelSlot& slot) {
     state.scene_edited(scene.duplicate_light(static_cast<std::size_t>(selected)));
   }
   ImGui::SameLine();
-  if (ImGui::Button("Delete")) {
+  const editor::LightOrigin origin =
+      has_selection ? scene.origin(static_cast<std::size_t>(selected)) : editor::LightOrigin::own;
+  ImGui::BeginDisabled(origin == editor::LightOrigin::imported);  // set its intensity to 0
+  if (ImGui::Button(origin == editor::LightOrigin::override ? "Revert" : "Delete")) {
     state.scene_edited(scene.delete_light(static_cast<std::size_t>(selected)));
   }
+  ImGui::EndDisabled();
   ImGui::EndDisabled();
 
   if (ImGui::BeginListBox("##lights", {-1.0f, 110.0f})) {
     for (std::size_t i = 0; i < scene.lights().size(); ++i) {
       const bool over = i < report.circles.size() && report.circles[i].over_cap;
       std::string label = scene.lights()[i].name + (over ? "  (over cap)" : "");
+      if (scene.origin(i) == editor::LightOrigin::override) label += "  (changed)";
       label += "##" + std::to_string(i);
       if (over) ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(255, 120, 90, 255));
       if (ImGui::Selectable(label.c_str(), static_cast<int>(i) == selected)) {
