@@ -9,6 +9,7 @@
 #include "antumbra/fg/graph_desc.hpp"
 #include "antumbra/fg/registry.hpp"
 #include "antumbra/gpu/timing.hpp"
+#include "antumbra/runtime/load_progress.hpp"
 #include "antumbra/runtime/render_session.hpp"
 #include "antumbra/runtime/watch_loop.hpp"
 #include "antumbra/scene/scene_file.hpp"
@@ -139,7 +140,12 @@ int load_render_inputs(const RenderOptions& options, bool json, RenderInputs& in
   if (!apply_output_resource(options, inputs.graph_path, graph.value())) {
     return runtime::kExitUsage;
   }
-  auto scene = scene::load_scene_file(inputs.scene_path);
+  scene::ImageCache images;  // the load's shared state, progress sink included
+  runtime::LoadProgressPrinter progress;
+  images.set_progress(progress.sink());
+  auto scene = scene::load_scene_file(inputs.scene_path, &images);
+  progress.finish();
+  images.set_progress({});
   if (!scene.ok()) {
     return fail_render(scene.diagnostics(), runtime::exit_code_for(scene.diagnostics()), json,
                        inputs.graph_path);

@@ -215,5 +215,40 @@ TEST(GltfMaterial, GltfOneIsRefusedWithAClearMessage) {
   EXPECT_NE(text.find("glTF 2.0"), std::string::npos) << text;
 }
 
+// A long load says what it does: reading, each image decoded of all, each mesh built.
+TEST(GltfMaterial, LoadsReportTheirProgressThroughTheCache) {
+  const fs::path dir = fs::temp_directory_path() / "antumbra_gltf_progress";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  testing::write_file(dir / "a.png", testing::png_bytes(8, 8, testing::checkerboard_rgba(4, 2)));
+  testing::write_file(dir / "b.png", testing::png_bytes(4, 4, testing::checkerboard_rgba(2, 2)));
+  nlohmann::json doc = textured_quad("a.png");
+  doc["images"].push_back({{"uri", "b.png"}});
+  doc["textures"].push_back({{"source", 1}});
+  doc["materials"][0]["emissiveTexture"] = {{"index", 1}};
+  testing::write_json(dir / "two.gltf", doc);
+
+  struct Event {
+    std::string stage;
+    std::size_t done, total;
+  };
+  std::vector<Event> events;
+  ImageCache cache;
+  cache.set_progress([&](std::string_view stage, std::size_t done, std::size_t total) {
+    events.push_back({std::string(stage), done, total});
+  });
+  const auto result = load_gltf((dir / "two.gltf").string(), {}, &cache);
+  ASSERT_TRUE(result.ok()) << result.diagnostics().to_text();
+  ASSERT_EQ(events.size(), 4u);
+  EXPECT_EQ(events[0].stage, "reading two.gltf");
+  EXPECT_EQ(events[1].stage, "decoding the images of two.gltf");
+  EXPECT_EQ(events[1].done, 1u);
+  EXPECT_EQ(events[2].done, 2u);
+  EXPECT_EQ(events[2].total, 2u);
+  EXPECT_EQ(events[3].stage, "building the meshes of two.gltf");
+  EXPECT_EQ(events[3].done, 1u);
+  EXPECT_EQ(events[3].total, 1u);
+}
+
 }  // namespace
 }  // namespace antumbra::scene

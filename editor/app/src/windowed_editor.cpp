@@ -15,6 +15,7 @@
 #include "antumbra/editor/scene_document.hpp"
 #include "antumbra/gpu/timing.hpp"
 #include "antumbra/runtime/exit_codes.hpp"
+#include "antumbra/runtime/load_progress.hpp"
 #include "editor_state.hpp"
 #include "imgui_layer.hpp"
 #include "layout_view.hpp"
@@ -167,7 +168,12 @@ std::optional<Documents> load_documents(const WindowedOptions& options,
       options.graph.empty() ? paths.graphs() / "layered-ssss.json" : fs::path(options.graph);
   const fs::path scene_path =
       options.scene.empty() ? paths.scenes() / "atrium.json" : fs::path(options.scene);
-  auto scene = editor::SceneDocument::open(scene_path);
+  scene::ImageCache images;
+  runtime::LoadProgressPrinter progress;
+  images.set_progress(progress.sink());
+  auto scene = editor::SceneDocument::open(scene_path, &images);
+  progress.finish();
+  images.set_progress({});
   auto graph = editor::GraphDocument::load(graph_path, editor::lookup_in(registry.reflection()));
   print(scene.diagnostics());
   print(graph.diagnostics());

@@ -15,14 +15,15 @@ namespace {
 
 // Lights the scene's objects import (glTF lights, instanced scenes' lights), read by the
 // engine's parser; only files with such objects pay for the load.
-std::vector<scene::PointLight> imported_lights_of(const base::JsonDocument& document) {
+std::vector<scene::PointLight> imported_lights_of(const base::JsonDocument& document,
+                                                  scene::ImageCache* images) {
   const auto objects = document.root().find("objects");
   if (objects == document.root().end() || !objects->is_array()) return {};
   const bool imports = std::any_of(objects->begin(), objects->end(), [](const base::Json& o) {
     return o.is_object() && (o.contains("gltf") || o.contains("scene"));
   });
   if (!imports) return {};
-  auto parsed = scene::parse_scene(document);
+  auto parsed = scene::parse_scene(document, images);
   return parsed.ok() ? parsed->imported_lights : std::vector<scene::PointLight>{};
 }
 
@@ -52,28 +53,31 @@ std::vector<scene::PointLight> check_scene(const base::JsonDocument& document,
 
 }  // namespace
 
-base::Result<SceneDocument> SceneDocument::load(const std::filesystem::path& file) {
+base::Result<SceneDocument> SceneDocument::load(const std::filesystem::path& file,
+                                                scene::ImageCache* images) {
   auto text = read_text_file(file);
   if (!text.ok()) return text.diagnostics();
-  return parse(text.value(), file);
+  return parse(text.value(), file, images);
 }
 
-base::Result<SceneDocument> SceneDocument::open(const std::filesystem::path& file) {
-  if (!scene::is_gltf_file(file)) return load(file);
+base::Result<SceneDocument> SceneDocument::open(const std::filesystem::path& file,
+                                                scene::ImageCache* images) {
+  if (!scene::is_gltf_file(file)) return load(file, images);
   const std::filesystem::path settings = scene::gltf_scene_file(file);
   std::error_code ec;
-  if (std::filesystem::is_regular_file(settings, ec)) return load(settings);
-  auto text = scene::gltf_scene_text(file);
+  if (std::filesystem::is_regular_file(settings, ec)) return load(settings, images);
+  auto text = scene::gltf_scene_text(file, images);
   if (!text.ok()) return text.diagnostics();
-  return parse(text.value(), settings);
+  return parse(text.value(), settings, images);
 }
 
 base::Result<SceneDocument> SceneDocument::parse(std::string_view text,
-                                                 const std::filesystem::path& file) {
+                                                 const std::filesystem::path& file,
+                                                 scene::ImageCache* images) {
   auto document = base::parse_json(text, file.string());
   if (!document.ok()) return document.diagnostics();
   base::Diagnostics diagnostics;
-  std::vector<scene::PointLight> imported = imported_lights_of(document.value());
+  std::vector<scene::PointLight> imported = imported_lights_of(document.value(), images);
   std::vector<LightOrigin> origins;
   std::vector<scene::PointLight> lights =
       check_scene(document.value(), imported, origins, diagnostics);

@@ -2,6 +2,7 @@
 // against cycles and instancing blow-ups), and turns triangle primitives into Meshes.
 #include "antumbra/scene/gltf_loader.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -94,6 +95,8 @@ class Importer {
   std::vector<bool> on_path_;
   std::size_t visits_ = 0;
   std::size_t triangles_ = 0;
+  std::size_t primitives_done_ = 0;   // for progress
+  std::size_t primitives_total_ = 0;  // in the file (instancing may visit more)
   // Lights met in the node tree, placed once the model's size is known.
   struct LightNode {
     int definition;
@@ -118,6 +121,7 @@ bool Importer::run() {
     return false;
   out_.materials.push_back(Material{.name = "default"});
   on_path_.assign(model_.nodes.size(), false);
+  for (const tinygltf::Mesh& m : model_.meshes) primitives_total_ += m.primitives.size();
   if (model_.scenes.empty()) {
     return fail(codes::scene::kGltfNoGeometry,
                 model_.defaultScene >= 0 ? "\"scene\" " + std::to_string(model_.defaultScene) +
@@ -300,6 +304,10 @@ bool Importer::add_primitive(const tinygltf::Primitive& prim, const std::string&
   }
   if (mesh.indices.empty()) return true;  // skipped (points/lines), with a warning
   triangles_ += mesh.triangle_count();
+  ++primitives_done_;
+  materials_.cache.report(
+      "building the meshes of " + std::filesystem::path(materials_.path).filename().string(),
+      primitives_done_, std::max(primitives_done_, primitives_total_));
   if (triangles_ > limits_.max_triangles) {
     return fail(codes::scene::kGltfTooLarge,
                 "more than " + std::to_string(limits_.max_triangles) + " triangles", p);
@@ -338,6 +346,9 @@ base::Result<GltfImport> load_gltf(const std::string& path, const GltfLimits& li
       report(e.code, base::Severity::error, e.message, e.pointer);
     return diagnostics;
   }
+  ImageCache own_cache;
+  ImageCache& images = cache != nullptr ? *cache : own_cache;
+  images.report("reading " + std::filesystem::path(path).filename().string(), 0, 0);
   tinygltf::Model model;
   std::string error;
   std::string warning;
@@ -372,9 +383,7 @@ base::Result<GltfImport> load_gltf(const std::string& path, const GltfLimits& li
   }
   GltfImport out;
   image_bytes.resize(model.images.size());
-  ImageCache own_cache;
-  const GltfMaterialInput materials{model, path, image_bytes, cache != nullptr ? *cache : own_cache,
-                                    limits.images};
+  const GltfMaterialInput materials{model, path, image_bytes, images, limits.images};
   Importer importer(materials, lights, limits, out);
   const bool ok = importer.run();
   for (const GltfIssue& w : importer.warnings()) {

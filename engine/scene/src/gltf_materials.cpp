@@ -79,6 +79,7 @@ class MaterialConverter {
     std::shared_ptr<const ImageData> data;
   };
   std::vector<ImageState> images_;
+  std::size_t decoded_ = 0;                                // images tried, for progress
   std::map<std::tuple<int, int, bool>, int> texture_ids_;  // (image, sampler, srgb)
 };
 
@@ -112,6 +113,8 @@ std::shared_ptr<const ImageData> MaterialConverter::image(int source) {
       external ? file_version_key(file.string()) : file_version_key(in_.path) + "#" + pointer;
   const auto decode = [&] { return decode_image(bytes, name, in_.limits); };
   const DecodedImage result = key.empty() ? decode() : in_.cache.get(key, decode);
+  in_.cache.report("decoding the images of " + std::filesystem::path(in_.path).filename().string(),
+                   ++decoded_, images_.size());
   if (const auto* error = std::get_if<std::string>(&result)) {
     warn(codes::scene::kGltfImage,
          "image " + (external ? "'" + img.uri + "' " : std::string()) +

@@ -17,6 +17,7 @@
 #include "antumbra/base/diagnostics.hpp"
 #include "antumbra/base/json_document.hpp"
 #include "antumbra/editor/json_file.hpp"
+#include "antumbra/scene/image_cache.hpp"
 #include "antumbra/scene/scene.hpp"
 
 namespace antumbra::editor {
@@ -50,13 +51,17 @@ class SceneDocument {
   // Bad files (unreadable, bad JSON, lights the editor cannot read) come back as
   // diagnostics with file and line:column. recovery_available() tells whether a newer
   // recovery file was found beside the file.
-  static base::Result<SceneDocument> load(const std::filesystem::path& file);
+  // `images` (optional) is the load's shared state: decoded images kept for the caller's
+  // own load of the scene, and its progress sink for long loads.
+  static base::Result<SceneDocument> load(const std::filesystem::path& file,
+                                          scene::ImageCache* images = nullptr);
   // load(), except that a .gltf or .glb opens the model as the whole scene: its scene
   // file beside it when saved before, else a generated one (scene/gltf_scene.hpp), not
   // written until saved. Edits never touch the model.
-  static base::Result<SceneDocument> open(const std::filesystem::path& file);
-  static base::Result<SceneDocument> parse(std::string_view text,
-                                           const std::filesystem::path& file);
+  static base::Result<SceneDocument> open(const std::filesystem::path& file,
+                                          scene::ImageCache* images = nullptr);
+  static base::Result<SceneDocument> parse(std::string_view text, const std::filesystem::path& file,
+                                           scene::ImageCache* images = nullptr);
 
   [[nodiscard]] const std::filesystem::path& file() const { return file_.path(); }
   [[nodiscard]] const base::Json& json() const { return file_.root(); }

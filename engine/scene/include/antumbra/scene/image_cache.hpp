@@ -6,10 +6,12 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <memory>
 #include <span>
 #include <string>
+#include <string_view>
 #include <variant>
 
 #include "antumbra/scene/scene.hpp"
@@ -28,12 +30,24 @@ using DecodedImage = std::variant<std::shared_ptr<const ImageData>, std::string>
 DecodedImage decode_image(std::span<const std::uint8_t> bytes, const std::string& name,
                           const ImageLimits& limits = {});
 
+// Where a long load says how far it is: what it is doing ("decoding images of
+// Sponza.gltf") and `done` of `total` steps (total 0: not known yet). Called on the
+// loading thread, often: a printer throttles itself.
+using LoadProgress =
+    std::function<void(std::string_view stage, std::size_t done, std::size_t total)>;
+
 // Decoded images by key. The key names the bytes' origin and version (a file's path,
 // size and modification time; a glTF's path, version and image index), so a changed
 // file is decoded again. Owned by whoever loads scenes (one per load by default, one
-// per session to share decodes across reloads).
+// per session to share decodes across reloads). Every load of a scene and of the files
+// it instances shares it, which makes it the place for their progress sink too.
 class ImageCache {
  public:
+  void set_progress(LoadProgress progress) { progress_ = std::move(progress); }
+  void report(std::string_view stage, std::size_t done, std::size_t total) const {
+    if (progress_) progress_(stage, done, total);
+  }
+
   // The cached image for `key`, or `decode()`'s result stored under it. Failures are
   // not cached (the next load reports them again).
   template <class Decode>
@@ -54,6 +68,7 @@ class ImageCache {
  private:
   std::map<std::string, std::shared_ptr<const ImageData>> images_;
   std::size_t hits_ = 0;
+  LoadProgress progress_;
 };
 
 // "<path>|<size>|<mtime>" for a file on disk, or empty when it cannot be read.
