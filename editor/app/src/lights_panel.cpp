@@ -77,7 +77,10 @@ void draw_lights_panel(EditorState& state, PanelSlot& slot) {
   ImGui::EndDisabled();
   ImGui::EndDisabled();
 
-  if (ImGui::BeginListBox("##lights", {-1.0f, 110.0f})) {
+  // As tall as the list, up to six rows: the selected light's fields share the panel.
+  const float rows = static_cast<float>(std::clamp<std::size_t>(scene.lights().size(), 2, 6));
+  const float list_height = ImGui::GetTextLineHeightWithSpacing() * (rows + 0.4f);
+  if (ImGui::BeginListBox("##lights", {-1.0f, list_height})) {
     for (std::size_t i = 0; i < scene.lights().size(); ++i) {
       const bool over = i < report.circles.size() && report.circles[i].over_cap;
       std::string label = scene.lights()[i].name + (over ? "  (over cap)" : "");
