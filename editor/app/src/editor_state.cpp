@@ -22,14 +22,14 @@ EditorState::EditorState(runtime::RenderSession& session, editor::SceneDocument 
       poll_interval_ms_(poll_interval_ms) {
 }
 
-bool EditorState::start() {
+bool EditorState::start(scene::ImageCache* images) {
   reload_graph();
   reload_summary_ = "none yet";  // the first load is not a reload
   for (const auto& d : diagnostics_) {
     if (d.severity != base::Severity::note) std::printf("  %s\n", base::format_text(d).c_str());
   }
   if (diagnostics_.has_errors()) return false;
-  auto parsed = scene::parse_scene_text(scene_.to_text(), scene_.file().string());
+  auto parsed = scene::parse_scene_text(scene_.to_text(), scene_.file().string(), images);
   if (!parsed.ok()) {
     for (const auto& d : parsed.diagnostics()) std::printf("  %s\n", base::format_text(d).c_str());
     return false;

@@ -16,6 +16,7 @@
 #include "antumbra/editor/viewport.hpp"
 #include "antumbra/gpu/timing.hpp"
 #include "antumbra/runtime/render_session.hpp"
+#include "antumbra/scene/image_cache.hpp"
 #include "antumbra/watch/file_watcher.hpp"
 
 namespace antumbra::editor_app {
@@ -34,7 +35,8 @@ class EditorState {
               double poll_interval_ms = kDefaultPollMs);
 
   // The first load of the graph and the scene; false (diagnostics printed) on errors.
-  bool start();
+  // `images`: decodes already made while opening the scene (may be null).
+  bool start(scene::ImageCache* images = nullptr);
 
   [[nodiscard]] runtime::RenderSession& session() { return session_; }
   [[nodiscard]] editor::SceneDocument& scene() { return scene_; }

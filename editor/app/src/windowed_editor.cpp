@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <vector>
@@ -158,6 +159,9 @@ CloseChoice draw_close_prompt(EditorState& state, bool open_now) {
 struct Documents {
   editor::SceneDocument scene;
   editor::GraphDocument graph;
+  // Images decoded while opening the scene, so that the renderer's own load of it does
+  // not decode them again (a large model's textures are most of its load time).
+  std::unique_ptr<scene::ImageCache> images;
 };
 
 // `registry` must outlive the documents: the graph's lookup reads its reflection.
@@ -168,12 +172,12 @@ std::optional<Documents> load_documents(const WindowedOptions& options,
       options.graph.empty() ? paths.graphs() / "layered-ssss.json" : fs::path(options.graph);
   const fs::path scene_path =
       options.scene.empty() ? paths.scenes() / "atrium.json" : fs::path(options.scene);
-  scene::ImageCache images;
+  auto images = std::make_unique<scene::ImageCache>();
   runtime::LoadProgressPrinter progress;
-  images.set_progress(progress.sink());
-  auto scene = editor::SceneDocument::open(scene_path, &images);
+  images->set_progress(progress.sink());
+  auto scene = editor::SceneDocument::open(scene_path, images.get());
   progress.finish();
-  images.set_progress({});
+  images->set_progress({});
   auto graph = editor::GraphDocument::load(graph_path, editor::lookup_in(registry.reflection()));
   print(scene.diagnostics());
   print(graph.diagnostics());
@@ -181,7 +185,7 @@ std::optional<Documents> load_documents(const WindowedOptions& options,
   if (scene->recovery_available() || graph->recovery_available()) {
     std::printf("note: a recovery file with unsaved edits exists beside the scene or graph\n");
   }
-  return Documents{std::move(scene.value()), std::move(graph.value())};
+  return Documents{std::move(scene.value()), std::move(graph.value()), std::move(images)};
 }
 
 // False (after saying why) when no window can be opened, e.g. without a display.
@@ -431,7 +435,7 @@ int run_windowed_editor(const WindowedOptions& options) {
   layout.restore_imgui_state();
   EditorState state(session, std::move(documents->scene), std::move(documents->graph),
                     editor::lookup_in(registry.reflection()));
-  if (!state.start()) return runtime::kExitDiagnostics;
+  if (!state.start(documents->images.get())) return runtime::kExitDiagnostics;
   if (!options.select.empty() && !select_light(state, options.select)) {
     return runtime::kExitUsage;
   }
