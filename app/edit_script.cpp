@@ -198,6 +198,9 @@ class EditRun {
       if (step.contains("range")) c.range = step["range"].get<float>();
       if (step.contains("size")) c.size = step["size"].get<float>();
       if (step.contains("castsShadows")) c.casts_shadows = step["castsShadows"].get<bool>();
+      if (step.contains("direction")) c.direction = vec3_of(step["direction"]);
+      if (step.contains("angle")) c.spot_outer = step["angle"].get<float>();
+      if (step.contains("innerAngle")) c.spot_inner = step["innerAngle"].get<float>();
       result = scene_.apply(light_index(step), c);
     } else if (what == "add-light") {
       result =

@@ -3,6 +3,8 @@
 // reverted by deleting the override, and always read as the engine reads them.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "../support/gltf_builder.hpp"
 #include "antumbra/editor/scene_document.hpp"
 #include "antumbra/scene/gltf_scene.hpp"
@@ -123,6 +125,31 @@ TEST(ImportedLights, DeletingAnOverrideRevertsAndImportedLightsKeepTheirNames) {
   // Written with the editor's 4 decimals.
   EXPECT_LT(glm::length(doc.lights()[1].direction - doc.lights()[3].direction), 1e-4f);
   expect_engine_agrees(doc);
+}
+
+TEST(ImportedLights, ASpotsConeAndDirectionAreEditable) {
+  ScratchDir dir;
+  SceneDocument doc = take(SceneDocument::load(lamp_scene(dir)));
+  ASSERT_EQ(doc.lights()[2].name, "lamp/cone");
+  ASSERT_TRUE(doc.set_spot_angles(2, 35.0f, 10.0f));
+  ASSERT_EQ(doc.lights()[1].name, "lamp/cone");  // now an override
+  EXPECT_EQ(doc.lights()[1].spot_outer, 35.0f);
+  EXPECT_EQ(doc.lights()[1].spot_inner, 10.0f);
+  ASSERT_TRUE(doc.set_direction(1, {0.0f, -2.0f, 2.0f}));
+  const float h = std::sqrt(0.5f);
+  EXPECT_NEAR(doc.lights()[1].direction.x, 0.0f, 1e-6f);
+  EXPECT_NEAR(doc.lights()[1].direction.y, -h, 1e-4f);
+  EXPECT_NEAR(doc.lights()[1].direction.z, h, 1e-4f);
+  expect_engine_agrees(doc);
+  // Refused, nothing changes: a cone past 90 degrees, an inner cone wider than the cone,
+  // a zero direction, and a direction or a cone for a point light.
+  const std::string before = doc.to_text();
+  EXPECT_FALSE(doc.set_spot_angles(1, 95.0f, 10.0f));
+  EXPECT_FALSE(doc.set_spot_angles(1, 20.0f, 30.0f));
+  EXPECT_FALSE(doc.set_direction(1, {0.0f, 0.0f, 0.0f}));
+  EXPECT_FALSE(doc.set_direction(0, {1.0f, 0.0f, 0.0f}));
+  EXPECT_FALSE(doc.set_spot_angles(0, 20.0f, 10.0f));
+  EXPECT_EQ(doc.to_text(), before);
 }
 
 TEST(ImportedLights, AModelOpenedAsTheSceneSavesItsEditsBesideIt) {

@@ -2,6 +2,7 @@
 #include <string>
 
 #include <imgui.h>
+#include <glm/geometric.hpp>
 
 #include "panels.hpp"
 
@@ -39,6 +40,26 @@ void draw_light_fields(EditorState& state, std::size_t index) {
     const bool ranged = ImGui::DragFloat("range", &range, 0.05f, 0.01f, 100.0f);
     track_gesture(state, DocKind::scene);
     if (ranged) state.scene_edited(scene.set_range(index, range));
+  }
+  if (light.type != scene::LightType::point) {
+    glm::vec3 direction = light.direction;
+    const bool turned = ImGui::DragFloat3("direction", &direction.x, 0.01f, -1.0f, 1.0f);
+    track_gesture(state, DocKind::scene);
+    // A drag through (0, 0, 0) is refused by the document and simply not applied.
+    if (turned && glm::length(direction) > 1e-3f) {
+      state.scene_edited(scene.set_direction(index, direction));
+    }
+  }
+  if (light.type == scene::LightType::spot) {
+    float outer = light.spot_outer;
+    float inner = light.spot_inner;
+    const bool coned = ImGui::DragFloat("cone", &outer, 0.2f, 0.5f, 90.0f, "%.1f deg");
+    track_gesture(state, DocKind::scene);
+    const bool cored = ImGui::DragFloat("inner cone", &inner, 0.2f, 0.0f, outer, "%.1f deg");
+    track_gesture(state, DocKind::scene);
+    if (coned || cored) {
+      state.scene_edited(scene.set_spot_angles(index, outer, std::min(inner, outer)));
+    }
   }
   float size = light.size;
   const bool sized = ImGui::DragFloat("size", &size, 0.01f, 0.0f, 10.0f);

@@ -1,5 +1,6 @@
 // The scene document's edits: each builds one Command of JSON edits after checking the
 // values the way the engine's scene parser will, so a saved file always loads.
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -90,6 +91,31 @@ void change_type(PendingChanges& pending, scene::LightType before, scene::LightT
   if ((before == scene::LightType::directional) != sun) pending.set(detail::kSize, std::nullopt);
 }
 
+// Direction and cone: refused (with why) when they do not apply to `type` or are out of
+// the ranges engine/scene's parser accepts.
+EditResult aim_changes(PendingChanges& pending, const LightChanges& c, const scene::PointLight& now,
+                       scene::LightType type) {
+  if (c.direction && (*c.direction != now.direction || c.type)) {
+    if (type == scene::LightType::point)
+      return EditResult::refused("a point light shines every way: it has no direction");
+    const float length = glm::length(*c.direction);
+    if (!finite(*c.direction) || !(length > 1e-6f))
+      return EditResult::refused("the direction must be finite and not zero");
+    pending.set(detail::kDirection, tidy(*c.direction / length));
+  }
+  if (!c.spot_outer && !c.spot_inner) return {};
+  if (type != scene::LightType::spot) return EditResult::refused("only a spot light has a cone");
+  const float outer = c.spot_outer.value_or(now.spot_outer);
+  const float inner = c.spot_inner.value_or(std::min(now.spot_inner, outer));
+  if (!(outer > 0.0f && outer <= 90.0f))
+    return EditResult::refused("the cone's half-angle must be in (0, 90] degrees");
+  if (!(inner >= 0.0f && inner <= outer))
+    return EditResult::refused("the inner cone must be in [0, the cone's half-angle]");
+  if (outer != now.spot_outer) pending.set(detail::kAngle, tidy(outer));
+  if (inner != now.spot_inner) pending.set(detail::kInnerAngle, tidy(inner));
+  return {};
+}
+
 }  // namespace
 
 EditResult SceneDocument::check_light(std::size_t light) const {
@@ -157,6 +183,7 @@ EditResult SceneDocument::apply(std::size_t light, const LightChanges& c, std::s
   }
   if (c.casts_shadows && *c.casts_shadows != now.casts_shadows)
     pending.set(detail::kCastsShadows, Json(*c.casts_shadows));
+  if (auto aimed = aim_changes(pending, c, now, type); !aimed) return aimed;
 
   if (description.empty()) description = "Edit " + base::quote_name(now.name);
   if (from == LightOrigin::imported) {
@@ -218,6 +245,14 @@ EditResult SceneDocument::set_range(std::size_t light, float range) {
 
 EditResult SceneDocument::set_size(std::size_t light, float size) {
   return apply(light, {.size = size}, label("Set size of", light));
+}
+
+EditResult SceneDocument::set_direction(std::size_t light, glm::vec3 direction) {
+  return apply(light, {.direction = direction}, label("Turn", light));
+}
+
+EditResult SceneDocument::set_spot_angles(std::size_t light, float outer, float inner) {
+  return apply(light, {.spot_outer = outer, .spot_inner = inner}, label("Set cone of", light));
 }
 
 EditResult SceneDocument::set_casts_shadows(std::size_t light, bool casts) {

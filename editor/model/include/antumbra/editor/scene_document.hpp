@@ -32,6 +32,9 @@ struct LightChanges {
   std::optional<float> range;
   std::optional<float> size;
   std::optional<bool> casts_shadows;
+  std::optional<glm::vec3> direction;  // spot and directional; normalised when written
+  std::optional<float> spot_outer;     // spot cone half-angles in degrees (scene "angle",
+  std::optional<float> spot_inner;     // "innerAngle"): 0 < outer <= 90, 0 <= inner <= outer
 };
 
 // Where a light of SceneDocument::lights() comes from: an entry of the scene file, an
@@ -89,6 +92,8 @@ class SceneDocument {
   EditResult set_range(std::size_t light, float range);
   EditResult set_size(std::size_t light, float size);
   EditResult set_casts_shadows(std::size_t light, bool casts);
+  EditResult set_direction(std::size_t light, glm::vec3 direction);
+  EditResult set_spot_angles(std::size_t light, float outer, float inner);
   // Adds at the end with a unique name ("light1", "light2", ...) and selects it.
   EditResult add_light(scene::LightType type = scene::LightType::point,
                        glm::vec3 position = kNewLightPosition);
