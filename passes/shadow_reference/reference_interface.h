@@ -1,4 +1,5 @@
 // The shadow-reference pass's shader interfaces (reference_depth.vert, reference_colour.frag,
+// reference_cut.frag,
 // reference_accumulate.comp, reference_resolve.comp, reference_final.comp), valid GLSL and
 // C++: their push-constant blocks and binding numbers, written once for the shaders, the
 // set layouts and the descriptor writes (docs/architecture.md, "One source for CPU and
@@ -19,6 +20,9 @@ ANTUMBRA_SHARED_BEGIN
 ANTUMBRA_BINDING(kRefDepthPoints, 0)
 ANTUMBRA_BINDING(kRefDepthMatrices, 1)
 ANTUMBRA_BINDING(kRefDepthMaterials, 2)
+// Fragment stage of cut casters (reference_cut.frag): base-colour textures for alpha.
+ANTUMBRA_BINDING(kRefDepthSrgbTextures, 3)
+ANTUMBRA_BINDING(kRefDepthSampler, 4)
 // reference_accumulate.comp
 ANTUMBRA_BINDING(kRefAccumulateFrame, 0)
 ANTUMBRA_BINDING(kRefAccumulateLights, 1)

@@ -171,9 +171,13 @@ SunFit fit_sun(const glm::vec3& direction, std::span<const glm::vec3> receivers,
 
 namespace {
 
-// Opaque casters block (depth); translucent ones tint (colour), per triangle.
+// Opaque casters block (depth); translucent ones tint (colour), per triangle. Opaque ones
+// of one-sided or alpha-tested materials are cut casters (docs/technique.md, "Draw
+// classes"): they block only where their front faces the sample and their alpha reaches
+// the cutoff, which the cut pipeline decides per fragment.
 struct Casters {
   std::vector<std::uint32_t> opaque;
+  std::vector<std::uint32_t> cut;
   std::vector<std::uint32_t> translucent;
   scene::Aabb bounds;
 };
@@ -185,10 +189,13 @@ Casters sort_casters(const scene::Scene& scene, const std::vector<glm::vec3>& po
   for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
     const std::uint32_t v = indices[t];
     bool tints = false;
+    bool cut = false;
     if (v < vertex_materials.size() && vertex_materials[v] < scene.materials.size()) {
-      tints = scene.materials[vertex_materials[v]].translucent;
+      const scene::Material& m = scene.materials[vertex_materials[v]];
+      tints = m.translucent;
+      cut = m.alpha_tested() || !m.double_sided;
     }
-    auto& list = tints ? casters.translucent : casters.opaque;
+    auto& list = tints ? casters.translucent : (cut ? casters.cut : casters.opaque);
     list.insert(list.end(), {indices[t], indices[t + 1], indices[t + 2]});
     for (std::size_t k = 0; k < 3; ++k) casters.bounds.expand(positions[indices[t + k]]);
   }
@@ -236,6 +243,7 @@ void plan_sun(ReferencePlan& plan, std::uint32_t l, const scene::PointLight& lig
   }
   if (!shadows) return;
   add_list(plan, casters.opaque, plan.index_first[l], plan.index_count[l]);
+  add_list(plan, casters.cut, plan.cut_first[l], plan.cut_count[l]);
   add_list(plan, casters.translucent, plan.tint_first[l], plan.tint_count[l]);
 }
 
@@ -254,6 +262,8 @@ void plan_local_light(ReferencePlan& plan, std::uint32_t l, const scene::PointLi
   if (!shadows) return;
   add_list(plan, triangles_near(positions, casters.opaque, light.position, far),
            plan.index_first[l], plan.index_count[l]);
+  add_list(plan, triangles_near(positions, casters.cut, light.position, far), plan.cut_first[l],
+           plan.cut_count[l]);
   add_list(plan, triangles_near(positions, casters.translucent, light.position, far),
            plan.tint_first[l], plan.tint_count[l]);
 }
@@ -287,7 +297,7 @@ Batch make_batch(const ReferencePlan& plan, const scene::Scene& scene,
   for (std::uint32_t k = 0; k < plan.samples; ++k) {
     for (std::uint32_t slot = 0; slot < batch.light_count; ++slot) {
       const std::uint32_t l = first + slot;
-      if (plan.index_count[l] == 0 && plan.tint_count[l] == 0) continue;
+      if (plan.index_count[l] == 0 && plan.cut_count[l] == 0 && plan.tint_count[l] == 0) continue;
       if (scene.lights[l].type == scene::LightType::directional) {
         batch.runs.push_back({k, slot, 0, 1});  // one map, fitted to the view
         continue;
@@ -319,6 +329,8 @@ ReferencePlan build_plan(const scene::Scene& scene, const std::vector<glm::vec3>
   plan.points.resize(std::size_t{light_count} * plan.samples);
   plan.index_first.resize(light_count, 0);
   plan.index_count.resize(light_count, 0);
+  plan.cut_first.resize(light_count, 0);
+  plan.cut_count.resize(light_count, 0);
   plan.tint_first.resize(light_count, 0);
   plan.tint_count.resize(light_count, 0);
   for (std::uint32_t l = 0; l < light_count; ++l) {

@@ -90,9 +90,14 @@ struct ReferencePlan {
   // other lights); empty when the scene has no shadowed directional light.
   std::vector<glm::mat4> matrices;
   // Per scene light: [first, count) into `indices`, opaque casters (depth) and
-  // translucent casters (colour) apart.
+  // translucent casters (colour) apart; the opaque casters split again into solid
+  // two-sided ones (`index_*`, the depth-only pipeline) and cut ones (`cut_*`: one-sided
+  // or alpha-tested materials, docs/technique.md "Draw classes", drawn with a fragment
+  // shader that discards).
   std::vector<std::uint32_t> index_first;
   std::vector<std::uint32_t> index_count;
+  std::vector<std::uint32_t> cut_first;
+  std::vector<std::uint32_t> cut_count;
   std::vector<std::uint32_t> tint_first;
   std::vector<std::uint32_t> tint_count;
   std::vector<std::uint32_t> indices;
@@ -110,7 +115,8 @@ struct PlanSettings {
 // `positions`/`indices`: the merged scene geometry in world space. `camera_view_proj`
 // culls faces that cannot affect the image and bounds the sun's receivers.
 // `vertex_materials` (optional, per vertex, into scene.materials): triangles of
-// translucent materials tint instead of blocking; without it every caster is opaque.
+// translucent materials tint instead of blocking, one-sided and alpha-tested ones go to
+// the cut lists; without it every caster is solid and two-sided.
 ReferencePlan build_plan(const scene::Scene& scene, const std::vector<glm::vec3>& positions,
                          const std::vector<std::uint32_t>& indices,
                          const glm::mat4& camera_view_proj, const PlanSettings& settings,

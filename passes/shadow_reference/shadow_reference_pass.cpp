@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cstring>
+#include <memory>
 
 #include "antumbra/gpu/context.hpp"
 #include "antumbra/gpu/memory_heaps.hpp"
@@ -14,6 +15,7 @@
 #include "common/ports.hpp"
 #include "reference_interface.h"
 #include "reference_shared.hpp"
+#include "shared/material_textures.h"
 
 namespace antumbra::passes {
 namespace {
@@ -70,13 +72,23 @@ void ShadowReferencePass::prepare_raster_pipelines(fgvk::PrepareContext& context
   auto colour_vert =
       load_shader(context, "shadow_reference/reference_depth.vert", shader_files_, colour_defines);
   auto colour_frag = load_shader(context, "shadow_reference/reference_colour.frag", shader_files_);
+  std::vector<gpu::ShaderDefine> cut_defines = depth_defines;
+  cut_defines.push_back({"CUT", ""});
+  auto cut_vert =
+      load_shader(context, "shadow_reference/reference_depth.vert", shader_files_, cut_defines);
+  auto cut_frag = load_shader(context, "shadow_reference/reference_cut.frag", shader_files_);
   gpu::DescriptorSetLayoutBuilder depth_bindings;
   depth_bindings.storage_buffer(shared::kRefDepthPoints, VK_SHADER_STAGE_VERTEX_BIT)
       .storage_buffer(shared::kRefDepthMatrices, VK_SHADER_STAGE_VERTEX_BIT)
-      .storage_buffer(shared::kRefDepthMaterials, VK_SHADER_STAGE_FRAGMENT_BIT);
+      .storage_buffer(shared::kRefDepthMaterials, VK_SHADER_STAGE_FRAGMENT_BIT)
+      .add(shared::kRefDepthSrgbTextures, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE,
+           VK_SHADER_STAGE_FRAGMENT_BIT, shared::kTextureBuckets)
+      .sampler(shared::kRefDepthSampler, VK_SHADER_STAGE_FRAGMENT_BIT);
   check_shader_interface(name, vert, depth_bindings, sizeof(shared::ReferenceDepthPush));
   check_shader_interface(name, colour_vert, depth_bindings, sizeof(shared::ReferenceDepthPush));
   check_shader_interface(name, colour_frag, depth_bindings, 0);
+  check_shader_interface(name, cut_vert, depth_bindings, sizeof(shared::ReferenceDepthPush));
+  check_shader_interface(name, cut_frag, depth_bindings, 0);
   depth_set_ = depth_bindings.build(context.gpu, name + ".depth.set");
   const std::array<VkDescriptorSetLayout, 1> depth_sets{depth_set_};
   const std::array<VkPushConstantRange, 1> depth_push{
@@ -118,6 +130,37 @@ void ShadowReferencePass::prepare_raster_pipelines(fgvk::PrepareContext& context
       .tint_blend(0);
   check_vertex_inputs(name, colour_vert, colour.vertex_attributes());
   colour_pipeline_ = colour.build(context.gpu, name + ".colour");
+  prepare_cut_pipelines(context, std::move(cut_vert), std::move(cut_frag));
+}
+
+// Cut casters (docs/technique.md, "Draw classes"): the opaque depth draw with a fragment
+// shader that discards, texture coordinates from the attribute stream. Scenes without
+// such materials never build them and keep the depth-only pipelines above.
+void ShadowReferencePass::prepare_cut_pipelines(fgvk::PrepareContext& context, Shader vert,
+                                                Shader frag) {
+  auto base = scene_vertex_attributes({0, 2, 3});
+  base.cull(VK_CULL_MODE_NONE)  // back faces are the fragment shader's to discard
+      .depth_format(reference::kFaceFormat)
+      .layout(depth_layout_)
+      .cache(context.pipeline_cache);
+  check_vertex_inputs(context.pass.name, vert, base.vertex_attributes());
+  const auto shaders = std::make_shared<const std::array<Shader, 2>>(
+      std::array<Shader, 2>{std::move(vert), std::move(frag)});
+  const auto lazy = [&](bool tinted, const std::string& suffix) {
+    // Each build starts from a copy, so a build that throws can be retried next frame.
+    return LazyPipeline([gpu = &context.gpu, base, shaders, tinted, bias = params_.raster_bias,
+                         slope = params_.slope_bias, name = context.pass.name + suffix]() {
+      gpu::GraphicsPipelineBuilder cut = base;
+      cut.shader(VK_SHADER_STAGE_VERTEX_BIT, (*shaders)[0])
+          .shader(VK_SHADER_STAGE_FRAGMENT_BIT, (*shaders)[1])
+          .depth(true, true, VK_COMPARE_OP_LESS)
+          .depth_bias(bias, slope);
+      if (tinted) cut.color_formats({reference::kTintFormat}).color_write_mask(0, 0);
+      return cut.build(*gpu, name);
+    });
+  };
+  cut_pipeline_ = lazy(false, ".depthCut");
+  cut_tint_pipeline_ = lazy(true, ".depthCut.tinted");
 }
 
 // Per pixel: accumulate the samples' visibility, resolve each batch, write the result.

@@ -12,6 +12,7 @@
 // shadow_reference_pass.cpp / shadow_reference_record.cpp, CPU planning in
 // reference_plan.*, shaders beside them.
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -23,7 +24,9 @@
 #include "antumbra/fgvk/pass.hpp"
 #include "antumbra/gpu/handle.hpp"
 #include "antumbra/gpu/resources.hpp"
+#include "common/lazy_pipeline.hpp"
 #include "common/lighting_reflection.hpp"
+#include "common/pass_support.hpp"
 #include "reference_plan.hpp"
 
 namespace antumbra::passes {
@@ -63,6 +66,7 @@ class ShadowReferencePass final : public fgvk::Pass {
     bool operator==(const Key& other) const;
   };
   void prepare_raster_pipelines(fgvk::PrepareContext& context);
+  void prepare_cut_pipelines(fgvk::PrepareContext& context, Shader vert, Shader frag);
   void prepare_compute_pipelines(fgvk::PrepareContext& context, VkFormat hdr_format);
   Key make_key(const fgvk::ExecuteContext& context) const;
   void rebuild(fgvk::ExecuteContext& context, const Key& key);
@@ -72,6 +76,10 @@ class ShadowReferencePass final : public fgvk::Pass {
   void record_resolve(fgvk::ExecuteContext& context, const reference::Batch& batch);
   void render_faces(fgvk::ExecuteContext& context, const reference::Batch& batch,
                     std::uint32_t sample, std::size_t& run);
+  // A sample's lists: solid opaque casters, cut casters, translucent casters.
+  static constexpr std::size_t kLists = 3;
+  std::array<VkPipeline, kLists> list_pipelines(const reference::Batch& batch, std::size_t begin,
+                                                std::size_t end);
   void tints_to_sampled(VkCommandBuffer cmd);
   void record_final(fgvk::ExecuteContext& context);
 
@@ -87,6 +95,9 @@ class ShadowReferencePass final : public fgvk::Pass {
   gpu::Pipeline depth_pipeline_, accumulate_pipeline_, resolve_pipeline_, final_pipeline_;
   // With colour layers bound: opaque depth (colour masked off), then translucent tints.
   gpu::Pipeline depth_tint_pipeline_, colour_pipeline_;
+  // One-sided and alpha-tested casters (reference_cut.frag), plain and beside colour
+  // layers; built on the first frame that has such casters (lazy_pipeline.hpp).
+  LazyPipeline cut_pipeline_, cut_tint_pipeline_;
   std::vector<std::string> shader_files_;
 
   // Pass-internal resources (synchronised inside the pass).

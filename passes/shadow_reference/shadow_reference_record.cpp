@@ -2,6 +2,8 @@
 // (faces_, tints_, visibility_, accum_) are synchronised here; graph resources are not (the
 // executor placed their barriers before the pass).
 #include <algorithm>
+#include <array>
+#include <utility>
 
 #include "antumbra/gpu/commands.hpp"
 #include "antumbra/gpu/context.hpp"
@@ -214,7 +216,32 @@ struct FaceRendering {
   VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
 };
 
+// [first, count) of one light's list: 0 solid opaque casters, 1 cut ones (depth),
+// 2 translucent ones (tint).
+std::pair<std::uint32_t, std::uint32_t> list_range(const reference::ReferencePlan& plan,
+                                                   std::uint32_t light, std::size_t list) {
+  if (list == 2) return {plan.tint_first[light], plan.tint_count[light]};
+  if (list == 1) return {plan.cut_first[light], plan.cut_count[light]};
+  return {plan.index_first[light], plan.index_count[light]};
+}
+
 }  // namespace
+
+// The pipeline of each list the sample's runs [begin, end) draw, in order (opaque casters
+// before the panes tested against their depth); VK_NULL_HANDLE for lists not drawn. The
+// cut pipeline only when some run has cut casters, so scenes without them never build it.
+std::array<VkPipeline, ShadowReferencePass::kLists> ShadowReferencePass::list_pipelines(
+    const reference::Batch& batch, std::size_t begin, std::size_t end) {
+  bool any_cut = false;
+  for (std::size_t i = begin; i < end; ++i) {
+    any_cut = any_cut || plan_.cut_count[batch.first_light + batch.runs[i].slot] > 0;
+  }
+  std::array<VkPipeline, kLists> pipelines{batch.tinted ? depth_tint_pipeline_ : depth_pipeline_,
+                                           VK_NULL_HANDLE, VK_NULL_HANDLE};
+  if (any_cut) pipelines[1] = batch.tinted ? cut_tint_pipeline_.get() : cut_pipeline_.get();
+  if (batch.tinted) pipelines[2] = colour_pipeline_;
+  return pipelines;
+}
 
 void ShadowReferencePass::render_faces(fgvk::ExecuteContext& context, const reference::Batch& batch,
                                        std::uint32_t sample, std::size_t& run) {
@@ -229,44 +256,42 @@ void ShadowReferencePass::render_faces(fgvk::ExecuteContext& context, const refe
         .storage_buffer(shared::kRefDepthPoints, points_)
         .storage_buffer(shared::kRefDepthMatrices, matrices_)
         .storage_buffer(shared::kRefDepthMaterials, context.frame.materials)
+        .sampled_images(shared::kRefDepthSrgbTextures, context.frame.srgb_textures)
+        .sampler(shared::kRefDepthSampler, context.frame.texture_sampler)
         .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, depth_layout_);
-    const VkDeviceSize offset = 0;
-    vkCmdBindVertexBuffers(cmd, 0, 1, &context.frame.vertices, &offset);
+    // The attribute stream (texture coordinates) only feeds the cut draws.
+    const std::array<VkBuffer, 2> streams{context.frame.vertices, context.frame.vertex_attributes};
+    const std::array<VkDeviceSize, 2> offsets{0, 0};
+    vkCmdBindVertexBuffers(cmd, 0, 2, streams.data(), offsets.data());
     vkCmdBindIndexBuffer(cmd, index_list_, 0, VK_INDEX_TYPE_UINT32);
   };
-  // Opaque casters (depth) or translucent ones (tint) of one run.
   auto draw = [&](const reference::FaceRun& r, std::uint32_t first_face, std::uint32_t count,
-                  bool tint) {
+                  std::size_t list) {
     const std::uint32_t light = batch.first_light + r.slot;
-    const std::uint32_t index_count = tint ? plan_.tint_count[light] : plan_.index_count[light];
+    const auto [index_first, index_count] = list_range(plan_, light, list);
     if (index_count == 0) return;
     const bool ortho = context.frame.scene->lights[light].type == scene::LightType::directional;
     const shared::ReferenceDepthPush push{light * plan_.samples + sample,
                                           r.slot * reference::kFacesPerLight, params_.near_plane,
                                           ortho ? 1u : 0u};
     vkCmdPushConstants(cmd, depth_layout_, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof push, &push);
-    vkCmdDrawIndexed(cmd, index_count, count,
-                     tint ? plan_.tint_first[light] : plan_.index_first[light], 0, first_face);
+    vkCmdDrawIndexed(cmd, index_count, count, index_first, 0, first_face);
   };
-  const VkPipeline opaque = batch.tinted ? depth_tint_pipeline_ : depth_pipeline_;
-
   const std::size_t begin = run;
   while (run < batch.runs.size() && batch.runs[run].sample == sample) ++run;
+  const std::array<VkPipeline, kLists> pipelines = list_pipelines(batch, begin, run);
+
   if (layered_) {
-    // One rendering clears every layer and draws each run as instanced faces: opaque
-    // casters first, then (tinted batches) the panes against their depth.
+    // One rendering clears every layer and draws each run as instanced faces.
     target.depth.imageView = faces_.view();
     target.colour.imageView = tints_.view();
     target.rendering.layerCount = faces_.layers();
     gpu::cmd_begin_rendering(cmd, &target.rendering);
-    bind(opaque);
-    for (std::size_t i = begin; i < run; ++i) {
-      draw(batch.runs[i], batch.runs[i].first_face, batch.runs[i].face_count, false);
-    }
-    if (batch.tinted) {
-      bind(colour_pipeline_);
+    for (std::size_t list = 0; list < kLists; ++list) {
+      if (pipelines[list] == VK_NULL_HANDLE) continue;
+      bind(pipelines[list]);
       for (std::size_t i = begin; i < run; ++i) {
-        draw(batch.runs[i], batch.runs[i].first_face, batch.runs[i].face_count, true);
+        draw(batch.runs[i], batch.runs[i].first_face, batch.runs[i].face_count, list);
       }
     }
     gpu::cmd_end_rendering(cmd);
@@ -281,13 +306,13 @@ void ShadowReferencePass::render_faces(fgvk::ExecuteContext& context, const refe
     gpu::cmd_begin_rendering(cmd, &target.rendering);
     const std::uint32_t slot = layer / reference::kFacesPerLight;
     const std::uint32_t face = layer % reference::kFacesPerLight;
-    for (const bool tint : {false, true}) {
-      if (tint && !batch.tinted) break;
-      bind(tint ? VkPipeline(colour_pipeline_) : opaque);
+    for (std::size_t list = 0; list < kLists; ++list) {
+      if (pipelines[list] == VK_NULL_HANDLE) continue;
+      bind(pipelines[list]);
       for (std::size_t i = begin; i < run; ++i) {
         const auto& r = batch.runs[i];
         if (r.slot == slot && face >= r.first_face && face < r.first_face + r.face_count) {
-          draw(r, face, 1, tint);
+          draw(r, face, 1, list);
         }
       }
     }

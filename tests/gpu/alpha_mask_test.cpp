@@ -1,6 +1,7 @@
 // Cut casters (docs/technique.md, "Materials"): a quad with a checkerboard alpha texture
 // (alphaMode MASK) casts a checkerboard shadow, and a one-sided quad casts only when the
-// light sees its front, in the hardware and the compute shadow rasterisers alike.
+// light sees its front, in the hardware and the compute shadow rasterisers alike, and in
+// the shadow reference that judges them.
 //
 // A small point light at (-6, 4, 0) shines on a 2 m quad at height 1; its shadow falls on
 // the floor beside it, enlarged 4/3 around the light, where a camera on the far side sees
@@ -86,12 +87,20 @@ class AlphaMaskTest : public RenderTest {
         ("antumbra_alpha_mask_" + rasterizer + std::to_string(static_cast<int>(caster)));
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
-    fg::GraphDesc graph = load_graph_file(source_dir() / "data" / "graphs" / "hard.json");
+    // "reference": the shadow-reference graph, a few samples of the small light (it is
+    // nearly a point, so they agree); else the atlas graph with that rasteriser.
+    const bool reference = rasterizer == "reference";
+    fg::GraphDesc graph = load_graph_file(source_dir() / "data" / "graphs" /
+                                          (reference ? "reference.json" : "hard.json"));
     for (auto& r : graph.resources) {
       if (r.name == "atlas") r.size = fg::SizeSpec{false, 1.0, 1.0, 512, 512};
     }
     for (auto& p : graph.passes) {
       if (p.type == "point-shadow-atlas") p.params["rasterizer"] = rasterizer;
+      if (p.type == "shadow-reference") {
+        p.params["samples"] = 16;
+        p.params["faceSize"] = 512;
+      }
     }
     runtime::RenderSession* session = open_session(kView);
     EXPECT_NE(session, nullptr) << skip_reason_;
@@ -187,6 +196,14 @@ TEST_F(AlphaMaskTest, OneSidedCastersCastOnlyFromTheirFrontHardware) {
 
 TEST_F(AlphaMaskTest, OneSidedCastersCastOnlyFromTheirFrontCompute) {
   expect_one_sided("compute");
+}
+
+TEST_F(AlphaMaskTest, CheckerboardAlphaCastsACheckerboardShadowReference) {
+  expect_checkerboard("reference");
+}
+
+TEST_F(AlphaMaskTest, OneSidedCastersCastOnlyFromTheirFrontReference) {
+  expect_one_sided("reference");
 }
 
 }  // namespace
