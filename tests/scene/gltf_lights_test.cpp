@@ -247,6 +247,19 @@ TEST(GltfLights, AModelWithLightsReplacesTheDefaultRig) {
   EXPECT_EQ(result->lights[0].name, "model/bulb node");
   EXPECT_EQ(result->lights[2].type, LightType::directional);
   EXPECT_FALSE(fs::exists(gltf_scene_file(dir / "lit.gltf")));
+
+  // Problems of the model are located in the model, not in the view generated for it
+  // (which is no file the user has).
+  json bad = lit_quad();
+  bad["extensions"]["KHR_lights_punctual"]["lights"][0]["range"] = -2;
+  antumbra::testing::write_json(dir / "bad.gltf", bad);
+  const auto located = load_scene_file((dir / "bad.gltf").string());
+  ASSERT_TRUE(located.ok()) << located.diagnostics().to_text();
+  ASSERT_EQ(located.diagnostics().size(), 1u) << located.diagnostics().to_text();
+  const base::Diagnostic& d = *located.diagnostics().begin();
+  EXPECT_EQ(d.file, (dir / "bad.gltf").string());
+  EXPECT_EQ(d.pointer, "/extensions/KHR_lights_punctual/lights/0/range");
+  EXPECT_EQ(d.line, 0);
 }
 
 }  // namespace

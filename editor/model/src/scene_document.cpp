@@ -68,7 +68,12 @@ base::Result<SceneDocument> SceneDocument::open(const std::filesystem::path& fil
   if (std::filesystem::is_regular_file(settings, ec)) return load(settings, images);
   auto text = scene::gltf_scene_text(file, images);
   if (!text.ok()) return text.diagnostics();
-  return parse(text.value(), settings, images);
+  auto doc = parse(text.value(), settings, images);
+  // The model's own warnings (missing textures, skipped lights), located in the glTF.
+  if (doc.ok()) {
+    for (const base::Diagnostic& d : text.diagnostics()) doc.diagnostics().add(d);
+  }
+  return doc;
 }
 
 base::Result<SceneDocument> SceneDocument::parse(std::string_view text,

@@ -338,6 +338,30 @@ base::Result<Scene> parse_scene(const base::JsonDocument& document, ImageCache* 
   return detail::parse_scene_document(document, chain, images != nullptr ? *images : own_images);
 }
 
+namespace {
+
+// The generated view of a model is no file the user has: its diagnostics are the
+// model's own (located in the glTF, as load_gltf reported them), not "<model>.scene.json:
+// 32:15" repeating them; any other problem of the view is reported against the model.
+base::Result<Scene> locate_in_model(base::Result<Scene> parsed, const base::Diagnostics& model,
+                                    const std::string& path, const std::string& view) {
+  base::Diagnostics out = model;
+  for (base::Diagnostic d : parsed.diagnostics()) {
+    if (d.file == view) {
+      if (d.message.starts_with("in glTF '")) continue;  // repeats one of `model`
+      d.file = path;
+      d.line = 0;
+      d.column = 0;
+      d.pointer.clear();
+    }
+    out.add(std::move(d));
+  }
+  if (!parsed.ok()) return out;
+  return base::Result<Scene>(std::move(parsed.value()), std::move(out));
+}
+
+}  // namespace
+
 base::Result<Scene> load_scene_file(const std::string& path, ImageCache* images) {
   if (is_gltf_file(path)) {
     // A model as the whole scene: its saved scene file when there is one, else a view
@@ -350,7 +374,8 @@ base::Result<Scene> load_scene_file(const std::string& path, ImageCache* images)
     ImageCache& cache = images != nullptr ? *images : own_images;
     auto text = gltf_scene_text(path, &cache);
     if (!text.ok()) return text.diagnostics();
-    return parse_scene_text(text.value(), settings.string(), &cache);
+    auto parsed = parse_scene_text(text.value(), settings.string(), &cache);
+    return locate_in_model(std::move(parsed), text.diagnostics(), path, settings.string());
   }
   auto document = base::load_json_file(path);
   if (!document.ok()) return document.diagnostics();
