@@ -8,17 +8,40 @@
 // silhouettes, exactly where the inner wedges need Z2 and Z3 to be the occluder's back
 // and the receiver.
 #include "wedges_common.glsl"
+#ifdef CUT
+#define MATERIAL_SRGB_TEXTURES kWedgeSrgbTextures
+#define MATERIAL_SAMPLER kWedgeSampler
+#include "../common/material_textures.glsl"
+#endif
 
 layout(set = 0, binding = kWedgeFirst) uniform sampler2DArray previous;
 
 layout(location = 0) in vec3 in_position;
 layout(location = 1) in vec3 in_normal;
+#ifdef CUT
+// Cut casters (docs/technique.md, "Draw classes"): peeled only where they cast in the
+// atlas (Z1), their front towards the light and their alpha at or above the cutoff.
+layout(set = 0, binding = kWedgeMaterials, std430) readonly buffer Materials { GpuMaterial materials[]; };
+layout(location = 2) flat in uint in_material;
+layout(location = 3) in vec4 in_uv;
+layout(location = 4) flat in uint in_mirrored;
+#endif
 
 // |cos| of the angle between the surface and the light's ray below which a fragment
 // counts as edge-on (about 1 degree off the ray).
 const float kEdgeOn = 0.02;
 
 void main() {
+#ifdef CUT
+  {
+    GpuMaterial m = materials[in_material];
+    vec4 dx = dFdx(in_uv);
+    vec4 dy = dFdy(in_uv);
+    bool front = gl_FrontFacing != (in_mirrored != 0u);
+    if (!front && (m.more.y & ANTUMBRA_MATERIAL_DOUBLE_SIDED) == 0u) discard;
+    if (material_cut(m, in_uv, dx, dy)) discard;
+  }
+#endif
   ShadowLight sl = shadow_lights[shadow_faces[layer].info.x];
   float d = wedge_linearise(sl, gl_FragCoord.z);
   vec3 ray = normalize(in_position - sl.position_range.xyz);

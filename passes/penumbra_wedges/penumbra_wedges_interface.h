@@ -48,6 +48,11 @@ ANTUMBRA_BINDING(kWedgeArgs, 6)
 // and the second layer (Z2).
 ANTUMBRA_BINDING(kWedgeFirst, 7)
 ANTUMBRA_BINDING(kWedgeSecond, 8)
+// Materials (silhouettes.comp: one-sided and alpha-tested triangles) and base-colour
+// textures (peel.frag with CUT: the peeling of cut casters).
+ANTUMBRA_BINDING(kWedgeMaterials, 9)
+ANTUMBRA_BINDING(kWedgeSrgbTextures, 10)
+ANTUMBRA_BINDING(kWedgeSampler, 11)
 
 ANTUMBRA_PUSH_CONSTANTS(PenumbraWedgesPush) {
   uint edge_count;

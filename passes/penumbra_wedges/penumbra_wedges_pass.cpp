@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
+#include <memory>
 
 #include "antumbra/base/diagnostic_codes.hpp"
 #include "antumbra/gpu/commands.hpp"
@@ -16,6 +17,7 @@
 #include "common/ports.hpp"
 #include "penumbra_wedges_interface.h"
 #include "shared/limits.h"
+#include "shared/material_textures.h"
 #include "silhouette_edges.hpp"
 
 namespace antumbra::passes {
@@ -44,7 +46,12 @@ gpu::DescriptorSetLayoutBuilder wedge_bindings() {
       .storage_buffer(shared::kWedgeCounts, kStages)
       .storage_buffer(shared::kWedgeArgs, kStages)
       .combined_image_sampler(shared::kWedgeFirst, kStages)
-      .combined_image_sampler(shared::kWedgeSecond, kStages);
+      .combined_image_sampler(shared::kWedgeSecond, kStages)
+      .storage_buffer(shared::kWedgeMaterials,
+                      VK_SHADER_STAGE_FRAGMENT_BIT | VK_SHADER_STAGE_COMPUTE_BIT)
+      .add(shared::kWedgeSrgbTextures, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE,
+           VK_SHADER_STAGE_FRAGMENT_BIT, shared::kTextureBuckets)
+      .sampler(shared::kWedgeSampler, VK_SHADER_STAGE_FRAGMENT_BIT);
   return b;
 }
 
@@ -149,6 +156,7 @@ void PenumbraWedgesPass::prepare(fgvk::PrepareContext& context) {
       .cache(context.pipeline_cache);
   check_vertex_inputs(name_, peel_vert, peel.vertex_attributes());
   peel_ = peel.build(context.gpu, name_ + ".peel");
+  prepare_cut_peel(context, bindings);
 
   gpu::GraphicsPipelineBuilder wedges;
   wedges.shader(VK_SHADER_STAGE_VERTEX_BIT, wedge_vert)
@@ -371,7 +379,11 @@ void PenumbraWedgesPass::extract(fgvk::ExecuteContext& context, std::uint32_t la
       .combined_image_sampler(shared::kWedgeFirst, atlas.array_view, context.samplers.nearest_clamp,
                               atlas.layout)
       .combined_image_sampler(shared::kWedgeSecond, atlas.array_view,
-                              context.samplers.nearest_clamp, atlas.layout);
+                              context.samplers.nearest_clamp, atlas.layout)
+      // One-sided and alpha-tested triangles (silhouettes.comp).
+      .storage_buffer(shared::kWedgeMaterials, context.frame.materials != VK_NULL_HANDLE
+                                                   ? context.frame.materials
+                                                   : edges_.handle());
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, silhouettes_);
   descriptors.push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_);
   push_constants(cmd, layers, 0, {1, 1});
@@ -396,6 +408,34 @@ void PenumbraWedgesPass::extract(fgvk::ExecuteContext& context, std::uint32_t la
                           VK_ACCESS_2_TRANSFER_READ_BIT);
 }
 
+// Cut casters (docs/technique.md, "Draw classes"): the peel with their alpha and
+// one-sidedness decided per fragment, so the layers behind Z1 agree with the atlas. Built
+// on the first frame that has such casters (lazy_pipeline.hpp).
+void PenumbraWedgesPass::prepare_cut_peel(fgvk::PrepareContext& context,
+                                          const gpu::DescriptorSetLayoutBuilder& bindings) {
+  const std::vector<gpu::ShaderDefine> cut{{"CUT", ""}};
+  auto vert = load_shader(context, "penumbra_wedges/peel.vert", shader_files_, cut);
+  auto frag = load_shader(context, "penumbra_wedges/peel.frag", shader_files_, cut);
+  check_shader_interface(name_, vert, bindings, sizeof(PenumbraWedgesPush));
+  check_shader_interface(name_, frag, bindings, sizeof(PenumbraWedgesPush));
+  auto base = scene_vertex_attributes({0, 1, 2, 3});
+  base.cull(VK_CULL_MODE_NONE)  // back faces are the fragment shader's to discard
+      .depth(true, true, VK_COMPARE_OP_LESS)
+      .depth_format(kSecondFormat)
+      .layout(layout_)
+      .cache(context.pipeline_cache);
+  check_vertex_inputs(name_, vert, base.vertex_attributes());
+  const auto shaders = std::make_shared<const std::array<Shader, 2>>(
+      std::array<Shader, 2>{std::move(vert), std::move(frag)});
+  // Each build starts from a copy, so a build that throws can be retried next frame.
+  cut_peel_ = LazyPipeline([gpu = &context.gpu, base, shaders, name = name_ + ".peelCut"]() {
+    gpu::GraphicsPipelineBuilder b = base;
+    b.shader(VK_SHADER_STAGE_VERTEX_BIT, (*shaders)[0])
+        .shader(VK_SHADER_STAGE_FRAGMENT_BIT, (*shaders)[1]);
+    return b.build(*gpu, name);
+  });
+}
+
 void PenumbraWedgesPass::peel(fgvk::ExecuteContext& context, const PeelStep& step,
                               VkExtent2D extent, std::uint32_t layers) {
   const std::vector<gpu::ImageView>& targets = *step.targets;
@@ -406,8 +446,16 @@ void PenumbraWedgesPass::peel(fgvk::ExecuteContext& context, const PeelStep& ste
       .storage_buffer(shared::kWedgeShadowData, context.bindings.buffer(port::kShadowData)->buffer)
       .combined_image_sampler(shared::kWedgeFirst, step.previous, context.samplers.nearest_clamp,
                               step.previous_layout)
+      .storage_buffer(shared::kWedgeMaterials, context.frame.materials)
+      .sampled_images(shared::kWedgeSrgbTextures, context.frame.srgb_textures)
+      .sampler(shared::kWedgeSampler, context.frame.texture_sampler)
       .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_);
-  const VkDeviceSize offset = 0;
+  // Two-sided casters with the plain peel, one-sided and cut ones with the cut peel.
+  constexpr std::array<bool, 2> kBothHalves{true, true};
+  const bool cut = draws_class(context.frame, fgvk::DrawClass::one_sided, kBothHalves) ||
+                   draws_class(context.frame, fgvk::DrawClass::cut, kBothHalves);
+  const VkPipeline cut_peel = cut ? cut_peel_.get() : VK_NULL_HANDLE;
+  const std::array<VkPipeline, fgvk::kDrawClasses> pipelines{peel_, cut_peel, cut_peel};
   VkClearValue clear{};
   clear.depthStencil = {1.0f, 0};
   for (std::uint32_t layer = 0; layer < layers; ++layer) {
@@ -419,9 +467,8 @@ void PenumbraWedgesPass::peel(fgvk::ExecuteContext& context, const PeelStep& ste
     gpu::cmd_begin_rendering(cmd, &rendering);
     set_viewport(cmd, extent);
     push_constants(cmd, layers, layer, extent);
-    vkCmdBindVertexBuffers(cmd, 0, 1, &context.frame.vertices, &offset);
-    vkCmdBindIndexBuffer(cmd, context.frame.indices, 0, VK_INDEX_TYPE_UINT32);
-    vkCmdDrawIndexed(cmd, context.frame.index_count, 1, 0, 0, 0);
+    bind_scene_geometry(cmd, context.frame);
+    draw_by_class(cmd, context.frame, pipelines, kBothHalves);
     gpu::cmd_end_rendering(cmd);
   }
 }

@@ -57,6 +57,8 @@ class PenumbraWedgesPass final : public fgvk::Pass {
   };
   void peel(fgvk::ExecuteContext& context, const PeelStep& step, VkExtent2D extent,
             std::uint32_t layers);
+  void prepare_cut_peel(fgvk::PrepareContext& context,
+                        const gpu::DescriptorSetLayoutBuilder& bindings);
   void draw_wedges(fgvk::ExecuteContext& context, std::uint32_t layers);
   void push_constants(VkCommandBuffer cmd, std::uint32_t layers, std::uint32_t layer,
                       VkExtent2D extent) const;
@@ -70,6 +72,7 @@ class PenumbraWedgesPass final : public fgvk::Pass {
   gpu::Pipeline silhouettes_;
   gpu::Pipeline args_;
   gpu::Pipeline peel_;
+  LazyPipeline cut_peel_;  // one-sided and alpha-tested casters (peel.frag with CUT)
   gpu::Pipeline wedges_;
   std::vector<std::string> shader_files_;
 

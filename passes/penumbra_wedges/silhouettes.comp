@@ -6,6 +6,14 @@
 // and one facing away, or an edge of one triangle (an open mesh's border), is a
 // silhouette; it is appended to the light's segment with the directions its wedge
 // corners move along.
+//
+// Draw classes (docs/technique.md, "Draw classes"): a one-sided triangle facing away from
+// the light casts nothing in the atlas, so it counts as absent (the edge is then the
+// other triangle's border, or nothing). Edges of alpha-tested triangles are skipped: the
+// shadow's true outline is the alpha contour inside them, which no edge list holds, so
+// their shadows stay as hard as the atlas draws them rather than gaining penumbrae along
+// geometric borders that may be cut away.
+#include "../common/material.glsl"
 #include "wedges_common.glsl"
 
 layout(local_size_x = 64) in;
@@ -17,6 +25,7 @@ layout(set = 0, binding = kWedgeSilhouettes, std430) writeonly buffer Silhouette
   Silhouette silhouettes[];
 };
 layout(set = 0, binding = kWedgeCounts, std430) buffer Counts { uint counts[]; };
+layout(set = 0, binding = kWedgeMaterials, std430) readonly buffer Materials { GpuMaterial materials[]; };
 
 // GpuVertex: position, normal, material (7 words).
 vec3 vertex_position(uint i) {
@@ -29,6 +38,10 @@ vec3 vertex_position(uint i) {
 // depth, inside a thin occluder), plus the normal's slope along the edge: two edges
 // meeting at a vertex then share their corner (a mitre, up to 45 degrees of slope
 // each way). Where the normal says nothing across the edge, across alone.
+// The material flags (ANTUMBRA_MATERIAL_*) of the triangle with vertex i (materials are
+// per triangle, so any of its vertices tells).
+uint vertex_flags(uint i) { return materials[floatBitsToUint(vertex_data[7u * i + 6u])].more.y; }
+
 vec3 corner_direction(vec3 normal, vec3 along, vec3 across) {
   float a = dot(normal, across);
   if (a < 0.3) return across;
@@ -55,14 +68,27 @@ void main() {
   // one facing the light decides, since the other may lie edge-on to it (the light in
   // its plane), its third vertex on the edge's line.
   vec3 inside = pa;
+  uint flags_a = vertex_flags(edge.vertices.z);
+  if ((flags_a & ANTUMBRA_MATERIAL_ALPHA_TESTED) != 0u) return;
+  bool front_a = dot(cross(p1 - p0, pa - p0), source - p0) > 0.0;
+  bool casts_a = front_a || (flags_a & ANTUMBRA_MATERIAL_DOUBLE_SIDED) != 0u;
   if (edge.vertices.w != ANTUMBRA_NO_TRIANGLE) {
     vec3 pb = vertex_position(edge.vertices.w);
-    bool front_a = dot(cross(p1 - p0, pa - p0), source - p0) > 0.0;
+    uint flags_b = vertex_flags(edge.vertices.w);
+    if ((flags_b & ANTUMBRA_MATERIAL_ALPHA_TESTED) != 0u) return;
     // The second triangle oriented as the first (along the edge the other way), whatever
     // its own winding: where a mesh's winding flips, a flat surface stays flat.
     bool front_b = dot(cross(p0 - p1, pb - p1), source - p1) > 0.0;
-    if (front_a == front_b) return;
-    if (front_b) inside = pb;
+    bool casts_b = front_b || (flags_b & ANTUMBRA_MATERIAL_DOUBLE_SIDED) != 0u;
+    if (!casts_a && !casts_b) return;
+    if (casts_a && casts_b) {
+      if (front_a == front_b) return;
+      if (front_b) inside = pb;
+    } else if (casts_b) {
+      inside = pb;  // the border of the second triangle alone
+    }
+  } else if (!casts_a) {
+    return;  // a one-sided border triangle facing away casts nothing
   }
   vec3 across = cross(normalize(0.5 * (p0 + p1) - source), p1 - p0);
   float len = length(across);

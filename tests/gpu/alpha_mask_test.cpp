@@ -31,7 +31,7 @@ constexpr float kQuadHeight = 1.0f;
 enum class Caster { none, checker, one_sided_up, one_sided_down, two_sided_down };
 
 // Writes the quad's glTF into `dir` and returns the scene's JSON.
-std::string scene_text(const std::filesystem::path& dir, Caster caster) {
+std::string scene_text(const std::filesystem::path& dir, Caster caster, float light_size) {
   nlohmann::json doc = antumbra::testing::quad_gltf(2.0f, 0.0f);
   if (caster == Caster::checker) {
     antumbra::testing::write_file(
@@ -64,7 +64,7 @@ std::string scene_text(const std::filesystem::path& dir, Caster caster) {
                                          {"position", {kLight.x, kLight.y, kLight.z}},
                                          {"intensity", 60},
                                          {"range", 30},
-                                         {"size", 0.01}}})}};
+                                         {"size", light_size}}})}};
   if (caster != Caster::none) {
     // Rotated half a turn about x, the quad faces down (its uv mirrored in z).
     scene["objects"].push_back({{"gltf", (dir / "quad.gltf").string()},
@@ -81,22 +81,27 @@ class AlphaMaskTest : public RenderTest {
     scene::Scene scene;
   };
 
-  std::optional<Frame> render(Caster caster, const std::string& rasterizer) {
+  std::optional<Frame> render(Caster caster, const std::string& rasterizer,
+                              float light_size = 0.01f) {
     const std::filesystem::path dir =
         std::filesystem::temp_directory_path() /
-        ("antumbra_alpha_mask_" + rasterizer + std::to_string(static_cast<int>(caster)));
+        ("antumbra_alpha_mask_" + rasterizer + std::to_string(static_cast<int>(caster)) + "_" +
+         std::to_string(static_cast<int>(light_size * 100.0f)));
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
     // "reference": the shadow-reference graph, a few samples of the small light (it is
     // nearly a point, so they agree); else the atlas graph with that rasteriser.
+    // "wedges": the penumbra-wedges graph (its hardware atlas, peeling and wedges).
     const bool reference = rasterizer == "reference";
-    fg::GraphDesc graph = load_graph_file(source_dir() / "data" / "graphs" /
-                                          (reference ? "reference.json" : "hard.json"));
+    const bool wedges = rasterizer == "wedges";
+    fg::GraphDesc graph = load_graph_file(
+        source_dir() / "data" / "graphs" /
+        (reference ? "reference.json" : (wedges ? "penumbra-wedges.json" : "hard.json")));
     for (auto& r : graph.resources) {
       if (r.name == "atlas") r.size = fg::SizeSpec{false, 1.0, 1.0, 512, 512};
     }
     for (auto& p : graph.passes) {
-      if (p.type == "point-shadow-atlas") p.params["rasterizer"] = rasterizer;
+      if (p.type == "point-shadow-atlas" && !wedges) p.params["rasterizer"] = rasterizer;
       if (p.type == "shadow-reference") {
         p.params["samples"] = 16;
         p.params["faceSize"] = 512;
@@ -106,7 +111,8 @@ class AlphaMaskTest : public RenderTest {
     EXPECT_NE(session, nullptr) << skip_reason_;
     if (session == nullptr) return std::nullopt;
     load_graph_ok(*session, graph);
-    auto scene = scene::parse_scene_text(scene_text(dir, caster), (dir / "scene.json").string());
+    auto scene =
+        scene::parse_scene_text(scene_text(dir, caster, light_size), (dir / "scene.json").string());
     EXPECT_TRUE(scene.ok()) << describe(scene.diagnostics());
     if (!scene.ok()) return std::nullopt;
     Frame frame{{}, scene.value()};
@@ -180,6 +186,35 @@ class AlphaMaskTest : public RenderTest {
       }
     }
   }
+
+  // Penumbra wedges grow from silhouette edges (docs/technique.md, "Draw classes"): a
+  // one-sided quad facing away from the light casts nothing, so its border is no
+  // silhouette, and the borders of an alpha-tested quad are not either (its shadow stays
+  // the atlas's hard one). With a light large enough for wedges several pixels wide, the
+  // floor where those borders project stays lit: the midpoints of the facing-away quad's
+  // sides and of the checkerboard's cut border cells.
+  void expect_no_wedges_from_non_casting_borders() {
+    constexpr float kSize = 0.3f;
+    const auto lit = render(Caster::none, "wedges", kSize);
+    const auto away = render(Caster::one_sided_down, "wedges", kSize);
+    const auto checker = render(Caster::checker, "wedges", kSize);
+    ASSERT_TRUE(lit && away && checker);
+    for (const glm::vec2 uv : {glm::vec2(0.0f, 0.5f), glm::vec2(1.0f, 0.5f), glm::vec2(0.5f, 0.0f),
+                               glm::vec2(0.5f, 1.0f)}) {
+      const float seen = visibility(*away, *lit, uv.x, uv.y, true);
+      std::printf("[ wedges ] one-sided away, border (%.2f, %.2f): visibility %.3f\n", uv.x, uv.y,
+                  seen);
+      EXPECT_GT(seen, 0.9f) << uv.x << ", " << uv.y;
+    }
+    // Cut border cells: (1, 0), (3, 0) at v = 0 and (0, 3), (2, 3) at v = 1.
+    for (const glm::vec2 uv : {glm::vec2(0.375f, 0.0f), glm::vec2(0.875f, 0.0f),
+                               glm::vec2(0.125f, 1.0f), glm::vec2(0.625f, 1.0f)}) {
+      const float seen = visibility(*checker, *lit, uv.x, uv.y, false);
+      std::printf("[ wedges ] checker, cut border (%.3f, %.2f): visibility %.3f\n", uv.x, uv.y,
+                  seen);
+      EXPECT_GT(seen, 0.9f) << uv.x << ", " << uv.y;
+    }
+  }
 };
 
 TEST_F(AlphaMaskTest, CheckerboardAlphaCastsACheckerboardShadowHardware) {
@@ -204,6 +239,18 @@ TEST_F(AlphaMaskTest, CheckerboardAlphaCastsACheckerboardShadowReference) {
 
 TEST_F(AlphaMaskTest, OneSidedCastersCastOnlyFromTheirFrontReference) {
   expect_one_sided("reference");
+}
+
+TEST_F(AlphaMaskTest, CheckerboardAlphaCastsACheckerboardShadowWedges) {
+  expect_checkerboard("wedges");
+}
+
+TEST_F(AlphaMaskTest, OneSidedCastersCastOnlyFromTheirFrontWedges) {
+  expect_one_sided("wedges");
+}
+
+TEST_F(AlphaMaskTest, NonCastingBordersGrowNoWedges) {
+  expect_no_wedges_from_non_casting_borders();
 }
 
 }  // namespace
