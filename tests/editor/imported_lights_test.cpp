@@ -152,6 +152,66 @@ TEST(ImportedLights, ASpotsConeAndDirectionAreEditable) {
   EXPECT_EQ(doc.to_text(), before);
 }
 
+// Edits at the edges of what the engine accepts leave a file it loads to the same lights.
+TEST(ImportedLights, EditsAtTheLimitsStayLoadable) {
+  ScratchDir dir;
+  SceneDocument doc = take(SceneDocument::load(lamp_scene(dir)));
+  // The glTF's cone, 0.5 rad = 28.6478898 degrees, is no 4-decimal number: an inner cone
+  // dragged to it must not be written past it.
+  const float outer = doc.lights()[2].spot_outer;
+  ASSERT_TRUE(doc.set_spot_angles(2, outer, outer));
+  expect_engine_agrees(doc);
+  ASSERT_TRUE(doc.set_spot_angles(1, 20.0f, 0.0f));  // an inner cone of 0 is valid
+  EXPECT_EQ(doc.lights()[1].spot_inner, 0.0f);
+  expect_engine_agrees(doc);
+  // The glTF's sun made a point light: a real range and radius, not the sun's.
+  const int sun = doc.find_light("lamp/sun");
+  ASSERT_GE(sun, 0);
+  ASSERT_TRUE(doc.set_type(static_cast<std::size_t>(sun), scene::LightType::point));
+  const scene::PointLight& was_sun =
+      doc.lights()[static_cast<std::size_t>(doc.find_light("lamp/sun"))];
+  EXPECT_TRUE(std::isfinite(was_sun.range));
+  EXPECT_LT(was_sun.size, 1.0f);
+  expect_engine_agrees(doc);
+  const auto reloaded = scene::parse_scene_text(doc.to_text(), doc.file().string());
+  EXPECT_TRUE(reloaded.ok()) << reloaded.diagnostics().to_text();
+}
+
+TEST(ImportedLights, NamesOfHiddenImportedLightsAreTaken) {
+  ScratchDir dir;
+  ::antumbra::testing::write_json(dir.path() / "lit.gltf", ::antumbra::testing::lit_quad_gltf());
+  testing::write(dir.path() / "scene.json", R"({
+  "version": 1,
+  "camera": { "position": [0, 5, 10], "target": [0, 0, 0] },
+  "objects": [ { "name": "lamp", "gltf": "lit.gltf" } ],
+  "lights": [ { "name": "day", "type": "directional", "direction": [0, -1, 1] },
+              { "name": "own", "position": [0, 1, 0] } ]
+}
+)");
+  SceneDocument doc = take(SceneDocument::load(dir.path() / "scene.json"));
+  EXPECT_LT(doc.find_light("lamp/sun"), 0);  // hidden: the scene has its own sun
+  // Named so, "own" would silently become an override of that sun: a second sun.
+  EXPECT_FALSE(doc.set_name(1, "lamp/sun"));
+  expect_engine_agrees(doc);
+}
+
+TEST(ImportedLights, TheSelectionFollowsItsLightThroughARevert) {
+  ScratchDir dir;
+  SceneDocument doc = take(SceneDocument::load(lamp_scene(dir)));
+  ASSERT_TRUE(doc.set_intensity(1, 3.0f));  // "lamp/bulb node" becomes file entry 1
+  ASSERT_EQ(doc.lights()[1].name, "lamp/bulb node");
+  doc.select(0);  // "own"
+  ASSERT_TRUE(doc.delete_light(1));
+  ASSERT_EQ(doc.selected(), 0);
+  doc.select(3);                            // "lamp/sun"
+  ASSERT_TRUE(doc.set_intensity(2, 5.0f));  // "lamp/cone": an override before the sun
+  ASSERT_EQ(doc.lights()[doc.selected()].name, "lamp/cone");
+  doc.select(doc.find_light("lamp/sun"));
+  ASSERT_TRUE(doc.delete_light(static_cast<std::size_t>(doc.find_light("lamp/cone"))));
+  ASSERT_GE(doc.selected(), 0);
+  EXPECT_EQ(doc.lights()[static_cast<std::size_t>(doc.selected())].name, "lamp/sun");
+}
+
 TEST(ImportedLights, AModelOpenedAsTheSceneSavesItsEditsBesideIt) {
   ScratchDir dir;
   const auto model = dir.path() / "lit.gltf";

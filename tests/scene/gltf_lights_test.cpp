@@ -78,13 +78,13 @@ TEST(GltfLights, OneOfEachTypeImportsPlacedAndConverted) {
 
 TEST(GltfLights, DimLightsWithoutRangeStopWhereTheyFadeOut) {
   json doc = lit_quad();
-  doc["extensions"]["KHR_lights_punctual"]["lights"][1]["intensity"] = 0.01;
+  doc["extensions"]["KHR_lights_punctual"]["lights"][1]["intensity"] = 0.1;
   const fs::path dir = fresh_dir("dim");
   antumbra::testing::write_json(dir / "lit.gltf", doc);
   const auto result = load_gltf((dir / "lit.gltf").string());
   ASSERT_TRUE(result.ok()) << result.diagnostics().to_text();
-  // Radiance intensity / d^2 falls to 1/256 at d = sqrt(256 * intensity).
-  EXPECT_NEAR(result->lights[1].range, std::sqrt(256.0f * 0.01f / kPi), 1e-4f);
+  // Radiance intensity / (d^2 + 1) falls to 1/256 at d = sqrt(256 * intensity - 1).
+  EXPECT_NEAR(result->lights[1].range, std::sqrt(256.0f * 0.1f / kPi - 1.0f), 1e-4f);
 }
 
 struct BadLight {

@@ -436,6 +436,7 @@ int run_windowed_editor(const WindowedOptions& options) {
   EditorState state(session, std::move(documents->scene), std::move(documents->graph),
                     editor::lookup_in(registry.reflection()));
   if (!state.start(documents->images.get())) return runtime::kExitDiagnostics;
+  documents->images.reset();  // the scene holds the images it uses; the rest can go
   if (!options.select.empty() && !select_light(state, options.select)) {
     return runtime::kExitUsage;
   }

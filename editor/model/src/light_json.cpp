@@ -90,6 +90,12 @@ class LightReader {
       }
     }
     const bool sun = out.type == scene::LightType::directional;
+    // An imported sun turned into a point or spot light has no range or radius of its
+    // own: it starts from a new light's (engine/scene's parser does the same).
+    if (overriding && imported_type == scene::LightType::directional && !sun) {
+      out.range = scene::PointLight{}.range;
+      out.size = scene::PointLight{}.size;
+    }
     if (sun) {
       out.range = std::numeric_limits<float>::infinity();
       if (!overriding || imported_type != scene::LightType::directional) out.size = 0.27f;
@@ -111,7 +117,14 @@ class LightReader {
       const bool keep_inner = overriding && imported_type == scene::LightType::spot;
       out.spot_inner =
           keep_inner ? std::min(out.spot_inner, out.spot_outer) : 0.8f * out.spot_outer;
-      if (auto v = number(light, p, kInnerAngle, 0.0f, true)) out.spot_inner = *v;
+      if (auto v = number(light, p, kInnerAngle, 0.0f)) out.spot_inner = *v;
+      if (out.spot_outer > 90.0f) {
+        error(codes::editor::kLightField, "'angle' must be at most 90", p + "/" + kAngle);
+      }
+      if (out.spot_inner > out.spot_outer) {
+        error(codes::editor::kLightField, "'innerAngle' must not exceed 'angle' (the outer cone)",
+              p + "/" + kInnerAngle);
+      }
     }
     if (auto v = vec3(light, p, kColor, true)) out.color = *v;
     if (auto v = number(light, p, kIntensity, 0.0f)) out.intensity = *v;

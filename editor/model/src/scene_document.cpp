@@ -16,7 +16,8 @@ namespace {
 // Lights the scene's objects import (glTF lights, instanced scenes' lights), read by the
 // engine's parser; only files with such objects pay for the load.
 std::vector<scene::PointLight> imported_lights_of(const base::JsonDocument& document,
-                                                  scene::ImageCache* images) {
+                                                  scene::ImageCache* images,
+                                                  base::Diagnostics& diagnostics) {
   const auto objects = document.root().find("objects");
   if (objects == document.root().end() || !objects->is_array()) return {};
   const bool imports = std::any_of(objects->begin(), objects->end(), [](const base::Json& o) {
@@ -24,7 +25,12 @@ std::vector<scene::PointLight> imported_lights_of(const base::JsonDocument& docu
   });
   if (!imports) return {};
   auto parsed = scene::parse_scene(document, images);
-  return parsed.ok() ? parsed->imported_lights : std::vector<scene::PointLight>{};
+  if (parsed.ok()) return parsed->imported_lights;
+  // Without them, overrides would read as lights lacking a position: say why first.
+  for (const base::Diagnostic& d : parsed.diagnostics()) {
+    if (d.severity == base::Severity::error) diagnostics.add(d);
+  }
+  return {};
 }
 
 // What the editor needs before it can edit a scene safely; the lights come back read.
@@ -82,7 +88,8 @@ base::Result<SceneDocument> SceneDocument::parse(std::string_view text,
   auto document = base::parse_json(text, file.string());
   if (!document.ok()) return document.diagnostics();
   base::Diagnostics diagnostics;
-  std::vector<scene::PointLight> imported = imported_lights_of(document.value(), images);
+  std::vector<scene::PointLight> imported =
+      imported_lights_of(document.value(), images, diagnostics);
   std::vector<LightOrigin> origins;
   std::vector<scene::PointLight> lights =
       check_scene(document.value(), imported, origins, diagnostics);

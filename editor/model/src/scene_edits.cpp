@@ -85,10 +85,18 @@ void change_type(PendingChanges& pending, scene::LightType before, scene::LightT
   } else if (!entry.contains(detail::kDirection) && own) {
     pending.set(detail::kDirection, tidy(SceneDocument::kNewLightDirection));
   }
-  if (before == scene::LightType::directional && own)
+  // A sun has no position or range: a light it becomes gets a new light's. An override
+  // writes them (and the size, an angle for a sun, a radius for the others), since its
+  // absent keys would keep the imported sun's.
+  if (before == scene::LightType::directional) {
     pending.set(detail::kPosition, tidy(SceneDocument::kNewLightPosition));
-  // The sun's size is an angle in degrees, the others' a radius in metres: start over.
-  if ((before == scene::LightType::directional) != sun) pending.set(detail::kSize, std::nullopt);
+    if (!own) pending.set(detail::kRange, tidy(SceneDocument::kNewLightRange));
+  }
+  if ((before == scene::LightType::directional) != sun) {
+    pending.set(
+        detail::kSize,
+        own ? std::nullopt : std::optional<Json>(tidy(sun ? 0.27f : SceneDocument::kNewLightSize)));
+  }
 }
 
 // Direction and cone: refused (with why) when they do not apply to `type` or are out of
@@ -111,8 +119,14 @@ EditResult aim_changes(PendingChanges& pending, const LightChanges& c, const sce
     return EditResult::refused("the cone's half-angle must be in (0, 90] degrees");
   if (!(inner >= 0.0f && inner <= outer))
     return EditResult::refused("the inner cone must be in [0, the cone's half-angle]");
-  if (outer != now.spot_outer) pending.set(detail::kAngle, tidy(outer));
-  if (inner != now.spot_inner) pending.set(detail::kInnerAngle, tidy(inner));
+  // Both, as they will read back: written with 4 decimals, an inner cone at the limit
+  // must not round past an outer one kept unrounded (an imported glTF's, say).
+  const Json outer_json = tidy(outer);
+  const Json inner_json = tidy(std::min(inner, outer_json.get<float>()));
+  if (outer != now.spot_outer || inner != now.spot_inner) {
+    pending.set(detail::kAngle, outer_json);
+    pending.set(detail::kInnerAngle, inner_json);
+  }
   return {};
 }
 
@@ -144,7 +158,7 @@ EditResult SceneDocument::apply(std::size_t light, const LightChanges& c, std::s
                                  "scene): its name ties the scene file's changes to it");
     }
     if (c.name->empty()) return EditResult::refused("a light name must not be empty");
-    if (find_light(*c.name) >= 0)
+    if (name_taken(*c.name))
       return EditResult::refused("another light is already named " + base::quote_name(*c.name));
     pending.set(detail::kName, Json(*c.name));
   }
@@ -260,9 +274,17 @@ EditResult SceneDocument::set_casts_shadows(std::size_t light, bool casts) {
                label(casts ? "Enable shadows of" : "Disable shadows of", light));
 }
 
+// Imported lights a file entry could override count too, even a sun the one-sun rule
+// hides: an own light of that name would silently become its override.
+bool SceneDocument::name_taken(std::string_view name) const {
+  return find_light(name) >= 0 ||
+         std::any_of(imported_.begin(), imported_.end(),
+                     [&](const scene::PointLight& l) { return l.name == name; });
+}
+
 std::string SceneDocument::unique_name(std::string_view base) const {
   std::string name(base);
-  for (int n = 2; find_light(name) >= 0; ++n) name = std::string(base) + " " + std::to_string(n);
+  for (int n = 2; name_taken(name); ++n) name = std::string(base) + " " + std::to_string(n);
   return name;
 }
 
@@ -272,7 +294,7 @@ EditResult SceneDocument::add_light(scene::LightType type, glm::vec3 position) {
     return EditResult::refused("a scene has at most one directional light");
   if (!finite(position)) return EditResult::refused("the position must be finite");
   std::string name;
-  for (std::size_t n = lights_.size() + 1; name.empty() || find_light(name) >= 0; ++n)
+  for (std::size_t n = lights_.size() + 1; name.empty() || name_taken(name); ++n)
     name = "light" + std::to_string(n);
   Json light = Json::object();
   light[detail::kName] = name;
@@ -320,13 +342,20 @@ EditResult SceneDocument::delete_light(std::size_t light) {
                                "scene) and cannot be deleted here; set its intensity to 0 or "
                                "turn its shadows off");
   }
-  // Deleting an override brings the imported light back as it came, after the file's.
+  // Deleting an override brings the imported light back as it came, among the imported
+  // ones (and may bring back a sun the override displaced): the selection follows its
+  // light by name through the list as it will be.
   const bool reverts = origin(light) == LightOrigin::override;
-  int after = selected_;
-  if (after == static_cast<int>(light)) {
-    after = -1;
-  } else if (after > static_cast<int>(light)) {
-    --after;
+  int after = -1;
+  if (selected_ >= 0 && selected_ != static_cast<int>(light)) {
+    Json root = file_.root();
+    root["lights"].erase(light);
+    base::Diagnostics ignored;
+    const auto next = detail::read_lights(root, nullptr, ignored, imported_);
+    const std::string& name = lights_[static_cast<std::size_t>(selected_)].name;
+    for (std::size_t i = 0; i < next.size(); ++i) {
+      if (next[i].name == name) after = static_cast<int>(i);
+    }
   }
   return run({(reverts ? "Revert " : "Delete ") + base::quote_name(lights_[light].name),
               {JsonEdit::erase("/lights", light, file_.root()["lights"][light])},

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "antumbra/base/diagnostic_codes.hpp"
@@ -15,7 +16,8 @@ using nlohmann::json;
 constexpr const char* kExtension = "KHR_lights_punctual";
 
 // The radiance (white surface, exposure 1) below which a light with no range stops:
-// one step of an 8-bit display.
+// one step of an 8-bit display. With the engine's falloff intensity / (d^2 + 1), that is
+// at d = sqrt(intensity / cutoff - 1).
 constexpr float kCutoffRadiance = 1.0f / 256.0f;
 // Infinite lights are cut at this many model diagonals, where the engine's windowed
 // falloff still passes 99 % of the inverse-square light across the whole model.
@@ -25,8 +27,10 @@ constexpr float kRangeDiagonals = 4.0f;
 constexpr float kSizeDiagonals = 0.02f;
 constexpr float kSunAngularRadius = 0.27f;  // degrees: the real sun
 
+// Finite as a float too: the engine keeps floats, and a double past FLT_MAX would turn
+// into infinity on the way.
 bool finite_number(const json& v) {
-  return v.is_number() && std::isfinite(v.get<double>());
+  return v.is_number() && std::abs(v.get<double>()) <= std::numeric_limits<float>::max();
 }
 
 class LightReader {
@@ -185,8 +189,8 @@ PointLight place_punctual_light(const PunctualLight& definition, const glm::mat4
   } else {
     light.position = glm::vec3(world * glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
     if (definition.range_infinite) {
-      light.range =
-          std::min(std::sqrt(light.intensity / kCutoffRadiance), kRangeDiagonals * diagonal);
+      light.range = std::min(std::sqrt(std::max(light.intensity / kCutoffRadiance - 1.0f, 0.0f)),
+                             kRangeDiagonals * diagonal);
       light.range = std::max(light.range, 1e-3f);
     }
     light.size = kSizeDiagonals * diagonal;

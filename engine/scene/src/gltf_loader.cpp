@@ -305,9 +305,11 @@ bool Importer::add_primitive(const tinygltf::Primitive& prim, const std::string&
   if (mesh.indices.empty()) return true;  // skipped (points/lines), with a warning
   triangles_ += mesh.triangle_count();
   ++primitives_done_;
-  materials_.cache.report(
-      "building the meshes of " + std::filesystem::path(materials_.path).filename().string(),
-      primitives_done_, std::max(primitives_done_, primitives_total_));
+  if (materials_.cache.reporting()) {
+    materials_.cache.report(
+        "building the meshes of " + std::filesystem::path(materials_.path).filename().string(),
+        primitives_done_, std::max(primitives_done_, primitives_total_));
+  }
   if (triangles_ > limits_.max_triangles) {
     return fail(codes::scene::kGltfTooLarge,
                 "more than " + std::to_string(limits_.max_triangles) + " triangles", p);

@@ -113,8 +113,12 @@ std::shared_ptr<const ImageData> MaterialConverter::image(int source) {
       external ? file_version_key(file.string()) : file_version_key(in_.path) + "#" + pointer;
   const auto decode = [&] { return decode_image(bytes, name, in_.limits); };
   const DecodedImage result = key.empty() ? decode() : in_.cache.get(key, decode);
-  in_.cache.report("decoding the images of " + std::filesystem::path(in_.path).filename().string(),
-                   ++decoded_, images_.size());
+  ++decoded_;
+  if (in_.cache.reporting()) {
+    in_.cache.report(
+        "decoding the images of " + std::filesystem::path(in_.path).filename().string(), decoded_,
+        images_.size());
+  }
   if (const auto* error = std::get_if<std::string>(&result)) {
     warn(codes::scene::kGltfImage,
          "image " + (external ? "'" + img.uri + "' " : std::string()) +

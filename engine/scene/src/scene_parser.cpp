@@ -192,6 +192,12 @@ void parse_light(JsonReader& r, const Json& l, const std::string& p, PointLight&
     }
   }
   const bool directional = out.type == LightType::directional;
+  // An imported sun turned into a point or spot light has no range or radius of its
+  // own: it starts from a new light's.
+  if (overriding && imported_type == LightType::directional && !directional) {
+    out.range = PointLight{}.range;
+    out.size = PointLight{}.size;
+  }
   if (directional) {
     // The sun has no position and reaches everything: no attenuation, no range.
     out.range = std::numeric_limits<float>::infinity();

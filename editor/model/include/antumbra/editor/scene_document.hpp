@@ -146,6 +146,7 @@ class SceneDocument {
   void refresh();
   void after_history(const Command* command, bool undone);
   [[nodiscard]] std::string unique_name(std::string_view base) const;
+  [[nodiscard]] bool name_taken(std::string_view name) const;
   [[nodiscard]] std::string label(std::string_view verb, std::size_t light) const;
 
   JsonFile file_;

@@ -47,6 +47,8 @@ class ImageCache {
   void report(std::string_view stage, std::size_t done, std::size_t total) const {
     if (progress_) progress_(stage, done, total);
   }
+  // Whether anyone listens: callers skip building stage texts otherwise.
+  [[nodiscard]] bool reporting() const { return static_cast<bool>(progress_); }
 
   // The cached image for `key`, or `decode()`'s result stored under it. Failures are
   // not cached (the next load reports them again).
