@@ -14,6 +14,12 @@ ANTUMBRA_BINDING(kSdfInfoBuffer, 3)
 // Bounds of each run of 64 triangles (min, max as two vec4), written by the first
 // dispatch and read by the bake: a brick skips runs far from it without opening them.
 ANTUMBRA_BINDING(kSdfChunks, 4)
+// Alpha-tested triangles (docs/technique.md, "Draw classes"): their materials, texture
+// coordinates and base-colour textures, for the alpha at each triangle's centroid.
+ANTUMBRA_BINDING(kSdfMaterials, 5)
+ANTUMBRA_BINDING(kSdfAttributes, 6)
+ANTUMBRA_BINDING(kSdfSrgbTextures, 7)
+ANTUMBRA_BINDING(kSdfSampler, 8)
 
 ANTUMBRA_PUSH_CONSTANTS(SceneSdfPush) {
   vec4 field_origin;  // minimum corner, the largest voxel side

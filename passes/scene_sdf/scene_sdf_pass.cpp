@@ -10,6 +10,7 @@
 #include "antumbra/scene/scene.hpp"
 #include "common/frame_resources.hpp"
 #include "common/ports.hpp"
+#include "shared/material_textures.h"
 
 namespace antumbra::passes {
 namespace {
@@ -81,7 +82,12 @@ void SceneSdfPass::prepare(fgvk::PrepareContext& context) {
       .storage_buffer(shared::kSdfIndices, kCompute)
       .storage_image(shared::kSdfVolume, kCompute)
       .storage_buffer(shared::kSdfInfoBuffer, kCompute)
-      .storage_buffer(shared::kSdfChunks, kCompute);
+      .storage_buffer(shared::kSdfChunks, kCompute)
+      .storage_buffer(shared::kSdfMaterials, kCompute)
+      .storage_buffer(shared::kSdfAttributes, kCompute)
+      .add(shared::kSdfSrgbTextures, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, kCompute,
+           shared::kTextureBuckets)
+      .sampler(shared::kSdfSampler, kCompute);
   chunks_ = build_compute_pipeline(context, chunks, bindings, sizeof(SceneSdfPush));
   bake_ = build_compute_pipeline(context, bake, bindings, sizeof(SceneSdfPush));
   baked_into_ = VK_NULL_HANDLE;  // new pipeline (a reload): bake again
@@ -126,7 +132,11 @@ void SceneSdfPass::execute(fgvk::ExecuteContext& context) {
       .storage_buffer(shared::kSdfIndices, geometry ? frame.indices : info)
       .storage_image(shared::kSdfVolume, volume.array_view, volume.layout)
       .storage_buffer(shared::kSdfInfoBuffer, info)
-      .storage_buffer(shared::kSdfChunks, chunk_bounds_.handle());
+      .storage_buffer(shared::kSdfChunks, chunk_bounds_.handle())
+      .storage_buffer(shared::kSdfMaterials, geometry ? frame.materials : info)
+      .storage_buffer(shared::kSdfAttributes, geometry ? frame.vertex_attributes : info)
+      .sampled_images(shared::kSdfSrgbTextures, frame.srgb_textures)
+      .sampler(shared::kSdfSampler, frame.texture_sampler);
   for (const ComputePipeline* step : {&chunks_, &bake_}) {
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, step->pipeline);
     descriptors.push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, step->layout);

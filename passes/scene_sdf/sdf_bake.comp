@@ -12,12 +12,22 @@
 // winding does not matter). Where several triangles are equally near (an edge or a
 // corner) the one the voxel faces most squarely decides: at a convex box edge both
 // faces agree on outside, and the face-on one is right at concave ones.
+//
+// Draw classes (docs/technique.md, "Draw classes"): a distance field holds no holes finer
+// than its voxels and no direction, so an alpha-tested triangle is kept or dropped whole,
+// by its alpha at its centroid (base level: no footprint to filter over), and one-sided
+// triangles are kept as two-sided ones.
 
 #include "scene_sdf_interface.h"
 #include "../interface/shared/sdf_info.h"
+#define MATERIAL_SRGB_TEXTURES kSdfSrgbTextures
+#define MATERIAL_SAMPLER kSdfSampler
+#include "../common/material_textures.glsl"
 
 layout(set = 0, binding = kSdfVertices, std430) readonly buffer Vertices { float vertex_data[]; };
 layout(set = 0, binding = kSdfIndices, std430) readonly buffer Indices { uint index_data[]; };
+layout(set = 0, binding = kSdfMaterials, std430) readonly buffer Materials { GpuMaterial materials[]; };
+layout(set = 0, binding = kSdfAttributes, std430) readonly buffer Attributes { GpuVertexAttributes attributes[]; };
 #define CHUNK 64
 #if SDF_CHUNKS
 layout(set = 0, binding = kSdfChunks, std430) writeonly buffer Chunks { vec4 chunk_bounds[]; };
@@ -79,6 +89,11 @@ void load_chunk(uint first, uint triangles, vec3 brick_lo, vec3 brick_hi, float 
   vec3 n = cross(b - a, c - a);
   float area = length(n);
   if (!(area > 1e-12)) return;  // degenerate: no face, no sign
+  GpuMaterial m = materials[floatBitsToUint(vertex_data[ia * 7u + 6u])];
+  if ((m.more.y & ANTUMBRA_MATERIAL_ALPHA_TESTED) != 0u) {
+    vec4 uv = (attributes[ia].uv + attributes[ib].uv + attributes[ic].uv) / 3.0;
+    if (material_cut(m, uv, vec4(0.0), vec4(0.0))) return;  // cut away at its centroid
+  }
   n /= area;
   if (dot(n, vertex_normal(ia) + vertex_normal(ib) + vertex_normal(ic)) < 0.0) n = -n;
   vec3 gap = max(max(min(min(a, b), c) - brick_hi, brick_lo - max(max(a, b), c)), vec3(0.0));

@@ -28,7 +28,8 @@ constexpr int kCells = 4;
 const glm::vec3 kLight{-6.0f, 4.0f, 0.0f};
 constexpr float kQuadHeight = 1.0f;
 
-enum class Caster { none, checker, one_sided_up, one_sided_down, two_sided_down };
+// faded: alphaMode MASK with a base-colour factor alpha of 0.25, cut away everywhere.
+enum class Caster { none, checker, one_sided_up, one_sided_down, two_sided_down, faded };
 
 // Writes the quad's glTF into `dir` and returns the scene's JSON.
 std::string scene_text(const std::filesystem::path& dir, Caster caster, float light_size) {
@@ -46,6 +47,12 @@ std::string scene_text(const std::filesystem::path& dir, Caster caster, float li
     doc["textures"] = nlohmann::json::array({{{"source", 0}, {"sampler", 0}}});
     doc["samplers"] = nlohmann::json::array({{{"magFilter", 9728}}});
     doc["images"] = nlohmann::json::array({{{"uri", "checker.png"}}});
+  } else if (caster == Caster::faded) {
+    doc["materials"] = nlohmann::json::array(
+        {{{"name", "faded"},
+          {"alphaMode", "MASK"},
+          {"doubleSided", true},
+          {"pbrMetallicRoughness", {{"baseColorFactor", {1.0, 1.0, 1.0, 0.25}}}}}});
   } else {
     doc["materials"] = nlohmann::json::array(
         {{{"name", "card"}, {"doubleSided", caster == Caster::two_sided_down}}});
@@ -91,17 +98,21 @@ class AlphaMaskTest : public RenderTest {
     std::filesystem::create_directories(dir);
     // "reference": the shadow-reference graph, a few samples of the small light (it is
     // nearly a point, so they agree); else the atlas graph with that rasteriser.
-    // "wedges": the penumbra-wedges graph (its hardware atlas, peeling and wedges).
+    // "wedges": the penumbra-wedges graph (its hardware atlas, peeling and wedges);
+    // "sdf": the scene-sdf graph.
     const bool reference = rasterizer == "reference";
     const bool wedges = rasterizer == "wedges";
-    fg::GraphDesc graph = load_graph_file(
-        source_dir() / "data" / "graphs" /
-        (reference ? "reference.json" : (wedges ? "penumbra-wedges.json" : "hard.json")));
+    const bool sdf = rasterizer == "sdf";
+    const char* file = reference ? "reference.json"
+                       : wedges  ? "penumbra-wedges.json"
+                       : sdf     ? "sdf.json"
+                                 : "hard.json";
+    fg::GraphDesc graph = load_graph_file(source_dir() / "data" / "graphs" / file);
     for (auto& r : graph.resources) {
       if (r.name == "atlas") r.size = fg::SizeSpec{false, 1.0, 1.0, 512, 512};
     }
     for (auto& p : graph.passes) {
-      if (p.type == "point-shadow-atlas" && !wedges) p.params["rasterizer"] = rasterizer;
+      if (p.type == "point-shadow-atlas" && !wedges && !sdf) p.params["rasterizer"] = rasterizer;
       if (p.type == "shadow-reference") {
         p.params["samples"] = 16;
         p.params["faceSize"] = 512;
@@ -247,6 +258,30 @@ TEST_F(AlphaMaskTest, CheckerboardAlphaCastsACheckerboardShadowWedges) {
 
 TEST_F(AlphaMaskTest, OneSidedCastersCastOnlyFromTheirFrontWedges) {
   expect_one_sided("wedges");
+}
+
+// The SDF bake keeps or drops an alpha-tested triangle by its alpha at the centroid
+// (docs/technique.md, "Draw classes"): a quad cut away by its factor casts nothing, the
+// atlas agreeing. The checkerboard's two triangles both have their centroids (thirds of
+// the quad) in cut cells, so the field drops the whole quad, solid cells too (printed,
+// not asserted: an approximation by design).
+TEST_F(AlphaMaskTest, SdfDropsTrianglesCutAtTheirCentroid) {
+  const auto lit = render(Caster::none, "sdf");
+  const auto faded = render(Caster::faded, "sdf");
+  const auto checker = render(Caster::checker, "sdf");
+  const auto atlas_lit = render(Caster::none, "hardware");
+  const auto atlas_faded = render(Caster::faded, "hardware");
+  ASSERT_TRUE(lit && faded && checker && atlas_lit && atlas_faded);
+  const float seen = visibility(*faded, *lit, 0.5f, 0.5f, false);
+  const float atlas = visibility(*atlas_faded, *atlas_lit, 0.5f, 0.5f, false);
+  std::printf("[ sdf ] faded quad: visibility %.3f under it (atlas %.3f)\n", seen, atlas);
+  EXPECT_GT(seen, 0.9f);
+  EXPECT_GT(atlas, 0.9f);
+  // A cut cell, then a solid one.
+  for (const glm::vec2 uv : {glm::vec2(0.375f, 0.125f), glm::vec2(0.125f, 0.125f)}) {
+    std::printf("[ sdf ] checker cell at (%.3f, %.3f): visibility %.3f\n", uv.x, uv.y,
+                visibility(*checker, *lit, uv.x, uv.y, false));
+  }
 }
 
 TEST_F(AlphaMaskTest, NonCastingBordersGrowNoWedges) {
