@@ -27,12 +27,16 @@ constexpr VkExtent2D kView{320, 180};
 constexpr int kCells = 4;
 const glm::vec3 kLight{-6.0f, 4.0f, 0.0f};
 constexpr float kQuadHeight = 1.0f;
+// The sun variant: travelling from the lamp's place towards the origin (orthographic maps,
+// whose projection does not mirror, unlike the cube faces).
+const glm::vec3 kSun = glm::normalize(-kLight);
 
 // faded: alphaMode MASK with a base-colour factor alpha of 0.25, cut away everywhere.
 enum class Caster { none, checker, one_sided_up, one_sided_down, two_sided_down, faded };
 
 // Writes the quad's glTF into `dir` and returns the scene's JSON.
-std::string scene_text(const std::filesystem::path& dir, Caster caster, float light_size) {
+std::string scene_text(const std::filesystem::path& dir, Caster caster, float light_size,
+                       bool sun) {
   nlohmann::json doc = antumbra::testing::quad_gltf(2.0f, 0.0f);
   if (caster == Caster::checker) {
     antumbra::testing::write_file(
@@ -72,6 +76,13 @@ std::string scene_text(const std::filesystem::path& dir, Caster caster, float li
                                          {"intensity", 60},
                                          {"range", 30},
                                          {"size", light_size}}})}};
+  if (sun) {
+    scene["lights"] = nlohmann::json::array({{{"name", "sun"},
+                                              {"type", "directional"},
+                                              {"direction", {kSun.x, kSun.y, kSun.z}},
+                                              {"intensity", 3},
+                                              {"size", 0.05}}});
+  }
   if (caster != Caster::none) {
     // Rotated half a turn about x, the quad faces down (its uv mirrored in z).
     scene["objects"].push_back({{"gltf", (dir / "quad.gltf").string()},
@@ -89,11 +100,11 @@ class AlphaMaskTest : public RenderTest {
   };
 
   std::optional<Frame> render(Caster caster, const std::string& rasterizer,
-                              float light_size = 0.01f) {
+                              float light_size = 0.01f, bool sun = false) {
     const std::filesystem::path dir =
         std::filesystem::temp_directory_path() /
         ("antumbra_alpha_mask_" + rasterizer + std::to_string(static_cast<int>(caster)) + "_" +
-         std::to_string(static_cast<int>(light_size * 100.0f)));
+         std::to_string(static_cast<int>(light_size * 100.0f)) + (sun ? "_sun" : ""));
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
     // "reference": the shadow-reference graph, a few samples of the small light (it is
@@ -122,8 +133,8 @@ class AlphaMaskTest : public RenderTest {
     EXPECT_NE(session, nullptr) << skip_reason_;
     if (session == nullptr) return std::nullopt;
     load_graph_ok(*session, graph);
-    auto scene =
-        scene::parse_scene_text(scene_text(dir, caster, light_size), (dir / "scene.json").string());
+    auto scene = scene::parse_scene_text(scene_text(dir, caster, light_size, sun),
+                                         (dir / "scene.json").string());
     EXPECT_TRUE(scene.ok()) << describe(scene.diagnostics());
     if (!scene.ok()) return std::nullopt;
     Frame frame{{}, scene.value()};
@@ -135,9 +146,11 @@ class AlphaMaskTest : public RenderTest {
   }
 
   // Visibility at the shadow of quad point (u, v) (quad uv, before any rotation).
-  static float visibility(const Frame& shadowed, const Frame& lit, float u, float v, bool down) {
+  static float visibility(const Frame& shadowed, const Frame& lit, float u, float v, bool down,
+                          bool sun = false) {
     const glm::vec3 quad{-1.0f + 2.0f * u, kQuadHeight, (-1.0f + 2.0f * v) * (down ? -1.0f : 1.0f)};
-    const glm::vec3 floor = kLight + (quad - kLight) * (kLight.y / (kLight.y - kQuadHeight));
+    const glm::vec3 floor = sun ? quad + kSun * (kQuadHeight / -kSun.y)
+                                : kLight + (quad - kLight) * (kLight.y / (kLight.y - kQuadHeight));
     const float aspect = static_cast<float>(kView.width) / static_cast<float>(kView.height);
     const glm::vec4 clip = shadowed.scene.camera.view_projection(aspect) * glm::vec4(floor, 1.0f);
     const float px = (clip.x / clip.w * 0.5f + 0.5f) * static_cast<float>(kView.width);
@@ -178,17 +191,17 @@ class AlphaMaskTest : public RenderTest {
     EXPECT_EQ(right, kCells * kCells);
   }
 
-  void expect_one_sided(const std::string& rasterizer) {
-    const auto lit = render(Caster::none, rasterizer);
+  void expect_one_sided(const std::string& rasterizer, bool sun = false) {
+    const auto lit = render(Caster::none, rasterizer, 0.01f, sun);
     ASSERT_TRUE(lit);
     const float centre = 0.5f;
     for (const Caster c : {Caster::one_sided_up, Caster::one_sided_down, Caster::two_sided_down}) {
-      const auto frame = render(c, rasterizer);
+      const auto frame = render(c, rasterizer, 0.01f, sun);
       ASSERT_TRUE(frame);
       const bool down = c != Caster::one_sided_up;
-      const float seen = visibility(*frame, *lit, centre, centre, down);
-      std::printf("[ %s ] caster %d: visibility %.3f under the quad\n", rasterizer.c_str(),
-                  static_cast<int>(c), seen);
+      const float seen = visibility(*frame, *lit, centre, centre, down, sun);
+      std::printf("[ %s%s ] caster %d: visibility %.3f under the quad\n", rasterizer.c_str(),
+                  sun ? " sun" : "", static_cast<int>(c), seen);
       // Only the one-sided quad facing away from the light lets it through.
       if (c == Caster::one_sided_down) {
         EXPECT_GT(seen, 0.9f) << rasterizer;
@@ -250,6 +263,15 @@ TEST_F(AlphaMaskTest, CheckerboardAlphaCastsACheckerboardShadowReference) {
 
 TEST_F(AlphaMaskTest, OneSidedCastersCastOnlyFromTheirFrontReference) {
   expect_one_sided("reference");
+}
+
+// The sun's orthographic maps do not mirror: gl_FrontFacing needs no flip there.
+TEST_F(AlphaMaskTest, OneSidedCastersCastOnlyFromTheirFrontUnderTheSunReference) {
+  expect_one_sided("reference", true);
+}
+
+TEST_F(AlphaMaskTest, OneSidedCastersCastOnlyFromTheirFrontUnderTheSunHardware) {
+  expect_one_sided("hardware", true);
 }
 
 TEST_F(AlphaMaskTest, CheckerboardAlphaCastsACheckerboardShadowWedges) {
