@@ -2,6 +2,8 @@
 
 #include <unistd.h>
 
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <atomic>
 #include <fstream>
@@ -9,6 +11,25 @@
 #include <stdexcept>
 
 namespace antumbra::editor::testing {
+
+void expect_same_lights(const std::vector<scene::PointLight>& expected,
+                        const std::vector<scene::PointLight>& actual) {
+  ASSERT_EQ(expected.size(), actual.size());
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    SCOPED_TRACE(expected[i].name);
+    EXPECT_EQ(expected[i].name, actual[i].name);
+    EXPECT_EQ(expected[i].type, actual[i].type);
+    EXPECT_EQ(expected[i].position, actual[i].position);
+    EXPECT_EQ(expected[i].color, actual[i].color);
+    EXPECT_EQ(expected[i].intensity, actual[i].intensity);
+    EXPECT_EQ(expected[i].range, actual[i].range);
+    EXPECT_EQ(expected[i].size, actual[i].size);
+    EXPECT_EQ(expected[i].casts_shadows, actual[i].casts_shadows);
+    EXPECT_EQ(expected[i].direction, actual[i].direction);
+    EXPECT_EQ(expected[i].spot_outer, actual[i].spot_outer);
+    EXPECT_EQ(expected[i].spot_inner, actual[i].spot_inner);
+  }
+}
 
 std::filesystem::path fixture(const std::string& name) {
   return std::filesystem::path(ANTUMBRA_EDITOR_TEST_DATA) / name;

@@ -10,6 +10,7 @@
 
 #include "antumbra/base/diagnostics.hpp"
 #include "antumbra/fg/registry.hpp"
+#include "antumbra/scene/scene.hpp"
 
 namespace antumbra::editor::testing {
 
@@ -26,6 +27,9 @@ T take(base::Result<T> result) {
   return std::move(result.value());
 }
 void write(const std::filesystem::path& file, const std::string& text);
+// Every field of every light equal, in order (gtest failures name the light).
+void expect_same_lights(const std::vector<scene::PointLight>& expected,
+                        const std::vector<scene::PointLight>& actual);
 
 // A fresh directory under the system temp directory, removed with everything in it.
 class ScratchDir {

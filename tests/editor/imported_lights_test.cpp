@@ -21,23 +21,7 @@ using testing::take;
 void expect_engine_agrees(const SceneDocument& doc) {
   const auto parsed = scene::parse_scene_text(doc.to_text(), doc.file().string());
   ASSERT_TRUE(parsed.ok()) << parsed.diagnostics().to_text() << "\n" << doc.to_text();
-  ASSERT_EQ(parsed->lights.size(), doc.lights().size()) << doc.to_text();
-  for (std::size_t i = 0; i < doc.lights().size(); ++i) {
-    const scene::PointLight& a = parsed->lights[i];
-    const scene::PointLight& b = doc.lights()[i];
-    SCOPED_TRACE(a.name);
-    EXPECT_EQ(a.name, b.name);
-    EXPECT_EQ(a.type, b.type);
-    EXPECT_EQ(a.position, b.position);
-    EXPECT_EQ(a.direction, b.direction);
-    EXPECT_EQ(a.color, b.color);
-    EXPECT_EQ(a.intensity, b.intensity);
-    EXPECT_EQ(a.range, b.range);
-    EXPECT_EQ(a.size, b.size);
-    EXPECT_EQ(a.spot_inner, b.spot_inner);
-    EXPECT_EQ(a.spot_outer, b.spot_outer);
-    EXPECT_EQ(a.casts_shadows, b.casts_shadows);
-  }
+  testing::expect_same_lights(parsed->lights, doc.lights());
 }
 
 // A scene with one light of its own and the lit quad as object "lamp".

@@ -12,6 +12,7 @@
 namespace antumbra::editor {
 namespace {
 
+using testing::expect_same_lights;
 using testing::fixture;
 using testing::read;
 using testing::source_file;
@@ -37,25 +38,6 @@ std::vector<std::string> changed_lines(const std::string& a, const std::string& 
     if (la[i] != lb[i]) out.push_back(lb[i]);
   }
   return out;
-}
-
-void expect_same_lights(const std::vector<scene::PointLight>& expected,
-                        const std::vector<scene::PointLight>& actual) {
-  ASSERT_EQ(expected.size(), actual.size());
-  for (std::size_t i = 0; i < expected.size(); ++i) {
-    SCOPED_TRACE(expected[i].name);
-    EXPECT_EQ(expected[i].name, actual[i].name);
-    EXPECT_EQ(expected[i].type, actual[i].type);
-    EXPECT_EQ(expected[i].position, actual[i].position);
-    EXPECT_EQ(expected[i].color, actual[i].color);
-    EXPECT_EQ(expected[i].intensity, actual[i].intensity);
-    EXPECT_EQ(expected[i].range, actual[i].range);
-    EXPECT_EQ(expected[i].size, actual[i].size);
-    EXPECT_EQ(expected[i].casts_shadows, actual[i].casts_shadows);
-    EXPECT_EQ(expected[i].direction, actual[i].direction);
-    EXPECT_EQ(expected[i].spot_outer, actual[i].spot_outer);
-    EXPECT_EQ(expected[i].spot_inner, actual[i].spot_inner);
-  }
 }
 
 // The engine's parser reads the document's text to the same lights the editor shows.
