@@ -12,11 +12,13 @@
 #include <nlohmann/json.hpp>
 
 #include "antumbra/base/json_document.hpp"
+#include "antumbra/gpu/context.hpp"
 #include "antumbra/gpu/timing.hpp"
 #include "antumbra/runtime/render_session.hpp"
 #include "antumbra/scene/scene_file.hpp"
 #include "bench_report.hpp"
 #include "bench_scenarios.hpp"
+#include "build_commit.hpp"
 #include "commands.hpp"
 #include "plot.hpp"
 
@@ -51,13 +53,28 @@ StackedChart chart_of(const std::string& device, const std::vector<BenchResult>&
   return chart;
 }
 
-void write_reports(const std::filesystem::path& dir, const std::string& device,
+// "NVIDIA 560.35.03" or "llvmpipe: Mesa 22.3.6 (LLVM 15.0.6)": the driver's own name and
+// version text, so that a results file says what measured it beside the device's name.
+std::string driver_summary(const gpu::Context& gpu) {
+  VkPhysicalDeviceDriverProperties driver{};
+  driver.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES;
+  VkPhysicalDeviceProperties2 properties{};
+  properties.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2;
+  properties.pNext = &driver;
+  vkGetPhysicalDeviceProperties2(gpu.physical_device(), &properties);
+  return std::string(driver.driverName) + " " + driver.driverInfo;
+}
+
+void write_reports(const std::filesystem::path& dir, const gpu::Context& gpu,
                    const BenchOptions& options, const std::vector<BenchResult>& results) {
+  const std::string& device = gpu.device_name();
   std::filesystem::create_directories(dir);
   std::ofstream csv(dir / "bench.csv");
   write_long_csv(csv, results);
   std::ofstream json(dir / "bench.json");
-  json << nlohmann::json{{"device", device},
+  json << nlohmann::json{{"commit", build_commit()},
+                         {"device", device},
+                         {"driver", driver_summary(gpu)},
                          {"frames", options.frames},
                          {"warmup", options.warmup},
                          {"scale", options.scale},
@@ -205,7 +222,7 @@ int run_bench(const BenchOptions& options) {
     results.push_back(std::move(r));
   }
   try {
-    write_reports(options.out, session.gpu().device_name(), options, results);
+    write_reports(options.out, session.gpu(), options, results);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "antumbra bench: %s\n", e.what());
     return runtime::kExitRuntime;
