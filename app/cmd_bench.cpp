@@ -72,12 +72,9 @@ void write_reports(const std::filesystem::path& dir, const gpu::Context& gpu,
   std::ofstream csv(dir / "bench.csv");
   write_long_csv(csv, results);
   std::ofstream json(dir / "bench.json");
-  json << nlohmann::json{{"commit", build_commit()},
-                         {"device", device},
-                         {"driver", driver_summary(gpu)},
-                         {"frames", options.frames},
-                         {"warmup", options.warmup},
-                         {"scale", options.scale},
+  json << nlohmann::json{{"commit", build_commit()},          {"device", device},
+                         {"driver", driver_summary(gpu)},     {"frames", options.frames},
+                         {"warmup", options.warmup},          {"scale", options.scale},
                          {"scenarios", results_json(results)}}
               .dump(2)
        << '\n';
