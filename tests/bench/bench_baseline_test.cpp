@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -132,7 +133,8 @@ TEST(BenchBaseline, PassesOfOneNameMatchInOrder) {
 TEST(BenchBaseline, FailedScenariosAreNeverRatios) {
   using test::scenario;
   const auto file = [](const char* name, std::vector<nlohmann::json> scenarios) {
-    return load_bench_file(write_file(name, test::bench_json("G", scenarios).dump()).string());
+    return load_bench_file(
+        write_file(name, test::bench_json("G", std::move(scenarios)).dump()).string());
   };
   const auto baseline = file("B.json", {scenario("s1", 1.0, {{"p", 1.0}}, "error"),
                                         scenario("s2", 1.0, {{"p", 1.0}}, "invalid")});
