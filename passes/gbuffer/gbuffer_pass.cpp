@@ -33,6 +33,37 @@ std::vector<gpu::ShaderDefine> fragment_defines(bool textured, bool emits, bool 
   return defines;
 }
 
+// What every G-buffer pipeline shares.
+struct PipelineShape {
+  gpu::Context* gpu = nullptr;
+  VkPipelineCache cache = VK_NULL_HANDLE;
+  VkPipelineLayout layout = VK_NULL_HANDLE;
+  std::string name;
+  std::vector<VkFormat> two;    // normal, albedo
+  std::vector<VkFormat> three;  // and emissive
+  VkFormat depth = VK_FORMAT_UNDEFINED;
+};
+
+// A pipeline built on first use (lazy_pipeline.hpp); the builder keeps the shaders.
+LazyPipeline lazy_pipeline(const PipelineShape& shape, const std::shared_ptr<Shader>& vert,
+                           const std::shared_ptr<Shader>& fragment, bool textured,
+                           bool write_emissive, VkCullModeFlags cull, const std::string& suffix) {
+  return LazyPipeline([=]() {
+    // The untextured vertex shader reads the first stream only.
+    gpu::GraphicsPipelineBuilder builder = scene_vertex_attributes(
+        textured ? std::vector<std::uint32_t>{} : std::vector<std::uint32_t>{0, 1, 2});
+    builder.shader(VK_SHADER_STAGE_VERTEX_BIT, *vert)
+        .shader(VK_SHADER_STAGE_FRAGMENT_BIT, *fragment)
+        .cull(cull)
+        .depth(true, true, VK_COMPARE_OP_LESS)
+        .color_formats(write_emissive ? shape.three : shape.two)
+        .depth_format(shape.depth)
+        .layout(shape.layout)
+        .cache(shape.cache);
+    return builder.build(*shape.gpu, shape.name + suffix);
+  });
+}
+
 }  // namespace
 
 void GBufferPass::prepare(fgvk::PrepareContext& context) {
@@ -48,9 +79,11 @@ void GBufferPass::prepare(fgvk::PrepareContext& context) {
   // The pipelines of scenes that do not emit (and of graphs without the optional target)
   // draw into the two targets only.
   has_emissive_ = emissive != nullptr;
-  const std::vector<VkFormat> two{normal.format, albedo.format};
-  std::vector<VkFormat> three = two;
-  if (has_emissive_) three.push_back(emissive->format);
+  PipelineShape shape{&context.gpu,      context.pipeline_cache,         VK_NULL_HANDLE,
+                      context.pass.name, {normal.format, albedo.format}, {},
+                      depth.format};
+  shape.three = shape.two;
+  if (has_emissive_) shape.three.push_back(emissive->format);
 
   gpu::DescriptorSetLayoutBuilder bindings;
   bindings.uniform_buffer(shared::kGbufferFrame, VK_SHADER_STAGE_VERTEX_BIT)
@@ -63,6 +96,7 @@ void GBufferPass::prepare(fgvk::PrepareContext& context) {
   set_layout_ = bindings.build(context.gpu, context.pass.name + ".set");
   const std::array<VkDescriptorSetLayout, 1> sets{set_layout_};
   layout_ = gpu::create_pipeline_layout(context.gpu, sets, {}, context.pass.name + ".layout");
+  shape.layout = layout_;
 
   const auto load = [&](const char* file, const std::vector<gpu::ShaderDefine>& defines) {
     auto shader = std::make_shared<Shader>(load_shader(context, file, shader_files_, defines));
@@ -73,28 +107,6 @@ void GBufferPass::prepare(fgvk::PrepareContext& context) {
       load("gbuffer/gbuffer.vert", {}), load("gbuffer/gbuffer.vert", {{"TEXTURED", ""}})};
   check_vertex_inputs(context.pass.name, *vertex[1],
                       scene_vertex_attributes({}).vertex_attributes());
-  // Built on first use (lazy_pipeline.hpp); the shaders are shared by the builders, which
-  // outlive prepare().
-  const auto build = [gpu = &context.gpu, cache = context.pipeline_cache, layout = layout_.get(),
-                      name = context.pass.name, two, three, depth_format = depth.format](
-                         const std::shared_ptr<Shader>& vert,
-                         const std::shared_ptr<Shader>& fragment, bool textured,
-                         bool write_emissive, VkCullModeFlags cull, const std::string& suffix) {
-    return LazyPipeline([=]() {
-      // The untextured vertex shader reads the first stream only.
-      gpu::GraphicsPipelineBuilder builder = scene_vertex_attributes(
-          textured ? std::vector<std::uint32_t>{} : std::vector<std::uint32_t>{0, 1, 2});
-      builder.shader(VK_SHADER_STAGE_VERTEX_BIT, *vert)
-          .shader(VK_SHADER_STAGE_FRAGMENT_BIT, *fragment)
-          .cull(cull)
-          .depth(true, true, VK_COMPARE_OP_LESS)
-          .color_formats(write_emissive ? three : two)
-          .depth_format(depth_format)
-          .layout(layout)
-          .cache(cache);
-      return builder.build(*gpu, name + suffix);
-    });
-  };
   const VkCullModeFlags cull = params_.cull_back_faces ? VK_CULL_MODE_BACK_BIT : VK_CULL_MODE_NONE;
   std::array<std::shared_ptr<Shader>, 2> cut;  // by emits
   for (std::uint32_t v = 0; v < kVariants; ++v) {
@@ -111,10 +123,11 @@ void GBufferPass::prepare(fgvk::PrepareContext& context) {
       cut[emits ? 1 : 0] = load("gbuffer/gbuffer.frag", fragment_defines(true, emits, true));
     }
     const auto& vert = vertex[textured ? 1 : 0];
-    pipelines_[v][0] = build(vert, frag, textured, emits, cull, suffix);
-    pipelines_[v][1] =
-        build(vert, frag, textured, emits, VK_CULL_MODE_BACK_BIT, suffix + ".oneSided");
-    pipelines_[v][2] = build(vertex[1], cut[emits ? 1 : 0], true, emits, cull, suffix + ".cut");
+    pipelines_[v][0] = lazy_pipeline(shape, vert, frag, textured, emits, cull, suffix);
+    pipelines_[v][1] = lazy_pipeline(shape, vert, frag, textured, emits, VK_CULL_MODE_BACK_BIT,
+                                     suffix + ".oneSided");
+    pipelines_[v][2] =
+        lazy_pipeline(shape, vertex[1], cut[emits ? 1 : 0], true, emits, cull, suffix + ".cut");
   }
   pipelines_[0][0].get();  // the common case, built now: errors show at load
 }
