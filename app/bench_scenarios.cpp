@@ -108,8 +108,10 @@ struct Raster {
   const char* resolution;
   bool visibility = false;
 };
-constexpr Raster kRasters[] = {
-    {"hardware", "fixed"}, {"compute", "fixed"}, {"compute", "screen"}, {"compute", "screen", true}};
+constexpr Raster kRasters[] = {{"hardware", "fixed"},
+                               {"compute", "fixed"},
+                               {"compute", "screen"},
+                               {"compute", "screen", true}};
 
 void apply_raster(Scenario& s, const Raster& raster) {
   s.rasterizer = raster.rasterizer;

@@ -69,8 +69,8 @@ ANTUMBRA_PUSH_CONSTANTS(RasterPush) {
   uint list;            // shadow_raster.comp: which list this dispatch works through
   uint capacity_depth;  // items each list holds (the tint list starts after the depth list)
   uint capacity_tint;
-  float depth_bias;  // constant factor, in units of the float depth's resolution
-  float slope_bias;  // factor of the depth slope per texel
+  float depth_bias;   // constant factor, in units of the float depth's resolution
+  float slope_bias;   // factor of the depth slope per texel
   uint capacity_cut;  // the cut list starts after the tint list
 };
 // shadow_raster_resolve.comp reads its records from kRasterResolveList at face_first

@@ -144,7 +144,8 @@ class AlphaMaskTest : public RenderTest {
     expect_no_validation_errors(*session);
     frame.hdr = read_resource(*session, "hdr");
     for (const auto& m : session->last_report().messages()) {
-      if (m.code == "SHD010" && m.details.contains("clusters")) frame.clusters = m.details["clusters"];
+      if (m.code == "SHD010" && m.details.contains("clusters"))
+        frame.clusters = m.details["clusters"];
     }
     return frame;
   }
