@@ -1,6 +1,6 @@
 // antumbra docs-tables --check and its diagnostics: an edited number fails with the file
 // and line; bad inputs (malformed or missing results, a missing scenario, an unknown
-// kind, unclosed markers) are located.
+// kind, unclosed markers) are located. And the check over the repository itself.
 #include <gtest/gtest.h>
 
 #include <unistd.h>
@@ -187,6 +187,16 @@ TEST_F(DocsTablesScratch, TreeRewritesTheRegionsThenChecks) {
   const auto checked = process_tree(root_, true);
   EXPECT_TRUE(checked.diagnostics.empty()) << diagnostics_text(checked.diagnostics);
   EXPECT_EQ(checked.regions, 1u);
+}
+
+// THE check: every generated table of README.md and docs/*.md is what the committed
+// results under docs/results/ generate. A number typed over fails here with its file and
+// line; `make docs-tables` regenerates them.
+TEST(DocsTablesRepository, CommittedTablesAreWhatTheirResultsGenerate) {
+  const auto tree = process_tree(kSource, true);
+  EXPECT_FALSE(tree.diagnostics.has_errors()) << diagnostics_text(tree.diagnostics);
+  EXPECT_EQ(tree.differing, 0u);
+  EXPECT_GT(tree.regions, 0u) << "README.md and docs/*.md hold no generated table";
 }
 
 }  // namespace
