@@ -31,15 +31,14 @@ std::vector<double> frame_samples(const std::vector<std::vector<double>>& per_pa
   return sums;
 }
 
-namespace {
-
-// RFC 4180: a field with a comma, quote or line break is quoted, quotes doubled.
 std::string csv_field(const std::string& text) {
   if (text.find_first_of(",\"\n\r") == std::string::npos) return text;
   std::string quoted = "\"";
   for (const char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
   return quoted + "\"";
 }
+
+namespace {
 
 void write_row(std::ostream& out, const BenchResult& r, const std::string& pass,
                const std::string& type, const TimingStats* stats) {

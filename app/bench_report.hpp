@@ -46,6 +46,9 @@ struct BenchResult {
   TimingStats frame;  // per-frame sum of the passes
 };
 
+// RFC 4180: a field with a comma, quote or line break is quoted, quotes doubled.
+std::string csv_field(const std::string& text);
+
 // The long CSV: header, then per scenario one row per pass and one "frame" row (a
 // failed scenario: its "frame" row only, without numbers).
 void write_long_csv(std::ostream& out, const std::vector<BenchResult>& results);

@@ -58,8 +58,8 @@ Scenario make(const std::string& table, const Technique& t, int kernel, unsigned
   // measurements did; the many-light table measures the cached steady state. The moving
   // table caches too: what stands still stays cached, a moving light's faces change
   // their matrices and so redraw themselves.
-  s.shadow_cache =
-      table == "lights" || table == "moving" || table == "penumbra" || table == "dynamic";
+  s.shadow_cache = table == "lights" || table == "moving" || table == "materials" ||
+                   table == "penumbra" || table == "dynamic";
   // No shadow atlas to pin in the unshadowed and the distance-field graphs.
   if (std::string(t.graph) != "lighting.json" && std::string(t.graph) != "sdf.json") {
     s.overrides.push_back({"point-shadow-atlas", "cache", s.shadow_cache});
@@ -99,6 +99,38 @@ void add_dynamic_table(std::vector<Scenario>& out, double scale) {
   }
 }
 
+// The moving rows' rasteriser variants: both shadow rasterisers (the compute rows end in
+// "/compute"; they cull faces by receivers), the compute one again with per-light
+// resolution ("/compute/screen"), and that again with the compute G-buffer
+// ("/compute/screen/vis": no raster pass left).
+struct Raster {
+  const char* rasterizer;
+  const char* resolution;
+  bool visibility = false;
+};
+constexpr Raster kRasters[] = {
+    {"hardware", "fixed"}, {"compute", "fixed"}, {"compute", "screen"}, {"compute", "screen", true}};
+
+void apply_raster(Scenario& s, const Raster& raster) {
+  s.rasterizer = raster.rasterizer;
+  if (s.rasterizer != "hardware") {
+    s.name += "/" + s.rasterizer;
+    s.overrides.push_back({"point-shadow-atlas", "rasterizer", s.rasterizer});
+    // The rest of the frame off the raster units too: the compute tonemap.
+    s.overrides.push_back({"tonemap", "stage", "compute"});
+  }
+  if (std::string(raster.resolution) != "fixed") {
+    s.name += std::string("/") + raster.resolution;
+    s.overrides.push_back({"point-shadow-atlas", "resolution", raster.resolution});
+  }
+  if (raster.visibility) {
+    s.name += "/vis";
+    for (auto& o : s.overrides) {
+      if (o.pass_type == "gbuffer" && o.param == "rasterizer") o.value = "compute";
+    }
+  }
+}
+
 // Moving lights: every light moves in the atrium; 1024 lights are the district's, 64
 // of them moving.
 void add_moving_table(std::vector<Scenario>& out, double scale) {
@@ -107,18 +139,6 @@ void add_moving_table(std::vector<Scenario>& out, double scale) {
     int kernel;
   };
   constexpr Variant kMovingVariants[] = {{"hard", 0}, {"pcss", 11}, {"ssss", 11}};
-  // Each on both shadow rasterisers (the compute rows end in "/compute"; they cull faces
-  // by receivers), the compute one again with per-light resolution ("/compute/screen"),
-  // and that again with the compute G-buffer ("/compute/screen/vis": no raster pass left).
-  struct Raster {
-    const char* rasterizer;
-    const char* resolution;
-    bool visibility = false;
-  };
-  constexpr Raster kRasters[] = {{"hardware", "fixed"},
-                                 {"compute", "fixed"},
-                                 {"compute", "screen"},
-                                 {"compute", "screen", true}};
   for (const int lights : {16, 64, 256, kDistrictLights}) {
     for (const Variant& v : kMovingVariants) {
       for (const Raster& raster : kRasters) {
@@ -126,25 +146,26 @@ void add_moving_table(std::vector<Scenario>& out, double scale) {
         const bool district = lights == kDistrictLights;
         s.scene = district ? kDistrictScene : "atrium.json";
         s.moving = district ? kDistrictMovingLights : lights;
-        s.rasterizer = raster.rasterizer;
-        if (s.rasterizer != "hardware") {
-          s.name += "/" + s.rasterizer;
-          s.overrides.push_back({"point-shadow-atlas", "rasterizer", s.rasterizer});
-          // The rest of the frame off the raster units too: the compute tonemap.
-          s.overrides.push_back({"tonemap", "stage", "compute"});
-        }
-        if (std::string(raster.resolution) != "fixed") {
-          s.name += std::string("/") + raster.resolution;
-          s.overrides.push_back({"point-shadow-atlas", "resolution", raster.resolution});
-        }
-        if (raster.visibility) {
-          s.name += "/vis";
-          for (auto& o : s.overrides) {
-            if (o.pass_type == "gbuffer" && o.param == "rasterizer") o.value = "compute";
-          }
-        }
+        apply_raster(s, raster);
         out.push_back(std::move(s));
       }
+    }
+  }
+}
+
+// Materials: the atrium against the atrium with textured, alpha-tested screens
+// (kCutoutScene), layered SSSS 11 under 16 moving lights on every rasteriser variant, so
+// that what textures and cut-outs cost is measured beside a scene without them.
+void add_materials_table(std::vector<Scenario>& out, double scale) {
+  for (const char* scene : {"atrium.json", kCutoutScene}) {
+    for (const Raster& raster : kRasters) {
+      Scenario s = make("materials", technique("ssss"), 11, 1080, 16, scale);
+      s.scene = scene;
+      s.moving = 16;
+      const std::string file = scene;
+      s.name += "/" + file.substr(0, file.rfind('.'));
+      apply_raster(s, raster);
+      out.push_back(std::move(s));
     }
   }
 }
@@ -194,6 +215,7 @@ std::vector<Scenario> builtin_scenarios(double scale) {
     }
   }
   add_moving_table(out, scale);
+  add_materials_table(out, scale);
   add_dynamic_table(out, scale);
   add_sun_table(out, scale);
   // Penumbra size: PCSS and layered SSSS (blocker search, min filter) as the lights grow

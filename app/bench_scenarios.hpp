@@ -54,6 +54,8 @@ inline constexpr const char* kSunScene = "courtyard-sun.json";
 inline constexpr int kSunSceneLights = 5;
 // The "dynamic" table's scene: the atrium with moving carts and a ball.
 inline constexpr const char* kDynamicScene = "atrium-dynamic.json";
+// The "materials" table's textured scene: the atrium with alpha-tested lattice screens.
+inline constexpr const char* kCutoutScene = "atrium-cutouts.json";
 
 // Every built-in scenario, in a stable order, with screen and atlas faces scaled by
 // `scale` (names carry the scaled height, so two scales never share a name).

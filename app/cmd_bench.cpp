@@ -6,7 +6,9 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <map>
+#include <optional>
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
@@ -16,6 +18,7 @@
 #include "antumbra/gpu/timing.hpp"
 #include "antumbra/runtime/render_session.hpp"
 #include "antumbra/scene/scene_file.hpp"
+#include "bench_baseline.hpp"
 #include "bench_report.hpp"
 #include "bench_scenarios.hpp"
 #include "build_commit.hpp"
@@ -54,21 +57,60 @@ StackedChart chart_of(const std::string& device, const std::vector<BenchResult>&
   return chart;
 }
 
+// `--baseline`: the file, read before any GPU work, and this run's comparison with it.
+struct Baseline {
+  BenchFile file;
+  BaselineComparison comparison;  // filled after the run
+};
+
+// Nothing when the file is missing or not a bench.json (said on stderr: a usage error).
+std::optional<Baseline> read_baseline(const std::string& path) {
+  try {
+    return Baseline{load_bench_file(path), {}};
+  } catch (const BaselineError& e) {
+    std::fprintf(stderr, "antumbra bench: --baseline: %s\n", e.what());
+    return std::nullopt;
+  }
+}
+
+void warn_setup(const BenchFile& baseline, const std::string& device, const BenchOptions& options) {
+  for (const auto& line :
+       setup_mismatches(baseline, {device, options.frames, options.warmup, options.scale})) {
+    std::fprintf(stderr, "antumbra bench: warning: %s\n", line.c_str());
+  }
+}
+
+// --fail-slower PCT replaces the flag's 5 %.
+SlowerRule rule_of(const BenchOptions& options) {
+  return options.fail_slower >= 0.0 ? SlowerRule::from_percent(options.fail_slower) : SlowerRule{};
+}
+
+// The table on stdout, and the warnings again beside it (the run's log may be long).
+void print_comparison(const Baseline& baseline, const std::string& device,
+                      const BenchOptions& options) {
+  std::fflush(stdout);
+  write_comparison_text(std::cout, baseline.comparison);
+  std::cout.flush();
+  warn_setup(baseline.file, device, options);
+}
+
 void write_reports(const std::filesystem::path& dir, const gpu::Context& gpu,
-                   const BenchOptions& options, const std::vector<BenchResult>& results) {
+                   const BenchOptions& options, const std::vector<BenchResult>& results,
+                   const std::optional<Baseline>& baseline) {
   const std::string& device = gpu.device_name();
   std::filesystem::create_directories(dir);
   std::ofstream csv(dir / "bench.csv");
   write_long_csv(csv, results);
+  auto bench = nlohmann::json{{"commit", build_commit()},          {"device", device},
+                              {"driver", driver_summary(gpu)},     {"frames", options.frames},
+                              {"warmup", options.warmup},          {"scale", options.scale},
+                              {"scenarios", results_json(results)}};
+  auto chart = chart_of(device, results);
+  if (baseline) add_comparison_reports(dir, baseline->file, baseline->comparison, bench, chart);
   std::ofstream json(dir / "bench.json");
-  json << nlohmann::json{{"commit", build_commit()},          {"device", device},
-                         {"driver", driver_summary(gpu)},     {"frames", options.frames},
-                         {"warmup", options.warmup},          {"scale", options.scale},
-                         {"scenarios", results_json(results)}}
-              .dump(2)
-       << '\n';
+  json << bench.dump(2) << '\n';
   if (!csv || !json) throw std::runtime_error("cannot write the reports in " + dir.string());
-  write_stacked_chart((dir / "bench.png").string(), chart_of(device, results));
+  write_stacked_chart((dir / "bench.png").string(), chart);
 }
 
 // Moving lights are placed anew before every frame, warm-up included, from one frame count
@@ -168,6 +210,10 @@ int run_bench(const BenchOptions& options) {
     std::fprintf(stderr, "antumbra bench: no scenario matches; see `antumbra bench --list`\n");
     return runtime::kExitUsage;
   }
+  std::optional<Baseline> baseline;
+  if (!options.baseline.empty() && !(baseline = read_baseline(options.baseline))) {
+    return runtime::kExitUsage;
+  }
   const runtime::DataPaths paths = runtime::find_data_paths();
   SceneCache scenes(paths.scenes());
   if (const auto& atrium = scenes.get("atrium.json"); !atrium.ok()) {
@@ -182,6 +228,7 @@ int run_bench(const BenchOptions& options) {
                "bench on %s: %zu scenario(s), %d warm-up + %d timed frames each, scale %.2f\n",
                session.gpu().device_name().c_str(), chosen.size(), options.warmup, options.frames,
                options.scale);
+  if (baseline) warn_setup(baseline->file, session.gpu().device_name(), options);
   std::vector<BenchResult> results;
   int failures = 0;
   gpu::CpuTimer clock;
@@ -207,19 +254,28 @@ int run_bench(const BenchOptions& options) {
     }
     results.push_back(std::move(r));
   }
+  if (baseline) {
+    baseline->comparison = compare_with_baseline(baseline->file.results, results, rule_of(options));
+  }
   try {
-    write_reports(options.out, session.gpu(), options, results);
+    write_reports(options.out, session.gpu(), options, results, baseline);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "antumbra bench: %s\n", e.what());
     return runtime::kExitRuntime;
   }
-  std::printf("wrote %s/bench.csv, bench.json, bench.png\n", options.out.c_str());
+  std::printf("wrote %s/bench.csv, bench.json, bench.png%s\n", options.out.c_str(),
+              baseline ? ", bench_compare.csv" : "");
+  if (baseline) print_comparison(*baseline, session.gpu().device_name(), options);
   if (options.validation && session.gpu().validation_error_count() > 0) {
     std::fprintf(stderr, "antumbra bench: %zu validation error(s)\n",
                  session.gpu().validation_error_count());
     return runtime::kExitRuntime;
   }
-  return failures > 0 ? runtime::kExitRuntime : runtime::kExitOk;
+  if (failures > 0) return runtime::kExitRuntime;
+  // Flags alone never fail a run; --fail-slower makes them an exit 1 for scripts.
+  const bool fail =
+      baseline && options.fail_slower >= 0.0 && baseline->comparison.slower_count() > 0;
+  return fail ? runtime::kExitDiagnostics : runtime::kExitOk;
 }
 
 }  // namespace antumbra::app

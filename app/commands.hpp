@@ -55,6 +55,8 @@ struct BenchOptions {
   std::string device = "auto";
   bool validation = false;
   bool list = false;
+  std::string baseline;       // bench.json to compare with; empty: no comparison
+  double fail_slower = -1.0;  // with baseline: exit 1 when a row is this % slower; < 0: off
 };
 
 struct CompareOptions {

@@ -8,6 +8,7 @@
 #include <spdlog/spdlog.h>
 
 #include "antumbra/runtime/data_paths.hpp"
+#include "bench_baseline.hpp"
 #include "commands.hpp"
 #include "edit_script.hpp"
 
@@ -62,6 +63,20 @@ CLI::App* add_docs_tables_command(CLI::App& cli, antumbra::app::DocsTablesOption
   cmd->add_flag("--check", options.check, "Write nothing; exit 1 naming each table that differs");
   cmd->add_option("--root", options.root, "Repository root")->capture_default_str();
   return cmd;
+}
+
+// `bench --fail-slower PCT`: a finite percentage >= 0. CLI11's Range lets NaN through
+// (every comparison with NaN is false), and a NaN threshold would never fail anything.
+CLI::Validator slower_percent() {
+  return {
+      [](std::string& text) {
+        double value = 0.0;
+        if (CLI::detail::lexical_cast(text, value) && antumbra::app::valid_slower_percent(value)) {
+          return std::string();
+        }
+        return "expected a percentage >= 0, got " + text;
+      },
+      "PCT >= 0"};
 }
 
 // The CLI option table: one block of CLI11 declarations per subcommand, then the dispatch.
@@ -174,6 +189,15 @@ int dispatch(int argc, char** argv) {
       ->capture_default_str();
   bench_cmd->add_flag("--validation", bench.validation, "Khronos validation (slow)");
   bench_cmd->add_flag("--list", bench.list, "List the scenarios and exit");
+  auto* baseline_opt = bench_cmd->add_option(
+      "--baseline", bench.baseline,
+      "bench.json of an earlier run (re-run it now: times drift): medians, ratios, slower flags");
+  bench_cmd
+      ->add_option(
+          "--fail-slower", bench.fail_slower,
+          "With --baseline: flag at >= PCT % (not 5 %) and >= 0.02 ms slower; exit 1 on a flag")
+      ->check(slower_percent())
+      ->needs(baseline_opt);
 
   cli.add_subcommand("schema", "Print the JSON Schema of graph files");
 

@@ -19,6 +19,8 @@ using Rgb = std::array<std::uint8_t, 3>;
 constexpr Rgb kInk{20, 20, 20};
 constexpr Rgb kGrid{220, 220, 226};
 constexpr Rgb kStripe{244, 244, 248};
+// Not in the series palette, so a marker reads apart from every segment.
+constexpr Rgb kMarker{200, 0, 140};
 
 struct Canvas {
   int width;
@@ -94,7 +96,7 @@ std::string tick_label(double value) {
 constexpr int kRow = 14;
 constexpr int kLabel = 250;
 constexpr int kBar = 640;
-constexpr int kWidth = kLabel + kBar + 260;
+constexpr int kWidth = kLabel + kBar + 360;  // room for an annotation with a baseline's ratio
 
 // Wraps the legend over as many lines as it needs; returns the y below it.
 int draw_legend(Canvas* canvas, const std::vector<std::string>& series, int y) {
@@ -134,6 +136,11 @@ void draw_row(Canvas& canvas, const StackedRow& row, int y, double px_per_unit) 
     canvas.fill(hi - 1, y - 1, hi, y + kRow - 3, kInk);
     right = std::max(right, hi);
   }
+  if (row.marker > 0.0) {
+    const int x = kLabel + static_cast<int>(std::lround(row.marker * px_per_unit));
+    canvas.fill(x - 1, y - 2, x + 1, y + kRow - 2, kMarker);
+    right = std::max(right, x + 1);
+  }
   canvas.text(right + 6, y, row.annotation);
 }
 
@@ -171,8 +178,8 @@ double nice_tick_step(double max_value, int max_ticks) {
 void write_stacked_chart(const std::string& path, const StackedChart& chart) {
   double max_value = 0.0;
   for (const auto& r : chart.rows) {
-    max_value =
-        std::max({max_value, std::accumulate(r.segments.begin(), r.segments.end(), 0.0), r.high});
+    max_value = std::max(
+        {max_value, std::accumulate(r.segments.begin(), r.segments.end(), 0.0), r.high, r.marker});
   }
   if (!(max_value > 0.0)) max_value = 1.0;
   const double step = nice_tick_step(max_value, 8);

@@ -1,8 +1,9 @@
 #pragma once
 // A small PNG chart (no plotting library in Debian's C++ set), text drawn with
 // stb_easy_font: one horizontal bar per row, stacked from segments (a scenario's
-// per-pass medians) with a whisker for the spread (the frame's p10..p90), over a
-// labelled value axis and under a legend of the segment series.
+// per-pass medians) with a whisker for the spread (the frame's p10..p90) and an optional
+// marker (a baseline's median), over a labelled value axis and under a legend of the
+// segment series.
 
 #include <string>
 #include <vector>
@@ -15,6 +16,7 @@ struct StackedRow {
   double low = 0.0;              // whisker; drawn when high > low
   double high = 0.0;
   std::string annotation;  // printed after the bar, e.g. "12.3 ms"
+  double marker = 0.0;     // a thin vertical line across the bar (a baseline); drawn when > 0
 };
 
 struct StackedChart {

@@ -1,5 +1,6 @@
 #include "frame_data.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <initializer_list>
 
@@ -112,6 +113,19 @@ std::vector<GpuMaterial> build_materials(const scene::Scene& scene, const Textur
   return materials;
 }
 
+bool scene_textured(const scene::Scene& scene) {
+  return std::any_of(scene.materials.begin(), scene.materials.end(), [](const scene::Material& m) {
+    return m.base_color_texture.used() || m.metallic_roughness_texture.used() ||
+           m.normal_texture.used() || m.occlusion_texture.used() || m.emissive_texture.used();
+  });
+}
+
+bool scene_emits(const scene::Scene& scene) {
+  return std::any_of(scene.materials.begin(), scene.materials.end(), [](const scene::Material& m) {
+    return m.emissive != glm::vec3(0.0f) || m.emissive_texture.used() || m.occlusion_texture.used();
+  });
+}
+
 FrameUniforms build_frame_uniforms(const scene::Scene& scene, std::uint32_t width,
                                    std::uint32_t height, std::uint32_t frame_index) {
   FrameUniforms u;
@@ -123,7 +137,8 @@ FrameUniforms build_frame_uniforms(const scene::Scene& scene, std::uint32_t widt
   u.viewport = glm::vec4(static_cast<float>(width), static_cast<float>(height),
                          1.0f / static_cast<float>(width), 1.0f / static_cast<float>(height));
   u.ambient = glm::vec4(scene.ambient, 0.0f);
-  u.counts = glm::uvec4(static_cast<std::uint32_t>(scene.lights.size()), frame_index, 0u, 0u);
+  u.counts = glm::uvec4(static_cast<std::uint32_t>(scene.lights.size()), frame_index,
+                        scene_emits(scene) ? shared::kFrameSceneEmits : 0u, 0u);
   u.inv_view = glm::inverse(u.view);
   u.camera_world = glm::vec4(scene.camera.position, scene.camera.near);
   u.projection = glm::vec4(u.proj[0][0], u.proj[1][1], scene.camera.near, scene.camera.far);

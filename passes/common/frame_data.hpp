@@ -68,6 +68,10 @@ MergedGeometry merge_scene_geometry(const scene::Scene& scene);
 // and their shading attributes to `attributes` when given.
 void append_world_vertices(const scene::Mesh& mesh, std::vector<GpuVertex>& out,
                            std::vector<GpuVertexAttributes>* attributes = nullptr);
+// What the scene's materials use, so that passes specialise for it (docs/technique.md,
+// "The G-buffer"): some texture; some emission or occlusion (kFrameSceneEmits).
+bool scene_textured(const scene::Scene& scene);
+bool scene_emits(const scene::Scene& scene);
 std::vector<GpuMaterial> build_materials(const scene::Scene& scene, const TexturePlan& textures);
 FrameUniforms build_frame_uniforms(const scene::Scene& scene, std::uint32_t width,
                                    std::uint32_t height, std::uint32_t frame_index);

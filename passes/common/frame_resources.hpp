@@ -50,6 +50,11 @@ struct FrameResources {
   VkSampler texture_sampler = VK_NULL_HANDLE;
   // Some material is alpha-tested (alphaMode MASK): depth passes must sample alpha.
   bool alpha_tested = false;
+  // Some material has a texture (scene_textured): the G-buffer's textured variant.
+  bool textured = false;
+  // Some material emits or has occlusion (scene_emits, FrameUniforms kFrameSceneEmits):
+  // the G-buffer writes its emissive target, the lighting passes read it.
+  bool emits = false;
   VkBuffer indices = VK_NULL_HANDLE;  // uint32 triangle list
   std::uint32_t index_count = 0;
   // Changes whenever the uploaded geometry or materials change (a new GpuScene), so

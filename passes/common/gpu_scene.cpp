@@ -57,6 +57,8 @@ GpuScene::GpuScene(gpu::Context& gpu, const scene::Scene& scene, std::uint32_t f
   index_count_ = static_cast<std::uint32_t>(geometry.indices.size());
   alpha_tested_ = std::any_of(scene.materials.begin(), scene.materials.end(),
                               [](const scene::Material& m) { return m.alpha_tested(); });
+  textured_ = scene_textured(scene);
+  emits_ = scene_emits(scene);
   geometry_version_ = next_geometry_version.fetch_add(1);
   materials_ = upload_device_buffer(gpu, build_materials(scene, textures_.plan()),
                                     VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "scene.materials");
@@ -159,6 +161,8 @@ fgvk::FrameResources GpuScene::update(VkCommandBuffer cmd, std::uint32_t slot_in
   frame.linear_textures = textures_.linear_views();
   frame.texture_sampler = textures_.sampler();
   frame.alpha_tested = alpha_tested_;
+  frame.textured = textured_;
+  frame.emits = emits_;
   frame.indices = indices_;
   frame.index_count = index_count_;
   frame.geometry_version = geometry_version_;

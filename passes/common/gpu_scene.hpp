@@ -51,6 +51,8 @@ class GpuScene {
   gpu::Buffer materials_;
   std::uint32_t index_count_ = 0;
   bool alpha_tested_ = false;
+  bool textured_ = false;
+  bool emits_ = false;
   std::uint64_t geometry_version_ = 0;
   std::uint32_t static_indices_ = 0;
   fgvk::DrawRanges draw_ranges_{};

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "antumbra/gpu/context.hpp"
@@ -19,6 +20,52 @@ namespace antumbra::passes {
 GBufferPass::GBufferPass(const fg::PlanPass& pass) : params_(param_table().read(pass.params)) {
 }
 
+// Shader variants by what the scene's materials use (gbuffer.frag): `textured` adds
+// texture coordinates and sampling, `emits` writes the emissive target. Cut draws are
+// always textured.
+namespace {
+
+std::vector<gpu::ShaderDefine> fragment_defines(bool textured, bool emits, bool cut) {
+  std::vector<gpu::ShaderDefine> defines;
+  if (textured) defines.push_back({"TEXTURED", ""});
+  if (emits) defines.push_back({"HAS_EMISSIVE", ""});
+  if (cut) defines.push_back({"CUT", ""});
+  return defines;
+}
+
+// What every G-buffer pipeline shares.
+struct PipelineShape {
+  gpu::Context* gpu = nullptr;
+  VkPipelineCache cache = VK_NULL_HANDLE;
+  VkPipelineLayout layout = VK_NULL_HANDLE;
+  std::string name;
+  std::vector<VkFormat> two;    // normal, albedo
+  std::vector<VkFormat> three;  // and emissive
+  VkFormat depth = VK_FORMAT_UNDEFINED;
+};
+
+// A pipeline built on first use (lazy_pipeline.hpp); the builder keeps the shaders.
+LazyPipeline lazy_pipeline(const PipelineShape& shape, const std::shared_ptr<Shader>& vert,
+                           const std::shared_ptr<Shader>& fragment, bool textured,
+                           bool write_emissive, VkCullModeFlags cull, const std::string& suffix) {
+  return LazyPipeline([=]() {
+    // The untextured vertex shader reads the first stream only.
+    gpu::GraphicsPipelineBuilder builder = scene_vertex_attributes(
+        textured ? std::vector<std::uint32_t>{} : std::vector<std::uint32_t>{0, 1, 2});
+    builder.shader(VK_SHADER_STAGE_VERTEX_BIT, *vert)
+        .shader(VK_SHADER_STAGE_FRAGMENT_BIT, *fragment)
+        .cull(cull)
+        .depth(true, true, VK_COMPARE_OP_LESS)
+        .color_formats(write_emissive ? shape.three : shape.two)
+        .depth_format(shape.depth)
+        .layout(shape.layout)
+        .cache(shape.cache);
+    return builder.build(*shape.gpu, shape.name + suffix);
+  });
+}
+
+}  // namespace
+
 void GBufferPass::prepare(fgvk::PrepareContext& context) {
   shader_files_.clear();
   if (params_.rasterizer == GBufferRasterizer::compute) {
@@ -29,15 +76,14 @@ void GBufferPass::prepare(fgvk::PrepareContext& context) {
   const auto& normal = context.bindings.required_image(port::kNormal);
   const auto& albedo = context.bindings.required_image(port::kAlbedo);
   const auto* emissive = context.bindings.image(port::kEmissive);
-  // Without the optional target the shaders are exactly the two-target ones.
-  std::vector<gpu::ShaderDefine> defines;
-  std::vector<VkFormat> formats{normal.format, albedo.format};
-  if (emissive != nullptr) {
-    defines.push_back({"HAS_EMISSIVE", ""});
-    formats.push_back(emissive->format);
-  }
-  auto vert = load_shader(context, "gbuffer/gbuffer.vert", shader_files_);
-  auto frag = load_shader(context, "gbuffer/gbuffer.frag", shader_files_, defines);
+  // The pipelines of scenes that do not emit (and of graphs without the optional target)
+  // draw into the two targets only.
+  has_emissive_ = emissive != nullptr;
+  PipelineShape shape{&context.gpu,      context.pipeline_cache,         VK_NULL_HANDLE,
+                      context.pass.name, {normal.format, albedo.format}, {},
+                      depth.format};
+  shape.three = shape.two;
+  if (has_emissive_) shape.three.push_back(emissive->format);
 
   gpu::DescriptorSetLayoutBuilder bindings;
   bindings.uniform_buffer(shared::kGbufferFrame, VK_SHADER_STAGE_VERTEX_BIT)
@@ -47,43 +93,43 @@ void GBufferPass::prepare(fgvk::PrepareContext& context) {
       .add(shared::kGbufferLinearTextures, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE,
            VK_SHADER_STAGE_FRAGMENT_BIT, shared::kTextureBuckets)
       .sampler(shared::kGbufferSampler, VK_SHADER_STAGE_FRAGMENT_BIT);
-  defines.push_back({"CUT", ""});
-  auto cut_frag = load_shader(context, "gbuffer/gbuffer.frag", shader_files_, defines);
-  check_shader_interface(context.pass.name, vert, bindings, 0);
-  check_shader_interface(context.pass.name, frag, bindings, 0);
-  check_shader_interface(context.pass.name, cut_frag, bindings, 0);
   set_layout_ = bindings.build(context.gpu, context.pass.name + ".set");
   const std::array<VkDescriptorSetLayout, 1> sets{set_layout_};
   layout_ = gpu::create_pipeline_layout(context.gpu, sets, {}, context.pass.name + ".layout");
-  // Built on first use except the two-sided one (lazy_pipeline.hpp); the shaders are
-  // shared by the builders, which outlive prepare().
-  auto vertex = std::make_shared<Shader>(std::move(vert));
-  check_vertex_inputs(context.pass.name, *vertex, scene_vertex_attributes({}).vertex_attributes());
-  const auto build = [vertex, gpu = &context.gpu, cache = context.pipeline_cache,
-                      layout = layout_.get(), name = context.pass.name, formats,
-                      depth_format = depth.format](const std::shared_ptr<Shader>& fragment,
-                                                   VkCullModeFlags cull,
-                                                   const std::string& suffix) {
-    return [=]() {
-      gpu::GraphicsPipelineBuilder builder = scene_vertex_attributes({});
-      builder.shader(VK_SHADER_STAGE_VERTEX_BIT, *vertex)
-          .shader(VK_SHADER_STAGE_FRAGMENT_BIT, *fragment)
-          .cull(cull)
-          .depth(true, true, VK_COMPARE_OP_LESS)
-          .color_formats(formats)
-          .depth_format(depth_format)
-          .layout(layout)
-          .cache(cache);
-      return builder.build(*gpu, name + suffix);
-    };
+  shape.layout = layout_;
+
+  const auto load = [&](const char* file, const std::vector<gpu::ShaderDefine>& defines) {
+    auto shader = std::make_shared<Shader>(load_shader(context, file, shader_files_, defines));
+    check_shader_interface(context.pass.name, *shader, bindings, 0);
+    return shader;
   };
+  const std::array<std::shared_ptr<Shader>, 2> vertex{
+      load("gbuffer/gbuffer.vert", {}), load("gbuffer/gbuffer.vert", {{"TEXTURED", ""}})};
+  check_vertex_inputs(context.pass.name, *vertex[1],
+                      scene_vertex_attributes({}).vertex_attributes());
   const VkCullModeFlags cull = params_.cull_back_faces ? VK_CULL_MODE_BACK_BIT : VK_CULL_MODE_NONE;
-  auto plain = std::make_shared<Shader>(std::move(frag));
-  auto cut = std::make_shared<Shader>(std::move(cut_frag));
-  pipelines_[0] = LazyPipeline(build(plain, cull, ".pipeline"));
-  pipelines_[1] = LazyPipeline(build(plain, VK_CULL_MODE_BACK_BIT, ".pipeline.oneSided"));
-  pipelines_[2] = LazyPipeline(build(cut, cull, ".pipeline.cut"));
-  pipelines_[0].get();
+  std::array<std::shared_ptr<Shader>, 2> cut;  // by emits
+  for (std::uint32_t v = 0; v < kVariants; ++v) {
+    const bool textured = (v & 1u) != 0u;
+    const bool emits = (v & 2u) != 0u && has_emissive_;
+    if ((v & 2u) != 0u && !has_emissive_) {
+      pipelines_[v] = {};  // no emissive target: the non-emitting variants serve
+      continue;
+    }
+    const std::string suffix =
+        std::string(".pipeline") + (textured ? ".textured" : "") + (emits ? ".emissive" : "");
+    const auto frag = load("gbuffer/gbuffer.frag", fragment_defines(textured, emits, false));
+    if (!cut[emits ? 1 : 0]) {
+      cut[emits ? 1 : 0] = load("gbuffer/gbuffer.frag", fragment_defines(true, emits, true));
+    }
+    const auto& vert = vertex[textured ? 1 : 0];
+    pipelines_[v][0] = lazy_pipeline(shape, vert, frag, textured, emits, cull, suffix);
+    pipelines_[v][1] = lazy_pipeline(shape, vert, frag, textured, emits, VK_CULL_MODE_BACK_BIT,
+                                     suffix + ".oneSided");
+    pipelines_[v][2] =
+        lazy_pipeline(shape, vertex[1], cut[emits ? 1 : 0], true, emits, cull, suffix + ".cut");
+  }
+  pipelines_[0][0].get();  // the common case, built now: errors show at load
 }
 
 void GBufferPass::execute(fgvk::ExecuteContext& context) {
@@ -96,9 +142,14 @@ void GBufferPass::execute(fgvk::ExecuteContext& context) {
   const auto& albedo = context.bindings.required_image(port::kAlbedo);
   const auto* emissive = context.bindings.image(port::kEmissive);
 
+  const bool emits = context.frame.emits && emissive != nullptr;
+  // A scene that does not emit leaves the emissive target alone, not even cleared (a clear
+  // through the raster units cost 0.29 ms at 1920x1080 on an H200, as much as drawing it):
+  // its contents are undefined that frame and the lighting passes do not read it
+  // (kFrameSceneEmits; docs/technique.md, "The G-buffer").
   std::array<VkRenderingAttachmentInfo, 3> colors{};
   const std::array<const fgvk::BoundImage*, 3> targets{&normal, &albedo, emissive};
-  const std::size_t count = emissive != nullptr ? 3 : 2;
+  const std::size_t count = emits ? 3 : 2;
   for (std::size_t i = 0; i < count; ++i) {
     colors[i].sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO;
     colors[i].imageView = targets[i]->view;
@@ -133,8 +184,9 @@ void GBufferPass::execute(fgvk::ExecuteContext& context) {
         .sampler(shared::kGbufferSampler, context.frame.texture_sampler)
         .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_);
     bind_scene_geometry(cmd, context.frame);
-    draw_by_class(cmd, context.frame, needed_pipelines(context.frame, pipelines_, {true, true}),
-                  {true, true});
+    const std::uint32_t variant = (context.frame.textured ? 1u : 0u) | (emits ? 2u : 0u);
+    draw_by_class(cmd, context.frame,
+                  needed_pipelines(context.frame, pipelines_[variant], {true, true}), {true, true});
   }
   gpu::cmd_end_rendering(cmd);
 }

@@ -41,7 +41,11 @@ class GBufferPass final : public fgvk::Pass {
   GBufferParams params_;
   gpu::DescriptorSetLayout set_layout_;
   gpu::PipelineLayout layout_;
-  std::array<LazyPipeline, fgvk::kDrawClasses> pipelines_;  // by fgvk::DrawClass
+  // Variants by what the scene uses: bit 0 textured, bit 1 emits (gbuffer.frag); each by
+  // fgvk::DrawClass. Built on first use.
+  static constexpr std::uint32_t kVariants = 4;
+  std::array<std::array<LazyPipeline, fgvk::kDrawClasses>, kVariants> pipelines_;
+  bool has_emissive_ = false;  // the graph binds the emissive target
   VisibilityGBuffer visibility_;
   std::vector<std::string> shader_files_;
 };

@@ -5,6 +5,7 @@
 #include <bit>
 #include <cstring>
 #include <initializer_list>
+#include <memory>
 
 #include "antumbra/gpu/commands.hpp"
 #include "antumbra/gpu/context.hpp"
@@ -68,6 +69,13 @@ void ComputeRasterizer::prepare(fgvk::PrepareContext& context, bool receivers,
   cull_ = build("point_shadow_atlas/shadow_cull.comp", {});
   args_ = build("point_shadow_atlas/shadow_raster_args.comp", {});
   raster_ = build("point_shadow_atlas/shadow_raster.comp", {});
+  auto cut = std::make_shared<Shader>(load_shader(context, "point_shadow_atlas/shadow_raster.comp",
+                                                  shader_files, {{"CUT", ""}}, &key));
+  check_shader_interface(context.pass.name, *cut, bindings, push);
+  raster_cut_ = LazyPipeline([cut, gpu = &context.gpu, layout = raster_.layout.get(),
+                              cache = context.pipeline_cache, name = context.pass.name]() {
+    return gpu::create_compute_pipeline(*gpu, layout, *cut, name + ".pipeline.cut", cache);
+  });
   // The resolve writes what the graph lets it write as a storage image: an r32f atlas
   // (a depth atlas is copied into) and the colour map.
   storage_atlas_ = context.bindings.required_image(port::kAtlas).format == VK_FORMAT_R32_SFLOAT;
@@ -97,6 +105,8 @@ void ComputeRasterizer::upload_geometry(fgvk::ExecuteContext& context) {
   indices_ = create(geometry.indices, ".clusterIndices");
   cluster_count_ = static_cast<std::uint32_t>(geometry.clusters.size());
   translucent_clusters_ = geometry.translucent_clusters;
+  cut_clusters_ = geometry.cut_clusters;
+  cut_translucent_clusters_ = geometry.cut_translucent_clusters;
   geometry_version_ = context.frame.geometry_version;
   chunk_faces_ = 0;  // the item capacity depends on the cluster count
   geometry.indices = {};
@@ -154,6 +164,8 @@ void ComputeRasterizer::ensure_scratch(fgvk::ExecuteContext& context, std::uint3
   capacity_depth_ = static_cast<std::uint32_t>(items_per_face * chunk_faces_);
   capacity_tint_ = static_cast<std::uint32_t>(VkDeviceSize{translucent_clusters_} *
                                               regions_per_face(size) * chunk_faces_);
+  capacity_cut_ = static_cast<std::uint32_t>(VkDeviceSize{cut_clusters_} * regions_per_face(size) *
+                                             chunk_faces_);
   const std::string& name = context.pass.name;
   // One more face than a chunk holds: the cleared face copied into untouched layers.
   const VkDeviceSize bytes = face_bytes * (chunk_faces_ + 1);
@@ -175,7 +187,9 @@ void ComputeRasterizer::ensure_scratch(fgvk::ExecuteContext& context, std::uint3
                               VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                           gpu::MemoryUsage::gpu_only, name + ".rasterCounters");
   items_ = gpu::Buffer::create(
-      context.gpu, std::max<VkDeviceSize>(8, VkDeviceSize{capacity_depth_ + capacity_tint_} * 8),
+      context.gpu,
+      std::max<VkDeviceSize>(8,
+                             (VkDeviceSize{capacity_depth_} + capacity_tint_ + capacity_cut_) * 8),
       VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, gpu::MemoryUsage::gpu_only, name + ".rasterItems");
 }
 
@@ -189,6 +203,10 @@ void ComputeRasterizer::execute(fgvk::ExecuteContext& context, const AtlasFrame&
   const std::uint32_t size = frame.header.counts.z;
   ensure_scratch(context, static_cast<std::uint32_t>(layers.size()), size);
   stats_.clusters = cluster_count_;
+  stats_.cut_clusters = cut_clusters_;
+  stats_.translucent_clusters = translucent_clusters_;
+  stats_.solid_clusters =
+      cluster_count_ - cut_clusters_ - (translucent_clusters_ - cut_translucent_clusters_);
   write_records(context, frame, tinted, settings);
   decision_.record(context, frame, staging,
                    {.records = static_cast<std::uint32_t>(layers.size()),
@@ -277,9 +295,10 @@ void ComputeRasterizer::write_records(fgvk::ExecuteContext& context, const Atlas
 }
 
 void ComputeRasterizer::bind(fgvk::ExecuteContext& context, const ComputePipeline& pipeline,
-                             const shared::RasterPush& push) {
+                             const shared::RasterPush& push, VkPipeline variant) {
   const VkCommandBuffer cmd = context.cmd;
-  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.pipeline);
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE,
+                    variant != VK_NULL_HANDLE ? variant : pipeline.pipeline.get());
   gpu::PushDescriptors descriptors;
   descriptors.storage_buffer(shared::kRasterClusters, clusters_)
       .storage_buffer(shared::kRasterIndices, indices_)
@@ -348,6 +367,7 @@ void ComputeRasterizer::record_chunk(fgvk::ExecuteContext& context, const AtlasF
   push.tint_mode = settings.tint ? 1u : 0u;
   push.capacity_depth = capacity_depth_;
   push.capacity_tint = capacity_tint_;
+  push.capacity_cut = capacity_cut_;
   push.depth_bias = settings.depth_bias;
   push.slope_bias = settings.slope_bias;
   context.gpu.begin_label(cmd, context.pass.name + ".cull");
@@ -364,22 +384,33 @@ void ComputeRasterizer::record_chunk(fgvk::ExecuteContext& context, const AtlasF
       VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
   context.gpu.end_label(cmd);
 
-  context.gpu.begin_label(cmd, context.pass.name + ".rasterDepth");
-  push.list = shared::kListDepth;
-  bind(context, raster_, push);
-  vkCmdDispatchIndirect(cmd, counters_, shared::kRasterArgsOffset);
-  context.gpu.end_label(cmd);
+  // Solid casters, then cut ones into the same depth (atomic minima, so the order does not
+  // matter, but the validation layer sees two writers), then the tints over the finished
+  // depth. Scenes without cut clusters record no cut dispatch and no barrier.
+  raster_list(context, push, shared::kListDepth, raster_.pipeline, ".rasterDepth");
+  if (cut_clusters_ > 0) {
+    compute_to_compute(cmd, {depth_});
+    raster_list(context, push, shared::kListCut, raster_cut_.get(), ".rasterCut");
+  }
   compute_to_compute(cmd, {depth_});
   if (any_tint) {
-    context.gpu.begin_label(cmd, context.pass.name + ".rasterTint");
-    push.list = shared::kListTint;
-    bind(context, raster_, push);
-    vkCmdDispatchIndirect(cmd, counters_, shared::kRasterArgsOffset + 12);
-    context.gpu.end_label(cmd);
+    raster_list(context, push, shared::kListTint,
+                cut_translucent_clusters_ > 0 ? raster_cut_.get() : raster_.pipeline.get(),
+                ".rasterTint");
     compute_to_compute(cmd, {tint_});
   }
   if (!storage_atlas_) compute_to_copy(cmd, {depth_});
   if (storage_atlas_ || any_tint) resolve(context, push, chunk.first, chunk.first / chunk_faces_);
+}
+
+void ComputeRasterizer::raster_list(fgvk::ExecuteContext& context, shared::RasterPush push,
+                                    std::uint32_t list, VkPipeline pipeline, const char* label) {
+  context.gpu.begin_label(context.cmd, context.pass.name + label);
+  push.list = list;
+  bind(context, raster_, push, pipeline);
+  vkCmdDispatchIndirect(context.cmd, counters_,
+                        shared::kRasterArgsOffset + VkDeviceSize{12} * list);
+  context.gpu.end_label(context.cmd);
 }
 
 // Writes the records the decision listed for one chunk (or the fill) into the images.

@@ -16,6 +16,7 @@
 #include "antumbra/gpu/hash.hpp"
 #include "antumbra/gpu/resources.hpp"
 #include "atlas_planner.hpp"
+#include "common/lazy_pipeline.hpp"
 #include "common/pass_support.hpp"
 #include "face_decision.hpp"
 #include "raster_clusters.hpp"
@@ -30,6 +31,12 @@ struct ComputeRasterSettings {
 
 struct ComputeRasterStats {
   std::uint32_t clusters = 0;
+  // By path (docs/technique.md, "Compute shadow rasteriser"): cut clusters (one-sided or
+  // alpha-tested materials) take the shader variant that tests them; the rest, solid or
+  // translucent, the one without. A scene without such materials has no cut clusters.
+  std::uint32_t cut_clusters = 0;
+  std::uint32_t translucent_clusters = 0;  // their tints: the cut variant if some are cut
+  std::uint32_t solid_clusters = 0;        // neither cut nor translucent
   std::uint32_t chunks = 0;  // rasterise-and-copy rounds this frame (scratch memory bound)
 };
 
@@ -61,8 +68,12 @@ class ComputeRasterizer {
   void ensure_scratch(fgvk::ExecuteContext& context, std::uint32_t faces, std::uint32_t size);
   void write_records(fgvk::ExecuteContext& context, const AtlasFrame& frame,
                      const std::vector<bool>& tinted, const ComputeRasterSettings& settings);
+  // `variant`: a pipeline of the same layout to bind instead of `pipeline`'s own.
   void bind(fgvk::ExecuteContext& context, const ComputePipeline& pipeline,
-            const shared::RasterPush& push);
+            const shared::RasterPush& push, VkPipeline variant = VK_NULL_HANDLE);
+  // Rasterises list `list` (its dispatch arguments) with `pipeline`.
+  void raster_list(fgvk::ExecuteContext& context, shared::RasterPush push, std::uint32_t list,
+                   VkPipeline pipeline, const char* label);
   void clear_chunk(VkCommandBuffer cmd, const Chunk& chunk, std::uint32_t tint_faces);
   void record_chunk(fgvk::ExecuteContext& context, const AtlasFrame& frame, const Chunk& chunk,
                     const std::vector<bool>& tinted, const ComputeRasterSettings& settings);
@@ -75,6 +86,9 @@ class ComputeRasterizer {
   ComputePipeline cull_;
   ComputePipeline args_;
   ComputePipeline raster_;
+  // shadow_raster.comp with CUT, in raster_'s layout: built the first time a scene has cut
+  // clusters (a shader JIT on CPU devices that most scenes never need).
+  LazyPipeline raster_cut_;
   ComputePipeline resolve_;
   bool storage_atlas_ = false;            // r32f atlas: written by resolve_, not copied
   bool storage_colour_ = false;           // colour map bound: tinted faces written by resolve_
@@ -87,6 +101,8 @@ class ComputeRasterizer {
   gpu::Buffer indices_;
   std::uint32_t cluster_count_ = 0;
   std::uint32_t translucent_clusters_ = 0;
+  std::uint32_t cut_clusters_ = 0;
+  std::uint32_t cut_translucent_clusters_ = 0;  // tints that need the cut variant
   std::uint64_t geometry_version_ = ~0ull;
   RasterGeometry layout_;  // without its index list: the dynamic clusters' own bounds
   std::uint64_t dynamic_version_ = ~0ull;
@@ -99,6 +115,7 @@ class ComputeRasterizer {
   gpu::Buffer items_;
   std::uint32_t capacity_depth_ = 0;
   std::uint32_t capacity_tint_ = 0;
+  std::uint32_t capacity_cut_ = 0;
   std::vector<gpu::Buffer> faces_;  // RasterFace records per frame-in-flight slot
   ComputeRasterStats stats_;
   FaceDecision decision_;

@@ -20,14 +20,19 @@ const uint kRasterRegionShift = 7;
 // An item's region when its cluster's projection fits in one region's size: the whole
 // face, so that a small cluster straddling region borders is not drawn several times.
 const uint kRegionWholeFace = 0xFFFF;
-// Work lists: opaque casters into depth, translucent casters into the tint.
+// Work lists: solid two-sided casters into depth, translucent casters into the tint, cut
+// casters (one-sided or alpha-tested materials) into depth by shadow_raster.comp's CUT
+// variant, so the first list's variant carries no texture coordinates.
 const uint kListDepth = 0;
 const uint kListTint = 1;
+const uint kListCut = 2;
+const uint kRasterLists = 3;
 // A dispatch's x is capped (Vulkan guarantees 65535); larger lists spill into y.
 const uint kMaxGroupsX = 65535;
 
 const uint kClusterTranslucent = 1;  // RasterCluster.info.z: its material tints
 const uint kClusterClosed = 2;       // its mesh is closed: back-facing clusters are hidden
+const uint kClusterCut = 4;          // one-sided or alpha-tested: the cut list
 
 // One cluster of at most kRasterGroup triangles of the merged world-space scene.
 struct RasterCluster {
@@ -51,9 +56,10 @@ struct RasterFace {
 };
 
 // Header of the counters buffer; the dispatch arguments follow at kRasterArgsOffset.
-const uint kRasterCountersBytes = 16;  // uint counts[2] (per list), overflow, unused
-const uint kRasterArgsOffset = 16;     // VkDispatchIndirectCommand per list
-const uint kRasterCountersSize = 48;
+const uint kRasterCountersBytes = 16;  // uint counts[3] (per list), overflow
+const uint kRasterOverflow = 3;        // counts[3]: items that did not fit (never: sized)
+const uint kRasterArgsOffset = 16;     // VkDispatchIndirectCommand (12 bytes) per list
+const uint kRasterCountersSize = 64;
 
 ANTUMBRA_PUSH_CONSTANTS(RasterPush) {
   uint face_first;      // this chunk's first entry in the face records
@@ -65,7 +71,7 @@ ANTUMBRA_PUSH_CONSTANTS(RasterPush) {
   uint capacity_tint;
   float depth_bias;  // constant factor, in units of the float depth's resolution
   float slope_bias;  // factor of the depth slope per texel
-  uint unused;
+  uint capacity_cut;  // the cut list starts after the tint list
 };
 // shadow_raster_resolve.comp reads its records from kRasterResolveList at face_first
 // (face_decision.hpp's lists); the cull skips records whose kRasterDrawFlags entry is 0.

@@ -444,6 +444,15 @@ fgvk::PassMessage PointShadowAtlasPass::face_stats(
                      {"stalestFrames", s.stalest},
                      {"staticCacheBytes", static_cache_.bytes()},
                      {"rasterizer", compute ? "compute" : "hardware"}};
+  if (compute) {
+    // Which shader variant the clusters take (compute_raster.hpp): scenes without cut
+    // materials have every opaque cluster on the solid path.
+    const ComputeRasterStats& c = compute_.stats();
+    details["clusters"] = {{"total", c.clusters},
+                           {"solid", c.solid_clusters},
+                           {"cut", c.cut_clusters},
+                           {"translucent", c.translucent_clusters}};
+  }
   std::string text = "shadow faces: " + std::to_string(s.total) + " total, " +
                      std::to_string(s.culled) + " culled, " + std::to_string(s.rendered) +
                      " rendered, " + std::to_string(s.cached) + " cached";

@@ -78,8 +78,11 @@ RasterGeometry build_raster_geometry(const scene::Scene& scene) {
     const auto material = static_cast<std::size_t>(std::max(mesh.material, 0));
     const bool translucent =
         material < scene.materials.size() && scene.materials[material].translucent;
+    // One-sided and alpha-tested materials: the cut list and its shader variant.
+    const bool cut = draw_class(scene, mesh) != fgvk::DrawClass::two_sided;
     const std::uint32_t flags = (translucent ? shared::kClusterTranslucent : 0u) |
-                                (mesh_is_closed(mesh) ? shared::kClusterClosed : 0u);
+                                (mesh_is_closed(mesh) ? shared::kClusterClosed : 0u) |
+                                (cut ? shared::kClusterCut : 0u);
     const scene::MeshClusters clusters = scene::build_clusters(world, mesh.indices);
     for (const scene::Cluster& c : clusters.clusters) {
       shared::RasterCluster gpu{};
@@ -97,6 +100,8 @@ RasterGeometry build_raster_geometry(const scene::Scene& scene) {
       }
       out.clusters.push_back(gpu);
       if (translucent) ++out.translucent_clusters;
+      if (cut) ++out.cut_clusters;
+      if (cut && translucent) ++out.cut_translucent_clusters;
       if (mesh.dynamic) {
         out.dynamic.push_back({m, gpu.sphere});
       } else {

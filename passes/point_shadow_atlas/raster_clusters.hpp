@@ -18,6 +18,10 @@ struct RasterGeometry {
   // (RasterCluster.info.x is the cluster's first entry).
   std::vector<std::uint32_t> indices;
   std::uint32_t translucent_clusters = 0;
+  // Clusters of one-sided or alpha-tested materials (kClusterCut), and of those the
+  // translucent ones (their tints need the cut variant too).
+  std::uint32_t cut_clusters = 0;
+  std::uint32_t cut_translucent_clusters = 0;
   // Clusters [static_clusters, size) belong to dynamic meshes (merge_order puts them
   // last). They are split in the mesh's own space, so a move changes only their bounds.
   std::uint32_t static_clusters = 0;

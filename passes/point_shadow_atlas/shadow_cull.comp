@@ -43,7 +43,7 @@ void main() {
   RasterCluster cluster = clusters[c];
   RasterFace face = faces[face_first + f];
   bool translucent = (cluster.info.z & kClusterTranslucent) != 0u;
-  uint list = kListDepth;
+  uint list = (cluster.info.z & kClusterCut) != 0u ? kListCut : kListDepth;
   if (translucent && tint_mode != 0u) {
     if (face.info.w == 0u) return;  // an untinted light's colour layers are never read
     list = kListTint;
@@ -96,12 +96,16 @@ void main() {
   bool small = bounded && all(lessThanEqual(hi - lo, vec2(float(1u << kRasterRegionShift))));
   uint count = small ? 1u : (r1.x - r0.x + 1u) * (r1.y - r0.y + 1u);
   uint first = atomicAdd(counts[list], count);
-  uint capacity = list == kListDepth ? capacity_depth : capacity_tint;
+  uint capacity = list == kListDepth ? capacity_depth
+                  : list == kListTint ? capacity_tint
+                                      : capacity_cut;
   if (first + count > capacity) {
-    atomicAdd(counts[2], 1u);  // the pass sized the list for the worst case: never
+    atomicAdd(counts[kRasterOverflow], 1u);  // the pass sized the lists for the worst case
     return;
   }
-  uint base = list == kListDepth ? 0u : capacity_depth;
+  uint base = list == kListDepth ? 0u
+              : list == kListTint ? capacity_depth
+                                  : capacity_depth + capacity_tint;
   if (small) {
     items[base + first] = uvec2(c, f | (kRegionWholeFace << 16));
     return;

@@ -1,9 +1,13 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #include "compute_raster_interface.h"
+#ifdef CUT
 #define MATERIAL_SRGB_TEXTURES kRasterSrgbTextures
 #define MATERIAL_SAMPLER kRasterSampler
 #include "../common/material_textures.glsl"
+#else
+#include "../common/material.glsl"
+#endif
 
 // Rasterises one work item (a cluster's triangles inside one screen region of one face)
 // per workgroup, one triangle per thread (docs/technique.md, "Compute shadow rasteriser").
@@ -17,9 +21,14 @@
 // centres, no face culling, near-plane clipping, depth clipping to [0, 1], the Vulkan
 // depth bias for float formats (constant * 2^(exponent(max z) - 23) + slope * max |dz|);
 // edges are inclusive, which may cover a texel the hardware's tie rule leaves out.
-// Cut materials as shadow_cut.frag: a one-sided triangle casts only when the light sees
-// its front, an alpha-tested one only at texels whose alpha (perspective-correct texture
-// coordinates, gradients from the coordinate planes) reaches the cutoff.
+// Compiled twice (docs/technique.md, "Compute shadow rasteriser", cut clusters): without
+// CUT for the depth and tint lists, which hold only solid two-sided casters and
+// translucent ones, and with CUT for the cut list (clusters of one-sided or alpha-tested
+// materials), as shadow_cut.frag: a one-sided triangle casts only when the light sees its
+// front, an alpha-tested one only at texels whose alpha (perspective-correct texture
+// coordinates, gradients from the coordinate planes) reaches the cutoff. The solid
+// variant carries none of that: no coordinates per vertex or texel, smaller triangles
+// in shared memory, so scenes without such materials pay nothing for them.
 
 layout(local_size_x = kRasterGroup) in;
 
@@ -32,9 +41,11 @@ layout(std430, binding = kRasterItems) readonly buffer Items { uvec2 items[]; };
 layout(std430, binding = kRasterDepth) buffer Depth { uint depth[]; };
 layout(std430, binding = kRasterTint) buffer Tint { uint tint[]; };
 layout(std430, binding = kRasterMaterials) readonly buffer Materials { GpuMaterial materials[]; };
+#ifdef CUT
 layout(std430, binding = kRasterAttributes) readonly buffer Attributes {
   GpuVertexAttributes attributes[];
 };
+#endif
 
 // Texels above which the workgroup walks a triangle together.
 const int kSmallTexels = 32;
@@ -45,10 +56,12 @@ struct Tri {
   vec4 e2;
   vec4 z;   // depth plane (a, b, c) in texels, w: bias
   ivec4 box;  // inclusive texel rectangle (x0, y0, x1, y1), clipped to the region
-  // Cut materials: planes of u / w, v / w and 1 / w (perspective-correct coordinates).
+#ifdef CUT
+  // Alpha-tested materials: planes of u / w, v / w and 1 / w (perspective-correct).
   vec4 u;
   vec4 v;
   vec4 q;
+#endif
 };
 
 shared Tri s_large[kRasterGroup];
@@ -57,8 +70,10 @@ shared uint s_large_count;
 RasterFace g_face;
 uint g_size;
 vec3 g_tint;
+#ifdef CUT
 bool g_cut;  // the cluster's material is alpha-tested
 GpuMaterial g_material;
+#endif
 
 vec3 vertex_position(uint index) {
   uint w = 7u * index;  // GpuVertex: position, normal, material (28 bytes)
@@ -72,10 +87,18 @@ vec4 edge(vec3 a, vec3 b) {
   return vec4(ea, eb, -(ea * a.x + eb * a.y), 0.0);
 }
 
-// Texture coordinates (xy) over w and 1 / w (z) per vertex, for cut materials.
-bool setup(vec3 a, vec3 b, vec3 c, vec3 ta, vec3 tb, vec3 tc, ivec4 region, out Tri tri) {
+// With CUT, the texture coordinates (xy) over w and 1 / w (z) per vertex.
+#ifdef CUT
+#define VERTEX_UVS , vec3 ta, vec3 tb, vec3 tc
+#else
+#define VERTEX_UVS
+#endif
+bool setup(vec3 a, vec3 b, vec3 c VERTEX_UVS, ivec4 region, out Tri tri) {
   float area = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
-  tri.e0 = tri.e1 = tri.e2 = tri.z = tri.u = tri.v = tri.q = vec4(0.0);
+  tri.e0 = tri.e1 = tri.e2 = tri.z = vec4(0.0);
+#ifdef CUT
+  tri.u = tri.v = tri.q = vec4(0.0);
+#endif
   tri.box = ivec4(0, 0, -1, -1);
   if (!(abs(area) > 1e-12)) return false;  // no area (or NaN): no samples
   vec2 lo = min(min(a.xy, b.xy), c.xy);
@@ -93,13 +116,15 @@ bool setup(vec3 a, vec3 b, vec3 c, vec3 ta, vec3 tb, vec3 tc, ivec4 region, out 
   tri.e1 = ca * s;
   tri.e2 = ab * s;
   vec3 plane = (bc.xyz * a.z + ca.xyz * b.z + ab.xyz * c.z) / area;
+#ifdef CUT
   if (g_cut) {
     tri.u = vec4((bc.xyz * ta.x + ca.xyz * tb.x + ab.xyz * tc.x) / area, 0.0);
     tri.v = vec4((bc.xyz * ta.y + ca.xyz * tb.y + ab.xyz * tc.y) / area, 0.0);
     tri.q = vec4((bc.xyz * ta.z + ca.xyz * tb.z + ab.xyz * tc.z) / area, 0.0);
   }
+#endif
   float bias = 0.0;
-  if (list == kListDepth) {
+  if (list != kListTint) {
     float zmax = max(max(a.z, b.z), c.z);
     int e;
     frexp(max(zmax, 0.0), e);
@@ -118,6 +143,7 @@ void cover(Tri tri, int x, int y) {
   }
   float z = dot(tri.z.xy, p) + tri.z.z;
   if (z < 0.0 || z > 1.0) return;  // depth clipping, as the hardware clips at near and far
+#ifdef CUT
   if (g_cut) {
     float q = dot(tri.q.xy, p) + tri.q.z;
     vec2 uq = vec2(dot(tri.u.xy, p) + tri.u.z, dot(tri.v.xy, p) + tri.v.z);
@@ -127,8 +153,9 @@ void cover(Tri tri, int x, int y) {
     vec2 dy = (vec2(tri.u.y, tri.v.y) - uv * tri.q.y) / q;
     if (material_cut(g_material, uv.xyxy, dx.xyxy, dy.xyxy)) return;
   }
+#endif
   uint index = g_face.info.y + uint(y) * g_size + uint(x);
-  if (list == kListDepth) {
+  if (list != kListTint) {
     // A plain read first: most covered texels already hold something nearer, and an
     // atomic per texel costs more than a load on every device.
     uint value = floatBitsToUint(clamp(z + tri.z.w, 0.0, 1.0));
@@ -161,9 +188,14 @@ void walk(Tri tri) {
   }
 }
 
-void emit(vec3 a, vec3 b, vec3 c, vec3 ta, vec3 tb, vec3 tc, ivec4 region) {
+#ifdef CUT
+#define PASS_UVS , ta, tb, tc
+#else
+#define PASS_UVS
+#endif
+void emit(vec3 a, vec3 b, vec3 c VERTEX_UVS, ivec4 region) {
   Tri tri;
-  if (!setup(a, b, c, ta, tb, tc, region, tri)) return;
+  if (!setup(a, b, c PASS_UVS, region, tri)) return;
   int texels = (tri.box.z - tri.box.x + 1) * (tri.box.w - tri.box.y + 1);
   if (texels > kSmallTexels) {
     uint slot = atomicAdd(s_large_count, 1u);
@@ -183,8 +215,10 @@ void emit(vec3 a, vec3 b, vec3 c, vec3 ta, vec3 tb, vec3 tc, ivec4 region) {
 const float kGuard = 2.0;
 vec4 g_poly[8];
 vec4 g_next[8];
-vec2 g_uv[8];  // the base-colour texture coordinates of g_poly's vertices (cut materials)
+#ifdef CUT
+vec2 g_uv[8];  // the base-colour texture coordinates of g_poly's vertices
 vec2 g_uv_next[8];
+#endif
 
 int clip_polygon(int n, vec4 plane) {
   int m = 0;
@@ -193,21 +227,25 @@ int clip_polygon(int n, vec4 plane) {
     vec4 b = g_poly[(k + 1) % n];
     float da = dot(plane, a);
     float db = dot(plane, b);
-    vec2 ua = g_uv[k];
-    vec2 ub = g_uv[(k + 1) % n];
     if (da >= 0.0 && m < 8) {
-      g_uv_next[m] = ua;
+#ifdef CUT
+      g_uv_next[m] = g_uv[k];
+#endif
       g_next[m++] = a;
     }
     if ((da >= 0.0) != (db >= 0.0) && m < 8) {
+#ifdef CUT
       // Clip space is linear in the vertex attributes: same weight for the coordinates.
-      g_uv_next[m] = mix(ua, ub, da / (da - db));
+      g_uv_next[m] = mix(g_uv[k], g_uv[(k + 1) % n], da / (da - db));
+#endif
       g_next[m++] = mix(a, b, da / (da - db));
     }
   }
   for (int k = 0; k < m; ++k) {
     g_poly[k] = g_next[k];
+#ifdef CUT
     g_uv[k] = g_uv_next[k];
+#endif
   }
   return m;
 }
@@ -233,6 +271,7 @@ vec3 to_texels(vec4 clip) {
   return vec3((clip.xy / clip.w * 0.5 + 0.5) * float(g_size), clip.z / clip.w);
 }
 
+#ifdef CUT
 // Vertex k's coordinates over w, and 1 / w (an orthographic face has w = 1).
 vec3 over_w(int k) { return vec3(g_uv[k], 1.0) / g_poly[k].w; }
 
@@ -241,12 +280,20 @@ vec2 vertex_uv(uint index) {
   vec4 uv = attributes[index].uv;
   return ((g_material.textures.x >> 16) & 1u) != 0u ? uv.zw : uv.xy;
 }
+#endif
+
+// The list's capacity and where its items start (compute_raster_interface.h).
+uint list_capacity() {
+  return list == kListDepth ? capacity_depth : list == kListTint ? capacity_tint : capacity_cut;
+}
+uint list_base() {
+  return list == kListDepth ? 0u : list == kListTint ? capacity_depth : capacity_depth + capacity_tint;
+}
 
 void main() {
-  uint capacity = list == kListDepth ? capacity_depth : capacity_tint;
   uint item_index = gl_WorkGroupID.y * kMaxGroupsX + gl_WorkGroupID.x;
-  if (item_index >= min(counts[list], capacity)) return;  // uniform over the workgroup
-  uvec2 item = items[(list == kListDepth ? 0u : capacity_depth) + item_index];
+  if (item_index >= min(counts[list], list_capacity())) return;  // uniform over the group
+  uvec2 item = items[list_base() + item_index];
   RasterCluster cluster = clusters[item.x];
   g_face = faces[face_first + (item.y & 0xFFFFu)];
   g_size = g_face.info.z;
@@ -256,11 +303,13 @@ void main() {
   ivec2 region_lo = ivec2(uvec2(region % regions_x, region / regions_x) * region_size);
   ivec4 box = ivec4(region_lo, min(region_lo + int(region_size) - 1, ivec2(int(g_size) - 1)));
   if (region == kRegionWholeFace) box = ivec4(0, 0, ivec2(int(g_size) - 1));
+#ifdef CUT
   g_material = materials[cluster.info.w];
-  vec4 t = g_material.transmittance;
-  g_tint = mix(vec3(1.0), clamp(t.rgb, 0.0, 1.0), clamp(t.a, 0.0, 1.0));
   g_cut = (g_material.more.y & ANTUMBRA_MATERIAL_ALPHA_TESTED) != 0u;
   bool one_sided = (g_material.more.y & ANTUMBRA_MATERIAL_DOUBLE_SIDED) == 0u;
+#endif
+  vec4 t = materials[cluster.info.w].transmittance;
+  g_tint = mix(vec3(1.0), clamp(t.rgb, 0.0, 1.0), clamp(t.a, 0.0, 1.0));
 
   if (gl_LocalInvocationIndex == 0u) s_large_count = 0u;
   barrier();
@@ -273,26 +322,37 @@ void main() {
     vec3 p[3] = vec3[3](vertex_position(i0), vertex_position(i1), vertex_position(i2));
     // Surfaces turned towards the light: only they tint (a closed pane counts once), and
     // only they cast where the material is one-sided.
-    vec3 n = cross(p[1] - p[0], p[2] - p[0]);
-    mat4 m = g_face.view_proj;
-    vec3 depth_axis = vec3(m[0][2], m[1][2], m[2][2]);
-    float away = g_face.params.y > 0.5 ? dot(depth_axis, n) : dot(n, p[0] - g_face.light.xyz);
-    bool keep = (list == kListTint || one_sided) ? away < 0.0 : true;
+    bool facing_only = list == kListTint;
+#ifdef CUT
+    facing_only = facing_only || one_sided;
+#endif
+    bool keep = true;
+    if (facing_only) {
+      vec3 n = cross(p[1] - p[0], p[2] - p[0]);
+      mat4 m = g_face.view_proj;
+      vec3 depth_axis = vec3(m[0][2], m[1][2], m[2][2]);
+      float away = g_face.params.y > 0.5 ? dot(depth_axis, n) : dot(n, p[0] - g_face.light.xyz);
+      keep = away < 0.0;
+    }
     if (keep) {
       g_poly[0] = g_face.view_proj * vec4(p[0], 1.0);
       g_poly[1] = g_face.view_proj * vec4(p[1], 1.0);
       g_poly[2] = g_face.view_proj * vec4(p[2], 1.0);
+#ifdef CUT
       if (g_cut) {
         g_uv[0] = vertex_uv(i0);
         g_uv[1] = vertex_uv(i1);
         g_uv[2] = vertex_uv(i2);
       }
+#define UVS_OF(k) , over_w(k)
+#else
+#define UVS_OF(k)
+#endif
       int n = clip_triangle();
       vec3 s0 = to_texels(g_poly[0]);
-      vec3 t0 = over_w(0);
       for (int k = 1; k + 1 < n; ++k) {
-        emit(s0, to_texels(g_poly[k]), to_texels(g_poly[k + 1]), t0, over_w(k), over_w(k + 1),
-             box);
+        emit(s0, to_texels(g_poly[k]), to_texels(g_poly[k + 1]) UVS_OF(0) UVS_OF(k)
+             UVS_OF(k + 1), box);
       }
     }
   }

@@ -10,8 +10,10 @@ layout(local_size_x = 1) in;
 layout(std430, binding = kRasterCounters) buffer Counters { uint counts[]; };
 
 void main() {
-  for (uint list = 0u; list < 2u; ++list) {
-    uint capacity = list == kListDepth ? capacity_depth : capacity_tint;
+  for (uint list = 0u; list < kRasterLists; ++list) {
+    uint capacity = list == kListDepth ? capacity_depth
+                    : list == kListTint ? capacity_tint
+                                        : capacity_cut;
     uint n = min(counts[list], capacity);
     uint base = kRasterArgsOffset / 4u + 3u * list;
     counts[base] = min(n, kMaxGroupsX);

@@ -34,9 +34,12 @@ void main() {
   if (depth < 1.0) {
     vec3 albedo = texelFetch(g_albedo, ivec2(pixel), 0).rgb;
 #if HAS_EMISSIVE
-    color = (ambient_and_emission(frame.ambient.rgb * ambient_scale, albedo,
-                                  texelFetch(g_emissive, ivec2(pixel), 0)) +
-             sum.rgb) *
+    // Read only where the scene emits; otherwise the target holds no emission, occlusion 1.
+    vec4 emission = vec4(0.0, 0.0, 0.0, 1.0);
+    if ((frame.counts.z & kFrameSceneEmits) != 0u) {
+      emission = texelFetch(g_emissive, ivec2(pixel), 0);
+    }
+    color = (ambient_and_emission(frame.ambient.rgb * ambient_scale, albedo, emission) + sum.rgb) *
             exposure;
 #else
     color = (frame.ambient.rgb * ambient_scale * albedo + sum.rgb) * exposure;

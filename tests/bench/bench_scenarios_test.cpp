@@ -138,13 +138,29 @@ TEST(BenchScenarios, MovingTableHasThreeTechniquesPerLightCountOnBothRasterisers
   // The other tables keep still lights in the atrium (the dynamic table's has moving
   // objects).
   for (const auto& s : builtin_scenarios(1.0)) {
-    if (s.table == "moving") continue;
+    if (s.table == "moving" || s.table == "materials") continue;
     EXPECT_EQ(s.moving, 0) << s.name;
     const char* scene = s.table == "dynamic" ? kDynamicScene
                         : s.table == "sun"   ? kSunScene
                                              : "atrium.json";
     EXPECT_EQ(s.scene, scene) << s.name;
   }
+}
+
+// The materials table: the atrium and its textured, cut-out twin, 16 moving lights, on
+// every rasteriser variant of the moving table, shadows cached.
+TEST(BenchScenarios, MaterialsTableComparesTheCutoutSceneWithTheAtrium) {
+  const auto rows = select_scenarios(builtin_scenarios(1.0), {"materials/"});
+  ASSERT_EQ(rows.size(), 8u);
+  for (const auto& s : rows) {
+    EXPECT_EQ(s.moving, 16) << s.name;
+    EXPECT_TRUE(s.shadow_cache) << s.name;
+    EXPECT_TRUE(s.scene == "atrium.json" || s.scene == kCutoutScene) << s.name;
+  }
+  const auto& cut = named(rows, "materials/ssss-11/1080p/16l/atrium-cutouts/compute/screen");
+  EXPECT_EQ(cut.scene, kCutoutScene);
+  EXPECT_EQ(cut.rasterizer, "compute");
+  EXPECT_EQ(named(rows, "materials/ssss-11/1080p/16l/atrium").rasterizer, "hardware");
 }
 
 TEST(BenchScenarios, MovingTableScalesLikeTheOthers) {

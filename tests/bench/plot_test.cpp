@@ -1,6 +1,8 @@
 // The bench chart: a value axis with round ticks, stacked segments in their series'
 // colours, and a failure when the file cannot be written.
+#include <cstdint>
 #include <filesystem>
+#include <map>
 #include <set>
 #include <stdexcept>
 
@@ -26,28 +28,55 @@ std::filesystem::path scratch(const std::string& name) {
   return dir / name;
 }
 
+// The chart written and read back: its size and, per 0xRRGGBB colour, the columns (x)
+// where it appears.
+struct Drawn {
+  int width = 0;
+  int height = 0;
+  std::map<std::uint32_t, std::set<int>> columns;
+};
+
+Drawn draw(const StackedChart& chart, const std::string& name) {
+  const auto path = scratch(name);
+  std::filesystem::remove(path);
+  write_stacked_chart(path.string(), chart);
+  Drawn drawn;
+  int channels = 0;
+  unsigned char* pixels =
+      stbi_load(path.string().c_str(), &drawn.width, &drawn.height, &channels, 3);
+  if (pixels == nullptr) throw std::runtime_error("cannot read " + path.string());
+  for (int i = 0; i < drawn.width * drawn.height; ++i) {
+    const unsigned char* p = pixels + static_cast<std::size_t>(i) * 3;
+    drawn.columns[std::uint32_t{p[0]} << 16 | std::uint32_t{p[1]} << 8 | p[2]].insert(i %
+                                                                                      drawn.width);
+  }
+  stbi_image_free(pixels);
+  return drawn;
+}
+
 TEST(StackedChart, DrawsEverySeriesAndAnAxis) {
   StackedChart chart{"title", "milliseconds", {"gbuffer", "atlas", "lighting"}, {}};
   chart.rows.push_back({"a", {1.0, 4.0, 2.0}, 6.5, 7.5, "7.0 ms"});
   chart.rows.push_back({"b", {1.0, 0.0, 3.0}, 3.9, 4.2, "4.0 ms"});
-  const auto path = scratch("chart.png");
-  std::filesystem::remove(path);
-  write_stacked_chart(path.string(), chart);
-  int width = 0;
-  int height = 0;
-  int channels = 0;
-  unsigned char* pixels = stbi_load(path.string().c_str(), &width, &height, &channels, 3);
-  ASSERT_NE(pixels, nullptr);
-  std::set<std::uint32_t> colours;
-  for (int i = 0; i < width * height; ++i) {
-    const unsigned char* p = pixels + static_cast<std::size_t>(i) * 3;
-    colours.insert(std::uint32_t{p[0]} << 16 | std::uint32_t{p[1]} << 8 | p[2]);
-  }
-  stbi_image_free(pixels);
-  EXPECT_GT(width, 600);
-  EXPECT_GT(height, 60);
+  const auto drawn = draw(chart, "chart.png");
+  EXPECT_GT(drawn.width, 600);
+  EXPECT_GT(drawn.height, 60);
   // White, ink, stripe, grid and one colour per series at least.
-  EXPECT_GE(colours.size(), 4u + chart.series.size());
+  EXPECT_GE(drawn.columns.size(), 4u + chart.series.size());
+}
+
+// bench --baseline: a thin line at the baseline's median, in a colour of its own
+// (plot.cpp's kMarker), where the axis puts that value.
+TEST(StackedChart, MarkerAtItsValue) {
+  constexpr std::uint32_t kMarker = 0xC8008C;
+  StackedChart chart{"title", "milliseconds", {"gbuffer"}, {}};
+  chart.rows.push_back({"a", {8.0}, 0.0, 0.0, "8.0 ms"});
+  EXPECT_EQ(draw(chart, "no-marker.png").columns.count(kMarker), 0u);
+  chart.rows.back().marker = 6.0;
+  const auto drawn = draw(chart, "marker.png");
+  ASSERT_EQ(drawn.columns.count(kMarker), 1u);
+  // Axis 0..8 ms over 640 px from x = 250: 6 ms at x = 730, the line 2 px wide.
+  EXPECT_EQ(drawn.columns.at(kMarker), (std::set<int>{729, 730}));
 }
 
 TEST(StackedChart, UnwritablePathThrows) {

@@ -97,6 +97,7 @@ class AlphaMaskTest : public RenderTest {
   struct Frame {
     gpu::HostImage hdr;
     scene::Scene scene;
+    base::Json clusters;  // the compute rasteriser's clusters by path (note SHD010)
   };
 
   std::optional<Frame> render(Caster caster, const std::string& rasterizer,
@@ -142,6 +143,9 @@ class AlphaMaskTest : public RenderTest {
     session->render(1, nullptr);
     expect_no_validation_errors(*session);
     frame.hdr = read_resource(*session, "hdr");
+    for (const auto& m : session->last_report().messages()) {
+      if (m.code == "SHD010" && m.details.contains("clusters")) frame.clusters = m.details["clusters"];
+    }
     return frame;
   }
 
@@ -303,6 +307,34 @@ TEST_F(AlphaMaskTest, SdfDropsTrianglesCutAtTheirCentroid) {
   for (const glm::vec2 uv : {glm::vec2(0.375f, 0.125f), glm::vec2(0.125f, 0.125f)}) {
     std::printf("[ sdf ] checker cell at (%.3f, %.3f): visibility %.3f\n", uv.x, uv.y,
                 visibility(*checker, *lit, uv.x, uv.y, false));
+  }
+}
+
+// Cut clusters take the compute rasteriser's CUT variant, the rest the one without any
+// texture work (docs/technique.md, "Compute shadow rasteriser"): the quad of a cut or a
+// one-sided material is on the cut path, the floor on the solid one, and the untextured
+// scene has no cut cluster at all.
+TEST_F(AlphaMaskTest, ComputeRasterizerPutsOnlyCutClustersOnTheCutPath) {
+  const auto lit = render(Caster::none, "compute");
+  const auto checker = render(Caster::checker, "compute");
+  const auto one_sided = render(Caster::one_sided_up, "compute");
+  const auto two_sided = render(Caster::two_sided_down, "compute");
+  ASSERT_TRUE(lit && checker && one_sided && two_sided);
+  for (const auto* f : {&*lit, &*checker, &*one_sided, &*two_sided}) {
+    ASSERT_TRUE(f->clusters.is_object()) << "no cluster counts in SHD010";
+    std::printf("clusters: %s\n", f->clusters.dump().c_str());
+    EXPECT_EQ(f->clusters["solid"].get<int>() + f->clusters["cut"].get<int>() +
+                  f->clusters["translucent"].get<int>(),
+              f->clusters["total"].get<int>());
+  }
+  const int floor = lit->clusters["total"].get<int>();
+  EXPECT_GT(floor, 0);
+  EXPECT_EQ(lit->clusters["cut"].get<int>(), 0);
+  EXPECT_EQ(two_sided->clusters["cut"].get<int>(), 0);
+  EXPECT_EQ(two_sided->clusters["solid"].get<int>(), floor + 1);  // the quad: one cluster
+  for (const auto* f : {&*checker, &*one_sided}) {
+    EXPECT_EQ(f->clusters["cut"].get<int>(), 1);
+    EXPECT_EQ(f->clusters["solid"].get<int>(), floor);
   }
 }
 

@@ -16,6 +16,8 @@ struct GpuCounts {
   std::uint32_t total = 0, culled = 0, by_frustum = 0, by_receivers = 0, rendered = 0, cached = 0;
   std::uint64_t texels = 0;
   bool receiver_culling = false;
+  // Clusters by the rasteriser's path (compute_raster.hpp).
+  int clusters = -1, solid = -1, cut = -1, translucent = -1;
 };
 
 // Its own suite name: gtest refuses one suite name for fixtures of two translation units.
@@ -57,6 +59,13 @@ class ReceiverCullingGpuTest : public AtlasGpuTest {
            d["culledByFrustum"].get<std::uint32_t>(), d["culledByReceivers"].get<std::uint32_t>(),
            d["rendered"].get<std::uint32_t>(),        d["cached"].get<std::uint32_t>(),
            d["texels"].get<std::uint64_t>(),          d["receiverCulling"].get<bool>()};
+      if (d.contains("clusters")) {
+        const auto& k = d["clusters"];
+        c.clusters = k["total"].get<int>();
+        c.solid = k["solid"].get<int>();
+        c.cut = k["cut"].get<int>();
+        c.translucent = k["translucent"].get<int>();
+      }
     }
     return c;
   }
@@ -100,6 +109,18 @@ TEST_F(ReceiverCullingGpuTest, SkipsFacesWithoutAVisibleReceiver) {
   EXPECT_EQ(all.by_receivers, 0u);
   EXPECT_GT(all.rendered, drawn_with_culling);
   EXPECT_EQ(read_hdr(), culled_image);
+}
+
+// The atrium has no cut-out, one-sided or textured material: every opaque cluster takes
+// the solid path, whose shader variant has no texture work (docs/technique.md, "Compute
+// shadow rasteriser"); its glass panes are the translucent ones.
+TEST_F(ReceiverCullingGpuTest, AtriumClustersAllTakeTheSolidPath) {
+  load_hard(false);
+  const GpuCounts c = counted_frame();
+  EXPECT_GT(c.clusters, 0);
+  EXPECT_EQ(c.cut, 0);
+  EXPECT_GT(c.solid, 0);
+  EXPECT_EQ(c.solid + c.translucent, c.clusters);
 }
 
 TEST_F(ReceiverCullingGpuTest, AFaceThatGainsAReceiverIsDrawnThatFrame) {
