@@ -220,6 +220,25 @@ BenchTable dynamic_table(const ResultFile& file) {
   return table;
 }
 
+// What textures and cut-outs cost: the atrium against the atrium with alpha-tested screens,
+// layered SSSS 11 under 16 moving lights, on every rasteriser variant of the moving table.
+BenchTable materials_table(const ResultFile& file) {
+  const std::pair<const char*, const char*> rasters[] = {{"hardware", ""},
+                                                         {"compute", "/compute"},
+                                                         {"screen", "/compute/screen"},
+                                                         {"vis", "/compute/screen/vis"}};
+  BenchTable table{"whole frame / shadow atlas, ms", {"scene"}, {}};
+  for (const auto& raster : rasters) table.header.emplace_back(raster.first);
+  for (const char* scene : {"atrium", "atrium-cutouts"}) {
+    table.rows.push_back({"`" + std::string(scene) + ".json`"});
+    for (const auto& raster : rasters) {
+      table.rows.back().push_back(frame_and_atlas(
+          file, "materials/ssss-11/1080p/16l/" + std::string(scene) + raster.second, "materials"));
+    }
+  }
+  return table;
+}
+
 }  // namespace
 
 std::vector<TableKind> bench_table_kinds() {
@@ -229,6 +248,7 @@ std::vector<TableKind> bench_table_kinds() {
       {"table1", 1, "antumbra bench --scenario table1/", bench_lines<table1_table>},
       {"penumbra", 1, "antumbra bench --scenario penumbra/", bench_lines<penumbra_table>},
       {"dynamic", 1, "antumbra bench --scenario dynamic/", bench_lines<dynamic_table>},
+      {"materials", 1, "antumbra bench --scenario materials/", bench_lines<materials_table>},
   };
 }
 

@@ -24,8 +24,8 @@ struct TableKind {
                                        const std::string& link_base);
 };
 
-// Every kind: moving, vis, table1, penumbra, dynamic (bench.json), quality and ranking
-// (quality JSON, one file per size).
+// Every kind: moving, vis, table1, penumbra, dynamic, materials (bench.json); quality,
+// quality-overlap and ranking (quality JSON, one file per size).
 const std::vector<TableKind>& table_kinds();
 // nullptr when no kind has that name.
 const TableKind* find_table_kind(std::string_view name);

@@ -64,6 +64,11 @@ dynamic = [f"dynamic/{t}/1080p/16l{s}" for t in ("hard", "pcss-11", "ssss-11")
 write("dynamic.json", bench(dynamic, **{"dynamic/ssss-11/1080p/16l/compute": "error"}))
 
 
+materials = [f"materials/ssss-11/1080p/16l/{scene}{s}" for scene in ("atrium", "atrium-cutouts")
+             for s in ("", "/compute", "/compute/screen", "/compute/screen/vis")]
+write("materials.json", bench(materials))
+
+
 def quality(width, height, scale):
     graphs = []
     for i, graph in enumerate(("hard.json", "pcss.json", "layered-ssss.json")):
