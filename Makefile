@@ -6,7 +6,7 @@ JOBS       ?= $(shell nproc)
 CMAKE_ARGS ?=
 DEMO_ARGS  ?= --size 1280x720 --out out/atrium.png
 
-.PHONY: all deps configure build demo test test-asan fuzz bench lint format-check reference clean
+.PHONY: all deps configure build demo test test-asan fuzz bench lint format-check reference docs-tables clean
 
 all: build
 
@@ -61,6 +61,12 @@ format-check:
 # into data/schema/ and docs/ (tests fail while the committed copies differ).
 reference: configure
 	@cmake --build $(BUILD) -j$(JOBS) --target antumbra_update_reference
+
+# Regenerates the measured tables of README.md and docs/*.md from the results files under
+# docs/results/ (docs/measuring.md); a CPU test fails while a committed table differs.
+docs-tables: configure
+	@cmake --build $(BUILD) -j$(JOBS) --target antumbra
+	$(BUILD)/app/antumbra docs-tables --root .
 
 bench: build
 	$(BUILD)/bench/antumbra_bench_graph

@@ -23,6 +23,7 @@
 #include "bench_scenarios.hpp"
 #include "build_commit.hpp"
 #include "commands.hpp"
+#include "driver_summary.hpp"
 #include "plot.hpp"
 
 namespace antumbra::app {
@@ -54,18 +55,6 @@ StackedChart chart_of(const std::string& device, const std::vector<BenchResult>&
     chart.rows.push_back(std::move(row));
   }
   return chart;
-}
-
-// "NVIDIA 560.35.03" or "llvmpipe: Mesa 22.3.6 (LLVM 15.0.6)": the driver's own name and
-// version text, so that a results file says what measured it beside the device's name.
-std::string driver_summary(const gpu::Context& gpu) {
-  VkPhysicalDeviceDriverProperties driver{};
-  driver.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES;
-  VkPhysicalDeviceProperties2 properties{};
-  properties.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2;
-  properties.pNext = &driver;
-  vkGetPhysicalDeviceProperties2(gpu.physical_device(), &properties);
-  return std::string(driver.driverName) + " " + driver.driverInfo;
 }
 
 // `--baseline`: the file, read before any GPU work, and this run's comparison with it.

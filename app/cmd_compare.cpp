@@ -16,7 +16,9 @@
 #include "antumbra/gpu/timing.hpp"
 #include "antumbra/runtime/render_session.hpp"
 #include "antumbra/scene/scene_file.hpp"
+#include "build_commit.hpp"
 #include "commands.hpp"
+#include "driver_summary.hpp"
 #include "error_map.hpp"
 #include "image_metrics.hpp"
 
@@ -442,7 +444,10 @@ void print_quality_json(runtime::RenderSession& session, const QualityInputs& in
                         const ReferenceFrame& reference, unsigned width, unsigned height,
                         const TechniqueResults& results, const ErrorMaps& maps,
                         const base::Diagnostics& report_diagnostics) {
-  nlohmann::json report{{"device", session.gpu().device_name()},
+  // What measured it (commit, device, driver): docs-tables publishes from this file.
+  nlohmann::json report{{"commit", build_commit()},
+                        {"device", session.gpu().device_name()},
+                        {"driver", driver_summary(session.gpu())},
                         {"reference", inputs.reference_path},
                         {"referenceMs", reference.ms},
                         {"scene", inputs.scene_path},

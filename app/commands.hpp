@@ -114,6 +114,12 @@ struct TechniquesOptions {
 };
 int run_techniques(const TechniquesOptions& options);
 
+struct DocsTablesOptions {
+  std::string root = ".";  // the repository: README.md, docs/, docs/results/
+  bool check = false;      // compare only: report differing tables, write nothing
+};
+int run_docs_tables(const DocsTablesOptions& options);
+
 // "1280x720" -> width, height; false when malformed or out of 1..16384.
 bool parse_size(const std::string& text, unsigned& width, unsigned& height);
 

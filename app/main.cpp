@@ -57,6 +57,14 @@ CLI::App* add_techniques_command(CLI::App& cli, antumbra::app::TechniquesOptions
   return cmd;
 }
 
+CLI::App* add_docs_tables_command(CLI::App& cli, antumbra::app::DocsTablesOptions& options) {
+  auto* cmd = cli.add_subcommand(
+      "docs-tables", "Generate the measured tables of README.md and docs/ from docs/results/");
+  cmd->add_flag("--check", options.check, "Write nothing; exit 1 naming each table that differs");
+  cmd->add_option("--root", options.root, "Repository root")->capture_default_str();
+  return cmd;
+}
+
 // `bench --fail-slower PCT`: a finite percentage >= 0. CLI11's Range lets NaN through
 // (every comparison with NaN is false), and a NaN threshold would never fail anything.
 CLI::Validator slower_percent() {
@@ -245,6 +253,9 @@ int dispatch(int argc, char** argv) {
   antumbra::app::TechniquesOptions techniques;
   auto* techniques_cmd = add_techniques_command(cli, techniques);
 
+  DocsTablesOptions docs_tables;
+  auto* docs_tables_cmd = add_docs_tables_command(cli, docs_tables);
+
   try {
     cli.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -270,6 +281,7 @@ int dispatch(int argc, char** argv) {
   if (compare_cmd->parsed()) return run_compare(compare);
   if (quality_cmd->parsed()) return run_quality(quality);
   if (techniques_cmd->parsed()) return run_techniques(techniques);
+  if (docs_tables_cmd->parsed()) return run_docs_tables(docs_tables);
   return run_schema();
 }
 
