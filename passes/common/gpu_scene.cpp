@@ -140,8 +140,11 @@ fgvk::FrameResources GpuScene::update(VkCommandBuffer cmd, std::uint32_t slot_in
   }
   auto& slot = slots_.at(slot_index);
   if (!dynamic_.empty()) upload_dynamic(*gpu_, cmd, slot, scene);
-  const auto uniforms = build_frame_uniforms(scene, viewport.width, viewport.height,
-                                             static_cast<std::uint32_t>(frame_index));
+  auto uniforms = build_frame_uniforms(scene, viewport.width, viewport.height,
+                                       static_cast<std::uint32_t>(frame_index));
+  // The flag the G-buffer follows (FrameResources::emits, from the uploaded materials), so
+  // the lighting passes never read a target the G-buffer did not write.
+  uniforms.counts.z = emits_ ? shared::kFrameSceneEmits : 0u;
   std::memcpy(slot.uniforms.mapped(), &uniforms, sizeof uniforms);
   const auto lights = build_lights(scene, uniforms.view);
   if (!lights.empty())

@@ -7,7 +7,7 @@
 //   TEXTURED      some material has a texture: coordinates, tangents, texture sampling
 //   CUT           cut draws (alpha-tested materials, back faces of one-sided ones); textured
 //   HAS_EMISSIVE  the scene emits or has occlusion: the emissive target is written (else
-//                 the pass leaves it at its clear value, no emission and occlusion 1)
+//                 the pass does not bind it, and the lighting passes do not read it)
 // Without TEXTURED this is the plain G-buffer shader: the factors only, no varyings but
 // the normal and the material, so untextured scenes pay nothing for textures.
 #ifdef CUT

@@ -105,6 +105,8 @@ void GBufferPass::prepare(fgvk::PrepareContext& context) {
   };
   const std::array<std::shared_ptr<Shader>, 2> vertex{
       load("gbuffer/gbuffer.vert", {}), load("gbuffer/gbuffer.vert", {{"TEXTURED", ""}})};
+  check_vertex_inputs(context.pass.name, *vertex[0],
+                      scene_vertex_attributes({0, 1, 2}).vertex_attributes());
   check_vertex_inputs(context.pass.name, *vertex[1],
                       scene_vertex_attributes({}).vertex_attributes());
   const VkCullModeFlags cull = params_.cull_back_faces ? VK_CULL_MODE_BACK_BIT : VK_CULL_MODE_NONE;

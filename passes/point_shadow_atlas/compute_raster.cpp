@@ -88,6 +88,14 @@ void ComputeRasterizer::prepare(fgvk::PrepareContext& context, bool receivers,
   geometry_version_ = ~0ull;
 }
 
+void ComputeRasterizer::count_clusters(fgvk::ExecuteContext& context) {
+  upload_geometry(context);
+  stats_.clusters = cluster_count_;
+  stats_.cut_clusters = cut_clusters_;
+  stats_.translucent_clusters = translucent_clusters_ - cut_translucent_clusters_;
+  stats_.solid_clusters = cluster_count_ - cut_clusters_ - stats_.translucent_clusters;
+}
+
 void ComputeRasterizer::upload_geometry(fgvk::ExecuteContext& context) {
   if (context.frame.geometry_version == geometry_version_) return;
   RasterGeometry geometry = build_raster_geometry(*context.frame.scene);
@@ -148,8 +156,10 @@ void ComputeRasterizer::place_dynamic(fgvk::ExecuteContext& context) {
 void ComputeRasterizer::ensure_scratch(fgvk::ExecuteContext& context, std::uint32_t faces,
                                        std::uint32_t size) {
   const VkDeviceSize face_bytes = VkDeviceSize{size} * size * 4;
-  const VkDeviceSize items_per_face =
-      std::max<VkDeviceSize>(1, VkDeviceSize{cluster_count_} * regions_per_face(size));
+  // Every list's worst case per face: each cluster once in the depth or the cut list, a
+  // translucent one in the tint list instead (or besides, counted twice to be safe).
+  const VkDeviceSize items_per_face = std::max<VkDeviceSize>(
+      1, (VkDeviceSize{cluster_count_} + translucent_clusters_) * regions_per_face(size));
   // Each buffer is bound whole, so none may pass maxStorageBufferRange (128 MiB on
   // lavapipe); the depth scratch holds one face more than a chunk (the cleared face).
   const VkDeviceSize range = context.gpu.limits().maxStorageBufferRange;
@@ -161,7 +171,9 @@ void ComputeRasterizer::ensure_scratch(fgvk::ExecuteContext& context, std::uint3
   if (chunk_faces_ >= wanted && scratch_size_ == size) return;
   chunk_faces_ = wanted;
   scratch_size_ = size;
-  capacity_depth_ = static_cast<std::uint32_t>(items_per_face * chunk_faces_);
+  // The depth list never holds cut clusters; the three lists together fit items_per_face.
+  capacity_depth_ = static_cast<std::uint32_t>(VkDeviceSize{cluster_count_ - cut_clusters_} *
+                                               regions_per_face(size) * chunk_faces_);
   capacity_tint_ = static_cast<std::uint32_t>(VkDeviceSize{translucent_clusters_} *
                                               regions_per_face(size) * chunk_faces_);
   capacity_cut_ = static_cast<std::uint32_t>(VkDeviceSize{cut_clusters_} * regions_per_face(size) *
@@ -196,17 +208,15 @@ void ComputeRasterizer::ensure_scratch(fgvk::ExecuteContext& context, std::uint3
 void ComputeRasterizer::execute(fgvk::ExecuteContext& context, const AtlasFrame& frame,
                                 const std::vector<bool>& tinted,
                                 const ComputeRasterSettings& settings, VkBuffer staging) {
-  stats_ = {};
+  const ComputeRasterStats counted = stats_;
+  stats_ = counted;  // the cluster counts (count_clusters); chunks are this frame's
+  stats_.chunks = 0;
   const std::vector<std::uint32_t>& layers = frame.render_layers;
-  upload_geometry(context);
+  count_clusters(context);
   place_dynamic(context);
   const std::uint32_t size = frame.header.counts.z;
   ensure_scratch(context, static_cast<std::uint32_t>(layers.size()), size);
-  stats_.clusters = cluster_count_;
-  stats_.cut_clusters = cut_clusters_;
-  stats_.translucent_clusters = translucent_clusters_;
-  stats_.solid_clusters =
-      cluster_count_ - cut_clusters_ - (translucent_clusters_ - cut_translucent_clusters_);
+  count_clusters(context);
   write_records(context, frame, tinted, settings);
   decision_.record(context, frame, staging,
                    {.records = static_cast<std::uint32_t>(layers.size()),

@@ -34,8 +34,9 @@ struct ComputeRasterStats {
   // By path (docs/technique.md, "Compute shadow rasteriser"): cut clusters (one-sided or
   // alpha-tested materials) take the shader variant that tests them; the rest, solid or
   // translucent, the one without. A scene without such materials has no cut clusters.
-  std::uint32_t cut_clusters = 0;
-  std::uint32_t translucent_clusters = 0;  // their tints: the cut variant if some are cut
+  // Disjoint: total = solid + cut + translucent.
+  std::uint32_t cut_clusters = 0;          // translucent ones among them
+  std::uint32_t translucent_clusters = 0;  // not cut: tints, or depth without a colour map
   std::uint32_t solid_clusters = 0;        // neither cut nor translucent
   std::uint32_t chunks = 0;  // rasterise-and-copy rounds this frame (scratch memory bound)
 };
@@ -50,10 +51,15 @@ class ComputeRasterizer {
   // drawn, and the published shadowData from `staging`), their rasterisation and, when
   // the contents are unknown, far depth into every other layer. `tinted`: per scene
   // light, whether its colour layers hold tints (the planner's light index).
+  // Uploads the scene's clusters when its geometry changed and counts them by path
+  // (stats()), so a report made before execute() names this frame's scene.
+  void count_clusters(fgvk::ExecuteContext& context);
   void execute(fgvk::ExecuteContext& context, const AtlasFrame& frame,
                const std::vector<bool>& tinted, const ComputeRasterSettings& settings,
                VkBuffer staging);
   [[nodiscard]] const ComputeRasterStats& stats() const { return stats_; }
+  // The CUT variant exists: built the first time a frame had cut clusters.
+  [[nodiscard]] bool cut_pipeline_built() const { return raster_cut_.built(); }
   [[nodiscard]] const FaceDecision& decision() const { return decision_; }
   void adopt(ComputeRasterizer& previous) { decision_.adopt(previous.decision_); }
 

@@ -341,6 +341,7 @@ void PointShadowAtlasPass::execute(fgvk::ExecuteContext& context) {
              base::name_list(frame.unshadowed),
          base::Json{{"lights", frame.unshadowed}, {"layers", settings_.layers}}});
   }
+  if (params_.rasterizer == ShadowRasterizer::compute) compute_.count_clusters(context);
   // The GPU's counts come back with a delay: those of this slot's previous frame.
   context.report.add(
       face_stats(context.pass.name, params_.rasterizer == ShadowRasterizer::compute
@@ -451,7 +452,8 @@ fgvk::PassMessage PointShadowAtlasPass::face_stats(
     details["clusters"] = {{"total", c.clusters},
                            {"solid", c.solid_clusters},
                            {"cut", c.cut_clusters},
-                           {"translucent", c.translucent_clusters}};
+                           {"translucent", c.translucent_clusters},
+                           {"cutPipelineBuilt", compute_.cut_pipeline_built()}};
   }
   std::string text = "shadow faces: " + std::to_string(s.total) + " total, " +
                      std::to_string(s.culled) + " culled, " + std::to_string(s.rendered) +
@@ -497,7 +499,21 @@ base::Json PointShadowAtlasPass::face_sizes() const {
 void PointShadowAtlasPass::collect(fgvk::FrameReport& report) {
   if (params_.rasterizer != ShadowRasterizer::compute) return;
   const auto gpu = compute_.decision().completed(compute_.decision().last_slot());
-  if (gpu) report.replace(face_stats(name_, gpu));
+  if (gpu) {
+    report.replace(face_stats(name_, gpu));
+    return;
+  }
+  // GPU counts still pending: the note made while recording stays, but whether the CUT
+  // variant exists is only known once the frame has been recorded.
+  for (const fgvk::PassMessage& m : report.messages()) {
+    if (m.pass != name_ || m.code != codes::shadow_atlas::kFaceStats) continue;
+    fgvk::PassMessage updated = m;
+    if (updated.details.contains("clusters")) {
+      updated.details["clusters"]["cutPipelineBuilt"] = compute_.cut_pipeline_built();
+    }
+    report.replace(std::move(updated));
+    return;
+  }
 }
 
 void PointShadowAtlasPass::find_tinted_lights(const scene::Scene& scene,

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <unordered_map>
+#include <utility>
+#include <vector>
 
 #include "antumbra/scene/clusters.hpp"
 #include "common/frame_data.hpp"
@@ -61,6 +63,23 @@ bool mesh_is_closed(const scene::Mesh& mesh) {
   });
 }
 
+namespace {
+
+// The mesh's triangles as merge_scene_geometry uploads them: a mirroring transform (glTF
+// says so for negative-determinant nodes) swaps two indices of each triangle to keep
+// fronts counter-clockwise, so one-sided casters and normal cones face the same way on
+// both rasterisers.
+std::vector<std::uint32_t> world_winding(const scene::Mesh& mesh) {
+  std::vector<std::uint32_t> indices = mesh.indices;
+  if (glm::determinant(glm::mat3(mesh.transform)) < 0.0f) {
+    for (std::size_t i = 0; i + 2 < indices.size(); i += 3)
+      std::swap(indices[i + 1], indices[i + 2]);
+  }
+  return indices;
+}
+
+}  // namespace
+
 RasterGeometry build_raster_geometry(const scene::Scene& scene) {
   RasterGeometry out;
   out.indices.reserve(scene.triangle_count() * 3);
@@ -83,7 +102,8 @@ RasterGeometry build_raster_geometry(const scene::Scene& scene) {
     const std::uint32_t flags = (translucent ? shared::kClusterTranslucent : 0u) |
                                 (mesh_is_closed(mesh) ? shared::kClusterClosed : 0u) |
                                 (cut ? shared::kClusterCut : 0u);
-    const scene::MeshClusters clusters = scene::build_clusters(world, mesh.indices);
+    const std::vector<std::uint32_t> indices = world_winding(mesh);
+    const scene::MeshClusters clusters = scene::build_clusters(world, indices);
     for (const scene::Cluster& c : clusters.clusters) {
       shared::RasterCluster gpu{};
       gpu.sphere = glm::vec4(c.sphere_center, c.sphere_radius);
@@ -95,7 +115,7 @@ RasterGeometry build_raster_geometry(const scene::Scene& scene) {
       for (std::uint32_t i = 0; i < c.triangle_count; ++i) {
         const std::uint32_t t = clusters.triangles[c.first_triangle + i];
         for (std::uint32_t k = 0; k < 3; ++k) {
-          out.indices.push_back(vertex_base + mesh.indices[std::size_t{3} * t + k]);
+          out.indices.push_back(vertex_base + indices[std::size_t{3} * t + k]);
         }
       }
       out.clusters.push_back(gpu);

@@ -34,7 +34,7 @@ void main() {
   if (depth < 1.0) {
     vec3 albedo = texelFetch(g_albedo, ivec2(pixel), 0).rgb;
 #if HAS_EMISSIVE
-    // Read only where the scene emits; otherwise the target holds no emission, occlusion 1.
+    // Read only where the scene emits (else not written): no emission, occlusion 1.
     vec4 emission = vec4(0.0, 0.0, 0.0, 1.0);
     if ((frame.counts.z & kFrameSceneEmits) != 0u) {
       emission = texelFetch(g_emissive, ivec2(pixel), 0);

@@ -108,7 +108,7 @@ void main() {
   if (geometry) {
     surface = make_surface(p, texelFetch(g_normal, pixel, 0), texelFetch(g_albedo, pixel, 0));
 #if HAS_EMISSIVE
-    // Read only where the scene emits; otherwise the target holds no emission, occlusion 1.
+    // Read only where the scene emits (else not written): no emission, occlusion 1.
     vec4 emission = vec4(0.0, 0.0, 0.0, 1.0);
     if ((frame.counts.z & kFrameSceneEmits) != 0u) emission = texelFetch(g_emissive, pixel, 0);
     color = ambient_and_emission(frame.ambient.rgb * ambient_scale, surface.albedo, emission);

@@ -333,10 +333,17 @@ TEST_F(AlphaMaskTest, ComputeRasterizerPutsOnlyCutClustersOnTheCutPath) {
   EXPECT_EQ(lit->clusters["cut"].get<int>(), 0);
   EXPECT_EQ(two_sided->clusters["cut"].get<int>(), 0);
   EXPECT_EQ(two_sided->clusters["solid"].get<int>(), floor + 1);  // the quad: one cluster
+  EXPECT_FALSE(lit->clusters["cutPipelineBuilt"].get<bool>());
+  EXPECT_FALSE(two_sided->clusters["cutPipelineBuilt"].get<bool>());
   for (const auto* f : {&*checker, &*one_sided}) {
     EXPECT_EQ(f->clusters["cut"].get<int>(), 1);
     EXPECT_EQ(f->clusters["solid"].get<int>(), floor);
+    EXPECT_TRUE(f->clusters["cutPipelineBuilt"].get<bool>());
   }
+}
+
+TEST_F(AlphaMaskTest, OneSidedCastersCastOnlyFromTheirFrontUnderTheSunCompute) {
+  expect_one_sided("compute", true);
 }
 
 TEST_F(AlphaMaskTest, NonCastingBordersGrowNoWedges) {

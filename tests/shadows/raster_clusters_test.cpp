@@ -9,6 +9,7 @@
 #include <optional>
 
 #include <gtest/gtest.h>
+#include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
 
 #include "antumbra/fg/compiler.hpp"
@@ -89,6 +90,73 @@ TEST(RasterClusters, AtriumClustersCoverEveryTriangleOnceWithItsFlags) {
       std::count_if(geometry.clusters.begin(), geometry.clusters.end(),
                     [](const auto& c) { return (c.info.z & shared::kClusterClosed) != 0u; });
   EXPECT_GT(closed, 0) << "the atrium's boxes and columns are closed";
+}
+
+// Cut clusters (one-sided or alpha-tested materials) are flagged for the cut list and
+// counted, translucent ones too, and every cluster's triangles keep the winding the
+// merged geometry uploads, mirrored meshes included (docs/technique.md, "Compute shadow
+// rasteriser", cut clusters).
+TEST(RasterClusters, CutTranslucentAndMirroredMeshesAreFlaggedAndWoundAsUploaded) {
+  scene::Scene scene;
+  const auto material = [&](bool double_sided, bool mask, bool translucent) {
+    scene::Material m;
+    m.double_sided = double_sided;
+    m.translucent = translucent;
+    if (mask) {
+      m.alpha_mode = scene::AlphaMode::mask;
+      m.alpha = 0.25f;  // below the cutoff: alpha-tested without a texture
+    }
+    scene.materials.push_back(m);
+    return static_cast<int>(scene.materials.size() - 1);
+  };
+  const int solid = material(true, false, false);
+  const int one_sided = material(false, false, false);
+  const int masked = material(true, true, false);
+  const int glass = material(true, false, true);
+  const int masked_glass = material(true, true, true);
+  const auto add = [&](int m, glm::mat4 transform, bool dynamic) {
+    scene::Mesh mesh = scene::make_box({1.0f, 1.0f, 1.0f});
+    mesh.material = m;
+    mesh.transform = transform;
+    mesh.dynamic = dynamic;
+    scene.meshes.push_back(std::move(mesh));
+  };
+  const glm::mat4 mirror = glm::scale(glm::mat4(1.0f), glm::vec3(-1.0f, 1.0f, 1.0f));
+  add(solid, glm::mat4(1.0f), false);
+  add(one_sided, mirror, false);
+  add(masked, glm::mat4(1.0f), false);
+  add(glass, glm::mat4(1.0f), false);
+  add(masked_glass, glm::mat4(1.0f), false);
+  add(one_sided, glm::mat4(1.0f), true);  // a dynamic cut mesh
+  const passes::RasterGeometry geometry = passes::build_raster_geometry(scene);
+  ASSERT_EQ(geometry.clusters.size(), 6u) << "a box is one cluster";
+  std::uint32_t cut = 0;
+  for (const auto& c : geometry.clusters) {
+    const bool is_cut = (c.info.z & shared::kClusterCut) != 0u;
+    const auto m = static_cast<std::size_t>(c.info.w);
+    EXPECT_EQ(is_cut, !scene.materials[m].double_sided || scene.materials[m].alpha_tested())
+        << "material " << m;
+    EXPECT_EQ((c.info.z & shared::kClusterTranslucent) != 0u, scene.materials[m].translucent);
+    cut += is_cut ? 1u : 0u;
+  }
+  EXPECT_EQ(cut, 4u);  // the one-sided boxes (static and dynamic), the masked ones
+  EXPECT_EQ(geometry.cut_clusters, 4u);
+  EXPECT_EQ(geometry.translucent_clusters, 2u);
+  EXPECT_EQ(geometry.cut_translucent_clusters, 1u);
+
+  // Oriented triangles: the same (up to rotation) as the merged geometry's, so a mirrored
+  // one-sided box faces the light with the same sides on both rasterisers.
+  const auto oriented = [](const std::vector<std::uint32_t>& indices) {
+    std::vector<std::array<std::uint32_t, 3>> out;
+    for (std::size_t i = 0; i + 2 < indices.size(); i += 3) {
+      std::array<std::uint32_t, 3> t{indices[i], indices[i + 1], indices[i + 2]};
+      std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+      out.push_back(t);
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+  };
+  EXPECT_EQ(oriented(geometry.indices), oriented(passes::merge_scene_geometry(scene).indices));
 }
 
 namespace {

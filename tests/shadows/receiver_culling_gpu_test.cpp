@@ -18,6 +18,7 @@ struct GpuCounts {
   bool receiver_culling = false;
   // Clusters by the rasteriser's path (compute_raster.hpp).
   int clusters = -1, solid = -1, cut = -1, translucent = -1;
+  bool cut_pipeline_built = true;
 };
 
 // Its own suite name: gtest refuses one suite name for fixtures of two translation units.
@@ -65,6 +66,7 @@ class ReceiverCullingGpuTest : public AtlasGpuTest {
         c.solid = k["solid"].get<int>();
         c.cut = k["cut"].get<int>();
         c.translucent = k["translucent"].get<int>();
+        c.cut_pipeline_built = k["cutPipelineBuilt"].get<bool>();
       }
     }
     return c;
@@ -121,6 +123,8 @@ TEST_F(ReceiverCullingGpuTest, AtriumClustersAllTakeTheSolidPath) {
   EXPECT_EQ(c.cut, 0);
   EXPECT_GT(c.solid, 0);
   EXPECT_EQ(c.solid + c.translucent, c.clusters);
+  EXPECT_EQ(c.translucent, 4) << "the four glass panes";
+  EXPECT_FALSE(c.cut_pipeline_built) << "the CUT variant is built only for a scene that needs it";
 }
 
 TEST_F(ReceiverCullingGpuTest, AFaceThatGainsAReceiverIsDrawnThatFrame) {

@@ -11,8 +11,8 @@ ANTUMBRA_SHARED_BEGIN
 
 // FrameUniforms.counts.z: what the scene's materials use. kFrameSceneEmits: some material
 // emits or has an occlusion texture, so the G-buffer writes its `emissive` target and the
-// lighting passes read it; otherwise the target keeps its clear value and nobody reads it
-// (a scene pays only for what it uses; docs/technique.md, "The G-buffer").
+// lighting passes read it; otherwise the target is not written (undefined) and nobody
+// reads it (a scene pays only for what it uses; docs/technique.md, "The G-buffer").
 const uint kFrameSceneEmits = 1;
 
 struct FrameUniforms {
