@@ -128,6 +128,11 @@ bool scene_emits(const scene::Scene& scene) {
 
 FrameUniforms build_frame_uniforms(const scene::Scene& scene, std::uint32_t width,
                                    std::uint32_t height, std::uint32_t frame_index) {
+  return build_frame_uniforms(scene, width, height, frame_index, scene_emits(scene));
+}
+
+FrameUniforms build_frame_uniforms(const scene::Scene& scene, std::uint32_t width,
+                                   std::uint32_t height, std::uint32_t frame_index, bool emits) {
   FrameUniforms u;
   const float aspect = static_cast<float>(width) / static_cast<float>(height);
   u.view = scene.camera.view();
@@ -138,7 +143,7 @@ FrameUniforms build_frame_uniforms(const scene::Scene& scene, std::uint32_t widt
                          1.0f / static_cast<float>(width), 1.0f / static_cast<float>(height));
   u.ambient = glm::vec4(scene.ambient, 0.0f);
   u.counts = glm::uvec4(static_cast<std::uint32_t>(scene.lights.size()), frame_index,
-                        scene_emits(scene) ? shared::kFrameSceneEmits : 0u, 0u);
+                        emits ? shared::kFrameSceneEmits : 0u, 0u);
   u.inv_view = glm::inverse(u.view);
   u.camera_world = glm::vec4(scene.camera.position, scene.camera.near);
   u.projection = glm::vec4(u.proj[0][0], u.proj[1][1], scene.camera.near, scene.camera.far);

@@ -75,6 +75,10 @@ bool scene_emits(const scene::Scene& scene);
 std::vector<GpuMaterial> build_materials(const scene::Scene& scene, const TexturePlan& textures);
 FrameUniforms build_frame_uniforms(const scene::Scene& scene, std::uint32_t width,
                                    std::uint32_t height, std::uint32_t frame_index);
+// The same with the scene's kFrameSceneEmits flag given (GpuScene's, found at upload, so
+// that no frame walks the materials again).
+FrameUniforms build_frame_uniforms(const scene::Scene& scene, std::uint32_t width,
+                                   std::uint32_t height, std::uint32_t frame_index, bool emits);
 std::vector<GpuLight> build_lights(const scene::Scene& scene, const glm::mat4& view);
 
 }  // namespace antumbra::passes

@@ -140,11 +140,10 @@ fgvk::FrameResources GpuScene::update(VkCommandBuffer cmd, std::uint32_t slot_in
   }
   auto& slot = slots_.at(slot_index);
   if (!dynamic_.empty()) upload_dynamic(*gpu_, cmd, slot, scene);
-  auto uniforms = build_frame_uniforms(scene, viewport.width, viewport.height,
-                                       static_cast<std::uint32_t>(frame_index));
-  // The flag the G-buffer follows (FrameResources::emits, from the uploaded materials), so
-  // the lighting passes never read a target the G-buffer did not write.
-  uniforms.counts.z = emits_ ? shared::kFrameSceneEmits : 0u;
+  // The emits flag the G-buffer follows (FrameResources::emits, from the uploaded
+  // materials), so the lighting passes never read a target the G-buffer did not write.
+  const auto uniforms = build_frame_uniforms(scene, viewport.width, viewport.height,
+                                             static_cast<std::uint32_t>(frame_index), emits_);
   std::memcpy(slot.uniforms.mapped(), &uniforms, sizeof uniforms);
   const auto lights = build_lights(scene, uniforms.view);
   if (!lights.empty())

@@ -208,15 +208,12 @@ void ComputeRasterizer::ensure_scratch(fgvk::ExecuteContext& context, std::uint3
 void ComputeRasterizer::execute(fgvk::ExecuteContext& context, const AtlasFrame& frame,
                                 const std::vector<bool>& tinted,
                                 const ComputeRasterSettings& settings, VkBuffer staging) {
-  const ComputeRasterStats counted = stats_;
-  stats_ = counted;  // the cluster counts (count_clusters); chunks are this frame's
   stats_.chunks = 0;
   const std::vector<std::uint32_t>& layers = frame.render_layers;
-  count_clusters(context);
+  count_clusters(context);  // uploads the clusters when the geometry changed
   place_dynamic(context);
   const std::uint32_t size = frame.header.counts.z;
   ensure_scratch(context, static_cast<std::uint32_t>(layers.size()), size);
-  count_clusters(context);
   write_records(context, frame, tinted, settings);
   decision_.record(context, frame, staging,
                    {.records = static_cast<std::uint32_t>(layers.size()),

@@ -1,6 +1,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #include "compute_raster_interface.h"
+#include "raster_lists.glsl"
 
 // Culls every cluster against every face of the chunk (x: clusters, y: faces) and appends
 // one work item per screen region the cluster's projection touches (docs/technique.md,
@@ -96,16 +97,11 @@ void main() {
   bool small = bounded && all(lessThanEqual(hi - lo, vec2(float(1u << kRasterRegionShift))));
   uint count = small ? 1u : (r1.x - r0.x + 1u) * (r1.y - r0.y + 1u);
   uint first = atomicAdd(counts[list], count);
-  uint capacity = list == kListDepth ? capacity_depth
-                  : list == kListTint ? capacity_tint
-                                      : capacity_cut;
-  if (first + count > capacity) {
+  if (first + count > list_capacity(list)) {
     atomicAdd(counts[kRasterOverflow], 1u);  // the pass sized the lists for the worst case
     return;
   }
-  uint base = list == kListDepth ? 0u
-              : list == kListTint ? capacity_depth
-                                  : capacity_depth + capacity_tint;
+  uint base = list_base(list);
   if (small) {
     items[base + first] = uvec2(c, f | (kRegionWholeFace << 16));
     return;

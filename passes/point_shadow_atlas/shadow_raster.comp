@@ -1,6 +1,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #include "compute_raster_interface.h"
+#include "raster_lists.glsl"
 #ifdef CUT
 #define MATERIAL_SRGB_TEXTURES kRasterSrgbTextures
 #define MATERIAL_SAMPLER kRasterSampler
@@ -282,18 +283,10 @@ vec2 vertex_uv(uint index) {
 }
 #endif
 
-// The list's capacity and where its items start (compute_raster_interface.h).
-uint list_capacity() {
-  return list == kListDepth ? capacity_depth : list == kListTint ? capacity_tint : capacity_cut;
-}
-uint list_base() {
-  return list == kListDepth ? 0u : list == kListTint ? capacity_depth : capacity_depth + capacity_tint;
-}
-
 void main() {
   uint item_index = gl_WorkGroupID.y * kMaxGroupsX + gl_WorkGroupID.x;
-  if (item_index >= min(counts[list], list_capacity())) return;  // uniform over the group
-  uvec2 item = items[list_base() + item_index];
+  if (item_index >= min(counts[list], list_capacity(list))) return;  // uniform over the group
+  uvec2 item = items[list_base(list) + item_index];
   RasterCluster cluster = clusters[item.x];
   g_face = faces[face_first + (item.y & 0xFFFFu)];
   g_size = g_face.info.z;
