@@ -2,6 +2,7 @@
 """make lint: clang-format and clang-tidy over the project's own C++ sources.
 
 clang-format: every tracked .cpp/.hpp/.h file must already be formatted (no diff).
+Layers: the include rules of docs/architecture.md (scripts/lint_layers.py).
 Vulkan 1.3 core commands: no source calls those a Vulkan 1.2 device offers only through
 extensions (vkCmdBeginRendering, ...); they go through engine/core's vk_commands.hpp.
 clang-tidy: every translation unit of the build's compile_commands.json that lives in the
@@ -25,6 +26,8 @@ import subprocess
 import sys
 import time
 from pathlib import Path
+
+import lint_layers
 
 ROOT = Path(__file__).resolve().parent.parent
 
@@ -169,6 +172,7 @@ def main():
     sources = tracked_sources()
     ok = check_format(sources)
     ok = check_promoted_commands(sources) and ok
+    ok = lint_layers.report(ROOT) and ok
     if not args.format_only:
         ok = check_tidy((ROOT / args.build).resolve() if not Path(args.build).is_absolute()
                         else Path(args.build), args.jobs, cache) and ok

@@ -10,8 +10,8 @@ namespace antumbra::passes {
 namespace {
 
 // Exactly one source, and the output holds as many layers as the penumbra it follows.
-void check(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& graph,
-           base::Diagnostics& diagnostics) {
+void check(const fg::PlanPass& pass, const AnisotropicBlurParams& /*params*/, const fg::Plan& plan,
+           const fg::GraphDesc& graph, base::Diagnostics& diagnostics) {
   const auto& source_desc = graph.passes[static_cast<std::size_t>(pass.source_index)];
   const int inputs = (bound_index(pass, port::kHardShadow) >= 0 ? 1 : 0) +
                      (bound_index(pass, port::kEsm) >= 0 ? 1 : 0) +
@@ -78,8 +78,9 @@ fg::PassDesc AnisotropicBlurPass::describe() {
        .max_layers = 8,
        .description = "Blurred visibility, 4 layers per texel."},
   };
-  desc.params = param_table().descs();
-  desc.check = &check;
+  const auto& table = param_table();
+  desc.params = table.descs();
+  desc.check = table.check(&check);
   return desc;
 }
 
@@ -122,13 +123,7 @@ const fg::ParamTable<AnisotropicBlurParams>& AnisotropicBlurPass::param_table() 
                 .min = 1.0,
                 .max = 128.0,
                 .description = "Largest kernel radius in output pixels."},
-               &AnisotropicBlurParams::max_radius)
-          .add({.name = "rotated",
-                .type = fg::ParamType::boolean,
-                .default_value = false,
-                .description =
-                    "Rotate the direction by 26.6 degrees (against banding on vertical walls)."},
-               &AnisotropicBlurParams::rotated);
+               &AnisotropicBlurParams::max_radius);
   return kTable;
 }
 

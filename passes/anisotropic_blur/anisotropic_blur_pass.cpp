@@ -37,7 +37,7 @@ void AnisotropicBlurPass::prepare(fgvk::PrepareContext& context) {
   if (from_esm_) defines.push_back({"FROM_ESM", "1"});
   // The supersampling first direction along rows shares each row's input through
   // workgroup memory (anisotropic_blur.comp, LINE_CACHE): measured 3x faster on an H200.
-  line_cache_ = (from_hard_bits_ || from_esm_) && !params_.vertical && !params_.rotated;
+  line_cache_ = (from_hard_bits_ || from_esm_) && !params_.vertical;
   if (line_cache_) {
     const int apron = std::min(static_cast<int>(std::ceil(params_.max_radius)) + 1, kLineApronMax);
     defines.push_back({"LINE_CACHE", "1"});
@@ -78,17 +78,8 @@ void AnisotropicBlurPass::execute(fgvk::ExecuteContext& context) {
       .storage_image(shared::kBlurShadowOut, shadow.array_view, shadow.layout)
       .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, compute_.layout);
 
-  const bool vertical = params_.vertical;
-  float dx = vertical ? 0.0f : 1.0f;
-  float dy = vertical ? 1.0f : 0.0f;
-  if (params_.rotated) {
-    // atan(1/2) = 26.565 degrees: taps no longer line up with wall edges.
-    const float angle = std::atan(0.5f);
-    const float rx = dx * std::cos(angle) - dy * std::sin(angle);
-    const float ry = dx * std::sin(angle) + dy * std::cos(angle);
-    dx = rx;
-    dy = ry;
-  }
+  const float dx = params_.vertical ? 0.0f : 1.0f;
+  const float dy = params_.vertical ? 1.0f : 0.0f;
   const AnisotropicBlurPush constants{
       {dx, dy},      params_.depth_threshold, params_.max_radius,      (params_.kernel - 1) / 2,
       shadow.layers, penumbra.layers * 4,     params_.normal_threshold};

@@ -19,7 +19,6 @@ struct AnisotropicBlurParams {
   float depth_threshold = 0.03f;
   float normal_threshold = 0.8f;
   float max_radius = 24.0f;
-  bool rotated = false;
 };
 
 class AnisotropicBlurPass final : public fgvk::Pass {

@@ -1,5 +1,8 @@
 #include "layer_checks.hpp"
 
+#include <stdexcept>
+#include <string>
+
 #include "antumbra/base/diagnostic_codes.hpp"
 #include "antumbra/layering/layer_cap.hpp"
 #include "plan_checks.hpp"
@@ -13,8 +16,13 @@ LayerCap find_layer_cap(const fg::PlanPass& pass, const fg::Plan& plan, fg::Port
     if (other.type != layering::kLayeringPassType) continue;
     for (const auto& b : other.bindings) {
       if (b.resource == table && fg::is_write(b.access)) {
-        return {base::read_param(other.params, layering::kLayerCap).value_or(0),
-                other.source_index};
+        // A plan's passes hold every parameter, checked: a missing cap is a broken plan.
+        const auto cap = base::read_param(other.params, layering::kLayerCap);
+        if (!cap) {
+          throw std::logic_error("plan pass '" + other.name + "' has no integer " +
+                                 std::string(layering::kLayerCap.name));
+        }
+        return {*cap, other.source_index};
       }
     }
   }

@@ -11,7 +11,9 @@
 namespace antumbra::passes {
 
 // The maxLayers of the light-layering pass that writes `pass`'s `layer_port` input,
-// and that pass's source index; {0, -1} when none does.
+// and that pass's source index; {0, -1} when none does (the table comes from elsewhere:
+// nothing to check against). Throws std::logic_error when the writer's plan parameters
+// lack the cap, which the compiler fills in and checks.
 struct LayerCap {
   int max_layers = 0;
   int source_index = -1;

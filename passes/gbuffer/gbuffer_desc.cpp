@@ -4,22 +4,17 @@
 #include "antumbra/base/diagnostic_codes.hpp"
 #include "common/plan_checks.hpp"
 #include "common/ports.hpp"
+#include "common/rasterizer_choice.hpp"
 #include "gbuffer_pass.hpp"
-#include "point_shadow_atlas/rasterizer_choice.hpp"
 
 namespace antumbra::passes {
 namespace {
 
-bool uses_compute(const fg::Json& params) {
-  const auto it = params.find("rasterizer");
-  return it != params.end() && *it == "compute";
-}
-
 // The compute path writes normal, albedo and emissive as storage images and fills the depth image
 // by a copy from its own buffer (visibility_gbuffer.hpp); the graph's barriers follow.
-std::optional<fg::PortUse> port_use(const fg::PortDesc& port, const fg::Json& params,
+std::optional<fg::PortUse> port_use(const fg::PortDesc& port, const GBufferParams& params,
                                     fg::Format /*format*/) {
-  if (!uses_compute(params)) return std::nullopt;
+  if (params.rasterizer != GBufferRasterizer::compute) return std::nullopt;
   if (port.name == port::kDepth.name()) {
     return fg::PortUse{fg::Access::transfer_dst, fg::Stage::transfer};
   }
@@ -27,9 +22,9 @@ std::optional<fg::PortUse> port_use(const fg::PortDesc& port, const fg::Json& pa
 }
 
 // The copy fills 32-bit float depth only.
-void check(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& graph,
-           base::Diagnostics& diagnostics) {
-  if (!uses_compute(pass.params)) return;
+void check(const fg::PlanPass& pass, const GBufferParams& params, const fg::Plan& plan,
+           const fg::GraphDesc& graph, base::Diagnostics& diagnostics) {
+  if (params.rasterizer != GBufferRasterizer::compute) return;
   const auto* depth = bound_resource(pass, plan, port::kDepth);
   if (depth == nullptr || depth->format == fg::Format::d32f) return;
   add_pass_error(graph, pass, codes::gbuffer::kRasterizerFormat,
@@ -37,6 +32,18 @@ void check(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& 
                      "' is " + std::string(fg::to_string(depth->format)) +
                      ": make it d32f, or use rasterizer \"hardware\"",
                  "/params/rasterizer", diagnostics);
+}
+
+// "auto" (or absent) becomes the rasteriser the depth's format and the device call for
+// (rasterizer_choice.hpp); anything else is the parameter check's to judge.
+std::vector<std::string> resolve_rasterizer(GBufferParams& params, const fg::PassInstanceDesc& pass,
+                                            const fg::GraphDesc& graph,
+                                            const fg::DeviceTraits* device) {
+  if (params.rasterizer != GBufferRasterizer::automatic) return {};
+  const RasterizerPick pick =
+      choose_gbuffer_rasterizer(bound_output_format(graph, pass, port::kDepth.name()), device);
+  params.rasterizer = pick.compute ? GBufferRasterizer::compute : GBufferRasterizer::hardware;
+  return {auto_choice_line(pass, pick)};
 }
 
 }  // namespace
@@ -84,10 +91,11 @@ fg::PassDesc GBufferPass::describe() {
                       "(scales the ambient term only); cleared to 0. Unbound: no emission, "
                       "no occlusion."},
   };
-  desc.params = param_table().descs();
-  desc.port_use = &port_use;
-  desc.check = &check;
-  desc.resolve = &resolve_gbuffer_rasterizer;
+  const auto& table = param_table();
+  desc.params = table.descs();
+  desc.port_use = table.port_use(&port_use);
+  desc.check = table.check(&check);
+  desc.resolve = table.resolve(&resolve_rasterizer);
   return desc;
 }
 

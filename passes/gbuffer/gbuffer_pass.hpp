@@ -17,7 +17,7 @@
 namespace antumbra::passes {
 
 enum class GBufferRasterizer : std::uint8_t {
-  automatic,  // replaced when the graph compiles (resolve_gbuffer_rasterizer)
+  automatic,  // replaced when the graph compiles (resolve_rasterizer in gbuffer_desc.cpp)
   hardware,
   compute,  // a visibility buffer (visibility_gbuffer.hpp)
 };

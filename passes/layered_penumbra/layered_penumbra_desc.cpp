@@ -6,8 +6,8 @@
 namespace antumbra::passes {
 namespace {
 
-void check(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& graph,
-           base::Diagnostics& diagnostics) {
+void check(const fg::PlanPass& pass, const LayeredPenumbraParams& /*params*/, const fg::Plan& plan,
+           const fg::GraphDesc& graph, base::Diagnostics& diagnostics) {
   const LayerCap cap = find_layer_cap(pass, plan, port::kLayerTable);
   check_layer_storage(pass, plan, graph, cap, port::kPenumbra, diagnostics);
   check_layer_storage(pass, plan, graph, cap, port::kTranslucency, diagnostics);
@@ -84,8 +84,9 @@ fg::PassDesc LayeredPenumbraPass::describe() {
        .description = "Exponential-shadow-map visibility exp(-c (d_receiver - d_occluder)) per "
                       "layer, 8 bits, 4 layers per texel: a soft alternative to the hard bits "
                       "that avoids self-shadowing (anisotropic-blur's `esm` input)."});
-  desc.params = param_table().descs();
-  desc.check = &check;
+  const auto& table = param_table();
+  desc.params = table.descs();
+  desc.check = table.check(&check);
   return desc;
 }
 

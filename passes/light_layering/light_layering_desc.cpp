@@ -8,8 +8,8 @@ namespace antumbra::passes {
 namespace {
 
 // The table must hold a layer per light the engine supports: a compiler check (validate).
-void check(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& graph,
-           base::Diagnostics& diagnostics) {
+void check(const fg::PlanPass& pass, const LightLayeringParams& /*params*/, const fg::Plan& plan,
+           const fg::GraphDesc& graph, base::Diagnostics& diagnostics) {
   const auto* table = bound_resource(pass, plan, port::kLayerTable);
   if (table == nullptr || table->buffer_size >= kLayerTableBytes) return;
   add_pass_error(graph, pass, codes::layering::kLayerTableTooSmall,
@@ -37,8 +37,9 @@ fg::PassDesc LightLayeringPass::describe() {
        .description =
            "LayerTableHeader + one uint per scene light (interface/shared/layer_table.h)."},
   };
-  desc.params = param_table().descs();
-  desc.check = &check;
+  const auto& table = param_table();
+  desc.params = table.descs();
+  desc.check = table.check(&check);
   return desc;
 }
 

@@ -16,12 +16,11 @@ constexpr double kMaxSilhouetteBytes = 1024.0 * 1024.0 * 1024.0;
 
 // The penumbra map is derived per atlas face (its size divides the atlas's); the third
 // depth layer exists exactly when peelingDepth asks for it, texel for texel with the map.
-void check(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& graph,
-           base::Diagnostics& diagnostics) {
+void check(const fg::PlanPass& pass, const PenumbraWedgesParams& params, const fg::Plan& plan,
+           const fg::GraphDesc& graph, base::Diagnostics& diagnostics) {
   check_derived_map(pass, plan, graph, port::kPenumbraMap, false, diagnostics);
   const auto* map = bound_resource(pass, plan, port::kPenumbraMap);
   const auto* peeled = bound_resource(pass, plan, port::kPeeled);
-  const PenumbraWedgesParams params = PenumbraWedgesPass::param_table().read(pass.params);
   if (params.peeling_depth >= 3 && peeled == nullptr) {
     add_pass_error(graph, pass, codes::wedges::kPeeled,
                    "peelingDepth 3 writes the third depth layer Z3 for the lighting: bind "
@@ -114,8 +113,9 @@ fg::PassDesc PenumbraWedgesPass::describe() {
        .description = "The third depth layer Z3 per face (peelingDepth 3), the penumbra "
                       "map's size and layers."},
   };
-  desc.params = param_table().descs();
-  desc.check = &check;
+  const auto& table = param_table();
+  desc.params = table.descs();
+  desc.check = table.check(&check);
   return desc;
 }
 

@@ -3,16 +3,16 @@
 
 #include "common/plan_checks.hpp"
 #include "common/ports.hpp"
+#include "common/rasterizer_choice.hpp"
 #include "common/shadow_data.hpp"
 #include "point_shadow_atlas_pass.hpp"
-#include "rasterizer_choice.hpp"
 
 namespace antumbra::passes {
 namespace {
 
 // Buffer and colour-map sizes against the atlas: compiler checks, so validate sees them.
-void check(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& graph,
-           base::Diagnostics& diagnostics) {
+void check(const fg::PlanPass& pass, const PointShadowAtlasParams& params, const fg::Plan& plan,
+           const fg::GraphDesc& graph, base::Diagnostics& diagnostics) {
   const auto* atlas = bound_resource(pass, plan, port::kAtlas);
   const auto* colour = bound_resource(pass, plan, port::kColour);
   const auto* data = bound_resource(pass, plan, port::kShadowData);
@@ -26,8 +26,7 @@ void check(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& 
                        std::to_string(needed) + " (shadow_data_bytes(layers))",
                    "/out/shadowData", diagnostics);
   }
-  const auto rasterizer = pass.params.find("rasterizer");
-  const bool compute = rasterizer != pass.params.end() && *rasterizer == "compute";
+  const bool compute = params.rasterizer == ShadowRasterizer::compute;
   if (compute && atlas->format == fg::Format::d16) {
     add_pass_error(graph, pass, codes::shadow_atlas::kRasterizerFormat,
                    "rasterizer \"compute\" writes 32-bit float depth; the atlas '" + atlas->name +
@@ -42,15 +41,12 @@ void check(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& 
                        ": make it d32f or d16, or use rasterizer \"compute\"",
                    "/params/rasterizer", diagnostics);
   }
-  const auto minimum = pass.params.find("minResolution");
-  if (minimum != pass.params.end() && minimum->is_number_integer()) {
-    const auto value = minimum->get<std::int64_t>();
-    if (value > 0 && (value & (value - 1)) != 0) {
-      add_pass_error(graph, pass, codes::graph::kParamRange,
-                     "minResolution " + std::to_string(value) +
-                         " is not a power of two: faces are 16, 32, 64 ... texels wide",
-                     "/params/minResolution", diagnostics);
-    }
+  const std::uint32_t minimum = params.min_resolution;
+  if ((minimum & (minimum - 1)) != 0) {
+    add_pass_error(graph, pass, codes::graph::kParamRange,
+                   "minResolution " + std::to_string(minimum) +
+                       " is not a power of two: faces are 16, 32, 64 ... texels wide",
+                   "/params/minResolution", diagnostics);
   }
   if (colour != nullptr && colour->layers < atlas->layers) {
     add_pass_error(graph, pass, codes::shadow_atlas::kColourLayers,
@@ -64,10 +60,9 @@ void check(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& 
 // The compute rasteriser writes an r32f atlas and the colour map from a compute shader
 // (storage images; it keeps the cached layers, so read-write) and fills a depth atlas by
 // copies from its own buffers (compute_raster.hpp); the graph's barriers follow.
-std::optional<fg::PortUse> port_use(const fg::PortDesc& port, const fg::Json& params,
+std::optional<fg::PortUse> port_use(const fg::PortDesc& port, const PointShadowAtlasParams& params,
                                     fg::Format format) {
-  const auto rasterizer = params.find("rasterizer");
-  if (rasterizer == params.end() || *rasterizer != "compute") return std::nullopt;
+  if (params.rasterizer != ShadowRasterizer::compute) return std::nullopt;
   // The GPU's face decision publishes the shadow data (face_decision.hpp).
   if (port.name == port::kShadowData.name()) {
     return fg::PortUse{fg::Access::storage_write, fg::Stage::compute};
@@ -79,6 +74,19 @@ std::optional<fg::PortUse> port_use(const fg::PortDesc& port, const fg::Json& pa
     return fg::PortUse{fg::Access::transfer_dst, fg::Stage::transfer};
   }
   return std::nullopt;
+}
+
+// "auto" (or absent) becomes the rasteriser the atlas's format and the device call for
+// (rasterizer_choice.hpp); anything else is the parameter check's to judge.
+std::vector<std::string> resolve_atlas_rasterizer(PointShadowAtlasParams& params,
+                                                  const fg::PassInstanceDesc& pass,
+                                                  const fg::GraphDesc& graph,
+                                                  const fg::DeviceTraits* device) {
+  if (params.rasterizer != ShadowRasterizer::automatic) return {};
+  const RasterizerPick pick =
+      choose_atlas_rasterizer(bound_output_format(graph, pass, port::kAtlas.name()), device);
+  params.rasterizer = pick.compute ? ShadowRasterizer::compute : ShadowRasterizer::hardware;
+  return {auto_choice_line(pass, pick)};
 }
 
 }  // namespace
@@ -141,16 +149,17 @@ fg::PassDesc PointShadowAtlasPass::describe() {
            "Header, ShadowLight per scene light and ShadowFace per layer "
            "(passes/interface/shared/shadow_data.h); at least shadow_data_bytes(layers)."},
   };
-  desc.params = param_table().descs();
-  desc.check = &check;
-  desc.port_use = &port_use;
-  desc.resolve = &resolve_rasterizer;
+  const auto& table = param_table();
+  desc.params = table.descs();
+  desc.check = table.check(&check);
+  desc.port_use = table.port_use(&port_use);
+  desc.resolve = table.resolve(&resolve_atlas_rasterizer);
   return desc;
 }
 
 namespace {
 
-// Who draws the faces ("auto": resolved when the graph compiles, rasterizer_choice.hpp).
+// Who draws the faces ("auto": resolved when the graph compiles, common/rasterizer_choice.hpp).
 void add_rasterizer_param(fg::ParamTable<PointShadowAtlasParams>& table) {
   table.choice(
       {.name = "rasterizer",
@@ -328,13 +337,15 @@ const fg::ParamTable<PointShadowAtlasParams>& PointShadowAtlasPass::param_table(
                   "With `colour` bound: translucent casters tint the colour map instead of "
                   "writing depth. Off (or `colour` unbound): they cast opaque shadows."},
              &PointShadowAtlasParams::translucent_colour)
-        .add(
-            {.name = "layeredDraw",
-             .type = fg::ParamType::boolean,
-             .default_value = true,
-             .description = "One instanced draw writing gl_Layer where the device supports it; off "
-                            "forces the fallback of one draw per face into a single-layer view."},
-            &PointShadowAtlasParams::layered_draw);
+        .add({.name = "layeredDraw",
+              .type = fg::ParamType::boolean,
+              .default_value = true,
+              .description =
+                  "One instanced draw writing gl_Layer where the device supports it "
+                  "(shaderOutputLayer). Off forces the fallback such devices take, one draw per "
+                  "face into a single-layer view, on any device: to reproduce or time their path "
+                  "(hardware rasteriser only)."},
+             &PointShadowAtlasParams::layered_draw);
     add_rasterizer_param(table);
     add_sun_params(table);
     add_face_choice_params(table);

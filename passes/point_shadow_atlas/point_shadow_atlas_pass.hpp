@@ -31,7 +31,7 @@ namespace antumbra::passes {
 
 // Who draws the faces: fixed-function rasterisation (vertex shader + depth attachment) or
 // the compute rasteriser (compute_raster.hpp), which suits GPUs whose raster units are few.
-// "auto" is replaced when the graph compiles (rasterizer_choice.hpp).
+// "auto" is replaced when the graph compiles (common/rasterizer_choice.hpp).
 enum class ShadowRasterizer { automatic, hardware, compute };
 // Face size: the atlas's for every light, or per light from its size on screen.
 enum class FaceResolution { fixed, screen };

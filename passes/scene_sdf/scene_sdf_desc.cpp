@@ -20,12 +20,11 @@ std::string volume_text(const fg::PlanResource& r) {
 // The volume is baked once per scene, so it and its placement must keep their contents
 // (persistent); it must be large enough to trace through and within the pass's memory
 // budget, so a typo like 2048 layers is refused before it is allocated.
-void check(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& graph,
-           base::Diagnostics& diagnostics) {
+void check(const fg::PlanPass& pass, const SceneSdfParams& params, const fg::Plan& plan,
+           const fg::GraphDesc& graph, base::Diagnostics& diagnostics) {
   const auto* volume = bound_resource(pass, plan, port::kSdf);
   const auto* info = bound_resource(pass, plan, port::kSdfInfo);
   if (volume == nullptr || info == nullptr) return;
-  const SceneSdfParams params = SceneSdfPass::param_table().read(pass.params);
   if (volume->extent.width < kMinSide || volume->extent.height < kMinSide ||
       volume->layers < kMinSide) {
     add_pass_error(graph, pass, codes::sdf::kTooSmall,
@@ -92,8 +91,9 @@ fg::PassDesc SceneSdfPass::describe() {
        .description = "Where the field lies (interface/shared/sdf_info.h, 64 bytes). "
                       "Persistent."},
   };
-  desc.params = param_table().descs();
-  desc.check = &check;
+  const auto& table = param_table();
+  desc.params = table.descs();
+  desc.check = table.check(&check);
   return desc;
 }
 

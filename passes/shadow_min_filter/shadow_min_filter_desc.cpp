@@ -10,8 +10,8 @@ namespace {
 
 // The map must cover every atlas layer, and each of its texels a whole, gatherable
 // block of atlas texels (factor 1 or even, the same on both axes).
-void check(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& graph,
-           base::Diagnostics& diagnostics) {
+void check(const fg::PlanPass& pass, const ShadowMinFilterParams& /*params*/, const fg::Plan& plan,
+           const fg::GraphDesc& graph, base::Diagnostics& diagnostics) {
   check_derived_map(pass, plan, graph, port::kMinDepth, true, diagnostics);
 }
 
@@ -44,8 +44,9 @@ fg::PassDesc ShadowMinFilterPass::describe() {
                       "by 1 or an even factor, as many layers as the atlas. Persistent to keep "
                       "cached faces' results."},
   };
-  desc.params = param_table().descs();
-  desc.check = &check;
+  const auto& table = param_table();
+  desc.params = table.descs();
+  desc.check = table.check(&check);
   return desc;
 }
 

@@ -12,12 +12,12 @@ namespace {
 // four components for EVSM4 and MSM, 32-bit floats for MSM (its four powers of depth
 // need them: half floats would need Peters and Klein's quantisation transform), rg32ui
 // for VSSM's fixed-point summed-area table and for nothing else.
-void check(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& graph,
-           base::Diagnostics& diagnostics) {
+void check(const fg::PlanPass& pass, const ShadowMomentsParams& params, const fg::Plan& plan,
+           const fg::GraphDesc& graph, base::Diagnostics& diagnostics) {
   check_derived_map(pass, plan, graph, port::kMoments, false, diagnostics);
   const auto* out = bound_resource(pass, plan, port::kMoments);
   if (out == nullptr) return;
-  const MomentTechnique technique = ShadowMomentsPass::param_table().read(pass.params).technique;
+  const MomentTechnique technique = params.storage.technique;
   const bool four = out->format == fg::Format::rgba16f || out->format == fg::Format::rgba32f;
   const bool table = out->format == fg::Format::rg32ui;
   std::string problem;
@@ -66,25 +66,16 @@ fg::PassDesc ShadowMomentsPass::describe() {
        .description = "Per face: filtered moments; the atlas size divided by an integer factor, "
                       "as many layers as the atlas. Persistent to keep cached faces' moments."},
   };
-  desc.params = param_table().descs();
-  desc.check = &check;
+  const auto& table = param_table();
+  desc.params = table.descs();
+  desc.check = table.check(&check);
   return desc;
 }
 
 const fg::ParamTable<ShadowMomentsParams>& ShadowMomentsPass::param_table() {
   static const auto kTable =
       fg::ParamTable<ShadowMomentsParams>()
-          .choice({.name = "technique",
-                   .type = fg::ParamType::enumeration,
-                   .default_value = "evsm4",
-                   .choices = {"vsm", "evsm2", "evsm4", "msm", "vssm"},
-                   .description = "Moments stored: vsm (depth, depth^2), evsm2 / evsm4 "
-                                  "(exponentially warped, positive / and negative), msm (4 "
-                                  "powers of depth; needs rgba32f), vssm (VSM's moments as a "
-                                  "summed-area table for any filter size; needs rg32ui)."},
-                  &ShadowMomentsParams::technique,
-                  {MomentTechnique::vsm, MomentTechnique::evsm2, MomentTechnique::evsm4,
-                   MomentTechnique::msm, MomentTechnique::vssm})
+          .include(&ShadowMomentsParams::storage, moment_storage_table())
           .add({.name = "blur",
                 .type = fg::ParamType::integer,
                 .default_value = 2,

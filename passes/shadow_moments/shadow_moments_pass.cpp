@@ -34,41 +34,6 @@ const char* storage_format(VkFormat format) {
 
 }  // namespace
 
-std::string_view to_string(MomentTechnique technique) {
-  switch (technique) {
-    case MomentTechnique::vsm:
-      return "vsm";
-    case MomentTechnique::evsm2:
-      return "evsm2";
-    case MomentTechnique::evsm4:
-      return "evsm4";
-    case MomentTechnique::msm:
-      return "msm";
-    case MomentTechnique::vssm:
-      return "vssm";
-  }
-  return "vsm";
-}
-
-std::optional<MomentTechnique> parse_moment_technique(std::string_view name) {
-  for (const auto t : {MomentTechnique::vsm, MomentTechnique::evsm2, MomentTechnique::evsm4,
-                       MomentTechnique::msm, MomentTechnique::vssm}) {
-    if (name == to_string(t)) return t;
-  }
-  return std::nullopt;
-}
-
-bool is_half_moments(VkFormat format) {
-  return format == VK_FORMAT_R16G16B16A16_SFLOAT || format == VK_FORMAT_R16G16_SFLOAT;
-}
-
-std::uint32_t moment_components(MomentTechnique technique) {
-  return technique == MomentTechnique::vsm || technique == MomentTechnique::evsm2 ||
-                 technique == MomentTechnique::vssm
-             ? 2u
-             : 4u;
-}
-
 ShadowMomentsPass::ShadowMomentsPass(const fg::PlanPass& pass)
     : params_(param_table().read(pass.params)) {
 }
@@ -76,14 +41,14 @@ ShadowMomentsPass::ShadowMomentsPass(const fg::PlanPass& pass)
 void ShadowMomentsPass::prepare(fgvk::PrepareContext& context) {
   const VkFormat format = context.bindings.required_image(port::kMoments).format;
   const std::vector<gpu::ShaderDefine> defines{
-      {"MOMENTS_TECHNIQUE", std::to_string(static_cast<int>(params_.technique))},
+      {"MOMENTS_TECHNIQUE", std::to_string(static_cast<int>(params_.storage.technique))},
       {"MOMENTS_HALF", is_half_moments(format) ? "1" : "0"},
       {"MOMENTS_FORMAT", storage_format(format)},
   };
   shader_files_.clear();
   auto convert =
       load_shader(context, "shadow_moments/moments_convert.comp", shader_files_, defines);
-  const bool sat = params_.technique == MomentTechnique::vssm;
+  const bool sat = params_.storage.technique == MomentTechnique::vssm;
   auto blur = load_shader(
       context, sat ? "shadow_moments/moments_sat.comp" : "shadow_moments/moments_blur.comp",
       shader_files_, defines);
@@ -120,7 +85,8 @@ void ShadowMomentsPass::execute(fgvk::ExecuteContext& context) {
       context, blur_,
       {shadow_data, raw_.array_view(), VK_IMAGE_LAYOUT_GENERAL, out.array_view, out.layout},
       &constants, sizeof constants,
-      params_.technique == MomentTechnique::vssm ? FaceGroups{groups.span, 1, 1} : groups, layers);
+      params_.storage.technique == MomentTechnique::vssm ? FaceGroups{groups.span, 1, 1} : groups,
+      layers);
 }
 
 }  // namespace antumbra::passes

@@ -17,29 +17,20 @@
 #include "antumbra/fg/param_table.hpp"
 #include "antumbra/fgvk/pass.hpp"
 #include "antumbra/gpu/resources.hpp"
+#include "common/moment_technique.hpp"
 #include "common/pass_support.hpp"
 #include "common/scratch_array.hpp"
 
 namespace antumbra::passes {
 
-// common/moments.glsl's MOMENTS_* values.
-enum class MomentTechnique : std::uint8_t { vsm, evsm2, evsm4, msm, vssm };
-
-std::string_view to_string(MomentTechnique technique);
-std::optional<MomentTechnique> parse_moment_technique(std::string_view name);
-// Components the technique stores (2 or 4).
-std::uint32_t moment_components(MomentTechnique technique);
-// A 16-bit moment map: common/moments.glsl's MOMENTS_HALF (smaller EVSM exponents).
-bool is_half_moments(VkFormat format);
-
 struct ShadowMomentsParams {
-  MomentTechnique technique = MomentTechnique::evsm4;
+  MomentStorage storage;  // the technique (common/moment_technique.hpp)
   std::uint32_t blur = 2;
 };
 
 class ShadowMomentsPass final : public fgvk::Pass {
  public:
-  static constexpr const char* kType = "shadow-moments";
+  static constexpr std::string_view kType = kShadowMomentsType;
   static fg::PassDesc describe();
   static const fg::ParamTable<ShadowMomentsParams>& param_table();
   explicit ShadowMomentsPass(const fg::PlanPass& pass);

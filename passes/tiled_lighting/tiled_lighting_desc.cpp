@@ -1,9 +1,9 @@
 #include "common/layer_table.hpp"
 #include "common/lighting_reflection.hpp"
+#include "common/moment_technique.hpp"
 #include "common/plan_checks.hpp"
 #include "common/ports.hpp"
 #include "common/shadow_data.hpp"
-#include "shadow_moments/shadow_moments_pass.hpp"
 #include "tiled_lighting_pass.hpp"
 
 namespace antumbra::passes {
@@ -147,11 +147,10 @@ void check_moments(const fg::PlanPass& pass, const fg::Plan& plan, const fg::Gra
     return;
   }
   for (const fg::PlanPass& producer : plan.passes) {
-    if (producer.type != ShadowMomentsPass::kType ||
-        bound_index(producer, port::kMoments) != moments) {
+    if (producer.type != kShadowMomentsType || bound_index(producer, port::kMoments) != moments) {
       continue;
     }
-    const auto technique = ShadowMomentsPass::param_table().read(producer.params).technique;
+    const auto technique = moment_storage_table().read(producer.params).technique;
     if (static_cast<int>(technique) != moment_technique_index(mode)) {
       add_pass_error(graph, pass, codes::lighting::kMomentsTechnique,
                      "shadows = " + std::string(to_string(mode)) + " but '" + producer.name +
@@ -164,9 +163,9 @@ void check_moments(const fg::PlanPass& pass, const fg::Plan& plan, const fg::Gra
 
 // What the shadow mode needs bound, checked by the compiler (validate) rather than when the
 // executor prepares the pass (render), so that both accept the same graphs.
-void check(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& graph,
-           base::Diagnostics& diagnostics) {
-  const ShadowMode mode = TiledLightingPass::mode_of(pass);
+void check(const fg::PlanPass& pass, const TiledLightingParams& params, const fg::Plan& plan,
+           const fg::GraphDesc& graph, base::Diagnostics& diagnostics) {
+  const ShadowMode mode = TiledLightingPass::mode_of(pass.type, params);
   const std::string mode_at = pass.type == TiledLightingPass::kType ? "/params/shadows" : "/type";
   const auto error = [&](const char* code, const std::string& message, const std::string& at) {
     add_pass_error(graph, pass, code, message, at, diagnostics);
@@ -300,7 +299,7 @@ fg::PassDesc TiledLightingPass::describe() {
            "at contact), the upsample also weighs each texel by its agreement with the "
            "pixel's own hard bit."});
   desc.params = param_table(kType).descs();
-  desc.check = &check;
+  desc.check = param_table(kType).check(&check);
   return desc;
 }
 
@@ -311,7 +310,7 @@ fg::PassDesc TiledLightingPass::describe_hard() {
   desc.ports = lighting_ports();
   for (auto& port : atlas_ports(false)) desc.ports.push_back(std::move(port));
   desc.params = param_table(kHardType).descs();
-  desc.check = &check;
+  desc.check = param_table(kHardType).check(&check);
   return desc;
 }
 
@@ -320,6 +319,7 @@ fg::PassDesc TiledLightingPass::describe_pcf() {
   desc.type = kPcfType;
   desc.description = "Baseline: tiled lighting with percentage-closer filtering (box kernel).";
   desc.params = param_table(kPcfType).descs();
+  desc.check = param_table(kPcfType).check(&check);
   return desc;
 }
 
@@ -328,6 +328,7 @@ fg::PassDesc TiledLightingPass::describe_pcss() {
   desc.type = kPcssType;
   desc.description = "Baseline: tiled lighting with PCSS (blocker search, penumbra estimate, PCF).";
   desc.params = param_table(kPcssType).descs();
+  desc.check = param_table(kPcssType).check(&check);
   return desc;
 }
 

@@ -9,10 +9,10 @@
 #include "antumbra/gpu/pipelines.hpp"
 #include "common/frame_resources.hpp"
 #include "common/layer_table.hpp"
+#include "common/moment_technique.hpp"
 #include "common/pass_support.hpp"
 #include "common/ports.hpp"
 #include "common/shadow_data.hpp"
-#include "shadow_moments/shadow_moments_pass.hpp"
 #include "tiled_lighting_interface.h"
 
 namespace antumbra::passes {
@@ -29,16 +29,6 @@ std::uint32_t shadow_texels(const fgvk::PassBindings& bindings, ShadowMode mode)
 }
 
 }  // namespace
-
-std::optional<ShadowMode> parse_shadow_mode(std::string_view name) {
-  for (const auto mode :
-       {ShadowMode::none, ShadowMode::hard, ShadowMode::pcf, ShadowMode::pcss, ShadowMode::layered,
-        ShadowMode::vsm, ShadowMode::evsm2, ShadowMode::evsm4, ShadowMode::msm, ShadowMode::vssm,
-        ShadowMode::sdf, ShadowMode::penumbra_map}) {
-    if (name == to_string(mode)) return mode;
-  }
-  return std::nullopt;
-}
 
 std::string_view to_string(ShadowMode mode) {
   switch (mode) {
@@ -70,15 +60,15 @@ std::string_view to_string(ShadowMode mode) {
   return "none";
 }
 
-ShadowMode TiledLightingPass::mode_of(const fg::PlanPass& pass) {
-  if (pass.type == kHardType) return ShadowMode::hard;
-  if (pass.type == kPcfType) return ShadowMode::pcf;
-  if (pass.type == kPcssType) return ShadowMode::pcss;
-  return param_table(pass.type).read(pass.params).shadows;
+ShadowMode TiledLightingPass::mode_of(std::string_view type, const TiledLightingParams& params) {
+  if (type == kHardType) return ShadowMode::hard;
+  if (type == kPcfType) return ShadowMode::pcf;
+  if (type == kPcssType) return ShadowMode::pcss;
+  return params.shadows;
 }
 
 TiledLightingPass::TiledLightingPass(const fg::PlanPass& pass)
-    : params_(param_table(pass.type).read(pass.params)), mode_(mode_of(pass)) {
+    : params_(param_table(pass.type).read(pass.params)), mode_(mode_of(pass.type, params_)) {
 }
 
 void TiledLightingPass::prepare(fgvk::PrepareContext& context) {

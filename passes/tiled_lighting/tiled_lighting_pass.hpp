@@ -43,7 +43,6 @@ enum class ShadowMode : std::uint8_t {
   return is_moment_mode(mode) ? static_cast<int>(mode) - static_cast<int>(ShadowMode::vsm) : 0;
 }
 
-std::optional<ShadowMode> parse_shadow_mode(std::string_view name);
 std::string_view to_string(ShadowMode mode);
 
 struct TiledLightingParams {
@@ -73,7 +72,7 @@ class TiledLightingPass final : public fgvk::Pass {
   static const fg::ParamTable<TiledLightingParams>& param_table(std::string_view type);
 
   // The mode comes from the pass type (shadow-*) or the `shadows` parameter.
-  static ShadowMode mode_of(const fg::PlanPass& pass);
+  static ShadowMode mode_of(std::string_view type, const TiledLightingParams& params);
 
   explicit TiledLightingPass(const fg::PlanPass& pass);
 

@@ -4,6 +4,22 @@
 #include "tonemap_pass.hpp"
 
 namespace antumbra::passes {
+namespace {
+
+std::optional<fg::PortUse> port_use(const fg::PortDesc& port, const TonemapParams& params,
+                                    fg::Format format) {
+  if (port.name == port::kLdr.name() && tonemap_in_compute(params, format)) {
+    return fg::PortUse{fg::Access::storage_write, fg::Stage::compute};
+  }
+  // Which shader reads the input also depends on the target's format, which this port
+  // cannot see: with stage "compute", any shader stage waits for it.
+  if (port.name == port::kHdr.name() && params.stage == TonemapStage::compute) {
+    return fg::PortUse{fg::Access::sampled, fg::Stage::shader};
+  }
+  return std::nullopt;
+}
+
+}  // namespace
 
 fg::PassDesc TonemapPass::describe() {
   using fg::Access;
@@ -28,29 +44,14 @@ fg::PassDesc TonemapPass::describe() {
        .size_group = "screen",
        .description = "sRGB-encoded display image."},
   };
-  desc.params = param_table().descs();
-  desc.port_use = [](const fg::PortDesc& port, const fg::Json& params,
-                     fg::Format format) -> std::optional<fg::PortUse> {
-    if (port.name == port::kLdr.name() && tonemap_in_compute(params, format)) {
-      return fg::PortUse{Access::storage_write, Stage::compute};
-    }
-    if (port.name == port::kHdr.name()) {
-      // Which shader reads it also depends on the target's format, which this port
-      // cannot see: with stage "compute", any shader stage waits for it.
-      const auto stage = params.find("stage");
-      if (stage != params.end() && *stage == "compute") {
-        return fg::PortUse{Access::sampled, Stage::shader};
-      }
-    }
-    return std::nullopt;
-  };
+  const auto& table = param_table();
+  desc.params = table.descs();
+  desc.port_use = table.port_use(&port_use);
   return desc;
 }
 
-bool tonemap_in_compute(const fg::Json& params, fg::Format target) {
-  const auto stage = params.find("stage");
-  const bool wanted = stage != params.end() && *stage == "compute";
-  return wanted && target == fg::Format::rgba8;
+bool tonemap_in_compute(const TonemapParams& params, fg::Format target) {
+  return params.stage == TonemapStage::compute && target == fg::Format::rgba8;
 }
 
 const fg::ParamTable<TonemapParams>& TonemapPass::param_table() {

@@ -26,7 +26,7 @@ TonemapPass::TonemapPass(const fg::PlanPass& pass) : params_(param_table().read(
 
 void TonemapPass::prepare(fgvk::PrepareContext& context) {
   const auto& ldr = context.bindings.required_image(port::kLdr);
-  compute_ = params_.stage == TonemapStage::compute && ldr.graph_format == fg::Format::rgba8;
+  compute_ = tonemap_in_compute(params_, ldr.graph_format);
   shader_files_.clear();
   if (compute_) {
     gpu::DescriptorSetLayoutBuilder bindings;

@@ -27,7 +27,7 @@ struct TonemapParams {
 };
 
 // Whether a tonemap pass with `params` writing a `target` image runs in compute.
-bool tonemap_in_compute(const fg::Json& params, fg::Format target);
+bool tonemap_in_compute(const TonemapParams& params, fg::Format target);
 
 class TonemapPass final : public fgvk::Pass {
  public:

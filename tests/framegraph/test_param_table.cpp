@@ -1,7 +1,10 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <optional>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "antumbra/base/param_key.hpp"
 #include "antumbra/fg/param_table.hpp"
@@ -126,6 +129,79 @@ TEST(ParamTable, ARowThatContradictsItselfThrowsWhenTheTableIsBuilt) {
   EXPECT_THROW(twice(), std::logic_error);
   EXPECT_THROW(bad_choice(), std::logic_error);
   EXPECT_THROW(values_mismatch(), std::logic_error);
+}
+
+// The hooks a pass writes against its typed parameters (ParamTable::check, port_use,
+// resolve): the wrappers read the values through the table, so a hook never reads a
+// parameter by name.
+const ParamTable<Params>& static_table() {
+  static const ParamTable<Params> kTable = table();
+  return kTable;
+}
+
+TEST(ParamTable, TryReadRefusesWhatReadThrowsFor) {
+  EXPECT_EQ(static_table().try_read(Json{{"mode", "slow"}}), std::nullopt);
+  EXPECT_EQ(static_table().try_read(Json{{"scale", "big"}}), std::nullopt);  // an included row
+  const auto p = static_table().try_read(Json{{"mode", "fast"}});
+  ASSERT_TRUE(p.has_value());
+  EXPECT_EQ(p->mode, Mode::fast);
+}
+
+TEST(ParamTable, PortUseHooksSeeTypedValuesWithDefaultsFilledIn) {
+  const PortUseFn use = static_table().port_use(
+      [](const PortDesc&, const Params& p, Format format) -> std::optional<PortUse> {
+        if (p.mode != Mode::fast || format != Format::r32f) return std::nullopt;
+        return PortUse{Access::storage_write, Stage::compute};
+      });
+  const PortDesc port{.name = "out"};
+  EXPECT_FALSE(use(port, Json::object(), Format::r32f));  // default mode: exact
+  const auto fast = use(port, Json{{"mode", "fast"}}, Format::r32f);
+  ASSERT_TRUE(fast.has_value());
+  EXPECT_EQ(fast->access, Access::storage_write);
+}
+
+TEST(ParamTable, ChecksReadThePlanPassValues) {
+  const PassCheck check =
+      static_table().check([](const PlanPass& pass, const Params& p, const Plan&,
+                              const GraphDesc& graph, Diagnostics& diagnostics) {
+        if (p.taps > 8) {
+          diagnostics.add(graph.document.make("FG999", Severity::error,
+                                              pass.name + ": " + std::to_string(p.taps), ""));
+        }
+      });
+  PlanPass pass;
+  pass.name = "blur";
+  pass.params = Json{{"taps", 9}};
+  Diagnostics diagnostics;
+  check(pass, Plan{}, GraphDesc{}, diagnostics);
+  ASSERT_EQ(diagnostics.items().size(), 1u);
+  EXPECT_EQ(diagnostics.items()[0].message, "blur: 9");
+}
+
+TEST(ParamTable, ResolveWritesBackOnlyWhatTheHookChangedInTheGraphsWords) {
+  const ParamResolveFn resolve =
+      static_table().resolve([](Params& p, const PassInstanceDesc&, const GraphDesc&,
+                                const DeviceTraits*) -> std::vector<std::string> {
+        p.mode = Mode::fast;
+        return {"chose fast"};
+      });
+  PassInstanceDesc pass;
+  pass.params = Json{{"taps", 3}};
+  EXPECT_EQ(resolve(pass, GraphDesc{}, nullptr), std::vector<std::string>{"chose fast"});
+  EXPECT_EQ(pass.params, (Json{{"taps", 3}, {"mode", "fast"}}));  // no defaults written
+}
+
+TEST(ParamTable, ResolveLeavesAValueItCannotReadToTheParameterCheck) {
+  const ParamResolveFn resolve =
+      static_table().resolve([](Params& p, const PassInstanceDesc&, const GraphDesc&,
+                                const DeviceTraits*) -> std::vector<std::string> {
+        p.taps = 1;
+        return {"changed"};
+      });
+  PassInstanceDesc pass;
+  pass.params = Json{{"mode", 7}};
+  EXPECT_TRUE(resolve(pass, GraphDesc{}, nullptr).empty());
+  EXPECT_EQ(pass.params, (Json{{"mode", 7}}));
 }
 
 TEST(ParamKey, ReadsOnlyTheDeclaredType) {

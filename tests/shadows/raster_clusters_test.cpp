@@ -16,8 +16,8 @@
 #include "antumbra/scene/primitives.hpp"
 #include "antumbra/scene/scene_file.hpp"
 #include "common/frame_data.hpp"
+#include "common/rasterizer_choice.hpp"
 #include "point_shadow_atlas/raster_clusters.hpp"
-#include "point_shadow_atlas/rasterizer_choice.hpp"
 #include "register_builtin_passes.hpp"
 
 using namespace antumbra;

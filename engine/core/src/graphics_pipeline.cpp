@@ -27,19 +27,9 @@ GraphicsPipelineBuilder& GraphicsPipelineBuilder::vertex_attribute(std::uint32_t
   return *this;
 }
 
-GraphicsPipelineBuilder& GraphicsPipelineBuilder::topology(VkPrimitiveTopology topology) {
-  topology_ = topology;
-  return *this;
-}
-
 GraphicsPipelineBuilder& GraphicsPipelineBuilder::cull(VkCullModeFlags mode, VkFrontFace front) {
   cull_ = mode;
   front_ = front;
-  return *this;
-}
-
-GraphicsPipelineBuilder& GraphicsPipelineBuilder::polygon_mode(VkPolygonMode mode) {
-  polygon_mode_ = mode;
   return *this;
 }
 
@@ -57,11 +47,6 @@ GraphicsPipelineBuilder& GraphicsPipelineBuilder::depth_bias(float constant, flo
   return *this;
 }
 
-GraphicsPipelineBuilder& GraphicsPipelineBuilder::depth_clamp(bool enable) {
-  depth_clamp_ = enable;
-  return *this;
-}
-
 GraphicsPipelineBuilder& GraphicsPipelineBuilder::color_formats(std::vector<VkFormat> formats) {
   color_formats_ = std::move(formats);
   VkPipelineColorBlendAttachmentState opaque{};
@@ -76,15 +61,9 @@ GraphicsPipelineBuilder& GraphicsPipelineBuilder::depth_format(VkFormat format) 
   return *this;
 }
 
-GraphicsPipelineBuilder& GraphicsPipelineBuilder::view_mask(std::uint32_t mask) {
-  view_mask_ = mask;
-  return *this;
-}
-
 namespace {
 
-// One additive-op blend equation for colour and alpha: the three presets differ only
-// in their factors.
+// An additive-op blend equation for colour and alpha with the given factors.
 void enable_blend(VkPipelineColorBlendAttachmentState& b, VkBlendFactor src_color,
                   VkBlendFactor dst_color, VkBlendFactor src_alpha, VkBlendFactor dst_alpha) {
   b.blendEnable = VK_TRUE;
@@ -97,19 +76,6 @@ void enable_blend(VkPipelineColorBlendAttachmentState& b, VkBlendFactor src_colo
 }
 
 }  // namespace
-
-GraphicsPipelineBuilder& GraphicsPipelineBuilder::alpha_blend(std::uint32_t attachment) {
-  enable_blend(blend_.at(attachment), VK_BLEND_FACTOR_SRC_ALPHA,
-               VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA, VK_BLEND_FACTOR_ONE,
-               VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA);
-  return *this;
-}
-
-GraphicsPipelineBuilder& GraphicsPipelineBuilder::additive_blend(std::uint32_t attachment) {
-  enable_blend(blend_.at(attachment), VK_BLEND_FACTOR_ONE, VK_BLEND_FACTOR_ONE, VK_BLEND_FACTOR_ONE,
-               VK_BLEND_FACTOR_ONE);
-  return *this;
-}
 
 GraphicsPipelineBuilder& GraphicsPipelineBuilder::tint_blend(std::uint32_t attachment) {
   auto& b = blend_.at(attachment);
@@ -148,7 +114,7 @@ Pipeline GraphicsPipelineBuilder::build(Context& context, std::string_view name)
 
   VkPipelineInputAssemblyStateCreateInfo assembly{
       VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
-  assembly.topology = topology_;
+  assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
 
   VkPipelineViewportStateCreateInfo viewport{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
   viewport.viewportCount = 1;
@@ -156,10 +122,10 @@ Pipeline GraphicsPipelineBuilder::build(Context& context, std::string_view name)
 
   VkPipelineRasterizationStateCreateInfo raster{
       VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
-  raster.polygonMode = polygon_mode_;
+  raster.polygonMode = VK_POLYGON_MODE_FILL;
   raster.cullMode = cull_;
   raster.frontFace = front_;
-  raster.depthClampEnable = depth_clamp_ ? VK_TRUE : VK_FALSE;
+  raster.depthClampEnable = VK_FALSE;
   raster.depthBiasEnable = depth_bias_ ? VK_TRUE : VK_FALSE;
   raster.depthBiasConstantFactor = bias_constant_;
   raster.depthBiasSlopeFactor = bias_slope_;
@@ -186,7 +152,6 @@ Pipeline GraphicsPipelineBuilder::build(Context& context, std::string_view name)
   dynamic.pDynamicStates = dynamic_states;
 
   VkPipelineRenderingCreateInfo rendering{VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO};
-  rendering.viewMask = view_mask_;
   rendering.colorAttachmentCount = static_cast<std::uint32_t>(color_formats_.size());
   rendering.pColorAttachmentFormats = color_formats_.data();
   rendering.depthAttachmentFormat = depth_format_;

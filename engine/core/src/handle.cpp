@@ -11,14 +11,6 @@ Semaphore create_binary_semaphore(Context& context, std::string_view name) {
   return {context, semaphore, name};
 }
 
-Fence create_fence(Context& context, bool signaled, std::string_view name) {
-  VkFenceCreateInfo info{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-  info.flags = signaled ? VkFenceCreateFlags{VK_FENCE_CREATE_SIGNALED_BIT} : 0u;
-  VkFence fence = VK_NULL_HANDLE;
-  check(vkCreateFence(context.device(), &info, nullptr, &fence), "vkCreateFence");
-  return {context, fence, name};
-}
-
 CommandPool create_command_pool(Context& context, VkCommandPoolCreateFlags flags,
                                 std::string_view name) {
   VkCommandPoolCreateInfo info{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};

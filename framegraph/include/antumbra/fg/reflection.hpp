@@ -4,6 +4,7 @@
 // this, so a pass never has to say the same thing twice.
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -144,14 +145,16 @@ struct DeviceTraits {
 // (an "auto" value) before anything else is compiled, so that the barriers follow the
 // choice. `device` is null when compiling for no device. Returns one line per choice made,
 // saying what and why (reported as notes, FG076).
-using ParamResolveFn = std::vector<std::string> (*)(PassInstanceDesc& pass, const GraphDesc& graph,
-                                                    const DeviceTraits* device);
+// Passes write it against their typed parameters (ParamTable::resolve).
+using ParamResolveFn = std::function<std::vector<std::string>(
+    PassInstanceDesc& pass, const GraphDesc& graph, const DeviceTraits* device)>;
 
 // A check that spans passes and so cannot be expressed by one port or parameter (for
 // example: a layer cap larger than the layer storage downstream can hold). Runs on
 // the compiled plan; reports located diagnostics through graph.document.
-using PassCheck = void (*)(const PlanPass& pass, const Plan& plan, const GraphDesc& graph,
-                           Diagnostics& diagnostics);
+// Passes write it against their typed parameters (ParamTable::check).
+using PassCheck = std::function<void(const PlanPass& pass, const Plan& plan, const GraphDesc& graph,
+                                     Diagnostics& diagnostics)>;
 
 // How a pass touches a port under given parameters, where a parameter changes it (a
 // compute path that fills a depth attachment by copies instead of rendering it). The
@@ -162,8 +165,9 @@ struct PortUse {
 };
 // `params` holds every parameter, defaults filled in; `format` is the bound resource's
 // (undefined for a buffer or an unbound port). Nothing: the port's declared use.
-using PortUseFn = std::optional<PortUse> (*)(const PortDesc& port, const Json& params,
-                                             Format format);
+// Passes write it against their typed parameters (ParamTable::port_use).
+using PortUseFn =
+    std::function<std::optional<PortUse>(const PortDesc& port, const Json& params, Format format)>;
 
 struct PassDesc {
   std::string type;  // registry name, e.g. "gbuffer"

@@ -138,9 +138,6 @@ class Context {
                    std::array<float, 4> color = {0.f, 0.f, 0.f, 0.f}) const;
   void end_label(VkCommandBuffer cmd) const;
 
-  // The graphics debugger that captures frames in this process (RenderDoc), as the device
-  // reports it among its tools with the tracing purpose; empty when there is none.
-  [[nodiscard]] const std::string& capture_tool() const { return capture_tool_; }
   // A debugger captures from one present to the next, and headless frames have none:
   // these ask it to start and end a capture around submissions (the queue labels
   // RenderDoc acts on). No-ops without a capture tool or VK_EXT_debug_utils.
@@ -201,6 +198,8 @@ class Context {
   std::uint32_t queue_family_ = 0;
   VkPhysicalDeviceProperties properties_{};
   std::string device_name_;
+  // The graphics debugger capturing this process (RenderDoc), as the device reports it
+  // among its tools; empty when there is none (begin/end_capture are no-ops then).
   std::string capture_tool_;
   DeviceFeatures features_;
   ExtensionFunctions ext_;

@@ -69,7 +69,6 @@ using Swapchain = Handle<VkSwapchainKHR, VK_OBJECT_TYPE_SWAPCHAIN_KHR>;
 
 // Factories for the simple objects (each names what it creates).
 Semaphore create_binary_semaphore(Context& context, std::string_view name);
-Fence create_fence(Context& context, bool signaled, std::string_view name);
 CommandPool create_command_pool(Context& context, VkCommandPoolCreateFlags flags,
                                 std::string_view name);
 QueryPool create_timestamp_query_pool(Context& context, std::uint32_t count, std::string_view name);

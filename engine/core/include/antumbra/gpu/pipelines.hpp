@@ -107,20 +107,13 @@ class GraphicsPipelineBuilder {
                                           VkVertexInputRate rate = VK_VERTEX_INPUT_RATE_VERTEX);
   GraphicsPipelineBuilder& vertex_attribute(std::uint32_t location, std::uint32_t binding,
                                             VkFormat format, std::uint32_t offset);
-  GraphicsPipelineBuilder& topology(VkPrimitiveTopology topology);
   GraphicsPipelineBuilder& cull(VkCullModeFlags mode,
                                 VkFrontFace front = VK_FRONT_FACE_COUNTER_CLOCKWISE);
-  GraphicsPipelineBuilder& polygon_mode(VkPolygonMode mode);
   GraphicsPipelineBuilder& depth(bool test, bool write,
                                  VkCompareOp op = VK_COMPARE_OP_LESS_OR_EQUAL);
   GraphicsPipelineBuilder& depth_bias(float constant, float slope);  // shadow maps
-  GraphicsPipelineBuilder& depth_clamp(bool enable);
   GraphicsPipelineBuilder& color_formats(std::vector<VkFormat> formats);
   GraphicsPipelineBuilder& depth_format(VkFormat format);
-  GraphicsPipelineBuilder& view_mask(std::uint32_t mask);  // multiview
-  // Standard alpha blending on one attachment (others stay opaque).
-  GraphicsPipelineBuilder& alpha_blend(std::uint32_t attachment);
-  GraphicsPipelineBuilder& additive_blend(std::uint32_t attachment);
   // Transmittance maps: rgb = dst * src (stacked panes compose by multiplication),
   // a = min(dst, src) (the nearest pane's distance, so a pane tints only what lies
   // behind it).
@@ -139,21 +132,17 @@ class GraphicsPipelineBuilder {
   std::vector<std::string> entries_;
   std::vector<VkVertexInputBindingDescription> bindings_;
   std::vector<VkVertexInputAttributeDescription> attributes_;
-  VkPrimitiveTopology topology_ = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
   VkCullModeFlags cull_ = VK_CULL_MODE_NONE;
   VkFrontFace front_ = VK_FRONT_FACE_COUNTER_CLOCKWISE;
-  VkPolygonMode polygon_mode_ = VK_POLYGON_MODE_FILL;
   bool depth_test_ = false;
   bool depth_write_ = false;
   VkCompareOp depth_op_ = VK_COMPARE_OP_LESS_OR_EQUAL;
   bool depth_bias_ = false;
   float bias_constant_ = 0.0f;
   float bias_slope_ = 0.0f;
-  bool depth_clamp_ = false;
   std::vector<VkFormat> color_formats_;
   std::vector<VkPipelineColorBlendAttachmentState> blend_;
   VkFormat depth_format_ = VK_FORMAT_UNDEFINED;
-  std::uint32_t view_mask_ = 0;
   VkPipelineLayout layout_ = VK_NULL_HANDLE;
   VkPipelineCache cache_ = VK_NULL_HANDLE;
 };

@@ -1,0 +1,1 @@
+#include "antumbra/fg/plan.hpp"

@@ -1,0 +1,3 @@
+#include <vulkan/vulkan.h>
+
+#include "antumbra/fg/plan.hpp"

@@ -1,0 +1,2 @@
+#version 460
+#include "../beta/beta.glsl"

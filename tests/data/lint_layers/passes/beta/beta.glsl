@@ -1,0 +1,1 @@
+// A shader helper of pass beta.

@@ -1,0 +1,3 @@
+#include "alpha/alpha_pass.hpp"
+#include "antumbra/fg/plan.hpp"
+#include "commands.hpp"
