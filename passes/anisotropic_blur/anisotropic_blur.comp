@@ -31,7 +31,9 @@ layout(local_size_x = ANTUMBRA_IMAGE_GROUP, local_size_y = ANTUMBRA_IMAGE_GROUP)
 #include "../common/frame.glsl"
 #include "anisotropic_blur_interface.h"
 
-layout(set = 0, binding = kBlurFrame) uniform Frame { FrameUniforms frame; };
+layout(set = 0, binding = kBlurFrame) uniform Frame {
+  FrameUniforms frame;
+};
 #include "../common/view_space.glsl"
 layout(set = 0, binding = kBlurDepth) uniform sampler2D g_depth;
 layout(set = 0, binding = kBlurNormal) uniform sampler2D g_normal;
@@ -39,7 +41,8 @@ layout(set = 0, binding = kBlurPenumbra) uniform sampler2DArray penumbra;
 #if defined(FROM_HARD_BITS)
 layout(set = 0, binding = kBlurInput) uniform usampler2D hard_bits;
 #elif defined(FROM_ESM)
-layout(set = 0, binding = kBlurInput) uniform sampler2DArray esm;  // full resolution, 4 layers per texel
+// Full resolution, 4 layers per texel.
+layout(set = 0, binding = kBlurInput) uniform sampler2DArray esm;
 #else
 layout(set = 0, binding = kBlurInput) uniform sampler2DArray source;
 #endif
@@ -138,8 +141,8 @@ void main() {
     ivec2 at = ivec2(clamp(line_start + i, 0, out_size.x - 1), row);
     ivec2 at_full = min(at * scale, full_size - 1);
     bool background = texelFetch(g_depth, at_full, 0).r >= 1.0;
-    line_surface[i] = background ? vec4(0.0, 0.0, 0.0, -1.0)
-                                 : vec4(view_normal(at_full), linear_depth(at_full));
+    line_surface[i] =
+        background ? vec4(0.0, 0.0, 0.0, -1.0) : vec4(view_normal(at_full), linear_depth(at_full));
   }
   // line_index() reads the cache by clamped x only: keep it to this row's clamped texels.
   bool inside = all(lessThan(pixel, out_size));

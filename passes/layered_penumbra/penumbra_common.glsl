@@ -29,9 +29,9 @@ PenumbraSample estimate_penumbra(ShadowLight light, vec3 world, vec3 n_world, bo
   ShadowPick pick = shadow_pick(light, world);
   if (pick.layer < 0) return result;
   float face_size = shadow_face_texels(light, float(shadow_header.counts.z));
-  ShadowLookup q = shadow_offset_lookup(
-      light, pick.next >= 0 && dither < pick.blend ? pick.next : pick.layer, world, n_world,
-      face_size);
+  ShadowLookup q =
+      shadow_offset_lookup(light, pick.next >= 0 && dither < pick.blend ? pick.next : pick.layer,
+                           world, n_world, face_size);
   ShadowLight sl = q.light;
   float light_size = sl.params.x * light_size_scale;
   ShadowCoord c = shadow_coord(faces[q.layer].view_proj, sl, q.layer, q.position);
@@ -76,10 +76,9 @@ PenumbraSample estimate_penumbra(ShadowLight light, vec3 world, vec3 n_world, bo
   bool ortho = shadow_is_ortho(sl);
   float z_receiver = c.linear;
   float texel = 1.0 / face_size;
-  float radius = ortho ? clamp(search_scale * light_size * z_receiver / (2.0 * sl.projection.x),
-                               texel, 0.25)
-                       : clamp(search_scale * light_size / (z_receiver * sl.projection.x),
-                               texel, 0.25);
+  float radius =
+      ortho ? clamp(search_scale * light_size * z_receiver / (2.0 * sl.projection.x), texel, 0.25)
+            : clamp(search_scale * light_size / (z_receiver * sl.projection.x), texel, 0.25);
   int taps = int(search_taps);
   float step_uv = taps > 1 ? 2.0 * radius / float(taps - 1) : 0.0;
   float blocker_sum = 0.0;

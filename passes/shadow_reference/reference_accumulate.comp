@@ -27,18 +27,28 @@
 #include "../interface/shared/workgroups.h"
 layout(local_size_x = ANTUMBRA_IMAGE_GROUP, local_size_y = ANTUMBRA_IMAGE_GROUP) in;
 
-layout(set = 0, binding = kRefAccumulateFrame) uniform Frame { FrameUniforms frame; };
+layout(set = 0, binding = kRefAccumulateFrame) uniform Frame {
+  FrameUniforms frame;
+};
 #include "../common/view_space.glsl"
-layout(set = 0, binding = kRefAccumulateLights, std430) readonly buffer Lights { GpuLight lights[]; };
+layout(set = 0, binding = kRefAccumulateLights, std430) readonly buffer Lights {
+  GpuLight lights[];
+};
 layout(set = 0, binding = kRefAccumulateDepth) uniform sampler2D g_depth;
 layout(set = 0, binding = kRefAccumulateNormal) uniform sampler2D g_normal;
 layout(set = 0, binding = kRefAccumulateFaces) uniform sampler2DArray faces;
-layout(set = 0, binding = kRefAccumulatePoints, std430) readonly buffer Points { vec4 points[]; };
+layout(set = 0, binding = kRefAccumulatePoints, std430) readonly buffer Points {
+  vec4 points[];
+};
 // Per (slot, pixel) two vec4: (weight * rgb visibility, weight) and
 // (weight * opaque visibility, weight * untinted visibility, 0, 0).
-layout(set = 0, binding = kRefAccumulateVisibility, std430) buffer Visibility { vec4 visibility[]; };
+layout(set = 0, binding = kRefAccumulateVisibility, std430) buffer Visibility {
+  vec4 visibility[];
+};
 layout(set = 0, binding = kRefAccumulateTints) uniform sampler2DArray tints;
-layout(set = 0, binding = kRefAccumulateMatrices, std430) readonly buffer Matrices { mat4 matrices[]; };
+layout(set = 0, binding = kRefAccumulateMatrices, std430) readonly buffer Matrices {
+  mat4 matrices[];
+};
 
 // A tint this close to white is no tint.
 const float kUntinted = 0.998;

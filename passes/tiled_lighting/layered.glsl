@@ -171,8 +171,9 @@ void layered_fetch(ivec2 pixel) {
 }
 
 vec3 unpack_tint(uint packed) {
-  vec4 c = vec4((packed >> 24) & 0xFFu, (packed >> 16) & 0xFFu, (packed >> 8) & 0xFFu,
-                packed & 0xFFu) / 255.0;
+  vec4 c =
+      vec4((packed >> 24) & 0xFFu, (packed >> 16) & 0xFFu, (packed >> 8) & 0xFFu, packed & 0xFFu) /
+      255.0;
   return mix(vec3(1.0), c.rgb, c.a);
 }
 
