@@ -128,6 +128,36 @@ vec4 tap_input(ivec2 tap, uint slot, ivec2 full_size, ivec2 scale) {
   return visibility(tap, slot, full_size, scale);
 }
 
+// The Gaussian along `direction` for the four layers of slot `s`, each over its own
+// radius; taps on another surface (the background, a depth jump, a crease) are left out,
+// so one object's shadow does not bleed onto another.
+vec4 blur_layers(ivec2 pixel, uint s, vec4 radius, float z_centre, vec3 n_view, ivec2 out_size,
+                 ivec2 full_size, ivec2 scale) {
+  vec4 centre = tap_input(pixel, s, full_size, scale);
+  vec4 sum = centre;
+  vec4 weight_sum = vec4(1.0);
+  float sigma = max(float(half_taps) * 0.5, 0.5);
+  for (int t = 1; t <= int(half_taps); ++t) {
+    float w_tap = exp(-0.5 * float(t * t) / (sigma * sigma));
+    for (int side = -1; side <= 1; side += 2) {
+      // Each layer has its own radius: taps are spaced so the kernel spans it.
+      vec4 offset = radius * (float(side * t) / float(half_taps));
+      for (uint c = 0u; c < 4u; ++c) {
+        if (s * 4u + c >= layers || radius[c] < 0.5) continue;
+        ivec2 tap = ivec2(round(vec2(pixel) + direction * offset[c]));
+        tap = clamp(tap, ivec2(0), out_size - 1);
+        vec4 there = tap_surface(tap, full_size, scale);
+        if (there.w < 0.0) continue;
+        if (abs(there.w - z_centre) > depth_threshold * z_centre) continue;
+        if (dot(there.xyz, n_view) < normal_threshold) continue;
+        sum[c] += w_tap * tap_input(tap, s, full_size, scale)[c];
+        weight_sum[c] += w_tap;
+      }
+    }
+  }
+  return sum / weight_sum;
+}
+
 void main() {
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
   ivec2 out_size = imageSize(shadow_out).xy;
@@ -184,28 +214,7 @@ void main() {
     if (scale == ivec2(1)) {
       radius = mix(radius, max(radius, vec4(1.0)), greaterThan(width, vec4(0.0)));
     }
-    vec4 centre = tap_input(pixel, s, full_size, scale);
-    vec4 sum = centre;
-    vec4 weight_sum = vec4(1.0);
-    float sigma = max(float(half_taps) * 0.5, 0.5);
-    for (int t = 1; t <= int(half_taps); ++t) {
-      float w_tap = exp(-0.5 * float(t * t) / (sigma * sigma));
-      for (int side = -1; side <= 1; side += 2) {
-        // Each layer has its own radius: taps are spaced so the kernel spans it.
-        vec4 offset = radius * (float(side * t) / float(half_taps));
-        for (uint c = 0u; c < 4u; ++c) {
-          if (s * 4u + c >= layers || radius[c] < 0.5) continue;
-          ivec2 tap = ivec2(round(vec2(pixel) + direction * offset[c]));
-          tap = clamp(tap, ivec2(0), out_size - 1);
-          vec4 there = tap_surface(tap, full_size, scale);
-          if (there.w < 0.0) continue;
-          if (abs(there.w - z_centre) > depth_threshold * z_centre) continue;
-          if (dot(there.xyz, n_view) < normal_threshold) continue;
-          sum[c] += w_tap * tap_input(tap, s, full_size, scale)[c];
-          weight_sum[c] += w_tap;
-        }
-      }
-    }
-    imageStore(shadow_out, ivec3(pixel, int(s)), sum / weight_sum);
+    imageStore(shadow_out, ivec3(pixel, int(s)),
+               blur_layers(pixel, s, radius, z_centre, n_view, out_size, full_size, scale));
   }
 }
