@@ -48,12 +48,14 @@ fuzz: deps
 	$(FUZZ_BUILD)/fuzz/antumbra_fuzz_graph -max_total_time=$(FUZZ_SECONDS) -dict=fuzz/graph.dict \
 	  $(FUZZ_BUILD)/corpus fuzz/corpus
 
-# clang-format (no diff) and clang-tidy (.clang-tidy, every warning an error) over the
-# project's own sources; clean results are cached outside the clone (scripts/lint.py).
+# clang-format (no diff; C++ and GLSL), GLSL function lengths and clang-tidy (.clang-tidy,
+# every warning an error) over the project's own sources; clean results are cached outside
+# the clone (scripts/lint.py).
 lint: configure
 	@python3 scripts/lint.py --build $(BUILD) --jobs $(JOBS)
 
-# The clang-format half of lint alone (seconds; no configure needed).
+# The clang-format half of lint alone, GLSL function lengths included (seconds; no configure
+# needed).
 format-check:
 	@python3 scripts/lint.py --format-only
 

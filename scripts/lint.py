@@ -3,6 +3,10 @@
 
 clang-format: every tracked .cpp/.hpp/.h file must already be formatted (no diff).
 Layers: the include rules of docs/architecture.md (scripts/lint_layers.py).
+GLSL: every tracked shader (.comp .frag .vert .glsl ...) must be formatted by the same
+.clang-format, and no function in a shader or in a header the shaders share with C++
+(passes/**/*_interface.h, passes/interface/shared/*.h) may exceed 80 lines, counted as
+clang-tidy counts C++ functions. Both run in --format-only too (make format-check).
 Vulkan 1.3 core commands: no source calls those a Vulkan 1.2 device offers only through
 extensions (vkCmdBeginRendering, ...); they go through engine/core's vk_commands.hpp.
 clang-tidy: every translation unit of the build's compile_commands.json that lives in the
@@ -41,15 +45,157 @@ def tracked_sources():
     return [line for line in out.splitlines() if line]
 
 
-def check_format(files):
-    result = run(["clang-format", "--dry-run", "--Werror", *files], cwd=ROOT)
+def check_format(files, what="", extra=()):
+    result = run(["clang-format", "--dry-run", "--Werror", *extra, *files], cwd=ROOT)
     if result.returncode != 0:
         sys.stderr.write(result.stderr)
-        sys.stderr.write("lint: clang-format: the files above are not formatted "
-                         "(run clang-format -i on them)\n")
+        sys.stderr.write(f"lint: clang-format{what}: the files above are not formatted "
+                         f"(run clang-format -i {' '.join(extra)} on them)\n")
         return False
-    print(f"lint: clang-format: {len(files)} files formatted")
+    print(f"lint: clang-format{what}: {len(files)} files formatted")
     return True
+
+
+# Shaders, and the headers the shaders share with C++ (docs/architecture.md, "One source for
+# CPU and GPU"; the C++ stage formats those). tests/lint/ holds deliberately broken shaders
+# that tests/lint feeds in by name.
+GLSL_STAGES = ["*.comp", "*.frag", "*.vert", "*.geom", "*.tesc", "*.tese", "*.glsl"]
+GLSL_HEADERS = ["passes/*_interface.h", "passes/interface/shared/*.h"]
+GLSL_FIXTURES = "tests/lint/"
+# clang-tidy's readability-function-size.LineThreshold in .clang-tidy.
+MAX_FUNCTION_LINES = 80
+
+
+def tracked_glsl():
+    out = run(["git", "ls-files", *GLSL_STAGES, *GLSL_HEADERS], cwd=ROOT, check=True).stdout
+    return [line for line in out.splitlines() if line and not line.startswith(GLSL_FIXTURES)]
+
+
+def check_glsl_format(files):
+    """clang-format reads the shaders as C++ (it does for these extensions) with the C++ style.
+
+    Include sorting is off: in GLSL a #include is pasted text, and several shaders define
+    macros or declare blocks that a later include reads, so their order is meaning.
+    """
+    stages = [f for f in files if not f.endswith(".h")]
+    return check_format(stages, " (GLSL)", ("--sort-includes=false",)) if stages else True
+
+
+def strip_comments(text):
+    """The text with comments and string literals blanked, newlines kept (for line numbers)."""
+    pattern = re.compile(r'//[^\n]*|/\*.*?\*/|"(?:\\.|[^"\\\n])*"', re.S)
+    return pattern.sub(lambda m: re.sub(r"[^\n]", " ", m.group(0)), text)
+
+
+# The head of a function definition: a return type, the name and the parameters, then "{".
+# ANTUMBRA_PUSH_CONSTANTS(Name) { has no type before its "name", so it is no function.
+FUNCTION_HEAD = re.compile(r"(?:^|[\s;])(?!return\b|else\b)[A-Za-z_]\w*(?:\s*\[[^\]]*\])?"
+                           r"\s+([A-Za-z_]\w*)\s*\((?:[^;{}()]|\([^;{}()]*\))*\)\s*(?:const\s*)?$")
+
+
+class BraceState:
+    """The open braces, each None or the function it opens (name, the name's line, the
+    brace's line), and the text read since the last statement or brace (the head)."""
+
+    def __init__(self):
+        self.stack = []
+        self.head = ""
+
+    def copy(self):
+        other = BraceState()
+        other.stack = list(self.stack)
+        other.head = self.head
+        return other
+
+
+def directive(state, line, conditionals):
+    """Preprocessor conditionals: every arm is read, each starting from the state before the
+    #if, and after #endif the first arm's state goes on (arms balance their braces alike)."""
+    word = re.match(r"\s*#\s*(\w*)", line).group(1)
+    if word in ("if", "ifdef", "ifndef"):
+        conditionals.append([state.copy(), None])
+    elif word in ("elif", "else") and conditionals:
+        if conditionals[-1][1] is None:
+            conditionals[-1][1] = state.copy()
+        return conditionals[-1][0].copy()
+    elif word == "endif" and conditionals:
+        _, first_arm = conditionals.pop()
+        return first_arm if first_arm is not None else state
+    state.head = ""
+    return state
+
+
+def code(state, text, number, functions):
+    for char in text:
+        if char == "{":
+            inside = any(entry is not None for entry in state.stack)
+            match = None if inside else FUNCTION_HEAD.search(state.head)
+            # clang-tidy reports at the name; the head may span lines.
+            name_line = number - state.head[match.start(1):].count("\n") if match else 0
+            state.stack.append((match.group(1), name_line, number) if match else None)
+            state.head = ""
+        elif char == "}":
+            entry = state.stack.pop() if state.stack else None
+            if entry is not None:
+                functions.append((entry[1], entry[0], number - entry[2]))
+            state.head = ""
+        elif char == ";":
+            state.head = ""
+        else:
+            state.head += char
+    state.head += "\n"
+
+
+def glsl_functions(text):
+    """(line of the name, name, lines) of every function definition in the text.
+
+    Lines are counted as clang-tidy's readability-function-size counts them for
+    LineThreshold: the line of the closing brace minus the line of the opening one, blank
+    and comment lines included. #define bodies are skipped (a macro is no function).
+    """
+    state = BraceState()
+    conditionals = []
+    functions = []
+    continued = False
+    for number, line in enumerate(strip_comments(text).splitlines(), 1):
+        in_directive = continued or line.lstrip().startswith("#")
+        if in_directive and not continued:
+            state = directive(state, line, conditionals)
+        elif not in_directive:
+            code(state, line, number, functions)
+        continued = in_directive and line.rstrip().endswith("\\")
+    return functions
+
+
+def check_glsl_function_size(files):
+    failures = 0
+    count = 0
+    for name in files:
+        functions = glsl_functions((ROOT / name).read_text())
+        count += len(functions)
+        for line, function, lines in functions:
+            if lines <= MAX_FUNCTION_LINES:
+                continue
+            failures += 1
+            sys.stderr.write(f"{name}:{line}: function '{function}' has {lines} lines "
+                             f"(max {MAX_FUNCTION_LINES}): split it into named helpers\n")
+    if failures:
+        sys.stderr.write(f"lint: {failures} GLSL function(s) longer than {MAX_FUNCTION_LINES} "
+                         "lines\n")
+        return False
+    print(f"lint: GLSL: {count} functions in {len(files)} files, each at most "
+          f"{MAX_FUNCTION_LINES} lines")
+    return True
+
+
+def check_glsl(files):
+    missing = [name for name in files if not (ROOT / name).is_file()]
+    if missing:
+        sys.stderr.write(f"lint: no such GLSL file (paths are relative to {ROOT}): "
+                         f"{', '.join(missing)}\n")
+        return False
+    ok = check_glsl_format(files)
+    return check_glsl_function_size(files) and ok
 
 
 # Vulkan 1.3 commands that a 1.2 device (RenderDoc 1.24 reports every device as one) has
@@ -166,13 +312,18 @@ def main():
     parser.add_argument("--build", default=os.environ.get("BUILD", "build"))
     parser.add_argument("--jobs", type=int, default=os.cpu_count() or 2)
     parser.add_argument("--format-only", action="store_true")
+    parser.add_argument("--glsl", nargs="*", metavar="FILE",
+                        help="only the GLSL checks, over FILEs (default: every tracked shader)")
     args = parser.parse_args()
+    if args.glsl is not None:
+        return 0 if check_glsl(args.glsl or tracked_glsl()) else 1
     cache = Path(os.environ.get("ANTUMBRA_TIDY_CACHE",
                                 Path.home() / ".cache" / "antumbra-tidy"))
     sources = tracked_sources()
     ok = check_format(sources)
     ok = check_promoted_commands(sources) and ok
     ok = lint_layers.report(ROOT) and ok
+    ok = check_glsl(tracked_glsl()) and ok
     if not args.format_only:
         ok = check_tidy((ROOT / args.build).resolve() if not Path(args.build).is_absolute()
                         else Path(args.build), args.jobs, cache) and ok

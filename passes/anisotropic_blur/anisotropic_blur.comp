@@ -31,7 +31,9 @@ layout(local_size_x = ANTUMBRA_IMAGE_GROUP, local_size_y = ANTUMBRA_IMAGE_GROUP)
 #include "../common/frame.glsl"
 #include "anisotropic_blur_interface.h"
 
-layout(set = 0, binding = kBlurFrame) uniform Frame { FrameUniforms frame; };
+layout(set = 0, binding = kBlurFrame) uniform Frame {
+  FrameUniforms frame;
+};
 #include "../common/view_space.glsl"
 layout(set = 0, binding = kBlurDepth) uniform sampler2D g_depth;
 layout(set = 0, binding = kBlurNormal) uniform sampler2D g_normal;
@@ -39,7 +41,8 @@ layout(set = 0, binding = kBlurPenumbra) uniform sampler2DArray penumbra;
 #if defined(FROM_HARD_BITS)
 layout(set = 0, binding = kBlurInput) uniform usampler2D hard_bits;
 #elif defined(FROM_ESM)
-layout(set = 0, binding = kBlurInput) uniform sampler2DArray esm;  // full resolution, 4 layers per texel
+// Full resolution, 4 layers per texel.
+layout(set = 0, binding = kBlurInput) uniform sampler2DArray esm;
 #else
 layout(set = 0, binding = kBlurInput) uniform sampler2DArray source;
 #endif
@@ -125,6 +128,36 @@ vec4 tap_input(ivec2 tap, uint slot, ivec2 full_size, ivec2 scale) {
   return visibility(tap, slot, full_size, scale);
 }
 
+// The Gaussian along `direction` for the four layers of slot `s`, each over its own
+// radius; taps on another surface (the background, a depth jump, a crease) are left out,
+// so one object's shadow does not bleed onto another.
+vec4 blur_layers(ivec2 pixel, uint s, vec4 radius, float z_centre, vec3 n_view, ivec2 out_size,
+                 ivec2 full_size, ivec2 scale) {
+  vec4 centre = tap_input(pixel, s, full_size, scale);
+  vec4 sum = centre;
+  vec4 weight_sum = vec4(1.0);
+  float sigma = max(float(half_taps) * 0.5, 0.5);
+  for (int t = 1; t <= int(half_taps); ++t) {
+    float w_tap = exp(-0.5 * float(t * t) / (sigma * sigma));
+    for (int side = -1; side <= 1; side += 2) {
+      // Each layer has its own radius: taps are spaced so the kernel spans it.
+      vec4 offset = radius * (float(side * t) / float(half_taps));
+      for (uint c = 0u; c < 4u; ++c) {
+        if (s * 4u + c >= layers || radius[c] < 0.5) continue;
+        ivec2 tap = ivec2(round(vec2(pixel) + direction * offset[c]));
+        tap = clamp(tap, ivec2(0), out_size - 1);
+        vec4 there = tap_surface(tap, full_size, scale);
+        if (there.w < 0.0) continue;
+        if (abs(there.w - z_centre) > depth_threshold * z_centre) continue;
+        if (dot(there.xyz, n_view) < normal_threshold) continue;
+        sum[c] += w_tap * tap_input(tap, s, full_size, scale)[c];
+        weight_sum[c] += w_tap;
+      }
+    }
+  }
+  return sum / weight_sum;
+}
+
 void main() {
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
   ivec2 out_size = imageSize(shadow_out).xy;
@@ -138,8 +171,8 @@ void main() {
     ivec2 at = ivec2(clamp(line_start + i, 0, out_size.x - 1), row);
     ivec2 at_full = min(at * scale, full_size - 1);
     bool background = texelFetch(g_depth, at_full, 0).r >= 1.0;
-    line_surface[i] = background ? vec4(0.0, 0.0, 0.0, -1.0)
-                                 : vec4(view_normal(at_full), linear_depth(at_full));
+    line_surface[i] =
+        background ? vec4(0.0, 0.0, 0.0, -1.0) : vec4(view_normal(at_full), linear_depth(at_full));
   }
   // line_index() reads the cache by clamped x only: keep it to this row's clamped texels.
   bool inside = all(lessThan(pixel, out_size));
@@ -181,28 +214,7 @@ void main() {
     if (scale == ivec2(1)) {
       radius = mix(radius, max(radius, vec4(1.0)), greaterThan(width, vec4(0.0)));
     }
-    vec4 centre = tap_input(pixel, s, full_size, scale);
-    vec4 sum = centre;
-    vec4 weight_sum = vec4(1.0);
-    float sigma = max(float(half_taps) * 0.5, 0.5);
-    for (int t = 1; t <= int(half_taps); ++t) {
-      float w_tap = exp(-0.5 * float(t * t) / (sigma * sigma));
-      for (int side = -1; side <= 1; side += 2) {
-        // Each layer has its own radius: taps are spaced so the kernel spans it.
-        vec4 offset = radius * (float(side * t) / float(half_taps));
-        for (uint c = 0u; c < 4u; ++c) {
-          if (s * 4u + c >= layers || radius[c] < 0.5) continue;
-          ivec2 tap = ivec2(round(vec2(pixel) + direction * offset[c]));
-          tap = clamp(tap, ivec2(0), out_size - 1);
-          vec4 there = tap_surface(tap, full_size, scale);
-          if (there.w < 0.0) continue;
-          if (abs(there.w - z_centre) > depth_threshold * z_centre) continue;
-          if (dot(there.xyz, n_view) < normal_threshold) continue;
-          sum[c] += w_tap * tap_input(tap, s, full_size, scale)[c];
-          weight_sum[c] += w_tap;
-        }
-      }
-    }
-    imageStore(shadow_out, ivec3(pixel, int(s)), sum / weight_sum);
+    imageStore(shadow_out, ivec3(pixel, int(s)),
+               blur_layers(pixel, s, radius, z_centre, n_view, out_size, full_size, scale));
   }
 }

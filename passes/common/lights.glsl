@@ -7,7 +7,9 @@
 
 #include "../interface/shared/scene_data.h"
 
-bool light_is_directional(GpuLight light) { return light.direction_type.w > 1.5; }
+bool light_is_directional(GpuLight light) {
+  return light.direction_type.w > 1.5;
+}
 bool light_is_spot(GpuLight light) {
   return light.direction_type.w > 0.5 && light.direction_type.w < 1.5;
 }

@@ -24,7 +24,9 @@ layout(set = 0, binding = MATERIAL_LINEAR_TEXTURES) uniform texture2DArray
 #endif
 layout(set = 0, binding = MATERIAL_SAMPLER) uniform sampler material_sampler;
 
-bool texture_present(uint code) { return (code & kTexturePresent) != 0u; }
+bool texture_present(uint code) {
+  return (code & kTexturePresent) != 0u;
+}
 
 // The slot's texture coordinates (its set, then its KHR_texture_transform) from both
 // sets (xy, zw); with `offset` 0, the same for a gradient of them.
@@ -46,22 +48,22 @@ float wrap_coordinate(float u, uint mode, float half_texel) {
   return u;
 }
 
-#define MATERIAL_SAMPLE_ARRAY(arrays, b)                                                       \
+#define MATERIAL_SAMPLE_ARRAY(arrays, b) \
   textureGrad(sampler2DArray(arrays[b], material_sampler), p, dx, dy)
 
-#define MATERIAL_SAMPLE_SWITCH(arrays)   \
-  switch (bucket) {                      \
-    case 0u:                             \
+#define MATERIAL_SAMPLE_SWITCH(arrays)         \
+  switch (bucket) {                            \
+    case 0u:                                   \
       return MATERIAL_SAMPLE_ARRAY(arrays, 0); \
-    case 1u:                             \
+    case 1u:                                   \
       return MATERIAL_SAMPLE_ARRAY(arrays, 1); \
-    case 2u:                             \
+    case 2u:                                   \
       return MATERIAL_SAMPLE_ARRAY(arrays, 2); \
-    case 3u:                             \
+    case 3u:                                   \
       return MATERIAL_SAMPLE_ARRAY(arrays, 3); \
-    case 4u:                             \
+    case 4u:                                   \
       return MATERIAL_SAMPLE_ARRAY(arrays, 4); \
-    default:                             \
+    default:                                   \
       return MATERIAL_SAMPLE_ARRAY(arrays, 5); \
   }
 
@@ -85,8 +87,7 @@ vec4 sample_material_texture(uint code, vec2 uv, vec2 dx, vec2 dy, bool srgb) {
 }
 
 // Samples a material slot: coordinates and their screen gradients of both sets.
-vec4 sample_slot(GpuMaterial m, uint slot, uint code, vec4 uv01, vec4 dx01, vec4 dy01,
-                 bool srgb) {
+vec4 sample_slot(GpuMaterial m, uint slot, uint code, vec4 uv01, vec4 dx01, vec4 dy01, bool srgb) {
   return sample_material_texture(code, slot_uv(m, slot, code, uv01, 1.0),
                                  slot_uv(m, slot, code, dx01, 0.0),
                                  slot_uv(m, slot, code, dy01, 0.0), srgb);

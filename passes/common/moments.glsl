@@ -27,7 +27,9 @@
 
 // Positive and negative EVSM exponents: 40 / 5 for 32-bit floats (e^80 stays far below
 // 3.4e38), 5.54 for halves (e^(2 * 5.54) = 65 500, the largest half).
-vec2 evsm_exponents() { return MOMENTS_HALF != 0 ? vec2(5.54) : vec2(40.0, 5.0); }
+vec2 evsm_exponents() {
+  return MOMENTS_HALF != 0 ? vec2(5.54) : vec2(40.0, 5.0);
+}
 
 vec4 moments_encode(float t) {
 #if MOMENTS_TECHNIQUE == MOMENTS_VSM || MOMENTS_TECHNIQUE == MOMENTS_VSSM

@@ -8,9 +8,9 @@
 #include "lights.glsl"
 
 struct Surface {
-  vec3 p;          // view-space position
-  vec3 n;          // view-space normal (unit)
-  vec3 v;          // unit vector to the eye
+  vec3 p;  // view-space position
+  vec3 n;  // view-space normal (unit)
+  vec3 v;  // unit vector to the eye
   vec3 albedo;
   float shininess;
 };

@@ -87,7 +87,9 @@ uint shadow_cube_face(vec3 d) {
   return d.z >= 0.0 ? 4u : 5u;
 }
 
-bool shadow_is_ortho(ShadowLight l) { return l.direction_type.w > 1.5; }
+bool shadow_is_ortho(ShadowLight l) {
+  return l.direction_type.w > 1.5;
+}
 
 // Filter taps near a cascade's edge would read clamped edge texels: a cascade is only
 // used where the point lies this far inside its square (fraction of the half width).
@@ -237,8 +239,8 @@ float shadow_hard(sampler2DArray atlas, ShadowLight l, vec3 world_pos, vec3 norm
   if (pick.layer < 0) return 1.0;
   ShadowLookup q = shadow_offset_lookup(l, pick.layer, world_pos, normal,
                                         shadow_face_texels(l, float(textureSize(atlas, 0).x)));
-  return shadow_hard_coord(atlas,
-                           shadow_coord(SHADOW_FACES[q.layer].view_proj, q.light, q.layer, q.position));
+  return shadow_hard_coord(
+      atlas, shadow_coord(SHADOW_FACES[q.layer].view_proj, q.light, q.layer, q.position));
 }
 #endif
 

@@ -15,7 +15,9 @@ layout(local_size_x = ANTUMBRA_IMAGE_GROUP, local_size_y = ANTUMBRA_IMAGE_GROUP)
 #define ANTUMBRA_CASCADE_VIEW_SHADER
 #include "debug_views_interface.h"
 
-layout(set = 0, binding = kCascadeViewFrame) uniform Frame { FrameUniforms frame; };
+layout(set = 0, binding = kCascadeViewFrame) uniform Frame {
+  FrameUniforms frame;
+};
 layout(set = 0, binding = kCascadeViewShadowData) readonly buffer Shadows {
   ShadowHeader shadow_header;
   ShadowLight shadow_lights[ANTUMBRA_MAX_SHADOW_LIGHTS];
@@ -30,8 +32,8 @@ layout(set = 0, binding = kCascadeViewOut, rgba8) uniform writeonly image2D view
 #include "../common/shadow_sampling.glsl"
 #include "../common/view_space.glsl"
 
-const vec3 kCascadeColours[4] =
-    vec3[4](vec3(0.9, 0.25, 0.2), vec3(0.3, 0.8, 0.3), vec3(0.25, 0.45, 0.95), vec3(0.95, 0.85, 0.2));
+const vec3 kCascadeColours[4] = vec3[4](vec3(0.9, 0.25, 0.2), vec3(0.3, 0.8, 0.3),
+                                        vec3(0.25, 0.45, 0.95), vec3(0.95, 0.85, 0.2));
 
 int sun_index() {
   uint count = min(shadow_header.counts.x, uint(ANTUMBRA_MAX_SHADOW_LIGHTS));

@@ -27,8 +27,9 @@ vec3 turbo(float t) {
   t = clamp(t, 0.0, 1.0);
   vec4 v4 = vec4(1.0, t, t * t, t * t * t);
   vec2 v2 = v4.zw * v4.z;
-  return clamp(vec3(dot(v4, kr) + dot(v2, kr2), dot(v4, kg) + dot(v2, kg2),
-                    dot(v4, kb) + dot(v2, kb2)), 0.0, 1.0);
+  return clamp(
+      vec3(dot(v4, kr) + dot(v2, kr2), dot(v4, kg) + dot(v2, kg2), dot(v4, kb) + dot(v2, kb2)), 0.0,
+      1.0);
 }
 
 #endif

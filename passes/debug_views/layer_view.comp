@@ -16,8 +16,12 @@
 #define ANTUMBRA_LAYER_VIEW_SHADER
 #include "debug_views_interface.h"
 
-layout(set = 0, binding = kLayerViewFrame) uniform Frame { FrameUniforms frame; };
-layout(set = 0, binding = kLayerViewLights) readonly buffer Lights { GpuLight lights[]; };
+layout(set = 0, binding = kLayerViewFrame) uniform Frame {
+  FrameUniforms frame;
+};
+layout(set = 0, binding = kLayerViewLights) readonly buffer Lights {
+  GpuLight lights[];
+};
 layout(set = 0, binding = kLayerViewLayerTable) readonly buffer Layers {
   LayerTableHeader layer_header;
   uint layer_of[ANTUMBRA_MAX_SHADOW_LIGHTS];

@@ -7,8 +7,12 @@
 
 // Untiled deferred shading of every scene light (point, spot, directional), no shadows:
 // the reference lighting that shadow techniques multiply into.
-layout(set = 0, binding = kDeferredFrame) uniform Frame { FrameUniforms frame; };
-layout(set = 0, binding = kDeferredLights) readonly buffer Lights { GpuLight lights[]; };
+layout(set = 0, binding = kDeferredFrame) uniform Frame {
+  FrameUniforms frame;
+};
+layout(set = 0, binding = kDeferredLights) readonly buffer Lights {
+  GpuLight lights[];
+};
 layout(set = 0, binding = kDeferredDepth) uniform sampler2D g_depth;
 layout(set = 0, binding = kDeferredNormal) uniform sampler2D g_normal;
 layout(set = 0, binding = kDeferredAlbedo) uniform sampler2D g_albedo;

@@ -22,7 +22,9 @@
 #include "../common/material.glsl"
 #endif
 
-layout(set = 0, binding = kGbufferMaterials) readonly buffer Materials { GpuMaterial materials[]; };
+layout(set = 0, binding = kGbufferMaterials) readonly buffer Materials {
+  GpuMaterial materials[];
+};
 
 layout(location = 0) in vec3 in_view_normal;
 layout(location = 1) flat in uint in_material;

@@ -15,7 +15,9 @@ layout(location = 3) in vec4 in_uv;       // sets 0 (xy) and 1 (zw)
 layout(location = 4) in vec4 in_tangent;  // world space, w bitangent sign (0: none)
 #endif
 
-layout(set = 0, binding = kGbufferFrame) uniform Frame { FrameUniforms frame; };
+layout(set = 0, binding = kGbufferFrame) uniform Frame {
+  FrameUniforms frame;
+};
 
 layout(location = 0) out vec3 out_view_normal;
 layout(location = 1) flat out uint out_material;

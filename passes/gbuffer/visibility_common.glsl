@@ -4,9 +4,15 @@
 #ifndef ANTUMBRA_VISIBILITY_COMMON_GLSL
 #define ANTUMBRA_VISIBILITY_COMMON_GLSL
 
-layout(set = 0, binding = kVisFrame) uniform Frame { FrameUniforms frame; };
-layout(std430, set = 0, binding = kVisVertices) readonly buffer Vertices { float vertex_words[]; };
-layout(std430, set = 0, binding = kVisIndices) readonly buffer Indices { uint indices[]; };
+layout(set = 0, binding = kVisFrame) uniform Frame {
+  FrameUniforms frame;
+};
+layout(std430, set = 0, binding = kVisVertices) readonly buffer Vertices {
+  float vertex_words[];
+};
+layout(std430, set = 0, binding = kVisIndices) readonly buffer Indices {
+  uint indices[];
+};
 
 const uint kVisEmpty = 0xFFFFFFFFu;
 
@@ -34,8 +40,8 @@ vec3 vis_ray(ivec2 pixel) {
 
 struct VisHit {
   bool hit;
-  float depth;  // the depth buffer's value at the hit (z / w), in [0, 1]
-  vec2 bary;    // weights of vertices 1 and 2 (vertex 0: 1 - x - y)
+  float depth;   // the depth buffer's value at the hit (z / w), in [0, 1]
+  vec2 bary;     // weights of vertices 1 and 2 (vertex 0: 1 - x - y)
   float facing;  // > 0: the ray meets the triangle's counter-clockwise side
 };
 

@@ -20,8 +20,12 @@
 #include "visibility_common.glsl"
 
 layout(local_size_x = kVisGroup) in;
-layout(std430, set = 0, binding = kVisBuffer) buffer Vis { uint64_t vis[]; };
-layout(std430, set = 0, binding = kVisMaterials) readonly buffer Materials { GpuMaterial materials[]; };
+layout(std430, set = 0, binding = kVisBuffer) buffer Vis {
+  uint64_t vis[];
+};
+layout(std430, set = 0, binding = kVisMaterials) readonly buffer Materials {
+  GpuMaterial materials[];
+};
 layout(std430, set = 0, binding = kVisAttributes) readonly buffer Attributes {
   GpuVertexAttributes attributes[];
 };

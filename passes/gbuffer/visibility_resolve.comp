@@ -20,9 +20,15 @@
 #include "visibility_common.glsl"
 
 layout(local_size_x = kVisResolveGroup, local_size_y = kVisResolveGroup) in;
-layout(std430, set = 0, binding = kVisBuffer) readonly buffer Vis { uint64_t vis[]; };
-layout(std430, set = 0, binding = kVisMaterials) readonly buffer Materials { GpuMaterial materials[]; };
-layout(std430, set = 0, binding = kVisDepth) writeonly buffer Depth { float depth_out[]; };
+layout(std430, set = 0, binding = kVisBuffer) readonly buffer Vis {
+  uint64_t vis[];
+};
+layout(std430, set = 0, binding = kVisMaterials) readonly buffer Materials {
+  GpuMaterial materials[];
+};
+layout(std430, set = 0, binding = kVisDepth) writeonly buffer Depth {
+  float depth_out[];
+};
 layout(std430, set = 0, binding = kVisAttributes) readonly buffer Attributes {
   GpuVertexAttributes attributes[];
 };

@@ -16,8 +16,12 @@
 #include "../interface/shared/shadow_data.h"
 #include "layered_penumbra_interface.h"
 
-layout(set = 0, binding = kPenumbraFrame) uniform Frame { FrameUniforms frame; };
-layout(set = 0, binding = kPenumbraLights) readonly buffer Lights { GpuLight lights[]; };
+layout(set = 0, binding = kPenumbraFrame) uniform Frame {
+  FrameUniforms frame;
+};
+layout(set = 0, binding = kPenumbraLights) readonly buffer Lights {
+  GpuLight lights[];
+};
 layout(set = 0, binding = kPenumbraShadowData) readonly buffer Shadows {
   ShadowHeader shadow_header;
   ShadowLight shadow_lights[ANTUMBRA_MAX_SHADOW_LIGHTS];
@@ -34,7 +38,8 @@ layout(set = 0, binding = kPenumbraOut, rgba16f) uniform writeonly image2DArray 
 layout(set = 0, binding = kPenumbraHardOut, r32ui) uniform writeonly uimage2D hard_out;
 #ifdef HAS_COLOUR
 layout(set = 0, binding = kPenumbraColourAtlas) uniform sampler2DArray colour_atlas;
-layout(set = 0, binding = kPenumbraTranslucencyOut, rgba32ui) uniform writeonly uimage2DArray translucency_out;
+layout(set = 0, binding = kPenumbraTranslucencyOut,
+       rgba32ui) uniform writeonly uimage2DArray translucency_out;
 #endif
 #ifdef MIN_FILTER
 layout(set = 0, binding = kPenumbraMinDepth) uniform sampler2DArray min_depth;

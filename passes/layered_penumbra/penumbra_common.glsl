@@ -15,6 +15,48 @@ uint pack_colour(vec4 c) {
   return (b.r << 24u) | (b.g << 16u) | (b.b << 8u) | b.a;
 }
 
+// Finds the blockers between lookup `c` and the light: false when there is none, else
+// their mean linear depth in `z_blocker` (PCSS step 1, or the min-filtered map's stand-in).
+bool penumbra_blocker_depth(ShadowLight sl, ShadowCoord c, vec2 at, float light_size,
+                            float face_size, out float z_blocker) {
+#ifdef MIN_FILTER
+  // The min-filtered map holds the nearest depth around the lookup: a blocker exists
+  // when it is nearer than the receiver, and its depth stands in for the search's
+  // average (seed 000: cheaper, slightly wider penumbrae near contact edges).
+  float nearest = textureLod(min_depth, vec3(at, c.layer), 0.0).r;
+  int blockers = nearest < c.depth ? 1 : 0;
+  float blocker_sum = blockers > 0 ? shadow_linearise_light(sl, nearest) : 0.0;
+#else
+  // Blocker search (PCSS step 1) over a square region that grows with the light's size
+  // and shrinks with distance: blockers near the receiver matter most. Orthographic
+  // (sun) maps: the region is the widest penumbra a blocker at the near plane could
+  // cast, tan(angular radius) * depth below it, in uv of the 2 * half_width square.
+  bool ortho = shadow_is_ortho(sl);
+  float z_receiver = c.linear;
+  float texel = 1.0 / face_size;
+  float radius =
+      ortho ? clamp(search_scale * light_size * z_receiver / (2.0 * sl.projection.x), texel, 0.25)
+            : clamp(search_scale * light_size / (z_receiver * sl.projection.x), texel, 0.25);
+  int taps = int(search_taps);
+  float step_uv = taps > 1 ? 2.0 * radius / float(taps - 1) : 0.0;
+  float blocker_sum = 0.0;
+  int blockers = 0;
+  for (int y = 0; y < taps; ++y) {
+    for (int x = 0; x < taps; ++x) {
+      vec2 offset = (vec2(x, y) - 0.5 * float(taps - 1)) * step_uv;
+      vec2 tap = clamp(c.uv + offset, vec2(0.5 * texel), vec2(1.0 - 0.5 * texel));
+      float stored = textureLod(atlas, vec3(tap * c.share, c.layer), 0.0).r;
+      if (stored < c.depth) {
+        blocker_sum += shadow_linearise_light(sl, stored);
+        ++blockers;
+      }
+    }
+  }
+#endif
+  z_blocker = blockers > 0 ? blocker_sum / float(blockers) : 0.0;
+  return blockers > 0;
+}
+
 // `want_width` false: only the hard test, the tint and ESM (the width stays 0).
 // `dither` (0..1): in a cascade blend band the next cascade is used when its weight
 // exceeds it.
@@ -29,9 +71,9 @@ PenumbraSample estimate_penumbra(ShadowLight light, vec3 world, vec3 n_world, bo
   ShadowPick pick = shadow_pick(light, world);
   if (pick.layer < 0) return result;
   float face_size = shadow_face_texels(light, float(shadow_header.counts.z));
-  ShadowLookup q = shadow_offset_lookup(
-      light, pick.next >= 0 && dither < pick.blend ? pick.next : pick.layer, world, n_world,
-      face_size);
+  ShadowLookup q =
+      shadow_offset_lookup(light, pick.next >= 0 && dither < pick.blend ? pick.next : pick.layer,
+                           world, n_world, face_size);
   ShadowLight sl = q.light;
   float light_size = sl.params.x * light_size_scale;
   ShadowCoord c = shadow_coord(faces[q.layer].view_proj, sl, q.layer, q.position);
@@ -59,45 +101,10 @@ PenumbraSample estimate_penumbra(ShadowLight light, vec3 world, vec3 n_world, bo
 #endif
   if (!want_width) return result;
 
-#ifdef MIN_FILTER
-  // The min-filtered map holds the nearest depth around the lookup: a blocker exists
-  // when it is nearer than the receiver, and its depth stands in for the search's
-  // average (seed 000: cheaper, slightly wider penumbrae near contact edges).
-  float z_receiver = c.linear;
-  float nearest = textureLod(min_depth, vec3(at, c.layer), 0.0).r;
-  int blockers = nearest < c.depth ? 1 : 0;
-  float blocker_sum = blockers > 0 ? shadow_linearise_light(sl, nearest) : 0.0;
-  bool ortho = shadow_is_ortho(sl);
-#else
-  // Blocker search (PCSS step 1) over a square region that grows with the light's size
-  // and shrinks with distance: blockers near the receiver matter most. Orthographic
-  // (sun) maps: the region is the widest penumbra a blocker at the near plane could
-  // cast, tan(angular radius) * depth below it, in uv of the 2 * half_width square.
   bool ortho = shadow_is_ortho(sl);
   float z_receiver = c.linear;
-  float texel = 1.0 / face_size;
-  float radius = ortho ? clamp(search_scale * light_size * z_receiver / (2.0 * sl.projection.x),
-                               texel, 0.25)
-                       : clamp(search_scale * light_size / (z_receiver * sl.projection.x),
-                               texel, 0.25);
-  int taps = int(search_taps);
-  float step_uv = taps > 1 ? 2.0 * radius / float(taps - 1) : 0.0;
-  float blocker_sum = 0.0;
-  int blockers = 0;
-  for (int y = 0; y < taps; ++y) {
-    for (int x = 0; x < taps; ++x) {
-      vec2 offset = (vec2(x, y) - 0.5 * float(taps - 1)) * step_uv;
-      vec2 tap = clamp(c.uv + offset, vec2(0.5 * texel), vec2(1.0 - 0.5 * texel));
-      float stored = textureLod(atlas, vec3(tap * c.share, c.layer), 0.0).r;
-      if (stored < c.depth) {
-        blocker_sum += shadow_linearise_light(sl, stored);
-        ++blockers;
-      }
-    }
-  }
-#endif
-  if (blockers > 0) {
-    float z_blocker = blocker_sum / float(blockers);
+  float z_blocker;
+  if (penumbra_blocker_depth(sl, c, at, light_size, face_size, z_blocker)) {
     // w_penumbra = (d_receiver - d_blocker) * w_light / d_blocker (seed 000, PCSS step 2);
     // for the sun, w_light / d_blocker is the constant tan(angular radius) = light_size.
     result.width = ortho ? max((z_receiver - z_blocker) * light_size, 1e-4)

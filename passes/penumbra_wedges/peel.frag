@@ -21,7 +21,9 @@ layout(location = 1) in vec3 in_normal;
 #ifdef CUT
 // Cut casters (docs/technique.md, "Draw classes"): peeled only where they cast in the
 // atlas (Z1), their front towards the light and their alpha at or above the cutoff.
-layout(set = 0, binding = kWedgeMaterials, std430) readonly buffer Materials { GpuMaterial materials[]; };
+layout(set = 0, binding = kWedgeMaterials, std430) readonly buffer Materials {
+  GpuMaterial materials[];
+};
 layout(location = 2) flat in uint in_material;
 layout(location = 3) in vec4 in_uv;
 layout(location = 4) flat in uint in_mirrored;

@@ -18,14 +18,24 @@
 
 layout(local_size_x = 64) in;
 
-layout(set = 0, binding = kWedgeVertices, std430) readonly buffer Vertices { float vertex_data[]; };
-layout(set = 0, binding = kWedgeEdges, std430) readonly buffer Edges { WedgeEdge edges[]; };
-layout(set = 0, binding = kWedgeNormals, std430) readonly buffer Normals { vec4 normals[]; };
+layout(set = 0, binding = kWedgeVertices, std430) readonly buffer Vertices {
+  float vertex_data[];
+};
+layout(set = 0, binding = kWedgeEdges, std430) readonly buffer Edges {
+  WedgeEdge edges[];
+};
+layout(set = 0, binding = kWedgeNormals, std430) readonly buffer Normals {
+  vec4 normals[];
+};
 layout(set = 0, binding = kWedgeSilhouettes, std430) writeonly buffer Silhouettes {
   Silhouette silhouettes[];
 };
-layout(set = 0, binding = kWedgeCounts, std430) buffer Counts { uint counts[]; };
-layout(set = 0, binding = kWedgeMaterials, std430) readonly buffer Materials { GpuMaterial materials[]; };
+layout(set = 0, binding = kWedgeCounts, std430) buffer Counts {
+  uint counts[];
+};
+layout(set = 0, binding = kWedgeMaterials, std430) readonly buffer Materials {
+  GpuMaterial materials[];
+};
 
 // GpuVertex: position, normal, material (7 words).
 vec3 vertex_position(uint i) {
@@ -40,7 +50,9 @@ vec3 vertex_position(uint i) {
 // each way). Where the normal says nothing across the edge, across alone.
 // The material flags (ANTUMBRA_MATERIAL_*) of the triangle with vertex i (materials are
 // per triangle, so any of its vertices tells).
-uint vertex_flags(uint i) { return materials[floatBitsToUint(vertex_data[7u * i + 6u])].more.y; }
+uint vertex_flags(uint i) {
+  return materials[floatBitsToUint(vertex_data[7u * i + 6u])].more.y;
+}
 
 vec3 corner_direction(vec3 normal, vec3 along, vec3 across) {
   float a = dot(normal, across);

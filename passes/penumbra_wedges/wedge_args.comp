@@ -8,8 +8,12 @@
 
 layout(local_size_x = 64) in;
 
-layout(set = 0, binding = kWedgeCounts, std430) buffer Counts { uint counts[]; };
-layout(set = 0, binding = kWedgeArgs, std430) writeonly buffer Args { uvec4 args[]; };
+layout(set = 0, binding = kWedgeCounts, std430) buffer Counts {
+  uint counts[];
+};
+layout(set = 0, binding = kWedgeArgs, std430) writeonly buffer Args {
+  uvec4 args[];
+};
 
 void main() {
   uint layer = gl_GlobalInvocationID.x;

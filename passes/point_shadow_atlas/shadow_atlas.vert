@@ -15,8 +15,12 @@ struct FaceDraw {
   uvec4 info;  // x atlas layer, w the face's share of the layer (float bits; 0: all)
 };
 
-layout(set = 0, binding = kAtlasFaces) readonly buffer Faces { FaceDraw faces[]; };
-layout(set = 0, binding = kAtlasMaterials) readonly buffer Materials { GpuMaterial materials[]; };
+layout(set = 0, binding = kAtlasFaces) readonly buffer Faces {
+  FaceDraw faces[];
+};
+layout(set = 0, binding = kAtlasMaterials) readonly buffer Materials {
+  GpuMaterial materials[];
+};
 
 layout(location = 0) in vec3 in_position;
 layout(location = 2) in uint in_material;

@@ -10,7 +10,9 @@
 // per ray: only its surfaces turned towards the light (where rays enter) write, so a
 // closed pane (a thin box, as scenes build them) is not applied at both its faces; an
 // open one-sided pane tints only from its front (shadow-reference does the same).
-layout(set = 0, binding = kAtlasMaterials) readonly buffer Materials { GpuMaterial materials[]; };
+layout(set = 0, binding = kAtlasMaterials) readonly buffer Materials {
+  GpuMaterial materials[];
+};
 
 layout(location = 0) flat in uint in_material;
 layout(location = 1) in float in_away;

@@ -10,11 +10,21 @@
 
 layout(local_size_x = kCullGroup) in;
 
-layout(std430, binding = kRasterClusters) readonly buffer Clusters { RasterCluster clusters[]; };
-layout(std430, binding = kRasterFaces) readonly buffer Faces { RasterFace faces[]; };
-layout(std430, binding = kRasterCounters) buffer Counters { uint counts[]; };
-layout(std430, binding = kRasterItems) writeonly buffer Items { uvec2 items[]; };
-layout(std430, binding = kRasterDrawFlags) readonly buffer DrawFlags { uint draw_flags[]; };
+layout(std430, binding = kRasterClusters) readonly buffer Clusters {
+  RasterCluster clusters[];
+};
+layout(std430, binding = kRasterFaces) readonly buffer Faces {
+  RasterFace faces[];
+};
+layout(std430, binding = kRasterCounters) buffer Counters {
+  uint counts[];
+};
+layout(std430, binding = kRasterItems) writeonly buffer Items {
+  uvec2 items[];
+};
+layout(std430, binding = kRasterDrawFlags) readonly buffer DrawFlags {
+  uint draw_flags[];
+};
 
 const float kHalfPi = 1.57079632679;
 
@@ -75,8 +85,7 @@ void main() {
   vec2 pmin = vec2(1e30);
   vec2 pmax = vec2(-1e30);
   for (int i = 0; i < 8; ++i) {
-    vec3 corner = sphere.xyz + sphere.w * vec3((i & 1) != 0 ? 1.0 : -1.0,
-                                               (i & 2) != 0 ? 1.0 : -1.0,
+    vec3 corner = sphere.xyz + sphere.w * vec3((i & 1) != 0 ? 1.0 : -1.0, (i & 2) != 0 ? 1.0 : -1.0,
                                                (i & 4) != 0 ? 1.0 : -1.0);
     vec4 clip = face.view_proj * vec4(corner, 1.0);
     if (clip.w <= 1e-6 || clip.z < 0.0) {

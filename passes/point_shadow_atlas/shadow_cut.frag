@@ -8,7 +8,9 @@
 // Depth of cut casters (docs/technique.md, "Materials"): a one-sided material casts only
 // where the light sees its front, and an alpha-tested one only where its alpha reaches
 // the cutoff (foliage, fences, chains cast their holes).
-layout(set = 0, binding = kAtlasMaterials) readonly buffer Materials { GpuMaterial materials[]; };
+layout(set = 0, binding = kAtlasMaterials) readonly buffer Materials {
+  GpuMaterial materials[];
+};
 
 layout(location = 0) flat in uint in_material;
 layout(location = 1) in vec4 in_uv;

@@ -12,15 +12,33 @@
 
 layout(local_size_x = kDecideGroup) in;
 
-layout(std430, binding = kDecideShadowIn) readonly buffer ShadowIn { uvec4 words_in[]; };
-layout(std430, binding = kDecideShadowOut) writeonly buffer ShadowOut { uvec4 words_out[]; };
-layout(std430, binding = kDecideRequests) readonly buffer Requests { FaceRequest requests[]; };
-layout(std430, binding = kDecideNeeded) readonly buffer Needed { uint needed[]; };
-layout(std430, binding = kDecideContent) buffer Content { uint content[]; };
-layout(std430, binding = kDecideDrawFlags) writeonly buffer DrawFlags { uint draw_flags[]; };
-layout(std430, binding = kDecideArgs) buffer Args { uvec4 args[]; };
-layout(std430, binding = kDecideList) writeonly buffer List { uint list[]; };
-layout(std430, binding = kDecideStats) buffer Stats { uint stats[]; };
+layout(std430, binding = kDecideShadowIn) readonly buffer ShadowIn {
+  uvec4 words_in[];
+};
+layout(std430, binding = kDecideShadowOut) writeonly buffer ShadowOut {
+  uvec4 words_out[];
+};
+layout(std430, binding = kDecideRequests) readonly buffer Requests {
+  FaceRequest requests[];
+};
+layout(std430, binding = kDecideNeeded) readonly buffer Needed {
+  uint needed[];
+};
+layout(std430, binding = kDecideContent) buffer Content {
+  uint content[];
+};
+layout(std430, binding = kDecideDrawFlags) writeonly buffer DrawFlags {
+  uint draw_flags[];
+};
+layout(std430, binding = kDecideArgs) buffer Args {
+  uvec4 args[];
+};
+layout(std430, binding = kDecideList) writeonly buffer List {
+  uint list[];
+};
+layout(std430, binding = kDecideStats) buffer Stats {
+  uint stats[];
+};
 
 const uint kFaceVec4s = 5u;  // ShadowFace: mat4 view_proj, uvec4 info
 

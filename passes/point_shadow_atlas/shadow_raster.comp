@@ -33,15 +33,33 @@
 
 layout(local_size_x = kRasterGroup) in;
 
-layout(std430, binding = kRasterClusters) readonly buffer Clusters { RasterCluster clusters[]; };
-layout(std430, binding = kRasterIndices) readonly buffer Indices { uint indices[]; };
-layout(std430, binding = kRasterVertices) readonly buffer Vertices { float vertex_words[]; };
-layout(std430, binding = kRasterFaces) readonly buffer Faces { RasterFace faces[]; };
-layout(std430, binding = kRasterCounters) readonly buffer Counters { uint counts[]; };
-layout(std430, binding = kRasterItems) readonly buffer Items { uvec2 items[]; };
-layout(std430, binding = kRasterDepth) buffer Depth { uint depth[]; };
-layout(std430, binding = kRasterTint) buffer Tint { uint tint[]; };
-layout(std430, binding = kRasterMaterials) readonly buffer Materials { GpuMaterial materials[]; };
+layout(std430, binding = kRasterClusters) readonly buffer Clusters {
+  RasterCluster clusters[];
+};
+layout(std430, binding = kRasterIndices) readonly buffer Indices {
+  uint indices[];
+};
+layout(std430, binding = kRasterVertices) readonly buffer Vertices {
+  float vertex_words[];
+};
+layout(std430, binding = kRasterFaces) readonly buffer Faces {
+  RasterFace faces[];
+};
+layout(std430, binding = kRasterCounters) readonly buffer Counters {
+  uint counts[];
+};
+layout(std430, binding = kRasterItems) readonly buffer Items {
+  uvec2 items[];
+};
+layout(std430, binding = kRasterDepth) buffer Depth {
+  uint depth[];
+};
+layout(std430, binding = kRasterTint) buffer Tint {
+  uint tint[];
+};
+layout(std430, binding = kRasterMaterials) readonly buffer Materials {
+  GpuMaterial materials[];
+};
 #ifdef CUT
 layout(std430, binding = kRasterAttributes) readonly buffer Attributes {
   GpuVertexAttributes attributes[];
@@ -55,7 +73,7 @@ struct Tri {
   vec4 e0;  // edge functions (A, B, C): inside where A x + B y + C >= 0 for all three
   vec4 e1;
   vec4 e2;
-  vec4 z;   // depth plane (a, b, c) in texels, w: bias
+  vec4 z;     // depth plane (a, b, c) in texels, w: bias
   ivec4 box;  // inclusive texel rectangle (x0, y0, x1, y1), clipped to the region
 #ifdef CUT
   // Alpha-tested materials: planes of u / w, v / w and 1 / w (perspective-correct).
@@ -253,9 +271,9 @@ int clip_polygon(int n, vec4 plane) {
 
 // Clips g_poly[0..2] in place; returns the vertex count (0: nothing left).
 int clip_triangle() {
-  const vec4 planes[5] = vec4[5](vec4(0.0, 0.0, 1.0, 0.0), vec4(1.0, 0.0, 0.0, kGuard),
-                                 vec4(-1.0, 0.0, 0.0, kGuard), vec4(0.0, 1.0, 0.0, kGuard),
-                                 vec4(0.0, -1.0, 0.0, kGuard));
+  const vec4 planes[5] =
+      vec4[5](vec4(0.0, 0.0, 1.0, 0.0), vec4(1.0, 0.0, 0.0, kGuard), vec4(-1.0, 0.0, 0.0, kGuard),
+              vec4(0.0, 1.0, 0.0, kGuard), vec4(0.0, -1.0, 0.0, kGuard));
   int n = 3;
   for (int i = 0; i < 5 && n >= 3; ++i) {
     vec4 plane = planes[i];
@@ -274,7 +292,9 @@ vec3 to_texels(vec4 clip) {
 
 #ifdef CUT
 // Vertex k's coordinates over w, and 1 / w (an orthographic face has w = 1).
-vec3 over_w(int k) { return vec3(g_uv[k], 1.0) / g_poly[k].w; }
+vec3 over_w(int k) {
+  return vec3(g_uv[k], 1.0) / g_poly[k].w;
+}
 
 // The base-colour texture coordinates of vertex `index` in its material's set.
 vec2 vertex_uv(uint index) {
@@ -344,8 +364,8 @@ void main() {
       int n = clip_triangle();
       vec3 s0 = to_texels(g_poly[0]);
       for (int k = 1; k + 1 < n; ++k) {
-        emit(s0, to_texels(g_poly[k]), to_texels(g_poly[k + 1]) UVS_OF(0) UVS_OF(k)
-             UVS_OF(k + 1), box);
+        emit(s0, to_texels(g_poly[k]), to_texels(g_poly[k + 1]) UVS_OF(0) UVS_OF(k) UVS_OF(k + 1),
+             box);
       }
     }
   }

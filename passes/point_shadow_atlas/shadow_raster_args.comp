@@ -8,7 +8,9 @@
 
 layout(local_size_x = 1) in;
 
-layout(std430, binding = kRasterCounters) buffer Counters { uint counts[]; };
+layout(std430, binding = kRasterCounters) buffer Counters {
+  uint counts[];
+};
 
 void main() {
   for (uint list = 0u; list < kRasterLists; ++list) {

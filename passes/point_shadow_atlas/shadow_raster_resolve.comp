@@ -11,14 +11,22 @@
 
 layout(local_size_x = kResolveGroup, local_size_y = kResolveGroup) in;
 
-layout(std430, binding = kRasterFaces) readonly buffer Faces { RasterFace faces[]; };
-layout(std430, binding = kRasterResolveList) readonly buffer List { uint records[]; };
+layout(std430, binding = kRasterFaces) readonly buffer Faces {
+  RasterFace faces[];
+};
+layout(std430, binding = kRasterResolveList) readonly buffer List {
+  uint records[];
+};
 #ifdef WRITE_DEPTH
-layout(std430, binding = kRasterDepth) readonly buffer Depth { uint depth[]; };
+layout(std430, binding = kRasterDepth) readonly buffer Depth {
+  uint depth[];
+};
 layout(binding = kRasterAtlas, r32f) uniform writeonly image2DArray atlas;
 #endif
 #ifdef WRITE_COLOUR
-layout(std430, binding = kRasterTint) readonly buffer Tint { uint tint[]; };
+layout(std430, binding = kRasterTint) readonly buffer Tint {
+  uint tint[];
+};
 layout(binding = kRasterColour, rgba8) uniform writeonly image2DArray colour;
 #endif
 

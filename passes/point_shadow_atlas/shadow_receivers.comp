@@ -13,14 +13,18 @@
 
 layout(local_size_x = kReceiverGroup) in;
 
-layout(std140, binding = kReceiverFrame) uniform Frame { FrameUniforms frame; };
+layout(std140, binding = kReceiverFrame) uniform Frame {
+  FrameUniforms frame;
+};
 layout(binding = kReceiverDepth) uniform sampler2D depth_image;
 layout(std430, binding = kDecideShadowIn) readonly buffer Shadows {
   ShadowHeader shadow_header;
   ShadowLight shadow_lights[ANTUMBRA_MAX_SHADOW_LIGHTS];
   ShadowFace shadow_faces[];
 };
-layout(std430, binding = kDecideNeeded) buffer Needed { uint needed[]; };
+layout(std430, binding = kDecideNeeded) buffer Needed {
+  uint needed[];
+};
 
 #include "../common/view_space.glsl"
 

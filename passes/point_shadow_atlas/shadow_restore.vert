@@ -14,7 +14,9 @@ struct FaceDraw {
   uvec4 info;  // x atlas layer
 };
 
-layout(set = 0, binding = kAtlasFaces) readonly buffer Faces { FaceDraw faces[]; };
+layout(set = 0, binding = kAtlasFaces) readonly buffer Faces {
+  FaceDraw faces[];
+};
 
 layout(location = 0) flat out uint out_layer;
 

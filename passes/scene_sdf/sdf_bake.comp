@@ -24,17 +24,31 @@
 #define MATERIAL_SAMPLER kSdfSampler
 #include "../common/material_textures.glsl"
 
-layout(set = 0, binding = kSdfVertices, std430) readonly buffer Vertices { float vertex_data[]; };
-layout(set = 0, binding = kSdfIndices, std430) readonly buffer Indices { uint index_data[]; };
-layout(set = 0, binding = kSdfMaterials, std430) readonly buffer Materials { GpuMaterial materials[]; };
-layout(set = 0, binding = kSdfAttributes, std430) readonly buffer Attributes { GpuVertexAttributes attributes[]; };
+layout(set = 0, binding = kSdfVertices, std430) readonly buffer Vertices {
+  float vertex_data[];
+};
+layout(set = 0, binding = kSdfIndices, std430) readonly buffer Indices {
+  uint index_data[];
+};
+layout(set = 0, binding = kSdfMaterials, std430) readonly buffer Materials {
+  GpuMaterial materials[];
+};
+layout(set = 0, binding = kSdfAttributes, std430) readonly buffer Attributes {
+  GpuVertexAttributes attributes[];
+};
 #define CHUNK 64
 #if SDF_CHUNKS
-layout(set = 0, binding = kSdfChunks, std430) writeonly buffer Chunks { vec4 chunk_bounds[]; };
+layout(set = 0, binding = kSdfChunks, std430) writeonly buffer Chunks {
+  vec4 chunk_bounds[];
+};
 #else
-layout(set = 0, binding = kSdfChunks, std430) readonly buffer Chunks { vec4 chunk_bounds[]; };
+layout(set = 0, binding = kSdfChunks, std430) readonly buffer Chunks {
+  vec4 chunk_bounds[];
+};
 layout(set = 0, binding = kSdfVolume, SDF_FORMAT) uniform writeonly image2DArray volume;
-layout(set = 0, binding = kSdfInfoBuffer, std430) writeonly buffer Info { SdfInfo info; };
+layout(set = 0, binding = kSdfInfoBuffer, std430) writeonly buffer Info {
+  SdfInfo info;
+};
 #endif
 
 shared vec3 tri_a[CHUNK];
@@ -44,8 +58,12 @@ shared vec3 tri_n[CHUNK];
 shared bool tri_near[CHUNK];
 
 // GpuVertex is 7 floats: position, normal, material.
-vec3 vertex_position(uint i) { return vec3(vertex_data[i * 7u], vertex_data[i * 7u + 1u], vertex_data[i * 7u + 2u]); }
-vec3 vertex_normal(uint i) { return vec3(vertex_data[i * 7u + 3u], vertex_data[i * 7u + 4u], vertex_data[i * 7u + 5u]); }
+vec3 vertex_position(uint i) {
+  return vec3(vertex_data[i * 7u], vertex_data[i * 7u + 1u], vertex_data[i * 7u + 2u]);
+}
+vec3 vertex_normal(uint i) {
+  return vec3(vertex_data[i * 7u + 3u], vertex_data[i * 7u + 4u], vertex_data[i * 7u + 5u]);
+}
 
 // Ericson, Real-Time Collision Detection 5.1.5: the point of triangle abc nearest p.
 vec3 closest_on_triangle(vec3 p, vec3 a, vec3 b, vec3 c) {
@@ -149,7 +167,9 @@ void main() {
   for (uint first = 0u; first < triangles; first += CHUNK) {
     // The same for every thread of the brick: a uniform branch around the barriers.
     uint chunk = first / CHUNK;
-    vec3 gap = max(max(chunk_bounds[chunk * 2u].xyz - brick_hi, brick_lo - chunk_bounds[chunk * 2u + 1u].xyz), vec3(0.0));
+    vec3 gap = max(
+        max(chunk_bounds[chunk * 2u].xyz - brick_hi, brick_lo - chunk_bounds[chunk * 2u + 1u].xyz),
+        vec3(0.0));
     if (dot(gap, gap) > band * band) continue;
     load_chunk(first, triangles, brick_lo, brick_hi, band);
     barrier();

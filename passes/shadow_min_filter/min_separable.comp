@@ -45,7 +45,8 @@ void filter_block(ivec2 block, uint layer, ivec2 size, int r) {
 
 void main() {
   uint layer = gl_WorkGroupID.z;
-  if (!derived_layer_needed(layer, force_all != 0u)) return;  // uniform per workgroup: before any barrier
+  if (!derived_layer_needed(layer, force_all != 0u))
+    return;  // uniform per workgroup: before any barrier
   ivec2 size = derived_face_extent(layer, textureSize(coarse, 0).xy);
   int r = min(int(radius), MAX_RADIUS);
   ivec2 region = ivec2(gl_WorkGroupID.xy) * int(span);

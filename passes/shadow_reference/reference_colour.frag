@@ -15,7 +15,9 @@
 // enters) tint, so a closed pane (a thin box, as scenes build them) is not counted at
 // both its faces. An open, one-sided pane tints only from its front. The tint of one pane
 // is mix(1, transmittance.rgb, transmittance.a), as the atlas's colour map stores it.
-layout(set = 0, binding = kRefDepthMaterials, std430) readonly buffer Materials { GpuMaterial materials[]; };
+layout(set = 0, binding = kRefDepthMaterials, std430) readonly buffer Materials {
+  GpuMaterial materials[];
+};
 
 layout(location = 0) in vec3 in_world;
 layout(location = 1) in vec3 in_normal;

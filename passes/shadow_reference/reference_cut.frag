@@ -9,7 +9,9 @@
 // (docs/technique.md, "Draw classes"): a one-sided material blocks only where the sample
 // sees its front, an alpha-tested one only where its alpha reaches the cutoff, so the
 // ground truth agrees with the techniques on alpha-masked scenes.
-layout(set = 0, binding = kRefDepthMaterials, std430) readonly buffer Materials { GpuMaterial materials[]; };
+layout(set = 0, binding = kRefDepthMaterials, std430) readonly buffer Materials {
+  GpuMaterial materials[];
+};
 
 layout(location = 0) flat in uint in_material;
 layout(location = 1) in vec4 in_uv;

@@ -13,8 +13,12 @@
 // the sun's directions (`ortho`: its orthographic map, face 0). Depth of the opaque
 // casters, or with COLOUR the translucent casters for reference_colour.frag, or with CUT
 // the one-sided and alpha-tested casters for reference_cut.frag.
-layout(set = 0, binding = kRefDepthPoints, std430) readonly buffer Points { vec4 points[]; };
-layout(set = 0, binding = kRefDepthMatrices, std430) readonly buffer Matrices { mat4 matrices[]; };
+layout(set = 0, binding = kRefDepthPoints, std430) readonly buffer Points {
+  vec4 points[];
+};
+layout(set = 0, binding = kRefDepthMatrices, std430) readonly buffer Matrices {
+  mat4 matrices[];
+};
 
 layout(location = 0) in vec3 in_position;
 #ifdef COLOUR

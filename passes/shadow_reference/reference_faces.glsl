@@ -17,17 +17,29 @@ uint reference_cube_face(vec3 d) {
 vec4 reference_face_clip(vec3 d, uint face, float near, float far) {
   vec3 f, s, t;
   if (face == 0u) {
-    f = vec3(1, 0, 0); s = vec3(0, 0, -1); t = vec3(0, -1, 0);
+    f = vec3(1, 0, 0);
+    s = vec3(0, 0, -1);
+    t = vec3(0, -1, 0);
   } else if (face == 1u) {
-    f = vec3(-1, 0, 0); s = vec3(0, 0, 1); t = vec3(0, -1, 0);
+    f = vec3(-1, 0, 0);
+    s = vec3(0, 0, 1);
+    t = vec3(0, -1, 0);
   } else if (face == 2u) {
-    f = vec3(0, 1, 0); s = vec3(1, 0, 0); t = vec3(0, 0, 1);
+    f = vec3(0, 1, 0);
+    s = vec3(1, 0, 0);
+    t = vec3(0, 0, 1);
   } else if (face == 3u) {
-    f = vec3(0, -1, 0); s = vec3(1, 0, 0); t = vec3(0, 0, -1);
+    f = vec3(0, -1, 0);
+    s = vec3(1, 0, 0);
+    t = vec3(0, 0, -1);
   } else if (face == 4u) {
-    f = vec3(0, 0, 1); s = vec3(1, 0, 0); t = vec3(0, -1, 0);
+    f = vec3(0, 0, 1);
+    s = vec3(1, 0, 0);
+    t = vec3(0, -1, 0);
   } else {
-    f = vec3(0, 0, -1); s = vec3(-1, 0, 0); t = vec3(0, -1, 0);
+    f = vec3(0, 0, -1);
+    s = vec3(-1, 0, 0);
+    t = vec3(0, -1, 0);
   }
   float w = dot(f, d);
   float a = far / (far - near);

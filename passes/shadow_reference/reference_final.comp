@@ -11,10 +11,14 @@
 #include "../interface/shared/workgroups.h"
 layout(local_size_x = ANTUMBRA_IMAGE_GROUP, local_size_y = ANTUMBRA_IMAGE_GROUP) in;
 
-layout(set = 0, binding = kRefFinalFrame) uniform Frame { FrameUniforms frame; };
+layout(set = 0, binding = kRefFinalFrame) uniform Frame {
+  FrameUniforms frame;
+};
 layout(set = 0, binding = kRefFinalDepth) uniform sampler2D g_depth;
 layout(set = 0, binding = kRefFinalAlbedo) uniform sampler2D g_albedo;
-layout(set = 0, binding = kRefFinalAccum, std430) readonly buffer Accum { vec4 accum[]; };
+layout(set = 0, binding = kRefFinalAccum, std430) readonly buffer Accum {
+  vec4 accum[];
+};
 layout(set = 0, binding = kRefFinalHdr, HDR_FORMAT) uniform writeonly image2D out_hdr;
 #if HAS_PENUMBRA
 layout(set = 0, binding = kRefFinalPenumbra, r32f) uniform writeonly image2D out_penumbra;

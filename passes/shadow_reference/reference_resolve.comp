@@ -17,14 +17,22 @@
 #include "../interface/shared/workgroups.h"
 layout(local_size_x = ANTUMBRA_IMAGE_GROUP, local_size_y = ANTUMBRA_IMAGE_GROUP) in;
 
-layout(set = 0, binding = kRefResolveFrame) uniform Frame { FrameUniforms frame; };
+layout(set = 0, binding = kRefResolveFrame) uniform Frame {
+  FrameUniforms frame;
+};
 #include "../common/view_space.glsl"
-layout(set = 0, binding = kRefResolveLights, std430) readonly buffer Lights { GpuLight lights[]; };
+layout(set = 0, binding = kRefResolveLights, std430) readonly buffer Lights {
+  GpuLight lights[];
+};
 layout(set = 0, binding = kRefResolveDepth) uniform sampler2D g_depth;
 layout(set = 0, binding = kRefResolveNormal) uniform sampler2D g_normal;
 layout(set = 0, binding = kRefResolveAlbedo) uniform sampler2D g_albedo;
-layout(set = 0, binding = kRefResolveVisibility, std430) readonly buffer Visibility { vec4 visibility[]; };
-layout(set = 0, binding = kRefResolveAccum, std430) buffer Accum { vec4 accum[]; };
+layout(set = 0, binding = kRefResolveVisibility, std430) readonly buffer Visibility {
+  vec4 visibility[];
+};
+layout(set = 0, binding = kRefResolveAccum, std430) buffer Accum {
+  vec4 accum[];
+};
 
 void main() {
   uvec2 pixel = gl_GlobalInvocationID.xy;
@@ -44,7 +52,7 @@ void main() {
     vec3 l;
     if (!shade_light(lights[light], surface, specular, radiance, l)) continue;
     uint index = 2u * (slot * pixels + pixel_index);
-    vec4 v = visibility[index];  // (weighted rgb visibility, weight)
+    vec4 v = visibility[index];          // (weighted rgb visibility, weight)
     vec2 f = visibility[index + 1u].xy;  // weighted opaque-lit and untinted fractions
     vec3 lit = v.w > 0.0 ? v.rgb / v.w : vec3(1.0);
     float opaque = v.w > 0.0 ? f.x / v.w : 1.0;

@@ -73,17 +73,9 @@ float layered_view_depth(ivec2 pixel) {
   return -view_position((vec2(pixel) + 0.5) / vec2(image_size), d).z;
 }
 
-// The buffer may be at a lower resolution (half-res blur). A plain bilinear fetch would
-// smear shadow across depth edges (a pillar's shadow haloing the wall behind it), so
-// the four nearest low-resolution texels are weighted bilinearly, by how close the
-// depth each was blurred at (its top-left full-resolution pixel, as anisotropic-blur
-// reads it) is to this pixel's and by how alike their normals are: a joint bilateral
-// upsample.
-void layered_fetch(ivec2 pixel) {
-  ivec2 low = textureSize(shadow_layers, 0).xy;
-  ivec2 scale = max(ivec2(image_size) / low, ivec2(1));
-  float z = layered_view_depth(pixel);
-  vec3 n = normalize(texelFetch(g_normal, pixel, 0).xyz);
+// Whether the pixel lies next to a surface boundary (a depth jump or a crease), where the
+// blur's kernel was cut short (g_layered_foreign says why that matters).
+bool layered_near_edge(ivec2 pixel, float z, vec3 n) {
   bool near_edge = false;
 #if HAS_ATLAS  // without the atlas there is nothing to fall back to
   for (int k = 0; k < 9; ++k) {
@@ -95,70 +87,102 @@ void layered_fetch(ivec2 pixel) {
                 dot(n, normalize(texelFetch(g_normal, o, 0).xyz)) < LAYERED_SAME_NORMAL;
   }
 #endif
+  return near_edge;
+}
+
+#if HAS_HARD_BITS
+// The layers whose edge is sharper than the low-resolution texels can hold (LAYERED_SHARP):
+// the texels are weighed again by their agreement with the pixel's own hard bit, `weights`
+// and `texels` being the four of the bilateral upsample and lo/hi each layer's range over
+// those on the pixel's surface.
+void layered_sharpen(ivec2 pixel, vec4 lo[MAX_SHADOW_TEXELS], vec4 hi[MAX_SHADOW_TEXELS],
+                     float weights[4], ivec2 texels[4]) {
+  uint bits = texelFetch(hard_bits, pixel, 0).r;
+  for (int i = 0; i < g_shadow_texels; ++i) {
+    bvec4 sharp = greaterThan(hi[i] - lo[i], vec4(LAYERED_SHARP));
+    if (!any(sharp)) continue;
+    uvec4 b = (uvec4(bits) >> uvec4(4 * i) + uvec4(0, 1, 2, 3)) & 1u;
+    vec4 hard = vec4(1.0) - vec4(b);  // 1 lit, 0 shadowed
+    vec4 guided = vec4(0.0);
+    vec4 guided_weight = vec4(1e-6);
+    for (int k = 0; k < 4; ++k) {
+      vec4 v = texelFetch(shadow_layers, ivec3(texels[k], i), 0);
+      vec4 agree = vec4(1.0) - abs(v - hard);
+      vec4 w = weights[k] * agree * agree;
+      guided += w * v;
+      guided_weight += w;
+    }
+    g_shadow[i] = mix(g_shadow[i], guided / guided_weight, vec4(sharp));
+  }
+}
+#endif
+
+// A plain bilinear fetch of a lower-resolution buffer (half-res blur) would smear shadow
+// across depth edges (a pillar's shadow haloing the wall behind it), so the four nearest
+// low-resolution texels are weighted bilinearly, by how close the depth each was blurred
+// at (its top-left full-resolution pixel, as anisotropic-blur reads it) is to this
+// pixel's and by how alike their normals are: a joint bilateral upsample. Returns whether
+// any of the four lies on the pixel's surface.
+bool layered_upsample(ivec2 pixel, ivec2 low, ivec2 scale, float z, vec3 n) {
+  vec2 f = (vec2(pixel) + 0.5) / vec2(scale) - 0.5;
+  ivec2 base = ivec2(floor(f));
+  vec2 t = f - vec2(base);
+  bool matched = false;
+  vec4 sum[MAX_SHADOW_TEXELS];
+  vec4 lo[MAX_SHADOW_TEXELS];  // range of the layers over same-surface texels
+  vec4 hi[MAX_SHADOW_TEXELS];
+  for (int i = 0; i < g_shadow_texels; ++i) {
+    sum[i] = vec4(0.0);
+    lo[i] = vec4(1.0);
+    hi[i] = vec4(0.0);
+  }
+  float weight_sum = 0.0;
+  float weights[4];
+  ivec2 texels[4];
+  for (int k = 0; k < 4; ++k) {
+    ivec2 o = ivec2(k & 1, k >> 1);
+    ivec2 q = clamp(base + o, ivec2(0), low - 1);
+    float bilinear = (o.x == 1 ? t.x : 1.0 - t.x) * (o.y == 1 ? t.y : 1.0 - t.y);
+    float relative = abs(layered_view_depth(q * scale) - z) / max(z, 1e-4);
+    ivec2 q_full = min(q * scale, ivec2(image_size) - 1);
+    float facing = dot(n, normalize(texelFetch(g_normal, q_full, 0).xyz));
+    bool same = relative <= LAYERED_SAME_DEPTH && facing >= LAYERED_SAME_NORMAL;
+    matched = matched || same;
+    float w = max(bilinear, 1e-3) * max(facing, 1e-2) / (1e-3 + relative * relative * 1e4);
+    weight_sum += w;
+    weights[k] = w;
+    texels[k] = q;
+    for (int i = 0; i < g_shadow_texels; ++i) {
+      vec4 v = texelFetch(shadow_layers, ivec3(q, i), 0);
+      sum[i] += w * v;
+      if (same) {
+        lo[i] = min(lo[i], v);
+        hi[i] = max(hi[i], v);
+      }
+    }
+  }
+  for (int i = 0; i < g_shadow_texels; ++i) g_shadow[i] = sum[i] / weight_sum;
+#if HAS_HARD_BITS
+  layered_sharpen(pixel, lo, hi, weights, texels);
+#endif
+  return matched;
+}
+
+// Reads every layer of the (possibly lower-resolution) layered shadow buffer for this
+// pixel into g_shadow and g_colour, and decides g_layered_foreign.
+void layered_fetch(ivec2 pixel) {
+  ivec2 low = textureSize(shadow_layers, 0).xy;
+  ivec2 scale = max(ivec2(image_size) / low, ivec2(1));
+  float z = layered_view_depth(pixel);
+  vec3 n = normalize(texelFetch(g_normal, pixel, 0).xyz);
+  bool near_edge = layered_near_edge(pixel, z, n);
   if (scale == ivec2(1)) {
     for (int i = 0; i < g_shadow_texels; ++i) {
       g_shadow[i] = texelFetch(shadow_layers, ivec3(min(pixel, low - 1), i), 0);
     }
     g_layered_foreign = near_edge;
   } else {
-    vec2 f = (vec2(pixel) + 0.5) / vec2(scale) - 0.5;
-    ivec2 base = ivec2(floor(f));
-    vec2 t = f - vec2(base);
-    bool matched = false;
-    vec4 sum[MAX_SHADOW_TEXELS];
-    vec4 lo[MAX_SHADOW_TEXELS];  // range of the layers over same-surface texels
-    vec4 hi[MAX_SHADOW_TEXELS];
-    for (int i = 0; i < g_shadow_texels; ++i) {
-      sum[i] = vec4(0.0);
-      lo[i] = vec4(1.0);
-      hi[i] = vec4(0.0);
-    }
-    float weight_sum = 0.0;
-    float weights[4];
-    ivec2 texels[4];
-    for (int k = 0; k < 4; ++k) {
-      ivec2 o = ivec2(k & 1, k >> 1);
-      ivec2 q = clamp(base + o, ivec2(0), low - 1);
-      float bilinear = (o.x == 1 ? t.x : 1.0 - t.x) * (o.y == 1 ? t.y : 1.0 - t.y);
-      float relative = abs(layered_view_depth(q * scale) - z) / max(z, 1e-4);
-      ivec2 q_full = min(q * scale, ivec2(image_size) - 1);
-      float facing = dot(n, normalize(texelFetch(g_normal, q_full, 0).xyz));
-      bool same = relative <= LAYERED_SAME_DEPTH && facing >= LAYERED_SAME_NORMAL;
-      matched = matched || same;
-      float w = max(bilinear, 1e-3) * max(facing, 1e-2) / (1e-3 + relative * relative * 1e4);
-      weight_sum += w;
-      weights[k] = w;
-      texels[k] = q;
-      for (int i = 0; i < g_shadow_texels; ++i) {
-        vec4 v = texelFetch(shadow_layers, ivec3(q, i), 0);
-        sum[i] += w * v;
-        if (same) {
-          lo[i] = min(lo[i], v);
-          hi[i] = max(hi[i], v);
-        }
-      }
-    }
-    for (int i = 0; i < g_shadow_texels; ++i) g_shadow[i] = sum[i] / weight_sum;
-#if HAS_HARD_BITS
-    uint bits = texelFetch(hard_bits, pixel, 0).r;
-    for (int i = 0; i < g_shadow_texels; ++i) {
-      bvec4 sharp = greaterThan(hi[i] - lo[i], vec4(LAYERED_SHARP));
-      if (!any(sharp)) continue;
-      uvec4 b = (uvec4(bits) >> uvec4(4 * i) + uvec4(0, 1, 2, 3)) & 1u;
-      vec4 hard = vec4(1.0) - vec4(b);  // 1 lit, 0 shadowed
-      vec4 guided = vec4(0.0);
-      vec4 guided_weight = vec4(1e-6);
-      for (int k = 0; k < 4; ++k) {
-        vec4 v = texelFetch(shadow_layers, ivec3(texels[k], i), 0);
-        vec4 agree = vec4(1.0) - abs(v - hard);
-        vec4 w = weights[k] * agree * agree;
-        guided += w * v;
-        guided_weight += w;
-      }
-      g_shadow[i] = mix(g_shadow[i], guided / guided_weight, vec4(sharp));
-    }
-#endif
-    g_layered_foreign = !matched || near_edge;
+    g_layered_foreign = !layered_upsample(pixel, low, scale, z, n) || near_edge;
   }
 #if HAS_COLOUR
   ivec3 size = textureSize(colour_layers, 0);
@@ -171,8 +195,9 @@ void layered_fetch(ivec2 pixel) {
 }
 
 vec3 unpack_tint(uint packed) {
-  vec4 c = vec4((packed >> 24) & 0xFFu, (packed >> 16) & 0xFFu, (packed >> 8) & 0xFFu,
-                packed & 0xFFu) / 255.0;
+  vec4 c =
+      vec4((packed >> 24) & 0xFFu, (packed >> 16) & 0xFFu, (packed >> 8) & 0xFFu, packed & 0xFFu) /
+      255.0;
   return mix(vec3(1.0), c.rgb, c.a);
 }
 

@@ -33,7 +33,7 @@ float sdf_distance(vec3 p) {
 // radius (the sun: tan of its angular radius).
 float sdf_visibility(vec3 p, vec3 n, vec3 l, float distance, float radius, bool sun) {
   if (sdf_info.dims.w == 0u) return 1.0;  // nothing baked
-  float voxel = sdf_info.voxel.w;  // the smallest side
+  float voxel = sdf_info.voxel.w;         // the smallest side
   // Leave the receiver's own surface: a voxel along the normal (the voxel's extent in
   // that direction), as the field's interpolation smears surfaces by about that much.
   float offset = dot(abs(n), sdf_info.voxel.xyz);

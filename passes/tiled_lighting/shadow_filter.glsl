@@ -22,18 +22,18 @@
 
 // A receiver in one atlas face, with what the filters need beyond ShadowCoord.
 struct FilterCoord {
-  vec2 uv;          // face uv of the receiver
-  float layer;      // atlas layer
-  float depth;      // receiver depth in face clip space (0..1)
-  vec2 slope;       // d depth / d uv of the receiver plane
-  float bias;       // constant depth bias (face clip units)
-  float linear;     // receiver depth along the face axis (metres)
+  vec2 uv;       // face uv of the receiver
+  float layer;   // atlas layer
+  float depth;   // receiver depth in face clip space (0..1)
+  vec2 slope;    // d depth / d uv of the receiver plane
+  float bias;    // constant depth bias (face clip units)
+  float linear;  // receiver depth along the face axis (metres)
   float near;
   float far;
-  float texel;      // one texel in face uv (the light's face size)
-  float share;      // the face's uv square in its layer (shadow_atlas_uv)
-  float scale;      // ShadowLight.projection.x: 1 point, tan(half fov) spot, half width sun
-  bool ortho;       // directional light: depth linear in metres (0 at near, far at 1)
+  float texel;  // one texel in face uv (the light's face size)
+  float share;  // the face's uv square in its layer (shadow_atlas_uv)
+  float scale;  // ShadowLight.projection.x: 1 point, tan(half fov) spot, half width sun
+  bool ortho;   // directional light: depth linear in metres (0 at near, far at 1)
 };
 
 vec3 filter_project(mat4 view_proj, vec3 p) {
@@ -101,7 +101,9 @@ float filter_tap(FilterCoord c, vec2 offset) {
   return stored >= c.depth + dot(c.slope, offset) - c.bias ? 1.0 : 0.0;
 }
 
-float filter_hard(FilterCoord c) { return filter_tap(c, vec2(0.0)); }
+float filter_hard(FilterCoord c) {
+  return filter_tap(c, vec2(0.0));
+}
 
 // Box filter of taps x taps texels spaced `spacing` texels apart.
 float filter_pcf(FilterCoord c, int taps, float spacing) {

@@ -15,8 +15,12 @@
 #include "../common/shading.glsl"
 #include "tiled_lighting_interface.h"
 
-layout(set = 0, binding = kTiledFrame) uniform Frame { FrameUniforms frame; };
-layout(set = 0, binding = kTiledLights, std430) readonly buffer Lights { GpuLight lights[]; };
+layout(set = 0, binding = kTiledFrame) uniform Frame {
+  FrameUniforms frame;
+};
+layout(set = 0, binding = kTiledLights, std430) readonly buffer Lights {
+  GpuLight lights[];
+};
 layout(set = 0, binding = kTiledDepth) uniform sampler2D g_depth;
 layout(set = 0, binding = kTiledNormal) uniform sampler2D g_normal;
 layout(set = 0, binding = kTiledAlbedo) uniform sampler2D g_albedo;
@@ -77,7 +81,9 @@ layout(set = 0, binding = kTiledPeeled) uniform sampler2DArray peeled_map;
 #elif SHADOW_MODE == 10
 #include "../interface/shared/sdf_info.h"
 layout(set = 0, binding = kTiledSdf) uniform sampler2DArray sdf_volume;
-layout(set = 0, binding = kTiledSdfInfo, std430) readonly buffer SdfData { SdfInfo sdf_info; };
+layout(set = 0, binding = kTiledSdfInfo, std430) readonly buffer SdfData {
+  SdfInfo sdf_info;
+};
 #include "sdf_shadow.glsl"
 #elif SHADOW_MODE == 9
 layout(set = 0, binding = kTiledMoments) uniform usampler2DArray moments_map;

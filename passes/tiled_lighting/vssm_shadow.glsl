@@ -38,7 +38,7 @@ float vssm_shadow_face(ShadowLight light, int layer, vec3 p_world, vec3 n_world)
   bool ortho = shadow_is_ortho(q.light);
   float range = max(q.light.position_range.w, 1e-6);
   float radius = q.light.params.x * light_size_scale;  // metres (the sun: tan of its radius)
-  float half_face = q.light.projection.x;  // metres per unit of face clip at distance 1
+  float half_face = q.light.projection.x;              // metres per unit of face clip at distance 1
   float d_r = max(t * range, 1e-4);
   float near = q.light.params.y;
   float widest = 0.25 * texels;

@@ -9,4 +9,6 @@ layout(set = 0, binding = kTonemapHdr) uniform sampler2D hdr;
 layout(location = 0) in vec2 in_uv;
 layout(location = 0) out vec4 out_color;
 
-void main() { out_color = tone_map(texelFetch(hdr, ivec2(gl_FragCoord.xy), 0).rgb); }
+void main() {
+  out_color = tone_map(texelFetch(hdr, ivec2(gl_FragCoord.xy), 0).rgb);
+}

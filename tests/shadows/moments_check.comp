@@ -11,10 +11,16 @@ struct Region {
   vec4 depths;   // occluder depths t (1: nothing drawn)
   vec4 weights;  // their share of the filter region (sum 1)
 };
-layout(set = 0, binding = 0) readonly buffer Regions { Region regions[]; };
+layout(set = 0, binding = 0) readonly buffer Regions {
+  Region regions[];
+};
 // x receiver t, y light-bleeding reduction, z depth tolerance.
-layout(set = 0, binding = 1) readonly buffer Receivers { vec4 receivers[]; };
-layout(set = 0, binding = 2) writeonly buffer Results { vec4 results[]; };
+layout(set = 0, binding = 1) readonly buffer Receivers {
+  vec4 receivers[];
+};
+layout(set = 0, binding = 2) writeonly buffer Results {
+  vec4 results[];
+};
 
 void main() {
   uint i = gl_GlobalInvocationID.x;

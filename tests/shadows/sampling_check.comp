@@ -13,8 +13,12 @@ layout(set = 0, binding = 0) readonly buffer Shadows {
   ShadowLight shadow_lights[ANTUMBRA_MAX_SHADOW_LIGHTS];
   ShadowFace shadow_faces[];
 };
-layout(set = 0, binding = 1) readonly buffer Points { vec4 points[]; };
-layout(set = 0, binding = 2) writeonly buffer Results { vec4 results[]; };  // layer, u, v, depth
+layout(set = 0, binding = 1) readonly buffer Points {
+  vec4 points[];
+};
+layout(set = 0, binding = 2) writeonly buffer Results {
+  vec4 results[];  // layer, u, v, depth
+};
 
 #define SHADOW_FACES shadow_faces
 #include "common/shadow_sampling.glsl"
