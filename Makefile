@@ -19,7 +19,9 @@ configure: deps
 build: configure
 	@cmake --build $(BUILD) -j$(JOBS)
 
-demo: build
+# Builds the program alone (no test suites, no benchmarks): the first image sooner.
+demo: configure
+	@cmake --build $(BUILD) -j$(JOBS) --target antumbra
 	@mkdir -p out
 	$(BUILD)/app/antumbra render $(DEMO_ARGS)
 
