@@ -13,7 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "antumbra/base/json_document.hpp"
+#include "antumbra/fg/graph_source.hpp"
 #include "antumbra/gpu/context.hpp"
 #include "antumbra/gpu/timing.hpp"
 #include "antumbra/runtime/render_session.hpp"
@@ -168,9 +168,9 @@ BenchResult run_scenario(runtime::RenderSession& session, const runtime::DataPat
     r.detail = graph_path.string() + " does not exist";
     return r;
   }
-  auto document = base::load_json_file(graph_path.string());
-  auto graph = document.ok() ? fg::parse_graph(document.value())
-                             : base::Result<fg::GraphDesc>(document.diagnostics());
+  // The one load path in its two halves (fg/graph_source.hpp), the scenario's changes
+  // between them.
+  auto graph = fg::read_graph(fg::GraphSource::from_file(graph_path.string()));
   if (!graph.ok()) {
     r.status = "invalid";
     r.detail = graph.diagnostics().to_text();

@@ -10,8 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "antumbra/base/diagnostic_codes.hpp"
-#include "antumbra/base/json_document.hpp"
-#include "antumbra/fg/graph_desc.hpp"
+#include "antumbra/fg/graph_source.hpp"
 #include "antumbra/gpu/image_io.hpp"
 #include "antumbra/gpu/timing.hpp"
 #include "antumbra/runtime/render_session.hpp"
@@ -153,13 +152,7 @@ namespace {
 // extra resources named in `keep` are marked persistent so they stay readable too.
 std::optional<fg::GraphDesc> load_for_quality(const std::string& path, const std::string& resource,
                                               const std::vector<std::string>& keep) {
-  auto document = base::load_json_file(path);
-  if (!document.ok()) {
-    for (const auto& d : document.diagnostics())
-      std::fprintf(stderr, "%s\n", base::format_text(d).c_str());
-    return std::nullopt;
-  }
-  auto graph = fg::parse_graph(document.value());
+  auto graph = fg::read_graph(fg::GraphSource::from_file(path));  // the one load path's read
   if (!graph.ok()) {
     for (const auto& d : graph.diagnostics())
       std::fprintf(stderr, "%s\n", base::format_text(d).c_str());

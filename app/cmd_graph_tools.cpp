@@ -2,7 +2,7 @@
 #include <cstdio>
 #include <iostream>
 
-#include "antumbra/fg/compiler.hpp"
+#include "antumbra/fg/graph_source.hpp"
 #include "antumbra/fg/plan_io.hpp"
 #include "antumbra/fg/plan_memory.hpp"
 #include "antumbra/fg/schema.hpp"
@@ -70,7 +70,7 @@ int run_validate(const ValidateOptions& options) {
   bool unreadable = false;
   nlohmann::json report = nlohmann::json::array();
   for (const auto& file : options.files) {
-    const auto result = fg::compile_file(file, registry.reflection());
+    const auto result = fg::compile_graph(fg::GraphSource::from_file(file), registry.reflection());
     const auto& diagnostics = result.diagnostics();
     const bool file_failed = !result.ok() || (options.werror && diagnostics.warning_count() > 0);
     failed = failed || file_failed;
@@ -119,7 +119,8 @@ int run_plan(const PlanOptions& options) {
   const auto registry = passes::builtin_pass_registry();
   fg::CompileOptions compile_options;
   compile_options.viewport = {width, height};
-  const auto result = fg::compile_file(options.file, registry.reflection(), compile_options);
+  const auto result = fg::compile_graph(fg::GraphSource::from_file(options.file),
+                                        registry.reflection(), compile_options);
   for (const auto& d : result.diagnostics()) {
     if (d.severity != base::Severity::note)
       std::fprintf(stderr, "%s\n", base::format_text(d).c_str());

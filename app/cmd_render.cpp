@@ -5,8 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "antumbra/base/diagnostic_codes.hpp"
-#include "antumbra/base/json_document.hpp"
-#include "antumbra/fg/graph_desc.hpp"
+#include "antumbra/fg/graph_source.hpp"
 #include "antumbra/fg/registry.hpp"
 #include "antumbra/gpu/timing.hpp"
 #include "antumbra/runtime/load_progress.hpp"
@@ -128,14 +127,12 @@ bool apply_output_resource(const RenderOptions& options, const std::string& grap
 // User input first, so a broken file fails fast without touching the GPU. Returns the
 // exit code of the failure, or kExitOk with `inputs` filled.
 int load_render_inputs(const RenderOptions& options, bool json, RenderInputs& inputs) {
-  auto document = base::load_json_file(inputs.graph_path);
-  if (!document.ok()) {
-    return fail_render(document.diagnostics(), runtime::exit_code_for(document.diagnostics()), json,
-                       inputs.graph_path);
-  }
-  auto graph = fg::parse_graph(document.value());
+  // The one load path's read (fg/graph_source.hpp): the device, and with it the load's
+  // second half (RenderSession::load_graph), comes after the scene is read too.
+  auto graph = fg::read_graph(fg::GraphSource::from_file(inputs.graph_path));
   if (!graph.ok()) {
-    return fail_render(graph.diagnostics(), runtime::kExitDiagnostics, json, inputs.graph_path);
+    return fail_render(graph.diagnostics(), runtime::exit_code_for(graph.diagnostics()), json,
+                       inputs.graph_path);
   }
   if (!apply_output_resource(options, inputs.graph_path, graph.value())) {
     return runtime::kExitUsage;

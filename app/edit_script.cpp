@@ -11,17 +11,16 @@
 #include "antumbra/base/diagnostic_codes.hpp"
 #include "antumbra/base/json_document.hpp"
 #include "antumbra/editor/edit_script_check.hpp"
+#include "antumbra/editor/edit_session.hpp"
 #include "antumbra/editor/fix_suggestion.hpp"
 #include "antumbra/editor/graph_document.hpp"
 #include "antumbra/editor/layer_status.hpp"
 #include "antumbra/editor/scene_document.hpp"
 #include "antumbra/editor/viewport.hpp"
+#include "antumbra/editor_app/session_renderer.hpp"
 #include "antumbra/editor_app/windowed_editor.hpp"
-#include "antumbra/fg/graph_desc.hpp"
-#include "antumbra/fg/plan_diff.hpp"
 #include "antumbra/gpu/timing.hpp"
 #include "antumbra/runtime/render_session.hpp"
-#include "antumbra/scene/scene_file.hpp"
 #include "commands.hpp"
 #include "register_builtin_passes.hpp"
 
@@ -49,22 +48,20 @@ struct StepError {
   std::string message;
 };
 
-class EditRun {
+// The script's steps over the edit session the window runs (antumbra/editor/
+// edit_session.hpp): a step does what a panel or the viewport does with the same input,
+// then renders the frame that shows it, so the scripted tests test the window's logic.
+// What is left here is the script's own: reading steps, checking expectations, timing.
+class ScriptRun {
  public:
-  EditRun(runtime::RenderSession& session, editor::SceneDocument scene, editor::GraphDocument graph,
-          editor::PassDescLookup lookup, fs::path script_dir)
-      : session_(session),
-        scene_(std::move(scene)),
-        graph_(std::move(graph)),
-        lookup_(std::move(lookup)),
-        script_dir_(std::move(script_dir)) {}
+  ScriptRun(runtime::RenderSession& session, editor::EditSession& edit, fs::path script_dir)
+      : session_(session), edit_(edit), script_dir_(std::move(script_dir)) {}
 
   // The first frame: the documents as loaded.
   bool start() {
-    const auto diagnostics = load_graph_text(graph_.to_text());
-    print(diagnostics);
-    if (diagnostics.has_errors()) return false;
-    sync_scene(true);
+    const bool started = edit_.start();
+    print(edit_.diagnostics());
+    if (!started) return false;
     render(1);
     return true;
   }
@@ -88,8 +85,8 @@ class EditRun {
   // The documents with edits no step saved: said at the end, so nothing is lost silently.
   [[nodiscard]] std::vector<std::string> unsaved() const {
     std::vector<std::string> files;
-    if (scene_.dirty()) files.push_back(scene_.file().string());
-    if (graph_.dirty()) files.push_back(graph_.file().string());
+    if (edit_.scene().dirty()) files.push_back(edit_.scene().file().string());
+    if (edit_.graph().dirty()) files.push_back(edit_.graph().file().string());
     return files;
   }
 
@@ -102,8 +99,8 @@ class EditRun {
 
  private:
   fs::path resolve(const std::string& name) const {
-    if (name == "$graph") return graph_.file();
-    if (name == "$scene") return scene_.file();
+    if (name == "$graph") return edit_.graph().file();
+    if (name == "$scene") return edit_.scene().file();
     const fs::path p(name);
     return p.is_absolute() ? p : script_dir_ / p;
   }
@@ -113,7 +110,7 @@ class EditRun {
   }
 
   std::size_t light_named(const std::string& name) const {
-    const int index = scene_.find_light(name);
+    const int index = edit_.scene().find_light(name);
     if (index < 0) throw StepError{"no light named '" + name + "'"};
     return static_cast<std::size_t>(index);
   }
@@ -128,111 +125,61 @@ class EditRun {
     return {v[0].get<float>(), v[1].get<float>(), v[2].get<float>()};
   }
 
-  // The layer cap of the graph being edited: its light-layering pass's maxLayers.
-  int graph_cap() const { return editor::layer_cap(graph_); }
-
-  // Scene edits reach the GPU and the layer status in the same step: the next frame
-  // (and the warnings it reports) already shows them.
-  // The editor edits lights only, so after the first upload only they are replaced.
-  void sync_scene(bool upload_geometry = false) {
-    auto parsed = scene::parse_scene_text(scene_.to_text(), scene_.file().string());
-    if (!parsed.ok()) {
-      print(parsed.diagnostics());
-      throw StepError{"the edited scene no longer parses"};
-    }
-    if (upload_geometry) {
-      scene_camera_ = parsed->camera;
-      drag_limit_ = editor::drag_limit(parsed.value());
-      camera_.reset(scene_camera_);
-      session_.set_scene(std::move(parsed.value()));
-      session_.set_camera(camera_.camera());  // what picking assumes
-    } else {
-      session_.set_lights(std::move(parsed.value().lights));
-    }
-    status_.set_cap(graph_cap());
-    status_.update(scene_);
-  }
-
-  base::Diagnostics load_graph_text(const std::string& text) {
-    auto document = base::parse_json(text, graph_.file().string());
-    if (!document.ok()) return document.diagnostics();
-    auto graph = fg::parse_graph(document.value());
-    if (!graph.ok()) return graph.diagnostics();
-    return session_.load_graph(graph.value());
-  }
-
-  // A reload as render --watch does it: a transaction that keeps the last good plan.
+  // A reload as the window does it with files changed on disk, the graph file and every
+  // shader taken as changed: a transaction that keeps the last good plan (and unsaved
+  // edits of the graph).
   void reload() {
-    gpu::CpuTimer latency;
-    const fg::Plan before = session_.executor().plan();
-    last_reload_ = load_graph_text(read_text(graph_.file()));
+    edit_.reload_from_disk();
+    last_reload_ = edit_.diagnostics();
     reload_ok_ = !last_reload_.has_errors();
     if (reload_ok_) {
-      if (auto doc = editor::GraphDocument::load(graph_.file(), lookup_); doc.ok()) {
-        graph_ = std::move(doc.value());
-      }
       render(1);
-      std::printf("  reloaded in %.1f ms: %s\n", latency.elapsed_ms(),
-                  fg::to_text(fg::diff_plans(before, session_.executor().plan())).c_str());
+      std::printf("  %s\n", edit_.reload_summary().c_str());
       print(session_.frame_diagnostics());  // a warning that still holds is said again
     } else {
       print(last_reload_);
       render(1);  // the last good plan keeps running
       std::printf("  reload refused; the last good frame keeps running\n");
     }
-    sync_scene();
   }
 
   void act(const std::string& what, const Json& step) {
-    editor::EditResult result;
-    bool scene_edit = true;
+    if (act_on_view(what, step) || act_on_files(what, step)) return;
+    if (what == "undo" || what == "redo") {
+      if (!(what == "undo" ? edit_.undo() : edit_.redo())) throw StepError{"nothing to " + what};
+    } else if (what == "set-param") {
+      set_param(step);
+    } else {
+      const editor::EditResult result = edit_scene(what, step);
+      if (!result) throw StepError{"edit refused: " + result.message};
+      edit_.scene_edited(result);
+    }
+    render(1);
+  }
+
+  // Steps that edit no document: frames, the camera, selection, a viewport drag.
+  bool act_on_view(const std::string& what, const Json& step) {
     if (what == "frames") {
       render(step.value("count", 1));
-      return;
+    } else if (what == "camera") {
+      navigate(step);
+    } else if (what == "click") {
+      edit_.scene().select(pick(step.at("at")));
+      std::printf("  selected %s\n", selected_name().c_str());
+    } else if (what == "viewport-drag") {
+      viewport_drag(step);
+    } else {
+      return false;
     }
-    if (what == "set-light") {
-      editor::LightChanges c;
-      if (step.contains("position")) c.position = vec3_of(step["position"]);
-      if (step.contains("color")) c.color = vec3_of(step["color"]);
-      if (step.contains("intensity")) c.intensity = step["intensity"].get<float>();
-      if (step.contains("range")) c.range = step["range"].get<float>();
-      if (step.contains("size")) c.size = step["size"].get<float>();
-      if (step.contains("castsShadows")) c.casts_shadows = step["castsShadows"].get<bool>();
-      if (step.contains("direction")) c.direction = vec3_of(step["direction"]);
-      if (step.contains("angle")) c.spot_outer = step["angle"].get<float>();
-      if (step.contains("innerAngle")) c.spot_inner = step["innerAngle"].get<float>();
-      result = scene_.apply(light_index(step), c);
-    } else if (what == "add-light") {
-      result =
-          scene_.add_light(scene::LightType::point, step.contains("position")
-                                                        ? vec3_of(step["position"])
-                                                        : editor::SceneDocument::kNewLightPosition);
-    } else if (what == "duplicate-light") {
-      result = scene_.duplicate_light(light_index(step));
-    } else if (what == "delete-light") {
-      result = scene_.delete_light(light_index(step));
-    } else if (what == "undo" || what == "redo") {
-      if (!(what == "undo" ? scene_.undo() : scene_.redo())) throw StepError{"nothing to " + what};
-    } else if (what == "apply-fix") {
-      const editor::FixSuggestion fix = status_.suggestion(scene_);
-      if (fix.best() == nullptr) throw StepError{"no fix to apply: " + fix.message};
-      std::printf("  fix: %s\n", fix.best()->description.c_str());
-      result = editor::apply_fix(scene_, *fix.best());
-    } else if (what == "save") {
-      scene_.save();
-      return;
-    } else if (what == "set-param") {
-      scene_edit = false;
-      result = graph_.set_param(step.at("pass").get<std::string>(),
-                                step.at("name").get<std::string>(), step.at("value"));
-      if (result) {
-        const auto diagnostics = load_graph_text(graph_.to_text());
-        print(diagnostics);
-        if (diagnostics.has_errors()) throw StepError{"the edited graph was refused"};
+    return true;
+  }
+
+  // Steps on files: saves, another tool's write, a reload.
+  bool act_on_files(const std::string& what, const Json& step) {
+    if (what == "save" || what == "save-graph") {
+      if (!edit_.save(what == "save" ? editor::DocKind::scene : editor::DocKind::graph)) {
+        throw StepError{edit_.message()};
       }
-    } else if (what == "save-graph") {
-      graph_.save();
-      return;
     } else if (what == "write-file") {
       // Another tool (an editor, a script) replaces a file on disk.
       const fs::path target = resolve(step.at("path").get<std::string>());
@@ -240,28 +187,56 @@ class EditRun {
                                    ? step["text"].get<std::string>()
                                    : read_text(resolve(step.at("from").get<std::string>()));
       std::ofstream(target, std::ios::binary | std::ios::trunc) << text;
-      return;
     } else if (what == "reload") {
       reload();
-      return;
-    } else if (what == "camera") {
-      navigate(step);
-      return;
-    } else if (what == "click") {
-      scene_.select(pick(step.at("at")));
-      std::printf("  selected %s\n", selected_name().c_str());
-      return;
-    } else if (what == "viewport-drag") {
-      viewport_drag(step);
-      return;
     } else {
-      throw StepError{"unknown action '" + what + "'"};
+      return false;
     }
+    return true;
+  }
+
+  // A parameter through the graph's reflection (range clamped), as the graph panel sets it.
+  void set_param(const Json& step) {
+    const auto result = edit_.set_param(step.at("pass").get<std::string>(),
+                                        step.at("name").get<std::string>(), step.at("value"));
     if (!result) throw StepError{"edit refused: " + result.message};
-    if (scene_edit) sync_scene();
-    status_.set_cap(graph_cap());  // a graph edit may have changed the cap
-    status_.update(scene_);
-    render(1);
+    if (!result.changed) return;
+    print(edit_.diagnostics());
+    if (edit_.diagnostics().has_errors()) throw StepError{"the edited graph was refused"};
+  }
+
+  // One undoable scene edit, as the lights and layers panels make them.
+  editor::EditResult edit_scene(const std::string& what, const Json& step) {
+    auto& scene = edit_.scene();
+    if (what == "set-light") return scene.apply(light_index(step), light_changes(step));
+    if (what == "add-light") {
+      return scene.add_light(scene::LightType::point,
+                             step.contains("position") ? vec3_of(step["position"])
+                                                       : editor::SceneDocument::kNewLightPosition);
+    }
+    if (what == "duplicate-light") return scene.duplicate_light(light_index(step));
+    if (what == "delete-light") return scene.delete_light(light_index(step));
+    if (what == "apply-fix") {
+      const editor::FixSuggestion fix = edit_.status().suggestion(scene);
+      if (fix.best() == nullptr) throw StepError{"no fix to apply: " + fix.message};
+      std::printf("  fix: %s\n", fix.best()->description.c_str());
+      return editor::apply_fix(scene, *fix.best());
+    }
+    throw StepError{"unknown action '" + what + "'"};
+  }
+
+  static editor::LightChanges light_changes(const Json& step) {
+    editor::LightChanges c;
+    if (step.contains("position")) c.position = vec3_of(step["position"]);
+    if (step.contains("color")) c.color = vec3_of(step["color"]);
+    if (step.contains("intensity")) c.intensity = step["intensity"].get<float>();
+    if (step.contains("range")) c.range = step["range"].get<float>();
+    if (step.contains("size")) c.size = step["size"].get<float>();
+    if (step.contains("castsShadows")) c.casts_shadows = step["castsShadows"].get<bool>();
+    if (step.contains("direction")) c.direction = vec3_of(step["direction"]);
+    if (step.contains("angle")) c.spot_outer = step["angle"].get<float>();
+    if (step.contains("innerAngle")) c.spot_inner = step["innerAngle"].get<float>();
+    return c;
   }
 
   // The viewport as the window drives it: image pixels of the graph's viewport.
@@ -270,18 +245,19 @@ class EditRun {
             static_cast<int>(session_.viewport().height)};
   }
 
+  [[nodiscard]] const scene::Camera& camera() const { return edit_.camera().camera(); }
+
   // A pixel [x, y]; a light's name: where its centre is on screen; {"over": [x, y, z]}:
   // where that world point is on screen.
   [[nodiscard]] glm::vec2 pixel_of(const Json& at) const {
     if (at.is_object() && at.contains("over")) {
-      const auto p = editor::project(camera_.camera(), view_size(), vec3_of(at["over"]));
+      const auto p = editor::project(camera(), view_size(), vec3_of(at["over"]));
       if (!p) throw StepError{"that point is behind the camera"};
       return *p;
     }
     if (at.is_string()) {
       const auto index = light_named(at.get<std::string>());
-      const auto p =
-          editor::project(camera_.camera(), view_size(), scene_.lights()[index].position);
+      const auto p = editor::project(camera(), view_size(), edit_.scene().lights()[index].position);
       if (!p) throw StepError{"'" + at.get<std::string>() + "' is behind the camera"};
       return *p;
     }
@@ -291,40 +267,44 @@ class EditRun {
   }
 
   [[nodiscard]] int pick(const Json& at) const {
-    return editor::pick_light(scene_.lights(), camera_.camera(), view_size(), pixel_of(at));
+    return editor::pick_light(edit_.scene().lights(), camera(), view_size(), pixel_of(at));
   }
 
   [[nodiscard]] std::string selected_name() const {
-    const int s = scene_.selected();
-    return s >= 0 && s < static_cast<int>(scene_.lights().size())
-               ? "'" + scene_.lights()[static_cast<std::size_t>(s)].name + "'"
+    const int s = edit_.scene().selected();
+    return s >= 0 && s < static_cast<int>(edit_.scene().lights().size())
+               ? "'" + edit_.scene().lights()[static_cast<std::size_t>(s)].name + "'"
                : std::string("nothing");
   }
 
+  // The viewport's navigation, as the mouse and keys drive it in the window.
   void navigate(const Json& step) {
-    if (step.value("reset", false)) camera_.reset(scene_camera_);
+    if (step.value("reset", false)) edit_.reset_camera();
+    editor::ViewportCamera view = edit_.camera();
     if (step.contains("pivot")) {
-      camera_.set_pivot(scene_.lights()[light_named(step["pivot"].get<std::string>())].position);
+      view.set_pivot(
+          edit_.scene().lights()[light_named(step["pivot"].get<std::string>())].position);
     }
-    if (step.contains("orbit")) camera_.orbit(vec2_of(step["orbit"]));
-    if (step.contains("look")) camera_.look(vec2_of(step["look"]));
-    if (step.contains("dolly")) camera_.dolly(step["dolly"].get<float>());
-    if (step.contains("move")) camera_.move(vec3_of(step["move"]), step.value("metres", 1.0f));
-    session_.set_camera(camera_.camera());
-    const auto& c = camera_.camera();
+    if (step.contains("orbit")) view.orbit(vec2_of(step["orbit"]));
+    if (step.contains("look")) view.look(vec2_of(step["look"]));
+    if (step.contains("dolly")) view.dolly(step["dolly"].get<float>());
+    if (step.contains("move")) view.move(vec3_of(step["move"]), step.value("metres", 1.0f));
+    edit_.set_camera(view);
+    const auto& c = camera();
     std::printf("  camera at (%.2f, %.2f, %.2f) looking at (%.2f, %.2f, %.2f)\n", c.position.x,
                 c.position.y, c.position.z, c.target.x, c.target.y, c.target.z);
     render(1);
   }
 
-  // Press on a light, move in `steps` increments, release: one undoable gesture. The
-  // grabbed point must end under the cursor: within a pixel of `to` on screen and, for
-  // {"over": P}, within `tolerance` metres (default 0.05) of P.
+  // Press on a light, move in `steps` increments, release: one undoable gesture, as the
+  // viewport's drag (editor_app's ViewportView). The grabbed point must end under the
+  // cursor: within a pixel of `to` on screen and, for {"over": P}, within `tolerance`
+  // metres (default 0.05) of P.
   void viewport_drag(const Json& step) {
     const int hit = pick(step.at("from"));
     if (hit < 0) throw StepError{"no light under the cursor where the drag starts"};
     const auto index = static_cast<std::size_t>(hit);
-    scene_.select(hit);
+    edit_.scene().select(hit);
     const glm::vec2 from = pixel_of(step["from"]);
     const glm::vec2 to = pixel_of(step.at("to"));
     const std::string plane = step.value("plane", std::string("horizontal"));
@@ -332,26 +312,29 @@ class EditRun {
       throw StepError{"plane must be \"horizontal\" or \"vertical\""};
     }
     const editor::LightDrag drag(
-        scene_.lights()[index].position, camera_.camera(), view_size(), from,
+        edit_.scene().lights()[index].position, camera(), view_size(), from,
         plane == "vertical" ? editor::DragPlane::vertical : editor::DragPlane::horizontal,
-        drag_limit_);
+        edit_.drag_limit());
     std::printf("  %s\n", drag.describe().c_str());
     const int steps = std::max(1, step.value("steps", 4));
-    scene_.begin_gesture();
+    edit_.open_gesture(editor::DocKind::scene);
     for (int i = 1; i <= steps; ++i) {
       const glm::vec2 cursor =
           from + (to - from) * (static_cast<float>(i) / static_cast<float>(steps));
       const auto position = drag.update(cursor);
       if (!position) continue;  // off the plane: the light stays where it was last put
-      const auto result = scene_.set_position(index, *position);
-      if (!result) throw StepError{"edit refused: " + result.message};
-      sync_scene();
+      const auto result = edit_.scene().set_position(index, *position);
+      if (!result) {
+        edit_.end_frame(false);
+        throw StepError{"edit refused: " + result.message};
+      }
+      edit_.scene_edited(result);
       render(1);
     }
-    scene_.end_gesture();
-    const glm::vec3 p = scene_.lights()[index].position;
-    std::printf("  dragged '%s' to (%.3f, %.3f, %.3f)\n", scene_.lights()[index].name.c_str(), p.x,
-                p.y, p.z);
+    edit_.end_frame(false);  // the button is released
+    const glm::vec3 p = edit_.scene().lights()[index].position;
+    std::printf("  dragged '%s' to (%.3f, %.3f, %.3f)\n",
+                edit_.scene().lights()[index].name.c_str(), p.x, p.y, p.z);
     check_drag_landed(step, drag, p, to);
   }
 
@@ -359,7 +342,7 @@ class EditRun {
                          glm::vec2 to) const {
     char text[320];
     const glm::vec3 grabbed = position - drag.offset();
-    const auto on_screen = editor::project(camera_.camera(), view_size(), grabbed);
+    const auto on_screen = editor::project(camera(), view_size(), grabbed);
     if (!on_screen || glm::distance(*on_screen, to) > 1.0f) {
       char where[64] = "behind the camera";
       if (on_screen) {
@@ -371,7 +354,7 @@ class EditRun {
                     "the cursor's ray leaves the %s plane or the drag's limits "
                     "(far plane, %.1f m from its start)",
                     position.x, position.y, position.z, where,
-                    std::string(editor::to_string(drag.plane())).c_str(), drag_limit_);
+                    std::string(editor::to_string(drag.plane())).c_str(), edit_.drag_limit());
       throw StepError{text};
     }
     const Json& target = step.at("to");
@@ -396,7 +379,7 @@ class EditRun {
   }
 
   void check(const std::string& what, const Json& step) {
-    const auto& report = status_.report();
+    const auto& report = edit_.report();
     if (what == "warning" || what == "no-warning") {
       const bool want = what == "warning";
       if (report.over_cap() != want || frame_reports_layer_warning() != want) {
@@ -445,7 +428,7 @@ class EditRun {
       if (selected_name() != name) throw StepError{"selected " + selected_name() + ", not " + name};
     } else if (what == "light-at") {
       const glm::vec3 want = vec3_of(step.at("position"));
-      const glm::vec3 have = scene_.lights()[light_index(step)].position;
+      const glm::vec3 have = edit_.scene().lights()[light_index(step)].position;
       const float tolerance = step.value("tolerance", 1e-3f);
       if (glm::distance(want, have) > tolerance) {
         char text[240];
@@ -457,8 +440,9 @@ class EditRun {
         throw StepError{text};
       }
     } else if (what == "dirty") {
-      if (scene_.dirty() != step.at("value").get<bool>()) {
-        throw StepError{std::string("the scene is ") + (scene_.dirty() ? "" : "not ") + "dirty"};
+      if (edit_.scene().dirty() != step.at("value").get<bool>()) {
+        throw StepError{std::string("the scene is ") + (edit_.scene().dirty() ? "" : "not ") +
+                        "dirty"};
       }
     } else {
       throw StepError{"unknown expectation '" + what + "'"};
@@ -466,14 +450,8 @@ class EditRun {
   }
 
   runtime::RenderSession& session_;
-  editor::SceneDocument scene_;
-  editor::GraphDocument graph_;
-  editor::PassDescLookup lookup_;
-  editor::LayerStatus status_;
+  editor::EditSession& edit_;
   fs::path script_dir_;
-  editor::ViewportCamera camera_{scene::Camera{}};
-  scene::Camera scene_camera_;
-  float drag_limit_ = 1.0f;
   base::Diagnostics last_reload_;
   bool reload_ok_ = true;
   std::vector<double> frame_ms_;
@@ -526,7 +504,7 @@ int load_script(const std::string& path, std::optional<base::JsonDocument>& scri
 
 // Every step runs, even after one failed, so one run reports every broken step. Returns
 // how many failed.
-int run_script_steps(EditRun& run, const base::JsonDocument& script,
+int run_script_steps(ScriptRun& run, const base::JsonDocument& script,
                      const std::string& script_path) {
   int failures = 0;
   const auto& steps = script.root()["steps"];
@@ -561,7 +539,7 @@ void write_graph_output(runtime::RenderSession& session, const std::string& path
                       path);
 }
 
-void print_edit_summary(const runtime::RenderSession& session, const EditRun& run, unsigned width,
+void print_edit_summary(const runtime::RenderSession& session, const ScriptRun& run, unsigned width,
                         unsigned height, int failures) {
   const auto timings = session.pass_timings();
   double gpu_ms = 0.0;
@@ -621,8 +599,10 @@ int run_edit(const EditOptions& options) {
   std::printf("device: %s%s\n", session.gpu().device_name().c_str(),
               options.validation ? " (validation + synchronization validation on)" : "");
 
-  EditRun run(
-      session, std::move(scene.value()), std::move(graph.value()), lookup,
+  editor_app::SessionRenderer renderer(session);
+  editor::EditSession edit(renderer, std::move(scene.value()), std::move(graph.value()), lookup);
+  ScriptRun run(
+      session, edit,
       options.script.empty() ? fs::current_path() : fs::absolute(options.script).parent_path());
   if (!run.start()) return runtime::kExitDiagnostics;
   const int failures = script ? run_script_steps(run, *script, options.script) : 0;

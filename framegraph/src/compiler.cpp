@@ -231,26 +231,4 @@ Result<Plan> compile_resolved(const GraphDesc& graph, const Registry& registry,
 
 }  // namespace
 
-Result<Plan> compile_document(Result<JsonDocument> doc, const Registry& registry,
-                              const CompileOptions& options) {
-  if (!doc) return doc.diagnostics();
-  Result<GraphDesc> graph = parse_graph(doc.value());
-  if (!graph) return graph.diagnostics();
-  Result<Plan> plan = compile(graph.value(), registry, options);
-  Diagnostics all = graph.diagnostics();
-  all.append(plan.diagnostics());
-  if (!plan) return all;
-  return Result<Plan>(std::move(plan.value()), std::move(all));
-}
-
-Result<Plan> compile_text(std::string_view text, const std::string& file, const Registry& registry,
-                          const CompileOptions& options) {
-  return compile_document(parse_json(text, file), registry, options);
-}
-
-Result<Plan> compile_file(const std::string& path, const Registry& registry,
-                          const CompileOptions& options) {
-  return compile_document(load_json_file(path), registry, options);
-}
-
 }  // namespace antumbra::fg

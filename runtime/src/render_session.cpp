@@ -77,6 +77,16 @@ RenderSession::~RenderSession() {
   if (gpu_) gpu_->wait_idle();
 }
 
+base::Diagnostics RenderSession::load_graph(const fg::GraphSource& source,
+                                            const fg::GraphEdit& edit) {
+  auto graph = fg::read_graph(source);
+  if (!graph.ok()) return graph.diagnostics();
+  if (edit) edit(graph.value());
+  base::Diagnostics diagnostics = graph.diagnostics();
+  diagnostics.append(load_graph(graph.value()));
+  return diagnostics;
+}
+
 base::Diagnostics RenderSession::load_graph(const fg::GraphDesc& graph) {
   fg::CompileOptions compile_options;
   compile_options.viewport = {options_.viewport.width, options_.viewport.height};

@@ -4,8 +4,7 @@
 #include <cstdio>
 #include <thread>
 
-#include "antumbra/base/json_document.hpp"
-#include "antumbra/fg/graph_desc.hpp"
+#include "antumbra/fg/graph_source.hpp"
 #include "antumbra/fg/plan_diff.hpp"
 #include "antumbra/gpu/timing.hpp"
 #include "antumbra/runtime/exit_codes.hpp"
@@ -22,14 +21,13 @@ void print(const base::Diagnostics& diagnostics) {
   }
 }
 
-// Parses and loads the graph beside the running one; diagnostics when it is refused.
+// Loads the graph file beside the running one through the one load path; diagnostics
+// when it is refused.
 base::Diagnostics reload_graph(RenderSession& session, const WatchOptions& options) {
-  auto document = base::load_json_file(options.graph_path);
-  if (!document.ok()) return document.diagnostics();
-  auto graph = fg::parse_graph(document.value());
-  if (!graph.ok()) return graph.diagnostics();
-  if (!options.output.empty()) graph->output = options.output;
-  return session.load_graph(graph.value());
+  return session.load_graph(fg::GraphSource::from_file(options.graph_path),
+                            [&](fg::GraphDesc& graph) {
+                              if (!options.output.empty()) graph.output = options.output;
+                            });
 }
 
 std::vector<std::filesystem::path> watched_files(const RenderSession& session,

@@ -109,12 +109,30 @@ fg::ParamDesc choice(std::string name, std::string def, std::vector<std::string>
   return p;
 }
 
-fg::PassDesc pass(std::string type, std::vector<fg::ParamDesc> params) {
+fg::PortDesc port(std::string name, fg::PortDirection direction, fg::ResourceKind kind,
+                  fg::Access access) {
+  fg::PortDesc p;
+  p.name = std::move(name);
+  p.direction = direction;
+  p.kind = kind;
+  p.access = access;
+  p.stage = fg::Stage::compute;
+  return p;
+}
+
+fg::PassDesc pass(std::string type, std::vector<fg::ParamDesc> params,
+                  std::vector<fg::PortDesc> ports = {}) {
   fg::PassDesc desc;
   desc.type = std::move(type);
   desc.params = std::move(params);
+  desc.ports = std::move(ports);
   return desc;
 }
+
+constexpr auto kIn = fg::PortDirection::input;
+constexpr auto kOut = fg::PortDirection::output;
+constexpr auto kImage = fg::ResourceKind::image;
+constexpr auto kBuffer = fg::ResourceKind::buffer;
 
 }  // namespace
 
@@ -122,15 +140,20 @@ fg::Registry make_fake_registry() {
   fg::Registry registry;
   registry.add(pass("light-layering",
                     {integer("maxLayers", 4, 1, 32),
-                     choice("order", "dsatur", {"dsatur", "smallest-last", "largest-first"})}));
-  registry.add(pass("lighting", {number("ambient", 1.0, 0.0, 4.0)}));
+                     choice("order", "dsatur", {"dsatur", "smallest-last", "largest-first"})},
+                    {port("assignment", kOut, kBuffer, fg::Access::storage_write)}));
+  registry.add(pass("lighting", {number("ambient", 1.0, 0.0, 4.0)},
+                    {port("assignment", kIn, kBuffer, fg::Access::storage_read),
+                     port("hdr", kOut, kImage, fg::Access::storage_write)}));
   fg::ParamDesc enabled;
   enabled.name = "enabled";
   enabled.type = fg::ParamType::boolean;
   enabled.default_value = true;
-  registry.add(
-      pass("tonemap", {number("exposure", 1.0, 0.0, 16.0),
-                       choice("operator", "aces", {"aces", "reinhard", "none"}), enabled}));
+  registry.add(pass("tonemap",
+                    {number("exposure", 1.0, 0.0, 16.0),
+                     choice("operator", "aces", {"aces", "reinhard", "none"}), enabled},
+                    {port("hdr", kIn, kImage, fg::Access::sampled),
+                     port("ldr", kOut, kImage, fg::Access::storage_write)}));
   registry.add(pass("shadow-pcss",
                     {integer("blockerSearch", 5, 1, 16), choice("kernel", "11", {"5", "11", "21"}),
                      number("lightSizeScale", 1.0, 0.0, 8.0)}));

@@ -38,7 +38,8 @@ class EditorStateGpu : public RenderTest {
     auto document = editor::GraphDocument::load(dir_.path() / "graph.json",
                                                 editor::lookup_in(registry_.reflection()));
     EXPECT_TRUE(scene.ok() && document.ok());
-    auto state = std::make_unique<EditorState>(session, std::move(scene.value()),
+    renderer_ = std::make_unique<editor_app::SessionRenderer>(session);
+    auto state = std::make_unique<EditorState>(*renderer_, std::move(scene.value()),
                                                std::move(document.value()),
                                                editor::lookup_in(registry_.reflection()),
                                                /*poll_interval_ms=*/0.0);
@@ -63,6 +64,7 @@ class EditorStateGpu : public RenderTest {
   }
 
   fgvk::PassRegistry registry_ = passes::builtin_pass_registry();
+  std::unique_ptr<editor_app::SessionRenderer> renderer_;  // the state's, over the test's session
   gpu::testing::TempDir dir_;
 };
 

@@ -123,7 +123,7 @@ void follow_window_size(EditorState& state, VkExtent2D window, PendingResize& pe
     return;
   }
   if (pending.since.elapsed_ms() < kSettleMs) return;
-  if (state.resize(window)) {
+  if (state.resize({window.width, window.height})) {
     pending.failed = {0, 0};
     std::printf("editor: graph resized to %ux%u (%s)\n", window.width, window.height,
                 state.reload_summary().c_str());
@@ -433,9 +433,12 @@ int run_windowed_editor(const WindowedOptions& options) {
   Presenter presenter(session.gpu(), *window, surface.handle());
   ImguiLayer ui(session.gpu(), *window, presenter.swapchain(), layout.scale());
   layout.restore_imgui_state();
-  EditorState state(session, std::move(documents->scene), std::move(documents->graph),
+  SessionRenderer renderer(session);
+  EditorState state(renderer, std::move(documents->scene), std::move(documents->graph),
                     editor::lookup_in(registry.reflection()));
-  if (!state.start(documents->images.get())) return runtime::kExitDiagnostics;
+  const bool started = state.start(documents->images.get());
+  print(state.diagnostics());
+  if (!started) return runtime::kExitDiagnostics;
   documents->images.reset();  // the scene holds the images it uses; the rest can go
   if (!options.select.empty() && !select_light(state, options.select)) {
     return runtime::kExitUsage;

@@ -6,7 +6,7 @@
 
 #include "antumbra/base/diagnostic_codes.hpp"
 #include "antumbra/base/text.hpp"
-#include "antumbra/fg/graph_desc.hpp"
+#include "antumbra/fg/graph_source.hpp"
 #include "antumbra/layering/layer_assignment.hpp"
 #include "antumbra/layering/layer_cap.hpp"
 
@@ -85,14 +85,12 @@ base::Result<GraphDocument> GraphDocument::load(const std::filesystem::path& fil
 base::Result<GraphDocument> GraphDocument::parse(std::string_view text,
                                                  const std::filesystem::path& file,
                                                  PassDescLookup lookup) {
-  auto document = base::parse_json(text, file.string());
-  if (!document.ok()) return document.diagnostics();
-  // The structure the views rely on (passes with names and object params) is what
-  // parse_graph checks; its located diagnostics are the editor's.
-  auto graph = fg::parse_graph(document.value());
+  // The structure the views rely on (passes with names and object params) is what the
+  // one read of a graph (fg::read_graph) checks; its located diagnostics are the editor's.
+  auto graph = fg::read_graph(fg::GraphSource::from_text(std::string(text), file.string()));
   if (!graph.ok()) return graph.diagnostics();
   GraphDocument doc;
-  doc.file_ = JsonFile(file, std::move(document.value()), std::string(text));
+  doc.file_ = JsonFile(file, std::move(graph->document), std::string(text));
   doc.lookup_ = std::move(lookup);
   return base::Result<GraphDocument>(std::move(doc), graph.diagnostics());
 }
@@ -208,11 +206,12 @@ EditResult GraphDocument::reset_param(std::string_view pass, std::string_view na
 }
 
 base::Diagnostics GraphDocument::recover() {
-  auto document = file_.read_recovery();
-  if (!document.ok()) return document.diagnostics();
-  auto graph = fg::parse_graph(document.value());
+  auto text = file_.read_recovery_text();
+  if (!text.ok()) return text.diagnostics();
+  auto graph = fg::read_graph(
+      fg::GraphSource::from_text(std::move(text.value()), file_.recovery().path().string()));
   if (!graph.ok()) return graph.diagnostics();
-  file_.replace_content(document->root());
+  file_.replace_content(graph->document.root());
   return graph.diagnostics();
 }
 

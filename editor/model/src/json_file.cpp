@@ -62,14 +62,18 @@ bool JsonFile::autosave_if_due(RecoveryFile::Clock::time_point now) {
   return recovery_.write_if_due(now, dirty(), revision(), [this] { return to_text(); });
 }
 
-base::Result<base::JsonDocument> JsonFile::read_recovery() const {
+base::Result<std::string> JsonFile::read_recovery_text() const {
   if (!recovery_.exists()) {
     base::Diagnostics diagnostics;
     diagnostics.add({codes::editor::kNoRecovery, base::Severity::error, "there is no recovery file",
                      recovery_.path().string(), "", 0, 0});
     return diagnostics;
   }
-  auto text = read_text_file(recovery_.path());
+  return read_text_file(recovery_.path());
+}
+
+base::Result<base::JsonDocument> JsonFile::read_recovery() const {
+  auto text = read_recovery_text();
   if (!text.ok()) return text.diagnostics();
   return base::parse_json(text.value(), recovery_.path().string());
 }

@@ -32,13 +32,10 @@ struct CompileOptions {
 Result<Plan> compile(const GraphDesc& graph, const Registry& registry,
                      const CompileOptions& options = {});
 
-// parse_graph + compile of a parsed document (or the parse's diagnostics).
-Result<Plan> compile_document(Result<JsonDocument> doc, const Registry& registry,
-                              const CompileOptions& options = {});
-// load_json_file + compile_document.
+// compile_graph() (fg/graph_source.hpp, the one load path) of GraphSource::from_file.
 Result<Plan> compile_file(const std::string& path, const Registry& registry,
                           const CompileOptions& options = {});
-// parse_json + compile_document, for text already in memory (editor, tests).
+// compile_graph() of GraphSource::from_text: text already in memory (tests, tools).
 Result<Plan> compile_text(std::string_view text, const std::string& file, const Registry& registry,
                           const CompileOptions& options = {});
 

@@ -1,7 +1,8 @@
 #pragma once
 // Everything one headless render needs, built in order and torn down in reverse:
 // device, shader compiler, pass registry, executor, scene on the GPU, frame loop.
-// Shared by `render` and (later) `bench` and the editor.
+// Shared by every command that renders (render, bench, quality, techniques) and the
+// editor, windowed or headless.
 
 #include <functional>
 #include <memory>
@@ -11,6 +12,7 @@
 
 #include "antumbra/base/diagnostics.hpp"
 #include "antumbra/fg/graph_desc.hpp"
+#include "antumbra/fg/graph_source.hpp"
 #include "antumbra/fgvk/executor.hpp"
 #include "antumbra/gpu/context.hpp"
 #include "antumbra/gpu/frame_loop.hpp"
@@ -49,8 +51,15 @@ class RenderSession {
   RenderSession(const DataPaths& paths, const SessionOptions& options);
   ~RenderSession();
 
-  // Compiles and realises a graph. On errors (graph or shader diagnostics) returns
-  // them and keeps the previous graph running.
+  // The one load path from a graph file to the running graph (docs/architecture.md, "One
+  // load path"): fg::read_graph, the host's `edit` (an output of its choice, overrides),
+  // then load_graph below. Every command and the editor load graph files through it or
+  // through its two halves. Diagnostics carry file, line:column and JSON Pointer; on
+  // errors the previous graph keeps running.
+  base::Diagnostics load_graph(const fg::GraphSource& source, const fg::GraphEdit& edit = {});
+  // Compiles and realises a graph already read (or built in code). On errors (graph or
+  // shader diagnostics, FG100 when the device cannot hold it) returns them and keeps the
+  // previous graph running.
   base::Diagnostics load_graph(const fg::GraphDesc& graph);
   void set_scene(scene::Scene scene);
   // Lights only (the editor's edits): geometry stays uploaded, so the static shadow

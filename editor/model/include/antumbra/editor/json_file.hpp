@@ -45,7 +45,9 @@ class JsonFile {
   [[nodiscard]] bool recovery_available() const { return recovery_available_; }
   [[nodiscard]] RecoveryFile& recovery() { return recovery_; }
   bool autosave_if_due(RecoveryFile::Clock::time_point now);
-  // The recovery file parsed (diagnostics when missing or bad); nothing changes yet.
+  // The recovery file's text (diagnostics when missing or unreadable), and parsed
+  // (diagnostics when bad too); nothing changes yet.
+  [[nodiscard]] base::Result<std::string> read_recovery_text() const;
   [[nodiscard]] base::Result<base::JsonDocument> read_recovery() const;
   // Takes `root` as the content: unsaved changes to the file, with no undo history.
   void replace_content(base::Json root);
