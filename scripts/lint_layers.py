@@ -4,7 +4,7 @@
 Each source file (C++ and GLSL) belongs to the library of its folder. A quoted #include is
 resolved the way the build resolves it (the including file's folder, then the libraries'
 include folders) and must land in the same library or one it links, directly or below
-(docs/architecture.md, section 1: every arrow points down). Besides:
+(docs/architecture.md, section 1: every arrow points down; the graph is read from there). Besides:
 - the Vulkan-free libraries (the graph core, scene, layering, editor model, base, watch,
   the shared interface) include no Vulkan header;
 - no pass folder includes another pass folder, and passes/common includes none (what
@@ -43,22 +43,44 @@ MODULES = [
 ]
 TOOLS = ("tests/", "bench/", "fuzz/")
 
-# What each library links directly (docs/architecture.md, section 1).
-LINKS = {
-    "app": {"runtime", "editor_app", "editor_model"},
-    "editor_app": {"runtime", "editor_model"},
-    "runtime": {"passes", "watch"},
-    "editor_model": {"framegraph", "scene", "layering"},
-    "passes": {"gpu_interface", "fg_vulkan", "engine", "scene", "layering"},
-    "fg_vulkan": {"framegraph", "engine"},
-    "layering": {"base", "gpu_interface", "scene"},
-    "framegraph": {"base"},
-    "engine": {"base"},
-    "scene": {"base"},
-    "watch": set(),
-    "gpu_interface": set(),
-    "base": set(),
+# CMake targets -> the libraries above ("antumbra (exe)" and the app tools share app/).
+TARGETS = {
+    "antumbra": "app", "antumbra_app_tools": "app", "antumbra_editor_app": "editor_app",
+    "antumbra_editor_model": "editor_model", "antumbra_runtime": "runtime",
+    "antumbra_passes": "passes", "antumbra_fg_vulkan": "fg_vulkan",
+    "antumbra_framegraph": "framegraph", "antumbra_engine": "engine", "antumbra_scene": "scene",
+    "antumbra_watch": "watch", "antumbra_gpu_interface": "gpu_interface",
+    "antumbra_layering": "layering", "antumbra_layering_scene": "layering",
+    "antumbra_base": "base",
 }
+TARGET_NAME = re.compile(r"\bantumbra(?:_[a-z_]+)?(?:\(_scene\))?")
+
+
+def read_links(root=ROOT):
+    """What each library links directly, read from the graph of docs/architecture.md's
+    section 1 (the document is the rule: a link the code needs goes there first)."""
+    text = (root / "docs" / "architecture.md").read_text()
+    start = text.index("Links from each `CMakeLists.txt`")
+    block = text[text.index("```", start) + 3:]
+    block = block[:block.index("```")]
+    links, current = {module: set() for _, module in MODULES}, None
+    for line in block.splitlines():
+        for part in line.split(";"):
+            head, arrow, tail = part.partition("->")
+            if arrow:
+                name = TARGET_NAME.search(head)
+                current = TARGETS.get(name.group(0).replace("(_scene)", "")) if name else None
+            else:
+                tail = head
+            tail = re.sub(r"\([^)]*private\)", "", tail)  # private third-party links
+            for name in TARGET_NAME.findall(tail):
+                target = TARGETS.get(name.replace("(_scene)", ""))
+                if current and target and target != current:
+                    links[current].add(target)
+    return links
+
+
+LINKS = read_links()
 VULKAN_FREE = {"base", "framegraph", "scene", "watch", "layering", "editor_model",
                "gpu_interface"}
 
