@@ -31,7 +31,7 @@ bool texture_present(uint code) {
 // The slot's texture coordinates (its set, then its KHR_texture_transform) from both
 // sets (xy, zw); with `offset` 0, the same for a gradient of them.
 vec2 slot_uv(GpuMaterial m, uint slot, uint code, vec4 uv01, float offset) {
-  vec2 uv = ((code >> 16) & 1u) != 0u ? uv01.zw : uv01.xy;
+  vec2 uv = ((code >> ANTUMBRA_TEXTURE_TEXCOORD_SHIFT) & 1u) != 0u ? uv01.zw : uv01.xy;
   vec4 r0 = m.uv_rows[2u * slot];
   vec4 r1 = m.uv_rows[2u * slot + 1u];
   return vec2(dot(r0.xy, uv) + r0.z * offset, dot(r1.xy, uv) + r1.z * offset);
@@ -39,8 +39,8 @@ vec2 slot_uv(GpuMaterial m, uint slot, uint code, vec4 uv01, float offset) {
 
 // Clamp and mirror addressing on top of the samplers' repeat.
 float wrap_coordinate(float u, uint mode, float half_texel) {
-  if (mode == 1u) return clamp(u, half_texel, 1.0 - half_texel);
-  if (mode == 2u) {
+  if (mode == ANTUMBRA_TEXTURE_WRAP_CLAMP) return clamp(u, half_texel, 1.0 - half_texel);
+  if (mode == ANTUMBRA_TEXTURE_WRAP_MIRROR) {
     // Held off the fold by half a texel: the repeat sampler would blend across it.
     float m = mod(u, 2.0);
     return clamp(m > 1.0 ? 2.0 - m : m, half_texel, 1.0 - half_texel);
@@ -69,13 +69,18 @@ float wrap_coordinate(float u, uint mode, float half_texel) {
 
 // Samples texture `code` at `uv` with gradients dx, dy (of the unwrapped coordinates).
 vec4 sample_material_texture(uint code, vec2 uv, vec2 dx, vec2 dy, bool srgb) {
-  uint bucket = (code >> 12) & 15u;
+  uint bucket = (code >> ANTUMBRA_TEXTURE_BUCKET_SHIFT) & ANTUMBRA_TEXTURE_BUCKET_MASK;
   float half_texel = 0.5 / float(kTextureMinSize << bucket);
-  vec3 p = vec3(wrap_coordinate(uv.x, (code >> 17) & 3u, half_texel),
-                wrap_coordinate(uv.y, (code >> 19) & 3u, half_texel), float(code & 4095u));
+  vec3 p = vec3(
+      wrap_coordinate(uv.x, (code >> ANTUMBRA_TEXTURE_WRAP_U_SHIFT) & ANTUMBRA_TEXTURE_WRAP_MASK,
+                      half_texel),
+      wrap_coordinate(uv.y, (code >> ANTUMBRA_TEXTURE_WRAP_V_SHIFT) & ANTUMBRA_TEXTURE_WRAP_MASK,
+                      half_texel),
+      float(code & ANTUMBRA_TEXTURE_LAYER_MASK));
   float size = float(kTextureMinSize << bucket);
   // Nearest magnification: bilinear filtering at a texel's centre is that texel.
-  if (((code >> 21) & 1u) != 0u && max(dot(dx, dx), dot(dy, dy)) * size * size <= 1.0) {
+  if (((code >> ANTUMBRA_TEXTURE_NEAREST_SHIFT) & 1u) != 0u &&
+      max(dot(dx, dx), dot(dy, dy)) * size * size <= 1.0) {
     p.xy = (floor(p.xy * size) + 0.5) / size;
   }
 #ifdef MATERIAL_LINEAR_TEXTURES

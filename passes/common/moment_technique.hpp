@@ -9,11 +9,18 @@
 #include <vulkan/vulkan_core.h>
 
 #include "antumbra/fg/param_table.hpp"
+#include "interface/shared/shadow_modes.h"
 
 namespace antumbra::passes {
 
-// common/moments.glsl's MOMENTS_* values.
-enum class MomentTechnique : std::uint8_t { vsm, evsm2, evsm4, msm, vssm };
+// The values are MOMENTS_TECHNIQUE's (interface/shared/shadow_modes.h, common/moments.glsl).
+enum class MomentTechnique : std::uint8_t {
+  vsm = ANTUMBRA_MOMENTS_VSM,
+  evsm2 = ANTUMBRA_MOMENTS_EVSM2,
+  evsm4 = ANTUMBRA_MOMENTS_EVSM4,
+  msm = ANTUMBRA_MOMENTS_MSM,
+  vssm = ANTUMBRA_MOMENTS_VSSM
+};
 
 std::string_view to_string(MomentTechnique technique);
 // Components the technique stores (2 or 4).

@@ -1,13 +1,13 @@
 // Filtered shadow maps (docs/technique.md 3, "Filtered shadow maps"): the moments a
 // face's depth is stored as, and the visibility a receiver reads from filtered moments.
 // MOMENTS_TECHNIQUE (a define, both in shadow-moments and in the lighting that reads its
-// map) selects one of:
-//   MOMENTS_VSM    (t, t^2)                         Donnelly and Lauritzen 2006
-//   MOMENTS_EVSM2  (e^(c+ w), e^(2 c+ w))           Lauritzen and McCool 2008, w = 2t - 1
-//   MOMENTS_EVSM4  EVSM2 and (-e^(-c- w), e^(-2 c- w))
-//   MOMENTS_MSM    (t, t^2, t^3, t^4), Hamburger 4-moment reconstruction (Peters and
+// map) selects one of the ANTUMBRA_MOMENTS_* values (interface/shared/shadow_modes.h):
+//   VSM            (t, t^2)                         Donnelly and Lauritzen 2006
+//   EVSM2          (e^(c+ w), e^(2 c+ w))           Lauritzen and McCool 2008, w = 2t - 1
+//   EVSM4          EVSM2 and (-e^(-c- w), e^(-2 c- w))
+//   MSM            (t, t^2, t^3, t^4), Hamburger 4-moment reconstruction (Peters and
 //                  Klein 2015, algorithm 3)
-//   MOMENTS_VSSM   VSM's (t, t^2), stored as a summed-area table (common/summed_area.glsl)
+//   VSSM           VSM's (t, t^2), stored as a summed-area table (common/summed_area.glsl)
 //                  so any box filters in constant time (Yang et al. 2010)
 // t is the occluder's depth in [0, 1]: distance along the face axis over the light's range
 // (point, spot), or the orthographic map's linear depth (the sun). EVSM's exponents follow
@@ -15,11 +15,7 @@
 #ifndef ANTUMBRA_MOMENTS_GLSL
 #define ANTUMBRA_MOMENTS_GLSL
 
-#define MOMENTS_VSM 0
-#define MOMENTS_EVSM2 1
-#define MOMENTS_EVSM4 2
-#define MOMENTS_MSM 3
-#define MOMENTS_VSSM 4
+#include "../interface/shared/shadow_modes.h"
 
 #ifndef MOMENTS_HALF
 #define MOMENTS_HALF 0
@@ -32,9 +28,9 @@ vec2 evsm_exponents() {
 }
 
 vec4 moments_encode(float t) {
-#if MOMENTS_TECHNIQUE == MOMENTS_VSM || MOMENTS_TECHNIQUE == MOMENTS_VSSM
+#if MOMENTS_TECHNIQUE == ANTUMBRA_MOMENTS_VSM || MOMENTS_TECHNIQUE == ANTUMBRA_MOMENTS_VSSM
   return vec4(t, t * t, 0.0, 0.0);
-#elif MOMENTS_TECHNIQUE == MOMENTS_MSM
+#elif MOMENTS_TECHNIQUE == ANTUMBRA_MOMENTS_MSM
   float t2 = t * t;
   return vec4(t, t2, t2 * t, t2 * t2);
 #else
@@ -94,9 +90,9 @@ float msm_visibility(vec4 moments, float z) {
 // `epsilon`: the depth tolerance (in t) below which a receiver counts as on its occluder
 // (the minimum variance, warped like the depth for EVSM).
 float moments_visibility(vec4 m, float t, float epsilon, float bleeding) {
-#if MOMENTS_TECHNIQUE == MOMENTS_VSM || MOMENTS_TECHNIQUE == MOMENTS_VSSM
+#if MOMENTS_TECHNIQUE == ANTUMBRA_MOMENTS_VSM || MOMENTS_TECHNIQUE == ANTUMBRA_MOMENTS_VSSM
   float v = chebyshev_upper_bound(m.xy, t, epsilon * epsilon);
-#elif MOMENTS_TECHNIQUE == MOMENTS_MSM
+#elif MOMENTS_TECHNIQUE == ANTUMBRA_MOMENTS_MSM
   float v = msm_visibility(m, t - epsilon);
 #else
   vec2 c = evsm_exponents();
@@ -105,7 +101,7 @@ float moments_visibility(vec4 m, float t, float epsilon, float bleeding) {
   // d pos / dt = 2 c+ pos: the tolerance scaled into the warped depth.
   float pos_tolerance = 2.0 * c.x * pos * epsilon;
   float v = chebyshev_upper_bound(m.xy, pos, pos_tolerance * pos_tolerance);
-#if MOMENTS_TECHNIQUE == MOMENTS_EVSM4
+#if MOMENTS_TECHNIQUE == ANTUMBRA_MOMENTS_EVSM4
   float neg = -exp(-c.y * w);
   float neg_tolerance = 2.0 * c.y * neg * epsilon;
   v = min(v, chebyshev_upper_bound(m.zw, neg, neg_tolerance * neg_tolerance));

@@ -29,6 +29,7 @@ using shared::ShadowLight;
 static_assert(sizeof(ShadowHeader) == 16);
 static_assert(sizeof(ShadowLight) == 64);
 static_assert(sizeof(ShadowFace) == 80);
+static_assert(sizeof(ShadowFace) == ANTUMBRA_SHADOW_FACE_VEC4S * sizeof(glm::uvec4));
 
 // Byte offsets inside the shadowData buffer.
 inline constexpr std::size_t kShadowLightsOffset = sizeof(ShadowHeader);

@@ -6,6 +6,13 @@
 
 namespace antumbra::passes {
 
+// The shaders read a wrap field's value as these (interface/shared/material_textures.h).
+static_assert(static_cast<std::uint32_t>(scene::TextureWrap::repeat) ==
+              ANTUMBRA_TEXTURE_WRAP_REPEAT);
+static_assert(static_cast<std::uint32_t>(scene::TextureWrap::clamp) == ANTUMBRA_TEXTURE_WRAP_CLAMP);
+static_assert(static_cast<std::uint32_t>(scene::TextureWrap::mirror) ==
+              ANTUMBRA_TEXTURE_WRAP_MIRROR);
+
 std::uint64_t TexturePlan::bytes() const {
   std::uint64_t total = 0;
   for (const auto& space : layers) {
@@ -50,11 +57,12 @@ std::uint32_t texture_code(const TexturePlan& plan, const scene::Scene& scene,
   const TexturePlacement& p = plan.placements[static_cast<std::size_t>(slot.texture)];
   const scene::Texture& t = scene.textures[static_cast<std::size_t>(slot.texture)];
   if (!t.image) return 0;
-  std::uint32_t code = shared::kTexturePresent | p.layer | (p.bucket << 12U);
-  if (slot.texcoord == 1) code |= 1U << 16U;
-  code |= static_cast<std::uint32_t>(t.wrap_u) << 17U;
-  code |= static_cast<std::uint32_t>(t.wrap_v) << 19U;
-  if (t.nearest) code |= 1U << 21U;
+  std::uint32_t code =
+      shared::kTexturePresent | p.layer | (p.bucket << ANTUMBRA_TEXTURE_BUCKET_SHIFT);
+  if (slot.texcoord == 1) code |= 1U << ANTUMBRA_TEXTURE_TEXCOORD_SHIFT;
+  code |= static_cast<std::uint32_t>(t.wrap_u) << ANTUMBRA_TEXTURE_WRAP_U_SHIFT;
+  code |= static_cast<std::uint32_t>(t.wrap_v) << ANTUMBRA_TEXTURE_WRAP_V_SHIFT;
+  if (t.nearest) code |= 1U << ANTUMBRA_TEXTURE_NEAREST_SHIFT;
   return code;
 }
 

@@ -55,12 +55,13 @@ layout(set = 0, binding = kPenumbraEsmOut, rgba8) uniform writeonly image2DArray
 
 layout(local_size_x = TILE_SIZE, local_size_y = TILE_SIZE) in;
 
-// SLOTS (set by the pass from the penumbra image's array layers, 1..8) bounds every
-// per-pixel array, so that the loops unroll and the arrays stay in registers: indexed
-// with a run-time layer they would live in (slow) local memory on GPUs. Writes go
-// through slot_set(), a chain of selects over constant indices.
+// SLOTS (set by the pass from the penumbra image's array layers, 1 to
+// ANTUMBRA_MAX_PENUMBRA_SLOTS of interface/shared/limits.h) bounds every per-pixel array,
+// so that the loops unroll and the arrays stay in registers: indexed with a run-time
+// layer they would live in (slow) local memory on GPUs. Writes go through slot_set(), a
+// chain of selects over constant indices.
 #ifndef SLOTS
-#define SLOTS 8
+#define SLOTS ANTUMBRA_MAX_PENUMBRA_SLOTS
 #endif
 #define OWNED_LAYERS (SLOTS * 4)
 

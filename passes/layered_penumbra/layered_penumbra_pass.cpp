@@ -10,6 +10,7 @@
 #include "common/pass_support.hpp"
 #include "common/ports.hpp"
 #include "layered_penumbra_interface.h"
+#include "shared/limits.h"
 
 namespace antumbra::passes {
 namespace {
@@ -35,8 +36,8 @@ void LayeredPenumbraPass::prepare(fgvk::PrepareContext& context) {
   if (esm_) defines.push_back({"HAS_ESM", "1"});
   // The per-pixel arrays' size: constant-bounded loops keep them in registers.
   const fgvk::BoundImage* penumbra = context.bindings.image(port::kPenumbra);
-  defines.push_back(
-      {"SLOTS", std::to_string(std::clamp(penumbra != nullptr ? penumbra->layers : 8u, 1u, 8u))});
+  const std::uint32_t slots = penumbra != nullptr ? penumbra->layers : shared::kMaxPenumbraSlots;
+  defines.push_back({"SLOTS", std::to_string(std::clamp(slots, 1u, shared::kMaxPenumbraSlots))});
   auto shader =
       load_shader(context, "layered_penumbra/layered_penumbra.comp", shader_files_, defines);
   gpu::DescriptorSetLayoutBuilder builder;

@@ -18,6 +18,7 @@
 #include "penumbra_wedges_interface.h"
 #include "shared/limits.h"
 #include "shared/material_textures.h"
+#include "shared/workgroups.h"
 #include "silhouette_edges.hpp"
 
 namespace antumbra::passes {
@@ -34,7 +35,7 @@ constexpr VkPipelineStageFlags2 kDepthTests =
     VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT;
 constexpr VkFormat kSecondFormat = VK_FORMAT_D32_SFLOAT;
 constexpr VkFormat kWedgeDepthFormat = VK_FORMAT_D16_UNORM;
-constexpr std::uint32_t kGroup = 64;
+constexpr std::uint32_t kGroup = ANTUMBRA_WEDGE_GROUP;
 
 gpu::DescriptorSetLayoutBuilder wedge_bindings() {
   gpu::DescriptorSetLayoutBuilder b;

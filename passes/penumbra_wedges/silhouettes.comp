@@ -15,8 +15,9 @@
 // geometric borders that may be cut away.
 #include "../common/material.glsl"
 #include "wedges_common.glsl"
+#include "../interface/shared/workgroups.h"
 
-layout(local_size_x = 64) in;
+layout(local_size_x = ANTUMBRA_WEDGE_GROUP) in;
 
 layout(set = 0, binding = kWedgeVertices, std430) readonly buffer Vertices {
   float vertex_data[];

@@ -5,8 +5,9 @@
 // silhouettes shader counts the edges over a segment's capacity at counts[layers + first
 // layer], read back for the frame report).
 #include "wedges_common.glsl"
+#include "../interface/shared/workgroups.h"
 
-layout(local_size_x = 64) in;
+layout(local_size_x = ANTUMBRA_WEDGE_GROUP) in;
 
 layout(set = 0, binding = kWedgeCounts, std430) buffer Counts {
   uint counts[];

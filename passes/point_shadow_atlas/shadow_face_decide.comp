@@ -1,6 +1,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #include "face_decision_interface.h"
+#include "../interface/shared/shadow_data.h"
 
 // Decides, per atlas layer, whether the compute rasteriser draws its face this frame
 // and publishes the shadow data with that decision (docs/technique.md, "Receiver-driven
@@ -40,7 +41,7 @@ layout(std430, binding = kDecideStats) buffer Stats {
   uint stats[];
 };
 
-const uint kFaceVec4s = 5u;  // ShadowFace: mat4 view_proj, uvec4 info
+const uint kFaceVec4s = ANTUMBRA_SHADOW_FACE_VEC4S;  // ShadowFace: mat4 view_proj, uvec4 info
 
 void main() {
   uint i = gl_GlobalInvocationID.x;

@@ -299,7 +299,7 @@ vec3 over_w(int k) {
 // The base-colour texture coordinates of vertex `index` in its material's set.
 vec2 vertex_uv(uint index) {
   vec4 uv = attributes[index].uv;
-  return ((g_material.textures.x >> 16) & 1u) != 0u ? uv.zw : uv.xy;
+  return ((g_material.textures.x >> ANTUMBRA_TEXTURE_TEXCOORD_SHIFT) & 1u) != 0u ? uv.zw : uv.xy;
 }
 #endif
 

@@ -11,14 +11,15 @@
 #include "common/frame_resources.hpp"
 #include "common/ports.hpp"
 #include "shared/material_textures.h"
+#include "shared/workgroups.h"
 
 namespace antumbra::passes {
 namespace {
 
 using shared::SceneSdfPush;
 
-constexpr std::uint32_t kBrick = 4;   // sdf_bake.comp's workgroup side
-constexpr std::uint32_t kChunk = 64;  // triangles per chunk (CHUNK)
+constexpr std::uint32_t kBrick = ANTUMBRA_SDF_BRICK;  // sdf_bake.comp's workgroup side
+constexpr std::uint32_t kChunk = ANTUMBRA_SDF_CHUNK;  // triangles per chunk
 constexpr VkPipelineStageFlags2 kComputeStage = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
 constexpr float kMarginVoxels = 2.0f;
 

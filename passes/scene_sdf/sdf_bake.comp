@@ -1,9 +1,10 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 // scene-sdf's bake (docs/technique.md 3, "Signed distance field soft shadows"), two
-// dispatches of this file. SDF_CHUNKS = 1: the bounds of every run ("chunk") of 64
-// triangles. SDF_CHUNKS = 0: every voxel's signed distance to the nearest triangle, by
-// brute force over the chunks, each shared by a 4x4x4 brick of voxels. A brick skips
+// dispatches of this file. SDF_CHUNKS = 1: the bounds of every run ("chunk") of
+// ANTUMBRA_SDF_CHUNK triangles. SDF_CHUNKS = 0: every voxel's signed distance to the nearest
+// triangle, by brute force over the chunks, each shared by a brick of voxels
+// (ANTUMBRA_SDF_BRICK on a side; both in interface/shared/workgroups.h). A brick skips
 // chunks whose bounds lie farther than the band, then triangles whose own bounds do, so
 // the cost follows the triangles near each brick (meshes are contiguous in the index
 // list, so a chunk's bounds are tight).
@@ -20,6 +21,7 @@
 
 #include "scene_sdf_interface.h"
 #include "../interface/shared/sdf_info.h"
+#include "../interface/shared/workgroups.h"
 #define MATERIAL_SRGB_TEXTURES kSdfSrgbTextures
 #define MATERIAL_SAMPLER kSdfSampler
 #include "../common/material_textures.glsl"
@@ -36,7 +38,7 @@ layout(set = 0, binding = kSdfMaterials, std430) readonly buffer Materials {
 layout(set = 0, binding = kSdfAttributes, std430) readonly buffer Attributes {
   GpuVertexAttributes attributes[];
 };
-#define CHUNK 64
+#define CHUNK ANTUMBRA_SDF_CHUNK
 #if SDF_CHUNKS
 layout(set = 0, binding = kSdfChunks, std430) writeonly buffer Chunks {
   vec4 chunk_bounds[];
@@ -148,7 +150,8 @@ void main() {
   chunk_bounds[chunk * 2u + 1u] = vec4(hi, 0.0);
 }
 #else
-layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+layout(local_size_x = ANTUMBRA_SDF_BRICK, local_size_y = ANTUMBRA_SDF_BRICK,
+       local_size_z = ANTUMBRA_SDF_BRICK) in;
 void main() {
   uvec3 dims = field_dims.xyz;
   uint triangles = field_dims.w;

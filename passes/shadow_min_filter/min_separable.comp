@@ -4,7 +4,7 @@
 // depths, done in shared memory (rows, then columns), so a receiver finds the nearest
 // blocker around its lookup with one fetch instead of a blocker search.
 
-#define MAX_RADIUS 8
+#define MAX_RADIUS ANTUMBRA_MAX_MIN_FILTER_RADIUS  // interface/shared/limits.h
 #define TILE (GROUP + 2 * MAX_RADIUS)
 
 #include "min_common.glsl"

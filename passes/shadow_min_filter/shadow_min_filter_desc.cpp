@@ -4,6 +4,7 @@
 #include "common/plan_checks.hpp"
 #include "common/ports.hpp"
 #include "shadow_min_filter_pass.hpp"
+#include "shared/limits.h"
 
 namespace antumbra::passes {
 namespace {
@@ -56,7 +57,7 @@ const fg::ParamTable<ShadowMinFilterParams>& ShadowMinFilterPass::param_table() 
        .type = fg::ParamType::integer,
        .default_value = 3,
        .min = 0.0,
-       .max = 8.0,
+       .max = shared::kMaxMinFilterRadius,
        .description = "Half width of the min filter in output texels ((2r+1)^2 texels)."},
       &ShadowMinFilterParams::radius);
   return kTable;

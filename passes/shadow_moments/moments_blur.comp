@@ -4,7 +4,7 @@
 // shared memory (rows, then columns), clamped to the face's own texels, written in the
 // map's format. Filtering the moments is what makes these maps soft and alias-free.
 
-#define MAX_RADIUS 8
+#define MAX_RADIUS ANTUMBRA_MAX_MOMENTS_BLUR  // interface/shared/limits.h
 #define TILE (GROUP + 2 * MAX_RADIUS)
 
 #include "moments_common.glsl"

@@ -4,6 +4,7 @@
 #include "common/plan_checks.hpp"
 #include "common/ports.hpp"
 #include "shadow_moments_pass.hpp"
+#include "shared/limits.h"
 
 namespace antumbra::passes {
 namespace {
@@ -80,7 +81,7 @@ const fg::ParamTable<ShadowMomentsParams>& ShadowMomentsPass::param_table() {
                 .type = fg::ParamType::integer,
                 .default_value = 2,
                 .min = 0.0,
-                .max = 8.0,
+                .max = shared::kMaxMomentsBlur,
                 .description = "Half width of the separable box prefilter in map texels "
                                "((2 blur + 1)^2 texels; 0: only the downsampling average). "
                                "vssm ignores it: the lighting filters each receiver's box."},

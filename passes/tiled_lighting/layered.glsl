@@ -230,12 +230,14 @@ vec3 layered_shadow(uint index, vec3 p_world, vec3 n_world) {
     }
 #endif
 #if HAS_ATLAS
-    if (g_layered_foreign) return atlas_shadow(index, p_world, n_world, 3) * tint;
+    if (g_layered_foreign)
+      return atlas_shadow(index, p_world, n_world, ANTUMBRA_SHADOW_PCSS) * tint;
 #endif
     return clamp(layered_value(layer), 0.0, 1.0) * tint;
   }
 #if HAS_ATLAS
-  return vec3(atlas_shadow(index, p_world, n_world, FALLBACK_PCF != 0 ? 2 : 1));
+  return vec3(atlas_shadow(index, p_world, n_world,
+                           FALLBACK_PCF != 0 ? ANTUMBRA_SHADOW_PCF : ANTUMBRA_SHADOW_HARD));
 #else
   return vec3(1.0);
 #endif

@@ -61,7 +61,7 @@ float penumbra_map_face(ShadowLight sl, int layer, vec3 p_world, vec3 n_world) {
 float penumbra_map_shadow(uint index, vec3 p_world, vec3 n_world) {
   if (index >= ANTUMBRA_MAX_SHADOW_LIGHTS) return 1.0;
   ShadowLight sl = shadow_lights[index];
-  if (shadow_is_ortho(sl)) return atlas_shadow(index, p_world, n_world, 2);
+  if (shadow_is_ortho(sl)) return atlas_shadow(index, p_world, n_world, ANTUMBRA_SHADOW_PCF);
   int layer = shadow_face_layer(sl, p_world);
   if (layer < 0) return 1.0;
   return penumbra_map_face(sl, layer, p_world, n_world);

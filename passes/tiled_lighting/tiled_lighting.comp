@@ -6,14 +6,15 @@
 // the shared BRDF (common/shading.glsl), multiplied by the light's shadow term of the
 // selected mode.
 //
-// Defines (set by tiled_lighting_pass.cpp): SHADOW_MODE (0 none, 1 hard, 2 pcf, 3 pcss,
-// 4 layered, 5-8 vsm / evsm2 / evsm4 / msm, 9 vssm, 10 sdf, 11 penumbra-map), HAS_ATLAS,
+// Defines (set by tiled_lighting_pass.cpp): SHADOW_MODE (an ANTUMBRA_SHADOW_* value,
+// interface/shared/shadow_modes.h), HAS_ATLAS,
 // ATLAS_D16, HAS_COLOUR, FALLBACK_PCF, KERNEL, BLOCKER_SEARCH, HDR_FORMAT, HAS_PEELED,
 // WEDGE_RECEIVER.
 #include "../common/frame.glsl"
 #include "../common/lights.glsl"
 #include "../common/shading.glsl"
 #include "tiled_lighting_interface.h"
+#include "../interface/shared/shadow_modes.h"
 
 layout(set = 0, binding = kTiledFrame) uniform Frame {
   FrameUniforms frame;
@@ -49,8 +50,8 @@ layout(local_size_x = TILE_SIZE, local_size_y = TILE_SIZE) in;
 float atlas_shadow_face(ShadowLight sl, int layer, vec3 p_world, vec3 n_world, int mode) {
   FilterCoord c;
   if (!filter_coord(sl, layer, p_world, n_world, c)) return 1.0;
-  if (mode == 1) return filter_hard(c);
-  if (mode == 2) return filter_pcf(c, KERNEL, 1.0);
+  if (mode == ANTUMBRA_SHADOW_HARD) return filter_hard(c);
+  if (mode == ANTUMBRA_SHADOW_PCF) return filter_pcf(c, KERNEL, 1.0);
   return filter_pcss(c, sl.params.x * light_size_scale);
 }
 
@@ -67,28 +68,28 @@ float atlas_shadow(uint index, vec3 p_world, vec3 n_world, int mode) {
 }
 #endif
 
-#if SHADOW_MODE == 4
+#if SHADOW_MODE == ANTUMBRA_SHADOW_LAYERED
 #include "../interface/shared/layer_table.h"
 #include "layered.glsl"
 #endif
 
-#if SHADOW_MODE == 11
+#if SHADOW_MODE == ANTUMBRA_SHADOW_PENUMBRA_MAP
 layout(set = 0, binding = kTiledPenumbraMap) uniform sampler2DArray penumbra_map;
 #if HAS_PEELED
 layout(set = 0, binding = kTiledPeeled) uniform sampler2DArray peeled_map;
 #endif
 #include "penumbra_map_shadow.glsl"
-#elif SHADOW_MODE == 10
+#elif SHADOW_MODE == ANTUMBRA_SHADOW_SDF
 #include "../interface/shared/sdf_info.h"
 layout(set = 0, binding = kTiledSdf) uniform sampler2DArray sdf_volume;
 layout(set = 0, binding = kTiledSdfInfo, std430) readonly buffer SdfData {
   SdfInfo sdf_info;
 };
 #include "sdf_shadow.glsl"
-#elif SHADOW_MODE == 9
+#elif SHADOW_MODE == ANTUMBRA_SHADOW_VSSM
 layout(set = 0, binding = kTiledMoments) uniform usampler2DArray moments_map;
 #include "vssm_shadow.glsl"
-#elif SHADOW_MODE >= 5
+#elif SHADOW_MODE >= ANTUMBRA_SHADOW_VSM
 layout(set = 0, binding = kTiledMoments) uniform sampler2DArray moments_map;
 #include "moment_shadow.glsl"
 #endif
@@ -123,7 +124,7 @@ void main() {
 #endif
     p_world = (frame.inv_view * vec4(p, 1.0)).xyz;
     n_world = normalize(mat3(frame.inv_view) * surface.n);
-#if SHADOW_MODE == 4
+#if SHADOW_MODE == ANTUMBRA_SHADOW_LAYERED
     layered_fetch(pixel);
 #endif
   }
@@ -136,17 +137,17 @@ void main() {
       vec3 radiance;
       vec3 l;
       if (!shade_light(lights[index], surface, specular, radiance, l)) continue;
-#if SHADOW_MODE == 4
+#if SHADOW_MODE == ANTUMBRA_SHADOW_LAYERED
       radiance *= layered_shadow(index, p_world, n_world);
-#elif SHADOW_MODE == 11
+#elif SHADOW_MODE == ANTUMBRA_SHADOW_PENUMBRA_MAP
       radiance *= penumbra_map_shadow(index, p_world, n_world);
-#elif SHADOW_MODE == 10
+#elif SHADOW_MODE == ANTUMBRA_SHADOW_SDF
       radiance *= sdf_shadow(lights[index], p_world, n_world, l);
-#elif SHADOW_MODE == 9
+#elif SHADOW_MODE == ANTUMBRA_SHADOW_VSSM
       radiance *= vssm_shadow(index, p_world, n_world);
-#elif SHADOW_MODE >= 5
+#elif SHADOW_MODE >= ANTUMBRA_SHADOW_VSM
       radiance *= moment_shadow(index, p_world, n_world);
-#elif SHADOW_MODE != 0
+#elif SHADOW_MODE != ANTUMBRA_SHADOW_NONE
       radiance *= atlas_shadow(index, p_world, n_world, SHADOW_MODE);
 #endif
       color += radiance;

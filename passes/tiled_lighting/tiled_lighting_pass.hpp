@@ -15,30 +15,32 @@
 #include "antumbra/fgvk/pass.hpp"
 #include "antumbra/gpu/handle.hpp"
 #include "common/lighting_reflection.hpp"
+#include "interface/shared/shadow_modes.h"
 
 namespace antumbra::passes {
 
 // vsm .. vssm: filtered shadow maps from shadow-moments (its technique, in the same order
 // from vsm on as MomentTechnique; moment_technique_index).
+// The values are tiled_lighting.comp's SHADOW_MODE (interface/shared/shadow_modes.h).
 enum class ShadowMode : std::uint8_t {
-  none,
-  hard,
-  pcf,
-  pcss,
-  layered,
-  vsm,
-  evsm2,
-  evsm4,
-  msm,
-  vssm,
-  sdf,
-  penumbra_map
+  none = ANTUMBRA_SHADOW_NONE,
+  hard = ANTUMBRA_SHADOW_HARD,
+  pcf = ANTUMBRA_SHADOW_PCF,
+  pcss = ANTUMBRA_SHADOW_PCSS,
+  layered = ANTUMBRA_SHADOW_LAYERED,
+  vsm = ANTUMBRA_SHADOW_VSM,
+  evsm2 = ANTUMBRA_SHADOW_EVSM2,
+  evsm4 = ANTUMBRA_SHADOW_EVSM4,
+  msm = ANTUMBRA_SHADOW_MSM,
+  vssm = ANTUMBRA_SHADOW_VSSM,
+  sdf = ANTUMBRA_SHADOW_SDF,
+  penumbra_map = ANTUMBRA_SHADOW_PENUMBRA_MAP
 };
 
 [[nodiscard]] constexpr bool is_moment_mode(ShadowMode mode) {
   return mode >= ShadowMode::vsm && mode <= ShadowMode::vssm;
 }
-// The MOMENTS_TECHNIQUE value of a moment mode (MomentTechnique's order).
+// The MOMENTS_TECHNIQUE value of a moment mode (shadow_modes.h asserts the offsets).
 [[nodiscard]] constexpr int moment_technique_index(ShadowMode mode) {
   return is_moment_mode(mode) ? static_cast<int>(mode) - static_cast<int>(ShadowMode::vsm) : 0;
 }

@@ -11,7 +11,7 @@
 // Where the region's mean lies behind the receiver the estimate is undefined (the
 // paper's case for subdividing the kernel); the receiver then takes a one-texel VSM
 // lookup, i.e. a hard shadow. Expects `moments_map` (usampler2DArray), the atlas and
-// ShadowData bound, MOMENTS_TECHNIQUE = MOMENTS_VSSM.
+// ShadowData bound, MOMENTS_TECHNIQUE = ANTUMBRA_MOMENTS_VSSM.
 #ifndef ANTUMBRA_VSSM_SHADOW_GLSL
 #define ANTUMBRA_VSSM_SHADOW_GLSL
 

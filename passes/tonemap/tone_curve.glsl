@@ -16,9 +16,9 @@ vec3 srgb_encode(vec3 c) {
 
 vec4 tone_map(vec3 radiance) {
   vec3 c = radiance * exposure;
-  if (tone_operator == 0u) {
+  if (tone_operator == ANTUMBRA_TONE_ACES) {
     c = aces_fitted(c);
-  } else if (tone_operator == 1u) {
+  } else if (tone_operator == ANTUMBRA_TONE_REINHARD) {
     c = c / (1.0 + c);
   } else {
     c = clamp(c, 0.0, 1.0);

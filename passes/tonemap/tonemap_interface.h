@@ -5,6 +5,7 @@
 #define ANTUMBRA_TONEMAP_INTERFACE_H
 
 #include "../interface/shared/glsl_cpp.h"
+#include "../interface/shared/tone_operators.h"
 
 ANTUMBRA_SHARED_BEGIN
 
@@ -13,7 +14,7 @@ ANTUMBRA_BINDING(kTonemapLdr, 1)  // tonemap.comp: the rgba8 target as a storage
 
 ANTUMBRA_PUSH_CONSTANTS(TonemapPush) {
   float exposure;
-  uint tone_operator;  // 0 aces, 1 reinhard, 2 linear (ToneOperator)
+  uint tone_operator;  // ANTUMBRA_TONE_* (interface/shared/tone_operators.h)
   uint encode_srgb;
 };
 

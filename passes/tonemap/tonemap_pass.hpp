@@ -10,11 +10,16 @@
 #include "antumbra/fgvk/pass.hpp"
 #include "antumbra/gpu/handle.hpp"
 #include "common/pass_support.hpp"
+#include "interface/shared/tone_operators.h"
 
 namespace antumbra::passes {
 
-// The shader's operator index (tonemap.frag).
-enum class ToneOperator : std::uint32_t { aces = 0, reinhard = 1, linear = 2 };
+// TonemapPush.tone_operator's values (interface/shared/tone_operators.h).
+enum class ToneOperator : std::uint32_t {
+  aces = ANTUMBRA_TONE_ACES,
+  reinhard = ANTUMBRA_TONE_REINHARD,
+  linear = ANTUMBRA_TONE_LINEAR
+};
 // Who runs the curve: a full-screen triangle, or a compute dispatch writing the target as
 // a storage image (rgba8 targets only: sRGB and BGRA images cannot be storage images
 // everywhere, and fall back to the fragment shader).

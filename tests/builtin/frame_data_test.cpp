@@ -142,12 +142,16 @@ TEST(FrameData, TexturesGoToTheirSizeBucketAndColourSpace) {
   slot.texture = 2;
   slot.texcoord = 1;
   const std::uint32_t code = passes::texture_code(plan, s, slot);
-  EXPECT_EQ(code & 4095u, 1u);        // layer
-  EXPECT_EQ((code >> 12) & 15u, 2u);  // bucket 256
-  EXPECT_EQ((code >> 16) & 1u, 1u);   // texcoord set 1
-  EXPECT_EQ((code >> 17) & 3u, 1u);   // clamp
-  EXPECT_EQ((code >> 19) & 3u, 2u);   // mirror
-  EXPECT_EQ((code >> 21) & 1u, 1u);   // nearest
+  EXPECT_EQ(code & 4095u, 1u);  // layer
+  using shared::texture_code_field;
+  EXPECT_EQ(texture_code_field(code, ANTUMBRA_TEXTURE_BUCKET_SHIFT, ANTUMBRA_TEXTURE_BUCKET_MASK),
+            2u);                                                                 // bucket 256
+  EXPECT_EQ(texture_code_field(code, ANTUMBRA_TEXTURE_TEXCOORD_SHIFT, 1u), 1u);  // set 1
+  EXPECT_EQ(texture_code_field(code, ANTUMBRA_TEXTURE_WRAP_U_SHIFT, ANTUMBRA_TEXTURE_WRAP_MASK),
+            ANTUMBRA_TEXTURE_WRAP_CLAMP);
+  EXPECT_EQ(texture_code_field(code, ANTUMBRA_TEXTURE_WRAP_V_SHIFT, ANTUMBRA_TEXTURE_WRAP_MASK),
+            ANTUMBRA_TEXTURE_WRAP_MIRROR);
+  EXPECT_EQ(texture_code_field(code, ANTUMBRA_TEXTURE_NEAREST_SHIFT, 1u), 1u);  // nearest
   EXPECT_NE(code & shared::kTexturePresent, 0u);
   // 3 layers of 256^2 RGBA8 with their 8 smaller mips (256, 128, ..., 1): 4/3 of level 0.
   EXPECT_EQ(plan.bytes(), 1048572u);

@@ -46,6 +46,10 @@ struct ShadowLight {
   vec4 projection ANTUMBRA_INIT(vec4(1.0f, 0.0f, 0.0f, 0.0f));
 };
 
+// A ShadowFace is this many uvec4s: shadow_face_decide.comp copies the records as uvec4
+// words (common/shadow_data.hpp asserts the size).
+#define ANTUMBRA_SHADOW_FACE_VEC4S 5u
+
 struct ShadowFace {
   mat4 view_proj ANTUMBRA_INIT(mat4(1.0f));  // world -> face clip space (Vulkan depth 0..1)
   // x light index, y face (0..5: +X -X +Y -Y +Z -Z; 0 spot; cascade for the sun), z valid,

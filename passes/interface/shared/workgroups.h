@@ -13,5 +13,11 @@
 #define ANTUMBRA_MIN_FILTER_GROUP 16
 // shadow-moments' square groups (moments_blur.comp keeps a vec4 tile of (8 + 16)^2).
 #define ANTUMBRA_MOMENTS_GROUP 8
+// penumbra-wedges' one-dimensional groups (silhouettes.comp: edges; wedge_args.comp: layers).
+#define ANTUMBRA_WEDGE_GROUP 64
+// scene-sdf's bake (sdf_bake.comp): a chunk is a run of this many triangles, one group
+// bounding each; a brick is a cubic group of voxels of this side.
+#define ANTUMBRA_SDF_CHUNK 64
+#define ANTUMBRA_SDF_BRICK 4
 
 #endif
