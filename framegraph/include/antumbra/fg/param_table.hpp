@@ -34,8 +34,9 @@ class ParamTable {
     rows_.push_back({std::move(desc),
                      [member](P& out, const Json& value) {
                        auto converted = base::json_as<T>(value);
-                       if (converted) out.*member = *std::move(converted);
-                       return converted.has_value();
+                       if (!converted) return false;
+                       out.*member = *std::move(converted);
+                       return true;
                      },
                      [member](const P& in) { return Json(in.*member); }});
     return *this;

@@ -1,4 +1,6 @@
 #include "alpha_pass.hpp"
 #include "beta/beta_pass.hpp"
 
-bool compute(const Json& params) { return params.find("rasterizer") != params.end(); }
+bool compute(const Json& params) {
+  return params.find("rasterizer") != params.end();
+}
