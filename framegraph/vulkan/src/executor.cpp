@@ -28,7 +28,7 @@ struct RealisedResource {
   BoundBuffer bound_buffer;
   // The state the executor last left the resource in: the target of the last barrier it
   // recorded. Checked against each planned source (fgvk::source_mismatch).
-  SyncState state;
+  SyncState tracked;
   bool depth = false;
   VkDeviceSize image_bytes = 0;  // individually allocated image memory
 };
@@ -85,7 +85,7 @@ SyncState recorded_source(const fg::PlanBarrier& barrier, const RealisedResource
   if (!first_frame || barrier.source != fg::BarrierSource::last_frame) {
     return barrier_source(barrier, resource.depth);
   }
-  SyncState source = resource.state;
+  SyncState source = resource.tracked;
   if (barrier.discard) source.layout = VK_IMAGE_LAYOUT_UNDEFINED;
   return source;
 }
@@ -268,7 +268,7 @@ void Executor::hand_over_kept_resources(State& state, const std::vector<int>& ke
     out.image = std::move(live.image);
     out.buffer = std::move(live.buffer);
     out.image_bytes = live.image_bytes;
-    out.state = live.state;
+    out.tracked = live.tracked;
     out.bound_image.layout = live.bound_image.layout;
     ++state.kept;
   }
@@ -293,11 +293,11 @@ std::size_t Executor::kept_resources() const {
 // barrier starts (docs/architecture.md section 4); a mismatch is a compiler or executor
 // bug, thrown as a logic_error naming the resource and the pass.
 void Executor::check_source(const fg::PlanBarrier& barrier, std::string_view before) const {
+  if (!check_sources_) return;
+  // The plan cannot know the state before a plan's first frame (recorded_source).
+  if (state_->frames_recorded == 0 && barrier.source == fg::BarrierSource::last_frame) return;
   const auto& rr = state_->resources[static_cast<std::size_t>(barrier.resource)];
-  const bool unknown =
-      state_->frames_recorded == 0 && barrier.source == fg::BarrierSource::last_frame;
-  if (!check_sources_ || unknown) return;
-  const std::string why = source_mismatch(barrier, rr.state, rr.depth);
+  const std::string why = source_mismatch(barrier, rr.tracked, rr.depth);
   if (why.empty()) return;
   const std::string where = before.empty() ? "the final barriers (the host's copy of the output)"
                                            : "pass '" + std::string(before) + "'";
@@ -342,7 +342,7 @@ void Executor::record_barriers(VkCommandBuffer cmd, const std::vector<fg::PlanBa
       image_barriers.push_back(gpu::to_vk(ib));
       rr.bound_image.layout = target.layout;
     }
-    rr.state = target;
+    rr.tracked = target;
   }
   if (image_barriers.empty() && buffer_barriers.empty()) return;
   VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
@@ -358,8 +358,8 @@ void Executor::record_barriers(VkCommandBuffer cmd, const std::vector<fg::PlanBa
 void Executor::restore_frame_start() {
   for (std::size_t i = 0; i < state_->resources.size(); ++i) {
     auto& rr = state_->resources[i];
-    rr.state = state_->frame_start[i];
-    if (rr.bound_image.image != VK_NULL_HANDLE) rr.bound_image.layout = rr.state.layout;
+    rr.tracked = state_->frame_start[i];
+    if (rr.bound_image.image != VK_NULL_HANDLE) rr.bound_image.layout = rr.tracked.layout;
   }
 }
 
@@ -371,7 +371,7 @@ void Executor::record(VkCommandBuffer cmd, const FrameResources& frame, PassObse
   sink.clear();
   state_->frame_start.resize(state_->resources.size());
   for (std::size_t i = 0; i < state_->resources.size(); ++i) {
-    state_->frame_start[i] = state_->resources[i].state;
+    state_->frame_start[i] = state_->resources[i].tracked;
   }
   try {
     for (std::size_t i = 0; i < state_->passes.size(); ++i) {
