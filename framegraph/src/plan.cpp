@@ -2,6 +2,18 @@
 
 namespace antumbra::fg {
 
+std::string_view to_string(BarrierSource source) {
+  switch (source) {
+    case BarrierSource::this_frame:
+      return "this_frame";
+    case BarrierSource::last_frame:
+      return "last_frame";
+    case BarrierSource::aliased_memory:
+      return "aliased_memory";
+  }
+  return "this_frame";
+}
+
 int Plan::find_resource(std::string_view resource_name) const {
   for (std::size_t i = 0; i < resources.size(); ++i) {
     if (resources[i].name == resource_name) return static_cast<int>(i);

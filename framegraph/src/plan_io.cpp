@@ -15,12 +15,12 @@ Json resource_name(const Plan& plan, int index) {
 Json barrier_json(const Plan& plan, const PlanBarrier& b) {
   Json j = Json::object();
   j["resource"] = resource_name(plan, b.resource);
+  j["source"] = to_string(b.source);
   j["from"] = to_string(b.from);
   j["fromStage"] = to_string(b.from_stage);
   j["to"] = to_string(b.to);
   j["toStage"] = to_string(b.to_stage);
   j["discard"] = b.discard;
-  if (b.previous_alias >= 0) j["previousAlias"] = resource_name(plan, b.previous_alias);
   return j;
 }
 

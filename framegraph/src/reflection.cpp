@@ -103,8 +103,6 @@ std::string_view to_string(Access access) {
       return "transfer_src";
     case Access::transfer_dst:
       return "transfer_dst";
-    case Access::present:
-      return "present";
   }
   return "none";
 }
@@ -130,7 +128,6 @@ bool is_read(Access access) {
     case Access::depth_read:
     case Access::uniform_read:
     case Access::transfer_src:
-    case Access::present:
       return true;
     default:
       return false;

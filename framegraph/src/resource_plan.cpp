@@ -24,11 +24,6 @@ bool lifetimes_overlap(const PlanResource& a, const PlanResource& b) {
   return a.first_use <= b.last_use && b.first_use <= a.last_use;
 }
 
-struct State {
-  Access access = Access::none;
-  Stage stage = Stage::none;
-};
-
 }  // namespace
 
 Extent2D resolve_extent(const SizeSpec& size, Extent2D viewport) {
@@ -65,9 +60,11 @@ void compute_lifetimes(Plan& plan) {
   }
   if (plan.output >= 0 && !plan.passes.empty()) {
     PlanResource& out = plan.resources[static_cast<std::size_t>(plan.output)];
-    out.last_use = static_cast<int>(plan.passes.size()) - 1;  // presented after the last pass
+    out.last_use = static_cast<int>(plan.passes.size()) - 1;  // copied out after the last pass
     if (out.first_use < 0) out.first_use = out.last_use;
-    out.usages.push_back(Access::present);
+    // After the frame the host copies it out (render's read-back, the editor's blit).
+    if (std::find(out.usages.begin(), out.usages.end(), Access::transfer_src) == out.usages.end())
+      out.usages.push_back(Access::transfer_src);
   }
   for (PlanResource& r : plan.resources) std::sort(r.usages.begin(), r.usages.end());
 }
@@ -121,77 +118,65 @@ void plan_aliasing(Plan& plan, const FootprintFn& footprint) {
 
 namespace {
 
-// The aliased resource whose memory `r` takes over most recently, or -1.
-int previous_alias(const Plan& plan, std::size_t r) {
-  const PlanResource& me = plan.resources[r];
-  if (!me.aliased) return -1;
-  int best = -1;
-  for (std::size_t o = 0; o < plan.resources.size(); ++o) {
-    const PlanResource& other = plan.resources[o];
-    if (o == r || !other.aliased || other.last_use >= me.first_use) continue;
-    const bool shares = other.heap_offset < me.heap_offset + me.footprint.size &&
-                        me.heap_offset < other.heap_offset + other.footprint.size;
-    if (shares &&
-        (best < 0 || other.last_use > plan.resources[static_cast<std::size_t>(best)].last_use)) {
-      best = static_cast<int>(o);
+// A resource's state while the barriers are planned.
+struct State {
+  Access access = Access::none;
+  Stage stage = Stage::none;
+  bool in_frame = false;  // set by an earlier pass of this frame
+};
+
+// The state the previous frame leaves a resource in. One with memory of its own keeps it
+// between frames: the output as the host's copy left it (after the final barrier), any
+// other as its last access left it. An aliased one has nothing of its own: its memory was
+// the heap's, used by other resources since.
+State frame_start_state(const Plan& plan, std::size_t resource) {
+  const PlanResource& r = plan.resources[resource];
+  State state;
+  if (r.is_output) return {Access::transfer_src, Stage::transfer};
+  if (r.aliased) return state;
+  for (const PlanPass& pass : plan.passes) {
+    for (const PlanBinding& b : pass.bindings) {
+      if (b.resource == static_cast<int>(resource)) state = {b.access, b.stage};
     }
   }
-  return best;
+  return state;
 }
 
-// The stage of the last access to `resource` in the frame (its last_use pass).
-Stage last_stage(const Plan& plan, int resource) {
-  const int last = plan.resources[static_cast<std::size_t>(resource)].last_use;
-  Stage stage = Stage::none;
-  if (last < 0 || static_cast<std::size_t>(last) >= plan.passes.size()) return stage;
-  for (const PlanBinding& b : plan.passes[static_cast<std::size_t>(last)].bindings) {
-    if (b.resource == resource) stage = b.stage;
-  }
-  return stage;
+PlanBarrier make_barrier(const Plan& plan, int resource, const State& from, Access to,
+                         Stage to_stage) {
+  PlanBarrier barrier{resource, from.access, from.stage, to, to_stage};
+  if (from.in_frame) return barrier;
+  const PlanResource& r = plan.resources[static_cast<std::size_t>(resource)];
+  barrier.discard = !r.persistent;
+  barrier.source = r.aliased ? BarrierSource::aliased_memory : BarrierSource::last_frame;
+  return barrier;
 }
 
 }  // namespace
 
 void plan_barriers(Plan& plan) {
   std::vector<State> state(plan.resources.size());
-  // Persistent resources enter the frame as the previous frame left them.
-  for (std::size_t i = 0; i < plan.resources.size(); ++i) {
-    if (!plan.resources[i].persistent) continue;
-    if (plan.resources[i].is_output) {
-      state[i] = {Access::present, Stage::none};
-      continue;
-    }
-    for (const PlanPass& pass : plan.passes) {
-      for (const PlanBinding& b : pass.bindings) {
-        if (b.resource == static_cast<int>(i)) state[i] = {b.access, b.stage};
-      }
-    }
-  }
+  for (std::size_t i = 0; i < plan.resources.size(); ++i) state[i] = frame_start_state(plan, i);
   for (PlanPass& pass : plan.passes) {
     pass.barriers.clear();
     for (const PlanBinding& b : pass.bindings) {
       if (b.resource < 0) continue;
-      const auto r = static_cast<std::size_t>(b.resource);
-      const State from = state[r];
+      State& from = state[static_cast<std::size_t>(b.resource)];
       const bool changes = from.access != b.access || from.stage != b.stage;
       const bool hazard = is_write(from.access) || is_write(b.access);
-      if (!changes && !hazard) continue;  // read after read in the same state: nothing to wait for
-      const bool discard = from.access == Access::none && !plan.resources[r].persistent;
-      PlanBarrier barrier{b.resource, from.access, from.stage, b.access, b.stage, discard, -1};
-      if (discard) {
-        barrier.previous_alias = previous_alias(plan, r);
-        if (barrier.previous_alias >= 0)
-          barrier.from_stage = last_stage(plan, barrier.previous_alias);
-      }
-      pass.barriers.push_back(barrier);
-      state[r] = {b.access, b.stage};
+      // Read after read in the same state waits for nothing. A first use in the frame
+      // always has its barrier: on a plan's first frame the resource is new, or in the
+      // state another plan left it in (BarrierSource::last_frame).
+      if (from.in_frame && !changes && !hazard) continue;
+      pass.barriers.push_back(make_barrier(plan, b.resource, from, b.access, b.stage));
+      from = {b.access, b.stage, true};
     }
   }
   plan.final_barriers.clear();
   if (plan.output >= 0) {
-    const State from = state[static_cast<std::size_t>(plan.output)];
+    const State& from = state[static_cast<std::size_t>(plan.output)];
     plan.final_barriers.push_back(
-        {plan.output, from.access, from.stage, Access::present, Stage::none, false, -1});
+        make_barrier(plan, plan.output, from, Access::transfer_src, Stage::transfer));
   }
 }
 

@@ -39,7 +39,8 @@ TEST(Compile, DeferredGraph) {
   EXPECT_EQ(ldr.last_use, 2);
   ASSERT_EQ(plan.final_barriers.size(), 1u);
   EXPECT_EQ(plan.final_barriers[0].from, Access::color_attachment);
-  EXPECT_EQ(plan.final_barriers[0].to, Access::present);
+  EXPECT_EQ(plan.final_barriers[0].to, Access::transfer_src);
+  EXPECT_EQ(plan.final_barriers[0].to_stage, Stage::transfer);
 }
 
 TEST(Compile, ViewportScalesRelativeResources) {
@@ -131,6 +132,62 @@ TEST(Compile, PersistentHistoryKeepsItsWriterAndStartsInLastState) {
   }
   EXPECT_TRUE(found);
 }
+
+// The executor's own record of each resource, replayed without a GPU: the target of the
+// last barrier it recorded, and whether that was in the frame being recorded.
+struct Tracked {
+  Access access = Access::none;
+  Stage stage = Stage::none;
+  bool in_frame = false;
+};
+
+// Why barrier `b` does not start where `tracked` says the resource is (empty if it does),
+// in frame `frame` (0: the plan's first, where the state before it is not the plan's).
+std::string source_disagreement(const Plan& plan, const PlanBarrier& b, const Tracked& tracked,
+                                int frame) {
+  const PlanResource& r = plan.resources[static_cast<std::size_t>(b.resource)];
+  const bool same = tracked.access == b.from && tracked.stage == b.from_stage;
+  switch (b.source) {
+    case BarrierSource::this_frame:
+      return tracked.in_frame && same ? "" : "this_frame source without an earlier use";
+    case BarrierSource::last_frame:
+      if (tracked.in_frame || r.aliased) return "last_frame source inside the frame or aliased";
+      return frame == 0 || same ? "" : "last_frame source is not how the last frame left it";
+    case BarrierSource::aliased_memory:
+      return !tracked.in_frame && r.aliased && b.discard && b.from == Access::none
+                 ? ""
+                 : "aliased_memory source on a resource that is not a transient's first use";
+  }
+  return "unknown source";
+}
+
+// What the executor checks while it records (fgvk::source_mismatch): every planned source
+// is the state the barrier before it left the resource in, in this frame or the last.
+class PlanSources : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(PlanSources, AreWhereThePreviousBarrierLeftTheResource) {
+  const Plan plan = compile_good(GetParam() + ".json");
+  ASSERT_FALSE(plan.passes.empty());
+  std::vector<Tracked> tracked(plan.resources.size());
+  for (int frame = 0; frame < 3; ++frame) {
+    for (std::size_t p = 0; p <= plan.passes.size(); ++p) {
+      const bool final = p == plan.passes.size();
+      const auto& barriers = final ? plan.final_barriers : plan.passes[p].barriers;
+      for (const PlanBarrier& b : barriers) {
+        Tracked& t = tracked[static_cast<std::size_t>(b.resource)];
+        EXPECT_EQ(source_disagreement(plan, b, t, frame), "")
+            << plan.resources[static_cast<std::size_t>(b.resource)].name << " before "
+            << (final ? "the final barriers" : plan.passes[p].name) << ", frame " << frame;
+        t = {b.to, b.to_stage, true};
+      }
+    }
+    for (Tracked& t : tracked) t.in_frame = false;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Good, PlanSources,
+                         ::testing::Values("deferred", "culling", "aliasing", "persistent",
+                                           "after"));
 
 TEST(Compile, CycleMessageListsEdges) {
   const std::string text = testing::read_text(data_path("graphs/bad/cycle.json"));

@@ -1,6 +1,8 @@
 // Each compiler phase on hand-made input.
 #include <gtest/gtest.h>
 
+#include <initializer_list>
+
 #include "antumbra/base/diagnostic_codes.hpp"
 #include "antumbra/fg/compiler_phases.hpp"
 #include "test_support.hpp"
@@ -187,7 +189,7 @@ TEST(LifetimePhase, FirstAndLastUse) {
   EXPECT_EQ(plan.resources[2].first_use, 1);
   EXPECT_EQ(plan.resources[2].last_use, 2);
   EXPECT_EQ(plan.resources[2].usages,
-            (std::vector<Access>{Access::sampled, Access::color_attachment, Access::present}));
+            (std::vector<Access>{Access::sampled, Access::color_attachment, Access::transfer_src}));
 }
 
 TEST(AliasingPhase, NonOverlappingLifetimesShareMemory) {
@@ -203,15 +205,16 @@ TEST(AliasingPhase, NonOverlappingLifetimesShareMemory) {
   EXPECT_EQ(plan.aliasing.bytes_without_aliasing, 512u * 1024u);
   EXPECT_EQ(plan.aliasing.heap_bytes, 256u * 1024u);
   EXPECT_EQ(plan.aliasing.bytes_saved(), 256u * 1024u);
-  // b takes over a's memory: its first barrier waits for a's last (fragment) read.
+  // b takes over a's memory: its first barrier waits for the heap's history, not for an
+  // access of b's own.
   plan_barriers(plan);
   ASSERT_EQ(plan.passes[2].barriers.size(), 2u);
   const PlanBarrier& take_over = plan.passes[2].barriers[1];
   EXPECT_EQ(take_over.resource, 1);
   EXPECT_TRUE(take_over.discard);
-  EXPECT_EQ(take_over.previous_alias, 0);
+  EXPECT_EQ(take_over.source, BarrierSource::aliased_memory);
   EXPECT_EQ(take_over.from, Access::none);
-  EXPECT_EQ(take_over.from_stage, Stage::fragment);
+  EXPECT_EQ(take_over.from_stage, Stage::none);
 }
 
 TEST(AliasingPhase, OverlappingLifetimesNeverShareAndRespectAlignment) {
@@ -246,21 +249,32 @@ TEST(AliasingPhase, OverlappingLifetimesNeverShareAndRespectAlignment) {
 TEST(BarrierPhase, TransitionsAndHazards) {
   Plan plan = two_pass_plan();
   compute_lifetimes(plan);
+  plan_aliasing(plan, default_footprint);
   plan_barriers(plan);
   ASSERT_EQ(plan.passes[0].barriers.size(), 1u);
   const PlanBarrier& first = plan.passes[0].barriers[0];
+  EXPECT_EQ(first.source, BarrierSource::aliased_memory);
   EXPECT_EQ(first.from, Access::none);
   EXPECT_EQ(first.to, Access::storage_write);
   EXPECT_TRUE(first.discard);
   ASSERT_EQ(plan.passes[1].barriers.size(), 2u);
+  EXPECT_EQ(plan.passes[1].barriers[0].source, BarrierSource::this_frame);
   EXPECT_EQ(plan.passes[1].barriers[0].from, Access::storage_write);
   EXPECT_EQ(plan.passes[1].barriers[0].from_stage, Stage::compute);
   EXPECT_EQ(plan.passes[1].barriers[0].to, Access::sampled);
   EXPECT_FALSE(plan.passes[1].barriers[0].discard);
+  // The output keeps its memory: its first use waits for last frame's copy out of it.
+  const PlanBarrier& output_first = plan.passes[1].barriers[1];
+  EXPECT_EQ(output_first.source, BarrierSource::last_frame);
+  EXPECT_EQ(output_first.from, Access::transfer_src);
+  EXPECT_EQ(output_first.from_stage, Stage::transfer);
+  EXPECT_TRUE(output_first.discard);
   ASSERT_EQ(plan.final_barriers.size(), 1u);
+  EXPECT_EQ(plan.final_barriers[0].source, BarrierSource::this_frame);
   EXPECT_EQ(plan.final_barriers[0].from, Access::sampled);
   EXPECT_EQ(plan.final_barriers[0].from_stage, Stage::compute);
-  EXPECT_EQ(plan.final_barriers[0].to, Access::present);
+  EXPECT_EQ(plan.final_barriers[0].to, Access::transfer_src);
+  EXPECT_EQ(plan.final_barriers[0].to_stage, Stage::transfer);
 }
 
 TEST(BarrierPhase, ReadAfterReadNeedsNothingWriteAfterWriteDoes) {
@@ -279,20 +293,53 @@ TEST(BarrierPhase, ReadAfterReadNeedsNothingWriteAfterWriteDoes) {
   EXPECT_TRUE(plan.passes[3].barriers.empty());
 }
 
-TEST(BarrierPhase, PersistentStartsInLastFramesState) {
+// One persistent resource, one pass per use, barriers planned.
+Plan persistent_plan(std::initializer_list<PlanBinding> uses, bool is_output = false) {
   Plan plan;
   PlanResource r;
   r.name = "history";
   r.persistent = true;
+  r.is_output = is_output;
   plan.resources.push_back(r);
-  plan.passes.resize(2);
-  plan.passes[0].bindings = {{"i", 0, Access::sampled, Stage::fragment}};
-  plan.passes[1].bindings = {{"o", 0, Access::storage_write, Stage::compute}};
+  if (is_output) plan.output = 0;
+  for (const PlanBinding& use : uses) plan.passes.push_back(PlanPass{.bindings = {use}});
   plan_barriers(plan);
+  return plan;
+}
+
+// The first pass's one barrier: the resource's first use in the frame.
+void expect_first_use(const Plan& plan, Access from, Stage from_stage) {
   ASSERT_EQ(plan.passes[0].barriers.size(), 1u);
-  EXPECT_EQ(plan.passes[0].barriers[0].from, Access::storage_write);
-  EXPECT_EQ(plan.passes[0].barriers[0].from_stage, Stage::compute);
-  EXPECT_FALSE(plan.passes[0].barriers[0].discard);
+  const PlanBarrier& first = plan.passes[0].barriers[0];
+  EXPECT_EQ(first.source, BarrierSource::last_frame);
+  EXPECT_EQ(first.from, from);
+  EXPECT_EQ(first.from_stage, from_stage);
+  EXPECT_FALSE(first.discard);  // persistent: the contents are kept
+}
+
+TEST(BarrierPhase, PersistentStartsInLastFramesState) {
+  const Plan plan = persistent_plan({{"i", 0, Access::sampled, Stage::fragment},
+                                     {"o", 0, Access::storage_write, Stage::compute}});
+  expect_first_use(plan, Access::storage_write, Stage::compute);
+  ASSERT_EQ(plan.passes[1].barriers.size(), 1u);
+  EXPECT_EQ(plan.passes[1].barriers[0].source, BarrierSource::this_frame);
+}
+
+// A first use in the frame has its barrier even where last frame's state is the one it
+// needs (read after read): on a plan's first frame the resource is new, or in the state
+// the plan before it left it in.
+TEST(BarrierPhase, FirstUseInFrameAlwaysHasABarrier) {
+  const Plan plan = persistent_plan({{"i", 0, Access::sampled, Stage::fragment},
+                                     {"o", 0, Access::storage_write, Stage::compute},
+                                     {"i", 0, Access::sampled, Stage::fragment}});
+  expect_first_use(plan, Access::sampled, Stage::fragment);
+  EXPECT_EQ(plan.passes[0].barriers[0].to, Access::sampled);
+}
+
+// The output ends every frame copied out by the host, so that is where it starts.
+TEST(BarrierPhase, PersistentOutputKeepsItsContents) {
+  const Plan plan = persistent_plan({{"o", 0, Access::color_attachment, Stage::graphics}}, true);
+  expect_first_use(plan, Access::transfer_src, Stage::transfer);
 }
 
 TEST(Extent, RelativeSizesFloorAndClamp) {

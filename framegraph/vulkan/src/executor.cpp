@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <string>
 
 #include "antumbra/gpu/commands.hpp"
 #include "antumbra/gpu/context.hpp"
@@ -25,7 +26,9 @@ struct RealisedResource {
   gpu::Buffer buffer;
   BoundImage bound_image;
   BoundBuffer bound_buffer;
-  SyncState state;  // as the GPU will see it after everything recorded so far
+  // The state the executor last left the resource in: the target of the last barrier it
+  // recorded. Checked against each planned source (fgvk::source_mismatch).
+  SyncState tracked;
   bool depth = false;
   VkDeviceSize image_bytes = 0;  // individually allocated image memory
 };
@@ -64,6 +67,29 @@ std::uint64_t create_resource(gpu::Context& gpu, const fg::PlanResource& r,
   return out.image_bytes;
 }
 
+#ifdef NDEBUG
+constexpr bool kDebugBuild = false;
+#else
+constexpr bool kDebugBuild = true;
+#endif
+
+// The source a barrier records: the plan's, so that what `antumbra plan` shows and the
+// plan goldens pin is what runs, and a compiler bug in a source is a checked error
+// instead of a silent disagreement (docs/architecture.md section 4, "Barrier sources").
+// The executor still tracks each resource's state, for what the plan cannot know: a
+// last_frame source on a plan's first frame, when the previous frame was another plan's
+// (a kept resource, in the state that plan left it in) or none (a new resource,
+// undefined). Then the tracked state is the truth.
+SyncState recorded_source(const fg::PlanBarrier& barrier, const RealisedResource& resource,
+                          bool first_frame) {
+  if (!first_frame || barrier.source != fg::BarrierSource::last_frame) {
+    return barrier_source(barrier, resource.depth);
+  }
+  SyncState source = resource.tracked;
+  if (barrier.discard) source.layout = VK_IMAGE_LAYOUT_UNDEFINED;
+  return source;
+}
+
 }  // namespace
 
 struct Executor::State {
@@ -74,6 +100,11 @@ struct Executor::State {
   std::vector<PassBindings> bindings;
   std::uint64_t bytes = 0;  // heap + individually allocated resources
   std::size_t kept = 0;     // resources handed over from the previous plan
+  std::uint64_t frames_recorded = 0;
+  // Reused every frame, so recording allocates nothing once the first frame has.
+  std::vector<VkImageMemoryBarrier2> image_barriers;
+  std::vector<VkBufferMemoryBarrier2> buffer_barriers;
+  std::vector<SyncState> frame_start;  // each resource's tracked state as the frame began
 };
 
 Executor::Executor(gpu::Context& gpu, gpu::ShaderCompiler& shaders, const PassRegistry& registry,
@@ -83,6 +114,7 @@ Executor::Executor(gpu::Context& gpu, gpu::ShaderCompiler& shaders, const PassRe
       registry_(registry),
       shader_root_(std::move(shader_root)),
       pipeline_cache_(pipeline_cache),
+      check_sources_(kDebugBuild || gpu.validation_enabled()),
       owned_samplers_(std::make_unique<OwnedSamplers>()) {
   gpu::SamplerDesc nearest;
   nearest.filter = VK_FILTER_NEAREST;
@@ -236,7 +268,7 @@ void Executor::hand_over_kept_resources(State& state, const std::vector<int>& ke
     out.image = std::move(live.image);
     out.buffer = std::move(live.buffer);
     out.image_bytes = live.image_bytes;
-    out.state = live.state;
+    out.tracked = live.tracked;
     out.bound_image.layout = live.bound_image.layout;
     ++state.kept;
   }
@@ -257,23 +289,35 @@ std::size_t Executor::kept_resources() const {
   return state_ ? state_->kept : 0;
 }
 
-void Executor::record_barriers(VkCommandBuffer cmd, const std::vector<fg::PlanBarrier>& barriers) {
-  std::vector<VkImageMemoryBarrier2> image_barriers;
-  std::vector<VkBufferMemoryBarrier2> buffer_barriers;
+// Checks, when enabled, that the executor left the resource where the plan says the
+// barrier starts (docs/architecture.md section 4); a mismatch is a compiler or executor
+// bug, thrown as a logic_error naming the resource and the pass.
+void Executor::check_source(const fg::PlanBarrier& barrier, std::string_view before) const {
+  if (!check_sources_) return;
+  // The plan cannot know the state before a plan's first frame (recorded_source).
+  if (state_->frames_recorded == 0 && barrier.source == fg::BarrierSource::last_frame) return;
+  const auto& rr = state_->resources[static_cast<std::size_t>(barrier.resource)];
+  const std::string why = source_mismatch(barrier, rr.tracked, rr.depth);
+  if (why.empty()) return;
+  const std::string where = before.empty() ? "the final barriers (the host's copy of the output)"
+                                           : "pass '" + std::string(before) + "'";
+  throw std::logic_error("executor: the barrier of '" +
+                         state_->plan.resources[static_cast<std::size_t>(barrier.resource)].name +
+                         "' before " + where + ": " + why);
+}
+
+void Executor::record_barriers(VkCommandBuffer cmd, const std::vector<fg::PlanBarrier>& barriers,
+                               std::string_view before) {
+  auto& image_barriers = state_->image_barriers;
+  auto& buffer_barriers = state_->buffer_barriers;
+  image_barriers.clear();
+  buffer_barriers.clear();
   for (const auto& b : barriers) {
+    check_source(b, before);
     auto& rr = state_->resources[static_cast<std::size_t>(b.resource)];
     const auto& r = state_->plan.resources[static_cast<std::size_t>(b.resource)];
+    const SyncState source = recorded_source(b, rr, state_->frames_recorded == 0);
     const SyncState target = sync_state(b.to, b.to_stage, rr.depth);
-    SyncState source = rr.state;
-    if (b.discard) {
-      // Contents are not needed. An aliased resource's memory was last used by another
-      // resource, so order against all earlier writes rather than this one's history.
-      source.layout = VK_IMAGE_LAYOUT_UNDEFINED;
-      if (r.aliased) {
-        source.stages = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
-        source.access = VK_ACCESS_2_MEMORY_WRITE_BIT;
-      }
-    }
     if (r.kind == fg::ResourceKind::buffer) {
       VkBufferMemoryBarrier2 bb{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER_2};
       bb.srcStageMask = source.stages;
@@ -298,7 +342,7 @@ void Executor::record_barriers(VkCommandBuffer cmd, const std::vector<fg::PlanBa
       image_barriers.push_back(gpu::to_vk(ib));
       rr.bound_image.layout = target.layout;
     }
-    rr.state = target;
+    rr.tracked = target;
   }
   if (image_barriers.empty() && buffer_barriers.empty()) return;
   VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
@@ -309,23 +353,43 @@ void Executor::record_barriers(VkCommandBuffer cmd, const std::vector<fg::PlanBa
   gpu::cmd_pipeline_barrier2(cmd, &dependency);
 }
 
+// A frame abandoned midway (a pass threw) is never submitted: the tracked states go back
+// to where the GPU still has them.
+void Executor::restore_frame_start() {
+  for (std::size_t i = 0; i < state_->resources.size(); ++i) {
+    auto& rr = state_->resources[i];
+    rr.tracked = state_->frame_start[i];
+    if (rr.bound_image.image != VK_NULL_HANDLE) rr.bound_image.layout = rr.tracked.layout;
+  }
+}
+
 void Executor::record(VkCommandBuffer cmd, const FrameResources& frame, PassObserver* observer,
                       FrameReport* report) {
   if (!state_) throw std::logic_error("Executor::record() before load()");
   FrameReport discarded;
   FrameReport& sink = report != nullptr ? *report : discarded;
   sink.clear();
-  for (std::size_t i = 0; i < state_->passes.size(); ++i) {
-    const auto& pass = state_->plan.passes[i];
-    gpu_.begin_label(cmd, pass.name);
-    record_barriers(cmd, pass.barriers);
-    if (observer != nullptr) observer->begin_pass(cmd, pass);
-    ExecuteContext context{gpu_, cmd, pass, state_->bindings[i], frame, samplers_, sink};
-    state_->passes[i]->execute(context);
-    if (observer != nullptr) observer->end_pass(cmd, pass);
-    gpu_.end_label(cmd);
+  state_->frame_start.resize(state_->resources.size());
+  for (std::size_t i = 0; i < state_->resources.size(); ++i) {
+    state_->frame_start[i] = state_->resources[i].tracked;
   }
-  record_barriers(cmd, state_->plan.final_barriers);
+  try {
+    for (std::size_t i = 0; i < state_->passes.size(); ++i) {
+      const auto& pass = state_->plan.passes[i];
+      gpu_.begin_label(cmd, pass.name);
+      record_barriers(cmd, pass.barriers, pass.name);
+      if (observer != nullptr) observer->begin_pass(cmd, pass);
+      ExecuteContext context{gpu_, cmd, pass, state_->bindings[i], frame, samplers_, sink};
+      state_->passes[i]->execute(context);
+      if (observer != nullptr) observer->end_pass(cmd, pass);
+      gpu_.end_label(cmd);
+    }
+    record_barriers(cmd, state_->plan.final_barriers, {});
+  } catch (...) {
+    restore_frame_start();
+    throw;
+  }
+  ++state_->frames_recorded;
 }
 
 void Executor::collect(FrameReport& report) {

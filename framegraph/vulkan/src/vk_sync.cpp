@@ -1,7 +1,26 @@
 #include "antumbra/fgvk/vk_sync.hpp"
 
+#include <string>
+
 namespace antumbra::fgvk {
 namespace {
+
+std::string hex(std::uint64_t value) {
+  static constexpr char kDigits[] = "0123456789abcdef";
+  std::string out;
+  do {
+    out.insert(out.begin(), kDigits[value % 16]);
+    value /= 16;
+  } while (value != 0);
+  return "0x" + out;
+}
+
+// The raw masks and layout: a mismatch is a programming error, read beside the
+// Vulkan headers.
+std::string describe(const SyncState& state) {
+  return "stages " + hex(state.stages) + ", access " + hex(state.access) + ", layout " +
+         std::to_string(static_cast<int>(state.layout));
+}
 
 VkPipelineStageFlags2 shader_stages(fg::Stage stage) {
   switch (stage) {
@@ -68,12 +87,34 @@ SyncState sync_state(fg::Access access, fg::Stage stage, bool depth) {
     case Access::transfer_dst:
       return {VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
               VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL};
-    case Access::present:
-      // Headless: the output is read back by a copy. A swapchain blit reads it the same way.
-      return {VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_READ_BIT,
-              VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
   }
   return {};
+}
+
+SyncState barrier_source(const fg::PlanBarrier& barrier, bool depth) {
+  if (barrier.source == fg::BarrierSource::aliased_memory) {
+    // Earlier users of the memory are several resources, some in the previous frame,
+    // still in flight: wait for every earlier command and write, not for one of them.
+    return {VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_WRITE_BIT,
+            VK_IMAGE_LAYOUT_UNDEFINED};
+  }
+  SyncState source = sync_state(barrier.from, barrier.from_stage, depth);
+  if (barrier.discard) source.layout = VK_IMAGE_LAYOUT_UNDEFINED;
+  return source;
+}
+
+std::string source_mismatch(const fg::PlanBarrier& barrier, const SyncState& tracked, bool depth) {
+  // Aliased memory's source is the heap's history, not the resource's own state.
+  if (barrier.source == fg::BarrierSource::aliased_memory) return {};
+  const SyncState planned = sync_state(barrier.from, barrier.from_stage, depth);
+  if (planned.stages == tracked.stages && planned.access == tracked.access &&
+      planned.layout == tracked.layout) {
+    return {};
+  }
+  return "the plan's source (" + std::string(fg::to_string(barrier.source)) + ": " +
+         std::string(fg::to_string(barrier.from)) + " at " +
+         std::string(fg::to_string(barrier.from_stage)) + ", " + describe(planned) +
+         ") is not the executor's tracked state (" + describe(tracked) + ")";
 }
 
 VkFormat to_vk_format(fg::Format format) {

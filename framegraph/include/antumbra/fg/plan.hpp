@@ -59,18 +59,34 @@ struct PlanBinding {
   Stage stage = Stage::none;
 };
 
+// Where a barrier's source state comes from. The executor records the source the plan
+// names and checks its own record of each resource against it (fgvk::source_mismatch,
+// docs/architecture.md section 4); only what the plan cannot know, the frame before a
+// plan's first one, comes from that record.
+enum class BarrierSource : std::uint8_t {
+  // An earlier pass of this frame left the resource in (from, from_stage).
+  this_frame,
+  // The resource's first use in the frame; it keeps its memory between frames (persistent,
+  // or the output), and the previous frame left it in (from, from_stage): its last access
+  // there, the host's copy (transfer_src) for the output. On a plan's first frame the
+  // previous frame was another plan's, or none (a new resource is undefined).
+  last_frame,
+  // The first use of an aliased (transient) resource: its heap memory was last used by
+  // other resources, in this frame or the last, whose every earlier access and write must
+  // finish first. from is none (the resource has no earlier access) and discard is set.
+  aliased_memory,
+};
+std::string_view to_string(BarrierSource source);
+
 // One state change of one resource, placed before the pass that needs it.
 struct PlanBarrier {
   int resource = -1;
-  Access from = Access::none;
+  Access from = Access::none;  // the state `source` left the resource in
   Stage from_stage = Stage::none;
   Access to = Access::none;
   Stage to_stage = Stage::none;
-  bool discard = false;  // previous contents not needed (first use / aliasing)
-  // For the first use of an aliased resource: the resource that used the same heap
-  // memory last before it (-1 if none). Its last access must finish first;
-  // from_stage then names that access's stage.
-  int previous_alias = -1;
+  bool discard = false;  // previous contents not needed (first use of a transient or the output)
+  BarrierSource source = BarrierSource::this_frame;
 };
 
 // NOLINTNEXTLINE(bugprone-exception-escape): nlohmann::json's noexcept move is reported.
@@ -98,7 +114,7 @@ struct Plan {
   std::vector<std::string> culled_passes;    // names, in description order
   std::vector<std::string> disabled_passes;  // "enabled": false, in description order
   int output = -1;                           // index into resources
-  std::vector<PlanBarrier> final_barriers;   // after the last pass (output -> present)
+  std::vector<PlanBarrier> final_barriers;   // after the last pass: output -> transfer_src
   AliasingReport aliasing;
 
   [[nodiscard]] int find_resource(std::string_view name) const;

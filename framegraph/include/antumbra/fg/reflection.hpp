@@ -58,9 +58,10 @@ enum class Access : std::uint8_t {
   depth_attachment,    // depth written (and tested)
   depth_read,          // depth tested, not written
   uniform_read,        // uniform buffer
+  // Copied from: by a pass, or after the frame by the host (the output: `render`'s
+  // read-back, the editor's blit into its own swapchain image, which it presents).
   transfer_src,
   transfer_dst,
-  present,  // handed to the presentation engine / read back
 };
 std::string_view to_string(Access access);
 bool is_write(Access access);

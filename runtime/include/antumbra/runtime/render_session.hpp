@@ -92,6 +92,8 @@ class RenderSession {
 
   [[nodiscard]] gpu::Context& gpu() { return *gpu_; }
   [[nodiscard]] const fgvk::Executor& executor() const { return *executor_; }
+  // Tests load hand-edited plans through it (tests/gpu/executor_sources_test.cpp).
+  [[nodiscard]] fgvk::Executor& executor() { return *executor_; }
 
  private:
   class Observer;

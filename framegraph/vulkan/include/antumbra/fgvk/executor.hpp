@@ -52,9 +52,15 @@ class Executor {
   [[nodiscard]] const fg::Plan& plan() const;
 
   // Records one frame of the plan into `cmd`. Passes add their findings to `report`
-  // (cleared first) when one is given.
+  // (cleared first) when one is given. Each barrier records the source the plan names;
+  // with checks_sources() a planned source that is not the state the executor left the
+  // resource in throws std::logic_error. On an exception the frame is not to be
+  // submitted: the tracked states return to where the frame began.
   void record(VkCommandBuffer cmd, const FrameResources& frame, PassObserver* observer = nullptr,
               FrameReport* report = nullptr);
+  // Whether record() checks each planned source against the tracked state: in debug
+  // builds, and whenever the context has validation on (every GPU test, --validation).
+  [[nodiscard]] bool checks_sources() const { return check_sources_; }
   // After the GPU has finished the recorded frames: every pass's final counts
   // (Pass::collect) into `report`.
   void collect(FrameReport& report);
@@ -82,13 +88,18 @@ class Executor {
   void prepare_passes(State& state);
   void adopt_predecessors(State& state) const;
   void hand_over_kept_resources(State& state, const std::vector<int>& kept);
-  void record_barriers(VkCommandBuffer cmd, const std::vector<fg::PlanBarrier>& barriers);
+  void check_source(const fg::PlanBarrier& barrier, std::string_view before) const;
+  // `before`: the pass the barriers precede, for messages (empty: the final barriers).
+  void record_barriers(VkCommandBuffer cmd, const std::vector<fg::PlanBarrier>& barriers,
+                       std::string_view before);
+  void restore_frame_start();
 
   gpu::Context& gpu_;
   gpu::ShaderCompiler& shaders_;
   const PassRegistry& registry_;
   std::string shader_root_;
   VkPipelineCache pipeline_cache_;
+  bool check_sources_ = false;
   std::unique_ptr<State> state_;
   Samplers samplers_;
   struct OwnedSamplers;

@@ -2,6 +2,8 @@
 // The one place that turns the abstract access kinds of the plan into
 // synchronization2 stages, access masks and image layouts.
 
+#include <string>
+
 #include <vulkan/vulkan.h>
 
 #include "antumbra/fg/plan.hpp"
@@ -16,6 +18,17 @@ struct SyncState {
 
 // `depth` selects depth/stencil layouts for sampled and storage access of depth images.
 SyncState sync_state(fg::Access access, fg::Stage stage, bool depth);
+
+// What a planned barrier waits for and transitions from: its source as the plan states
+// it (UNDEFINED when the contents are discarded; the whole heap's history for aliased
+// memory, fg::BarrierSource).
+SyncState barrier_source(const fg::PlanBarrier& barrier, bool depth);
+
+// Empty when `tracked`, the state the executor last left the resource in, is the state
+// the plan says `barrier` starts from; else why not. The executor calls it for every
+// barrier it records when it checks itself (Executor::checks_sources()); a function and
+// not an assert so that a test of any build can show a wrong source caught.
+std::string source_mismatch(const fg::PlanBarrier& barrier, const SyncState& tracked, bool depth);
 
 VkFormat to_vk_format(fg::Format format);
 VkImageAspectFlags aspect_of(fg::Format format);
