@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "antumbra/fg/graph_desc.hpp"
 #include "antumbra/fg/reflection.hpp"
@@ -44,5 +45,19 @@ fg::Format bound_output_format(const fg::GraphDesc& graph, const fg::PassInstanc
 
 // The FG076 line: what "auto" became for `pass`, and why.
 std::string auto_choice_line(const fg::PassInstanceDesc& pass, const RasterizerPick& pick);
+
+// The resolve step both passes share: "auto" becomes what `choose` picks for the format
+// of the pass's output `port` and the device, and the FG076 line says why; any other value
+// is left to the parameter check.
+template <class Rasterizer>
+std::vector<std::string> resolve_auto_rasterizer(
+    Rasterizer& rasterizer, const fg::PassInstanceDesc& pass, const fg::GraphDesc& graph,
+    fg::PortId port, RasterizerPick (*choose)(fg::Format, const fg::DeviceTraits*),
+    const fg::DeviceTraits* device) {
+  if (rasterizer != Rasterizer::automatic) return {};
+  const RasterizerPick pick = choose(bound_output_format(graph, pass, port.name()), device);
+  rasterizer = pick.compute ? Rasterizer::compute : Rasterizer::hardware;
+  return {auto_choice_line(pass, pick)};
+}
 
 }  // namespace antumbra::passes

@@ -39,11 +39,8 @@ void check(const fg::PlanPass& pass, const GBufferParams& params, const fg::Plan
 std::vector<std::string> resolve_rasterizer(GBufferParams& params, const fg::PassInstanceDesc& pass,
                                             const fg::GraphDesc& graph,
                                             const fg::DeviceTraits* device) {
-  if (params.rasterizer != GBufferRasterizer::automatic) return {};
-  const RasterizerPick pick =
-      choose_gbuffer_rasterizer(bound_output_format(graph, pass, port::kDepth.name()), device);
-  params.rasterizer = pick.compute ? GBufferRasterizer::compute : GBufferRasterizer::hardware;
-  return {auto_choice_line(pass, pick)};
+  return resolve_auto_rasterizer(params.rasterizer, pass, graph, port::kDepth,
+                                 &choose_gbuffer_rasterizer, device);
 }
 
 }  // namespace

@@ -82,11 +82,8 @@ std::vector<std::string> resolve_atlas_rasterizer(PointShadowAtlasParams& params
                                                   const fg::PassInstanceDesc& pass,
                                                   const fg::GraphDesc& graph,
                                                   const fg::DeviceTraits* device) {
-  if (params.rasterizer != ShadowRasterizer::automatic) return {};
-  const RasterizerPick pick =
-      choose_atlas_rasterizer(bound_output_format(graph, pass, port::kAtlas.name()), device);
-  params.rasterizer = pick.compute ? ShadowRasterizer::compute : ShadowRasterizer::hardware;
-  return {auto_choice_line(pass, pick)};
+  return resolve_auto_rasterizer(params.rasterizer, pass, graph, port::kAtlas,
+                                 &choose_atlas_rasterizer, device);
 }
 
 }  // namespace
