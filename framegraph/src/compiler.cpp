@@ -106,6 +106,7 @@ Plan assemble(const GraphDesc& graph, const std::vector<ResolvedPass>& passes,
     r.layers = d.layers;
     r.buffer_size = d.buffer_size;
     r.persistent = d.persistent;
+    r.imported = d.imported;
     r.is_output = static_cast<int>(i) == output;
     remap[i] = static_cast<int>(plan.resources.size());
     plan.resources.push_back(std::move(r));

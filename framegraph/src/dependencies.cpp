@@ -57,6 +57,8 @@ void add_read_edges(const GraphDesc& graph, const std::vector<ResolvedPass>& pas
     const auto r = static_cast<std::size_t>(read.resource);
     if (access.last_writer[r] >= 0) {
       add_edge(edges, {access.last_writer[r], to, EdgeKind::read_after_write, read.resource});
+    } else if (graph.resources[r].imported) {
+      // The host's contents from before the frame: nothing in the graph to wait for.
     } else if (graph.resources[r].persistent) {
       access.persistent_reads.push_back({-1, to, EdgeKind::read_after_write, read.resource});
     } else {

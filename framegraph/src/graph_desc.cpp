@@ -239,18 +239,20 @@ class GraphParser {
     std::string kind;
     if (!require(value, pointer, "kind") ||
         !expect_string(value["kind"], pointer + "/kind", kind)) {
-      check_keys(value, pointer, {"kind", "format", "size", "layers", "persistent", "description"});
+      check_keys(value, pointer,
+                 {"kind", "format", "size", "layers", "persistent", "import", "description"});
       return;
     }
     if (kind == "buffer") {
       res.kind = ResourceKind::buffer;
-      check_keys(value, pointer, {"kind", "size", "persistent", "description"});
+      check_keys(value, pointer, {"kind", "size", "persistent", "import", "description"});
       if (require(value, pointer, "size")) {
         expect_uint(value["size"], pointer + "/size", 1, std::uint64_t{1} << 32, codes::kBadSize,
                     "buffer size", res.buffer_size);
       }
     } else if (kind == "image") {
-      check_keys(value, pointer, {"kind", "format", "size", "layers", "persistent", "description"});
+      check_keys(value, pointer,
+                 {"kind", "format", "size", "layers", "persistent", "import", "description"});
       std::string format;
       if (require(value, pointer, "format") &&
           expect_string(value["format"], pointer + "/format", format)) {
@@ -281,11 +283,30 @@ class GraphParser {
     }
     if (value.contains("persistent"))
       expect_bool(value["persistent"], pointer + "/persistent", res.persistent);
+    if (value.contains("import")) parse_import(value, pointer, res);
     if (value.contains("description")) {
       std::string ignored;
       expect_string(value["description"], pointer + "/description", ignored);
     }
     graph.resources.push_back(std::move(res));
+  }
+
+  // "import": true, the host's image bound at run time (docs/integration.md): images
+  // only, and never "persistent" (what an import holds between frames is the host's).
+  void parse_import(const Json& value, const std::string& pointer, ResourceDesc& res) {
+    if (!expect_bool(value["import"], pointer + "/import", res.imported) || !res.imported) return;
+    if (res.kind == ResourceKind::buffer) {
+      error(codes::kBadImport,
+            "only images can be imported; bind a host buffer's contents through a pass instead",
+            pointer + "/import");
+      res.imported = false;
+    } else if (res.persistent) {
+      error(codes::kBadImport,
+            "an imported image cannot be persistent: what it holds between frames is the "
+            "host's (remove \"persistent\")",
+            pointer + "/persistent");
+      res.imported = false;
+    }
   }
 
   void parse_resources(const Json& value, GraphDesc& graph) {

@@ -10,6 +10,8 @@ std::string_view to_string(BarrierSource source) {
       return "last_frame";
     case BarrierSource::aliased_memory:
       return "aliased_memory";
+    case BarrierSource::imported:
+      return "imported";
   }
   return "this_frame";
 }

@@ -56,7 +56,10 @@ bool same_realisation(const PlanResource& before, const PlanResource& after) {
 }
 
 bool same_description(const PlanResource& before, const PlanResource& after) {
-  if (before.kind != after.kind || before.persistent != after.persistent) return false;
+  if (before.kind != after.kind || before.persistent != after.persistent ||
+      before.imported != after.imported) {
+    return false;
+  }
   auto usages_a = before.usages;
   auto usages_b = after.usages;
   std::sort(usages_a.begin(), usages_a.end());

@@ -21,6 +21,8 @@ Json barrier_json(const Plan& plan, const PlanBarrier& b) {
   j["to"] = to_string(b.to);
   j["toStage"] = to_string(b.to_stage);
   j["discard"] = b.discard;
+  // The host's state after the frame, which only the host knows.
+  if (b.to_host) j["to"] = j["toStage"] = "host";
   return j;
 }
 
@@ -38,6 +40,7 @@ Json resource_json(const PlanResource& r) {
   }
   j["persistent"] = r.persistent;
   j["output"] = r.is_output;
+  if (r.imported) j["imported"] = true;
   j["firstUse"] = r.first_use;
   j["lastUse"] = r.last_use;
   Json usages = Json::array();

@@ -17,7 +17,7 @@ std::uint64_t align_up(std::uint64_t value, std::uint64_t alignment) {
 }
 
 bool is_transient(const PlanResource& r) {
-  return !r.persistent && !r.is_output && r.first_use >= 0;
+  return !r.persistent && !r.is_output && !r.imported && r.first_use >= 0;
 }
 
 bool lifetimes_overlap(const PlanResource& a, const PlanResource& b) {
@@ -132,6 +132,7 @@ struct State {
 State frame_start_state(const Plan& plan, std::size_t resource) {
   const PlanResource& r = plan.resources[resource];
   State state;
+  if (r.imported) return state;  // the host's state, known at run time only
   if (r.is_output) return {Access::transfer_src, Stage::transfer};
   if (r.aliased) return state;
   for (const PlanPass& pass : plan.passes) {
@@ -147,8 +148,10 @@ PlanBarrier make_barrier(const Plan& plan, int resource, const State& from, Acce
   PlanBarrier barrier{resource, from.access, from.stage, to, to_stage};
   if (from.in_frame) return barrier;
   const PlanResource& r = plan.resources[static_cast<std::size_t>(resource)];
-  barrier.discard = !r.persistent;
-  barrier.source = r.aliased ? BarrierSource::aliased_memory : BarrierSource::last_frame;
+  barrier.discard = !r.persistent && !r.imported;
+  barrier.source = r.imported  ? BarrierSource::imported
+                   : r.aliased ? BarrierSource::aliased_memory
+                               : BarrierSource::last_frame;
   return barrier;
 }
 
@@ -173,10 +176,18 @@ void plan_barriers(Plan& plan) {
     }
   }
   plan.final_barriers.clear();
-  if (plan.output >= 0) {
+  if (plan.output >= 0 && !plan.resources[static_cast<std::size_t>(plan.output)].imported) {
     const State& from = state[static_cast<std::size_t>(plan.output)];
     plan.final_barriers.push_back(
         make_barrier(plan, plan.output, from, Access::transfer_src, Stage::transfer));
+  }
+  // The host's images go back to the state the host asked for.
+  for (std::size_t i = 0; i < plan.resources.size(); ++i) {
+    if (!plan.resources[i].imported || plan.resources[i].first_use < 0) continue;
+    PlanBarrier barrier =
+        make_barrier(plan, static_cast<int>(i), state[i], Access::none, Stage::none);
+    barrier.to_host = true;
+    plan.final_barriers.push_back(barrier);
   }
 }
 

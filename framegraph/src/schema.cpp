@@ -109,6 +109,7 @@ Json resource_schema() {
            {"size", std::move(size)},
            {"layers", Json{{"type", "integer"}, {"minimum", 1}, {"maximum", 2048}, {"default", 1}}},
            {"persistent", Json{{"type", "boolean"}, {"default", false}}},
+           {"import", Json{{"type", "boolean"}, {"default", false}}},
            {"description", Json{{"type", "string"}}}}},
       {"required", Json::array({"kind", "format", "size"})},
       {"additionalProperties", false}};

@@ -133,6 +133,31 @@ TEST(Compile, PersistentHistoryKeepsItsWriterAndStartsInLastState) {
   EXPECT_TRUE(found);
 }
 
+// The host's images (docs/integration.md): read without a writer in the graph, never
+// aliased, entered from the host's state with their contents, and handed back to it.
+TEST(Compile, ImportedImagesComeFromAndGoBackToTheHost) {
+  const Plan plan = compile_good("imported.json");
+  ASSERT_EQ(plan.passes.size(), 1u);
+  for (const char* name : {"hdr", "ldr"}) {
+    const auto& r = plan.resources[static_cast<std::size_t>(plan.find_resource(name))];
+    EXPECT_TRUE(r.imported) << name;
+    EXPECT_FALSE(r.aliased) << name;
+  }
+  ASSERT_EQ(plan.passes[0].barriers.size(), 2u);
+  for (const auto& b : plan.passes[0].barriers) {
+    EXPECT_EQ(b.source, BarrierSource::imported);
+    EXPECT_EQ(b.from, Access::none);
+    EXPECT_FALSE(b.discard);  // the host's contents (its HDR image) are read
+  }
+  // No copy-out of the output: both go back to the host's state.
+  ASSERT_EQ(plan.final_barriers.size(), 2u);
+  for (const auto& b : plan.final_barriers) {
+    EXPECT_TRUE(b.to_host);
+    EXPECT_EQ(b.source, BarrierSource::this_frame);
+  }
+  EXPECT_EQ(plan.aliasing.heap_bytes, 0u);
+}
+
 // The executor's own record of each resource, replayed without a GPU: the target of the
 // last barrier it recorded, and whether that was in the frame being recorded.
 struct Tracked {
@@ -157,6 +182,10 @@ std::string source_disagreement(const Plan& plan, const PlanBarrier& b, const Tr
       return !tracked.in_frame && r.aliased && b.discard && b.from == Access::none
                  ? ""
                  : "aliased_memory source on a resource that is not a transient's first use";
+    case BarrierSource::imported:
+      return !tracked.in_frame && r.imported && !b.discard && b.from == Access::none
+                 ? ""
+                 : "imported source on a resource that is not an import's first use";
   }
   return "unknown source";
 }
@@ -187,7 +216,7 @@ TEST_P(PlanSources, AreWhereThePreviousBarrierLeftTheResource) {
 
 INSTANTIATE_TEST_SUITE_P(Good, PlanSources,
                          ::testing::Values("deferred", "culling", "aliasing", "persistent",
-                                           "after"));
+                                           "after", "imported"));
 
 TEST(Compile, CycleMessageListsEdges) {
   const std::string text = testing::read_text(data_path("graphs/bad/cycle.json"));

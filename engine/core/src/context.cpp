@@ -140,41 +140,50 @@ Context::Context(const ContextOptions& options) {
     create_instance(options);
     select_physical_device(options);
     create_device(options);
-    allocator_ = std::make_unique<Allocator>(physical_device_, device_, ext_.set_object_name);
-
-    VkSemaphoreTypeCreateInfo type_info{VK_STRUCTURE_TYPE_SEMAPHORE_TYPE_CREATE_INFO};
-    type_info.semaphoreType = VK_SEMAPHORE_TYPE_TIMELINE;
-    type_info.initialValue = 0;
-    VkSemaphoreCreateInfo semaphore_info{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO, &type_info};
-    check(vkCreateSemaphore(device_, &semaphore_info, nullptr, &timeline_), "vkCreateSemaphore");
-    set_name(timeline_, VK_OBJECT_TYPE_SEMAPHORE, "context.timeline");
-
-    VkCommandPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
-    pool_info.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
-    pool_info.queueFamilyIndex = queue_family_;
-    check(vkCreateCommandPool(device_, &pool_info, nullptr, &immediate_pool_),
-          "vkCreateCommandPool");
-    set_name(immediate_pool_, VK_OBJECT_TYPE_COMMAND_POOL, "context.immediate_pool");
+    create_own_objects();
   } catch (...) {
     // The destructor does not run for a half-built object: undo what exists.
-    if (device_) {
-      vkDestroyCommandPool(device_, immediate_pool_, nullptr);
-      vkDestroySemaphore(device_, timeline_, nullptr);
-      allocator_.reset();
-      vkDestroyDevice(device_, nullptr);
-    }
-    if (commands_bound_) detail::unbind_vulkan13_commands();
-    if (messenger_) {
-      auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
-          vkGetInstanceProcAddr(instance_, "vkDestroyDebugUtilsMessengerEXT"));
-      if (destroy) destroy(instance_, messenger_, nullptr);
-    }
-    if (instance_) vkDestroyInstance(instance_, nullptr);
+    destroy_own_objects();
     throw;
   }
   spdlog::info("Vulkan device: {} ({}, {}), validation {}", device_name_,
                device_type_name(properties_.deviceType), api_summary(), validation_ ? "on" : "off");
   if (!capture_tool_.empty()) spdlog::info("graphics debugger: {}", capture_tool_);
+}
+
+void Context::create_own_objects() {
+  allocator_ = std::make_unique<Allocator>(physical_device_, device_, ext_.set_object_name);
+
+  VkSemaphoreTypeCreateInfo type_info{VK_STRUCTURE_TYPE_SEMAPHORE_TYPE_CREATE_INFO};
+  type_info.semaphoreType = VK_SEMAPHORE_TYPE_TIMELINE;
+  type_info.initialValue = 0;
+  VkSemaphoreCreateInfo semaphore_info{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO, &type_info};
+  check(vkCreateSemaphore(device_, &semaphore_info, nullptr, &timeline_), "vkCreateSemaphore");
+  set_name(timeline_, VK_OBJECT_TYPE_SEMAPHORE, "antumbra.timeline");
+
+  VkCommandPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+  pool_info.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
+  pool_info.queueFamilyIndex = queue_family_;
+  check(vkCreateCommandPool(device_, &pool_info, nullptr, &immediate_pool_),
+        "vkCreateCommandPool");
+  set_name(immediate_pool_, VK_OBJECT_TYPE_COMMAND_POOL, "antumbra.immediate_pool");
+}
+
+// Everything this Context created, in reverse; a borrowed device and instance stay.
+void Context::destroy_own_objects() {
+  if (device_) {
+    vkDestroyCommandPool(device_, immediate_pool_, nullptr);
+    vkDestroySemaphore(device_, timeline_, nullptr);
+    allocator_.reset();
+    if (!borrowed_) vkDestroyDevice(device_, nullptr);
+  }
+  if (commands_bound_) detail::unbind_vulkan13_commands();
+  if (messenger_) {
+    auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
+        vkGetInstanceProcAddr(instance_, "vkDestroyDebugUtilsMessengerEXT"));
+    if (destroy) destroy(instance_, messenger_, nullptr);
+  }
+  if (instance_ && !borrowed_) vkDestroyInstance(instance_, nullptr);
 }
 
 Context::~Context() {
@@ -185,18 +194,8 @@ Context::~Context() {
       // A lost device still has to be torn down; destructors must not throw.
       spdlog::error("Context shutdown: {}", e.what());
     }
-    vkDestroyCommandPool(device_, immediate_pool_, nullptr);
-    vkDestroySemaphore(device_, timeline_, nullptr);
-    allocator_.reset();
-    vkDestroyDevice(device_, nullptr);
   }
-  if (commands_bound_) detail::unbind_vulkan13_commands();
-  if (messenger_) {
-    auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
-        vkGetInstanceProcAddr(instance_, "vkDestroyDebugUtilsMessengerEXT"));
-    if (destroy) destroy(instance_, messenger_, nullptr);
-  }
-  if (instance_) vkDestroyInstance(instance_, nullptr);
+  destroy_own_objects();
 }
 
 bool Context::is_cpu() const {
@@ -266,14 +265,36 @@ void Context::create_instance(const ContextOptions& options) {
   }
   check(result, "vkCreateInstance");
 
-  if (validation_ && debug_utils_) {
-    auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
-        vkGetInstanceProcAddr(instance_, "vkCreateDebugUtilsMessengerEXT"));
-    messenger_info.pNext = nullptr;
-    check(create(instance_, &messenger_info, nullptr, &messenger_),
-          "vkCreateDebugUtilsMessengerEXT");
-  }
+  if (validation_ && debug_utils_) create_messenger();
   if (debug_utils_) load_debug_utils_functions(instance_, ext_);
+}
+
+void Context::create_messenger() {
+  const VkDebugUtilsMessengerCreateInfoEXT info =
+      messenger_create_info(&Context::debug_callback, this);
+  auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
+      vkGetInstanceProcAddr(instance_, "vkCreateDebugUtilsMessengerEXT"));
+  if (create == nullptr) throw std::invalid_argument("VK_EXT_debug_utils is not enabled");
+  check(create(instance_, &info, nullptr, &messenger_), "vkCreateDebugUtilsMessengerEXT");
+}
+
+Context::Context(const HostDevice& host) {
+  borrowed_ = true;
+  try {
+    adopt_host_device(host);
+    if (debug_utils_) load_debug_utils_functions(instance_, ext_);
+    // The host's messages stay the host's; these count what happens during Antumbra's
+    // calls as well (the layer calls every messenger).
+    if (validation_ && debug_utils_) create_messenger();
+    bind_device_functions();
+    find_capture_tool();
+    create_own_objects();
+  } catch (...) {
+    destroy_own_objects();
+    throw;
+  }
+  spdlog::info("Vulkan device: {} ({}, {}), the host's, validation {}", device_name_,
+               device_type_name(properties_.deviceType), api_summary(), validation_ ? "on" : "off");
 }
 
 void Context::select_physical_device(const ContextOptions& options) {

@@ -117,6 +117,10 @@ std::uint64_t Context::submit(VkCommandBuffer cmd, const SubmitExtras& extras) {
   return value;
 }
 
+std::uint64_t Context::reserve_host_submission() {
+  return ++last_submitted_;
+}
+
 void Context::wait_for(std::uint64_t timeline_value) const {
   VkSemaphoreWaitInfo info{VK_STRUCTURE_TYPE_SEMAPHORE_WAIT_INFO};
   info.semaphoreCount = 1;
@@ -167,7 +171,19 @@ void Context::collect_garbage() {
 }
 
 void Context::wait_idle() {
-  const VkResult result = vkDeviceWaitIdle(device_);
+  // A host's device also runs the host's work, on queues the host synchronises: wait only
+  // for what Antumbra submitted or reserved (a host frame not yet submitted would never
+  // signal: the host submits before it destroys the session, docs/integration.md).
+  VkResult result = VK_SUCCESS;
+  if (borrowed_) {
+    VkSemaphoreWaitInfo info{VK_STRUCTURE_TYPE_SEMAPHORE_WAIT_INFO};
+    info.semaphoreCount = 1;
+    info.pSemaphores = &timeline_;
+    info.pValues = &last_submitted_;
+    result = vkWaitSemaphores(device_, &info, UINT64_MAX);
+  } else {
+    result = vkDeviceWaitIdle(device_);
+  }
   // Even on a lost device everything queued is destroyed, then the error is reported.
   while (!pending_.empty()) {
     destroy_now(pending_.front());

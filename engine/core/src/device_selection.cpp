@@ -56,74 +56,12 @@ DeviceCandidate describe_device(VkPhysicalDevice device, std::uint32_t index,
                                 std::uint32_t max_api_version) {
   VkPhysicalDeviceProperties properties{};
   vkGetPhysicalDeviceProperties(device, &properties);
+  const DeviceSetup setup = device_setup(device, max_api_version, swapchain, extra_extensions);
   DeviceCandidate candidate;
   candidate.info = {index, properties.deviceName, properties.deviceType, properties.apiVersion};
-  // The instance's apiVersion caps what the device may be used as (a 1.3 device under a
-  // 1.2 instance is a 1.2 device); the patch number says nothing about features.
-  candidate.api_version =
-      std::min(VK_MAKE_API_VERSION(0, VK_API_VERSION_MAJOR(properties.apiVersion),
-                                   VK_API_VERSION_MINOR(properties.apiVersion), 0),
-               max_api_version);
-  const bool core13 = candidate.api_version >= VK_API_VERSION_1_3;
-  std::vector<std::string> missing;
-  if (candidate.api_version < VK_API_VERSION_1_2) missing.emplace_back("Vulkan 1.2");
-
-  std::uint32_t family_count = 0;
-  vkGetPhysicalDeviceQueueFamilyProperties(device, &family_count, nullptr);
-  std::vector<VkQueueFamilyProperties> families(family_count);
-  vkGetPhysicalDeviceQueueFamilyProperties(device, &family_count, families.data());
-  const VkQueueFlags wanted = VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT;
-  bool found_queue = false;
-  for (std::uint32_t i = 0; i < family_count; ++i) {
-    if ((families[i].queueFlags & wanted) == wanted) {
-      candidate.queue_family = i;
-      found_queue = true;
-      break;
-    }
-  }
-  if (!found_queue) missing.emplace_back("a graphics+compute queue");
-
-  std::uint32_t extension_count = 0;
-  check(vkEnumerateDeviceExtensionProperties(device, nullptr, &extension_count, nullptr),
-        "vkEnumerateDeviceExtensionProperties");
-  std::vector<VkExtensionProperties> extensions(extension_count);
-  check(vkEnumerateDeviceExtensionProperties(device, nullptr, &extension_count, extensions.data()),
-        "vkEnumerateDeviceExtensionProperties");
-  auto offers = [&](const std::string& name) {
-    return std::any_of(extensions.begin(), extensions.end(),
-                       [&](const auto& e) { return name == e.extensionName; });
-  };
-  bool extensions_present = true;
-  for (const auto& name :
-       required_device_extensions(extra_extensions, swapchain, candidate.api_version)) {
-    if (!offers(name)) {
-      // Said of a 1.2 device only (1.3 has these in core), so the note tells why.
-      const bool for13 = std::any_of(std::begin(kVulkan13Extensions), std::end(kVulkan13Extensions),
-                                     [&](const char* n) { return name == n; });
-      missing.push_back(for13 ? name + " (needed below Vulkan 1.3)" : name);
-      extensions_present = false;
-    }
-  }
-
-  if (candidate.api_version >= VK_API_VERSION_1_2 && (core13 || extensions_present)) {
-    FeatureChain features(core13);
-    vkGetPhysicalDeviceFeatures2(device, &features.features2);
-    if (core13) {
-      if (!features.v13.dynamicRendering) missing.emplace_back("dynamicRendering");
-      if (!features.v13.synchronization2) missing.emplace_back("synchronization2");
-    } else {
-      if (!features.dynamic_rendering.dynamicRendering) {
-        missing.emplace_back("dynamicRendering (of " VK_KHR_DYNAMIC_RENDERING_EXTENSION_NAME ")");
-      }
-      if (!features.synchronization2.synchronization2) {
-        missing.emplace_back("synchronization2 (of " VK_KHR_SYNCHRONIZATION_2_EXTENSION_NAME ")");
-      }
-    }
-    if (!features.v12.timelineSemaphore) missing.emplace_back("timelineSemaphore");
-  }
-  for (std::size_t i = 0; i < missing.size(); ++i) {
-    candidate.missing += (i ? ", " : "") + missing[i];
-  }
+  candidate.api_version = setup.api_version;
+  candidate.queue_family = setup.queue_family;
+  candidate.missing = setup.missing;
   return candidate;
 }
 

@@ -8,31 +8,9 @@
 #include <vulkan/vulkan.h>
 
 #include "antumbra/gpu/context.hpp"
+#include "antumbra/gpu/device_setup.hpp"
 
 namespace antumbra::gpu {
-
-// The structs vkGetPhysicalDeviceFeatures2 fills and vkCreateDevice reads, chained by
-// pNext into the object itself, hence not copyable. A 1.3 device gets the 1.3 block; a
-// 1.2 device, which must not see that block, the structs of the extensions that stand in
-// for it (their fields mean the same).
-struct FeatureChain {
-  explicit FeatureChain(bool core13) {
-    v12.pNext = core13 ? static_cast<void*>(&v13) : static_cast<void*>(&dynamic_rendering);
-  }
-  FeatureChain(const FeatureChain&) = delete;
-  FeatureChain& operator=(const FeatureChain&) = delete;
-
-  VkPhysicalDeviceVulkan13Features v13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
-  VkPhysicalDeviceMaintenance4FeaturesKHR maintenance4{
-      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MAINTENANCE_4_FEATURES_KHR};
-  VkPhysicalDeviceSynchronization2FeaturesKHR synchronization2{
-      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SYNCHRONIZATION_2_FEATURES_KHR, &maintenance4};
-  VkPhysicalDeviceDynamicRenderingFeaturesKHR dynamic_rendering{
-      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DYNAMIC_RENDERING_FEATURES_KHR, &synchronization2};
-  VkPhysicalDeviceVulkan12Features v12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
-  VkPhysicalDeviceVulkan11Features v11{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_FEATURES, &v12};
-  VkPhysicalDeviceFeatures2 features2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &v11};
-};
 
 struct DeviceCandidate {
   DeviceInfo info;
@@ -49,6 +27,17 @@ std::vector<std::string> required_device_extensions(const std::vector<std::strin
 DeviceCandidate describe_device(VkPhysicalDevice device, std::uint32_t index,
                                 const std::vector<std::string>& extra_extensions, bool swapchain,
                                 std::uint32_t max_api_version);
+// What Antumbra enables of what `supported` offers: the required features and every
+// optional one (device_setup's features, and the own device's).
+void want_features(const FeatureChain& supported, FeatureChain& wanted);
+// The optional features a pass may choose a path by, as enabled in `enabled`.
+DeviceFeatures enabled_features(const FeatureChain& enabled);
+// A host's device (HostDevice): its enabled feature chain read into a FeatureChain, and
+// what it lacks of what Antumbra needs, by name (empty: nothing).
+void read_host_chain(const void* chain, FeatureChain& out);
+std::string missing_host_features(const FeatureChain& supported, const FeatureChain& enabled,
+                                  bool core13);
+
 // Throws DeviceSelectionError listing all devices when nothing suitable matches.
 const DeviceCandidate& choose_device(const std::vector<DeviceCandidate>& candidates,
                                      const std::string& selector);

@@ -61,6 +61,7 @@ inline constexpr const char* kLayersRejected = "FG055";   // layer count outside
 inline constexpr const char* kSizeMismatch = "FG056";     // attachments of one size group differ
 inline constexpr const char* kUnknownKind = "FG057";      // kind is not image/buffer
 inline constexpr const char* kUnusedResource = "FG058";   // warning: declared, never used
+inline constexpr const char* kBadImport = "FG059";        // "import" on a buffer, or with "persistent"
 
 // Dependency graph.
 inline constexpr const char* kReadNeverWritten = "FG070";  // read of a resource nobody wrote
@@ -78,6 +79,9 @@ inline constexpr const char* kDerivedMapMismatch = "FG092";  // map derived from
 
 // The executor could not realise a valid plan on this device.
 inline constexpr const char* kRealiseFailed = "FG100";
+// A host's image bound to an imported resource (docs/integration.md): the wrong format,
+// extent, layers or usage, a null handle, or a name the graph does not import.
+inline constexpr const char* kImportMismatch = "FG101";
 }  // namespace graph
 
 // Scene files (SC000-SC099). File reading and JSON syntax keep FG000-FG005, because the

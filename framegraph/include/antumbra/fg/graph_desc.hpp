@@ -23,6 +23,9 @@ struct ResourceDesc {
   std::uint32_t layers = 1;
   std::uint64_t buffer_size = 0;  // bytes, for buffers
   bool persistent = false;
+  // The host binds its own image at run time ("import": true; docs/integration.md):
+  // never created nor aliased, its contents before the frame are the host's.
+  bool imported = false;
   std::string pointer;  // "/resources/<name>", for diagnostics
 };
 

@@ -42,6 +42,7 @@ struct PlanResource {
   std::uint64_t buffer_size = 0;  // bytes, for buffers
   bool persistent = false;        // keeps contents across frames (never aliased)
   bool is_output = false;         // the graph's output
+  bool imported = false;          // the host's image, bound at run time (never created)
   // Lifetime in execution order (indices into Plan::passes); -1 if unused.
   int first_use = -1;
   int last_use = -1;
@@ -75,6 +76,9 @@ enum class BarrierSource : std::uint8_t {
   // other resources, in this frame or the last, whose every earlier access and write must
   // finish first. from is none (the resource has no earlier access) and discard is set.
   aliased_memory,
+  // The first use of an imported resource: the host's image, in the state the host says
+  // it leaves it in before the frame (fgvk::ImportedImage::before); from is none.
+  imported,
 };
 std::string_view to_string(BarrierSource source);
 
@@ -87,6 +91,9 @@ struct PlanBarrier {
   Stage to_stage = Stage::none;
   bool discard = false;  // previous contents not needed (first use of a transient or the output)
   BarrierSource source = BarrierSource::this_frame;
+  // A final barrier of an imported resource: its target is the state the host wants the
+  // image in after the frame (fgvk::ImportedImage::after); to is none.
+  bool to_host = false;
 };
 
 // NOLINTNEXTLINE(bugprone-exception-escape): nlohmann::json's noexcept move is reported.
@@ -114,7 +121,9 @@ struct Plan {
   std::vector<std::string> culled_passes;    // names, in description order
   std::vector<std::string> disabled_passes;  // "enabled": false, in description order
   int output = -1;                           // index into resources
-  std::vector<PlanBarrier> final_barriers;   // after the last pass: output -> transfer_src
+  // After the last pass: the output -> transfer_src (the host copies it out), every
+  // imported resource (an imported output too) -> the host's state.
+  std::vector<PlanBarrier> final_barriers;
   AliasingReport aliasing;
 
   [[nodiscard]] int find_resource(std::string_view name) const;

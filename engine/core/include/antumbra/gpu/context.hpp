@@ -41,6 +41,33 @@ struct ContextOptions {
   std::uint32_t max_api_version = 0;
 };
 
+// A device the host created and keeps owning (docs/integration.md, "The host's device"):
+// a Context made from it borrows it, checks that it has what Antumbra needs and names
+// what it lacks, and destroys only its own objects. Enable device_setup()'s extensions
+// and features when creating the device.
+struct HostDevice {
+  VkInstance instance = VK_NULL_HANDLE;
+  VkPhysicalDevice physical_device = VK_NULL_HANDLE;
+  VkDevice device = VK_NULL_HANDLE;
+  // A graphics+compute queue. Antumbra submits to it only for uploads (scene, loads):
+  // the host externally synchronises it, as Vulkan requires (no call into Antumbra while
+  // another thread submits to it).
+  VkQueue queue = VK_NULL_HANDLE;
+  std::uint32_t queue_family = 0;
+  // The instance's VkApplicationInfo::apiVersion (VK_API_VERSION_1_2 or _1_3).
+  std::uint32_t api_version = VK_API_VERSION_1_3;
+  // Exactly what the device was created with: ppEnabledExtensionNames, and the pNext
+  // chain of VkDeviceCreateInfo (VkPhysicalDeviceFeatures2 and the Vulkan 1.1/1.2/1.3
+  // feature blocks, or the KHR structs on a 1.2 device; pEnabledFeatures is not read).
+  std::vector<std::string> enabled_extensions;
+  const void* enabled_features = nullptr;
+  // VK_EXT_debug_utils is enabled on the instance: objects get names, passes labels.
+  bool debug_utils = false;
+  // The host's instance runs the validation layer: Antumbra counts its messages too
+  // (a messenger of its own, when debug_utils), and checks its barrier plan.
+  bool validation = false;
+};
+
 // Vulkan 1.3, or 1.2 with these extensions: a 1.2 device needs them (with their
 // dynamicRendering, synchronization2 features) for what 1.3 has in core.
 inline constexpr const char* kVulkan13Extensions[] = {VK_KHR_DYNAMIC_RENDERING_EXTENSION_NAME,
@@ -104,6 +131,9 @@ class Context {
   // Throws NoVulkanDeviceError (no driver/device), DeviceSelectionError (no device
   // matches), ValidationLayerMissingError or VulkanError.
   explicit Context(const ContextOptions& options);
+  // Borrows a host's device. Throws HostDeviceError naming every missing extension and
+  // feature, std::invalid_argument for a null handle.
+  explicit Context(const HostDevice& host);
   Context(const Context&) = delete;
   Context& operator=(const Context&) = delete;
   ~Context();  // waits for the device, destroys everything still queued
@@ -125,6 +155,8 @@ class Context {
   [[nodiscard]] const ExtensionFunctions& ext() const { return ext_; }
   [[nodiscard]] Allocator& allocator() { return *allocator_; }
   [[nodiscard]] bool validation_enabled() const { return validation_; }
+  // The device is a host's (HostDevice): never destroyed here.
+  [[nodiscard]] bool borrowed() const { return borrowed_; }
   // Every physical device, in enumeration order (also listed in selection errors).
   [[nodiscard]] const std::vector<DeviceInfo>& devices() const { return devices_; }
 
@@ -156,6 +188,10 @@ class Context {
   [[nodiscard]] std::uint64_t completed_value() const;
   std::uint64_t submit(VkCommandBuffer cmd, const SubmitExtras& extras = {});
   void wait_for(std::uint64_t timeline_value) const;
+  // A submission the host makes (docs/integration.md, "The frame"): reserves the next
+  // timeline value, which the host's submit of the recorded work must signal on
+  // timeline() before Antumbra submits or reserves again.
+  std::uint64_t reserve_host_submission();
   // Records, submits and waits: for init-time uploads and tests, not per frame.
   void submit_immediate(const std::function<void(VkCommandBuffer)>& record);
 
@@ -182,11 +218,17 @@ class Context {
   void create_instance(const ContextOptions& options);
   void select_physical_device(const ContextOptions& options);
   void create_device(const ContextOptions& options);
+  void adopt_host_device(const HostDevice& host);
+  void create_messenger();
+  void bind_device_functions();
+  void create_own_objects();  // allocator, timeline, immediate pool
+  void destroy_own_objects();
   void find_capture_tool();
   void destroy_now(const PendingDestroy& object);
 
   bool validation_ = false;
   bool debug_utils_ = false;
+  bool borrowed_ = false;
   std::uint32_t max_api_version_ = VK_API_VERSION_1_3;  // the instance's apiVersion
   std::uint32_t api_version_ = 0;
   bool commands_bound_ = false;  // vk_commands.hpp bound for this device

@@ -51,6 +51,12 @@ class DeviceSelectionError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// A host's device (HostDevice) lacks an extension or feature Antumbra needs; the message
+// names each one.
+class HostDeviceError : public std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
 // Throws VulkanError unless result is VK_SUCCESS (or another non-negative status code
 // the caller chose to accept by not calling check on it).
 inline void check(VkResult result, const char* what,
