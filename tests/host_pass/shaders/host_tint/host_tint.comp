@@ -1,8 +1,8 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 // The test host's pass "host-tint": a copy of the source image multiplied by a colour, as
-// much as the strength says. This folder is a host's shader folder (SessionOptions::
-// shader_dirs), outside passes/; the built-in headers come through the include path.
+// much as the strength says. This folder is a host's shader folder, outside passes/
+// (SessionOptions::shader_dirs); the built-in headers come through the include path.
 #include "host_tint_interface.h"
 #include "interface/shared/workgroups.h"
 
