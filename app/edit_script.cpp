@@ -22,7 +22,6 @@
 #include "antumbra/gpu/timing.hpp"
 #include "antumbra/runtime/render_session.hpp"
 #include "commands.hpp"
-#include "register_builtin_passes.hpp"
 
 namespace antumbra::app {
 namespace {
@@ -582,25 +581,26 @@ int run_edit(const EditOptions& options) {
       return code;
     }
   }
-  const fgvk::PassRegistry registry = passes::builtin_pass_registry();
-  auto lookup = editor::lookup_in(registry.reflection());
+  runtime::SessionOptions session_options;
+  session_options.device = options.device;
+  session_options.validation = options.validation;
+  session_options.viewport = {width, height};
+  // The session's pass types, for the documents read before the device starts.
+  const fgvk::PassRegistry registry = runtime::pass_registry(session_options);
   auto scene = editor::SceneDocument::open(scene_path);
-  auto graph = editor::GraphDocument::load(graph_path, lookup);
+  auto graph = editor::GraphDocument::load(graph_path, editor::lookup_in(registry.reflection()));
   print(scene.diagnostics());
   print(graph.diagnostics());
   if (!scene.ok()) return runtime::exit_code_for(scene.diagnostics());
   if (!graph.ok()) return runtime::exit_code_for(graph.diagnostics());
 
-  runtime::SessionOptions session_options;
-  session_options.device = options.device;
-  session_options.validation = options.validation;
-  session_options.viewport = {width, height};
   runtime::RenderSession session(paths, session_options);
   std::printf("device: %s%s\n", session.gpu().device_name().c_str(),
               options.validation ? " (validation + synchronization validation on)" : "");
 
   editor_app::SessionRenderer renderer(session);
-  editor::EditSession edit(renderer, std::move(scene.value()), std::move(graph.value()), lookup);
+  editor::EditSession edit(renderer, std::move(scene.value()), std::move(graph.value()),
+                           editor::lookup_in(session.pass_registry().reflection()));
   ScriptRun run(
       session, edit,
       options.script.empty() ? fs::current_path() : fs::absolute(options.script).parent_path());

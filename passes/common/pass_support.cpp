@@ -7,15 +7,45 @@
 #include <filesystem>
 
 #include "antumbra/base/diagnostic_codes.hpp"
+#include "antumbra/base/text.hpp"
 #include "antumbra/gpu/context.hpp"
 
 namespace antumbra::passes {
+namespace {
+
+// The first of the shader folders that holds `relative` (docs/adding-a-pass.md, "A pass type
+// from outside the tree"). None: an SH000 diagnostic at the pass's type in the graph (the
+// session locates it in the file) naming the shader and every folder searched.
+std::filesystem::path find_shader(const fgvk::PrepareContext& context, std::string_view relative) {
+  std::string searched;
+  for (const auto& dir : context.shader_dirs) {
+    std::filesystem::path path = dir / relative;
+    std::error_code error;
+    if (std::filesystem::is_regular_file(path, error)) return path;
+    if (!searched.empty()) searched += ", ";
+    searched += base::quote_name(dir.string());
+  }
+  const std::string message =
+      "pass " + base::quote_name(context.pass.name) + " (type " +
+      base::quote_name(context.pass.type) + "): shader " + base::quote_name(relative) +
+      " is in none of the shader folders searched: " + (searched.empty() ? "none given" : searched);
+  base::Diagnostics diagnostics;
+  diagnostics.add({.code = codes::shader::kUnreadable,
+                   .severity = base::Severity::error,
+                   .message = message,
+                   .pointer = context.pass.source_index >= 0
+                                  ? "/passes/" + std::to_string(context.pass.source_index) + "/type"
+                                  : ""});
+  throw fgvk::PassError("shader " + std::string(relative) + " not found", diagnostics);
+}
+
+}  // namespace
 
 Shader load_shader(fgvk::PrepareContext& context, std::string_view relative,
                    std::vector<std::string>& dependencies,
                    const std::vector<gpu::ShaderDefine>& defines, gpu::Fnv1a64* code) {
   gpu::ShaderRequest request;
-  request.path = std::filesystem::path(context.shader_root) / relative;
+  request.path = find_shader(context, relative);
   request.defines = defines;
   auto result = context.shaders.compile(request);
   if (!result.ok()) {

@@ -24,14 +24,16 @@ namespace antumbra::passes {
 struct Shader {
   gpu::ShaderModule module;
   gpu::SpirvInterface interface;
-  std::string file;                                   // passes/<relative>, for messages
+  std::string file;  // <folder>/<relative>, the file compiled, for messages
   operator VkShaderModule() const { return module; }  // NOLINT(google-explicit-constructor)
 };
 
-// Compiles passes/<relative> (GLSL) and makes a shader module named after it. Adds
-// the file and its includes to `dependencies`. Throws fgvk::PassError with the
-// compiler's file:line diagnostics on failure. `code`, when given, is fed the SPIR-V
-// (passes that keep caches across reloads tell by it whether they draw the same way).
+// Compiles <folder>/<relative> (GLSL) from the first of the context's shader folders that
+// holds it (passes/, then a host's), and makes a shader module named after it. Adds the
+// file and its includes to `dependencies`. Throws fgvk::PassError with the compiler's
+// file:line diagnostics on failure, and with SH000 naming every folder searched when none
+// holds the file. `code`, when given, is fed the SPIR-V (passes that keep caches across
+// reloads tell by it whether they draw the same way).
 Shader load_shader(fgvk::PrepareContext& context, std::string_view relative,
                    std::vector<std::string>& dependencies,
                    const std::vector<gpu::ShaderDefine>& defines = {},

@@ -53,21 +53,31 @@ class RenderSession::Observer final : public fgvk::PassObserver {
   std::uint64_t last_completed_ = 0;
 };
 
+fgvk::PassRegistry pass_registry(const SessionOptions& options) {
+  fgvk::PassRegistry registry = passes::builtin_pass_registry();
+  if (options.register_passes) options.register_passes(registry);
+  return registry;
+}
+
 RenderSession::RenderSession(const DataPaths& paths, const SessionOptions& options)
     : paths_(paths), options_(options) {
+  // First: a host's pass type that cannot be registered fails before the device starts.
+  registry_ = std::make_unique<fgvk::PassRegistry>(runtime::pass_registry(options));
   gpu::ContextOptions context_options;
   context_options.validation = options.validation;
   context_options.device = options.device;
   context_options.instance_extensions = options.instance_extensions;
   context_options.headless = !options.present;
   gpu_ = std::make_unique<gpu::Context>(context_options);
+  // The built-in passes/ folder, then the host's: for shader files and for #include.
+  std::vector<std::filesystem::path> shader_dirs{paths_.shaders()};
+  shader_dirs.insert(shader_dirs.end(), options.shader_dirs.begin(), options.shader_dirs.end());
   gpu::ShaderCompilerOptions shader_options;
-  shader_options.include_dirs = {paths_.shaders()};
+  shader_options.include_dirs = shader_dirs;
   shaders_ = std::make_unique<gpu::ShaderCompiler>(shader_options);
   pipeline_cache_ = std::make_unique<gpu::PipelineCache>(*gpu_);
-  registry_ = std::make_unique<fgvk::PassRegistry>(passes::builtin_pass_registry());
-  executor_ = std::make_unique<fgvk::Executor>(
-      *gpu_, *shaders_, *registry_, paths_.shaders().string(), pipeline_cache_->handle());
+  executor_ = std::make_unique<fgvk::Executor>(*gpu_, *shaders_, *registry_, std::move(shader_dirs),
+                                               pipeline_cache_->handle());
   frames_ = std::make_unique<gpu::FrameLoop>(*gpu_);
   timer_ = std::make_unique<gpu::GpuTimer>(*gpu_, frames_->frames_in_flight());
   observer_ = std::make_unique<Observer>(*timer_);
@@ -125,7 +135,12 @@ base::Diagnostics RenderSession::load_graph(const fg::GraphDesc& graph) {
     executor_->load(std::move(plan->value()));
     live_document_ = graph.document;
   } catch (const fgvk::PassError& e) {
-    diagnostics.append(e.diagnostics());
+    // A diagnostic about the graph rather than a shader's text (a shader in none of the
+    // shader folders) comes with a pointer alone: located here, in the graph's file.
+    for (const auto& d : e.diagnostics()) {
+      const bool in_graph = d.file.empty() && d.line == 0 && !d.pointer.empty();
+      diagnostics.add(in_graph ? graph.document.make(d.code, d.severity, d.message, d.pointer) : d);
+    }
   } catch (const std::runtime_error& e) {
     // The device cannot realise this plan (memory types, out of memory, a pass type with
     // no runtime): the previous plan stays live and the reason is reported with what the

@@ -6,6 +6,7 @@
 #include <limits>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 #include <stb_image.h>
 
@@ -250,8 +251,13 @@ void RenderTest::TearDown() {
 runtime::RenderSession* RenderTest::open_session(VkExtent2D viewport,
                                                  const runtime::DataPaths& paths) {
   runtime::SessionOptions options;
-  options.validation = true;  // ContextOptions::sync_validation defaults to on
   options.viewport = viewport;
+  return open_session(std::move(options), paths);
+}
+
+runtime::RenderSession* RenderTest::open_session(runtime::SessionOptions options,
+                                                 const runtime::DataPaths& paths) {
+  options.validation = true;  // ContextOptions::sync_validation defaults to on
   try {
     sessions_.push_back(std::make_unique<runtime::RenderSession>(paths, options));
   } catch (const gpu::NoVulkanDeviceError& error) {

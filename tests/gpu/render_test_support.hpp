@@ -108,6 +108,10 @@ class RenderTest : public ::testing::Test {
   // nullptr (and skip_reason_ set) when no Vulkan device exists: use OPEN_SESSION.
   runtime::RenderSession* open_session(VkExtent2D viewport = kSmall,
                                        const runtime::DataPaths& paths = source_paths());
+  // The same with the caller's options (a host's pass types and shader folders); validation
+  // is turned on whatever `options` say.
+  runtime::RenderSession* open_session(runtime::SessionOptions options,
+                                       const runtime::DataPaths& paths = source_paths());
   // Non-fatal check with every kept message in the failure text.
   static void expect_no_validation_errors(runtime::RenderSession& session);
   // Loads the graph and expects no error diagnostics.

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -45,8 +46,8 @@ class ExecutorTest : public render_testing::RenderTest {
     shaders_ = std::make_unique<gpu::ShaderCompiler>(gpu::ShaderCompilerOptions{{shader_root}});
     registry_ = std::make_unique<fgvk::PassRegistry>(passes::builtin_pass_registry());
     for (const auto& [desc, factory] : extra) registry_->add(desc, factory);
-    executor_ =
-        std::make_unique<fgvk::Executor>(*gpu_, *shaders_, *registry_, shader_root.string());
+    executor_ = std::make_unique<fgvk::Executor>(*gpu_, *shaders_, *registry_,
+                                                 std::vector<std::filesystem::path>{shader_root});
     frames_ = std::make_unique<gpu::FrameLoop>(*gpu_);
     scene_ = std::move(scene);
     gpu_scene_ = std::make_unique<passes::GpuScene>(*gpu_, scene_, frames_->frames_in_flight());

@@ -63,7 +63,7 @@ class AtlasGpuTest : public gpu::testing::GpuTest {
     shaders_ = std::make_unique<gpu::ShaderCompiler>(options);
     registry_ = std::make_unique<fgvk::PassRegistry>(passes::builtin_pass_registry());
     executor_ = std::make_unique<fgvk::Executor>(ctx(), *shaders_, *registry_,
-                                                 (source_dir() / "passes").string());
+                                                 std::vector<fs::path>{source_dir() / "passes"});
     frames_ = std::make_unique<gpu::FrameLoop>(ctx());
     scene_ = atrium();
   }

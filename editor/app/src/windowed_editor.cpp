@@ -22,7 +22,6 @@
 #include "layout_view.hpp"
 #include "panels.hpp"
 #include "presenter.hpp"
-#include "register_builtin_passes.hpp"
 #include "viewport_view.hpp"
 #include "window.hpp"
 
@@ -200,14 +199,14 @@ bool open_window(const WindowedOptions& options, std::optional<Window>& window) 
   return true;
 }
 
-runtime::SessionOptions session_options_for(const WindowedOptions& options, const Window& window,
-                                            VkExtent2D viewport) {
+// The session's options but the window's (its surface extensions, the viewport).
+runtime::SessionOptions session_options_for(const WindowedOptions& options) {
   runtime::SessionOptions session_options;
   session_options.device = options.device;
   session_options.validation = options.validation;
-  session_options.viewport = viewport;
-  session_options.instance_extensions = window.required_instance_extensions();
   session_options.present = true;
+  session_options.shader_dirs = options.shader_dirs;
+  session_options.register_passes = options.register_passes;
   return session_options;
 }
 
@@ -413,7 +412,10 @@ void print_summary(runtime::RenderSession& session, const Presenter& presenter,
 }  // namespace
 
 int run_windowed_editor(const WindowedOptions& options) {
-  const fgvk::PassRegistry registry = passes::builtin_pass_registry();
+  runtime::SessionOptions session_options = session_options_for(options);
+  // The pass types the session runs (built-in and the host's): the documents, read before
+  // the device starts, take their parameters' reflection from the same registration.
+  const fgvk::PassRegistry registry = runtime::pass_registry(session_options);
   auto documents = load_documents(options, registry);
   if (!documents) return runtime::kExitDiagnostics;
   const fs::path scene_file = documents->scene.file();
@@ -422,9 +424,9 @@ int run_windowed_editor(const WindowedOptions& options) {
   std::optional<Window> window;
   if (!open_window(options, window)) return runtime::kExitRuntime;
   LayoutView layout({options.layout_file, options.ui_scale}, *window);
-  runtime::RenderSession session(
-      runtime::find_data_paths(),
-      session_options_for(options, *window, layout.initial_viewport(*window)));
+  session_options.instance_extensions = window->required_instance_extensions();
+  session_options.viewport = layout.initial_viewport(*window);
+  runtime::RenderSession session(runtime::find_data_paths(), session_options);
   std::printf("device: %s%s\n", session.gpu().device_name().c_str(),
               options.validation ? " (validation + synchronization validation on)" : "");
 
@@ -435,7 +437,7 @@ int run_windowed_editor(const WindowedOptions& options) {
   layout.restore_imgui_state();
   SessionRenderer renderer(session);
   EditorState state(renderer, std::move(documents->scene), std::move(documents->graph),
-                    editor::lookup_in(registry.reflection()));
+                    editor::lookup_in(session.pass_registry().reflection()));
   const bool started = state.start(documents->images.get());
   print(state.diagnostics());
   if (!started) return runtime::kExitDiagnostics;

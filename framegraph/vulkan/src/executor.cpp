@@ -108,11 +108,11 @@ struct Executor::State {
 };
 
 Executor::Executor(gpu::Context& gpu, gpu::ShaderCompiler& shaders, const PassRegistry& registry,
-                   std::string shader_root, VkPipelineCache pipeline_cache)
+                   std::vector<std::filesystem::path> shader_dirs, VkPipelineCache pipeline_cache)
     : gpu_(gpu),
       shaders_(shaders),
       registry_(registry),
-      shader_root_(std::move(shader_root)),
+      shader_dirs_(std::move(shader_dirs)),
       pipeline_cache_(pipeline_cache),
       check_sources_(kDebugBuild || gpu.validation_enabled()),
       owned_samplers_(std::make_unique<OwnedSamplers>()) {
@@ -241,7 +241,7 @@ void Executor::create_passes(State& state) const {
 void Executor::prepare_passes(State& state) {
   for (std::size_t i = 0; i < state.passes.size(); ++i) {
     PrepareContext context{gpu_,         shaders_,       state.plan.passes[i], state.bindings[i],
-                           shader_root_, pipeline_cache_};
+                           shader_dirs_, pipeline_cache_};
     state.passes[i]->prepare(context);
   }
 }

@@ -4,13 +4,26 @@
 
 namespace antumbra::fgvk {
 
+DuplicatePassType::DuplicatePassType(const std::string& type, bool builtin)
+    : std::invalid_argument(
+          "pass type '" + type + "' is " +
+          (builtin ? "a built-in pass type" : "already registered") +
+          "; a host's pass type needs a name of its own (docs/adding-a-pass.md, \"A pass type "
+          "from outside the tree\")"),
+      type_(type) {
+}
+
 void PassRegistry::add(fg::PassDesc desc, PassFactory make) {
+  if (reflection_.find(desc.type) != nullptr)
+    throw DuplicatePassType(desc.type, builtin(desc.type));
   if (make == nullptr) throw std::logic_error("pass type " + desc.type + " has no factory");
-  if (reflection_.find(desc.type) != nullptr) {
-    throw std::logic_error("pass type " + desc.type + " registered twice");
-  }
-  factories_.emplace(desc.type, make);
-  reflection_.add(std::move(desc));
+  const std::string type = desc.type;
+  reflection_.add(std::move(desc));  // may refuse the description: then nothing is added
+  factories_.emplace(type, make);
+}
+
+void PassRegistry::mark_builtin() {
+  for (const auto& [type, make] : factories_) builtin_.insert(type);
 }
 
 PassFactory PassRegistry::factory(std::string_view type) const {

@@ -4,6 +4,7 @@
 // Shared by every command that renders (render, bench, quality, techniques) and the
 // editor, windowed or headless.
 
+#include <filesystem>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -36,7 +37,19 @@ struct SessionOptions {
   // Under a graphics debugger (RenderDoc), capture the last frame of every render() call:
   // frames rendered headless have no present at which the debugger would capture.
   bool capture_last_frame = false;
+  // A host's own pass types (docs/adding-a-pass.md, "A pass type from outside the tree"):
+  // the folders of their GLSL, searched after the built-in passes/ folder and in this order,
+  // for a pass's shader files and for #include; and the call that registers them, after the
+  // built-in types. A type named like one already registered throws
+  // fgvk::DuplicatePassType, out of the session's constructor.
+  std::vector<std::filesystem::path> shader_dirs;
+  std::function<void(fgvk::PassRegistry&)> register_passes;
 };
+
+// The pass types a session with `options` runs: the built-in ones, then the host's
+// (options.register_passes). Needs no device: its reflection() is what the schema, the
+// pass reference, validate (fg::compile_graph) and the editor's parameter panels read.
+[[nodiscard]] fgvk::PassRegistry pass_registry(const SessionOptions& options);
 
 struct PassTiming {
   std::string name;
@@ -90,6 +103,8 @@ class RenderSession {
   // Writes a graph image to PNG (or PFM when the path ends in .pfm).
   void write_image(const std::string& resource, const std::string& path);
 
+  // The pass types this session runs (pass_registry(options)).
+  [[nodiscard]] const fgvk::PassRegistry& pass_registry() const { return *registry_; }
   [[nodiscard]] gpu::Context& gpu() { return *gpu_; }
   [[nodiscard]] const fgvk::Executor& executor() const { return *executor_; }
   // Tests load hand-edited plans through it (tests/gpu/executor_sources_test.cpp).

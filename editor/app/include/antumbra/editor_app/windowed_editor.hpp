@@ -2,7 +2,14 @@
 // `antumbra edit` with a window: GLFW + Vulkan swapchain + Dear ImGui over the running
 // frame graph (Lights, Layers and Frame graph panels over the editor model).
 
+#include <filesystem>
+#include <functional>
 #include <string>
+#include <vector>
+
+namespace antumbra::fgvk {
+class PassRegistry;
+}
 
 namespace antumbra::editor_app {
 
@@ -20,6 +27,11 @@ struct WindowedOptions {
   std::string layout_file;    // empty: the per-user editor.ini (ANTUMBRA_CONFIG_DIR, XDG, ~)
   float ui_scale = 0.0f;      // > 0: instead of the window's DPI scale
   std::string layout_report;  // JSON of the window's layout as last drawn, written on exit
+  // A host's pass types, as runtime::SessionOptions takes them (docs/adding-a-pass.md, "A
+  // pass type from outside the tree"): the session runs them and the Frame graph panel
+  // edits their parameters like a built-in pass's.
+  std::vector<std::filesystem::path> shader_dirs;
+  std::function<void(fgvk::PassRegistry&)> register_passes;
 };
 
 // Exit codes as the rest of the command line: 0 ok, 1 diagnostics (bad files, or

@@ -4,6 +4,7 @@
 // the planned barriers as synchronization2 barriers around every pass, with a
 // debug label and a timestamp scope per pass.
 
+#include <filesystem>
 #include <functional>
 #include <memory>
 #include <string>
@@ -32,8 +33,11 @@ class PassObserver {
 
 class Executor {
  public:
+  // `shader_dirs`: the folders a pass's shader files are searched in, in order (the built-in
+  // passes/ folder first, then a host's; PrepareContext::shader_dirs).
   Executor(gpu::Context& gpu, gpu::ShaderCompiler& shaders, const PassRegistry& registry,
-           std::string shader_root, VkPipelineCache pipeline_cache = VK_NULL_HANDLE);
+           std::vector<std::filesystem::path> shader_dirs,
+           VkPipelineCache pipeline_cache = VK_NULL_HANDLE);
   Executor(const Executor&) = delete;
   Executor& operator=(const Executor&) = delete;
   ~Executor();
@@ -97,7 +101,7 @@ class Executor {
   gpu::Context& gpu_;
   gpu::ShaderCompiler& shaders_;
   const PassRegistry& registry_;
-  std::string shader_root_;
+  std::vector<std::filesystem::path> shader_dirs_;
   VkPipelineCache pipeline_cache_;
   bool check_sources_ = false;
   std::unique_ptr<State> state_;

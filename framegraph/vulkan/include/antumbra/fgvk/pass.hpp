@@ -5,6 +5,7 @@
 // resources), opened a debug label and started a timestamp scope.
 
 #include <cstdint>
+#include <filesystem>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -92,7 +93,9 @@ struct PrepareContext {
   gpu::ShaderCompiler& shaders;
   const fg::PlanPass& pass;
   const PassBindings& bindings;
-  const std::string& shader_root;  // folder that holds passes/<name>/*.vert|frag|comp
+  // The folders a shader's relative name (tonemap/tonemap.frag) is searched in, in order:
+  // the built-in passes/ folder, then a host's (docs/adding-a-pass.md).
+  const std::vector<std::filesystem::path>& shader_dirs;
   VkPipelineCache pipeline_cache = VK_NULL_HANDLE;
 };
 
