@@ -60,15 +60,27 @@ run() {
   "$@" >>"$log" 2>&1 || fail "$name exited with $?"
 }
 
+# The path as an ERE. A path of one component ("/src") would also match inside
+# "engine/core/src/x.cpp", so it must stand alone there: after no letter or slash.
+path_pattern() {
+  local escaped
+  # shellcheck disable=SC2016 # sed, not the shell, reads the $
+  escaped=$(printf '%s' "$1" | sed 's/[][\.*^$()+?{}|]/\\&/g')
+  case "$1" in
+    /*/*) printf '%s' "$escaped" ;;
+    *) printf '(^|[^[:alnum:]._/-])%s(/|$|[^[:alnum:]._-])' "$escaped" ;;
+  esac
+}
+
 check_no_build_paths() {
-  local path real
+  local path p pattern hits f
   for path in "$source_root" "$build"; do
-    real=$(realpath "$path")
-    for p in "$path" "$real"; do
-      hits=$(grep -rIlF "$p" "$tmp/P")
+    for p in "$path" "$(realpath "$path")"; do
+      pattern=$(path_pattern "$p")
+      hits=$(grep -rIlE "$pattern" "$tmp/P")
       [ -z "$hits" ] || fail "installed files name $p: $hits"
       for f in "$tmp"/P/lib/*.a "$tmp/P/bin/antumbra"; do
-        strings "$f" | grep -qF "$p" && fail "$f holds the path $p"
+        if strings "$f" | grep -qE "$pattern"; then fail "$f holds the path $p"; fi
       done
     done
   done
