@@ -1,7 +1,10 @@
 #pragma once
 // Where the program finds data/ and the pass shaders: ANTUMBRA_ROOT, else the first
 // folder holding both data/ and passes/ going up from the working directory, then
-// from the executable, then the source tree it was built from.
+// <executable's folder>/../share/antumbra (an installed program), then going up from the
+// executable, then the source tree named by the build folder the executable lies in.
+// Nothing is compiled in, so an installed prefix can move (docs/integration.md). A host
+// program elsewhere passes DataPaths{Antumbra_DATA_DIR} (the package's config) itself.
 
 #include <filesystem>
 #include <stdexcept>
