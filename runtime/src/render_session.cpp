@@ -63,22 +63,30 @@ RenderSession::RenderSession(const DataPaths& paths, const SessionOptions& optio
     : paths_(paths), options_(options) {
   // First: a host's pass type that cannot be registered fails before the device starts.
   registry_ = std::make_unique<fgvk::PassRegistry>(runtime::pass_registry(options));
-  gpu::ContextOptions context_options;
-  context_options.validation = options.validation;
-  context_options.device = options.device;
-  context_options.instance_extensions = options.instance_extensions;
-  context_options.headless = !options.present;
-  gpu_ = std::make_unique<gpu::Context>(context_options);
+  if (options.host_device) {
+    gpu_ = std::make_unique<gpu::Context>(*options.host_device);
+  } else {
+    gpu::ContextOptions context_options;
+    context_options.validation = options.validation;
+    context_options.device = options.device;
+    context_options.instance_extensions = options.instance_extensions;
+    context_options.headless = !options.present;
+    gpu_ = std::make_unique<gpu::Context>(context_options);
+  }
   // The built-in passes/ folder, then the host's: for shader files and for #include.
   std::vector<std::filesystem::path> shader_dirs{paths_.shaders()};
   shader_dirs.insert(shader_dirs.end(), options.shader_dirs.begin(), options.shader_dirs.end());
   gpu::ShaderCompilerOptions shader_options;
   shader_options.include_dirs = shader_dirs;
   shaders_ = std::make_unique<gpu::ShaderCompiler>(shader_options);
-  pipeline_cache_ = std::make_unique<gpu::PipelineCache>(*gpu_);
+  VkPipelineCache cache = options.pipeline_cache;
+  if (cache == VK_NULL_HANDLE) {
+    pipeline_cache_ = std::make_unique<gpu::PipelineCache>(*gpu_);
+    cache = pipeline_cache_->handle();
+  }
   executor_ = std::make_unique<fgvk::Executor>(*gpu_, *shaders_, *registry_, std::move(shader_dirs),
-                                               pipeline_cache_->handle());
-  frames_ = std::make_unique<gpu::FrameLoop>(*gpu_);
+                                               cache);
+  frames_ = std::make_unique<gpu::FrameLoop>(*gpu_, options.frames_in_flight);
   timer_ = std::make_unique<gpu::GpuTimer>(*gpu_, frames_->frames_in_flight());
   observer_ = std::make_unique<Observer>(*timer_);
 }
@@ -131,6 +139,9 @@ base::Diagnostics RenderSession::load_graph(const fg::GraphDesc& graph) {
                                       fg::format_bytes(available) + " in all"));
     return diagnostics;
   }
+  // The host's images already bound must fit the new graph's imports.
+  diagnostics.append(check_bound_imports(plan->value(), graph.document));
+  if (diagnostics.has_errors()) return diagnostics;
   try {
     executor_->load(std::move(plan->value()));
     live_document_ = graph.document;
@@ -195,16 +206,7 @@ void RenderSession::render(int frames, TraceWriter* trace, const BeforeFrame& be
     if (before_frame) before_frame(i);
     VkCommandBuffer cmd = frames_->begin_frame();
     try {
-      gpu_->collect_garbage();
-      observer_->gather_gpu();
-      timer_->begin_frame(cmd, frames_->slot());
-      // Dynamic objects with a motion are where the frame index puts them.
-      if (!scene_->dynamic_objects.empty()) {
-        scene::animate_objects(*scene_, frames_->frame_number());
-      }
-      const auto frame = gpu_scene_->update(cmd, frames_->slot(), *scene_, options_.viewport,
-                                            frames_->frame_number());
-      executor_->record(cmd, frame, observer_.get(), &report_);
+      record_frame(cmd);
     } catch (...) {
       // A pass that fails midway (out of device memory) leaves the session usable: the
       // next frame begins afresh.
@@ -239,6 +241,18 @@ void RenderSession::render(int frames, TraceWriter* trace, const BeforeFrame& be
       t += timing.gpu_ms;
     }
   }
+}
+
+// One frame into `cmd`, own or the host's: the scene's per-frame data, then the plan.
+void RenderSession::record_frame(VkCommandBuffer cmd) {
+  gpu_->collect_garbage();
+  observer_->gather_gpu();
+  timer_->begin_frame(cmd, frames_->slot());
+  // Dynamic objects with a motion are where the frame index puts them.
+  if (!scene_->dynamic_objects.empty()) scene::animate_objects(*scene_, frames_->frame_number());
+  const auto frame = gpu_scene_->update(cmd, frames_->slot(), *scene_, options_.viewport,
+                                        frames_->frame_number());
+  executor_->record(cmd, frame, observer_.get(), &report_);
 }
 
 void RenderSession::reset_timings() {

@@ -40,6 +40,25 @@ void FrameLoop::wait_all() const {
   if (newest > 0) context_.wait_for(newest);
 }
 
+void FrameLoop::begin_host_frame() {
+  if (recording_) throw std::logic_error("FrameLoop::begin_host_frame: previous frame not ended");
+  slot_ = (slot_ + 1) % frames_in_flight();
+  const Slot& slot = slots_[slot_];
+  if (slot.timeline_value > 0) context_.wait_for(slot.timeline_value);
+  context_.collect_garbage();
+  recording_ = true;
+  host_frame_ = true;
+}
+
+std::uint64_t FrameLoop::end_host_frame() {
+  if (!recording_ || !host_frame_) throw std::logic_error("FrameLoop::end_host_frame: none begun");
+  recording_ = false;
+  host_frame_ = false;
+  slots_[slot_].timeline_value = context_.reserve_host_submission();
+  ++frame_number_;
+  return slots_[slot_].timeline_value;
+}
+
 VkCommandBuffer FrameLoop::begin_frame() {
   if (recording_) throw std::logic_error("FrameLoop::begin_frame: previous frame not ended");
   slot_ = (slot_ + 1) % frames_in_flight();
@@ -55,7 +74,7 @@ VkCommandBuffer FrameLoop::begin_frame() {
 }
 
 std::uint64_t FrameLoop::end_frame(const SubmitExtras& extras) {
-  if (!recording_) throw std::logic_error("FrameLoop::end_frame: no frame begun");
+  if (!recording_ || host_frame_) throw std::logic_error("FrameLoop::end_frame: no frame begun");
   Slot& slot = slots_[slot_];
   recording_ = false;
   check(vkEndCommandBuffer(slot.cmd), "vkEndCommandBuffer");
@@ -67,6 +86,10 @@ std::uint64_t FrameLoop::end_frame(const SubmitExtras& extras) {
 void FrameLoop::abandon_frame() {
   if (!recording_) return;
   recording_ = false;
+  if (host_frame_) {
+    host_frame_ = false;  // the host's buffer is the host's to reset
+    return;
+  }
   // Ended so the pool reset finds it executable or invalid, never recording; the result
   // does not matter, as the buffer is never submitted.
   static_cast<void>(vkEndCommandBuffer(slots_[slot_].cmd));

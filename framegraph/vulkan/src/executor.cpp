@@ -11,6 +11,7 @@
 #include "antumbra/gpu/handle.hpp"
 #include "antumbra/gpu/resources.hpp"
 #include "antumbra/gpu/vk_commands.hpp"
+#include "executor_state.hpp"
 
 namespace antumbra::fgvk {
 
@@ -20,18 +21,6 @@ struct Executor::OwnedSamplers {
 };
 
 namespace {
-
-struct RealisedResource {
-  gpu::Image image;
-  gpu::Buffer buffer;
-  BoundImage bound_image;
-  BoundBuffer bound_buffer;
-  // The state the executor last left the resource in: the target of the last barrier it
-  // recorded. Checked against each planned source (fgvk::source_mismatch).
-  SyncState tracked;
-  bool depth = false;
-  VkDeviceSize image_bytes = 0;  // individually allocated image memory
-};
 
 gpu::ImageDesc image_desc(const fg::PlanResource& r) {
   gpu::ImageDesc desc;
@@ -73,13 +62,9 @@ constexpr bool kDebugBuild = false;
 constexpr bool kDebugBuild = true;
 #endif
 
-// The source a barrier records: the plan's, so that what `antumbra plan` shows and the
-// plan goldens pin is what runs, and a compiler bug in a source is a checked error
-// instead of a silent disagreement (docs/architecture.md section 4, "Barrier sources").
-// The executor still tracks each resource's state, for what the plan cannot know: a
-// last_frame source on a plan's first frame, when the previous frame was another plan's
-// (a kept resource, in the state that plan left it in) or none (a new resource,
-// undefined). Then the tracked state is the truth.
+}  // namespace
+
+// Declared, and why, in executor_state.hpp.
 SyncState recorded_source(const fg::PlanBarrier& barrier, const RealisedResource& resource,
                           bool first_frame) {
   if (!first_frame || barrier.source != fg::BarrierSource::last_frame) {
@@ -90,22 +75,7 @@ SyncState recorded_source(const fg::PlanBarrier& barrier, const RealisedResource
   return source;
 }
 
-}  // namespace
 
-struct Executor::State {
-  fg::Plan plan;
-  gpu::MemoryHeap heap;
-  std::vector<RealisedResource> resources;
-  std::vector<std::unique_ptr<Pass>> passes;
-  std::vector<PassBindings> bindings;
-  std::uint64_t bytes = 0;  // heap + individually allocated resources
-  std::size_t kept = 0;     // resources handed over from the previous plan
-  std::uint64_t frames_recorded = 0;
-  // Reused every frame, so recording allocates nothing once the first frame has.
-  std::vector<VkImageMemoryBarrier2> image_barriers;
-  std::vector<VkBufferMemoryBarrier2> buffer_barriers;
-  std::vector<SyncState> frame_start;  // each resource's tracked state as the frame began
-};
 
 Executor::Executor(gpu::Context& gpu, gpu::ShaderCompiler& shaders, const PassRegistry& registry,
                    std::vector<std::filesystem::path> shader_dirs, VkPipelineCache pipeline_cache)
@@ -151,6 +121,7 @@ void Executor::load(fg::Plan plan) {
   state->plan = std::move(plan);
   create_transient_heap(*state);
   const std::vector<int> kept = realise_resources(*state);
+  apply_imports(*state);
   create_passes(*state);
   prepare_passes(*state);
   // Everything is created: the load cannot fail any more.
@@ -199,6 +170,14 @@ std::vector<int> Executor::realise_resources(State& state) const {
     const auto& r = resources[i];
     auto& out = state.resources[i];
     if (r.first_use < 0 && !r.is_output) continue;  // declared but unused: nothing to realise
+    if (r.imported) {
+      // The host's image, bound by bind_import (apply_imports); nothing is created.
+      out.depth = fg::is_depth_format(r.format);
+      out.bound_image = {VK_NULL_HANDLE, VK_NULL_HANDLE,        VK_NULL_HANDLE,
+                         to_vk_format(r.format), r.format, {r.extent.width, r.extent.height},
+                         r.layers,       VK_IMAGE_LAYOUT_UNDEFINED};
+      continue;
+    }
     if (const int old = live_match(r); old >= 0) {
       const auto& live = state_->resources[static_cast<std::size_t>(old)];
       kept[i] = old;
@@ -296,6 +275,8 @@ void Executor::check_source(const fg::PlanBarrier& barrier, std::string_view bef
   if (!check_sources_) return;
   // The plan cannot know the state before a plan's first frame (recorded_source).
   if (state_->frames_recorded == 0 && barrier.source == fg::BarrierSource::last_frame) return;
+  // The host's state before the frame is the host's word (ImportedImage::before).
+  if (barrier.source == fg::BarrierSource::imported) return;
   const auto& rr = state_->resources[static_cast<std::size_t>(barrier.resource)];
   const std::string why = source_mismatch(barrier, rr.tracked, rr.depth);
   if (why.empty()) return;
@@ -316,8 +297,8 @@ void Executor::record_barriers(VkCommandBuffer cmd, const std::vector<fg::PlanBa
     check_source(b, before);
     auto& rr = state_->resources[static_cast<std::size_t>(b.resource)];
     const auto& r = state_->plan.resources[static_cast<std::size_t>(b.resource)];
-    const SyncState source = recorded_source(b, rr, state_->frames_recorded == 0);
-    const SyncState target = sync_state(b.to, b.to_stage, rr.depth);
+    const SyncState source = source_of(b);
+    const SyncState target = target_of(b);
     if (r.kind == fg::ResourceKind::buffer) {
       VkBufferMemoryBarrier2 bb{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER_2};
       bb.srcStageMask = source.stages;
@@ -366,6 +347,7 @@ void Executor::restore_frame_start() {
 void Executor::record(VkCommandBuffer cmd, const FrameResources& frame, PassObserver* observer,
                       FrameReport* report) {
   if (!state_) throw std::logic_error("Executor::record() before load()");
+  require_imports();
   FrameReport discarded;
   FrameReport& sink = report != nullptr ? *report : discarded;
   sink.clear();

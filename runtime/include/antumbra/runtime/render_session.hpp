@@ -44,6 +44,24 @@ struct SessionOptions {
   // fgvk::DuplicatePassType, out of the session's constructor.
   std::vector<std::filesystem::path> shader_dirs;
   std::function<void(fgvk::PassRegistry&)> register_passes;
+  // The host's device (docs/integration.md, "The host's device"): when set, the session
+  // borrows it instead of creating an instance and device (device, validation,
+  // instance_extensions and present are then unused), and throws gpu::HostDeviceError
+  // naming what the device lacks.
+  std::optional<gpu::HostDevice> host_device;
+  // Frames the host (or render()) records before waiting for the oldest to finish: the
+  // per-frame buffers and timestamp queries rotate over this many slots.
+  std::uint32_t frames_in_flight = gpu::FrameLoop::kDefaultFramesInFlight;
+  // The host's pipeline cache, used instead of the session's own when set.
+  VkPipelineCache pipeline_cache = VK_NULL_HANDLE;
+};
+
+// What the host's submission of a frame record() filled must signal (docs/integration.md,
+// "The frame"): `value` on the timeline semaphore `semaphore`, as a
+// VkSemaphoreSubmitInfo of its vkQueueSubmit2 (or a VkTimelineSemaphoreSubmitInfo).
+struct HostSubmission {
+  VkSemaphore semaphore = VK_NULL_HANDLE;
+  std::uint64_t value = 0;
 };
 
 // The pass types a session with `options` runs: the built-in ones, then the host's
@@ -100,6 +118,20 @@ class RenderSession {
   // print them like any other diagnostic and JSON reports carry one list.
   [[nodiscard]] base::Diagnostics frame_diagnostics() const;
 
+  // The host's frame (docs/integration.md, "The frame"): records the graph's passes into
+  // the host's command buffer, which is recording and which the host then submits, before
+  // its next call into the session, signalling the returned value. Waits while the frame
+  // `frames_in_flight` earlier is still running. Throws std::logic_error before a scene
+  // and a graph are loaded or while an imported resource has no image bound; after an
+  // exception the command buffer holds part of a frame and must not be submitted.
+  HostSubmission record(VkCommandBuffer cmd);
+  // Binds the host's image to a resource the graph declares "import": true, for every
+  // frame until bound again (rebind per frame for a swapchain image) and for graphs loaded
+  // later. A name the live graph does not import, or an image that does not fit the
+  // resource (format, extent, layers, usage), is FG101 located at the resource and binds
+  // nothing. Before any graph is loaded the image is kept and checked at load_graph.
+  base::Diagnostics bind_image(const std::string& resource, const fgvk::ImportedImage& image);
+
   // Writes a graph image to PNG (or PFM when the path ends in .pfm).
   void write_image(const std::string& resource, const std::string& path);
 
@@ -112,6 +144,10 @@ class RenderSession {
 
  private:
   class Observer;
+  void record_frame(VkCommandBuffer cmd);
+  // FG101 for each image bound to an import of `plan` that does not fit it.
+  [[nodiscard]] base::Diagnostics check_bound_imports(const fg::Plan& plan,
+                                                      const base::JsonDocument& document) const;
   DataPaths paths_;
   SessionOptions options_;
   std::unique_ptr<gpu::Context> gpu_;

@@ -28,6 +28,12 @@ class FrameLoop {
   // Ends recording and submits; extra semaphores (swapchain acquire/present) optional.
   // Returns the timeline value this frame signals.
   std::uint64_t end_frame(const SubmitExtras& extras = {});
+  // A frame recorded into a command buffer the host owns and submits (docs/integration.md,
+  // "The frame"): waits for the slot and collects garbage as begin_frame() does, but
+  // neither begins nor submits a command buffer. end_host_frame() reserves the timeline
+  // value the host's submission must signal on Context::timeline(), and returns it.
+  void begin_host_frame();
+  std::uint64_t end_host_frame();
   // Drops the frame being recorded without submitting it (recording threw midway): the
   // slot's pool is reset when it is next begun. No-op when no frame is open.
   void abandon_frame();
@@ -55,6 +61,7 @@ class FrameLoop {
   std::uint32_t slot_ = 0;
   std::uint64_t frame_number_ = 0;
   bool recording_ = false;
+  bool host_frame_ = false;  // the frame being recorded is in the host's command buffer
 };
 
 }  // namespace antumbra::gpu

@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -22,6 +23,32 @@ class Image;
 }
 
 namespace antumbra::fgvk {
+
+// The state a host's image is in before the frame, or is to be left in after it
+// (docs/integration.md, "The host's images"): raw synchronization2 values, since only the
+// host knows what its own passes and presentation do.
+struct HostImageState {
+  VkImageLayout layout = VK_IMAGE_LAYOUT_UNDEFINED;  // UNDEFINED before: contents dropped
+  VkPipelineStageFlags2 stages = VK_PIPELINE_STAGE_2_NONE;
+  VkAccessFlags2 access = VK_ACCESS_2_NONE;
+};
+
+// A host's image bound to a graph resource declared "import": true.
+struct ImportedImage {
+  VkImage image = VK_NULL_HANDLE;
+  VkImageView view = VK_NULL_HANDLE;        // all layers (2D, or 2D array when layers > 1)
+  VkImageView array_view = VK_NULL_HANDLE;  // 2D array view; null: `view`
+  VkFormat format = VK_FORMAT_UNDEFINED;    // must be the resource's format
+  VkExtent2D extent{};                      // must be the resource's extent
+  std::uint32_t layers = 1;
+  VkImageUsageFlags usage = 0;  // what the image was created with: must cover the graph's use
+  HostImageState before;        // where the host leaves it before the frame
+  HostImageState after;         // where the frame leaves it for the host
+};
+
+// Empty when `image` can stand for `resource`; else what differs (format, extent, layers,
+// missing usage bits, a null handle), in words, for a diagnostic at the resource.
+std::string import_mismatch(const fg::PlanResource& resource, const ImportedImage& image);
 
 // Hooks around each recorded pass (GPU timestamps, CPU timing); optional.
 class PassObserver {
@@ -69,6 +96,16 @@ class Executor {
   // (Pass::collect) into `report`.
   void collect(FrameReport& report);
 
+  // Binds the host's image to imported resource `resource`, for this plan and any loaded
+  // later that imports the same name; rebind each frame for a swapchain image. The
+  // caller checks it first (import_mismatch). record() throws std::logic_error while a
+  // used import is unbound.
+  void bind_import(const std::string& resource, const ImportedImage& image);
+  [[nodiscard]] const ImportedImage* bound_import(std::string_view resource) const;
+  // Throws std::logic_error naming the first imported resource the plan uses with no
+  // image bound (record() calls it before recording anything).
+  void require_imports() const;
+
   // The realised image of a resource, with its current layout; nullptr if none.
   [[nodiscard]] const BoundImage* image(std::string_view resource) const;
   // The realised image itself (for read-back); nullptr if none.
@@ -97,6 +134,10 @@ class Executor {
   void record_barriers(VkCommandBuffer cmd, const std::vector<fg::PlanBarrier>& barriers,
                        std::string_view before);
   void restore_frame_start();
+  void apply_imports(State& state) const;
+  // The source and target a barrier records (the host's states for imports).
+  [[nodiscard]] SyncState source_of(const fg::PlanBarrier& barrier) const;
+  [[nodiscard]] SyncState target_of(const fg::PlanBarrier& barrier) const;
 
   gpu::Context& gpu_;
   gpu::ShaderCompiler& shaders_;
@@ -105,6 +146,7 @@ class Executor {
   VkPipelineCache pipeline_cache_;
   bool check_sources_ = false;
   std::unique_ptr<State> state_;
+  std::map<std::string, ImportedImage, std::less<>> imports_;
   Samplers samplers_;
   struct OwnedSamplers;
   std::unique_ptr<OwnedSamplers> owned_samplers_;

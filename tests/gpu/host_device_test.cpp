@@ -1,0 +1,149 @@
+// Antumbra on a host's device, in the host's command buffer and image (docs/integration.md):
+// the frame equals the one Antumbra renders on its own device, and each misuse is a clear
+// error, located in the graph where it is about one of its resources.
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "antumbra/base/diagnostic_codes.hpp"
+#include "antumbra/gpu/vk_check.hpp"
+#include "device_requirement.hpp"
+#include "render_test_support.hpp"
+#include "test_host.hpp"
+
+namespace antumbra::render_testing {
+namespace {
+
+constexpr VkImageUsageFlags kOutputUsage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT |
+                                           VK_IMAGE_USAGE_STORAGE_BIT |
+                                           VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+
+// The default graph with its display image imported: the host's image, not Antumbra's.
+fg::GraphDesc graph_with_imported_output() {
+  fg::GraphDesc graph = load_graph_file(source_dir() / "data" / "graphs" / "layered-ssss.json");
+  graph.resources[static_cast<std::size_t>(graph.find_resource(graph.output))].imported = true;
+  return graph;
+}
+
+class HostDeviceTest : public RenderTest {
+ protected:
+  // nullptr (and the test skipped) without a Vulkan device.
+  std::unique_ptr<TestHost> make_host(const HostOptions& options = {}) {
+    try {
+      return std::make_unique<TestHost>(options);
+    } catch (const gpu::NoVulkanDeviceError& error) {
+      gpu::testing::report_missing_device(error.what());
+      skip_reason_ = error.what();
+      return nullptr;
+    }
+  }
+  static runtime::SessionOptions on(const TestHost& host) {
+    runtime::SessionOptions options;
+    options.host_device = host.device();
+    options.viewport = kSmall;
+    return options;
+  }
+  static std::vector<std::uint8_t> host_frame(TestHost& host, runtime::RenderSession& session,
+                                              const TestHost::Image& output) {
+    return host.frame(
+        [&](VkCommandBuffer cmd) {
+          const runtime::HostSubmission submission = session.record(cmd);
+          return std::pair{submission.semaphore, submission.value};
+        },
+        output);
+  }
+};
+
+#define MAKE_HOST(var, ...)          \
+  auto var = make_host(__VA_ARGS__); \
+  if (!(var)) GTEST_SKIP() << skip_reason_
+
+TEST_F(HostDeviceTest, RendersIntoTheHostsImageAsOnItsOwnDevice) {
+  MAKE_HOST(host);
+  const auto output = host->create_image(VK_FORMAT_R8G8B8A8_UNORM, kSmall, kOutputUsage);
+  Image8 hosted;
+  {
+    auto session = std::make_unique<runtime::RenderSession>(source_paths(), on(*host));
+    EXPECT_TRUE(session->gpu().borrowed());
+    // Bound before the graph exists: checked when it loads.
+    EXPECT_FALSE(session->bind_image("ldr", TestHost::as_import(output)).has_errors());
+    load_graph_ok(*session, graph_with_imported_output());
+    session->set_scene(default_scene());
+    host_frame(*host, *session, output);
+    hosted = {kSmall.width, kSmall.height, 4, host_frame(*host, *session, output)};
+    EXPECT_EQ(session->gpu().validation_error_count(), 0u) << validation_report(session->gpu());
+  }
+  EXPECT_EQ(host->validation_messages(), 0u) << host->last_message();
+
+  OPEN_SESSION(own, kSmall);
+  load_graph_ok(*own, load_graph_file(source_dir() / "data" / "graphs" / "layered-ssss.json"));
+  own->set_scene(default_scene());
+  own->render(2, nullptr);
+  const Image8 expected = to_image8(read_output(*own));
+  const DiffStats diff = diff_images(expected, hosted, 3);
+  const bool same = diff.fraction_within() >= 0.995 && diff.mean_abs < 0.5;
+  if (!same) write_failure_images(artifact_dir(), expected, hosted);
+  EXPECT_TRUE(same) << describe(diff);
+  EXPECT_FALSE(is_blank(read_output(*own)));
+}
+
+TEST_F(HostDeviceTest, NamesWhatTheHostsDeviceLacks) {
+  HostOptions lacking;
+  lacking.skip_push_descriptor = true;
+  lacking.skip_timeline = true;
+  MAKE_HOST(host, lacking);
+  try {
+    runtime::RenderSession session(source_paths(), on(*host));
+    ADD_FAILURE() << "a device without push descriptors and timeline semaphores was taken";
+  } catch (const gpu::HostDeviceError& error) {
+    const std::string text = error.what();
+    EXPECT_NE(text.find(VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME), std::string::npos) << text;
+    EXPECT_NE(text.find("timelineSemaphore"), std::string::npos) << text;
+    EXPECT_NE(text.find("device_setup"), std::string::npos) << text;
+  }
+}
+
+TEST_F(HostDeviceTest, MisusedImportsAreClearErrors) {
+  MAKE_HOST(host);
+  auto session = std::make_unique<runtime::RenderSession>(source_paths(), on(*host));
+  session->set_scene(default_scene());
+  const VkCommandBuffer cmd = host->command_buffer();
+  EXPECT_THROW(session->record(cmd), std::logic_error);  // no graph yet
+  load_graph_ok(*session, graph_with_imported_output());
+  try {
+    session->record(cmd);
+    ADD_FAILURE() << "recorded with the imported output unbound";
+  } catch (const std::logic_error& error) {
+    EXPECT_NE(std::string(error.what()).find("'ldr'"), std::string::npos) << error.what();
+  }
+  const auto expect_refused = [&](const std::string& name, const fgvk::ImportedImage& image,
+                                  const std::string& why) {
+    const base::Diagnostics d = session->bind_image(name, image);
+    ASSERT_EQ(d.size(), 1u) << name << ": " << describe(d);
+    const auto& diagnostic = *d.begin();
+    EXPECT_EQ(diagnostic.code, codes::graph::kImportMismatch);
+    EXPECT_NE(diagnostic.message.find(why), std::string::npos) << diagnostic.message;
+    EXPECT_GT(diagnostic.line, 0) << "located in the graph's file";
+  };
+  const auto good = host->create_image(VK_FORMAT_R8G8B8A8_UNORM, kSmall, kOutputUsage);
+  auto wrong_format = TestHost::as_import(good);
+  wrong_format.format = VK_FORMAT_B8G8R8A8_UNORM;
+  expect_refused("ldr", wrong_format, "format");
+  const auto small = host->create_image(VK_FORMAT_R8G8B8A8_UNORM, {80, 45}, kOutputUsage);
+  expect_refused("ldr", TestHost::as_import(small), "extent 80x45");
+  const auto sampled =
+      host->create_image(VK_FORMAT_R8G8B8A8_UNORM, kSmall, VK_IMAGE_USAGE_SAMPLED_BIT);
+  expect_refused("ldr", TestHost::as_import(sampled), "usage lacks");
+  expect_refused("hdr", TestHost::as_import(good), "does not import");
+  expect_refused("nowhere", TestHost::as_import(good), "no resource 'nowhere'");
+  // None of them bound anything: still refused to record.
+  EXPECT_THROW(session->record(cmd), std::logic_error);
+  EXPECT_EQ(session->gpu().validation_error_count(), 0u) << validation_report(session->gpu());
+  session.reset();
+  EXPECT_EQ(host->validation_messages(), 0u) << host->last_message();
+}
+
+}  // namespace
+}  // namespace antumbra::render_testing
