@@ -62,7 +62,8 @@ base::Diagnostics RenderSession::bind_image(const std::string& resource,
 }
 
 base::Diagnostics RenderSession::check_bound_imports(const fg::Plan& plan,
-                                                     const base::JsonDocument& document) const {
+                                                     const base::JsonDocument& document,
+                                                     std::vector<std::string>& stale) const {
   base::Diagnostics out;
   for (const auto& r : plan.resources) {
     if (!r.imported) continue;
@@ -70,11 +71,41 @@ base::Diagnostics RenderSession::check_bound_imports(const fg::Plan& plan,
     if (image == nullptr) continue;  // bound later, before the first frame
     const std::string why = fgvk::import_mismatch(r, *image);
     if (why.empty()) continue;
+    fgvk::ImportedImage resized = *image;
+    resized.extent = {r.extent.width, r.extent.height};
+    if (fgvk::import_mismatch(r, resized).empty()) {
+      // Only the size differs: the viewport changed, and the host has new images to bind.
+      out.add(document.make(codes::graph::kImportMismatch, base::Severity::note,
+                            "the host's image bound to '" + r.name + "' is " +
+                                std::to_string(image->extent.width) + "x" +
+                                std::to_string(image->extent.height) +
+                                ", the new viewport's is not: unbound; bind one of " +
+                                std::to_string(r.extent.width) + "x" +
+                                std::to_string(r.extent.height) + " before the next frame",
+                            resource_pointer(r.name)));
+      stale.push_back(r.name);
+      continue;
+    }
     out.add(document.make(codes::graph::kImportMismatch, base::Severity::error,
                           "the host's image bound to '" + r.name + "': " + why,
                           resource_pointer(r.name)));
   }
   return out;
+}
+
+base::Diagnostics RenderSession::resize(VkExtent2D viewport) {
+  if (!live_graph_) {
+    set_viewport(viewport);
+    return {};
+  }
+  const VkExtent2D before = options_.viewport;
+  if (before.width == viewport.width && before.height == viewport.height) return {};
+  set_viewport(viewport);
+  // A copy: load_graph replaces live_graph_ when it succeeds.
+  const fg::GraphDesc graph = *live_graph_;
+  base::Diagnostics diagnostics = load_graph(graph);
+  if (diagnostics.has_errors()) set_viewport(before);
+  return diagnostics;
 }
 
 }  // namespace antumbra::runtime

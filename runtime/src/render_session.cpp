@@ -140,11 +140,14 @@ base::Diagnostics RenderSession::load_graph(const fg::GraphDesc& graph) {
     return diagnostics;
   }
   // The host's images already bound must fit the new graph's imports.
-  diagnostics.append(check_bound_imports(plan->value(), graph.document));
+  std::vector<std::string> stale_imports;
+  diagnostics.append(check_bound_imports(plan->value(), graph.document, stale_imports));
   if (diagnostics.has_errors()) return diagnostics;
   try {
     executor_->load(std::move(plan->value()));
     live_document_ = graph.document;
+    live_graph_ = graph;
+    for (const auto& name : stale_imports) executor_->unbind_import(name);
   } catch (const fgvk::PassError& e) {
     // A diagnostic about the graph rather than a shader's text (a shader in none of the
     // shader folders) comes with a pointer alone: located here, in the graph's file.

@@ -145,5 +145,36 @@ TEST_F(HostDeviceTest, MisusedImportsAreClearErrors) {
   EXPECT_EQ(host->validation_messages(), 0u) << host->last_message();
 }
 
+// A resize reloads the graph at the new size; the host's images of the old size are
+// unbound with a note, and the frame runs again once images of the new size are bound.
+TEST_F(HostDeviceTest, ResizeAsksForImagesOfTheNewSize) {
+  MAKE_HOST(host);
+  const auto first = host->create_image(VK_FORMAT_R8G8B8A8_UNORM, kSmall, kOutputUsage);
+  auto session = std::make_unique<runtime::RenderSession>(source_paths(), on(*host));
+  load_graph_ok(*session, graph_with_imported_output());
+  session->set_scene(default_scene());
+  EXPECT_FALSE(session->bind_image("ldr", TestHost::as_import(first)).has_errors());
+  host_frame(*host, *session, first);
+
+  constexpr VkExtent2D kResized{128, 72};
+  const base::Diagnostics resized = session->resize(kResized);
+  ASSERT_FALSE(resized.has_errors()) << describe(resized);
+  const base::Diagnostic* note = resized.find(codes::graph::kImportMismatch);
+  ASSERT_NE(note, nullptr) << describe(resized);
+  EXPECT_EQ(note->severity, base::Severity::note);
+  EXPECT_NE(note->message.find("128x72"), std::string::npos) << note->message;
+  EXPECT_THROW(session->record(host->command_buffer()), std::logic_error);
+
+  const auto second = host->create_image(VK_FORMAT_R8G8B8A8_UNORM, kResized, kOutputUsage);
+  EXPECT_FALSE(session->bind_image("ldr", TestHost::as_import(second)).has_errors());
+  const Image8 frame{kResized.width, kResized.height, 4, host_frame(*host, *session, second)};
+  std::size_t lit = 0;
+  for (std::size_t i = 0; i < frame.bytes.size(); i += 4) lit += frame.bytes[i] > 16 ? 1 : 0;
+  EXPECT_GT(lit, frame.bytes.size() / 40) << "the resized frame is (nearly) black";
+  EXPECT_EQ(session->gpu().validation_error_count(), 0u) << validation_report(session->gpu());
+  session.reset();
+  EXPECT_EQ(host->validation_messages(), 0u) << host->last_message();
+}
+
 }  // namespace
 }  // namespace antumbra::render_testing

@@ -74,6 +74,17 @@ const ImportedImage* Executor::bound_import(std::string_view resource) const {
   return it == imports_.end() ? nullptr : &it->second;
 }
 
+void Executor::unbind_import(std::string_view resource) {
+  if (const auto it = imports_.find(resource); it != imports_.end()) imports_.erase(it);
+  if (!state_) return;
+  const int index = state_->plan.find_resource(resource);
+  if (index < 0 || !state_->plan.resources[static_cast<std::size_t>(index)].imported) return;
+  auto& bound = state_->resources[static_cast<std::size_t>(index)].bound_image;
+  bound.image = VK_NULL_HANDLE;
+  bound.view = VK_NULL_HANDLE;
+  bound.array_view = VK_NULL_HANDLE;
+}
+
 void Executor::apply_imports(State& state) const {
   for (std::size_t i = 0; i < state.plan.resources.size(); ++i) {
     const auto& r = state.plan.resources[i];

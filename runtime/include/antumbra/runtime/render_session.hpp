@@ -98,6 +98,12 @@ class RenderSession {
   void set_lights(std::vector<scene::PointLight> lights);
   // The camera (the editor's navigation): per-frame data, takes effect next frame.
   void set_camera(const scene::Camera& camera);
+  // The host's window changed size (docs/integration.md, "Resize"): reloads the live
+  // graph at `viewport` (kept resources of a fixed size carry over; the viewport-sized
+  // ones are made anew). Imported images of the old size are unbound (a note says so):
+  // bind the new ones before the next record(). On errors the previous graph and
+  // viewport stay. Before any graph is loaded it only sets the viewport.
+  base::Diagnostics resize(VkExtent2D viewport);
   // A new viewport takes effect at the next load_graph().
   void set_viewport(VkExtent2D viewport) { options_.viewport = viewport; }
   [[nodiscard]] VkExtent2D viewport() const { return options_.viewport; }
@@ -145,9 +151,12 @@ class RenderSession {
  private:
   class Observer;
   void record_frame(VkCommandBuffer cmd);
-  // FG101 for each image bound to an import of `plan` that does not fit it.
+  // FG101 errors for each image bound to an import of `plan` that does not fit it; an
+  // image that differs only in extent (a resize) is a note, and its name goes to `stale`,
+  // to be unbound once the plan is live.
   [[nodiscard]] base::Diagnostics check_bound_imports(const fg::Plan& plan,
-                                                      const base::JsonDocument& document) const;
+                                                      const base::JsonDocument& document,
+                                                      std::vector<std::string>& stale) const;
   DataPaths paths_;
   SessionOptions options_;
   std::unique_ptr<gpu::Context> gpu_;
@@ -162,6 +171,7 @@ class RenderSession {
   std::unique_ptr<Observer> observer_;
   fgvk::FrameReport report_;
   base::JsonDocument live_document_;  // the source of the graph that is running
+  std::optional<fg::GraphDesc> live_graph_;  // the graph that is running, for resize()
 };
 
 }  // namespace antumbra::runtime

@@ -102,6 +102,8 @@ class Executor {
   // used import is unbound.
   void bind_import(const std::string& resource, const ImportedImage& image);
   [[nodiscard]] const ImportedImage* bound_import(std::string_view resource) const;
+  // Forgets the host's image of `resource` (one of an old size, after a resize).
+  void unbind_import(std::string_view resource);
   // Throws std::logic_error naming the first imported resource the plan uses with no
   // image bound (record() calls it before recording anything).
   void require_imports() const;
