@@ -6,8 +6,8 @@
 #include "antumbra/fg/plan_io.hpp"
 #include "antumbra/fg/plan_memory.hpp"
 #include "antumbra/fg/schema.hpp"
+#include "antumbra/runtime/render_session.hpp"
 #include "commands.hpp"
-#include "register_builtin_passes.hpp"
 
 namespace antumbra::app {
 namespace {
@@ -65,7 +65,7 @@ bool parse_size(const std::string& text, unsigned& width, unsigned& height) {
 }
 
 int run_validate(const ValidateOptions& options) {
-  const auto registry = passes::builtin_pass_registry();
+  const auto registry = runtime::pass_registry({});
   bool failed = false;
   bool unreadable = false;
   nlohmann::json report = nlohmann::json::array();
@@ -116,7 +116,7 @@ int run_plan(const PlanOptions& options) {
                  options.size.c_str());
     return runtime::kExitUsage;
   }
-  const auto registry = passes::builtin_pass_registry();
+  const auto registry = runtime::pass_registry({});
   fg::CompileOptions compile_options;
   compile_options.viewport = {width, height};
   const auto result = fg::compile_graph(fg::GraphSource::from_file(options.file),
@@ -137,7 +137,7 @@ int run_plan(const PlanOptions& options) {
 }
 
 int run_schema() {
-  const auto registry = passes::builtin_pass_registry();
+  const auto registry = runtime::pass_registry({});
   std::cout << fg::generate_schema(registry.reflection()).dump(2) << '\n';
   return runtime::kExitOk;
 }

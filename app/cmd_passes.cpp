@@ -3,13 +3,13 @@
 #include <iostream>
 
 #include "antumbra/fg/pass_reference.hpp"
+#include "antumbra/runtime/render_session.hpp"
 #include "commands.hpp"
-#include "register_builtin_passes.hpp"
 
 namespace antumbra::app {
 
 int run_passes(const PassesOptions& options) {
-  const auto registry = passes::builtin_pass_registry();
+  const auto registry = runtime::pass_registry({});
   const fg::Registry& reflection = registry.reflection();
   if (options.type.empty()) {
     if (options.format == "json") {

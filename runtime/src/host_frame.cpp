@@ -50,7 +50,8 @@ base::Diagnostics RenderSession::bind_image(const std::string& resource,
                                 "/resources"));
     return out;
   }
-  const std::string why = fgvk::import_mismatch(plan.resources[static_cast<std::size_t>(index)], image);
+  const std::string why =
+      fgvk::import_mismatch(plan.resources[static_cast<std::size_t>(index)], image);
   if (!why.empty()) {
     out.add(live_document_.make(codes::graph::kImportMismatch, base::Severity::error,
                                 "the host's image for '" + resource + "': " + why,

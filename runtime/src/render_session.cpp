@@ -84,8 +84,8 @@ RenderSession::RenderSession(const DataPaths& paths, const SessionOptions& optio
     pipeline_cache_ = std::make_unique<gpu::PipelineCache>(*gpu_);
     cache = pipeline_cache_->handle();
   }
-  executor_ = std::make_unique<fgvk::Executor>(*gpu_, *shaders_, *registry_, std::move(shader_dirs),
-                                               cache);
+  executor_ =
+      std::make_unique<fgvk::Executor>(*gpu_, *shaders_, *registry_, std::move(shader_dirs), cache);
   frames_ = std::make_unique<gpu::FrameLoop>(*gpu_, options.frames_in_flight);
   timer_ = std::make_unique<gpu::GpuTimer>(*gpu_, frames_->frames_in_flight());
   observer_ = std::make_unique<Observer>(*timer_);
@@ -253,8 +253,8 @@ void RenderSession::record_frame(VkCommandBuffer cmd) {
   timer_->begin_frame(cmd, frames_->slot());
   // Dynamic objects with a motion are where the frame index puts them.
   if (!scene_->dynamic_objects.empty()) scene::animate_objects(*scene_, frames_->frame_number());
-  const auto frame = gpu_scene_->update(cmd, frames_->slot(), *scene_, options_.viewport,
-                                        frames_->frame_number());
+  const auto frame =
+      gpu_scene_->update(cmd, frames_->slot(), *scene_, options_.viewport, frames_->frame_number());
   executor_->record(cmd, frame, observer_.get(), &report_);
 }
 

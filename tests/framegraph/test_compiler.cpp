@@ -215,8 +215,8 @@ TEST_P(PlanSources, AreWhereThePreviousBarrierLeftTheResource) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Good, PlanSources,
-                         ::testing::Values("deferred", "culling", "aliasing", "persistent",
-                                           "after", "imported"));
+                         ::testing::Values("deferred", "culling", "aliasing", "persistent", "after",
+                                           "imported"));
 
 TEST(Compile, CycleMessageListsEdges) {
   const std::string text = testing::read_text(data_path("graphs/bad/cycle.json"));

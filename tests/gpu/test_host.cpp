@@ -55,8 +55,8 @@ TestHost::TestHost(const HostOptions& options) {
       VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
   messenger.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT |
                               VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
-  messenger.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT |
-                          VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT;
+  messenger.messageType =
+      VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT;
   messenger.pfnUserCallback = &TestHost::on_message;
   messenger.pUserData = this;
   host_.instance = create_instance(messenger);
@@ -87,7 +87,8 @@ TestHost::TestHost(const HostOptions& options) {
   info.pQueueCreateInfos = &queue;
   info.enabledExtensionCount = static_cast<std::uint32_t>(names.size());
   info.ppEnabledExtensionNames = names.data();
-  gpu::check(vkCreateDevice(host_.physical_device, &info, nullptr, &host_.device), "vkCreateDevice");
+  gpu::check(vkCreateDevice(host_.physical_device, &info, nullptr, &host_.device),
+             "vkCreateDevice");
   host_.queue_family = setup.queue_family;
   vkGetDeviceQueue(host_.device, setup.queue_family, 0, &host_.queue);
   // Read while the Context is made (then copied): this host keeps its setup alive anyway.

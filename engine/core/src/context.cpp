@@ -164,8 +164,7 @@ void Context::create_own_objects() {
   VkCommandPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
   pool_info.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
   pool_info.queueFamilyIndex = queue_family_;
-  check(vkCreateCommandPool(device_, &pool_info, nullptr, &immediate_pool_),
-        "vkCreateCommandPool");
+  check(vkCreateCommandPool(device_, &pool_info, nullptr, &immediate_pool_), "vkCreateCommandPool");
   set_name(immediate_pool_, VK_OBJECT_TYPE_COMMAND_POOL, "antumbra.immediate_pool");
 }
 

@@ -8,8 +8,8 @@
 namespace antumbra::gpu {
 
 void Context::create_device(const ContextOptions& options) {
-  const DeviceSetup setup =
-      device_setup(physical_device_, max_api_version_, !options.headless, options.device_extensions);
+  const DeviceSetup setup = device_setup(physical_device_, max_api_version_, !options.headless,
+                                         options.device_extensions);
   features_ = enabled_features(*setup.features);
 
   const float priority = 1.0f;

@@ -21,8 +21,10 @@ VkBool32 value(const FeatureChain& chain, FeatureRef get) {
   return get(const_cast<FeatureChain&>(chain));
 }
 
-#define ANTUMBRA_FEATURE(block, field) \
-  NamedFeature { #field, [](FeatureChain& c) -> VkBool32& { return c.block.field; } }
+#define ANTUMBRA_FEATURE(block, field)                                  \
+  NamedFeature {                                                        \
+#field, [](FeatureChain & c) -> VkBool32& { return c.block.field; } \
+  }
 
 // Enabled whenever offered, and read by no path choice: the shaders and pipelines assume
 // them where the device has them, so a host's device must enable them too when offered.
@@ -65,17 +67,17 @@ const std::array kDescriptorIndexing = {
 
 #undef ANTUMBRA_FEATURE
 
-template <std::size_t N>
-bool all_of(const FeatureChain& chain, const std::array<NamedFeature, N>& group) {
+template <std::size_t kN>
+bool all_of(const FeatureChain& chain, const std::array<NamedFeature, kN>& group) {
   for (const auto& f : group) {
     if (value(chain, f.get) != VK_TRUE) return false;
   }
   return true;
 }
 
-template <std::size_t N>
+template <std::size_t kN>
 void take_group(const FeatureChain& supported, FeatureChain& wanted,
-                const std::array<NamedFeature, N>& group) {
+                const std::array<NamedFeature, kN>& group) {
   if (!all_of(supported, group)) return;
   for (const auto& f : group) f.get(wanted) = VK_TRUE;
 }
@@ -167,7 +169,8 @@ void read_host_chain(const void* chain, FeatureChain& out) {
         break;
       case VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_TIMELINE_SEMAPHORE_FEATURES:
         out.v12.timelineSemaphore |=
-            reinterpret_cast<const VkPhysicalDeviceTimelineSemaphoreFeatures*>(s)->timelineSemaphore;
+            reinterpret_cast<const VkPhysicalDeviceTimelineSemaphoreFeatures*>(s)
+                ->timelineSemaphore;
         break;
       default:
         break;  // a struct Antumbra reads nothing from
@@ -178,10 +181,10 @@ void read_host_chain(const void* chain, FeatureChain& out) {
 std::string missing_host_features(const FeatureChain& supported, const FeatureChain& enabled,
                                   bool core13) {
   std::vector<std::string> missing;
-  const bool dynamic =
-      enabled.v13.dynamicRendering == VK_TRUE || enabled.dynamic_rendering.dynamicRendering == VK_TRUE;
-  const bool sync2 =
-      enabled.v13.synchronization2 == VK_TRUE || enabled.synchronization2.synchronization2 == VK_TRUE;
+  const bool dynamic = enabled.v13.dynamicRendering == VK_TRUE ||
+                       enabled.dynamic_rendering.dynamicRendering == VK_TRUE;
+  const bool sync2 = enabled.v13.synchronization2 == VK_TRUE ||
+                     enabled.synchronization2.synchronization2 == VK_TRUE;
   const char* block = core13 ? "VkPhysicalDeviceVulkan13Features" : "the KHR extension's struct";
   if (!dynamic) missing.push_back(std::string("dynamicRendering (") + block + ")");
   if (!sync2) missing.push_back(std::string("synchronization2 (") + block + ")");

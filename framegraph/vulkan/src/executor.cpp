@@ -75,8 +75,6 @@ SyncState recorded_source(const fg::PlanBarrier& barrier, const RealisedResource
   return source;
 }
 
-
-
 Executor::Executor(gpu::Context& gpu, gpu::ShaderCompiler& shaders, const PassRegistry& registry,
                    std::vector<std::filesystem::path> shader_dirs, VkPipelineCache pipeline_cache)
     : gpu_(gpu),
@@ -173,8 +171,9 @@ std::vector<int> Executor::realise_resources(State& state) const {
     if (r.imported) {
       // The host's image, bound by bind_import (apply_imports); nothing is created.
       out.depth = fg::is_depth_format(r.format);
-      out.bound_image = {VK_NULL_HANDLE, VK_NULL_HANDLE,        VK_NULL_HANDLE,
-                         to_vk_format(r.format), r.format, {r.extent.width, r.extent.height},
+      out.bound_image = {VK_NULL_HANDLE, VK_NULL_HANDLE,
+                         VK_NULL_HANDLE, to_vk_format(r.format),
+                         r.format,       {r.extent.width, r.extent.height},
                          r.layers,       VK_IMAGE_LAYOUT_UNDEFINED};
       continue;
     }

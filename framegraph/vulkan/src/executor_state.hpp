@@ -6,8 +6,8 @@
 #include <vector>
 
 #include "antumbra/fgvk/executor.hpp"
-#include "antumbra/gpu/resources.hpp"
 #include "antumbra/gpu/memory.hpp"
+#include "antumbra/gpu/resources.hpp"
 
 namespace antumbra::fgvk {
 

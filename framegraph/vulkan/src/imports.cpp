@@ -41,7 +41,8 @@ std::string import_mismatch(const fg::PlanResource& resource, const ImportedImag
         std::string(fg::to_string(resource.format)) + " (VkFormat " +
         std::to_string(to_vk_format(resource.format)) + ")");
   }
-  if (image.extent.width != resource.extent.width || image.extent.height != resource.extent.height) {
+  if (image.extent.width != resource.extent.width ||
+      image.extent.height != resource.extent.height) {
     add("extent " + extent_text(image.extent.width, image.extent.height) +
         " is not the resource's " + extent_text(resource.extent.width, resource.extent.height) +
         " (its size resolved against the viewport)");

@@ -61,7 +61,7 @@ inline constexpr const char* kLayersRejected = "FG055";   // layer count outside
 inline constexpr const char* kSizeMismatch = "FG056";     // attachments of one size group differ
 inline constexpr const char* kUnknownKind = "FG057";      // kind is not image/buffer
 inline constexpr const char* kUnusedResource = "FG058";   // warning: declared, never used
-inline constexpr const char* kBadImport = "FG059";        // "import" on a buffer, or with "persistent"
+inline constexpr const char* kBadImport = "FG059";  // "import" on a buffer, or with "persistent"
 
 // Dependency graph.
 inline constexpr const char* kReadNeverWritten = "FG070";  // read of a resource nobody wrote

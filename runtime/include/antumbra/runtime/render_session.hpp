@@ -58,7 +58,7 @@ struct SessionOptions {
 
 // What the host's submission of a frame record() filled must signal (docs/integration.md,
 // "The frame"): `value` on the timeline semaphore `semaphore`, as a
-// VkSemaphoreSubmitInfo of its vkQueueSubmit2 (or a VkTimelineSemaphoreSubmitInfo).
+// signal semaphore with VkTimelineSemaphoreSubmitInfo (or synchronization2's submit info).
 struct HostSubmission {
   VkSemaphore semaphore = VK_NULL_HANDLE;
   std::uint64_t value = 0;
@@ -170,7 +170,7 @@ class RenderSession {
   std::unique_ptr<passes::GpuScene> gpu_scene_;
   std::unique_ptr<Observer> observer_;
   fgvk::FrameReport report_;
-  base::JsonDocument live_document_;  // the source of the graph that is running
+  base::JsonDocument live_document_;         // the source of the graph that is running
   std::optional<fg::GraphDesc> live_graph_;  // the graph that is running, for resize()
 };
 
