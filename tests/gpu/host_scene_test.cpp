@@ -193,6 +193,11 @@ TEST_F(HostSceneTest, MovedLightMovesTheShadowAndNothingFarFromIt) {
   lights[0] = lamp(kLampRight);
   session->set_lights(lights);
   const Image8 after = render_frames(*session, 2);
+  // A brighter lamp where it stands keeps its shadow faces (docs/integration.md).
+  lights[0].intensity *= 2.0f;
+  session->set_lights(lights);
+  render_frames(*session, 1);
+  EXPECT_EQ(face_counts(*session).rendered, 0u) << "a new intensity redraws no face";
   expect_no_validation_errors(*session);
 
   // The centres of the box's shadow under each lamp: dark under one, lit under the other.
