@@ -11,6 +11,7 @@
 #include "antumbra/gpu/memory_heaps.hpp"
 #include "antumbra/gpu/pipeline_cache.hpp"
 #include "antumbra/scene/light_motion.hpp"
+#include "antumbra/scene/scene_builder.hpp"
 #include "register_builtin_passes.hpp"
 
 namespace antumbra::runtime {
@@ -292,6 +293,12 @@ void RenderSession::write_image(const std::string& resource, const std::string& 
   const bool pfm = path.size() > 4 && path.substr(path.size() - 4) == ".pfm";
   const bool ok = pfm ? gpu::write_pfm(path, host) : gpu::write_png(path, host);
   if (!ok) throw std::runtime_error("cannot write " + path);
+}
+
+void RenderSession::set_mesh_transform(std::size_t mesh, const glm::mat4& transform) {
+  if (!scene_) throw std::logic_error("set_mesh_transform() before set_scene()");
+  // CPU data the frame's GpuScene::update compares with what it uploaded: no wait needed.
+  scene::set_mesh_transform(*scene_, mesh, transform);
 }
 
 }  // namespace antumbra::runtime

@@ -148,6 +148,14 @@ class RenderSession {
   // Tests load hand-edited plans through it (tests/gpu/executor_sources_test.cpp).
   [[nodiscard]] fgvk::Executor& executor() { return *executor_; }
 
+  // Moves a mesh of the scene that was built dynamic (scene::SceneBuilder::add_mesh's
+  // `dynamic`, a scene file's "dynamic" object without a motion): takes effect next frame
+  // through the dynamic meshes' re-upload, and only the shadow faces its old or new bounds
+  // reach redraw (docs/integration.md, "The host's scene through calls"). Throws
+  // std::invalid_argument naming the mesh when it is out of range, static or moved by a
+  // scene file's motion, or the transform is not finite or singular (scene::set_mesh_transform).
+  void set_mesh_transform(std::size_t mesh, const glm::mat4& transform);
+
  private:
   class Observer;
   void record_frame(VkCommandBuffer cmd);
