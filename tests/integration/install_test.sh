@@ -11,9 +11,16 @@
 #   runtime (GPU, lavapipe): find_package(Antumbra), render_frames (two validated frames of
 #     the installed default graph and scene through a RenderSession) built and run; moved:
 #     `antumbra validate` and `antumbra render --validation`, the consumer reconfigured,
-#     rebuilt and run again. Without a Vulkan device it skips (77), unless
-#     ANTUMBRA_REQUIRE_GPU is set (CI), where it fails.
-# Usage: install_test.sh framegraph|runtime BUILD_DIR SOURCE_DIR CMAKE GENERATOR CXX [CCACHE]
+#     rebuilt and run again.
+#   host (GPU, lavapipe): examples/host, an engine with its own window, device and overlay
+#     (docs/integration.md, "A host in 200 lines"), built against the prefix; headless and
+#     validated, its frame of examples/host/scene.json within the golden tolerance of
+#     `antumbra render`'s, its overlay changing the overlay's rows alone; windowed under Xvfb
+#     when xvfb-run is there; moved: reconfigured, rebuilt and run on its scene built in code.
+#   The GPU modes skip (77) without a Vulkan device, unless ANTUMBRA_REQUIRE_GPU is set (CI),
+#   where they fail.
+# Usage: install_test.sh framegraph|runtime|host BUILD_DIR SOURCE_DIR CMAKE GENERATOR CXX
+#          [CCACHE [PNG_COMPARE]]
 set -u
 mode=$1
 build=$2
@@ -22,6 +29,7 @@ cmake=$4
 generator=$5
 cxx=$6
 ccache=${7:-}
+png_compare=${8:-}  # tests/integration/png_compare.cpp, built in this build (host mode)
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 log="$tmp/log.txt"
@@ -37,27 +45,44 @@ unset ANTUMBRA_ROOT
 "$cmake" --install "$build" --prefix "$tmp/P" >>"$log" 2>&1 || fail "cmake --install failed"
 step "installed into a temporary prefix"
 
-# The consumer's sources and build folders lie under $tmp, and ccache sees paths relative to
+# The projects' sources and build folders lie under $tmp, and ccache sees paths relative to
 # it, so a rerun (another temporary folder, another clone) hits the cache.
-cp -r "$source_root/tests/integration/consumer" "$tmp/consumer"
+project=consumer  # the project configure() builds: tests/integration/consumer or examples/host
+if [ "$mode" = host ]; then
+  project=host
+  cp -r "$source_root/examples/host" "$tmp/host"
+else
+  cp -r "$source_root/tests/integration/consumer" "$tmp/consumer"
+fi
 export CCACHE_BASEDIR="$tmp" CCACHE_NOHASHDIR=true
 # configure BUILD_FOLDER PREFIX [cmake arguments...]
 configure() {
   local dir=$1 prefix=$2
   shift 2
-  "$cmake" -S "$tmp/consumer" -B "$tmp/$dir" -G "$generator" -DCMAKE_CXX_COMPILER="$cxx" \
+  "$cmake" -S "$tmp/$project" -B "$tmp/$dir" -G "$generator" -DCMAKE_CXX_COMPILER="$cxx" \
     ${ccache:+-DCMAKE_CXX_COMPILER_LAUNCHER="$ccache"} -DCMAKE_PREFIX_PATH="$prefix" "$@" \
-    >>"$log" 2>&1 || fail "configuring the consumer against $prefix failed"
+    >>"$log" 2>&1 || fail "configuring the $project against $prefix failed"
   grep -q "Antumbra_DATA_DIR: $prefix/share/antumbra\$" "$log" ||
     fail "Antumbra_DATA_DIR is not $prefix/share/antumbra"
   "$cmake" --build "$tmp/$dir" --parallel 2 >>"$log" 2>&1 ||
-    fail "building the consumer against $prefix failed"
+    fail "building the $project against $prefix failed"
 }
 # run NAME COMMAND...: the command's output goes to the log; fails on a non-zero exit.
 run() {
   local name=$1
   shift
   "$@" >>"$log" 2>&1 || fail "$name exited with $?"
+}
+# The first program to touch the GPU exited with $1: 77 is no Vulkan device, a skip unless
+# ANTUMBRA_REQUIRE_GPU is set.
+require_device() {
+  if [ "$1" -eq 77 ]; then
+    case "${ANTUMBRA_REQUIRE_GPU:-0}" in
+      "" | 0) echo "SKIP: no Vulkan device"; exit 77 ;;
+      *) fail "ANTUMBRA_REQUIRE_GPU is set, but there is no usable Vulkan device" ;;
+    esac
+  fi
+  [ "$1" -eq 0 ] || fail "$2 exited with $1"
 }
 
 # The path as an ERE. A path of one component ("/src") would also match inside
@@ -129,14 +154,7 @@ case "$mode" in
     configure full "$tmp/P"
     run graph_check "$tmp/full/graph_check"
     "$tmp/full/render_frames" "$tmp/consumer.png" >>"$log" 2>&1
-    rc=$?
-    if [ $rc -eq 77 ]; then
-      case "${ANTUMBRA_REQUIRE_GPU:-0}" in
-        "" | 0) echo "SKIP: no Vulkan device"; exit 77 ;;
-        *) fail "ANTUMBRA_REQUIRE_GPU is set, but there is no usable Vulkan device" ;;
-      esac
-    fi
-    [ $rc -eq 0 ] || fail "render_frames exited with $rc"
+    require_device $? render_frames
     [ -s "$tmp/consumer.png" ] || fail "render_frames wrote no image"
     step "consumer built and run: two validated frames"
     mv "$tmp/P" "$tmp/P2"
@@ -151,6 +169,38 @@ case "$mode" in
     [ -s "$tmp/consumer.png" ] || fail "render_frames wrote no image"
     step "moved prefix: consumer reconfigured, rebuilt and run"
     ;;
-  *) fail "unknown mode '$mode' (framegraph or runtime)" ;;
+  host)
+    configure host-build "$tmp/P"
+    scene="$tmp/host/scene.json"
+    small=(--headless --validation --frames 3 --size 160x90)
+    "$tmp/host-build/host" "${small[@]}" --no-overlay --scene "$scene" --out "$tmp/a.png" \
+      >>"$log" 2>&1
+    require_device $? host
+    run "antumbra render" "$tmp/P/bin/antumbra" render --scene "$scene" --size 160x90 --frames 3 \
+      --out "$tmp/b.png"
+    run "comparing host's and antumbra render's frames" "$png_compare" "$tmp/a.png" "$tmp/b.png"
+    step "host built and run: its frame of scene.json is antumbra render's"
+    "$tmp/host-build/host" "${small[@]}" --scene "$scene" --out "$tmp/o.png" >"$tmp/o.txt" \
+      2>>"$log" || fail "host with its overlay exited with $?"
+    cat "$tmp/o.txt" >>"$log"
+    rows=$(sed -n 's/^host: overlay rows \([0-9]*\)-\([0-9]*\)$/\1 \2/p' "$tmp/o.txt")
+    [ -n "$rows" ] || fail "host named no overlay rows"
+    # shellcheck disable=SC2086 # two numbers
+    run "comparing with and without the overlay" "$png_compare" "$tmp/a.png" "$tmp/o.png" \
+      --rows $rows
+    step "the overlay changed its rows alone"
+    if command -v xvfb-run >/dev/null; then
+      run "host in a window" xvfb-run -a "$tmp/host-build/host" --validation --frames 3 \
+        --size 160x90
+      step "host in a window under Xvfb"
+    fi
+    mv "$tmp/P" "$tmp/P2"
+    rm "$tmp/o.png"
+    configure host-build "$tmp/P2"
+    run host "$tmp/host-build/host" "${small[@]}" --out "$tmp/o.png"
+    [ -s "$tmp/o.png" ] || fail "host wrote no image"
+    step "moved prefix: host reconfigured, rebuilt and run on its scene built in code"
+    ;;
+  *) fail "unknown mode '$mode' (framegraph, runtime or host)" ;;
 esac
 echo "PASS: installed package ($mode), $(elapsed) s"
