@@ -62,8 +62,10 @@ void compute_lifetimes(Plan& plan) {
     PlanResource& out = plan.resources[static_cast<std::size_t>(plan.output)];
     out.last_use = static_cast<int>(plan.passes.size()) - 1;  // copied out after the last pass
     if (out.first_use < 0) out.first_use = out.last_use;
-    // After the frame the host copies it out (render's read-back, the editor's blit).
-    if (std::find(out.usages.begin(), out.usages.end(), Access::transfer_src) == out.usages.end())
+    // After the frame the host copies it out (render's read-back, the editor's blit); an
+    // imported output goes back to the host's own state instead (plan_barriers), no copy.
+    if (!out.imported &&
+        std::find(out.usages.begin(), out.usages.end(), Access::transfer_src) == out.usages.end())
       out.usages.push_back(Access::transfer_src);
   }
   for (PlanResource& r : plan.resources) std::sort(r.usages.begin(), r.usages.end());

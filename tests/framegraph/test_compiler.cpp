@@ -1,4 +1,6 @@
 // compile() end to end on the good fixtures: order, culling, lifetimes, aliasing, barriers.
+#include <algorithm>
+
 #include <gtest/gtest.h>
 
 #include "antumbra/base/diagnostic_codes.hpp"
@@ -142,6 +144,8 @@ TEST(Compile, ImportedImagesComeFromAndGoBackToTheHost) {
     const auto& r = plan.resources[static_cast<std::size_t>(plan.find_resource(name))];
     EXPECT_TRUE(r.imported) << name;
     EXPECT_FALSE(r.aliased) << name;
+    // Nothing copies from them, the output included: a host's image need not allow it.
+    EXPECT_EQ(std::count(r.usages.begin(), r.usages.end(), Access::transfer_src), 0) << name;
   }
   ASSERT_EQ(plan.passes[0].barriers.size(), 2u);
   for (const auto& b : plan.passes[0].barriers) {

@@ -140,6 +140,12 @@ TEST_F(HostDeviceTest, MisusedImportsAreClearErrors) {
   expect_refused("nowhere", TestHost::as_import(good), "no resource 'nowhere'");
   // None of them bound anything: still refused to record.
   EXPECT_THROW(session->record(cmd), std::logic_error);
+  // The usage a graph's use asks for and no more: TRANSFER_SRC only where the graph copies
+  // from the image, so a swapchain image that is a colour attachment alone fits.
+  const auto attachment =
+      host->create_image(VK_FORMAT_R8G8B8A8_UNORM, kSmall, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT);
+  const base::Diagnostics fits = session->bind_image("ldr", TestHost::as_import(attachment));
+  EXPECT_FALSE(fits.has_errors()) << describe(fits);
   EXPECT_EQ(session->gpu().validation_error_count(), 0u) << validation_report(session->gpu());
   session.reset();
   EXPECT_EQ(host->validation_messages(), 0u) << host->last_message();

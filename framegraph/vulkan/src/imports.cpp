@@ -1,6 +1,7 @@
 // The host's images bound to imported graph resources (docs/integration.md, "The host's
 // images"): checked against the plan, applied to each loaded plan, and the host's own
 // states as the first barrier's source and the final barrier's target.
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -51,7 +52,14 @@ std::string import_mismatch(const fg::PlanResource& resource, const ImportedImag
     add(std::to_string(image.layers) + " layer(s), the resource has " +
         std::to_string(resource.layers));
   }
-  const VkImageUsageFlags needed = image_usage(resource);
+  // image_usage() gives every image Antumbra creates TRANSFER_SRC (any may be read back);
+  // of the host's image it is asked only where the graph copies from it, so a swapchain
+  // image that offers no more than a colour attachment fits.
+  VkImageUsageFlags needed = image_usage(resource);
+  const auto& uses = resource.usages;
+  if (std::find(uses.begin(), uses.end(), fg::Access::transfer_src) == uses.end()) {
+    needed &= ~VkImageUsageFlags{VK_IMAGE_USAGE_TRANSFER_SRC_BIT};
+  }
   if ((image.usage & needed) != needed) {
     add("usage lacks " + usage_names(needed & ~image.usage) + " (the graph uses it as " +
         usage_names(needed) + ")");
