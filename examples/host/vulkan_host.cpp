@@ -177,12 +177,9 @@ void VulkanHost::create_swapchain() {
   extent_ = caps.currentExtent.width != UINT32_MAX
                 ? caps.currentExtent
                 : VkExtent2D{static_cast<std::uint32_t>(width), static_cast<std::uint32_t>(height)};
-  // The swapchain image is Antumbra's output itself: it needs the usage the graph gives the
-  // resource (a colour attachment, and TRANSFER_SRC, which Antumbra asks of every image).
-  usage_ = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
-  if ((caps.supportedUsageFlags & usage_) != usage_) {
-    throw std::runtime_error("the window's images cannot be colour attachments and copied");
-  }
+  // The swapchain image is Antumbra's output itself: the graph's tone-map pass writes it as
+  // a colour attachment (FG101 names what is missing when an image lacks a usage it needs).
+  usage_ = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
   format_ = unorm->format;
   VkSwapchainCreateInfoKHR info{VK_STRUCTURE_TYPE_SWAPCHAIN_CREATE_INFO_KHR};
   info.surface = surface_;
@@ -233,7 +230,8 @@ std::uint32_t VulkanHost::memory_type(std::uint32_t bits, VkMemoryPropertyFlags 
 
 void VulkanHost::create_offscreen() {
   // Headless: an image of the engine's own (rgba8, Antumbra's output format as the graph
-  // file declares it) and a buffer the last frame is copied into.
+  // file declares it), a colour attachment for Antumbra and the overlay and a copy source
+  // for the engine, and a buffer the last frame is copied into.
   usage_ = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
   VkImageCreateInfo image{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
   image.imageType = VK_IMAGE_TYPE_2D;
