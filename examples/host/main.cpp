@@ -4,7 +4,7 @@
 // (overlay.cpp). Antumbra renders the scene with layered soft shadows into the engine's
 // image, recorded into the engine's command buffer. This file is the integration itself.
 //
-//   host [--headless --out F.png] [--frames N] [--size WxH] [--no-overlay] [--validation]
+//   host [--headless [--out F.png]] [--frames N] [--size WxH] [--no-overlay] [--validation]
 //        [--scene FILE] [--graph FILE]
 #include <cmath>
 #include <cstdio>
@@ -162,8 +162,10 @@ int run(const Options& o) {
     runtime::RenderSession session(runtime::DataPaths{antumbra_data_dir()}, options);
 
     // The scene: the engine's own, or a file through Antumbra's loader (--scene).
-    scene::Scene scene = build_scene();
-    if (!o.scene.empty()) {
+    scene::Scene scene;
+    if (o.scene.empty()) {
+      scene = build_scene();
+    } else {
       auto loaded = scene::load_scene_file(o.scene);
       if (!report(loaded.diagnostics())) return 1;
       scene = std::move(loaded.value());
@@ -175,8 +177,9 @@ int run(const Options& o) {
     // in the engine's format. Diagnostics are located in the graph file.
     std::string output;
     const auto import_output = [&](fg::GraphDesc& graph) {
-      auto& resource =
-          graph.resources.at(static_cast<std::size_t>(graph.find_resource(graph.output)));
+      const int index = graph.find_resource(graph.output);
+      if (index < 0) return;  // the compile names what is wrong with the output
+      auto& resource = graph.resources[static_cast<std::size_t>(index)];
       resource.imported = true;
       resource.format =
           vk.format() == VK_FORMAT_B8G8R8A8_UNORM ? fg::Format::bgra8 : fg::Format::rgba8;
@@ -199,8 +202,9 @@ int run(const Options& o) {
       // Antumbra's frame, into the engine's command buffer ("The frame"); the engine's
       // submission signals what it returns.
       const runtime::HostSubmission submission = session.record(f.cmd);
-      if (overlay)
+      if (overlay) {  // the engine's own pass, after Antumbra's, into the same image
         overlay->draw(f.cmd, f.target.view, vk.extent(), static_cast<std::uint32_t>(frame));
+      }
       vk.end_frame(f, submission.semaphore, submission.value, o.headless && frame + 1 == o.frames);
     }
     vk.wait_idle();  // the overlay's pipeline is destroyed next
@@ -223,7 +227,7 @@ int main(int argc, char** argv) {
   Options options;
   if (!parse(argc, argv, options)) {
     std::fprintf(stderr,
-                 "usage: host [--headless --out F.png] [--frames N] [--size WxH] [--no-overlay]\n"
+                 "usage: host [--headless [--out F.png]] [--frames N] [--size WxH] [--no-overlay]\n"
                  "            [--validation] [--scene FILE] [--graph FILE]\n");
     return 2;
   }
