@@ -33,7 +33,7 @@ VKAPI_ATTR VkBool32 VKAPI_CALL on_message(VkDebugUtilsMessageSeverityFlagBitsEXT
 
 VulkanHost::VulkanHost(bool headless, bool validation, VkExtent2D extent) : extent_(extent) {
   if (!headless) {
-    if (glfwInit() != GLFW_TRUE) throw gpu::NoVulkanDeviceError("GLFW: no display");
+    if (glfwInit() != GLFW_TRUE) throw std::runtime_error("no display for a window (--headless?)");
     glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
     window_ = glfwCreateWindow(static_cast<int>(extent.width), static_cast<int>(extent.height),
                                "Antumbra in a host", nullptr, nullptr);
