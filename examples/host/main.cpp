@@ -20,6 +20,7 @@
 #include "antumbra/gpu/vk_check.hpp"
 #include "antumbra/runtime/render_session.hpp"
 #include "antumbra/scene/primitives.hpp"
+#include "antumbra/scene/scene_builder.hpp"
 #include "antumbra/scene/scene_file.hpp"
 #include "overlay.hpp"
 #include "vulkan_host.hpp"
@@ -69,48 +70,49 @@ bool parse(int argc, char** argv, Options& o) {
   return o.frames != 0 && o.size.width >= 8 && o.size.height >= 8;
 }
 
-// The engine's scene, handed over as data: no scene file. scene.json beside this file is
-// the same scene for the programs that read files (the integration test's comparison).
-// TODO(issue 29): scene::SceneBuilder's calls take the place of the struct filled here.
+// The engine's scene, handed over through calls: no scene file. scene.json beside this
+// file is the same scene for the programs that read files (the integration test's
+// comparison). SceneBuilder checks each call and computes the bounds culling reads.
 scene::Scene build_scene() {
-  scene::Scene s;
-  s.name = "host";
-  s.camera.position = {0.0f, 4.5f, 10.0f};
-  s.camera.target = {0.0f, 0.8f, 0.0f};
-  s.ambient = glm::vec3(0.02f);
-  s.materials = {{.name = "default"},
-                 {.name = "floor", .albedo = glm::vec3(0.6f), .roughness = 0.9f},
-                 {.name = "stone", .albedo = {0.72f, 0.68f, 0.6f}, .roughness = 0.8f},
-                 {.name = "wood", .albedo = {0.5f, 0.33f, 0.18f}, .roughness = 0.7f}};
-  const auto add = [&s](scene::Mesh mesh, glm::vec3 position, int material) {
-    mesh.transform = glm::translate(glm::mat4(1.0f), position);
-    mesh.material = material;
-    mesh.update_bounds();  // world-space bounds: what culling and the light layering read
-    s.meshes.push_back(std::move(mesh));
+  scene::SceneBuilder builder;
+  builder.set_name("host");
+  scene::Camera camera;
+  camera.position = {0.0f, 4.5f, 10.0f};
+  camera.target = {0.0f, 0.8f, 0.0f};
+  builder.set_camera(camera);
+  builder.set_ambient(glm::vec3(0.02f));
+  const auto floor =
+      builder.add_material({.name = "floor", .albedo = glm::vec3(0.6f), .roughness = 0.9f});
+  const auto stone =
+      builder.add_material({.name = "stone", .albedo = {0.72f, 0.68f, 0.6f}, .roughness = 0.8f});
+  const auto wood =
+      builder.add_material({.name = "wood", .albedo = {0.5f, 0.33f, 0.18f}, .roughness = 0.7f});
+  const auto add = [&builder](const scene::Mesh& mesh, glm::vec3 position,
+                              scene::MaterialId material) {
+    builder.add_mesh({}, mesh.vertices, mesh.indices, material,
+                     glm::translate(glm::mat4(1.0f), position));
   };
-  add(scene::make_box({14.0f, 0.2f, 14.0f}), {0.0f, -0.1f, 0.0f}, 1);
+  add(scene::make_box({14.0f, 0.2f, 14.0f}), {0.0f, -0.1f, 0.0f}, floor);
   for (const float x : {-3.0f, 3.0f}) {
-    for (const float z : {-3.0f, 3.0f}) {
-      add(scene::make_cylinder(0.35f, 2.5f, 20), {x, 1.25f, z}, 2);
-    }
+    for (const float z : {-3.0f, 3.0f})
+      add(scene::make_cylinder(0.35f, 2.5f, 20), {x, 1.25f, z}, stone);
   }
-  add(scene::make_box({1.0f, 1.0f, 1.0f}), {0.0f, 0.5f, 0.0f}, 3);
-  add(scene::make_box({0.7f, 0.7f, 0.7f}), {1.3f, 0.35f, 0.9f}, 3);
-  add(scene::make_box({2.0f, 0.6f, 0.6f}), {-1.6f, 0.3f, 1.6f}, 2);
-  const auto light = [&s](const char* name, glm::vec3 position, glm::vec3 color) {
-    s.lights.push_back({.name = name,
-                        .position = position,
-                        .color = color,
-                        .intensity = 8.0f,
-                        .range = 6.0f,
-                        .size = 0.25f});
+  add(scene::make_box({1.0f, 1.0f, 1.0f}), {0.0f, 0.5f, 0.0f}, wood);
+  add(scene::make_box({0.7f, 0.7f, 0.7f}), {1.3f, 0.35f, 0.9f}, wood);
+  add(scene::make_box({2.0f, 0.6f, 0.6f}), {-1.6f, 0.3f, 1.6f}, stone);
+  const auto light = [&builder](const char* name, glm::vec3 position, glm::vec3 color) {
+    builder.add_light({.name = name,
+                       .position = position,
+                       .color = color,
+                       .intensity = 8.0f,
+                       .range = 6.0f,
+                       .size = 0.25f});
   };
   light("warm", {2.0f, 1.6f, 0.0f}, {1.0f, 0.55f, 0.25f});
   light("cool", {-2.0f, 1.6f, 0.0f}, {0.3f, 0.55f, 1.0f});
   light("green", {-3.0f, 2.2f, -4.5f}, {0.4f, 1.0f, 0.4f});
   light("rose", {3.0f, 2.2f, -4.5f}, {1.0f, 0.35f, 0.6f});
-  s.bounds = s.compute_bounds();
-  return s;
+  return builder.build();
 }
 
 // The engine's animation: the first two lights circle the centre, handed over every frame.
