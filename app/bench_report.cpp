@@ -73,6 +73,7 @@ void write_long_csv(std::ostream& out, const std::vector<BenchResult>& results) 
       for (const auto& p : r.passes) write_row(out, r, p.name, p.type, &p.gpu);
     }
     write_row(out, r, "frame", "", ok ? &r.frame : nullptr);
+    for (const auto& step : r.steps) write_row(out, r, step.name, "step:" + step.type, &step.gpu);
   }
 }
 
@@ -105,6 +106,16 @@ nlohmann::json results_json(const std::vector<BenchResult>& results) {
                          {"detail", r.detail},
                          {"frame", stats_json(r.frame)},
                          {"passes", passes}});
+    if (!r.steps.empty()) {
+      auto& steps = scenarios.back()["steps"];
+      steps = nlohmann::json::array();
+      for (const auto& step : r.steps) {
+        auto entry = stats_json(step.gpu);
+        entry["name"] = step.name;
+        entry["pass"] = step.type;
+        steps.push_back(std::move(entry));
+      }
+    }
   }
   return scenarios;
 }

@@ -44,13 +44,16 @@ struct BenchResult {
   std::string detail;
   std::vector<PassStats> passes;
   TimingStats frame;  // per-frame sum of the passes
+  // `bench --steps`: the steps inside passes (type: the pass), not part of the frame's sum.
+  std::vector<PassStats> steps;
 };
 
 // RFC 4180: a field with a comma, quote or line break is quoted, quotes doubled.
 std::string csv_field(const std::string& text);
 
-// The long CSV: header, then per scenario one row per pass and one "frame" row (a
-// failed scenario: its "frame" row only, without numbers).
+// The long CSV: header, then per scenario one row per pass, one "frame" row (a failed
+// scenario: its "frame" row only, without numbers), then one row per step (pass_type
+// "step:<pass>"; already inside their passes' times).
 void write_long_csv(std::ostream& out, const std::vector<BenchResult>& results);
 
 nlohmann::json results_json(const std::vector<BenchResult>& results);

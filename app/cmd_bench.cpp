@@ -133,6 +133,9 @@ void measure(runtime::RenderSession& session, const BenchOptions& options,
     samples.push_back(p.gpu_samples);
   }
   r.frame = summarize(frame_samples(samples));
+  for (const auto& step : session.step_timings()) {
+    r.steps.push_back({step.name, step.type, summarize(step.gpu_samples), 0.0});
+  }
 }
 
 // Scenes by file name under data/scenes/, each loaded once per run.
@@ -223,6 +226,7 @@ int run_bench(const BenchOptions& options) {
   runtime::SessionOptions session_options;
   session_options.device = options.device;
   session_options.validation = options.validation;
+  session_options.time_steps = options.steps;
   runtime::RenderSession session(paths, session_options);
   std::fprintf(stderr,
                "bench on %s: %zu scenario(s), %d warm-up + %d timed frames each, scale %.2f\n",

@@ -55,6 +55,7 @@ struct BenchOptions {
   std::string device = "auto";
   bool validation = false;
   bool list = false;
+  bool steps = false;         // also time the steps inside passes (labels): rows "pass.step"
   std::string baseline;       // bench.json to compare with; empty: no comparison
   double fail_slower = -1.0;  // with baseline: exit 1 when a row is this % slower; < 0: off
 };

@@ -189,6 +189,9 @@ int dispatch(int argc, char** argv) {
       ->capture_default_str();
   bench_cmd->add_flag("--validation", bench.validation, "Khronos validation (slow)");
   bench_cmd->add_flag("--list", bench.list, "List the scenarios and exit");
+  bench_cmd->add_flag("--steps", bench.steps,
+                      "Also time the steps inside passes (e.g. shadowMaps.rasterDepth): rows of "
+                      "type step in the CSV, \"steps\" in the JSON");
   auto* baseline_opt = bench_cmd->add_option(
       "--baseline", bench.baseline,
       "bench.json of an earlier run (re-run it now: times drift): medians, ratios, slower flags");

@@ -95,6 +95,7 @@ void VulkanHost::create_instance(bool validation) {
   check(result, "vkCreateInstance");
   host_.api_version = app.apiVersion;  // what device_setup() and Antumbra are told
   host_.validation = host_.debug_utils = validation;
+  host_.log_validation = false;  // on_message prints them: once, not twice
   if (validation) {
     auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
         vkGetInstanceProcAddr(host_.instance, "vkCreateDebugUtilsMessengerEXT"));

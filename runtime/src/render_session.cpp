@@ -26,29 +26,53 @@ double median(std::vector<double> values) {
 
 }  // namespace
 
-// Opens a GPU timestamp scope and measures CPU recording time around each pass.
+// Opens a GPU timestamp scope and measures CPU recording time around each pass; with
+// steps, every label the pass opens becomes a nested scope (gpu::LabelScopes).
 class RenderSession::Observer final : public fgvk::PassObserver {
  public:
-  explicit Observer(gpu::GpuTimer& timer) : timer_(timer) {}
+  Observer(gpu::Context& gpu, gpu::GpuTimer& timer, bool steps)
+      : gpu_(gpu), timer_(timer), labels_(timer), steps_(steps) {}
 
   void begin_pass(VkCommandBuffer cmd, const fg::PlanPass& pass) override {
     scope_ = timer_.begin_scope(cmd, pass.name);
+    if (steps_) gpu_.set_label_listener(&labels_);
     cpu_.restart();
   }
   void end_pass(VkCommandBuffer cmd, const fg::PlanPass& pass) override {
     cpu_ms[pass.name].push_back(cpu_.elapsed_ms());
+    if (steps_) gpu_.set_label_listener(nullptr);
     timer_.end_scope(cmd, scope_);
   }
   void gather_gpu() {
     if (timer_.completed_frames() == last_completed_) return;
     last_completed_ = timer_.completed_frames();
-    for (const auto& scope : timer_.last_results()) gpu_ms[scope.name].push_back(scope.gpu_ms);
+    std::map<std::string, double> frame_steps;
+    std::string pass;
+    for (const auto& scope : timer_.last_results()) {
+      if (scope.depth == 0) {
+        gpu_ms[scope.name].push_back(scope.gpu_ms);
+        pass = scope.name;
+        continue;
+      }
+      if (!frame_steps.contains(scope.name) && !step_pass.contains(scope.name)) {
+        step_order.push_back(scope.name);
+        step_pass[scope.name] = pass;
+      }
+      frame_steps[scope.name] += scope.gpu_ms;
+    }
+    for (const auto& [name, ms] : frame_steps) step_ms[name].push_back(ms);
   }
   std::map<std::string, std::vector<double>> cpu_ms;
   std::map<std::string, std::vector<double>> gpu_ms;
+  std::map<std::string, std::vector<double>> step_ms;
+  std::vector<std::string> step_order;           // first seen first
+  std::map<std::string, std::string> step_pass;  // the pass a step ran in
 
  private:
+  gpu::Context& gpu_;
   gpu::GpuTimer& timer_;
+  gpu::LabelScopes labels_;
+  bool steps_ = false;
   gpu::CpuTimer cpu_;
   std::uint32_t scope_ = 0;
   std::uint64_t last_completed_ = 0;
@@ -88,8 +112,12 @@ RenderSession::RenderSession(const DataPaths& paths, const SessionOptions& optio
   executor_ =
       std::make_unique<fgvk::Executor>(*gpu_, *shaders_, *registry_, std::move(shader_dirs), cache);
   frames_ = std::make_unique<gpu::FrameLoop>(*gpu_, options.frames_in_flight);
-  timer_ = std::make_unique<gpu::GpuTimer>(*gpu_, frames_->frames_in_flight());
-  observer_ = std::make_unique<Observer>(*timer_);
+  // Steps take a scope each, several per chunk in a shadow pass of many lights.
+  constexpr std::uint32_t kPassScopes = 128;
+  constexpr std::uint32_t kStepScopes = 4096;
+  timer_ = std::make_unique<gpu::GpuTimer>(*gpu_, frames_->frames_in_flight(),
+                                           options.time_steps ? kStepScopes : kPassScopes);
+  observer_ = std::make_unique<Observer>(*gpu_, *timer_, options.time_steps);
 }
 
 RenderSession::~RenderSession() {
@@ -264,6 +292,7 @@ void RenderSession::reset_timings() {
   observer_->gather_gpu();
   observer_->cpu_ms.clear();
   observer_->gpu_ms.clear();
+  observer_->step_ms.clear();
 }
 
 std::vector<PassTiming> RenderSession::pass_timings() const {
@@ -282,7 +311,29 @@ std::vector<PassTiming> RenderSession::pass_timings() const {
   return timings;
 }
 
+std::vector<PassTiming> RenderSession::step_timings() const {
+  std::vector<PassTiming> timings;
+  for (const std::string& name : observer_->step_order) {
+    const auto it = observer_->step_ms.find(name);
+    if (it == observer_->step_ms.end()) continue;  // not run since reset_timings()
+    PassTiming t{name, observer_->step_pass.at(name)};
+    t.gpu_ms = median(it->second);
+    t.gpu_samples = it->second;
+    timings.push_back(std::move(t));
+  }
+  return timings;
+}
+
 void RenderSession::write_image(const std::string& resource, const std::string& path) {
+  const fg::Plan& plan = executor_->plan();
+  if (const int index = plan.find_resource(resource);
+      index >= 0 && plan.resources[static_cast<std::size_t>(index)].imported) {
+    // Antumbra holds no image of its own for it, and no right to the host's.
+    throw std::runtime_error("resource \"" + resource +
+                             "\" is imported: its image is the host's (bind_image), so the host "
+                             "reads it back from that image (docs/integration.md, \"The host's "
+                             "images\")");
+  }
   const gpu::Image* image = executor_->gpu_image(resource);
   const fgvk::BoundImage* bound = executor_->image(resource);
   if (image == nullptr || bound == nullptr) {

@@ -117,5 +117,28 @@ TEST(ResultsJson, CarriesTheSameNumbers) {
   EXPECT_EQ(json[1]["status"], "invalid");
 }
 
+// `bench --steps`: steps follow the frame row, typed by their pass, and stay out of the
+// frame's sum; the JSON carries them as "steps" (absent without them).
+TEST(LongCsv, StepsFollowTheFrameRowTypedByTheirPass) {
+  auto results = two_results();
+  results[0].steps.push_back({"shadows.cull", "shadows", {0.25, 0.2, 0.3, 60}, 0.0});
+  std::ostringstream out;
+  write_long_csv(out, results);
+  std::vector<std::string> lines;
+  std::istringstream in(out.str());
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  ASSERT_EQ(lines.size(), 6u);
+  EXPECT_EQ(split(lines[3], ',')[13], "frame");
+  EXPECT_EQ(lines[4],
+            "table1/pcss-11/180p,table1,pcss,11,320,180,256,16,0,atrium.json,hardware,0,ok,"
+            "shadows.cull,step:shadows,0.25,0.2,0.3,60");
+  const auto json = results_json(results);
+  EXPECT_EQ(json[0]["steps"][0]["name"], "shadows.cull");
+  EXPECT_EQ(json[0]["steps"][0]["pass"], "shadows");
+  EXPECT_DOUBLE_EQ(json[0]["steps"][0]["medianMs"].get<double>(), 0.25);
+  EXPECT_FALSE(json[1].contains("steps"));
+  EXPECT_DOUBLE_EQ(json[0]["frame"]["medianMs"].get<double>(), 4.5);
+}
+
 }  // namespace
 }  // namespace antumbra::app

@@ -1,13 +1,17 @@
 // Antumbra on a host's device, in the host's command buffer and image (docs/integration.md):
 // the frame equals the one Antumbra renders on its own device, and each misuse is a clear
 // error, located in the graph where it is about one of its resources.
+#include <algorithm>
 #include <memory>
 #include <stdexcept>
 #include <string>
 
 #include <gtest/gtest.h>
+#include <spdlog/sinks/ringbuffer_sink.h>
+#include <spdlog/spdlog.h>
 
 #include "antumbra/base/diagnostic_codes.hpp"
+#include "antumbra/gpu/context.hpp"
 #include "antumbra/gpu/vk_check.hpp"
 #include "device_requirement.hpp"
 #include "render_test_support.hpp"
@@ -180,6 +184,40 @@ TEST_F(HostDeviceTest, ResizeAsksForImagesOfTheNewSize) {
   EXPECT_EQ(session->gpu().validation_error_count(), 0u) << validation_report(session->gpu());
   session.reset();
   EXPECT_EQ(host->validation_messages(), 0u) << host->last_message();
+}
+
+// HostDevice::log_validation: a host whose messenger prints the layer's messages keeps
+// Antumbra from printing them again; Antumbra still counts them either way.
+TEST_F(HostDeviceTest, ValidationMessagesAreLoggedOnceWhenTheHostPrintsThem) {
+  MAKE_HOST(host);
+  auto sink = std::make_shared<spdlog::sinks::ringbuffer_sink_mt>(64);
+  spdlog::default_logger()->sinks().push_back(sink);
+  const auto logged = [&] {
+    std::size_t n = 0;
+    for (const std::string& line : sink->last_formatted()) {
+      n += line.find("VUID-VkBufferCreateInfo-size") != std::string::npos ? 1 : 0;
+    }
+    return n;
+  };
+  for (const bool log : {true, false}) {
+    SCOPED_TRACE(log ? "log_validation = true" : "log_validation = false");
+    gpu::HostDevice device = host->device();
+    device.log_validation = log;
+    gpu::Context context(device);
+    const std::size_t before = logged();
+    // A zero-sized buffer: one error from the layer, to every messenger.
+    VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
+    info.usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+    VkBuffer buffer = VK_NULL_HANDLE;
+    if (vkCreateBuffer(context.device(), &info, nullptr, &buffer) == VK_SUCCESS) {
+      vkDestroyBuffer(context.device(), buffer, nullptr);
+    }
+    EXPECT_GE(context.validation_error_count(), 1u);
+    EXPECT_EQ(logged() > before, log) << ::testing::PrintToString(sink->last_formatted());
+  }
+  auto& sinks = spdlog::default_logger()->sinks();
+  sinks.erase(std::remove(sinks.begin(), sinks.end(), sink), sinks.end());
+  EXPECT_GE(host->validation_messages(), 2u) << "the host's own messenger saw both";
 }
 
 }  // namespace

@@ -21,6 +21,7 @@ void Context::set_name(std::uint64_t handle, VkObjectType type, std::string_view
 
 void Context::begin_label(VkCommandBuffer cmd, std::string_view name,
                           std::array<float, 4> color) const {
+  if (label_listener_ != nullptr) label_listener_->begin(cmd, name);
   if (!ext_.cmd_begin_label) return;
   const std::string text(name);
   VkDebugUtilsLabelEXT label{VK_STRUCTURE_TYPE_DEBUG_UTILS_LABEL_EXT};
@@ -30,6 +31,7 @@ void Context::begin_label(VkCommandBuffer cmd, std::string_view name,
 }
 
 void Context::end_label(VkCommandBuffer cmd) const {
+  if (label_listener_ != nullptr) label_listener_->end(cmd);
   if (ext_.cmd_end_label) ext_.cmd_end_label(cmd);
 }
 
@@ -61,13 +63,14 @@ VKAPI_ATTR VkBool32 VKAPI_CALL Context::debug_callback(
   auto* self = static_cast<Context*>(user);
   const char* id = data->pMessageIdName ? data->pMessageIdName : "";
   const char* text = data->pMessage ? data->pMessage : "";
+  const bool log = self->log_validation_;
   if (severity & VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT) {
     ++self->errors_;
-    spdlog::error("[vulkan] {}: {}", id, text);
+    if (log) spdlog::error("[vulkan] {}: {}", id, text);
   } else if (severity & VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT) {
     ++self->warnings_;
-    spdlog::warn("[vulkan] {}: {}", id, text);
-  } else {
+    if (log) spdlog::warn("[vulkan] {}: {}", id, text);
+  } else if (log) {
     spdlog::debug("[vulkan] {}: {}", id, text);
   }
   std::lock_guard lock(self->messages_mutex_);

@@ -45,6 +45,7 @@ void Context::adopt_host_device(const HostDevice& host) {
   queue_ = host.queue;
   queue_family_ = host.queue_family;
   validation_ = host.validation;
+  log_validation_ = host.log_validation;
   debug_utils_ = host.debug_utils;
   max_api_version_ = host.api_version;
   vkGetPhysicalDeviceProperties(physical_device_, &properties_);

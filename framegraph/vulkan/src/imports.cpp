@@ -30,6 +30,16 @@ std::string extent_text(std::uint32_t width, std::uint32_t height) {
   return std::to_string(width) + "x" + std::to_string(height);
 }
 
+// The graph's name of a VkFormat where it has one ("bgra8 (VkFormat 44)"), else the number.
+std::string format_text(VkFormat format) {
+  for (const fg::Format f : fg::all_formats()) {
+    if (f != fg::Format::undefined && to_vk_format(f) == format) {
+      return std::string(fg::to_string(f)) + " (VkFormat " + std::to_string(format) + ")";
+    }
+  }
+  return "VkFormat " + std::to_string(format) + " (no graph format)";
+}
+
 }  // namespace
 
 std::string import_mismatch(const fg::PlanResource& resource, const ImportedImage& image) {
@@ -38,9 +48,10 @@ std::string import_mismatch(const fg::PlanResource& resource, const ImportedImag
   if (!resource.imported) return "the graph does not import it (add \"import\": true)";
   if (image.image == VK_NULL_HANDLE || image.view == VK_NULL_HANDLE) add("a null image or view");
   if (image.format != to_vk_format(resource.format)) {
-    add("format " + std::to_string(image.format) + " is not the resource's " +
-        std::string(fg::to_string(resource.format)) + " (VkFormat " +
-        std::to_string(to_vk_format(resource.format)) + ")");
+    add("format " + format_text(image.format) + " is not the resource's " +
+        format_text(to_vk_format(resource.format)) +
+        " (a graph whose resource has the image's format takes it: \"format\" in the graph, "
+        "or a fg::GraphEdit)");
   }
   if (image.extent.width != resource.extent.width ||
       image.extent.height != resource.extent.height) {

@@ -54,6 +54,9 @@ struct SessionOptions {
   std::uint32_t frames_in_flight = gpu::FrameLoop::kDefaultFramesInFlight;
   // The host's pipeline cache, used instead of the session's own when set.
   VkPipelineCache pipeline_cache = VK_NULL_HANDLE;
+  // Also time the steps inside passes (every label a pass opens: a shadow pass's cull,
+  // raster and resolve): step_timings(). A timestamp pair per step costs a little.
+  bool time_steps = false;
 };
 
 // What the host's submission of a frame record() filled must signal (docs/integration.md,
@@ -115,8 +118,13 @@ class RenderSession {
   // the loop, so frames stay pipelined as in a real application.
   using BeforeFrame = std::function<void(int frame)>;
   // Renders `frames` frames; per-pass timings are gathered from every frame.
-  void render(int frames, TraceWriter* trace, const BeforeFrame& before_frame = {});
+  void render(int frames, TraceWriter* trace = nullptr, const BeforeFrame& before_frame = {});
   [[nodiscard]] std::vector<PassTiming> pass_timings() const;
+  // With SessionOptions::time_steps: per step (a label inside a pass, named as the pass
+  // names it, e.g. "shadowMaps.rasterDepth"), its GPU time summed over the frame (a step
+  // recorded once per chunk counts once per frame), in the order steps first ran; type is
+  // the pass's name. Empty without time_steps.
+  [[nodiscard]] std::vector<PassTiming> step_timings() const;
   // What the passes reported about the last rendered frame.
   [[nodiscard]] const fgvk::FrameReport& last_report() const { return report_; }
   // The same messages as diagnostics located in the live graph's file: at the parameter

@@ -66,6 +66,10 @@ struct HostDevice {
   // The host's instance runs the validation layer: Antumbra counts its messages too
   // (a messenger of its own, when debug_utils), and checks its barrier plan.
   bool validation = false;
+  // Antumbra also logs the messages it counts (spdlog). A host whose own messenger prints
+  // them sets false, so that each message is printed once; the counts and
+  // Context::validation_messages() stay.
+  bool log_validation = true;
 };
 
 // Vulkan 1.3, or 1.2 with these extensions: a 1.2 device needs them (with their
@@ -124,6 +128,15 @@ struct ExtensionFunctions {
   PFN_vkCmdPushDescriptorSetKHR cmd_push_descriptor_set = nullptr;
 };
 
+// Told of every command-buffer label a pass opens and closes (Context::begin_label), for
+// timing the steps inside passes (GpuTimer's LabelScopes); on the recording thread.
+class LabelListener {
+ public:
+  virtual ~LabelListener() = default;
+  virtual void begin(VkCommandBuffer cmd, std::string_view name) = 0;
+  virtual void end(VkCommandBuffer cmd) = 0;
+};
+
 class Context {
  public:
   static constexpr std::size_t kKeptValidationMessages = 64;
@@ -169,6 +182,9 @@ class Context {
   void begin_label(VkCommandBuffer cmd, std::string_view name,
                    std::array<float, 4> color = {0.f, 0.f, 0.f, 0.f}) const;
   void end_label(VkCommandBuffer cmd) const;
+  // Labels are also reported to `listener` (nullptr: to nobody), with or without
+  // VK_EXT_debug_utils. The caller keeps it alive while set.
+  void set_label_listener(LabelListener* listener) { label_listener_ = listener; }
 
   // A debugger captures from one present to the next, and headless frames have none:
   // these ask it to start and end a capture around submissions (the queue labels
@@ -227,6 +243,7 @@ class Context {
   void destroy_now(const PendingDestroy& object);
 
   bool validation_ = false;
+  bool log_validation_ = true;  // HostDevice::log_validation
   bool debug_utils_ = false;
   bool borrowed_ = false;
   std::uint32_t max_api_version_ = VK_API_VERSION_1_3;  // the instance's apiVersion
@@ -258,6 +275,7 @@ class Context {
   std::atomic<std::size_t> errors_{0};
   std::atomic<std::size_t> warnings_{0};
   mutable std::mutex messages_mutex_;
+  LabelListener* label_listener_ = nullptr;
   std::deque<ValidationMessage> messages_;
 };
 

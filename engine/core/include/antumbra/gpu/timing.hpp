@@ -75,6 +75,27 @@ class GpuTimer {
   std::uint64_t completed_frames_ = 0;
 };
 
+// Opens a nested GpuTimer scope for every label it is told of (Context::set_label_listener):
+// the steps inside a pass (a shadow pass's cull, raster and resolve) timed without the pass
+// knowing. Scopes carry the label's name; a step recorded several times in a frame (once
+// per chunk) gives one scope each.
+class LabelScopes final : public LabelListener {
+ public:
+  explicit LabelScopes(GpuTimer& timer) : timer_(timer) {}
+  void begin(VkCommandBuffer cmd, std::string_view name) override {
+    open_.push_back(timer_.begin_scope(cmd, name));
+  }
+  void end(VkCommandBuffer cmd) override {
+    if (open_.empty()) return;  // a label opened before the listener was set
+    timer_.end_scope(cmd, open_.back());
+    open_.pop_back();
+  }
+
+ private:
+  GpuTimer& timer_;
+  std::vector<std::uint32_t> open_;
+};
+
 // Wall-clock stopwatch for CPU stages.
 class CpuTimer {
  public:

@@ -1,0 +1,63 @@
+// SessionOptions::time_steps (`antumbra bench --steps`): the labels a pass opens are timed as
+// steps of that pass, outside the passes' own timings.
+#include <algorithm>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "render_test_support.hpp"
+
+namespace antumbra::render_testing {
+namespace {
+
+class StepTimingTest : public RenderTest {
+ protected:
+  // hard.json with the compute shadow rasteriser, whose cull, raster and resolve are labelled.
+  static fg::GraphDesc compute_graph() {
+    fg::GraphDesc graph = load_graph_file(source_dir() / "data" / "graphs" / "hard.json");
+    for (auto& p : graph.passes) {
+      if (p.type == "point-shadow-atlas") p.params["rasterizer"] = "compute";
+    }
+    return graph;
+  }
+};
+
+TEST_F(StepTimingTest, LabelsInsideAPassAreItsStepsAndNotPasses) {
+  runtime::SessionOptions options;
+  options.viewport = kSmall;
+  options.time_steps = true;
+  OPEN_SESSION(session, options);
+  load_graph_ok(*session, compute_graph());
+  session->set_scene(default_scene());
+  session->render(4);
+  const auto steps = session->step_timings();
+  const auto has = [&](const std::string& name) {
+    return std::any_of(steps.begin(), steps.end(), [&](const auto& s) { return s.name == name; });
+  };
+  EXPECT_TRUE(has("shadows.cull"));
+  EXPECT_TRUE(has("shadows.rasterDepth"));
+  EXPECT_TRUE(has("shadows.resolve") || has("shadows.copy"));
+  for (const auto& step : steps) {
+    EXPECT_EQ(step.type, "shadows") << step.name;
+    EXPECT_FALSE(step.gpu_samples.empty()) << step.name;
+    EXPECT_GE(step.gpu_ms, 0.0) << step.name;
+  }
+  for (const auto& pass : session->pass_timings()) {
+    EXPECT_EQ(pass.name.find('.'), std::string::npos) << "a step among the passes: " << pass.name;
+    EXPECT_FALSE(pass.gpu_samples.empty()) << pass.name;
+  }
+  session->reset_timings();
+  EXPECT_TRUE(session->step_timings().empty()) << "reset_timings() forgets the steps too";
+}
+
+TEST_F(StepTimingTest, WithoutTheOptionThereAreNoSteps) {
+  OPEN_SESSION(session);
+  load_graph_ok(*session, compute_graph());
+  session->set_scene(default_scene());
+  session->render(3);
+  EXPECT_TRUE(session->step_timings().empty());
+  EXPECT_FALSE(session->pass_timings().empty());
+}
+
+}  // namespace
+}  // namespace antumbra::render_testing
