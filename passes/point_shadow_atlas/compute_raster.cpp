@@ -120,8 +120,7 @@ void ComputeRasterizer::upload_geometry(fgvk::ExecuteContext& context) {
   geometry.indices = {};
   layout_ = std::move(geometry);
   dynamic_version_ = ~0ull;
-  dynamic_staging_.clear();  // sized for the old scene (freed once its frames end)  // the dynamic
-                             // clusters were built in their meshes' space
+  dynamic_staging_.clear();  // sized for the old scene (freed once its frames end)
 }
 
 void ComputeRasterizer::place_dynamic(fgvk::ExecuteContext& context) {
@@ -302,7 +301,7 @@ void ComputeRasterizer::write_records(fgvk::ExecuteContext& context, const Atlas
 }
 
 void ComputeRasterizer::bind(fgvk::ExecuteContext& context, const ComputePipeline& pipeline,
-                             const shared::RasterPush& push, VkPipeline variant) {
+                             const shared::RasterPush& push, VkPipeline variant, bool textures) {
   const VkCommandBuffer cmd = context.cmd;
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE,
                     variant != VK_NULL_HANDLE ? variant : pipeline.pipeline.get());
@@ -317,10 +316,13 @@ void ComputeRasterizer::bind(fgvk::ExecuteContext& context, const ComputePipelin
       .storage_buffer(shared::kRasterTint, tint_ ? tint_.handle() : depth_.handle())
       .storage_buffer(shared::kRasterMaterials, context.frame.materials)
       .storage_buffer(shared::kRasterDrawFlags, decision_.draw_flags())
-      .storage_buffer(shared::kRasterResolveList, decision_.list())
-      .storage_buffer(shared::kRasterAttributes, context.frame.vertex_attributes)
-      .sampled_images(shared::kRasterSrgbTextures, context.frame.srgb_textures)
-      .sampler(shared::kRasterSampler, context.frame.texture_sampler);
+      .storage_buffer(shared::kRasterResolveList, decision_.list());
+  if (textures) {
+    // Pushed only where read: every push writes its descriptors into the command stream.
+    descriptors.storage_buffer(shared::kRasterAttributes, context.frame.vertex_attributes)
+        .sampled_images(shared::kRasterSrgbTextures, context.frame.srgb_textures)
+        .sampler(shared::kRasterSampler, context.frame.texture_sampler);
+  }
   if (&pipeline == &resolve_ && storage_atlas_) {
     descriptors.storage_image(shared::kRasterAtlas,
                               context.bindings.required_image(port::kAtlas).view);
@@ -365,7 +367,9 @@ void ComputeRasterizer::record_chunk(fgvk::ExecuteContext& context, const AtlasF
     if (settings.tint && light < tinted.size() && tinted[light]) ++tint_faces;
   }
   const bool any_tint = tint_faces > 0 && tint_;
+  context.gpu.begin_label(cmd, context.pass.name + ".clear");
   clear_chunk(cmd, chunk, any_tint ? tint_faces : 0u);
+  context.gpu.end_label(cmd);
 
   shared::RasterPush push{};
   push.face_first = chunk.first;
@@ -414,7 +418,7 @@ void ComputeRasterizer::raster_list(fgvk::ExecuteContext& context, shared::Raste
                                     std::uint32_t list, VkPipeline pipeline, const char* label) {
   context.gpu.begin_label(context.cmd, context.pass.name + label);
   push.list = list;
-  bind(context, raster_, push, pipeline);
+  bind(context, raster_, push, pipeline, pipeline != raster_.pipeline.get());
   vkCmdDispatchIndirect(context.cmd, counters_,
                         shared::kRasterArgsOffset + VkDeviceSize{12} * list);
   context.gpu.end_label(context.cmd);

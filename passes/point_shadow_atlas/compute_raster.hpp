@@ -74,9 +74,11 @@ class ComputeRasterizer {
   void ensure_scratch(fgvk::ExecuteContext& context, std::uint32_t faces, std::uint32_t size);
   void write_records(fgvk::ExecuteContext& context, const AtlasFrame& frame,
                      const std::vector<bool>& tinted, const ComputeRasterSettings& settings);
-  // `variant`: a pipeline of the same layout to bind instead of `pipeline`'s own.
+  // `variant`: a pipeline of the same layout to bind instead of `pipeline`'s own; only
+  // the cut variant (`textures`) reads the coordinates, textures and sampler.
   void bind(fgvk::ExecuteContext& context, const ComputePipeline& pipeline,
-            const shared::RasterPush& push, VkPipeline variant = VK_NULL_HANDLE);
+            const shared::RasterPush& push, VkPipeline variant = VK_NULL_HANDLE,
+            bool textures = false);
   // Rasterises list `list` (its dispatch arguments) with `pipeline`.
   void raster_list(fgvk::ExecuteContext& context, shared::RasterPush push, std::uint32_t list,
                    VkPipeline pipeline, const char* label);
