@@ -31,8 +31,11 @@ test: build
 	@ctest --test-dir $(BUILD) --output-on-failure --no-tests=error -j$(JOBS)
 	@$(MAKE) --no-print-directory test-asan
 
+# -O1 -g1 (line tables: sanitizer reports keep file:line) instead of RelWithDebInfo's -O2 -g:
+# measured at a third of the compile time per file (a 2-core CI's cold run is bounded).
 test-asan: deps
 	@cmake -S . -B $(ASAN_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DANTUMBRA_SANITIZE=ON \
+	  "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" "-DCMAKE_C_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" \
 	  -DANTUMBRA_BUILD_BENCHMARKS=OFF $(CMAKE_ARGS)
 	@cmake --build $(ASAN_BUILD) -j$(JOBS) --target antumbra_framegraph_tests antumbra_scene_tests antumbra_layering_tests antumbra_watch_tests \
 	  antumbra_editor_model_tests

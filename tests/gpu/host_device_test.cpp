@@ -5,6 +5,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <spdlog/sinks/ringbuffer_sink.h>
@@ -184,6 +185,86 @@ TEST_F(HostDeviceTest, ResizeAsksForImagesOfTheNewSize) {
   EXPECT_EQ(session->gpu().validation_error_count(), 0u) << validation_report(session->gpu());
   session.reset();
   EXPECT_EQ(host->validation_messages(), 0u) << host->last_message();
+}
+
+// The host's own G-buffer in place of Antumbra's: a graph without its gbuffer pass imports
+// depth, normals, albedo and emission, and every pass after (receiver culling in the
+// shadow atlas, the penumbra, the lighting) reads the host's images. Here the host's
+// G-buffer is drawn by a first session whose G-buffer targets are the same imported images;
+// the second session's frame must equal the first's.
+TEST_F(HostDeviceTest, TheHostsGBufferFeedsTheShadowPasses) {
+  MAKE_HOST(host);
+  struct Target {
+    const char* name;
+    VkFormat format;
+    VkImageUsageFlags usage;
+  };
+  constexpr VkImageUsageFlags kColour =
+      VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT;
+  const std::vector<Target> targets{
+      {"depth", VK_FORMAT_D32_SFLOAT,
+       VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT},
+      {"normal", VK_FORMAT_R16G16B16A16_SFLOAT, kColour},
+      {"albedo", VK_FORMAT_R8G8B8A8_UNORM, kColour},
+      {"emissive", VK_FORMAT_R16G16B16A16_SFLOAT, kColour}};
+  std::vector<TestHost::Image> gbuffer;
+  gbuffer.reserve(targets.size());
+  for (const Target& t : targets) gbuffer.push_back(host->create_image(t.format, kSmall, t.usage));
+  // Between the two sessions the G-buffer is read by shaders, as a host's would be.
+  const fgvk::HostImageState sampled{VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL,
+                                     VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+                                     VK_ACCESS_2_SHADER_SAMPLED_READ_BIT};
+  const auto bind = [&](runtime::RenderSession& session, bool writes) {
+    for (std::size_t i = 0; i < targets.size(); ++i) {
+      fgvk::ImportedImage image = TestHost::as_import(gbuffer[i]);
+      if (!writes) image.before = sampled;
+      image.after = sampled;
+      const base::Diagnostics d = session.bind_image(targets[i].name, image);
+      EXPECT_FALSE(d.has_errors()) << targets[i].name << ": " << describe(d);
+    }
+  };
+  const auto with_imports = [&](bool keep_gbuffer_pass) {
+    fg::GraphDesc graph = graph_with_imported_output();
+    for (const Target& t : targets) {
+      graph.resources[static_cast<std::size_t>(graph.find_resource(t.name))].imported = true;
+    }
+    if (!keep_gbuffer_pass) {
+      std::erase_if(graph.passes,
+                    [](const fg::PassInstanceDesc& p) { return p.type == "gbuffer"; });
+    }
+    return graph;
+  };
+  const auto antumbras = host->create_image(VK_FORMAT_R8G8B8A8_UNORM, kSmall, kOutputUsage);
+  const auto hosts = host->create_image(VK_FORMAT_R8G8B8A8_UNORM, kSmall, kOutputUsage);
+  Image8 expected;
+  Image8 actual;
+  {
+    auto drawn = std::make_unique<runtime::RenderSession>(source_paths(), on(*host));
+    load_graph_ok(*drawn, with_imports(true));
+    drawn->set_scene(default_scene());
+    bind(*drawn, true);
+    EXPECT_FALSE(drawn->bind_image("ldr", TestHost::as_import(antumbras)).has_errors());
+    auto fed = std::make_unique<runtime::RenderSession>(source_paths(), on(*host));
+    load_graph_ok(*fed, with_imports(false));
+    fed->set_scene(default_scene());
+    bind(*fed, false);
+    EXPECT_FALSE(fed->bind_image("ldr", TestHost::as_import(hosts)).has_errors());
+    for (int frame = 0; frame < 2; ++frame) {
+      expected = {kSmall.width, kSmall.height, 4, host_frame(*host, *drawn, antumbras)};
+      actual = {kSmall.width, kSmall.height, 4, host_frame(*host, *fed, hosts)};
+    }
+    EXPECT_EQ(drawn->gpu().validation_error_count(), 0u) << validation_report(drawn->gpu());
+    EXPECT_EQ(fed->gpu().validation_error_count(), 0u) << validation_report(fed->gpu());
+  }
+  EXPECT_EQ(host->validation_messages(), 0u) << host->last_message();
+  std::size_t lit = 0;
+  for (std::size_t i = 0; i < actual.bytes.size(); i += 4) lit += actual.bytes[i] > 16 ? 1 : 0;
+  EXPECT_GT(lit, actual.bytes.size() / 40)
+      << "the frame from the host's G-buffer is (nearly) black";
+  const DiffStats diff = diff_images(expected, actual, 3);
+  const bool same = diff.fraction_within() >= 0.995 && diff.mean_abs < 0.5;
+  if (!same) write_failure_images(artifact_dir(), expected, actual);
+  EXPECT_TRUE(same) << describe(diff);
 }
 
 // HostDevice::log_validation: a host whose messenger prints the layer's messages keeps

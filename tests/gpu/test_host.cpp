@@ -163,7 +163,11 @@ TestHost::Image TestHost::create_image(VkFormat format, VkExtent2D extent,
   view.image = out.image;
   view.viewType = VK_IMAGE_VIEW_TYPE_2D;
   view.format = format;
-  view.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+  const bool depth = format == VK_FORMAT_D32_SFLOAT || format == VK_FORMAT_D16_UNORM ||
+                     format == VK_FORMAT_D24_UNORM_S8_UINT;
+  view.subresourceRange = {depth ? VkImageAspectFlags{VK_IMAGE_ASPECT_DEPTH_BIT}
+                                 : VkImageAspectFlags{VK_IMAGE_ASPECT_COLOR_BIT},
+                           0, 1, 0, 1};
   gpu::check(vkCreateImageView(host_.device, &view, nullptr, &out.view), "vkCreateImageView");
   images_.push_back(out);
   return out;
