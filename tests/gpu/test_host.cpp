@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "antumbra/gpu/device_setup.hpp"
+#include "antumbra/gpu/resources.hpp"
 #include "antumbra/gpu/vk_check.hpp"
 
 namespace antumbra::render_testing {
@@ -163,11 +164,7 @@ TestHost::Image TestHost::create_image(VkFormat format, VkExtent2D extent,
   view.image = out.image;
   view.viewType = VK_IMAGE_VIEW_TYPE_2D;
   view.format = format;
-  const bool depth = format == VK_FORMAT_D32_SFLOAT || format == VK_FORMAT_D16_UNORM ||
-                     format == VK_FORMAT_D24_UNORM_S8_UINT;
-  view.subresourceRange = {depth ? VkImageAspectFlags{VK_IMAGE_ASPECT_DEPTH_BIT}
-                                 : VkImageAspectFlags{VK_IMAGE_ASPECT_COLOR_BIT},
-                           0, 1, 0, 1};
+  view.subresourceRange = {gpu::aspect_of(format), 0, 1, 0, 1};
   gpu::check(vkCreateImageView(host_.device, &view, nullptr, &out.view), "vkCreateImageView");
   images_.push_back(out);
   return out;
