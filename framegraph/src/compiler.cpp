@@ -221,6 +221,7 @@ Result<Plan> compile_resolved(const GraphDesc& graph, const Registry& registry,
   compute_lifetimes(plan);
   plan_aliasing(plan, options.footprint ? options.footprint : FootprintFn(default_footprint));
   plan_barriers(plan);
+  check_port_contracts(graph, registry, plan, diags);
   // Pass-specific checks that need the whole plan (e.g. caps against storage sizes).
   for (const PlanPass& pass : plan.passes) {
     const PassDesc* desc = registry.find(pass.type);

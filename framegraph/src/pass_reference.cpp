@@ -71,6 +71,13 @@ std::string wrap(std::string_view text, std::size_t indent) {
   return out;
 }
 
+// The port's declared size and layer contracts, as one phrase (empty when none).
+std::string contracts_text(const PortDesc& port) {
+  const std::string size = describe_size_contract(port);
+  const std::string layers = describe_layer_contract(port);
+  return size + (!size.empty() && !layers.empty() ? "; " : "") + layers;
+}
+
 std::string port_line_text(const PortDesc& port) {
   std::string line = port.name + ": " + std::string(to_string(port.kind));
   if (port.kind == ResourceKind::image) {
@@ -80,6 +87,7 @@ std::string port_line_text(const PortDesc& port) {
   line += ", " + std::string(to_string(port.access)) + " in " + std::string(to_string(port.stage));
   if (port.optional) line += ", optional";
   if (!port.size_group.empty()) line += ", size group " + port.size_group;
+  if (const auto contracts = contracts_text(port); !contracts.empty()) line += ", " + contracts;
   return line;
 }
 
@@ -136,14 +144,15 @@ std::string ports_markdown(const PassDesc& desc, PortDirection direction) {
             (image ? (port.formats.empty() ? "any" : md_code_list(format_names(port))) : "") +
             " | " + (image ? layers_text(port) : "") + " | " + md_code(to_string(port.access)) +
             " (" + std::string(to_string(port.stage)) + ") | " + (port.optional ? "yes" : "") +
-            " | " + md_cell(port.size_group) + " | " + md_cell(port.description) + " |\n";
+            " | " + md_cell(port.size_group) + " | " + md_cell(contracts_text(port)) + " | " +
+            md_cell(port.description) + " |\n";
   }
   if (rows.empty()) return "";
   const std::string heading = direction == PortDirection::input ? "Inputs" : "Outputs";
   return "### " + heading + "\n\n" +
          "| port | kind | formats | layers | access (stage) | optional | size group | "
-         "description |\n"
-         "| --- | --- | --- | --- | --- | --- | --- | --- |\n" +
+         "contract | description |\n"
+         "| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n" +
          rows;
 }
 
@@ -177,6 +186,12 @@ Json pass_reference_json(const PassDesc& desc) {
              {"stage", to_string(port.stage)},
              {"optional", port.optional},
              {"sizeGroup", port.size_group.empty() ? Json(nullptr) : Json(port.size_group)},
+             {"sizeOf", port.size_of ? Json{{"port", port.size_of->port},
+                                            {"relation", json_key(port.size_of->relation)}}
+                                     : Json(nullptr)},
+             {"layersOf", port.layers_of ? Json{{"port", port.layers_of->port},
+                                                {"relation", json_key(port.layers_of->relation)}}
+                                         : Json(nullptr)},
              {"description", port.description}});
   }
   Json params = Json::array();

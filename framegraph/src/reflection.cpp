@@ -79,6 +79,54 @@ std::string_view to_string(ResourceKind kind) {
   return kind == ResourceKind::image ? "image" : "buffer";
 }
 
+namespace {
+
+// One row per relation, in enumerator order: the phrase of references and messages, and
+// the key of the JSON reference.
+struct RelationWords {
+  std::string_view phrase;
+  std::string_view key;
+};
+constexpr std::array<RelationWords, 5> kSizeRelations{{
+    {"same size as", "same"},
+    {"same size as, or half of,", "sameOrHalf"},
+    {"an integer fraction of", "fraction"},
+    {"an exact integer fraction of", "exactFraction"},
+    {"an exact fraction (1 or even) of", "exactFractionEven"},
+}};
+constexpr std::array<RelationWords, 2> kLayerRelations{{
+    {"as many layers as", "same"},
+    {"at least as many layers as", "atLeast"},
+}};
+
+}  // namespace
+
+std::string_view to_string(SizeRelation relation) {
+  return kSizeRelations.at(static_cast<std::size_t>(relation)).phrase;
+}
+
+std::string_view to_string(LayerRelation relation) {
+  return kLayerRelations.at(static_cast<std::size_t>(relation)).phrase;
+}
+
+std::string_view json_key(SizeRelation relation) {
+  return kSizeRelations.at(static_cast<std::size_t>(relation)).key;
+}
+
+std::string_view json_key(LayerRelation relation) {
+  return kLayerRelations.at(static_cast<std::size_t>(relation)).key;
+}
+
+std::string describe_size_contract(const PortDesc& port) {
+  if (!port.size_of) return {};
+  return std::string(to_string(port.size_of->relation)) + " `" + port.size_of->port + "`";
+}
+
+std::string describe_layer_contract(const PortDesc& port) {
+  if (!port.layers_of) return {};
+  return std::string(to_string(port.layers_of->relation)) + " `" + port.layers_of->port + "`";
+}
+
 std::string_view to_string(Access access) {
   switch (access) {
     case Access::none:

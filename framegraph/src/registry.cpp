@@ -7,6 +7,28 @@
 
 namespace antumbra::fg {
 
+namespace {
+
+// A contract names another image port of the same type: a typo in a description would
+// otherwise make the compiler skip the check as if that port were unbound.
+void check_contracts(const PassDesc& desc) {
+  for (const auto& port : desc.ports) {
+    for (const std::string* other : {port.size_of ? &port.size_of->port : nullptr,
+                                     port.layers_of ? &port.layers_of->port : nullptr}) {
+      if (other == nullptr) continue;
+      const PortDesc* target = desc.find_port(*other);
+      if (target == nullptr || target == &port || target->kind != ResourceKind::image ||
+          port.kind != ResourceKind::image) {
+        throw std::invalid_argument("pass type '" + desc.type + "': port '" + port.name +
+                                    "' states a contract against '" + *other +
+                                    "', which is not another image port of the type");
+      }
+    }
+  }
+}
+
+}  // namespace
+
 void Registry::add(PassDesc desc) {
   if (desc.type.empty()) throw std::invalid_argument("pass type without a name");
   std::set<std::string, std::less<>> seen;
@@ -15,6 +37,7 @@ void Registry::add(PassDesc desc) {
       throw std::invalid_argument("pass type '" + desc.type + "' repeats port '" + port.name + "'");
     }
   }
+  check_contracts(desc);
   seen.clear();
   for (const auto& param : desc.params) {
     if (!seen.insert(param.name).second) {

@@ -46,6 +46,10 @@ Json ports_schema(const PassDesc& desc, PortDirection direction) {
       text += "; formats:";
       for (Format f : port.formats) text += " " + std::string(to_string(f));
     }
+    for (const std::string& contract :
+         {describe_size_contract(port), describe_layer_contract(port)}) {
+      if (!contract.empty()) text += "; " + contract;
+    }
     text += ")";
     properties[port.name] =
         Json{{"type", "string"}, {"pattern", kNamePattern}, {"description", text}};

@@ -9,9 +9,9 @@
 namespace antumbra::passes {
 namespace {
 
-// Exactly one source, and the output holds as many layers as the penumbra it follows.
-void check(const fg::PlanPass& pass, const AnisotropicBlurParams& /*params*/, const fg::Plan& plan,
-           const fg::GraphDesc& graph, base::Diagnostics& diagnostics) {
+// Exactly one source (the sizes and layers are the ports' declared contracts).
+void check(const fg::PlanPass& pass, const AnisotropicBlurParams& /*params*/,
+           const fg::Plan& /*plan*/, const fg::GraphDesc& graph, base::Diagnostics& diagnostics) {
   const auto& source_desc = graph.passes[static_cast<std::size_t>(pass.source_index)];
   const int inputs = (bound_index(pass, port::kHardShadow) >= 0 ? 1 : 0) +
                      (bound_index(pass, port::kEsm) >= 0 ? 1 : 0) +
@@ -23,18 +23,6 @@ void check(const fg::PlanPass& pass, const AnisotropicBlurParams& /*params*/, co
             "' needs exactly one of the inputs 'hardShadow' or 'esm' (first direction) or "
             "'source' (second direction)",
         source_desc.pointer + "/in"));
-  }
-  const int penumbra = bound_index(pass, port::kPenumbra);
-  const int shadow = bound_index(pass, port::kShadow);
-  if (penumbra >= 0 && shadow >= 0 &&
-      plan.resources[static_cast<std::size_t>(shadow)].layers <
-          plan.resources[static_cast<std::size_t>(penumbra)].layers) {
-    diagnostics.add(graph.document.make(
-        codes::graph::kLayerStorageMismatch, base::Severity::error,
-        "'" + plan.resources[static_cast<std::size_t>(shadow)].name +
-            "' has fewer array layers than the penumbra image '" +
-            plan.resources[static_cast<std::size_t>(penumbra)].name + "' it blurs",
-        source_desc.pointer + "/out/shadow"));
   }
 }
 
@@ -52,19 +40,21 @@ fg::PassDesc AnisotropicBlurPass::describe() {
       "layer, sized by its penumbra (run it twice: horizontal from the hard-shadow bits, then "
       "vertical from the first result).";
   desc.ports = {
-      compute_input(port::kDepth, {Format::d32f, Format::d16}, "G-buffer depth (full resolution)."),
+      compute_input(port::kDepth, {Format::d32f, Format::d16}, "G-buffer depth (full resolution).",
+                    "screen"),
       compute_input(port::kNormal, {Format::rgba16f, Format::rgba32f},
-                    "G-buffer view-space normal."),
+                    "G-buffer view-space normal.", "screen"),
       compute_array_input(port::kPenumbra, {Format::rgba16f}, 1, 8,
-                          "Penumbra widths from layered-penumbra (same resolution as the output)."),
+                          "Penumbra widths from layered-penumbra."),
       {.name = port::kHardShadow,
        .access = Access::sampled,
        .stage = Stage::compute,
        .formats = {Format::r32ui},
        .optional = true,
-       .description = "Full-resolution hard-shadow bits: the first direction's input."},
+       .size_group = "screen",
+       .description = "Hard-shadow bits: the first direction's input."},
       compute_array_input(port::kEsm, {Format::rgba8}, 1, 8,
-                          "Full-resolution ESM visibility (layered-penumbra's `esm`): the first "
+                          "ESM visibility (layered-penumbra's `esm`): the first "
                           "direction's input instead of the hard-shadow bits.",
                           true),
       compute_array_input(port::kSource, {Format::rgba16f}, 1, 8,
@@ -76,8 +66,18 @@ fg::PassDesc AnisotropicBlurPass::describe() {
        .formats = {Format::rgba16f},
        .min_layers = 1,
        .max_layers = 8,
+       // Each output texel reads a whole block of full-resolution pixels.
+       .size_of = fg::SizeContract{port::kDepth, fg::SizeRelation::fraction},
+       .layers_of = fg::LayerContract{port::kPenumbra, fg::LayerRelation::at_least},
        .description = "Blurred visibility, 4 layers per texel."},
   };
+  // Read at the output's own texel coordinates.
+  for (fg::PortDesc& p : desc.ports) {
+    if (p.name == port::kEsm.name()) p.size_group = "screen";
+    if (p.name == port::kPenumbra.name() || p.name == port::kSource.name()) {
+      p.size_of = fg::SizeContract{port::kShadow, fg::SizeRelation::same};
+    }
+  }
   const auto& table = param_table();
   desc.params = table.descs();
   desc.check = table.check(&check);

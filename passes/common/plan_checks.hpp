@@ -25,11 +25,4 @@ void add_pass_error(const fg::GraphDesc& graph, const fg::PlanPass& pass, const 
                     const std::string& message, const std::string& suffix,
                     base::Diagnostics& diagnostics);
 
-// A map derived per face from the atlas bound at `port::kAtlas` (shadow-min-filter's
-// minDepth, shadow-moments' moments), bound at `out_port`: it must have a layer for
-// every atlas layer and divide the atlas by one integer factor on both axes (with
-// `even_factor`, 1 or even). FG092 at "/out/<out_port>" otherwise.
-void check_derived_map(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& graph,
-                       fg::PortId out_port, bool even_factor, base::Diagnostics& diagnostics);
-
 }  // namespace antumbra::passes

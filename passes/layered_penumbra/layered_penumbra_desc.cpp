@@ -51,8 +51,9 @@ fg::PassDesc LayeredPenumbraPass::describe() {
        .formats = {Format::rgba16f},
        .min_layers = 1,
        .max_layers = 8,
-       .description =
-           "Penumbra width (world units) of 4 layers per texel; full or half resolution."},
+       // The shader writes a half-resolution image at pixel >> 1 (penumbra_shift).
+       .size_of = fg::SizeContract{port::kDepth, fg::SizeRelation::same_or_half},
+       .description = "Penumbra width (world units) of 4 layers per texel."},
       {.name = port::kHardShadow,
        .direction = PortDirection::output,
        .access = Access::storage_write,
@@ -84,6 +85,16 @@ fg::PassDesc LayeredPenumbraPass::describe() {
        .description = "Exponential-shadow-map visibility exp(-c (d_receiver - d_occluder)) per "
                       "layer, 8 bits, 4 layers per texel: a soft alternative to the hard bits "
                       "that avoids self-shadowing (anisotropic-blur's `esm` input)."});
+  // Both are read texel for texel with the atlas, at its face layers.
+  for (fg::PortDesc& p : desc.ports) {
+    if (p.name == port::kColour.name()) {
+      p.size_of = fg::SizeContract{port::kAtlas, fg::SizeRelation::same};
+      p.layers_of = fg::LayerContract{port::kAtlas, fg::LayerRelation::at_least};
+    } else if (p.name == port::kMinDepth.name()) {
+      p.size_of = fg::SizeContract{port::kAtlas, fg::SizeRelation::exact_fraction_even};
+      p.layers_of = fg::LayerContract{port::kAtlas, fg::LayerRelation::at_least};
+    }
+  }
   const auto& table = param_table();
   desc.params = table.descs();
   desc.check = table.check(&check);

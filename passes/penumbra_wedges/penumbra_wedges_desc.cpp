@@ -14,12 +14,10 @@ namespace {
 // run on binds (maxStorageBufferRange) and far beyond what a frame's silhouettes need.
 constexpr double kMaxSilhouetteBytes = 1024.0 * 1024.0 * 1024.0;
 
-// The penumbra map is derived per atlas face (its size divides the atlas's); the third
-// depth layer exists exactly when peelingDepth asks for it, texel for texel with the map.
+// The third depth layer exists exactly when peelingDepth asks for it (its size and layers
+// against the map's are the ports' declared contracts).
 void check(const fg::PlanPass& pass, const PenumbraWedgesParams& params, const fg::Plan& plan,
            const fg::GraphDesc& graph, base::Diagnostics& diagnostics) {
-  check_derived_map(pass, plan, graph, port::kPenumbraMap, false, diagnostics);
-  const auto* map = bound_resource(pass, plan, port::kPenumbraMap);
   const auto* peeled = bound_resource(pass, plan, port::kPeeled);
   if (params.peeling_depth >= 3 && peeled == nullptr) {
     add_pass_error(graph, pass, codes::wedges::kPeeled,
@@ -48,19 +46,6 @@ void check(const fg::PlanPass& pass, const PenumbraWedgesParams& params, const f
       add_pass_error(graph, pass, codes::wedges::kSilhouettesTooLarge, text, "/params/edgesPerFace",
                      diagnostics);
     }
-  }
-  if (map != nullptr && peeled != nullptr &&
-      (peeled->extent.width != map->extent.width || peeled->extent.height != map->extent.height ||
-       peeled->layers < map->layers)) {
-    add_pass_error(
-        graph, pass, codes::wedges::kPeeledShape,
-        "'" + peeled->name + "' is " + std::to_string(peeled->extent.width) + "x" +
-            std::to_string(peeled->extent.height) + " with " + std::to_string(peeled->layers) +
-            " layers; it must match the penumbra "
-            "map '" +
-            map->name + "' (" + std::to_string(map->extent.width) + "x" +
-            std::to_string(map->extent.height) + ", " + std::to_string(map->layers) + " layers)",
-        "/out/peeled", diagnostics);
   }
 }
 
@@ -99,9 +84,10 @@ fg::PassDesc PenumbraWedgesPass::describe() {
        .formats = {Format::rg16f, Format::rg32f},
        .min_layers = 1,
        .max_layers = 0,
+       .size_of = fg::SizeContract{port::kAtlas, fg::SizeRelation::exact_fraction},
+       .layers_of = fg::LayerContract{port::kAtlas, fg::LayerRelation::at_least},
        .description = "Per face: theta (0 inner edge, 0.5 silhouette, 1 outer edge) and the "
-                      "wedge's distance along the face axis, + outer, - inner, 0 none; the "
-                      "atlas size divided by an integer factor, as many layers as the atlas."},
+                      "wedge's distance along the face axis, + outer, - inner, 0 none."},
       {.name = port::kPeeled,
        .direction = PortDirection::output,
        .access = Access::depth_attachment,
@@ -110,8 +96,9 @@ fg::PassDesc PenumbraWedgesPass::describe() {
        .min_layers = 1,
        .max_layers = 0,
        .optional = true,
-       .description = "The third depth layer Z3 per face (peelingDepth 3), the penumbra "
-                      "map's size and layers."},
+       .size_of = fg::SizeContract{port::kPenumbraMap, fg::SizeRelation::same},
+       .layers_of = fg::LayerContract{port::kPenumbraMap, fg::LayerRelation::at_least},
+       .description = "The third depth layer Z3 per face (peelingDepth 3)."},
   };
   const auto& table = param_table();
   desc.params = table.descs();

@@ -14,7 +14,6 @@ namespace {
 void check(const fg::PlanPass& pass, const PointShadowAtlasParams& params, const fg::Plan& plan,
            const fg::GraphDesc& graph, base::Diagnostics& diagnostics) {
   const auto* atlas = bound_resource(pass, plan, port::kAtlas);
-  const auto* colour = bound_resource(pass, plan, port::kColour);
   const auto* data = bound_resource(pass, plan, port::kShadowData);
   if (atlas == nullptr) return;  // a required port: the compiler has reported it
   const std::size_t needed = shadow_data_bytes(atlas->layers);
@@ -47,13 +46,6 @@ void check(const fg::PlanPass& pass, const PointShadowAtlasParams& params, const
                    "minResolution " + std::to_string(minimum) +
                        " is not a power of two: faces are 16, 32, 64 ... texels wide",
                    "/params/minResolution", diagnostics);
-  }
-  if (colour != nullptr && colour->layers < atlas->layers) {
-    add_pass_error(graph, pass, codes::shadow_atlas::kColourLayers,
-                   "the colour map '" + colour->name + "' has " + std::to_string(colour->layers) +
-                       " layers, the atlas " + std::to_string(atlas->layers) +
-                       "; give both the same layer count",
-                   "/out/colour", diagnostics);
   }
 }
 
@@ -133,9 +125,10 @@ fg::PassDesc PointShadowAtlasPass::describe() {
        .max_layers = 0,
        .optional = true,
        .size_group = "atlas",
+       .layers_of = fg::LayerContract{port::kAtlas, fg::LayerRelation::at_least},
        .description = "Shadow colour per face: product of the transmittances of the translucent "
                       "casters along the ray (white = clear); translucent casters then stay out "
-                      "of the depth atlas. Same size and layers as `atlas`, persistent too. With "
+                      "of the depth atlas. Persistent too. With "
                       "rasterizer \"compute\": written by its compute shader (storage image)."},
       {.name = port::kShadowData,
        .direction = PortDirection::output,

@@ -7,17 +7,6 @@
 #include "shared/limits.h"
 
 namespace antumbra::passes {
-namespace {
-
-// The map must cover every atlas layer, and each of its texels a whole, gatherable
-// block of atlas texels (factor 1 or even, the same on both axes).
-void check(const fg::PlanPass& pass, const ShadowMinFilterParams& /*params*/, const fg::Plan& plan,
-           const fg::GraphDesc& graph, base::Diagnostics& diagnostics) {
-  check_derived_map(pass, plan, graph, port::kMinDepth, true, diagnostics);
-}
-
-}  // namespace
-
 fg::PassDesc ShadowMinFilterPass::describe() {
   using fg::Access;
   using fg::Format;
@@ -41,13 +30,14 @@ fg::PassDesc ShadowMinFilterPass::describe() {
        .formats = {Format::r32f},
        .min_layers = 1,
        .max_layers = 0,
-       .description = "Per face: nearest depth within the filter radius; the atlas size divided "
-                      "by 1 or an even factor, as many layers as the atlas. Persistent to keep "
+       // Every atlas layer covered, each texel a whole, gatherable block of atlas texels.
+       .size_of = fg::SizeContract{port::kAtlas, fg::SizeRelation::exact_fraction_even},
+       .layers_of = fg::LayerContract{port::kAtlas, fg::LayerRelation::at_least},
+       .description = "Per face: nearest depth within the filter radius. Persistent to keep "
                       "cached faces' results."},
   };
   const auto& table = param_table();
   desc.params = table.descs();
-  desc.check = table.check(&check);
   return desc;
 }
 

@@ -9,13 +9,12 @@
 namespace antumbra::passes {
 namespace {
 
-// The map's geometry as for every atlas-derived map; its format must hold the technique:
+// The map's format must hold the technique (its geometry is the port's contract):
 // four components for EVSM4 and MSM, 32-bit floats for MSM (its four powers of depth
 // need them: half floats would need Peters and Klein's quantisation transform), rg32ui
 // for VSSM's fixed-point summed-area table and for nothing else.
 void check(const fg::PlanPass& pass, const ShadowMomentsParams& params, const fg::Plan& plan,
            const fg::GraphDesc& graph, base::Diagnostics& diagnostics) {
-  check_derived_map(pass, plan, graph, port::kMoments, false, diagnostics);
   const auto* out = bound_resource(pass, plan, port::kMoments);
   if (out == nullptr) return;
   const MomentTechnique technique = params.storage.technique;
@@ -64,8 +63,9 @@ fg::PassDesc ShadowMomentsPass::describe() {
        .formats = {Format::rgba32f, Format::rgba16f, Format::rg32f, Format::rg16f, Format::rg32ui},
        .min_layers = 1,
        .max_layers = 0,
-       .description = "Per face: filtered moments; the atlas size divided by an integer factor, "
-                      "as many layers as the atlas. Persistent to keep cached faces' moments."},
+       .size_of = fg::SizeContract{port::kAtlas, fg::SizeRelation::exact_fraction},
+       .layers_of = fg::LayerContract{port::kAtlas, fg::LayerRelation::at_least},
+       .description = "Per face: filtered moments. Persistent to keep cached faces' moments."},
   };
   const auto& table = param_table();
   desc.params = table.descs();

@@ -258,6 +258,8 @@ fg::PassDesc TiledLightingPass::describe() {
                           "Blurred layered shadow (1 lit .. 0 shadowed): layer L in channel L%4 of "
                           "array layer L/4; shadows = layered.",
                           true));
+  // The upsample steps through whole blocks of pixels per shadow texel.
+  desc.ports.back().size_of = fg::SizeContract{port::kDepth, fg::SizeRelation::fraction};
   desc.ports.push_back(
       compute_array_input(port::kColour, {Format::rgba32ui}, 1, 8,
                           "Layered shadow colour of translucent occluders, rgba8 packed "
@@ -292,8 +294,9 @@ fg::PassDesc TiledLightingPass::describe() {
        .stage = Stage::compute,
        .formats = {Format::r32ui},
        .optional = true,
+       .size_group = "screen",
        .description =
-           "Full-resolution hard-shadow bits (layered-penumbra's `hardShadow`); shadows = "
+           "Hard-shadow bits (layered-penumbra's `hardShadow`); shadows = "
            "layered: where a layer changes by more than 0.35 between the low-resolution "
            "texels of the pixel's surface (a shadow edge sharper than the layers hold, as "
            "at contact), the upsample also weighs each texel by its agreement with the "

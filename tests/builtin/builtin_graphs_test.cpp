@@ -295,6 +295,35 @@ void expect_mistakes_located(const std::string& file, std::span<const Mistake> m
 
 }  // namespace
 
+// The reported case: the default graph with only the first blur's target at full size
+// (`shadowH` "viewport" instead of "viewport/2") rendered black blotches and a doubled
+// shadow, and `validate` called it valid. The blur reads its penumbra at its own output's
+// texels: both blurs now refuse it, at the ports whose contracts break, naming both sizes.
+TEST(BuiltinGraphs, AFullSizeFirstBlurTargetIsRefusedByThePortContracts) {
+  const auto registry = passes::builtin_pass_registry();
+  std::string text = read_file(kRoot / "data" / "graphs" / "layered-ssss.json");
+  const std::string from =
+      "\"shadowH\": {\n      \"kind\": \"image\",\n      \"format\": "
+      "\"rgba16f\",\n      \"size\": \"viewport/2\"";
+  const auto at = text.find(from);
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at + from.size() - 3, 2, "");  // "viewport/2" -> "viewport"
+  ASSERT_NE(text.find("\"size\": \"viewport\",\n      \"layers\": 1\n    },\n    \"shadow\""),
+            std::string::npos);
+  const auto result = fg::compile_text(text, "layered-ssss.json", registry.reflection());
+  ASSERT_FALSE(result.ok());
+  std::vector<std::string> pointers;
+  for (const auto& d : result.diagnostics().items()) {
+    if (d.code != "FG092") continue;
+    pointers.push_back(d.pointer);
+    for (const char* part : {"'shadowH'", " is viewport (", " is viewport/2 ("}) {
+      EXPECT_NE(d.message.find(part), std::string::npos) << part << "\n" << d.message;
+    }
+  }
+  EXPECT_EQ(pointers, (std::vector<std::string>{"/passes/4/in/penumbra", "/passes/5/in/source"}))
+      << result.diagnostics().to_text();
+}
+
 // The distance field: a volume too small to trace, one over the memory budget (a 512^3
 // float field is 512 MiB), one that is not kept between frames, the lighting without
 // it, and a zero resolution are refused at their place in the file.
@@ -324,7 +353,7 @@ TEST(BuiltinGraphs, PenumbraWedgeGraphMistakesAreLocated) {
       {", \"peeled\": \"peeled\" }", " }", "PW003", "/passes/2/params/peelingDepth", true},
       {"\"peelingDepth\": 3", "\"peelingDepth\": 2", "PW003", "/passes/2/out/peeled"},
       {"\"format\": \"d32f\", \"size\": [512, 512], \"layers\": 96 }",
-       "\"format\": \"d32f\", \"size\": [256, 256], \"layers\": 96 }", "PW004",
+       "\"format\": \"d32f\", \"size\": [256, 256], \"layers\": 96 }", "FG092",
        "/passes/2/out/peeled"},
       {"\"format\": \"rg16f\", \"size\": [512, 512]", "\"format\": \"rg16f\", \"size\": [300, 300]",
        "FG092", "/passes/2/out/penumbraMap"},

@@ -59,6 +59,11 @@ wait_for "graph resized to 400x420"
 sed 's/"maxLayers": 4/"maxLayers": 1/' "$2/graph.json" > "$2/graph.tmp" && mv "$2/graph.tmp" "$2/graph.json"
 wait_for "graph reloaded from disk"
 wait_for "graph.json:[0-9]*:[0-9]*: warning\[LY001\]"
+# The reported case: a pass type misspelt in the file. The status says it was refused, the
+# first error and where, and the last good graph keeps running; never "reloaded".
+sed '0,/"anisotropic-blur"/s//"anisotropic-blurr"/' "$2/graph.json" > "$2/graph.tmp" \
+  && mv "$2/graph.tmp" "$2/graph.json"
+wait_for "editor: the graph on disk is refused (1 error): FG030 unknown pass type 'anisotropic-blurr'"
 quit_editor $editor
 INPUT
 chmod +x "$tmp/input.sh"
@@ -71,6 +76,12 @@ grep -q "editor exit 0" "$tmp/driver.txt" || fail "the editor did not exit 0 on 
 grep -q "validation: 0 error(s)" "$log" || fail "no clean validation summary"
 grep -q "graph resized to 400x420" "$log" || fail "the graph did not follow the viewport's new size"
 grep -q "warning\[LY001\]" "$log" || fail "the lowered cap's reload did not warn"
+refused=$(grep "unknown pass type 'anisotropic-blurr'" "$log" | grep "^editor: " | head -1)
+case "$refused" in
+  *"graph.json:"*":"*"); the last good graph keeps running; graph: refused"*) ;;
+  *) fail "the refused reload's status does not say where and that the last good graph runs: $refused" ;;
+esac
+case "$refused" in *"new frame"*|*reloaded*) fail "a refused reload was called a new frame: $refused" ;; esac
 cp "$tmp/after-drag.json" "$tmp/scene.json"
 read -r x y z <<<"$(low_position)"
 echo "after the drag: $x $y $z"

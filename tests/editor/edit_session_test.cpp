@@ -243,6 +243,18 @@ TEST_F(EditSessionTest, AGraphFileChangedOnDiskReloadsAsATransaction) {
   ASSERT_NE(type, nullptr) << edit().diagnostics().to_text();
   EXPECT_EQ(type->pointer, "/passes/1/type");
   EXPECT_NE(renderer_.plan(), nullptr);
+  // The status says it was refused, why first, and where; never "reloaded".
+  EXPECT_TRUE(edit().graph_refused());
+  const std::string refused =
+      "the graph on disk is refused (1 error): FG030 unknown pass type "
+      "'lightin'";
+  EXPECT_EQ(edit().message().rfind(refused, 0), 0u) << edit().message();
+  EXPECT_NE(edit().message().find(graph_file_.filename().string() + ":" +
+                                  std::to_string(type->line) + ":" + std::to_string(type->column) +
+                                  "); the last good graph keeps running"),
+            std::string::npos)
+      << edit().message();
+  EXPECT_EQ(running_cap(renderer_), 3) << "the last good graph keeps running";
   std::string two = good;
   two.replace(two.find("\"maxLayers\": 3"), 14, "\"maxLayers\": 2");
   change_on_disk(graph_file_, two);
@@ -251,6 +263,7 @@ TEST_F(EditSessionTest, AGraphFileChangedOnDiskReloadsAsATransaction) {
   EXPECT_EQ(running_cap(renderer_), 2);
   EXPECT_EQ(edit().graph_cap(), 2);
   EXPECT_EQ(edit().message(), "graph reloaded from disk");
+  EXPECT_FALSE(edit().graph_refused());
   EXPECT_TRUE(edit().take_change_latency_ms().has_value());
   EXPECT_FALSE(edit().take_change_latency_ms().has_value()) << "a latency is reported once";
 }
@@ -298,6 +311,21 @@ TEST_F(EditSessionTest, AReloadFromDiskNeedsNoVisibleChange) {
   EXPECT_FALSE(edit().diagnostics().has_errors());
 }
 
+// A scene file that no longer loads: the status names the first error and where it is, the
+// scene that ran keeps running.
+TEST_F(EditSessionTest, ARefusedSceneFileSaysWhyInTheStatus) {
+  ASSERT_TRUE(edit().start());
+  const int uploads = renderer_.scene_uploads;
+  change_on_disk(scene_file_, "{ \"version\": 1,\n  \"lights\": [");
+  edit().poll_files();
+  EXPECT_EQ(edit().message().rfind("the scene on disk is refused (1 error): FG001 ", 0), 0u)
+      << edit().message();
+  EXPECT_NE(edit().message().find(scene_file_.filename().string() + ":2:"), std::string::npos)
+      << edit().message();
+  EXPECT_NE(edit().message().find("; the last good scene keeps running"), std::string::npos);
+  EXPECT_EQ(renderer_.scene_uploads, uploads);
+}
+
 TEST_F(EditSessionTest, ASceneChangedOnDiskReplacesTheDocumentAndKeepsTheView) {
   ASSERT_TRUE(edit().start());
   ViewportCamera view = edit().camera();
@@ -330,6 +358,13 @@ TEST_F(EditSessionTest, OurOwnSavesAreNotReloaded) {
   EXPECT_EQ(renderer_.loads, loads);
   EXPECT_EQ(renderer_.scene_uploads, 1);
   EXPECT_NE(testing::read(graph_file_).find("\"maxLayers\": 4"), std::string::npos);
+  // An undo after the save makes the status's "saved ..." untrue: it says what it did.
+  EXPECT_EQ(edit().message().rfind("saved ", 0), 0u) << edit().message();
+  ASSERT_TRUE(edit().undo());
+  EXPECT_TRUE(edit().dirty());
+  EXPECT_EQ(edit().message(), "undid a graph edit");
+  ASSERT_TRUE(edit().redo());
+  EXPECT_EQ(edit().message(), "redid a graph edit");
 }
 
 TEST_F(EditSessionTest, ASizeTheRendererRefusesIsNotKept) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <fstream>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
@@ -75,6 +76,31 @@ scene::Scene load_scene(const fs::path& path) {
 
 scene::Scene default_scene() {
   return load_scene(source_dir() / "data" / "scenes" / "atrium.json");
+}
+
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+std::vector<fs::path> shipped_graph_files() {
+  std::vector<fs::path> files;
+  for (const auto& entry : fs::directory_iterator(source_dir() / "data" / "graphs")) {
+    if (entry.path().extension() == ".json") files.push_back(entry.path());
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+scene::Scene point_and_spot_scene() {
+  scene::Scene scene = load_scene(source_dir() / "tests" / "data" / "editor" / "lamps.json");
+  std::erase_if(scene.lights, [](const scene::PointLight& light) {
+    return light.name != "lamp a" && light.name != "spot";
+  });
+  if (scene.lights.size() != 2) throw std::runtime_error("lamps.json lost 'lamp a' or 'spot'");
+  return scene;
 }
 
 gpu::HostImage read_resource(runtime::RenderSession& session, const std::string& resource,

@@ -33,7 +33,12 @@ runtime::DataPaths source_paths();
 fg::GraphDesc load_graph_file(const std::filesystem::path& path);
 fg::GraphDesc default_graph();  // data/graphs/deferred.json
 scene::Scene load_scene(const std::filesystem::path& path);
-scene::Scene default_scene();  // data/scenes/atrium.json
+scene::Scene default_scene();                              // data/scenes/atrium.json
+std::vector<std::filesystem::path> shipped_graph_files();  // data/graphs/*.json, sorted
+std::string read_text(const std::filesystem::path& path);  // "" when unreadable
+// One point and one spot light (tests/data/editor/lamps.json): every light path, and the
+// reference's largest faces (faceSize 4096) at a cost lavapipe can afford.
+scene::Scene point_and_spot_scene();
 
 // Every diagnostic, one per line, for failure messages.
 std::string describe(const base::Diagnostics& diagnostics);

@@ -109,35 +109,17 @@ std::vector<Mutant> mutants_of(const base::Json& graph, const fg::Registry& regi
   return out;
 }
 
-std::string read_text(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 }  // namespace
 
 class ValidateMeansRenderTest : public RenderTest {};
 
 TEST_F(ValidateMeansRenderTest, WhatTheCompilerAcceptsTheDeviceRenders) {
   const auto registry = passes::builtin_pass_registry();
-  std::vector<std::filesystem::path> files;
-  for (const auto& entry : std::filesystem::directory_iterator(source_dir() / "data" / "graphs")) {
-    if (entry.path().extension() == ".json") files.push_back(entry.path());
-  }
-  std::sort(files.begin(), files.end());
+  const auto files = shipped_graph_files();
   ASSERT_FALSE(files.empty());
   constexpr VkExtent2D kTiny{48, 27};
   OPEN_SESSION(session, kTiny);
-  // One point and one spot light: every light path, and the reference's largest faces
-  // (faceSize 4096) at a cost lavapipe can afford.
-  scene::Scene scene = load_scene(source_dir() / "tests" / "data" / "editor" / "lamps.json");
-  std::erase_if(scene.lights, [](const scene::PointLight& light) {
-    return light.name != "lamp a" && light.name != "spot";
-  });
-  ASSERT_EQ(scene.lights.size(), 2u);
-  session->set_scene(std::move(scene));
+  session->set_scene(point_and_spot_scene());
   int accepted = 0;
   int refused = 0;
   int repeated = 0;

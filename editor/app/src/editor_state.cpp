@@ -18,7 +18,8 @@ void EditorState::frame_presented() {
   if (!latency) return;
   char ms[32];
   std::snprintf(ms, sizeof ms, "%.1f ms", *latency);
-  set_message(message() + " (file seen -> new frame " + ms + ")");
+  // A refused file made no new frame: the status keeps saying so instead of timing one.
+  if (!graph_refused()) set_message(message() + " (file seen -> new frame " + ms + ")");
   std::printf("editor: %s; graph: %s\n", message().c_str(), reload_summary().c_str());
   print(diagnostics());
   // What the new frame's passes report (a layer cap that is still too low) is said again

@@ -163,10 +163,39 @@ void draw_resources(EditorState& state) {
   ImGui::TreePop();
 }
 
+void draw_diagnostics(const EditorState& state) {
+  for (const auto& d : state.diagnostics()) {
+    if (d.severity == base::Severity::note) continue;
+    ImGui::TextWrapped("%s", base::format_text(d).c_str());
+  }
+}
+
+// The graph the document describes does not compile: its errors first, where they are
+// seen without scrolling, then the passes that do run, the last good graph's, read-only.
+void draw_refused(EditorState& state) {
+  ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(255, 120, 100, 255));
+  ImGui::TextWrapped("The graph file is refused; the frame is the last good graph's.");
+  draw_diagnostics(state);
+  ImGui::PopStyleColor();
+  ImGui::Separator();
+  const auto& plan = state.session().executor().plan();
+  ImGui::Text("running (last good graph): %zu passes", plan.passes.size());
+  for (const auto& pass : plan.passes) {
+    ImGui::BulletText("%s (%s)  %s", pass.name.c_str(), pass.type.c_str(),
+                      state.pass_time_text(pass.name).c_str());
+  }
+}
+
 }  // namespace
 
 void draw_graph_panel(EditorState& state, PanelSlot& slot) {
   if (!begin_panel("Frame graph", slot)) {
+    ImGui::End();
+    return;
+  }
+  if (state.graph_refused()) {
+    draw_refused(state);
+    draw_resources(state);
     ImGui::End();
     return;
   }
@@ -175,10 +204,7 @@ void draw_graph_panel(EditorState& state, PanelSlot& slot) {
   draw_resources(state);
   ImGui::Separator();
   ImGui::TextWrapped("last reload: %s", state.reload_summary().c_str());
-  for (const auto& d : state.diagnostics()) {
-    if (d.severity == base::Severity::note) continue;
-    ImGui::TextWrapped("%s", base::format_text(d).c_str());
-  }
+  draw_diagnostics(state);
   ImGui::End();
 }
 

@@ -11,6 +11,28 @@
 namespace antumbra::editor {
 namespace {
 
+// The status line of a file the reload refused: what, the first error where it stands,
+// and how many there are, so the artist need not scroll the panel to learn why.
+std::string refusal_text(const char* what, const base::Diagnostics& diagnostics) {
+  const base::Diagnostic* first = nullptr;
+  int errors = 0;
+  for (const auto& d : diagnostics) {
+    if (d.severity != base::Severity::error) continue;
+    if (first == nullptr) first = &d;
+    ++errors;
+  }
+  std::string text = std::string("the ") + what + " on disk is refused";
+  if (first != nullptr) {
+    text += " (" + std::to_string(errors) + " error" + (errors == 1 ? "" : "s") +
+            "): " + first->code + " " + first->message;
+    if (first->line > 0) {
+      text += " (" + std::filesystem::path(first->file).filename().string() + ":" +
+              std::to_string(first->line) + ":" + std::to_string(first->column) + ")";
+    }
+  }
+  return text + "; the last good " + what + " keeps running";
+}
+
 double ms_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
       .count();
@@ -115,13 +137,13 @@ void EditSession::reload_scene_file() {
   auto loaded = SceneDocument::load(scene_.file());
   if (!loaded.ok()) {
     diagnostics_ = loaded.diagnostics();
-    message_ = "the scene on disk does not load; the last good scene keeps running";
+    message_ = refusal_text("scene", diagnostics_);
     return;
   }
   auto parsed = scene::parse_scene_text(loaded->to_text(), scene_.file().string());
   if (!parsed.ok()) {
     diagnostics_ = parsed.diagnostics();
-    message_ = "the scene on disk does not parse; the last good scene keeps running";
+    message_ = refusal_text("scene", diagnostics_);
     return;
   }
   scene_ = std::move(loaded.value());
@@ -144,15 +166,22 @@ EditSession::FileReload EditSession::reload_graph_file() {
   auto loaded = GraphDocument::load(graph_.file(), lookup_);
   if (!loaded.ok()) {
     diagnostics_ = loaded.diagnostics();
+    graph_refused_ = true;
     reload_summary_ = "refused: the last good graph keeps running";
-    message_ = "the graph on disk does not load; the last good graph keeps running";
+    message_ = refusal_text("graph", diagnostics_);
     return FileReload::refused;
   }
+  // The document follows the file even when the compiler refuses it: the artist's text is
+  // the truth, and an edit made here must not overwrite it with the old graph.
   graph_ = std::move(loaded.value());
   std::erase(undo_order_, DocKind::graph);
   std::erase(redo_order_, DocKind::graph);
   gesture_open_ = false;
   reload_graph();
+  if (graph_refused_) {
+    message_ = refusal_text("graph", diagnostics_);
+    return FileReload::refused;
+  }
   message_ = "graph reloaded from disk";
   return FileReload::reloaded;
 }
@@ -242,6 +271,9 @@ bool EditSession::step_history(std::vector<DocKind>& from, std::vector<DocKind>&
     back ? graph_.undo() : graph_.redo();
     reload_graph();
   }
+  // Replaces what the last action said ("saved ..."), which the step made untrue.
+  message_ = std::string(back ? "undid" : "redid") + " a " +
+             (kind == DocKind::scene ? "scene" : "graph") + " edit";
   return true;
 }
 
@@ -266,7 +298,8 @@ void EditSession::reload_graph() {
                              if (!view_resource_.empty())
                                graph.output = view_resource_;  // like render --output
                            });
-  if (diagnostics_.has_errors()) {
+  graph_refused_ = diagnostics_.has_errors();
+  if (graph_refused_) {
     reload_summary_ = "refused: the last good graph keeps running";
   } else {
     reload_summary_ = reload_timing(started, before ? &*before : nullptr);

@@ -165,7 +165,9 @@ VkFormat to_vk_format(fg::Format format) {
 }
 
 VkImageAspectFlags aspect_of(fg::Format format) {
-  // Views of depth/stencil formats used for sampling or attachment see depth only.
+  // A barrier covers every aspect the image has: depth and stencil together for d24s8
+  // (VUID-VkImageMemoryBarrier2-image-03320), though views sample its depth alone.
+  if (format == fg::Format::d24s8) return VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT;
   return fg::is_depth_format(format) ? VK_IMAGE_ASPECT_DEPTH_BIT : VK_IMAGE_ASPECT_COLOR_BIT;
 }
 

@@ -74,8 +74,10 @@ inline constexpr const char* kParamChosen = "FG076";        // note: an "auto" v
 
 // Pass-specific checks over the whole plan (PassDesc::check).
 inline constexpr const char* kLayerCapExceedsStorage = "FG090";  // cap k > layers storage holds
-inline constexpr const char* kLayerStorageMismatch = "FG091";    // layered images disagree
-inline constexpr const char* kDerivedMapMismatch = "FG092";  // map derived from the atlas misfits
+// FG091 (layered images of different layer counts) is now the port contract FG092.
+// A port's declared size or layer contract (fg::PortDesc::size_of, layers_of) is broken:
+// "same size as `shadow`", "an exact integer fraction of `atlas`".
+inline constexpr const char* kPortContract = "FG092";
 
 // The executor could not realise a valid plan on this device.
 inline constexpr const char* kRealiseFailed = "FG100";
@@ -184,7 +186,7 @@ namespace shadow_atlas {
 inline constexpr const char* kShadowDataTooSmall =
     "SHD001";  // shadowData smaller than the atlas needs
 inline constexpr const char* kLightsUnshadowed = "SHD002";  // warning: lights do not fit the atlas
-inline constexpr const char* kColourLayers = "SHD003";      // colour map has fewer layers
+// SHD003 (a colour map with fewer layers) is now the port contract FG092.
 inline constexpr const char* kRasterizerFormat = "SHD004";  // atlas format vs the rasteriser
 inline constexpr const char* kFaceStats = "SHD010";         // note: faces culled/drawn/cached
 }  // namespace shadow_atlas
@@ -233,7 +235,7 @@ namespace wedges {
 inline constexpr const char* kSummary = "PW001";       // note: edges, depth layers, memory
 inline constexpr const char* kEdgesDropped = "PW002";  // warning: silhouettes over edgesPerFace
 inline constexpr const char* kPeeled = "PW003";        // `peeled` bound iff peelingDepth is 3
-inline constexpr const char* kPeeledShape = "PW004";   // `peeled` differs from the penumbra map
+// PW004 (`peeled` of another size than the map) is now the port contract FG092.
 inline constexpr const char* kSilhouettesTooLarge = "PW005";  // silhouette buffer over 1 GiB
 }  // namespace wedges
 

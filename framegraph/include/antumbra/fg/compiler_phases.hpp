@@ -75,6 +75,11 @@ void plan_aliasing(Plan& plan, const FootprintFn& footprint);
 // Per-pass state transitions of every bound resource, and the output's final one.
 void plan_barriers(Plan& plan);
 
+// The size and layer contracts every executed pass's ports declare (PortDesc::size_of,
+// layers_of), FG092 at the binding that breaks one.
+void check_port_contracts(const GraphDesc& graph, const Registry& registry, const Plan& plan,
+                          Diagnostics& diags);
+
 // The extent of a resource for a viewport (relative sizes round, never below 1).
 Extent2D resolve_extent(const SizeSpec& size, Extent2D viewport);
 

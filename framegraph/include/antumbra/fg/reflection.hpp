@@ -100,6 +100,39 @@ class PortId {
   std::string_view name_;
 };
 
+// How the image bound to a port must relate to the image bound to another port of the same
+// pass: what a description would otherwise say in words ("same resolution as the output",
+// "the atlas size divided by an integer factor"), declared so that the compiler checks it
+// (FG092, located at this port's binding, naming both resources and their sizes) and
+// docs/passes.md prints it from the same declaration. A contract whose other port is
+// unbound holds trivially (docs/architecture.md, section 3).
+enum class SizeRelation : std::uint8_t {
+  same,                // equal extents
+  same_or_half,        // equal, or half on both axes (floor(other / 2))
+  fraction,            // floor(other / n) on both axes for one integer n >= 1
+  exact_fraction,      // other / n exactly, one integer n >= 1 on both axes
+  exact_fraction_even  // other / n exactly, n = 1 or even
+};
+std::string_view to_string(SizeRelation relation);  // "same size as", for messages
+std::string_view json_key(SizeRelation relation);   // "same", for the JSON reference
+
+struct SizeContract {
+  std::string port;  // the other port, of the same pass
+  SizeRelation relation = SizeRelation::same;
+};
+
+enum class LayerRelation : std::uint8_t {
+  same,     // as many array layers as the other port's image
+  at_least  // at least as many
+};
+std::string_view to_string(LayerRelation relation);
+std::string_view json_key(LayerRelation relation);
+
+struct LayerContract {
+  std::string port;
+  LayerRelation relation = LayerRelation::same;
+};
+
 struct PortDesc {
   std::string name;
   PortDirection direction = PortDirection::input;
@@ -112,8 +145,16 @@ struct PortDesc {
   bool optional = false;
   // Ports in the same group must have equal sizes (attachments rendered together).
   std::string size_group;
+  // This port's image against another port's (see SizeContract, LayerContract).
+  std::optional<SizeContract> size_of;
+  std::optional<LayerContract> layers_of;
   std::string description;
 };
+
+// The contract as a phrase for references and messages, e.g. "same size as `shadow`",
+// "at least `penumbra`'s layers"; empty when the port declares none.
+std::string describe_size_contract(const PortDesc& port);
+std::string describe_layer_contract(const PortDesc& port);
 
 enum class ParamType : std::uint8_t { boolean, integer, number, enumeration, string };
 std::string_view to_string(ParamType type);

@@ -117,6 +117,9 @@ class EditSession {
   // The last load's diagnostics (or a file's that was refused).
   [[nodiscard]] const base::Diagnostics& diagnostics() const { return diagnostics_; }
   [[nodiscard]] const std::string& reload_summary() const { return reload_summary_; }
+  // The graph document (as on disk, or as edited) does not compile: the frame is the last
+  // good graph's, whose passes the renderer's plan holds, not the document's.
+  [[nodiscard]] bool graph_refused() const { return graph_refused_; }
   [[nodiscard]] const std::string& message() const { return message_; }
   void set_message(std::string message) { message_ = std::move(message); }
 
@@ -151,6 +154,7 @@ class EditSession {
   float drag_limit_ = 1.0f;
   base::Diagnostics diagnostics_;
   std::string reload_summary_;
+  bool graph_refused_ = false;
   std::vector<std::string> edited_shaders_;  // the shader files behind the pending reload
   std::string message_;
   watch::FileWatcher watcher_;
