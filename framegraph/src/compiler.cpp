@@ -77,6 +77,46 @@ std::string describe_edges(const GraphDesc& graph, const std::vector<DepEdge>& e
   return out;
 }
 
+// Where the cycle's closing edge is written: the "after" entry, or the binding that makes the
+// resource edge (a read, else the write, in the later pass).
+std::string closing_pointer(const GraphDesc& graph, const std::vector<ResolvedPass>& passes,
+                            const DepEdge& closing) {
+  const PassInstanceDesc& pass = graph.passes[static_cast<std::size_t>(closing.to)];
+  if (closing.kind == EdgeKind::after) {
+    for (std::size_t k = 0; k < pass.after.size(); ++k) {
+      if (graph.find_pass(pass.after[k]) == closing.from)
+        return pointer_append(pass.pointer + "/after", k);
+    }
+    return pass.pointer;
+  }
+  const ResolvedPass& rp = passes[static_cast<std::size_t>(closing.to)];
+  for (const auto* list : {&rp.reads, &rp.writes}) {
+    for (const BoundPort& b : *list) {
+      if (b.resource == closing.resource) return b.pointer;
+    }
+  }
+  return pass.pointer;
+}
+
+// FG071 at the edge that closes the cycle, listing the cycle's edges from the pass it closes on.
+Diagnostic cycle_error(const GraphDesc& graph, const std::vector<ResolvedPass>& passes,
+                       const std::vector<DepEdge>& cycle) {
+  const DepEdge& closing = cycle.back();
+  const std::string& from = graph.passes[static_cast<std::size_t>(closing.from)].name;
+  const std::string& to = graph.passes[static_cast<std::size_t>(closing.to)].name;
+  std::string why;
+  if (closing.from == closing.to) {
+    why = "a pass cannot run after itself";
+  } else {
+    why = quote_name(from) + " already depends on " + quote_name(to) + ", so " + quote_name(to) +
+          " cannot " + (closing.kind == EdgeKind::after ? "run after it" : "wait for it");
+  }
+  return graph.document.make(
+      codes::kCycle, Severity::error,
+      "this closes a cycle of the passes: " + describe_edges(graph, cycle) + " (" + why + ")",
+      closing_pointer(graph, passes, closing));
+}
+
 // Builds the plan's passes and resources from the kept passes in execution order.
 Plan assemble(const GraphDesc& graph, const std::vector<ResolvedPass>& passes,
               const std::vector<bool>& keep, const std::vector<int>& order, int output,
@@ -193,11 +233,8 @@ Result<Plan> compile_resolved(const GraphDesc& graph, const Registry& registry,
 
   const DependencyGraph deps = build_dependencies(graph, passes, diags);
   if (diags.has_errors()) return diags;
-  if (auto left = find_cycle_edges(deps, passes); !left.empty()) {
-    const auto& first = graph.passes[static_cast<std::size_t>(left.front().to)];
-    diags.add(graph.document.make(
-        codes::kCycle, Severity::error,
-        "the passes form a cycle; edges left: " + describe_edges(graph, left), first.pointer));
+  if (const auto cycle = find_cycle(deps, passes.size()); !cycle.empty()) {
+    diags.add(cycle_error(graph, passes, cycle));
     return diags;
   }
   const std::vector<bool> keep = cull_passes(deps, passes, output);

@@ -1,6 +1,7 @@
 // Phases 3-6: dependency edges, cycle detection, culling and ordering.
 #include <algorithm>
 #include <functional>
+#include <optional>
 #include <queue>
 #include <tuple>
 
@@ -166,35 +167,71 @@ DependencyGraph build_dependencies(const GraphDesc& graph, const std::vector<Res
   return deps;
 }
 
-std::vector<DepEdge> find_cycle_edges(const DependencyGraph& deps,
-                                      const std::vector<ResolvedPass>& passes) {
-  std::vector<int> in_degree(passes.size(), 0);
-  std::vector<std::vector<int>> out_edges(passes.size());
-  for (std::size_t e = 0; e < deps.edges.size(); ++e) {
-    ++in_degree[static_cast<std::size_t>(deps.edges[e].to)];
-    out_edges[static_cast<std::size_t>(deps.edges[e].from)].push_back(static_cast<int>(e));
-  }
-  std::vector<int> ready;
-  for (std::size_t i = 0; i < passes.size(); ++i) {
-    if (in_degree[i] == 0) ready.push_back(static_cast<int>(i));
-  }
-  std::vector<bool> done(passes.size(), false);
-  while (!ready.empty()) {
-    const int p = ready.back();
-    ready.pop_back();
-    done[static_cast<std::size_t>(p)] = true;
+namespace {
+
+// The closing edge of a cycle is one the author most likely added last, so the error points
+// at what to change. Resource edges always run forward in file order (build_dependencies walks
+// the passes top-down and a read waits for an earlier writer), so every cycle has a backward
+// edge (from a pass to one at or above it in the file) and every backward edge is an "after"
+// entry. Among backward edges, "after" ones come first (in case resource edges ever run
+// backwards), then the one into the earliest pass, then from the earliest pass.
+bool closes_before(const DepEdge& a, const DepEdge& b) {
+  return std::tuple(a.kind != EdgeKind::after, a.to, a.from) <
+         std::tuple(b.kind != EdgeKind::after, b.to, b.from);
+}
+
+// The fewest edges from `start` to `goal`, in order (empty when start == goal); nullopt when
+// `goal` is unreachable. `out_edges[p]` lists p's edges in the sorted order of `edges`, so
+// among parallel edges the data edge with the lowest resource index is the one named.
+std::optional<std::vector<DepEdge>> shortest_path(const std::vector<DepEdge>& edges,
+                                                  const std::vector<std::vector<int>>& out_edges,
+                                                  int start, int goal) {
+  std::vector<int> via(out_edges.size(), -1);  // the edge that first reached each pass
+  std::vector<bool> seen(out_edges.size(), false);
+  std::queue<int> frontier;
+  seen[static_cast<std::size_t>(start)] = true;
+  frontier.push(start);
+  while (!frontier.empty() && !seen[static_cast<std::size_t>(goal)]) {
+    const int p = frontier.front();
+    frontier.pop();
     for (int e : out_edges[static_cast<std::size_t>(p)]) {
-      const auto to = static_cast<std::size_t>(deps.edges[static_cast<std::size_t>(e)].to);
-      if (--in_degree[to] == 0) ready.push_back(static_cast<int>(to));
+      const auto to = static_cast<std::size_t>(edges[static_cast<std::size_t>(e)].to);
+      if (seen[to]) continue;
+      seen[to] = true;
+      via[to] = e;
+      frontier.push(static_cast<int>(to));
     }
   }
-  std::vector<DepEdge> left;
-  for (const DepEdge& e : deps.edges) {
-    if (!done[static_cast<std::size_t>(e.from)] && !done[static_cast<std::size_t>(e.to)])
-      left.push_back(e);
+  if (!seen[static_cast<std::size_t>(goal)]) return std::nullopt;
+  std::vector<DepEdge> path;
+  for (int p = goal; p != start;) {
+    const DepEdge& e = edges[static_cast<std::size_t>(via[static_cast<std::size_t>(p)])];
+    path.push_back(e);
+    p = e.from;
   }
-  std::sort(left.begin(), left.end(), edge_less);
-  return left;
+  std::reverse(path.begin(), path.end());
+  return path;
+}
+
+}  // namespace
+
+std::vector<DepEdge> find_cycle(const DependencyGraph& deps, std::size_t pass_count) {
+  std::vector<std::vector<int>> out_edges(pass_count);
+  std::vector<DepEdge> backward;
+  for (std::size_t e = 0; e < deps.edges.size(); ++e) {
+    const DepEdge& edge = deps.edges[e];
+    out_edges[static_cast<std::size_t>(edge.from)].push_back(static_cast<int>(e));
+    if (edge.from >= edge.to) backward.push_back(edge);
+  }
+  std::sort(backward.begin(), backward.end(), closes_before);
+  // A backward edge closes a cycle when its target reaches its source again.
+  for (const DepEdge& closing : backward) {
+    if (auto cycle = shortest_path(deps.edges, out_edges, closing.to, closing.from)) {
+      cycle->push_back(closing);
+      return *cycle;
+    }
+  }
+  return {};
 }
 
 std::vector<bool> cull_passes(const DependencyGraph& deps, const std::vector<ResolvedPass>& passes,

@@ -218,6 +218,30 @@ TEST(BuiltinGraphs, BadTechniqueParametersAreLocated) {
   }
 }
 
+// Issue 30's case: an "after" in the default graph's /passes/1 that makes a cycle is reported
+// at that "after" entry, listing the cycle's edges alone, in order, back to the gbuffer (it was
+// reported at /passes/3 with 19 edges, the culprit 18th).
+TEST(BuiltinGraphs, ACycleIsReportedAtTheAfterThatClosesIt) {
+  const auto registry = passes::builtin_pass_registry();
+  std::string text = read_file(kRoot / "data" / "graphs" / "layered-ssss.json");
+  const std::string gbuffer = "\"name\": \"gbuffer\",";
+  const auto at = text.find(gbuffer);
+  ASSERT_NE(at, std::string::npos);
+  text.insert(at + gbuffer.size(), " \"after\": [\"tonemap\"],");
+  const auto result = fg::compile_text(text, "layered-ssss.json", registry.reflection());
+  ASSERT_FALSE(result.ok());
+  ASSERT_EQ(result.diagnostics().error_count(), 1u) << result.diagnostics().to_text();
+  const base::Diagnostic* d = result.diagnostics().find("FG071");
+  ASSERT_NE(d, nullptr) << result.diagnostics().to_text();
+  EXPECT_EQ(d->pointer, "/passes/1/after/0");
+  EXPECT_EQ(d->file, "layered-ssss.json");
+  EXPECT_EQ(d->line, 107);
+  EXPECT_EQ(d->message,
+            "this closes a cycle of the passes: gbuffer -> lighting (via depth), lighting -> "
+            "tonemap (via hdr), tonemap -> gbuffer (after) ('tonemap' already depends on "
+            "'gbuffer', so 'gbuffer' cannot run after it)");
+}
+
 // Filtered shadow maps: the lighting's mode must be the technique the map stores, the
 // map's format must hold it, and the moment modes need their map bound.
 TEST(BuiltinGraphs, MomentGraphMistakesAreLocated) {

@@ -1,4 +1,5 @@
 // The compiler runs on the CPU: these tests need no device.
+#include <algorithm>
 #include <fstream>
 
 #include <gtest/gtest.h>
@@ -120,6 +121,71 @@ TEST_F(ShaderCompilerTest, AnErrorInsideALineGetsACaretUnderItsToken) {
   EXPECT_EQ(error->line, 3) << result.diagnostics().to_text();
   EXPECT_EQ(error->excerpt, "  this is not glsl;");
   EXPECT_GT(error->column, 2) << result.diagnostics().to_text();
+}
+
+// glslang names no token for a syntax error ("'' : syntax error, unexpected FLOATCONSTANT") and
+// no column: the compiler finds the token it stopped at, here the fifth of five constants, in
+// a guarded header three files deep.
+TEST_F(ShaderCompilerTest, ASyntaxErrorInAnIncludedHeaderHasItsFileLineAndColumn) {
+  const std::string bad = "float weight() { return max(1.0, 2.0) + min(3.0, 4.0 5.0); }";
+  ASSERT_EQ(bad.find("5.0"), 53u);
+  write(root() / "lib" / "weights.glsl", "#ifndef WEIGHTS_GLSL\n#define WEIGHTS_GLSL\n" + bad +
+                                             "\nfloat ok() { return 1.0; }\n"
+                                             "#endif\n");
+  write(root() / "shaders" / "weighted.frag",
+        "#version 460\n#include \"common.glsl\"\n#include \"weights.glsl\"\n"
+        "layout(location = 0) out vec4 colour;\nvoid main() { colour = vec4(weight()); }\n");
+  ShaderCompiler compiler(options());
+  auto result = compiler.compile({root() / "shaders" / "weighted.frag", {}, {}, "main"});
+  ASSERT_FALSE(result.ok());
+  const base::Diagnostic* error = result.diagnostics().find(codes::shader::kCompile);
+  ASSERT_NE(error, nullptr) << result.diagnostics().to_text();
+  EXPECT_EQ(fs::path(error->file), fs::weakly_canonical(root() / "lib" / "weights.glsl"))
+      << result.diagnostics().to_text();
+  EXPECT_EQ(error->line, 3) << result.diagnostics().to_text();
+  EXPECT_EQ(error->column, 54) << result.diagnostics().to_text();
+  EXPECT_EQ(error->excerpt, bad);
+  EXPECT_NE(base::format_text(*error).find("weights.glsl:3:54: error[SH001]: '' :  syntax error, "
+                                           "unexpected FLOATCONSTANT"),
+            std::string::npos)
+      << base::format_text(*error);
+}
+
+// Issue 30's case: a syntax error far along a long line of the main file was reported at
+// column 1 of its line.
+TEST_F(ShaderCompilerTest, ASyntaxErrorFarAlongALineHasItsColumn) {
+  const std::string bad =
+      "  colour = vec4(texelFetch(hdr, ivec2(gl_FragCoord.xy), 0).rgb * vec3(0.5, 0.5, 0.5) "
+      "* vec3(1.0, 1.0 1.0), 1.0);";
+  ASSERT_EQ(bad.find("1.0 1.0") + 4, 101u);
+  write(root() / "shaders" / "long.frag",
+        "#version 460\nlayout(set = 0, binding = 0) uniform sampler2D hdr;\n"
+        "layout(location = 0) out vec4 colour;\n\nvoid main() {\n" +
+            bad + "\n}\n");
+  ShaderCompiler compiler(options());
+  auto result = compiler.compile({root() / "shaders" / "long.frag", {}, {}, "main"});
+  ASSERT_FALSE(result.ok());
+  const base::Diagnostic* error = result.diagnostics().find(codes::shader::kCompile);
+  ASSERT_NE(error, nullptr) << result.diagnostics().to_text();
+  EXPECT_EQ(fs::path(error->file).filename(), "long.frag");
+  EXPECT_EQ(error->line, 6) << result.diagnostics().to_text();
+  EXPECT_EQ(error->column, 102) << result.diagnostics().to_text();
+  EXPECT_EQ(error->excerpt, bad);
+}
+
+// An error that names no token and is no syntax error gets no column: no caret at a guess.
+TEST_F(ShaderCompilerTest, AnErrorWithoutATokenGetsNoColumn) {
+  write(root() / "shaders" / "word.frag", "#version 460\nvoid main() {\n  this is not glsl;\n}\n");
+  ShaderCompiler compiler(options());
+  auto result = compiler.compile({root() / "shaders" / "word.frag", {}, {}, "main"});
+  ASSERT_FALSE(result.ok());
+  const auto& diagnostics = result.diagnostics();
+  const auto terminated = std::find_if(diagnostics.begin(), diagnostics.end(), [](const auto& d) {
+    return d.message.find("compilation terminated") != std::string::npos;
+  });
+  ASSERT_NE(terminated, diagnostics.end()) << diagnostics.to_text();
+  EXPECT_EQ(terminated->line, 3);
+  EXPECT_EQ(terminated->column, 0);
 }
 
 TEST_F(ShaderCompilerTest, MissingIncludeAndUnknownStage) {

@@ -112,7 +112,7 @@ TEST(DependencyPhase, EdgesFollowDescriptionOrder) {
   EXPECT_EQ(p.deps.previous_frame[0].to, 0);
 }
 
-TEST(CyclePhase, ReportsEdgesLeft) {
+TEST(CyclePhase, ListsTheCycleInOrderClosedByTheAfter) {
   Builder b;
   b.image("a", Format::rgba8).image("b", Format::rgba8).image("o", Format::rgba8);
   b.pass("first", "composite", {}, {{"out", "a"}}, {"third"});
@@ -120,20 +120,87 @@ TEST(CyclePhase, ReportsEdgesLeft) {
   b.pass("third", "blur", {{"src", "b"}}, {{"dst", "o"}});
   Phases p(b.g);
   ASSERT_FALSE(p.diags.has_errors()) << p.diags.to_text();
-  const auto left = find_cycle_edges(p.deps, p.passes);
-  ASSERT_EQ(left.size(), 3u);
-  EXPECT_EQ(left[0], (DepEdge{0, 1, EdgeKind::read_after_write, 0}));
-  EXPECT_EQ(left[1], (DepEdge{1, 2, EdgeKind::read_after_write, 1}));
-  EXPECT_EQ(left[2], (DepEdge{2, 0, EdgeKind::after, -1}));
+  const std::vector<DepEdge> expected{
+      {0, 1, EdgeKind::read_after_write, 0},
+      {1, 2, EdgeKind::read_after_write, 1},
+      {2, 0, EdgeKind::after, -1},  // the closing edge comes last
+  };
+  EXPECT_EQ(find_cycle(p.deps, p.passes.size()), expected);
 }
 
-TEST(CyclePhase, AcyclicGraphLeavesNothing) {
+TEST(CyclePhase, TwoPassCycle) {
+  Builder b;
+  b.image("a", Format::rgba8).image("o", Format::rgba8);
+  b.pass("make", "composite", {}, {{"out", "a"}}, {"use"});
+  b.pass("use", "blur", {{"src", "a"}}, {{"dst", "o"}});
+  Phases p(b.g);
+  ASSERT_FALSE(p.diags.has_errors()) << p.diags.to_text();
+  const std::vector<DepEdge> expected{{0, 1, EdgeKind::read_after_write, 0},
+                                      {1, 0, EdgeKind::after, -1}};
+  EXPECT_EQ(find_cycle(p.deps, p.passes.size()), expected);
+}
+
+// Passes downstream of a cycle, or on a longer way around it, are not part of the message.
+TEST(CyclePhase, OnlyTheShortestWayAroundIsListed) {
+  Builder b;
+  b.image("a", Format::rgba8).image("b", Format::rgba8).image("c", Format::rgba8);
+  b.image("o", Format::rgba8);
+  b.pass("make", "composite", {}, {{"out", "a"}});
+  b.pass("long", "blur", {{"src", "a"}}, {{"dst", "b"}});
+  b.pass("join", "composite", {{"a", "a"}, {"b", "b"}}, {{"out", "c"}});
+  b.pass("tail", "blur", {{"src", "c"}}, {{"dst", "o"}});
+  b.g.passes[0].after = {"join"};
+  Phases p(b.g);
+  ASSERT_FALSE(p.diags.has_errors()) << p.diags.to_text();
+  const std::vector<DepEdge> expected{{0, 2, EdgeKind::read_after_write, 0},
+                                      {2, 0, EdgeKind::after, -1}};
+  EXPECT_EQ(find_cycle(p.deps, p.passes.size()), expected);
+}
+
+// A backward "after" that closes nothing only reorders; the one that does is reported.
+TEST(CyclePhase, SkipsBackwardAftersThatCloseNothing) {
+  Builder b;
+  b.image("a", Format::rgba8).image("b", Format::rgba8).image("o", Format::rgba8);
+  b.pass("free", "composite", {}, {{"out", "b"}}, {"use"});
+  b.pass("make", "composite", {}, {{"out", "a"}}, {"use"});
+  b.pass("use", "blur", {{"src", "a"}}, {{"dst", "o"}});
+  Phases p(b.g);
+  ASSERT_FALSE(p.diags.has_errors()) << p.diags.to_text();
+  const std::vector<DepEdge> expected{{1, 2, EdgeKind::read_after_write, 0},
+                                      {2, 1, EdgeKind::after, -1}};
+  EXPECT_EQ(find_cycle(p.deps, p.passes.size()), expected);
+}
+
+// Resources alone never make a cycle: a pass waits only for earlier writers, so a loop of
+// reads is a read before its writer (FG070 at the binding, naming the later writer) or, through
+// a persistent resource, a read of the previous frame.
+TEST(CyclePhase, AResourceLoopIsAReadBeforeItsWriterOrLastFrame) {
+  Builder b;
+  b.image("a", Format::rgba8).image("b", Format::rgba8);
+  b.pass("ping", "blur", {{"src", "b"}}, {{"dst", "a"}});
+  b.pass("pong", "blur", {{"src", "a"}}, {{"dst", "b"}});
+  Phases loop(b.g);
+  const Diagnostic* read = loop.diags.find(codes::kReadNeverWritten);
+  ASSERT_NE(read, nullptr) << loop.diags.to_text();
+  EXPECT_EQ(read->pointer, "/passes/0/in/src");
+  EXPECT_NE(read->message.find("'pong' writes it later"), std::string::npos) << read->message;
+  EXPECT_TRUE(find_cycle(loop.deps, loop.passes.size()).empty());
+
+  b.g.resources[1].persistent = true;
+  Phases persistent(b.g);
+  ASSERT_FALSE(persistent.diags.has_errors()) << persistent.diags.to_text();
+  EXPECT_TRUE(find_cycle(persistent.deps, persistent.passes.size()).empty());
+  ASSERT_EQ(persistent.deps.previous_frame.size(), 1u);
+  EXPECT_EQ(persistent.deps.previous_frame[0], (DepEdge{1, 0, EdgeKind::read_after_write, 1}));
+}
+
+TEST(CyclePhase, AcyclicGraphHasNone) {
   Builder b;
   b.image("a", Format::rgba8).image("o", Format::rgba8);
   b.pass("x", "composite", {}, {{"out", "a"}});
   b.pass("y", "blur", {{"src", "a"}}, {{"dst", "o"}});
   Phases p(b.g);
-  EXPECT_TRUE(find_cycle_edges(p.deps, p.passes).empty());
+  EXPECT_TRUE(find_cycle(p.deps, p.passes.size()).empty());
 }
 
 TEST(CullPhase, KeepsProducersOfOutputAndSideEffects) {

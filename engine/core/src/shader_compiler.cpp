@@ -10,6 +10,7 @@
 #include <glslang/Public/ShaderLang.h>
 #include <glslang/SPIRV/GlslangToSpv.h>
 
+#include "shader_error_column.hpp"
 #include "shader_source.hpp"
 
 namespace antumbra::gpu {
@@ -100,12 +101,17 @@ class Includer final : public glslang::TShader::Includer {
     delete result;
   }
   [[nodiscard]] const std::vector<fs::path>& opened() const { return opened_; }
+  // `path` reads `text` instead of the file's contents (the column probes' cut copies).
+  void replace(const fs::path& path, std::string text) {
+    replaced_path_ = path;
+    replaced_text_ = std::move(text);
+  }
 
  private:
   IncludeResult* open(const char* header, const fs::path& dir) {
     auto path = detail::resolve_include(header, dir, include_dirs_);
     if (!path) return nullptr;  // glslang reports the failed #include with its location
-    auto text = detail::read_text(*path);
+    auto text = *path == replaced_path_ ? replaced_text_ : detail::read_text(*path);
     if (!text) return nullptr;
     if (std::find(opened_.begin(), opened_.end(), *path) == opened_.end()) {
       opened_.push_back(*path);
@@ -116,6 +122,8 @@ class Includer final : public glslang::TShader::Includer {
 
   const std::vector<fs::path>& include_dirs_;
   std::vector<fs::path> opened_;
+  fs::path replaced_path_;
+  std::optional<std::string> replaced_text_;
 };
 
 base::Diagnostic make_error(const char* code, std::string message, const std::string& file) {
@@ -126,85 +134,79 @@ base::Diagnostic make_error(const char* code, std::string message, const std::st
   return diagnostic;
 }
 
-std::vector<std::string> split_lines(const std::string& text) {
-  std::vector<std::string> lines;
-  std::istringstream in(text);
-  std::string line;
-  while (std::getline(in, line)) {
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    lines.push_back(line);
+// Everything a parse of the shader takes but the text of its files, so that the column
+// probes parse exactly as the compile did.
+struct ParseSetup {
+  EShLanguage language = EShLangCompute;
+  std::string name;  // the top-level file, as glslang names it in its log
+  std::string preamble;
+  std::string entry_point;
+  const std::vector<fs::path>* include_dirs = nullptr;
+};
+
+constexpr auto kMessages = static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules);
+
+std::string make_preamble(const std::vector<ShaderDefine>& defines) {
+  // Include support is always on, so shaders need no #extension line for it.
+  std::string preamble = "#extension GL_GOOGLE_include_directive : enable\n";
+  for (const auto& define : defines) {
+    preamble += "#define " + define.name + (define.value.empty() ? "" : " " + define.value) + "\n";
   }
-  return lines;
+  return preamble;
 }
 
-bool blank(const std::string& line) {
-  return line.find_first_not_of(" \t") == std::string::npos;
+bool parse(glslang::TShader& shader, const ParseSetup& setup, const std::string& source,
+           Includer& includer) {
+  const char* text = source.c_str();
+  const int length = static_cast<int>(source.size());
+  const char* names[] = {setup.name.c_str()};
+  shader.setStringsWithLengthsAndNames(&text, &length, names, 1);
+  shader.setPreamble(setup.preamble.c_str());
+  // SPIR-V always calls the entry point "main"; another GLSL function may serve as it.
+  shader.setEntryPoint("main");
+  if (setup.entry_point != "main") shader.setSourceEntryPoint(setup.entry_point.c_str());
+  shader.setEnvInput(glslang::EShSourceGlsl, setup.language, glslang::EShClientVulkan, 100);
+  // Vulkan 1.2 / SPIR-V 1.5 for every device: a 1.2 device (RenderDoc 1.24 reports every
+  // device as one) rejects SPIR-V 1.6, and no shader needs what 1.6 adds.
+  shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_2);
+  shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_5);
+  return shader.parse(GetDefaultResources(), 460, false, kMessages, includer);
 }
 
-// glslang reports a syntax error at the token where parsing failed, often without naming
-// it (''); when that token starts its line and the previous non-blank line does not end
-// a statement or block (a missing ';' or ')'), the mistake is at the end of that previous
-// line. The diagnostic then points there, with the source line and the column of the
-// token (or of the line's end) for the caret.
-void point_into_source(base::Diagnostic& diagnostic, const std::string& text) {
-  const auto lines = split_lines(text);
-  if (diagnostic.line < 1 || diagnostic.line > static_cast<int>(lines.size())) return;
-  auto index = static_cast<std::size_t>(diagnostic.line - 1);
-  std::string token;
-  const auto open = diagnostic.message.find('\'');
-  const auto close = open == std::string::npos ? open : diagnostic.message.find('\'', open + 1);
-  if (close != std::string::npos) token = diagnostic.message.substr(open + 1, close - open - 1);
-  const std::string& line = lines[index];
-  const auto first = line.find_first_not_of(" \t");
-  const bool starts_line = token.empty() || (first != std::string::npos &&
-                                             line.compare(first, token.size(), token) == 0);
-  if (diagnostic.message.find("syntax error") != std::string::npos && starts_line) {
-    std::size_t previous = index;
-    while (previous > 0 && blank(lines[previous - 1])) --previous;
-    const auto unfinished = [](const std::string& source_line) {
-      const auto last = source_line.find_last_not_of(" \t");
-      return last != std::string::npos && source_line[last] != ';' && source_line[last] != '{' &&
-             source_line[last] != '}' &&
-             source_line.compare(source_line.find_first_not_of(" \t"), 1, "#") != 0 &&
-             source_line.find("//") == std::string::npos;
-    };
-    if (previous > 0 && unfinished(lines[previous - 1])) {
-      index = previous - 1;
-      diagnostic.line = static_cast<int>(index) + 1;
-      const std::string& before = lines[index];
-      diagnostic.column = static_cast<int>(before.find_last_not_of(" \t") + 2);
-      diagnostic.message += " (at the end of this line: a missing ';' or ')'?)";
-      diagnostic.excerpt = before;
-      return;
-    }
-  }
-  diagnostic.excerpt = line;
-  const auto at = token.empty() ? std::string::npos : line.find(token);
-  if (at != std::string::npos) {
-    diagnostic.column = static_cast<int>(at) + 1;
-  } else if (first != std::string::npos) {
-    diagnostic.column = static_cast<int>(first) + 1;
-  }
+// Whether `error` is reported again when `file` (the top-level one or an include) reads
+// `text`: the probe detail::locate_in_source uses to find a syntax error's token.
+bool reproduces(const ParseSetup& setup, const std::string& source, const base::Diagnostic& error,
+                const std::string& file, const std::string& text) {
+  glslang::TShader shader(setup.language);
+  Includer includer(*setup.include_dirs);
+  const bool top = file == setup.name;
+  if (!top) includer.replace(file, text);
+  parse(shader, setup, top ? text : source, includer);
+  const base::Diagnostics log = parse_glslang_log(shader.getInfoLog(), setup.name);
+  return std::any_of(log.begin(), log.end(), [&](const base::Diagnostic& d) {
+    return d.file == error.file && d.line == error.line && d.message == error.message;
+  });
 }
 
-// Source lines and carets for every located diagnostic: the top-level file's text is at
-// hand, included files are read again.
-void add_excerpts(base::Diagnostics& diagnostics, const std::string& top_name,
-                  const std::string& top_source) {
+// Columns, source lines and carets for every located diagnostic: the top-level file's text is
+// at hand, included files are read again.
+void locate_errors(base::Diagnostics& diagnostics, const ParseSetup& setup,
+                   const std::string& source) {
   base::Diagnostics out;
   for (base::Diagnostic d : diagnostics) {
-    if (d.line > 0) {
-      if (d.file == top_name) {
-        point_into_source(d, top_source);
-      } else if (const auto text = detail::read_text(d.file)) {
-        point_into_source(d, *text);
-      }
+    const auto text = d.line < 1             ? std::nullopt
+                      : d.file == setup.name ? std::optional<std::string>(source)
+                                             : detail::read_text(d.file);
+    if (text) {
+      const base::Diagnostic original = d;
+      detail::locate_in_source(d, *text, [&](const std::string& file, const std::string& cut) {
+        return reproduces(setup, source, original, file, cut);
+      });
     }
     out.add(std::move(d));
   }
   diagnostics = std::move(out);
 }
-
 }  // namespace
 
 base::Diagnostics parse_glslang_log(std::string_view log, const std::string& fallback_file) {
@@ -316,31 +318,13 @@ base::Result<ShaderBinary> ShaderCompiler::compile_glsl(const std::string& sourc
   const EShLanguage language = to_glslang(stage);
   glslang::TShader shader(language);
   const std::string name = path.string();
-  const char* text = source.c_str();
-  const int length = static_cast<int>(source.size());
-  const char* names[] = {name.c_str()};
-  shader.setStringsWithLengthsAndNames(&text, &length, names, 1);
-  // Include support is always on, so shaders need no #extension line for it.
-  std::string preamble = "#extension GL_GOOGLE_include_directive : enable\n";
-  for (const auto& define : defines) {
-    preamble += "#define " + define.name + (define.value.empty() ? "" : " " + define.value) + "\n";
-  }
-  shader.setPreamble(preamble.c_str());
-  // SPIR-V always calls the entry point "main"; another GLSL function may serve as it.
-  shader.setEntryPoint("main");
-  if (entry_point != "main") shader.setSourceEntryPoint(entry_point.c_str());
-  shader.setEnvInput(glslang::EShSourceGlsl, language, glslang::EShClientVulkan, 100);
-  // Vulkan 1.2 / SPIR-V 1.5 for every device: a 1.2 device (RenderDoc 1.24 reports every
-  // device as one) rejects SPIR-V 1.6, and no shader needs what 1.6 adds.
-  shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_2);
-  shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_5);
-
+  const ParseSetup setup{language, name, make_preamble(defines), entry_point,
+                         &options_.include_dirs};
   Includer includer(options_.include_dirs);
-  const auto messages = static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules);
   base::Diagnostics diagnostics;
-  if (!shader.parse(GetDefaultResources(), 460, false, messages, includer)) {
+  if (!parse(shader, setup, source, includer)) {
     diagnostics = parse_glslang_log(shader.getInfoLog(), name);
-    add_excerpts(diagnostics, name, source);
+    locate_errors(diagnostics, setup, source);
     if (!diagnostics.has_errors()) {
       diagnostics.add(
           make_error(codes::shader::kCompile, "glslang failed without a message", name));
@@ -348,11 +332,11 @@ base::Result<ShaderBinary> ShaderCompiler::compile_glsl(const std::string& sourc
     return diagnostics;
   }
   diagnostics = parse_glslang_log(shader.getInfoLog(), name);
-  add_excerpts(diagnostics, name, source);
+  locate_errors(diagnostics, setup, source);
 
   glslang::TProgram program;
   program.addShader(&shader);
-  if (!program.link(messages)) {
+  if (!program.link(kMessages)) {
     base::Diagnostics link = parse_glslang_log(program.getInfoLog(), name);
     for (const auto& d : link) {
       base::Diagnostic copy = d;

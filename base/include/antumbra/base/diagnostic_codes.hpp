@@ -65,7 +65,7 @@ inline constexpr const char* kBadImport = "FG059";  // "import" on a buffer, or 
 
 // Dependency graph.
 inline constexpr const char* kReadNeverWritten = "FG070";  // read of a resource nobody wrote
-inline constexpr const char* kCycle = "FG071";             // message lists the edges left
+inline constexpr const char* kCycle = "FG071";             // at the closing edge; lists the cycle
 inline constexpr const char* kOutputNotImage = "FG072";
 inline constexpr const char* kOutputNotProduced = "FG073";  // no executed pass writes it
 inline constexpr const char* kPassCulled = "FG074";         // note: outputs reach nothing

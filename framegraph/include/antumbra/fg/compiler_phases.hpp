@@ -55,9 +55,10 @@ void bind_ports(const GraphDesc& graph, std::vector<ResolvedPass>& passes, Diagn
 DependencyGraph build_dependencies(const GraphDesc& graph, const std::vector<ResolvedPass>& passes,
                                    Diagnostics& diags);
 
-// Kahn's algorithm over enabled passes; returns the edges left when a cycle blocks it.
-std::vector<DepEdge> find_cycle_edges(const DependencyGraph& deps,
-                                      const std::vector<ResolvedPass>& passes);
+// One cycle among the passes, in order, its closing edge last: the backward edge (in file
+// order; always an "after" entry) that the author most likely added, and the fewest edges
+// from its target back to its source. Empty when the passes are acyclic.
+std::vector<DepEdge> find_cycle(const DependencyGraph& deps, std::size_t pass_count);
 
 // Passes whose writes reach the output (or that have side effects): true = keep.
 std::vector<bool> cull_passes(const DependencyGraph& deps, const std::vector<ResolvedPass>& passes,

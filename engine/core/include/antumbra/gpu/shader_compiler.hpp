@@ -1,8 +1,9 @@
 #pragma once
 // Run-time GLSL -> SPIR-V (glslang), with #include "x" resolved relative to the
 // including file and then to include directories, #defines, diagnostics that point
-// at the real file:line, and an on-disk SPIR-V cache keyed by a hash of the stage,
-// entry point, defines and the content of the source and every file it includes.
+// at the real file:line:column (an included file's own), and an on-disk SPIR-V cache
+// keyed by a hash of the stage, entry point, defines and the content of the source and
+// every file it includes.
 //
 // Cache directory: ShaderCompilerOptions::cache_dir, else $ANTUMBRA_CACHE_DIR/spirv,
 // else $XDG_CACHE_HOME/antumbra/spirv, else ~/.cache/antumbra/spirv.
