@@ -233,6 +233,7 @@ TEST(SuggestFix, SaysWhyWhenNoFixExistsWithinTheLimits) {
   // Five lamps within 10 cm of each other: no range cut to half separates two of them,
   // and moves are limited to 1 m.
   std::vector<Lamp> lamps;
+  lamps.reserve(5);
   for (int i = 0; i < 5; ++i) lamps.push_back({0.02f * static_cast<float>(i), 0.0f, 2.0f});
   const SceneDocument doc = scene_of(lamps);
   FixSearchOptions limits;
@@ -362,9 +363,10 @@ double milliseconds_to_suggest(std::span<const scene::PointLight> lights, int k,
 // 1024 lamps on a 32x32 grid, `spacing` metres apart, range 1.
 std::vector<Lamp> grid_of_1024(float spacing) {
   std::vector<Lamp> lamps;
+  lamps.reserve(1024);
   for (int i = 0; i < 1024; ++i) {
     lamps.push_back(
-        {spacing * static_cast<float>(i % 32), spacing * static_cast<float>(i / 32), 1.0f});
+        {spacing * static_cast<float>(i % 32), spacing * static_cast<float>(i >> 5), 1.0f});
   }
   return lamps;
 }
@@ -383,7 +385,7 @@ TEST(SuggestFixTiming, TheAtriumAnd1024Lights) {
   for (Lamp& lamp : lamps) lamp.range = 1.2f;
   for (int g = 0; g < 2; ++g) {
     for (int i = 0; i < 4; ++i) {
-      lamps[static_cast<std::size_t>(g * 600 + i)] = {
+      lamps[(600 * static_cast<std::size_t>(g)) + static_cast<std::size_t>(i)] = {
           200.0f + 50.0f * static_cast<float>(g) + (i % 2 == 0 ? 0.0f : 1.0f), i < 2 ? 0.0f : 1.0f,
           2.0f};
     }

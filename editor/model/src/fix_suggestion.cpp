@@ -307,9 +307,9 @@ EditResult apply_fix(SceneDocument& document, const MultiLightFix& fix) {
     }
     // By name: editing an imported light adds an override entry, which renumbers lights.
     const int light = document.find_light(change.name);
-    const EditResult result =
-        light < 0 ? EditResult::refused("the scene changed since the fix was computed")
-                  : document.apply(static_cast<std::size_t>(light), changes, description);
+    EditResult result = light < 0
+                            ? EditResult::refused("the scene changed since the fix was computed")
+                            : document.apply(static_cast<std::size_t>(light), changes, description);
     if (!result) {
       document.end_gesture();
       if (applied) document.undo();
