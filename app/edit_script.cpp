@@ -216,10 +216,16 @@ class ScriptRun {
     if (what == "duplicate-light") return scene.duplicate_light(light_index(step));
     if (what == "delete-light") return scene.delete_light(light_index(step));
     if (what == "apply-fix") {
-      const editor::FixSuggestion fix = edit_.status().suggestion(scene);
-      if (fix.best() == nullptr) throw StepError{"no fix to apply: " + fix.message};
-      std::printf("  fix: %s\n", fix.best()->description.c_str());
-      return editor::apply_fix(scene, *fix.best());
+      const editor::FixSuggestion fix = edit_.status().suggestion(scene);  // a copy
+      if (fix.changes().empty()) throw StepError{"no fix to apply: " + fix.message};
+      if (fix.changes().size() == 1) {
+        std::printf("  fix: %s\n", fix.description().c_str());
+      } else {  // several lights, one undo step: a line per light
+        std::printf("  fix: change %zu lights (one undo step)\n", fix.changes().size());
+        for (const editor::LayerFix& change : fix.changes())
+          std::printf("    %s\n", change.description.c_str());
+      }
+      return editor::apply_fix(scene, fix);
     }
     throw StepError{"unknown action '" + what + "'"};
   }

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # antumbra edit --headless --script: the scripted editing run of issue 4 on lavapipe with
 # validation: a light moved into conflict warns (model and frame), undo clears it, the
-# computed fix applies, save writes the file, a broken graph and a shader error keep the
+# computed fix applies (on the default atrium at a cap of 3, a fix of several lights as one
+# step), save writes the file, a broken graph and a shader error keep the
 # last good frame with located diagnostics, fixing them swaps the new state in, and the
 # cap edited through the graph's reflection warns again. Also a failing expectation
 # must fail the run (a test that cannot fail is no test).
@@ -60,6 +61,16 @@ rc=$?
 grep -q "off_plane_drag.json:5:[0-9]*: error\[ED100\]: .*m from the target" "$log" \
   || fail "the missed target is not a located ED100"
 grep -q "unsaved changes to .*atrium.json were not saved" "$log" || fail "no unsaved-changes warning"
+
+# The default atrium at a cap of 3: no one-light fix exists; the fix changes several
+# lights, printed a line each, applied and undone as one step.
+cp "$source_root/tests/data/editor/script/atrium_fix.json" "$tmp/"
+"$antumbra" edit --headless --size 160x90 --script "$tmp/atrium_fix.json" >"$log" 2>&1
+rc=$?
+[ $rc -eq 0 ] || fail "the atrium fix exited with $rc"
+grep -q "0 step(s) failed" "$log" || fail "a step of the atrium fix failed"
+grep -q "fix: change [0-9]* lights (one undo step)" "$log" || fail "no several-light fix printed"
+grep -q "^    reduce range of '\|^    move '" "$log" || fail "the fix's changes are not listed"
 
 # A script runs headless only (the windowed editor has its own test, editor_window_test.sh).
 "$antumbra" edit --script "$tmp/edit.json" >"$log" 2>&1

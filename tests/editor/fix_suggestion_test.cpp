@@ -1,5 +1,7 @@
 // Suggested fixes: computed by search, verified by re-colouring, applied as one undoable
 // command, and really bringing the layout under the cap (also on random layouts).
+#include <chrono>
+#include <cstdio>
 #include <random>
 #include <sstream>
 
@@ -66,6 +68,16 @@ void expect_fix_fits(const std::vector<scene::PointLight>& lights, const LayerFi
   EXPECT_EQ(report.layers_needed, fix.layers_needed);
 }
 
+// The lights with every change of a several-light fix made.
+std::vector<scene::PointLight> lights_with(std::vector<scene::PointLight> lights,
+                                           const MultiLightFix& fix) {
+  for (const LayerFix& c : fix.changes) {
+    lights[c.light].range = c.new_range;
+    lights[c.light].position = c.new_position;
+  }
+  return lights;
+}
+
 TEST(SuggestFix, NothingToFixWhenTheLayoutFits) {
   const auto doc = SceneDocument::load(fixture("lamps.json"));
   const FixSuggestion s = suggest_fix(doc->lights(), cap(3));
@@ -84,6 +96,9 @@ TEST(SuggestFix, ShrinksOneRangeOfATriangleAsOneUndoableStep) {
   ASSERT_TRUE(s.range_fix.has_value()) << s.message;
   ASSERT_TRUE(s.move_fix.has_value()) << s.message;
   EXPECT_EQ(s.best(), &*s.range_fix);
+  EXPECT_FALSE(s.multi_fix.has_value());  // one light suffices: nothing bigger is searched
+  ASSERT_EQ(s.changes().size(), 1u);
+  EXPECT_EQ(s.description(), s.range_fix->description);
   // c sits inside both a's and b's reach, so only cutting the a-b overlap helps:
   // |ab| = 3 and r_b = 2, so a's range must drop below 1 (touching is no conflict).
   const LayerFix& fix = *s.range_fix;
@@ -123,15 +138,19 @@ TEST(SuggestFix, AStaleFixIsRefused) {
   EXPECT_FALSE(apply_fix(doc, *s.best()));
 }
 
-TEST(SuggestFix, SaysSoWhenNoSingleLightFixExists) {
-  // Two separate tight groups of four: each needs 4 layers, a change to one light can
-  // fix only one group.
+// Two separate tight groups of four: each needs 4 layers, a change to one light can fix
+// only one group.
+std::vector<Lamp> two_groups_of_four() {
   std::vector<Lamp> lamps;
   for (float base : {0.0f, 20.0f}) {
     for (int i = 0; i < 4; ++i)
       lamps.push_back({base + (i % 2 == 0 ? 0.0f : 1.0f), i < 2 ? 0.0f : 1.0f, 2.0f});
   }
-  const SceneDocument doc = scene_of(lamps);
+  return lamps;
+}
+
+TEST(SuggestFix, ChangesOneLightPerGroupWhenNoSingleLightFixExists) {
+  const SceneDocument doc = scene_of(two_groups_of_four());
   const FixSuggestion s = suggest_fix(doc.lights(), cap(3));
   EXPECT_TRUE(s.needed);
   EXPECT_FALSE(s.range_fix.has_value());
@@ -139,6 +158,107 @@ TEST(SuggestFix, SaysSoWhenNoSingleLightFixExists) {
   EXPECT_EQ(s.best(), nullptr);
   EXPECT_NE(s.message.find("no change to one light"), std::string::npos) << s.message;
   EXPECT_NE(s.message.find("needs 4"), std::string::npos) << s.message;
+  ASSERT_TRUE(s.multi_fix.has_value()) << s.message;
+  ASSERT_EQ(s.multi_fix->changes.size(), 2u) << s.message;
+  EXPECT_LT(s.multi_fix->changes[0].light, 4u);  // one in each group
+  EXPECT_GE(s.multi_fix->changes[1].light, 4u);
+  EXPECT_EQ(s.changes().size(), 2u);
+  EXPECT_EQ(s.description(), s.multi_fix->description);
+  EXPECT_NE(s.message.find(s.multi_fix->description), std::string::npos) << s.message;
+  EXPECT_FALSE(analyse_layers(lights_with(doc.lights(), *s.multi_fix), cap(3)).over_cap());
+}
+
+TEST(SuggestFix, DefaultAtriumAtCapThreeGetsASeveralLightFix) {
+  auto doc = testing::take(SceneDocument::load(testing::source_file("data/scenes/atrium.json")));
+  const std::vector<scene::PointLight> before = doc.lights();
+  LayerStatus status(cap(3));
+  ASSERT_TRUE(status.update(doc).over_cap());
+  EXPECT_EQ(status.report().layers_needed, 4);     // a 4x4 grid where every 2x2 block is a K4
+  const FixSuggestion s = status.suggestion(doc);  // a copy: the cache changes with the edit
+  ASSERT_TRUE(s.needed);
+  EXPECT_EQ(s.best(), nullptr) << "a one-light fix of the atrium? " << s.message;
+  ASSERT_TRUE(s.multi_fix.has_value()) << s.message;
+  const MultiLightFix& fix = *s.multi_fix;
+  // Each change only removes conflicts of its own light, and the four corner 2x2 blocks
+  // share no light: no fix can change fewer than four lights.
+  EXPECT_EQ(fix.changes.size(), 4u) << fix.description;
+  for (const LayerFix& change : fix.changes) {
+    EXPECT_EQ(doc.lights()[change.light].name, change.name);
+    if (change.kind == FixKind::reduce_range) {
+      EXPECT_LT(change.new_range, change.old_range);
+      EXPECT_GE(change.new_range, 0.5f * change.old_range);  // the default limit
+    }
+  }
+  // The real colouring of the changed lights fits the cap.
+  const LayerReport fixed = analyse_layers(lights_with(doc.lights(), fix), cap(3));
+  EXPECT_FALSE(fixed.over_cap()) << fix.description;
+  EXPECT_LE(fixed.layers_needed, 3);
+  EXPECT_EQ(fixed.layers_needed, fix.layers_needed);
+
+  // Applied: one undo step that brings the document under the cap ...
+  const std::size_t steps = doc.history().undo_count();
+  const EditResult applied = apply_fix(doc, s);
+  ASSERT_TRUE(applied) << applied.message;
+  EXPECT_TRUE(applied.changed);
+  EXPECT_EQ(doc.history().undo_count(), steps + 1);
+  EXPECT_EQ(doc.history().undo_description(), "Suggested fix: change 4 lights");
+  EXPECT_FALSE(status.update(doc).over_cap());
+  EXPECT_LE(status.report().layers_needed, 3);
+  EXPECT_FALSE(status.suggestion(doc).needed);
+  const auto scene = scene::parse_scene_text(doc.to_text(), doc.file().string());
+  ASSERT_TRUE(scene.ok());
+  EXPECT_FALSE(analyse_layers(scene->lights, cap(3)).over_cap());
+  // ... and one undo restores every light exactly; redo makes every change again.
+  ASSERT_TRUE(doc.undo());
+  testing::expect_same_lights(before, doc.lights());
+  EXPECT_FALSE(doc.can_undo());
+  EXPECT_FALSE(doc.dirty());
+  ASSERT_TRUE(doc.redo());
+  testing::expect_same_lights(lights_with(before, fix), doc.lights());
+}
+
+TEST(SuggestFix, AStaleSeveralLightFixChangesNothing) {
+  auto doc = scene_of(two_groups_of_four());
+  const FixSuggestion s = suggest_fix(doc.lights(), cap(3));
+  ASSERT_TRUE(s.multi_fix.has_value()) << s.message;
+  ASSERT_TRUE(doc.set_name(s.multi_fix->changes.back().light, "renamed"));
+  const std::vector<scene::PointLight> before = doc.lights();
+  const std::size_t steps = doc.history().undo_count();
+  EXPECT_FALSE(apply_fix(doc, s));
+  EXPECT_EQ(doc.history().undo_count(), steps);
+  testing::expect_same_lights(before, doc.lights());
+}
+
+TEST(SuggestFix, SaysWhyWhenNoFixExistsWithinTheLimits) {
+  // Five lamps within 10 cm of each other: no range cut to half separates two of them,
+  // and moves are limited to 1 m.
+  std::vector<Lamp> lamps;
+  lamps.reserve(5);
+  for (int i = 0; i < 5; ++i) lamps.push_back({0.02f * static_cast<float>(i), 0.0f, 2.0f});
+  const SceneDocument doc = scene_of(lamps);
+  FixSearchOptions limits;
+  limits.max_move = 1.0f;
+  const FixSuggestion s = suggest_fix(doc.lights(), cap(3), limits);
+  EXPECT_TRUE(s.needed);
+  EXPECT_EQ(s.best(), nullptr);
+  EXPECT_FALSE(s.multi_fix.has_value());
+  EXPECT_TRUE(s.changes().empty());
+  EXPECT_NE(s.message.find("nor changes to several within the limits"), std::string::npos)
+      << s.message;
+  EXPECT_NE(s.message.find("neither leaves the other's reach keeping 50% of its range or "
+                           "moving up to 1.0 m"),
+            std::string::npos)
+      << s.message;
+  auto copy = scene_of(lamps);
+  EXPECT_FALSE(apply_fix(copy, s));
+
+  // The atrium under a limit of three changed lights: its fix needs four.
+  const auto atrium = SceneDocument::load(testing::source_file("data/scenes/atrium.json"));
+  limits = {};
+  limits.max_lights_changed = 3;
+  const FixSuggestion a = suggest_fix(atrium->lights(), cap(3), limits);
+  EXPECT_FALSE(a.multi_fix.has_value());
+  EXPECT_NE(a.message.find("at most 3 lights"), std::string::npos) << a.message;
 }
 
 // For one light, the largest range on the centimetre grid that fits, by brute force.
@@ -159,6 +279,7 @@ TEST(SuggestFix, RandomLayoutsWithAFixedSeed) {
   int over_cap = 0;
   int range_fixes = 0;
   int move_fixes = 0;
+  int multi_fixes = 0;
   for (int layout = 0; layout < 40; ++layout) {
     SCOPED_TRACE("layout " + std::to_string(layout));
     const bool sun = layout % 4 >= 2;  // the sun's own layer raises the cap it needs by one
@@ -203,6 +324,14 @@ TEST(SuggestFix, RandomLayoutsWithAFixedSeed) {
       EXPECT_FALSE(analyse_layers(doc.lights(), cap(k)).over_cap());
       ASSERT_TRUE(doc.undo());
       EXPECT_TRUE(analyse_layers(doc.lights(), cap(k)).over_cap());
+    } else if (s.multi_fix) {  // several lights: one step, and undo restores every one
+      ++multi_fixes;
+      EXPECT_NE(s.message.find("no change to one light"), std::string::npos) << s.message;
+      const std::vector<scene::PointLight> before = doc.lights();
+      ASSERT_TRUE(apply_fix(doc, s));
+      EXPECT_FALSE(analyse_layers(doc.lights(), cap(k)).over_cap()) << s.message;
+      ASSERT_TRUE(doc.undo());
+      testing::expect_same_lights(before, doc.lights());
     } else {
       EXPECT_NE(s.message.find("no change"), std::string::npos);
     }
@@ -211,9 +340,75 @@ TEST(SuggestFix, RandomLayoutsWithAFixedSeed) {
   RecordProperty("over_cap", over_cap);
   RecordProperty("range_fixes", range_fixes);
   RecordProperty("move_fixes", move_fixes);
+  RecordProperty("multi_fixes", multi_fixes);
   EXPECT_GE(over_cap, 10);
   EXPECT_GE(range_fixes, 3);
   EXPECT_GE(move_fixes, 3);
+}
+
+}  // namespace
+}  // namespace antumbra::editor
+
+namespace antumbra::editor {
+namespace {
+
+double milliseconds_to_suggest(std::span<const scene::PointLight> lights, int k,
+                               FixSuggestion& out) {
+  const auto start = std::chrono::steady_clock::now();
+  out = suggest_fix(lights, cap(k));
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+      .count();
+}
+
+// 1024 lamps on a 32x32 grid, `spacing` metres apart, range 1.
+std::vector<Lamp> grid_of_1024(float spacing) {
+  std::vector<Lamp> lamps;
+  lamps.reserve(1024);
+  for (int i = 0; i < 1024; ++i) {
+    lamps.push_back(
+        {spacing * static_cast<float>(i % 32), spacing * static_cast<float>(i >> 5), 1.0f});
+  }
+  return lamps;
+}
+
+TEST(SuggestFixTiming, TheAtriumAnd1024Lights) {
+  FixSuggestion s;
+  const auto atrium = SceneDocument::load(testing::source_file("data/scenes/atrium.json"));
+  double atrium_ms = 1e9;
+  for (int i = 0; i < 5; ++i)
+    atrium_ms = std::min(atrium_ms, milliseconds_to_suggest(atrium->lights(), 3, s));
+  EXPECT_TRUE(s.multi_fix.has_value());
+  const std::string atrium_fix = s.description();
+
+  // Sparse (no conflicts) but for two tight groups of four, far apart: two lights change.
+  std::vector<Lamp> lamps = grid_of_1024(3.0f);
+  for (Lamp& lamp : lamps) lamp.range = 1.2f;
+  for (int g = 0; g < 2; ++g) {
+    for (int i = 0; i < 4; ++i) {
+      lamps[(600 * static_cast<std::size_t>(g)) + static_cast<std::size_t>(i)] = {
+          200.0f + 50.0f * static_cast<float>(g) + (i % 2 == 0 ? 0.0f : 1.0f), i < 2 ? 0.0f : 1.0f,
+          2.0f};
+    }
+  }
+  const SceneDocument sparse = scene_of(lamps);
+  const double sparse_ms = milliseconds_to_suggest(sparse.lights(), 3, s);
+  ASSERT_TRUE(s.multi_fix.has_value()) << s.message;
+  EXPECT_EQ(s.multi_fix->changes.size(), 2u);
+
+  // Over the cap everywhere (the atrium's king graph, 32x32): far past any fix of a few
+  // lights, so the search must give up quickly, saying why.
+  std::vector<Lamp> dense = grid_of_1024(1.5f);
+  for (Lamp& lamp : dense) lamp.range = 1.1f;  // diagonals 2.12 m apart conflict
+  const SceneDocument crowded = scene_of(dense);
+  const double dense_ms = milliseconds_to_suggest(crowded.lights(), 3, s);
+  EXPECT_FALSE(s.multi_fix.has_value());
+  EXPECT_NE(s.message.find("nor changes to several"), std::string::npos) << s.message;
+  std::printf("atrium fix: %s\n", atrium_fix.c_str());
+  std::printf("suggest_fix: atrium %.2f ms, 1024 sparse %.1f ms, 1024 crowded %.1f ms\n  %s\n",
+              atrium_ms, sparse_ms, dense_ms, s.message.c_str());
+  RecordProperty("atrium_ms", std::to_string(atrium_ms));
+  RecordProperty("sparse_1024_ms", std::to_string(sparse_ms));
+  RecordProperty("crowded_1024_ms", std::to_string(dense_ms));
 }
 
 }  // namespace

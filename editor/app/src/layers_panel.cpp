@@ -114,9 +114,17 @@ void draw_map(EditorState& state, const editor::LayerReport& report) {
 void draw_fix(EditorState& state) {
   const editor::FixSuggestion fix = state.status().suggestion(state.scene());  // a copy
   if (!fix.needed) return;
-  ImGui::TextWrapped("Suggested fix: %s", fix.message.c_str());
-  if (fix.best() == nullptr) return;
-  if (ImGui::Button("Apply fix")) state.scene_edited(editor::apply_fix(state.scene(), *fix.best()));
+  if (fix.multi_fix) {  // several lights: why, then a line per light
+    ImGui::TextWrapped("Suggested fix: no change to one light is enough; change %zu lights:",
+                       fix.multi_fix->changes.size());
+    for (const editor::LayerFix& change : fix.multi_fix->changes)
+      ImGui::BulletText("%s", change.description.c_str());
+  } else {
+    ImGui::TextWrapped("Suggested fix: %s", fix.message.c_str());
+  }
+  if (fix.changes().empty()) return;
+  // One undo step, however many lights it changes.
+  if (ImGui::Button("Apply fix")) state.scene_edited(editor::apply_fix(state.scene(), fix));
 }
 
 }  // namespace

@@ -60,6 +60,7 @@ bool EditSession::start(scene::ImageCache* images) {
   }
   scene_camera_ = parsed->camera;
   drag_limit_ = editor::drag_limit(parsed.value());
+  status_.set_fix_bounds(parsed->bounds);  // a suggested move keeps lights in the scene
   camera_.reset(scene_camera_);
   renderer_.set_scene(std::move(parsed.value()));
   renderer_.set_camera(camera_.camera());  // what picking and overlays assume
@@ -152,6 +153,7 @@ void EditSession::reload_scene_file() {
   gesture_open_ = false;
   scene_camera_ = parsed->camera;
   drag_limit_ = editor::drag_limit(parsed.value());
+  status_.set_fix_bounds(parsed->bounds);
   renderer_.set_scene(std::move(parsed.value()));
   renderer_.set_camera(camera_.camera());  // the artist's view stays where it was
   status_.update(scene_);

@@ -9,86 +9,27 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <vector>
 
 #include <glm/geometric.hpp>
 
 #include "antumbra/editor/scene_document.hpp"
 #include "antumbra/layering/scene_spheres.hpp"
+#include "fix_search.hpp"
+#include "multi_light_fix.hpp"
 #include "shared/limits.h"
 
 namespace antumbra::editor {
 namespace {
 
+using detail::conflict_threshold;
+using detail::FitCheck;
+using detail::in_quotes;
+using detail::kMargin;
+using detail::metres;
+using detail::round_down;
+using detail::round_nearest;
 using layering::LightSphere;
-
-// Keeps a tested value off the exact touching distance, where rounding decides.
-constexpr double kMargin = 1e-4;
-
-class FitCheck {
- public:
-  explicit FitCheck(const layering::LayeringOptions& options) : options_(options) {}
-  [[nodiscard]] int cap() const { return std::clamp(options_.max_layers, 1, layering::kMaxLayers); }
-  // A fresh frame's colouring (no history) of these lights fits the cap: nothing
-  // overflows and the uncapped colouring needs no more than the cap.
-  bool fits(std::span<const scene::PointLight> lights, int& needed) {
-    layering::gather_light_spheres(lights, shared::kMaxShadowLights, spheres_, scene_index_);
-    const auto& a =
-        layering_.assign(builder_.build_world_sphere(spheres_), spheres_, options_, nullptr);
-    needed = a.layers_needed;
-    return a.warnings.empty() && a.layers_needed <= cap();
-  }
-
- private:
-  layering::LayeringOptions options_;
-  layering::GraphBuilder builder_;
-  layering::Layering layering_;
-  std::vector<LightSphere> spheres_;
-  std::vector<std::uint32_t> scene_index_;
-};
-
-// Values an artist would type: rounded to `decimals`, as the parser will read them back.
-float round_down(double v, int decimals) {
-  const double scale = std::pow(10.0, decimals);
-  return static_cast<float>(std::floor(v * scale) / scale);
-}
-float round_nearest(double v, int decimals) {
-  const double scale = std::pow(10.0, decimals);
-  return static_cast<float>(std::round(v * scale) / scale);
-}
-
-// "4.2", "4.23", "6.0": two decimals at most, one at least.
-std::string metres(float v) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.2f", static_cast<double>(v));
-  std::string text = buffer;
-  while (text.size() > 1 && text.back() == '0' && text[text.size() - 2] != '.') text.pop_back();
-  return text;
-}
-
-std::string in_quotes(const std::string& name) {
-  std::string out;
-  out.reserve(name.size() + 2);
-  out += '\'';
-  out += name;
-  out += '\'';
-  return out;
-}
-
-// The sphere the pass colours for `light` (the conflict test of the world-sphere graph).
-LightSphere sphere_of(const scene::PointLight& light) {
-  std::vector<LightSphere> one;
-  std::vector<std::uint32_t> index;
-  scene::PointLight copy = light;
-  copy.casts_shadows = true;
-  layering::gather_light_spheres({&copy, 1}, 1, one, index);
-  return one.front();
-}
-
-bool overlap(const LightSphere& a, const LightSphere& b) {
-  return glm::distance(a.position, b.position) < a.range + b.range;
-}
 
 struct Search {
   FitCheck& check;
@@ -99,20 +40,6 @@ struct Search {
   const FixSearchOptions& options;
   [[nodiscard]] float step() const { return static_cast<float>(std::pow(10.0, -options.decimals)); }
 };
-
-// The range below which light v stops conflicting with sphere u. A light's sphere only
-// grows with its range (a spot's cone sphere grows from its apex), so the conflict is
-// monotone in the range and bisection finds where it starts.
-double conflict_threshold(scene::PointLight light, const LightSphere& u) {
-  double lo = 0.0;
-  double hi = light.range;
-  for (int i = 0; i < 48; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    light.range = static_cast<float>(mid);
-    (overlap(sphere_of(light), u) ? hi : lo) = mid;
-  }
-  return lo;
-}
 
 // The largest range of light v that fits: the graph changes only at the thresholds of
 // v's neighbours, so those (rounded down) are the only values worth testing.
@@ -242,26 +169,64 @@ const LayerFix* FixSuggestion::best() const {
   return move_fix ? &*move_fix : nullptr;
 }
 
-FixSuggestion suggest_fix(std::span<const scene::PointLight> lights,
-                          const layering::LayeringOptions& options,
-                          const FixSearchOptions& search) {
-  std::vector<scene::PointLight> work(lights.begin(), lights.end());
-  FitCheck check(options);
-  FixSuggestion out;
-  int needed = 0;
-  if (check.fits(work, needed)) {
-    out.message = "the layout fits the cap of " + std::to_string(check.cap()) + " layers";
-    return out;
+std::span<const LayerFix> FixSuggestion::changes() const {
+  if (const LayerFix* one = best()) return {one, 1};
+  if (multi_fix) return multi_fix->changes;
+  return {};
+}
+
+std::string FixSuggestion::description() const {
+  if (const LayerFix* one = best()) return one->description;
+  return multi_fix ? multi_fix->description : std::string();
+}
+
+namespace {
+
+// Whether the layout fits without light v at all: a change to v only removes conflicts of
+// v, so where even removing it does not help, no range or move of v is worth a full
+// verification. One colouring of the graph at hand instead of a rebuild per value: on
+// thousands of lights over the cap this is what keeps the search interactive.
+class RemovalTest {
+ public:
+  RemovalTest(const layering::ConflictGraph& graph, std::span<const LightSphere> spheres,
+              const layering::LayeringOptions& options, int cap)
+      : graph_(graph), spheres_(spheres), order_(options.order), regular_cap_(cap) {
+    for (const LightSphere& sphere : spheres) regular_cap_ -= sphere.own_layer ? 1 : 0;
   }
-  out.needed = true;
+  bool fits_without(std::uint32_t v) {
+    colours_.assign(spheres_.size(), layering::kUncoloured);
+    for (std::size_t i = 0; i < spheres_.size(); ++i) {
+      if (spheres_[i].own_layer || i == v) colours_[i] = layering::kExcluded;
+    }
+    if (regular_cap_ < 1) return false;
+    const layering::ColourLimits limits{regular_cap_, 0, layering::CapPolicy::fallback};
+    return colourer_.colour(graph_, order_, colours_, limits).empty();
+  }
+
+ private:
+  const layering::ConflictGraph& graph_;
+  std::span<const LightSphere> spheres_;
+  layering::Order order_;
+  int regular_cap_;
+  layering::Colourer colourer_;
+  std::vector<int> colours_;
+};
+
+// The one-light fixes: for each light that could help, its smallest range cut and its
+// smallest move.
+void search_one_light(FixSuggestion& out, FitCheck& check,
+                      std::span<const scene::PointLight> lights,
+                      const layering::LayeringOptions& options, const FixSearchOptions& search) {
+  std::vector<scene::PointLight> work(lights.begin(), lights.end());
   std::vector<LightSphere> spheres;
   std::vector<std::uint32_t> scene_index;
   layering::gather_light_spheres(lights, shared::kMaxShadowLights, spheres, scene_index);
   const layering::ConflictGraph graph = layering::build_world_sphere_graph(spheres);
   const layering::LayerAssignment assignment = layering::assign_layers(graph, spheres, options);
   Search s{check, work, spheres, scene_index, graph, search};
-
+  RemovalTest removal(graph, spheres, options, check.cap());
   for (std::uint32_t v : candidates(spheres, graph, assignment)) {
+    if (!removal.fits_without(v)) continue;
     if (auto fix = range_fix(s, v); fix && (!out.range_fix || fix->cost < out.range_fix->cost))
       out.range_fix = std::move(fix);
     if (!search.search_moves) continue;
@@ -273,16 +238,38 @@ FixSuggestion suggest_fix(std::span<const scene::PointLight> lights,
         out.move_fix = std::move(fix);
     }
   }
+}
 
-  const std::string needs = "the layout needs " + std::to_string(assignment.layers_needed) +
-                            " layers, the cap is " + std::to_string(check.cap());
+}  // namespace
+
+FixSuggestion suggest_fix(std::span<const scene::PointLight> lights,
+                          const layering::LayeringOptions& options,
+                          const FixSearchOptions& search) {
+  FitCheck check(options);
+  FixSuggestion out;
+  int needed = 0;
+  if (check.fits(lights, needed)) {
+    out.message = "the layout fits the cap of " + std::to_string(check.cap()) + " layers";
+    return out;
+  }
+  out.needed = true;
+  search_one_light(out, check, lights, options, search);
+  const std::string needs = "the layout needs " + std::to_string(needed) + " layers, the cap is " +
+                            std::to_string(check.cap());
   if (const LayerFix* best = out.best()) {
     out.message = needs + ": " + best->description;
     if (out.range_fix && out.move_fix) out.message += ", or " + out.move_fix->description;
+    return out;
+  }
+  // Only now: a fix of several lights is a bigger ask than any one-light fix.
+  const std::string no_one = "; no change to one light's range or position brings it under the cap";
+  detail::MultiFixOutcome multi = detail::suggest_multi_light_fix(lights, search, check);
+  if (multi.fix) {
+    out.multi_fix = std::move(multi.fix);
+    out.message = needs + no_one + ": " + out.multi_fix->description;
   } else {
-    out.message = needs +
-                  "; no change to one light's range or position brings it under the "
-                  "cap: raise the cap or edit several lights";
+    out.message = needs + no_one + ", nor changes to several within the limits (" + multi.why +
+                  "): raise the cap or rearrange the lights";
   }
   return out;
 }
@@ -297,6 +284,47 @@ EditResult apply_fix(SceneDocument& document, const LayerFix& fix) {
     changes.position = fix.new_position;
   }
   return document.apply(fix.light, changes, "Suggested fix: " + fix.description);
+}
+
+EditResult apply_fix(SceneDocument& document, const MultiLightFix& fix) {
+  // Checked first, so that a stale fix changes nothing rather than half the lights.
+  for (const LayerFix& change : fix.changes) {
+    if (change.light >= document.lights().size() ||
+        document.lights()[change.light].name != change.name)
+      return EditResult::refused("the scene changed since the fix was computed");
+  }
+  const std::string description =
+      "Suggested fix: change " + std::to_string(fix.changes.size()) + " lights";
+  // One gesture: every change merges into one undo step (named by the first).
+  document.begin_gesture();
+  bool applied = false;
+  for (const LayerFix& change : fix.changes) {
+    LightChanges changes;
+    if (change.kind == FixKind::reduce_range) {
+      changes.range = change.new_range;
+    } else {
+      changes.position = change.new_position;
+    }
+    // By name: editing an imported light adds an override entry, which renumbers lights.
+    const int light = document.find_light(change.name);
+    EditResult result = light < 0
+                            ? EditResult::refused("the scene changed since the fix was computed")
+                            : document.apply(static_cast<std::size_t>(light), changes, description);
+    if (!result) {
+      document.end_gesture();
+      if (applied) document.undo();
+      return result;
+    }
+    applied = applied || result.changed;
+  }
+  document.end_gesture();
+  return {true, applied, {}};
+}
+
+EditResult apply_fix(SceneDocument& document, const FixSuggestion& suggestion) {
+  if (const LayerFix* one = suggestion.best()) return apply_fix(document, *one);
+  if (suggestion.multi_fix) return apply_fix(document, *suggestion.multi_fix);
+  return EditResult::refused("no fix to apply: " + suggestion.message);
 }
 
 }  // namespace antumbra::editor

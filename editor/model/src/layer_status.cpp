@@ -105,10 +105,15 @@ const LayerReport& LayerStatus::update(const SceneDocument& document) {
 const FixSuggestion& LayerStatus::suggestion(const SceneDocument& document) {
   const Key now = key(document);
   if (suggestion_key_ != now) {
-    suggestion_ = suggest_fix(document.lights(), options_);
+    suggestion_ = suggest_fix(document.lights(), options_, search_);
     suggestion_key_ = now;
   }
   return suggestion_;
+}
+
+void LayerStatus::set_fix_bounds(const scene::Aabb& bounds) {
+  search_.bounds = bounds;
+  suggestion_key_.reset();
 }
 
 }  // namespace antumbra::editor

@@ -84,6 +84,8 @@ class LayerStatus {
   // The computed fix for the document's current layout, cached per revision: the
   // reference is valid until the next call after an edit (copy it to keep it longer).
   const FixSuggestion& suggestion(const SceneDocument& document);
+  // The scene's bounds (its geometry): suggested moves keep lights inside them.
+  void set_fix_bounds(const scene::Aabb& bounds);
 
  private:
   struct Key {
@@ -99,6 +101,7 @@ class LayerStatus {
   layering::Layering layering_;
   LayerReport report_;
   std::optional<Key> report_key_;
+  FixSearchOptions search_;
   FixSuggestion suggestion_;
   std::optional<Key> suggestion_key_;
 };
