@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_scenarios.hpp"
 #include "image_metrics.hpp"
 
 #include "antumbra/runtime/exit_codes.hpp"
@@ -58,7 +59,20 @@ struct BenchOptions {
   bool steps = false;         // also time the steps inside passes (labels): rows "pass.step"
   std::string baseline;       // bench.json to compare with; empty: no comparison
   double fail_slower = -1.0;  // with baseline: exit 1 when a row is this % slower; < 0: off
+  bool quick = false;         // the CPU-device preset (apply_quick_preset)
+  DistrictRows district;      // the 1024-light district's rows (--quick shrinks them)
+  std::string warmup_from = "default";  // where `warmup` came from: default|--warmup|--quick
 };
+
+// Which of the settings `--quick` presets the command line gave explicitly: those win.
+struct GivenBenchSettings {
+  bool frames = false;
+  bool warmup = false;
+  bool scale = false;
+};
+// `bench --quick` (bench_scenarios.hpp, kQuick*) where it is set, and where `warmup` came
+// from either way.
+void apply_quick_preset(BenchOptions& options, const GivenBenchSettings& given);
 
 struct CompareOptions {
   std::string a;
