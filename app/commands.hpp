@@ -8,7 +8,9 @@
 
 #include "bench_scenarios.hpp"
 #include "image_metrics.hpp"
+#include "techniques_report.hpp"
 
+#include "antumbra/base/diagnostics.hpp"
 #include "antumbra/runtime/exit_codes.hpp"
 
 namespace antumbra::app {
@@ -118,13 +120,17 @@ struct QualityFrames {
 };
 std::optional<QualityFrames> render_quality_frames(const QualityOptions& options);
 
+// A warning (QU001) when a frame of `width` x `height` has too few pixels for the
+// ranking of techniques to hold; nothing when it has enough (quality and techniques).
+std::optional<base::Diagnostic> ranking_size_warning(unsigned width, unsigned height);
+
 struct TechniquesOptions {
   std::vector<std::string> graphs;  // empty: every shipped technique graph
   std::string scene;                // empty: data/scenes/atrium.json
   std::string size = "960x540";
   std::string gpu_bench;  // bench.json from the lent GPU (table1 rows); empty: no column
   std::string cpu_bench;  // bench.json from lavapipe (table1 rows); empty: no column
-  std::string out = "docs/techniques.md";
+  std::string out = kTechniquesDefaultOut;  // never the committed docs/ unless named
   std::string device = "auto";
 };
 int run_techniques(const TechniquesOptions& options);

@@ -52,7 +52,9 @@ CLI::App* add_techniques_command(CLI::App& cli, antumbra::app::TechniquesOptions
                   "bench.json of `bench --scenario table1/` on the GPU (the GPU ms column)");
   cmd->add_option("--cpu-bench", options.cpu_bench,
                   "bench.json of `bench --scenario table1/` on lavapipe (the ratio column)");
-  cmd->add_option("--out", options.out, "Markdown file; crops go to techniques/ beside it")
+  cmd->add_option("--out", options.out,
+                  "Markdown file; crops go to techniques/ beside it (docs/techniques.md, the "
+                  "committed table, is written only when named)")
       ->capture_default_str();
   cmd->add_option("--device", options.device, "auto|cpu|gpu|N|<name substring>")
       ->capture_default_str();

@@ -1,6 +1,6 @@
-// `bench` on a device (lavapipe, tiny sizes): an interrupted bench leaves whole CSV and
-// JSON files of the scenarios that finished, --warmup 0 runs no warm-up frame, and
-// --quick's preset gives way to explicit settings.
+// `bench` and `techniques` on a device (lavapipe, tiny sizes): an interrupted bench
+// leaves whole CSV and JSON files of the scenarios that finished, --warmup 0 runs no
+// warm-up frame, and `techniques` without --out leaves the committed docs alone.
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -121,6 +121,34 @@ TEST(BenchQuick, ExplicitFramesAndWarmupWinOverThePreset) {
   const auto json = nlohmann::json::parse(read_text(dir / "bench" / "bench.json"));
   EXPECT_EQ(json["preset"], "quick");
   EXPECT_EQ(json["warmupFrom"], "--quick");
+}
+
+// Run where a user would, in a folder with a docs/techniques.md of its own; the data
+// comes from ANTUMBRA_ROOT. One graph at 64x36 keeps it to seconds on lavapipe.
+TEST(TechniquesOut, WithoutOutTheCommittedDocsStayAsTheyAre) {
+  const auto dir = test_folder();
+  fs::create_directories(dir / "docs");
+  const std::string committed = "# committed table\n";
+  std::ofstream(dir / "docs" / "techniques.md") << committed;
+  Program techniques({"techniques", "--graph", "hard.json", "--size", "64x36"}, dir, dir,
+                     {std::string("ANTUMBRA_ROOT=") + ANTUMBRA_TEST_SOURCE_DIR});
+  const auto run = techniques.wait();
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(read_text(dir / "docs" / "techniques.md"), committed);
+  EXPECT_FALSE(fs::exists(dir / "docs" / "techniques"));
+  EXPECT_NE(run.out.find("wrote out/techniques.md"), std::string::npos) << run.out;
+  const std::string md = read_text(dir / "out" / "techniques.md");
+  EXPECT_NE(md.find("| `hard.json` |"), std::string::npos) << md;
+  EXPECT_TRUE(fs::exists(dir / "out" / "techniques" / "hard.png"));
+  // A small frame and no bench files: said on stderr and in the file.
+  EXPECT_NE(run.err.find("at 64x36 the ranking of techniques is not reliable"), std::string::npos)
+      << run.err;
+  EXPECT_NE(run.err.find("the lavapipe x hard column is empty: no `--cpu-bench` given"),
+            std::string::npos)
+      << run.err;
+  EXPECT_NE(md.find("**Warning:** at 64x36"), std::string::npos) << md;
+  EXPECT_NE(md.find("The lavapipe column is empty: no `--cpu-bench` given"), std::string::npos)
+      << md;
 }
 
 }  // namespace
