@@ -85,6 +85,14 @@ class Reader {
     return value->get<T>();
   }
 
+  std::optional<bool> optional_bool(const Json& parent, const std::string& pointer,
+                                    const std::string& key) const {
+    const Json* value = member(parent, key);
+    if (value == nullptr) return std::nullopt;
+    if (!value->is_boolean()) fail(at(pointer, key), "a boolean", value);
+    return value->get<bool>();
+  }
+
   static std::string at(const std::string& pointer, const std::string& key) {
     return base::pointer_append(pointer, key);
   }
@@ -248,6 +256,8 @@ BenchFile parse_bench_file(const base::JsonDocument& document) {
   out.frames = reader.optional_number<int>(root, "", "frames", true);
   out.warmup = reader.optional_number<int>(root, "", "warmup", true);
   out.scale = reader.optional_number<double>(root, "", "scale", false);
+  out.complete = reader.optional_bool(root, "", "complete");
+  out.planned = reader.optional_number<int>(root, "", "scenariosPlanned", true);
   const Json& scenarios = reader.array(root, "", "scenarios");
   for (std::size_t i = 0; i < scenarios.size(); ++i) {
     out.results.push_back(parse_scenario(reader, scenarios[i], Reader::at("/scenarios", i)));
@@ -282,6 +292,13 @@ std::vector<std::string> setup_mismatches(const BenchFile& baseline, const RunSe
   differs("--frames", baseline.frames, run.frames);
   differs("--warmup", baseline.warmup, run.warmup);
   differs("--scale", baseline.scale, run.scale);
+  if (baseline.complete.has_value() && !*baseline.complete) {
+    const std::string planned = baseline.planned ? std::to_string(*baseline.planned) : "?";
+    lines.push_back(from + " is partial (an interrupted run: " +
+                    std::to_string(baseline.results.size()) + " of " + planned +
+                    " scenarios finished): compared as far as it goes, the scenarios it lacks "
+                    "show as only in this run");
+  }
   return lines;
 }
 

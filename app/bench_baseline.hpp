@@ -56,6 +56,10 @@ struct BenchFile {
   std::optional<int> frames;
   std::optional<int> warmup;
   std::optional<double> scale;
+  // false: an interrupted run's partial file (`bench` rewrites bench.json after every
+  // scenario); absent in files from before partial writes, which were always complete.
+  std::optional<bool> complete;
+  std::optional<int> planned;  // scenarios the run chose
   std::vector<BenchResult> results;
 };
 
@@ -72,7 +76,10 @@ struct RunSetup {
 };
 
 // One line per setting in which the baseline differs from this run (device, frames,
-// warm-up frames, scale): ratios across devices or settings mean little.
+// warm-up frames, scale): ratios across devices or settings mean little. And one when
+// the baseline is an interrupted run's: it is compared as far as it goes (accepted, not
+// refused: what finished was measured in full), the scenarios it never reached show
+// as only in this run.
 std::vector<std::string> setup_mismatches(const BenchFile& baseline, const RunSetup& run);
 
 // One line of the comparison: a pass or a scenario's frame ("frame").
@@ -135,8 +142,8 @@ void add_comparison_json(nlohmann::json& bench, const BenchFile& baseline,
 // frame median and its ratio, and appends a row per scenario only in the baseline.
 void add_comparison_to_chart(StackedChart& chart, const BaselineComparison& comparison);
 
-// The three above for `bench --out DIR`: DIR/bench_compare.csv written (std::runtime_error
-// when it cannot be), this run's bench.json object and chart extended.
+// The three above for `bench --out DIR`: DIR/bench_compare.csv written atomically
+// (std::runtime_error when it cannot be), this run's bench.json object and chart extended.
 void add_comparison_reports(const std::filesystem::path& dir, const BenchFile& baseline,
                             const BaselineComparison& comparison, nlohmann::json& bench,
                             StackedChart& chart);

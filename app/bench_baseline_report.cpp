@@ -3,9 +3,10 @@
 #include <algorithm>
 #include <array>
 #include <cstdio>
-#include <fstream>
 #include <map>
+#include <sstream>
 
+#include "antumbra/editor/atomic_file.hpp"
 #include "bench_baseline.hpp"
 
 namespace antumbra::app {
@@ -176,10 +177,9 @@ void add_comparison_to_chart(StackedChart& chart, const BaselineComparison& comp
 void add_comparison_reports(const std::filesystem::path& dir, const BenchFile& baseline,
                             const BaselineComparison& comparison, nlohmann::json& bench,
                             StackedChart& chart) {
-  const auto path = dir / "bench_compare.csv";
-  std::ofstream csv(path);
+  std::ostringstream csv;
   write_comparison_csv(csv, comparison);
-  if (!csv) throw std::runtime_error("cannot write " + path.string());
+  editor::write_file_atomically(dir / "bench_compare.csv", csv.str());
   add_comparison_json(bench, baseline, comparison);
   add_comparison_to_chart(chart, comparison);
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace antumbra::app {
 
@@ -118,6 +119,31 @@ nlohmann::json results_json(const std::vector<BenchResult>& results) {
     }
   }
   return scenarios;
+}
+
+nlohmann::json bench_json(const BenchRun& run, const std::vector<BenchResult>& results) {
+  auto json = nlohmann::json{{"commit", run.commit},
+                             {"device", run.device},
+                             {"driver", run.driver},
+                             {"frames", run.frames},
+                             {"warmup", run.warmup},
+                             {"warmupFrom", run.warmup_from},
+                             {"scale", run.scale},
+                             {"complete", run.finished == run.planned},
+                             {"scenariosPlanned", run.planned},
+                             {"scenariosFinished", run.finished}};
+  if (!run.preset.empty()) json["preset"] = run.preset;
+  json["scenarios"] = results_json(results);
+  return json;
+}
+
+std::string bench_setup_line(const BenchRun& run) {
+  const std::string from = run.warmup_from == "--warmup" ? "" : " (" + run.warmup_from + ")";
+  char text[160];
+  std::snprintf(text, sizeof text,
+                ": %zu scenario(s), %d warm-up%s + %d timed frames each, scale %.2f", run.planned,
+                run.warmup, from.c_str(), run.frames, run.scale);
+  return "bench on " + run.device + text + (run.preset.empty() ? "" : " (--" + run.preset + ")");
 }
 
 }  // namespace antumbra::app

@@ -58,4 +58,28 @@ void write_long_csv(std::ostream& out, const std::vector<BenchResult>& results);
 
 nlohmann::json results_json(const std::vector<BenchResult>& results);
 
+// What a run was asked to do, for the head of bench.json and the run's first line.
+// `warmup_from` says where the warm-up count came from ("default", "--warmup" or
+// "--quick"): warm-up frames are never timed, so a reader of a short run must see them.
+struct BenchRun {
+  std::string commit;
+  std::string device;
+  std::string driver;
+  int frames = 0;
+  int warmup = 0;
+  std::string warmup_from = "default";
+  double scale = 1.0;
+  std::string preset;        // "quick", or empty
+  std::size_t planned = 0;   // scenarios chosen
+  std::size_t finished = 0;  // of them, the ones measured so far
+};
+
+// bench.json without a baseline: the run's head, "complete" (false until every planned
+// scenario is in: the file is rewritten after each one, so an interrupted run leaves
+// what finished) and the scenarios.
+nlohmann::json bench_json(const BenchRun& run, const std::vector<BenchResult>& results);
+
+// "bench on DEVICE: N scenario(s), W warm-up (default) + F timed frames each, scale S".
+std::string bench_setup_line(const BenchRun& run);
+
 }  // namespace antumbra::app

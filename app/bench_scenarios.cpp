@@ -135,19 +135,23 @@ void apply_raster(Scenario& s, const Raster& raster) {
 
 // Moving lights: every light moves in the atrium; 1024 lights are the district's, 64
 // of them moving.
-void add_moving_table(std::vector<Scenario>& out, double scale) {
+void add_moving_table(std::vector<Scenario>& out, double scale, const DistrictRows& rows) {
   struct Variant {
     const char* technique;
     int kernel;
   };
   constexpr Variant kMovingVariants[] = {{"hard", 0}, {"pcss", 11}, {"ssss", 11}};
-  for (const int lights : {16, 64, 256, kDistrictLights}) {
+  for (const int count : {16, 64, 256, kDistrictLights}) {
+    const bool district = count == kDistrictLights;
+    const int lights = district ? rows.lights : count;
     for (const Variant& v : kMovingVariants) {
       for (const Raster& raster : kRasters) {
-        Scenario s = make("moving", technique(v.technique), v.kernel, 1080, lights, scale);
-        const bool district = lights == kDistrictLights;
+        Scenario s = make("moving", technique(v.technique), v.kernel, 1080, lights,
+                          district ? scale * rows.scale : scale);
+        // A district of fewer lights says so: "256l" alone would read as the atrium's row.
+        if (district && lights != kDistrictLights) s.name += "-district";
         s.scene = district ? kDistrictScene : "atrium.json";
-        s.moving = district ? kDistrictMovingLights : lights;
+        s.moving = district ? std::min(rows.moving, lights) : lights;
         apply_raster(s, raster);
         out.push_back(std::move(s));
       }
@@ -197,7 +201,7 @@ unsigned shadow_face_size(int lights, double scale) {
   return std::max(16u, static_cast<unsigned>(std::lround(face / 16.0)) * 16u);
 }
 
-std::vector<Scenario> builtin_scenarios(double scale) {
+std::vector<Scenario> builtin_scenarios(double scale, const DistrictRows& district) {
   std::vector<Scenario> out;
   for (const unsigned height : {720u, 1080u}) {
     for (const auto& t : techniques()) {
@@ -216,7 +220,7 @@ std::vector<Scenario> builtin_scenarios(double scale) {
       out.push_back(make(table, technique(name), 11, 1080, lights, scale));
     }
   }
-  add_moving_table(out, scale);
+  add_moving_table(out, scale, district);
   add_materials_table(out, scale);
   add_dynamic_table(out, scale);
   add_sun_table(out, scale);

@@ -57,9 +57,32 @@ inline constexpr const char* kDynamicScene = "atrium-dynamic.json";
 // The "materials" table's textured scene: the atrium with alpha-tested lattice screens.
 inline constexpr const char* kCutoutScene = "atrium-cutouts.json";
 
+// How the district's rows (the moving table's 1024 lights) differ from the others':
+// their size is `scale` (builtin_scenarios') times `scale`, `lights` of the district's
+// lights are kept (with_light_count lays them out over the same area; fewer than 1024:
+// the names say "<lights>l-district") and `moving` of them move. `bench --quick` shrinks
+// all three.
+struct DistrictRows {
+  double scale = 1.0;
+  int lights = kDistrictLights;
+  int moving = kDistrictMovingLights;
+};
+
 // Every built-in scenario, in a stable order, with screen and atlas faces scaled by
 // `scale` (names carry the scaled height, so two scales never share a name).
-std::vector<Scenario> builtin_scenarios(double scale = 1.0);
+std::vector<Scenario> builtin_scenarios(double scale = 1.0, const DistrictRows& district = {});
+
+// `bench --quick`: the preset for CPU devices (lavapipe), measured to finish the moving
+// table (`--scenario moving/`, 48 rows) within 10 minutes on 2 cores (docs/measuring.md:
+// 8 min 12 s). 3 timed frames after 1 warm-up frame (the first frame fills the shadow
+// cache), a quarter of the size, and the district's rows at half of that with 256 lights,
+// 16 of them moving: on lavapipe a hardware row's warm-up frame draws the district's
+// 1.3 M triangles into every face of its shadowed lights; with all 1024 lights the table
+// took 9 min 51 s.
+inline constexpr int kQuickFrames = 3;
+inline constexpr int kQuickWarmup = 1;
+inline constexpr double kQuickScale = 0.25;
+inline constexpr DistrictRows kQuickDistrict{0.5, 256, 16};
 
 // The atlas face for `lights` lights at `scale`: 1024 texels up to 64 lights and 512
 // beyond, scaled, rounded to a multiple of 16 (maps derived from the atlas divide it by

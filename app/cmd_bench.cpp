@@ -5,14 +5,15 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <map>
 #include <optional>
+#include <sstream>
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
 
+#include "antumbra/editor/atomic_file.hpp"
 #include "antumbra/fg/graph_source.hpp"
 #include "antumbra/gpu/context.hpp"
 #include "antumbra/gpu/timing.hpp"
@@ -73,9 +74,9 @@ std::optional<Baseline> read_baseline(const std::string& path) {
   }
 }
 
-void warn_setup(const BenchFile& baseline, const std::string& device, const BenchOptions& options) {
+void warn_setup(const BenchFile& baseline, const BenchRun& run) {
   for (const auto& line :
-       setup_mismatches(baseline, {device, options.frames, options.warmup, options.scale})) {
+       setup_mismatches(baseline, {run.device, run.frames, run.warmup, run.scale})) {
     std::fprintf(stderr, "antumbra bench: warning: %s\n", line.c_str());
   }
 }
@@ -86,31 +87,31 @@ SlowerRule rule_of(const BenchOptions& options) {
 }
 
 // The table on stdout, and the warnings again beside it (the run's log may be long).
-void print_comparison(const Baseline& baseline, const std::string& device,
-                      const BenchOptions& options) {
+void print_comparison(const Baseline& baseline, const BenchRun& run) {
   std::fflush(stdout);
   write_comparison_text(std::cout, baseline.comparison);
   std::cout.flush();
-  warn_setup(baseline.file, device, options);
+  warn_setup(baseline.file, run);
 }
 
-void write_reports(const std::filesystem::path& dir, const gpu::Context& gpu,
-                   const BenchOptions& options, const std::vector<BenchResult>& results,
-                   const std::optional<Baseline>& baseline) {
-  const std::string& device = gpu.device_name();
+// The reports of the scenarios measured so far, rewritten after each one. Every file
+// goes to a temporary beside it and is renamed over it, so a run killed at any moment
+// leaves whole files; bench.json, last, says how far the run got ("complete").
+void write_reports(const std::filesystem::path& dir, const BenchRun& run,
+                   const std::vector<BenchResult>& results, std::optional<Baseline>& baseline,
+                   const SlowerRule& rule) {
   std::filesystem::create_directories(dir);
-  std::ofstream csv(dir / "bench.csv");
+  std::ostringstream csv;
   write_long_csv(csv, results);
-  auto bench = nlohmann::json{{"commit", build_commit()},          {"device", device},
-                              {"driver", driver_summary(gpu)},     {"frames", options.frames},
-                              {"warmup", options.warmup},          {"scale", options.scale},
-                              {"scenarios", results_json(results)}};
-  auto chart = chart_of(device, results);
-  if (baseline) add_comparison_reports(dir, baseline->file, baseline->comparison, bench, chart);
-  std::ofstream json(dir / "bench.json");
-  json << bench.dump(2) << '\n';
-  if (!csv || !json) throw std::runtime_error("cannot write the reports in " + dir.string());
+  editor::write_file_atomically(dir / "bench.csv", csv.str());
+  auto bench = bench_json(run, results);
+  auto chart = chart_of(run.device, results);
+  if (baseline) {
+    baseline->comparison = compare_with_baseline(baseline->file.results, results, rule);
+    add_comparison_reports(dir, baseline->file, baseline->comparison, bench, chart);
+  }
   write_stacked_chart((dir / "bench.png").string(), chart);
+  editor::write_file_atomically(dir / "bench.json", bench.dump(2) + '\n');
 }
 
 // Moving lights are placed anew before every frame, warm-up included, from one frame count
@@ -200,19 +201,90 @@ BenchResult run_scenario(runtime::RenderSession& session, const runtime::DataPat
   return r;
 }
 
+// What the run is set to do, for its first line and the head of bench.json.
+BenchRun run_head(const gpu::Context& gpu, const BenchOptions& options, std::size_t planned) {
+  BenchRun run;
+  run.commit = build_commit();
+  run.device = gpu.device_name();
+  run.driver = driver_summary(gpu);
+  run.frames = options.frames;
+  run.warmup = options.warmup;
+  run.warmup_from = options.warmup_from;
+  run.scale = options.scale;
+  run.preset = options.quick ? "quick" : "";
+  run.planned = planned;
+  return run;
+}
+
+// Scenario `index` of `chosen`, with its line on stderr; one that throws is a result of
+// status "error", so the rest still run.
+BenchResult run_reported(runtime::RenderSession& session, const runtime::DataPaths& paths,
+                         SceneCache& scenes, const BenchOptions& options,
+                         const std::vector<Scenario>& chosen, std::size_t index,
+                         const gpu::CpuTimer& clock) {
+  const auto& s = chosen[index];
+  std::fprintf(stderr, "[%zu/%zu] %-40s ", index + 1, chosen.size(), s.name.c_str());
+  std::fflush(stderr);
+  BenchResult r;
+  try {
+    r = run_scenario(session, paths, scenes, s, options);
+  } catch (const std::exception& e) {
+    r = BenchResult{s};
+    r.status = "error";
+    r.detail = e.what();
+  }
+  if (r.status == "ok") {
+    std::fprintf(stderr, "%9.3f ms  [p10 %.3f, p90 %.3f]  (%.0f s elapsed)\n", r.frame.median_ms,
+                 r.frame.p10_ms, r.frame.p90_ms, clock.elapsed_ms() / 1000.0);
+  } else {
+    std::fprintf(stderr, "%s: %s\n", r.status.c_str(),
+                 r.detail.substr(0, r.detail.find('\n')).c_str());
+  }
+  return r;
+}
+
+// --list: the names the filters select, those a run would measure.
+int list_scenarios(const std::vector<Scenario>& chosen) {
+  for (const auto& s : chosen) std::printf("%s\n", s.name.c_str());
+  return runtime::kExitOk;
+}
+
+// The exit code once the reports are written.
+int run_exit_code(const BenchOptions& options, const gpu::Context& gpu, int failures,
+                  const std::optional<Baseline>& baseline) {
+  if (options.validation && gpu.validation_error_count() > 0) {
+    std::fprintf(stderr, "antumbra bench: %zu validation error(s)\n", gpu.validation_error_count());
+    return runtime::kExitRuntime;
+  }
+  if (failures > 0) return runtime::kExitRuntime;
+  // Flags alone never fail a run; --fail-slower makes them an exit 1 for scripts.
+  const bool fail =
+      baseline && options.fail_slower >= 0.0 && baseline->comparison.slower_count() > 0;
+  return fail ? runtime::kExitDiagnostics : runtime::kExitOk;
+}
+
 }  // namespace
 
-int run_bench(const BenchOptions& options) {
-  const auto all = builtin_scenarios(options.scale);
-  const auto chosen = select_scenarios(all, options.filters);
-  if (options.list) {
-    for (const auto& s : all) std::printf("%s\n", s.name.c_str());
-    return runtime::kExitOk;
+void apply_quick_preset(BenchOptions& options, const GivenBenchSettings& given) {
+  if (given.warmup) options.warmup_from = "--warmup";
+  if (!options.quick) return;
+  if (!given.frames) options.frames = kQuickFrames;
+  if (!given.warmup) {
+    options.warmup = kQuickWarmup;
+    options.warmup_from = "--quick";
   }
+  if (!given.scale) options.scale = kQuickScale;
+  options.district = kQuickDistrict;
+}
+
+int run_bench(const BenchOptions& options) {
+  const auto chosen =
+      select_scenarios(builtin_scenarios(options.scale, options.district), options.filters);
   if (chosen.empty()) {
     std::fprintf(stderr, "antumbra bench: no scenario matches; see `antumbra bench --list`\n");
     return runtime::kExitUsage;
   }
+  if (options.list) return list_scenarios(chosen);
   std::optional<Baseline> baseline;
   if (!options.baseline.empty() && !(baseline = read_baseline(options.baseline))) {
     return runtime::kExitUsage;
@@ -228,58 +300,32 @@ int run_bench(const BenchOptions& options) {
   session_options.validation = options.validation;
   session_options.time_steps = options.steps;
   runtime::RenderSession session(paths, session_options);
-  std::fprintf(stderr,
-               "bench on %s: %zu scenario(s), %d warm-up + %d timed frames each, scale %.2f\n",
-               session.gpu().device_name().c_str(), chosen.size(), options.warmup, options.frames,
-               options.scale);
-  if (baseline) warn_setup(baseline->file, session.gpu().device_name(), options);
+  BenchRun run = run_head(session.gpu(), options, chosen.size());
+  std::fprintf(stderr, "%s\n", bench_setup_line(run).c_str());
+  if (baseline) warn_setup(baseline->file, run);
+  const SlowerRule rule = rule_of(options);
   std::vector<BenchResult> results;
   int failures = 0;
   gpu::CpuTimer clock;
-  for (std::size_t i = 0; i < chosen.size(); ++i) {
-    const auto& s = chosen[i];
-    std::fprintf(stderr, "[%zu/%zu] %-40s ", i + 1, chosen.size(), s.name.c_str());
-    std::fflush(stderr);
-    BenchResult r;
-    try {
-      r = run_scenario(session, paths, scenes, s, options);
-    } catch (const std::exception& e) {
-      r = BenchResult{s};
-      r.status = "error";
-      r.detail = e.what();
-    }
-    if (r.status == "ok") {
-      std::fprintf(stderr, "%9.3f ms  [p10 %.3f, p90 %.3f]  (%.0f s elapsed)\n", r.frame.median_ms,
-                   r.frame.p10_ms, r.frame.p90_ms, clock.elapsed_ms() / 1000.0);
-    } else {
-      std::fprintf(stderr, "%s: %s\n", r.status.c_str(),
-                   r.detail.substr(0, r.detail.find('\n')).c_str());
-      if (r.status != "missing-graph") ++failures;
-    }
-    results.push_back(std::move(r));
-  }
-  if (baseline) {
-    baseline->comparison = compare_with_baseline(baseline->file.results, results, rule_of(options));
-  }
   try {
-    write_reports(options.out, session.gpu(), options, results, baseline);
+    // Written before the first scenario too: a previous run's files in the folder are
+    // replaced by this run's (empty, incomplete) ones, and an unwritable folder fails now.
+    write_reports(options.out, run, results, baseline, rule);
+    for (std::size_t i = 0; i < chosen.size(); ++i) {
+      results.push_back(run_reported(session, paths, scenes, options, chosen, i, clock));
+      const auto& status = results.back().status;
+      if (status != "ok" && status != "missing-graph") ++failures;
+      run.finished = results.size();
+      write_reports(options.out, run, results, baseline, rule);
+    }
   } catch (const std::exception& e) {
     std::fprintf(stderr, "antumbra bench: %s\n", e.what());
     return runtime::kExitRuntime;
   }
   std::printf("wrote %s/bench.csv, bench.json, bench.png%s\n", options.out.c_str(),
               baseline ? ", bench_compare.csv" : "");
-  if (baseline) print_comparison(*baseline, session.gpu().device_name(), options);
-  if (options.validation && session.gpu().validation_error_count() > 0) {
-    std::fprintf(stderr, "antumbra bench: %zu validation error(s)\n",
-                 session.gpu().validation_error_count());
-    return runtime::kExitRuntime;
-  }
-  if (failures > 0) return runtime::kExitRuntime;
-  // Flags alone never fail a run; --fail-slower makes them an exit 1 for scripts.
-  const bool fail =
-      baseline && options.fail_slower >= 0.0 && baseline->comparison.slower_count() > 0;
-  return fail ? runtime::kExitDiagnostics : runtime::kExitOk;
+  if (baseline) print_comparison(*baseline, run);
+  return run_exit_code(options, session.gpu(), failures, baseline);
 }
 
 }  // namespace antumbra::app

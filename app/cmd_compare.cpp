@@ -171,30 +171,6 @@ std::optional<fg::GraphDesc> load_for_quality(const std::string& path, const std
   return std::move(graph.value());
 }
 
-// Below this many pixels quality's ranking of techniques is not to be trusted. Measured
-// on lavapipe, atrium, hard / PCSS / layered SSSS (README, "Quality and bench
-// reports"): ranked by RMSE over all pixels, PCSS < hard < layered at 160x90, 320x180
-// and 480x270, PCSS < layered < hard at 640x360, layered < PCSS < hard at 960x540 and
-// 1280x720 (penumbra pixels alike). The layered technique estimates penumbrae and blurs
-// at half resolution, so a small frame measures a blur of a few dozen texels more than
-// the technique.
-constexpr unsigned kStableRankingWidth = 960;
-constexpr unsigned kStableRankingHeight = 540;
-
-std::optional<base::Diagnostic> size_warning(unsigned width, unsigned height) {
-  if (std::uint64_t{width} * height >= std::uint64_t{kStableRankingWidth} * kStableRankingHeight) {
-    return std::nullopt;
-  }
-  char message[240];
-  std::snprintf(message, sizeof message,
-                "at %ux%u the ranking of techniques is not reliable: on the atrium it changes up "
-                "to %ux%u; use --size %ux%u (or as many pixels) or larger to rank them",
-                width, height, kStableRankingWidth, kStableRankingHeight, kStableRankingWidth,
-                kStableRankingHeight);
-  return base::Diagnostic{
-      codes::quality::kRankingUnreliable, base::Severity::warning, message, "", "", 0, 0};
-}
-
 // File stems name the error maps; a repeated stem gets its position appended.
 std::vector<std::string> unique_labels(const std::vector<std::string>& graphs) {
   std::vector<std::string> labels;
@@ -465,7 +441,7 @@ int run_quality(const QualityOptions& options) {
   }
   const bool json = options.format == "json";
   base::Diagnostics report_diagnostics;
-  if (auto warning = size_warning(width, height)) {
+  if (auto warning = ranking_size_warning(width, height)) {
     std::fprintf(stderr, "%s\n", base::format_text(*warning).c_str());
     report_diagnostics.add(std::move(*warning));
   }
@@ -546,6 +522,30 @@ std::optional<QualityFrames> render_quality_frames(const QualityOptions& options
   frames.reference = std::move(reference->hdr);
   frames.mask = std::move(reference->mask);
   return frames;
+}
+
+// Below this many pixels quality's ranking of techniques is not to be trusted. Measured
+// on lavapipe, atrium, hard / PCSS / layered SSSS (README, "Quality and bench
+// reports"): ranked by RMSE over all pixels, PCSS < hard < layered at 160x90, 320x180
+// and 480x270, PCSS < layered < hard at 640x360, layered < PCSS < hard at 960x540 and
+// 1280x720 (penumbra pixels alike). The layered technique estimates penumbrae and blurs
+// at half resolution, so a small frame measures a blur of a few dozen texels more than
+// the technique.
+constexpr unsigned kStableRankingWidth = 960;
+constexpr unsigned kStableRankingHeight = 540;
+
+std::optional<base::Diagnostic> ranking_size_warning(unsigned width, unsigned height) {
+  if (std::uint64_t{width} * height >= std::uint64_t{kStableRankingWidth} * kStableRankingHeight) {
+    return std::nullopt;
+  }
+  char message[240];
+  std::snprintf(message, sizeof message,
+                "at %ux%u the ranking of techniques is not reliable: on the atrium it changes up "
+                "to %ux%u; use --size %ux%u (or as many pixels) or larger to rank them",
+                width, height, kStableRankingWidth, kStableRankingHeight, kStableRankingWidth,
+                kStableRankingHeight);
+  return base::Diagnostic{
+      codes::quality::kRankingUnreliable, base::Severity::warning, message, "", "", 0, 0};
 }
 
 }  // namespace antumbra::app

@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <optional>
+#include <utility>
 
 #include <nlohmann/json.hpp>
 
@@ -63,6 +65,26 @@ std::optional<nlohmann::json> read_bench(const std::string& path) {
   }
 }
 
+// quality's warning for a frame too small to rank techniques by; nothing for a malformed
+// size, which the rendering refuses next.
+std::optional<base::Diagnostic> size_warning_of(const std::string& size) {
+  unsigned width = 0;
+  unsigned height = 0;
+  if (!parse_size(size, width, height)) return std::nullopt;
+  return ranking_size_warning(width, height);
+}
+
+// A "-" column says on stderr too why it has no number.
+void warn_empty_columns(const TechniquesReport& report) {
+  for (const auto& [column, note] :
+       {std::pair{"GPU ms", &report.gpu_note}, std::pair{"lavapipe x hard", &report.cpu_note}}) {
+    if (!note->empty()) {
+      std::fprintf(stderr, "antumbra techniques: warning: the %s column is empty: %s\n", column,
+                   note->c_str());
+    }
+  }
+}
+
 }  // namespace
 
 int run_techniques(const TechniquesOptions& options) {
@@ -77,6 +99,9 @@ int run_techniques(const TechniquesOptions& options) {
   quality.scene = options.scene;
   quality.size = options.size;
   quality.device = options.device;
+  // Said before minutes of rendering, and again in the file.
+  const auto size_warning = size_warning_of(options.size);
+  if (size_warning) std::fprintf(stderr, "%s\n", base::format_text(*size_warning).c_str());
   auto frames = render_quality_frames(quality);
   if (!frames) return runtime::kExitDiagnostics;
 
@@ -116,6 +141,9 @@ int run_techniques(const TechniquesOptions& options) {
     }
     report.rows.push_back(std::move(row));
   }
+  if (size_warning) report.size_warning = size_warning->message;
+  note_empty_time_columns(report, options.gpu_bench, options.cpu_bench);
+  warn_empty_columns(report);
   std::ofstream file(out);
   file << techniques_markdown(report);
   if (!file) {

@@ -6,8 +6,11 @@
 #include <string>
 #include <vector>
 
+#include "bench_scenarios.hpp"
 #include "image_metrics.hpp"
+#include "techniques_report.hpp"
 
+#include "antumbra/base/diagnostics.hpp"
 #include "antumbra/runtime/exit_codes.hpp"
 
 namespace antumbra::app {
@@ -58,7 +61,20 @@ struct BenchOptions {
   bool steps = false;         // also time the steps inside passes (labels): rows "pass.step"
   std::string baseline;       // bench.json to compare with; empty: no comparison
   double fail_slower = -1.0;  // with baseline: exit 1 when a row is this % slower; < 0: off
+  bool quick = false;         // the CPU-device preset (apply_quick_preset)
+  DistrictRows district;      // the 1024-light district's rows (--quick shrinks them)
+  std::string warmup_from = "default";  // where `warmup` came from: default|--warmup|--quick
 };
+
+// Which of the settings `--quick` presets the command line gave explicitly: those win.
+struct GivenBenchSettings {
+  bool frames = false;
+  bool warmup = false;
+  bool scale = false;
+};
+// `bench --quick` (bench_scenarios.hpp, kQuick*) where it is set, and where `warmup` came
+// from either way.
+void apply_quick_preset(BenchOptions& options, const GivenBenchSettings& given);
 
 struct CompareOptions {
   std::string a;
@@ -104,13 +120,17 @@ struct QualityFrames {
 };
 std::optional<QualityFrames> render_quality_frames(const QualityOptions& options);
 
+// A warning (QU001) when a frame of `width` x `height` has too few pixels for the
+// ranking of techniques to hold; nothing when it has enough (quality and techniques).
+std::optional<base::Diagnostic> ranking_size_warning(unsigned width, unsigned height);
+
 struct TechniquesOptions {
   std::vector<std::string> graphs;  // empty: every shipped technique graph
   std::string scene;                // empty: data/scenes/atrium.json
   std::string size = "960x540";
   std::string gpu_bench;  // bench.json from the lent GPU (table1 rows); empty: no column
   std::string cpu_bench;  // bench.json from lavapipe (table1 rows); empty: no column
-  std::string out = "docs/techniques.md";
+  std::string out = kTechniquesDefaultOut;  // never the committed docs/ unless named
   std::string device = "auto";
 };
 int run_techniques(const TechniquesOptions& options);

@@ -3,12 +3,14 @@
 #include <cstdio>
 #include <exception>
 #include <iostream>
+#include <string>
 
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 
 #include "antumbra/runtime/data_paths.hpp"
 #include "bench_baseline.hpp"
+#include "bench_scenarios.hpp"
 #include "commands.hpp"
 #include "edit_script.hpp"
 
@@ -50,7 +52,9 @@ CLI::App* add_techniques_command(CLI::App& cli, antumbra::app::TechniquesOptions
                   "bench.json of `bench --scenario table1/` on the GPU (the GPU ms column)");
   cmd->add_option("--cpu-bench", options.cpu_bench,
                   "bench.json of `bench --scenario table1/` on lavapipe (the ratio column)");
-  cmd->add_option("--out", options.out, "Markdown file; crops go to techniques/ beside it")
+  cmd->add_option("--out", options.out,
+                  "Markdown file; crops go to techniques/ beside it (docs/techniques.md, the "
+                  "committed table, is written only when named)")
       ->capture_default_str();
   cmd->add_option("--device", options.device, "auto|cpu|gpu|N|<name substring>")
       ->capture_default_str();
@@ -77,6 +81,21 @@ CLI::Validator slower_percent() {
         return "expected a percentage >= 0, got " + text;
       },
       "PCT >= 0"};
+}
+
+// `bench --quick`'s help, from the preset itself so that it cannot go stale.
+std::string quick_help() {
+  using namespace antumbra::app;
+  char text[400];
+  std::snprintf(text, sizeof text,
+                "Preset for CPU devices (lavapipe; the moving table in under 10 minutes on 2 "
+                "cores): --frames %d --warmup %d --scale %g, and the district's rows at %g of "
+                "that scale with %d lights, %d moving (not %d, %d: rows named "
+                "'%dl-district'); an explicit --frames, --warmup or --scale wins",
+                kQuickFrames, kQuickWarmup, kQuickScale, kQuickDistrict.scale,
+                kQuickDistrict.lights, kQuickDistrict.moving, kDistrictLights,
+                kDistrictMovingLights, kQuickDistrict.lights);
+  return text;
 }
 
 // The CLI option table: one block of CLI11 declarations per subcommand, then the dispatch.
@@ -174,16 +193,22 @@ int dispatch(int argc, char** argv) {
   BenchOptions bench;
   auto* bench_cmd =
       cli.add_subcommand("bench", "Run named benchmark scenarios; write CSV, JSON and a plot");
-  bench_cmd->add_option("--scenario", bench.filters, "Substring of scenario names (repeatable)");
-  bench_cmd->add_option("--frames", bench.frames, "Timed frames per scenario")
-      ->check(CLI::Range(1, 100000))
-      ->capture_default_str();
-  bench_cmd->add_option("--warmup", bench.warmup, "Warm-up frames per scenario")
-      ->check(CLI::Range(0, 100000))
-      ->capture_default_str();
-  bench_cmd->add_option("--scale", bench.scale, "Resolution scale (e.g. 0.25 on lavapipe)")
-      ->check(CLI::Range(0.01, 4.0))
-      ->capture_default_str();
+  bench_cmd->add_option("--scenario", bench.filters,
+                        "Substring of scenario names (repeatable); --list lists those it selects");
+  auto* bench_frames = bench_cmd->add_option("--frames", bench.frames, "Timed frames per scenario")
+                           ->check(CLI::Range(1, 100000))
+                           ->capture_default_str();
+  auto* bench_warmup =
+      bench_cmd
+          ->add_option("--warmup", bench.warmup,
+                       "Untimed warm-up frames before each scenario's timed ones (0: none)")
+          ->check(CLI::Range(0, 100000))
+          ->capture_default_str();
+  auto* bench_scale =
+      bench_cmd->add_option("--scale", bench.scale, "Resolution scale (e.g. 0.25 on lavapipe)")
+          ->check(CLI::Range(0.01, 4.0))
+          ->capture_default_str();
+  bench_cmd->add_flag("--quick", bench.quick, quick_help());
   bench_cmd->add_option("--out", bench.out, "Output folder")->capture_default_str();
   bench_cmd->add_option("--device", bench.device, "auto|cpu|gpu|N|<name substring>")
       ->capture_default_str();
@@ -280,7 +305,11 @@ int dispatch(int argc, char** argv) {
   }
   if (passes_cmd->parsed()) return run_passes(passes);
   if (devices_cmd->parsed()) return run_devices(devices_device, devices_validation);
-  if (bench_cmd->parsed()) return run_bench(bench);
+  if (bench_cmd->parsed()) {
+    apply_quick_preset(
+        bench, {bench_frames->count() > 0, bench_warmup->count() > 0, bench_scale->count() > 0});
+    return run_bench(bench);
+  }
   if (compare_cmd->parsed()) return run_compare(compare);
   if (quality_cmd->parsed()) return run_quality(quality);
   if (techniques_cmd->parsed()) return run_techniques(techniques);

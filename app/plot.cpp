@@ -7,9 +7,12 @@
 #include <cstdio>
 #include <numeric>
 #include <stdexcept>
+#include <string>
 
 #include <stb_easy_font.h>
 #include <stb_image_write.h>
+
+#include "antumbra/editor/atomic_file.hpp"
 
 namespace antumbra::app {
 namespace {
@@ -201,10 +204,18 @@ void write_stacked_chart(const std::string& path, const StackedChart& chart) {
     draw_row(canvas, chart.rows[i], rows_top + static_cast<int>(i) * kRow, px_per_unit);
   }
   draw_axis(canvas, chart, rows_bottom, step, ticks, px_per_unit);
-  if (stbi_write_png(path.c_str(), canvas.width, canvas.height, 3, canvas.rgb.data(),
-                     canvas.width * 3) == 0) {
-    throw std::runtime_error("cannot write " + path);
+  // Encoded in memory and renamed into place: `bench` rewrites its chart after every
+  // scenario, and a run killed meanwhile must not leave half a PNG.
+  std::string png;
+  const auto append = [](void* context, void* data, int size) {
+    static_cast<std::string*>(context)->append(static_cast<const char*>(data),
+                                               static_cast<std::size_t>(size));
+  };
+  if (stbi_write_png_to_func(append, &png, canvas.width, canvas.height, 3, canvas.rgb.data(),
+                             canvas.width * 3) == 0) {
+    throw std::runtime_error("cannot encode " + path);
   }
+  editor::write_file_atomically(path, png);
 }
 
 }  // namespace antumbra::app

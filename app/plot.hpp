@@ -30,7 +30,8 @@ struct StackedChart {
 // to reach `max_value` (> 0).
 double nice_tick_step(double max_value, int max_ticks);
 
-// Throws std::runtime_error when the file cannot be written.
+// Writes atomically (a temporary renamed over `path`); throws std::runtime_error when the
+// file cannot be written.
 void write_stacked_chart(const std::string& path, const StackedChart& chart);
 
 }  // namespace antumbra::app

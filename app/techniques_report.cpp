@@ -107,6 +107,35 @@ ErrorSides error_sides(const FloatImage& reference, const FloatImage& image) {
   return sides;
 }
 
+void note_empty_time_columns(TechniquesReport& report, const std::string& gpu_bench,
+                             const std::string& cpu_bench) {
+  bool gpu = false;
+  bool cpu = false;
+  for (const auto& row : report.rows) {
+    gpu = gpu || row.gpu_ms.has_value();
+    cpu = cpu || row.cpu_ratio.has_value();
+  }
+  report.gpu_note.clear();
+  report.cpu_note.clear();
+  if (!gpu) {
+    report.gpu_note = gpu_bench.empty()
+                          ? "no `--gpu-bench` given (the bench.json of `antumbra bench "
+                            "--scenario table1/` on a GPU)"
+                          : "`" + gpu_bench +
+                                "` has no ok table1 row of these graphs (measure "
+                                "them with `antumbra bench --scenario table1/`)";
+  }
+  if (!cpu) {
+    report.cpu_note = cpu_bench.empty()
+                          ? "no `--cpu-bench` given (the bench.json of `antumbra bench "
+                            "--scenario table1/ --scale 0.25` on lavapipe; techniques does not "
+                            "time frames itself)"
+                          : "`" + cpu_bench +
+                                "` has no ok table1 row of `hard.json` (the "
+                                "ratio's denominator) or of these graphs";
+  }
+}
+
 std::string techniques_markdown(const TechniquesReport& report) {
   std::string md;
   md += "# Shadow techniques compared\n\n";
@@ -129,6 +158,11 @@ std::string techniques_markdown(const TechniquesReport& report) {
         report.gpu_device + ".";
   }
   md += " Lavapipe: the frame time over `hard.json`'s on this machine's CPU.\n\n";
+  if (!report.size_warning.empty()) md += "**Warning:** " + report.size_warning + ".\n\n";
+  if (!report.gpu_note.empty()) md += "The GPU ms column is empty: " + report.gpu_note + ".\n\n";
+  if (!report.cpu_note.empty()) {
+    md += "The lavapipe column is empty: " + report.cpu_note + ".\n\n";
+  }
   md +=
       "| graph | all RMSE | PSNR | SSIM | penumbra RMSE | PSNR | SSIM | overlap RMSE | PSNR | "
       "SSIM | brighter | darker | memory MiB | GPU ms | lavapipe x hard |\n";

@@ -59,8 +59,24 @@ struct TechniquesReport {
   std::string reference_crop;
   CropRect crop;
   std::vector<TechniqueRow> rows;
+  std::string size_warning;  // the frame is too small to rank by (ranking_size_warning)
+  // Why the GPU ms / lavapipe columns hold no number at all; empty when one has a number.
+  std::string gpu_note;
+  std::string cpu_note;
 };
 
+// Sets the report's gpu_note and cpu_note for its rows: the `--gpu-bench` / `--cpu-bench`
+// file given (empty: none) and, where a column is empty all the same, what that file
+// lacks. A "-" column without a reason reads as "not measurable"; it only means "not
+// measured here".
+void note_empty_time_columns(TechniquesReport& report, const std::string& gpu_bench,
+                             const std::string& cpu_bench);
+
 std::string techniques_markdown(const TechniquesReport& report);
+
+// Where `techniques` writes without --out: out/techniques.md under the working
+// directory, never the committed docs/techniques.md (which `--out docs/techniques.md`
+// regenerates on purpose).
+inline constexpr const char* kTechniquesDefaultOut = "out/techniques.md";
 
 }  // namespace antumbra::app

@@ -220,5 +220,41 @@ TEST(BenchBaseline, WarnsWhenDeviceOrSettingsDiffer) {
   EXPECT_EQ(setup_mismatches(baseline, {"GPU B", 30, 10, 1.0}).size(), 0u);
 }
 
+// A killed run's bench.json ("complete": false) is accepted as a baseline, with a warning
+// that says how far it got; the scenarios it never reached are only in this run.
+TEST(BenchBaseline, APartialBaselineIsComparedAsFarAsItGoesWithAWarning) {
+  auto json = test::baseline_json();
+  json["complete"] = false;
+  json["scenariosPlanned"] = 10;
+  json["scenariosFinished"] = 4;
+  const auto partial = load_bench_file(write_file("partial.json", json.dump(2)).string());
+  ASSERT_TRUE(partial.complete.has_value());
+  EXPECT_FALSE(*partial.complete);
+  EXPECT_EQ(partial.planned, 10);
+  const auto lines = setup_mismatches(partial, {"GPU A", 60, 10, 1.0});
+  ASSERT_EQ(lines.size(), 1u);
+  EXPECT_NE(lines[0].find("partial.json is partial (an interrupted run: 4 of 10 scenarios "
+                          "finished)"),
+            std::string::npos)
+      << lines[0];
+  const auto run = load_bench_file(write_file("R.json", test::run_json().dump(2)).string());
+  const auto comparison = compare_with_baseline(partial.results, run.results);
+  EXPECT_EQ(comparison.count(Kind::only_in_run), two_runs().comparison.count(Kind::only_in_run));
+
+  json["complete"] = true;  // a finished run, and a file from before the key: no warning
+  EXPECT_TRUE(setup_mismatches(load_bench_file(write_file("done.json", json.dump(2)).string()),
+                               {"GPU A", 60, 10, 1.0})
+                  .empty());
+  EXPECT_FALSE(two_runs().baseline.complete.has_value());
+  json["complete"] = "no";
+  try {
+    load_bench_file(write_file("bad.json", json.dump(2)).string());
+    ADD_FAILURE() << "a non-boolean \"complete\" was accepted";
+  } catch (const BaselineError& e) {
+    EXPECT_NE(std::string(e.what()).find("expected a boolean at /complete"), std::string::npos)
+        << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace antumbra::app

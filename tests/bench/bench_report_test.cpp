@@ -140,5 +140,53 @@ TEST(LongCsv, StepsFollowTheFrameRowTypedByTheirPass) {
   EXPECT_DOUBLE_EQ(json[0]["frame"]["medianMs"].get<double>(), 4.5);
 }
 
+// bench.json is rewritten after every scenario: its head says how far the run got.
+TEST(BenchJson, IsCompleteOnlyOnceEveryPlannedScenarioIsIn) {
+  BenchRun run;
+  run.commit = "abc";
+  run.device = "llvmpipe";
+  run.driver = "Mesa";
+  run.frames = 3;
+  run.warmup = 1;
+  run.warmup_from = "--quick";
+  run.scale = 0.25;
+  run.preset = "quick";
+  run.planned = 3;
+  run.finished = 2;
+  const auto results = two_results();
+  auto json = bench_json(run, results);
+  EXPECT_EQ(json["complete"], false);
+  EXPECT_EQ(json["scenariosPlanned"], 3);
+  EXPECT_EQ(json["scenariosFinished"], 2);
+  EXPECT_EQ(json["warmup"], 1);
+  EXPECT_EQ(json["warmupFrom"], "--quick");
+  EXPECT_EQ(json["preset"], "quick");
+  EXPECT_EQ(json["scenarios"], results_json(results));
+  run.planned = 2;
+  run.preset.clear();
+  json = bench_json(run, results);
+  EXPECT_EQ(json["complete"], true);
+  EXPECT_FALSE(json.contains("preset"));
+}
+
+TEST(BenchJson, TheFirstLineSaysWhereTheWarmupCameFrom) {
+  BenchRun run;
+  run.device = "llvmpipe";
+  run.planned = 2;
+  run.frames = 3;
+  run.warmup = 10;
+  EXPECT_EQ(bench_setup_line(run),
+            "bench on llvmpipe: 2 scenario(s), 10 warm-up (default) + 3 timed frames each, "
+            "scale 1.00");
+  run.warmup = 0;
+  run.warmup_from = "--warmup";
+  EXPECT_EQ(bench_setup_line(run),
+            "bench on llvmpipe: 2 scenario(s), 0 warm-up + 3 timed frames each, scale 1.00");
+  run.warmup_from = "--quick";
+  run.preset = "quick";
+  EXPECT_NE(bench_setup_line(run).find("0 warm-up (--quick) + 3"), std::string::npos);
+  EXPECT_NE(bench_setup_line(run).find("scale 1.00 (--quick)"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace antumbra::app

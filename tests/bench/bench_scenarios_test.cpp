@@ -171,6 +171,28 @@ TEST(BenchScenarios, MovingTableScalesLikeTheOthers) {
   EXPECT_EQ(bench_motion(s).moving, 64);
 }
 
+// --quick shrinks the district's rows further than the rest and keeps fewer of their
+// lights, moving fewer of them; only theirs change, and their names say so.
+TEST(BenchScenarios, QuickDistrictRowsAreSmallerAndSayWhatTheyHold) {
+  const auto quick = builtin_scenarios(kQuickScale, kQuickDistrict);
+  const auto plain = builtin_scenarios(kQuickScale);
+  ASSERT_EQ(quick.size(), plain.size());
+  const auto& district = named(quick, "moving/ssss-11/135p/256l-district/compute");
+  EXPECT_EQ(district.width, 240u);
+  EXPECT_EQ(district.lights, kQuickDistrict.lights);
+  EXPECT_EQ(district.face,
+            shadow_face_size(kQuickDistrict.lights, kQuickScale * kQuickDistrict.scale));
+  EXPECT_EQ(district.scene, kDistrictScene);
+  EXPECT_EQ(district.moving, kQuickDistrict.moving);
+  EXPECT_EQ(named(plain, "moving/ssss-11/270p/1024l").moving, kDistrictMovingLights);
+  for (std::size_t i = 0; i < quick.size(); ++i) {
+    if (quick[i].scene == kDistrictScene) continue;
+    EXPECT_EQ(quick[i].name, plain[i].name);
+    EXPECT_EQ(quick[i].face, plain[i].face);
+  }
+  EXPECT_EQ(named(quick, "lights/ssss-11/270p/1024l").face, 128u);  // the atrium's 1024
+}
+
 TEST(BenchScenarios, MovingScenesHaveTheirLightsAfterTheLightCount) {
   // What run_scenario renders: the scenario's scene with its light count.
   for (const char* file : {"atrium.json", "district.json"}) {

@@ -1,5 +1,7 @@
 // antumbra techniques without a device: where the crops are cut, which bench row a graph
 // reads, the brighter/darker proxies and the table's shape.
+#include <filesystem>
+
 #include <gtest/gtest.h>
 
 #include "techniques_report.hpp"
@@ -85,6 +87,47 @@ TEST(TechniquesReport, TableHasOneRowPerTechniqueAndEveryCrop) {
   EXPECT_NE(md.find("| 1.234 |"), std::string::npos);
   EXPECT_NE(md.find("![sdf.json](techniques/sdf.png)"), std::string::npos);
   EXPECT_NE(md.find("![reference](techniques/reference.png)"), std::string::npos);
+}
+
+// An empty time column says why: no bench file given, or what the given one lacks.
+TEST(TechniquesReport, EmptyTimeColumnsSayWhy) {
+  TechniquesReport report;
+  report.width = 64;
+  report.height = 36;
+  TechniqueRow row;
+  row.graph = "hard.json";
+  report.rows = {row};
+  note_empty_time_columns(report, "", "");
+  EXPECT_NE(report.gpu_note.find("no `--gpu-bench` given"), std::string::npos) << report.gpu_note;
+  EXPECT_NE(report.cpu_note.find("no `--cpu-bench` given"), std::string::npos) << report.cpu_note;
+  note_empty_time_columns(report, "gpu/bench.json", "cpu/bench.json");
+  EXPECT_NE(report.gpu_note.find("`gpu/bench.json` has no ok table1 row"), std::string::npos);
+  EXPECT_NE(report.cpu_note.find("`cpu/bench.json` has no ok table1 row of `hard.json`"),
+            std::string::npos);
+  report.size_warning = "at 64x36 the ranking of techniques is not reliable";
+  std::string md = techniques_markdown(report);
+  EXPECT_NE(md.find("**Warning:** at 64x36 the ranking"), std::string::npos) << md;
+  EXPECT_NE(md.find("The GPU ms column is empty: `gpu/bench.json` has"), std::string::npos) << md;
+  EXPECT_NE(md.find("The lavapipe column is empty: `cpu/bench.json` has"), std::string::npos);
+
+  report.rows[0].gpu_ms = 1.0;  // one number fills a column: no note
+  report.rows[0].cpu_ratio = 1.0;
+  report.size_warning.clear();
+  note_empty_time_columns(report, "gpu/bench.json", "cpu/bench.json");
+  EXPECT_TRUE(report.gpu_note.empty());
+  EXPECT_TRUE(report.cpu_note.empty());
+  md = techniques_markdown(report);
+  EXPECT_EQ(md.find("Warning"), std::string::npos);
+  EXPECT_EQ(md.find("column is empty"), std::string::npos);
+}
+
+// Without --out, techniques writes beside the other outputs, never over the committed
+// docs/techniques.md (run from the repository, that is where a relative docs/ path lands).
+TEST(TechniquesReport, TheDefaultOutputIsNotUnderDocs) {
+  const std::filesystem::path out(kTechniquesDefaultOut);
+  EXPECT_TRUE(out.is_relative());
+  EXPECT_NE(*out.begin(), "docs");
+  EXPECT_EQ(out.extension(), ".md");
 }
 
 }  // namespace
