@@ -174,7 +174,7 @@ TEST(SceneFormat, EveryMisspeltKeyOfTheTableGetsItsDidYouMean) {
       scene[json::json_pointer(pointer)][typo] = 1;
       const auto result = parse_scene_text(
           scene.dump(), (kRoot / "tests" / "data" / "scenes" / "probe.json").string());
-      const std::string where = pointer + "/" + typo;
+      const std::string where = std::string(pointer).append("/").append(typo);
       const base::Diagnostic* found = nullptr;
       for (const base::Diagnostic& d : result.diagnostics()) {
         if (d.code == codes::scene::kUnknownKey && d.pointer == where) found = &d;

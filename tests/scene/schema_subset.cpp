@@ -86,8 +86,9 @@ class Validator {
     }
     const json properties = schema.value("properties", json::object());
     const auto extra = schema.find("additionalProperties");
+    const std::string base_pointer = pointer + "/";
     for (const auto& [key, member] : value.items()) {
-      const std::string p = pointer + "/" + key;
+      const std::string p = base_pointer + key;
       if (const auto it = properties.find(key); it != properties.end()) {
         check(*it, member, p);
       } else if (extra != schema.end() && extra->is_boolean() && !extra->get<bool>()) {

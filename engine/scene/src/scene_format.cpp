@@ -225,7 +225,7 @@ SceneKindDesc object_kind() {
           {
               {.name = "name",
                .type = K::string,
-               .default_value = "\"<type>#<index>\"",
+               .default_value = "type#index, e.g. box#3",
                .description = "Names its meshes (and imported lights: `<name>/<light>`); "
                               "`dynamic` refers to it."},
               {.name = "position",
@@ -277,16 +277,15 @@ KeyDesc positive_key(std::string_view name, K type, std::string_view def, std::s
           .description = what};
 }
 
-// An object type: `what` ("a box object") is also its title, without the article.
-SceneKindDesc object_type(SceneKind kind, std::string_view id, std::string_view what,
-                          std::string_view description, std::vector<KeyDesc> keys) {
-  std::string_view title = what.substr(what.find(' ') + 1);
+SceneKindDesc object_type(SceneKind kind, std::string_view id, std::string_view title,
+                          std::string_view what, std::string_view description,
+                          std::vector<KeyDesc> keys) {
   return {kind, id, title, what, description, std::move(keys), true};
 }
 
 SceneKindDesc arch_kind() {
   return object_type(
-      SceneKind::arch, "arch", "an arch object",
+      SceneKind::arch, "arch", "Arch object", "an arch object",
       "A solid arch extruded along Z: two piers and a curved top around an opening that "
       "reaches the ground; arches placed `width` apart share flush pier faces.",
       {primitive_key("arch"),
@@ -307,22 +306,22 @@ SceneKindDesc arch_kind() {
 
 std::vector<SceneKindDesc> primitive_kinds() {
   std::vector<SceneKindDesc> out;
-  out.push_back(object_type(
-      SceneKind::box, "box", "a box object", "An axis-aligned box centred on its position.",
-      {primitive_key("box"),
-       positive_key("size", K::vec3, "[1, 1, 1]", "Edge lengths (metres).")}));
+  out.push_back(object_type(SceneKind::box, "box", "Box object", "a box object",
+                            "An axis-aligned box centred on its position.",
+                            {primitive_key("box"), positive_key("size", K::vec3, "[1, 1, 1]",
+                                                                "Edge lengths (metres).")}));
   out.push_back(
-      object_type(SceneKind::plane, "plane", "a plane object",
+      object_type(SceneKind::plane, "plane", "Plane object", "a plane object",
                   "A single-sided rectangle in the XZ plane facing +Y.",
                   {primitive_key("plane"),
                    positive_key("size", K::vec2, "[1, 1]", "Extents along X and Z (metres).")}));
   out.push_back(object_type(
-      SceneKind::cylinder, "cylinder", "a cylinder object",
+      SceneKind::cylinder, "cylinder", "Cylinder object", "a cylinder object",
       "A closed cylinder along Y, centred on its position.",
       {primitive_key("cylinder"), positive_key("radius", K::number, "0.5", "Radius (metres)."),
        positive_key("height", K::number, "1", "Height (metres)."),
        segments_key(3, 256, "24", "Sides around the axis.")}));
-  out.push_back(object_type(SceneKind::sphere, "sphere", "a sphere object",
+  out.push_back(object_type(SceneKind::sphere, "sphere", "Sphere object", "a sphere object",
                             "A UV sphere centred on its position.",
                             {primitive_key("sphere"),
                              positive_key("radius", K::number, "0.5", "Radius (metres)."),
@@ -339,7 +338,7 @@ std::vector<SceneKindDesc> primitive_kinds() {
 std::vector<SceneKindDesc> file_object_kinds() {
   std::vector<SceneKindDesc> out;
   out.push_back(object_type(
-      SceneKind::gltf, "gltf", "a glTF object",
+      SceneKind::gltf, "gltf", "glTF object", "a glTF object",
       "A glTF 2.0 model: its meshes, its materials (named `<path>#<material>`) and its "
       "`KHR_lights_punctual` lights (named `<object>/<light>`, overridable in `lights`).",
       {{.name = "gltf",
@@ -347,7 +346,7 @@ std::vector<SceneKindDesc> file_object_kinds() {
         .required = true,
         .description = "Path of the `.gltf` or `.glb` file, relative to this scene file."}}));
   out.push_back(object_type(
-      SceneKind::scene_instance, "scene", "a scene object",
+      SceneKind::scene_instance, "scene", "Scene object", "a scene object",
       "Another scene file placed like an object: its meshes, its materials (named "
       "`<path>#<material>`) and its point and spot lights (named `<object>/<light>[i,j]`, "
       "ranges scaled with the object); not its camera, ambient or sun. A file may not "
