@@ -64,8 +64,9 @@ lint: configure
 format-check:
 	@python3 scripts/lint.py --format-only
 
-# Copies the schema and pass reference the build generated from the registered passes
-# into data/schema/ and docs/ (tests fail while the committed copies differ).
+# Copies the schemas and references the build generated from the registered passes and the
+# scene format's table into data/schema/ and docs/ (tests fail while the committed copies
+# differ).
 reference: configure
 	@cmake --build $(BUILD) -j$(JOBS) --target antumbra_update_reference
 

@@ -7,6 +7,7 @@
 #include "antumbra/fg/plan_memory.hpp"
 #include "antumbra/fg/schema.hpp"
 #include "antumbra/runtime/render_session.hpp"
+#include "antumbra/scene/scene_format.hpp"
 #include "commands.hpp"
 
 namespace antumbra::app {
@@ -136,7 +137,16 @@ int run_plan(const PlanOptions& options) {
   return runtime::kExitOk;
 }
 
-int run_schema() {
+int run_schema(const SchemaOptions& options) {
+  // Both scene outputs come from the scene format's table (scene_format.hpp).
+  if (options.markdown) {
+    std::cout << scene::scene_reference_markdown();
+    return runtime::kExitOk;
+  }
+  if (options.scene) {
+    std::cout << scene::scene_schema().dump(2) << '\n';
+    return runtime::kExitOk;
+  }
   const auto registry = runtime::pass_registry({});
   std::cout << fg::generate_schema(registry.reflection()).dump(2) << '\n';
   return runtime::kExitOk;

@@ -99,7 +99,12 @@ struct QualityOptions {
 int run_validate(const ValidateOptions& options);
 int run_bench(const BenchOptions& options);
 int run_plan(const PlanOptions& options);
-int run_schema();
+struct SchemaOptions {
+  bool scene = false;     // the scene file format instead of graph files
+  bool markdown = false;  // with scene: the reference (docs/scenes.md), not the JSON Schema
+};
+
+int run_schema(const SchemaOptions& options);
 int run_passes(const PassesOptions& options);
 int run_render(const RenderOptions& options);
 int run_devices(const std::string& device, bool validation);

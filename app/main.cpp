@@ -227,7 +227,15 @@ int dispatch(int argc, char** argv) {
       ->check(slower_percent())
       ->needs(baseline_opt);
 
-  cli.add_subcommand("schema", "Print the JSON Schema of graph files");
+  SchemaOptions schema;
+  auto* schema_cmd =
+      cli.add_subcommand("schema", "Print the JSON Schema of graph files (or of scene files)");
+  auto* scene_flag = schema_cmd->add_flag(
+      "--scene", schema.scene, "The JSON Schema of scene files (data/schema/scene.schema.json)");
+  schema_cmd
+      ->add_flag("--markdown", schema.markdown,
+                 "With --scene: the scene file reference instead (docs/scenes.md)")
+      ->needs(scene_flag);
 
   PassesOptions passes;
   auto* passes_cmd = cli.add_subcommand(
@@ -314,7 +322,7 @@ int dispatch(int argc, char** argv) {
   if (quality_cmd->parsed()) return run_quality(quality);
   if (techniques_cmd->parsed()) return run_techniques(techniques);
   if (docs_tables_cmd->parsed()) return run_docs_tables(docs_tables);
-  return run_schema();
+  return run_schema(schema);
 }
 
 }  // namespace

@@ -12,11 +12,11 @@ namespace antumbra::scene::detail {
 namespace {
 
 std::optional<ObjectMotion> parse_motion(JsonReader& r, const Json& motion, const std::string& p) {
-  if (!r.check_object(motion, p, "a motion", {"offset", "spin", "period"})) return std::nullopt;
+  if (!r.check_object(motion, p, SceneKind::motion)) return std::nullopt;
   ObjectMotion out;
   const auto offset = r.get_vec3(motion, p, "offset", glm::vec3(0.0f));
   const auto spin = r.get_float(motion, p, "spin", 0.0f);
-  const auto period = r.get_int(motion, p, "period", 240, Range::positive());
+  const auto period = r.get_int(motion, p, "period", 240, range_of(SceneKind::motion, "period"));
   if (!offset || !spin || !period) return std::nullopt;
   out.offset = *offset;
   out.spin = *spin;
@@ -78,8 +78,7 @@ void parse_dynamic(ParseContext& ctx, const Json& entries, const std::string& po
     std::string name_pointer = p;
     if (entry.is_string()) {
       name = entry.get<std::string>();
-    } else if (r.check_object(entry, p, "a dynamic entry (an object name or {object, motion})",
-                              {"object", "motion"})) {
+    } else if (r.check_object(entry, p, SceneKind::dynamic_entry)) {
       name = r.get_string(entry, p, "object", std::nullopt);
       name_pointer = p + "/object";
       if (const auto it = entry.find("motion"); it != entry.end()) {

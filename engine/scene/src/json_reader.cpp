@@ -43,24 +43,6 @@ std::string format_number(double v) {
 
 }  // namespace
 
-bool Range::contains(double v) const {
-  if (min_exclusive ? v <= min : v < min) return false;
-  if (max_exclusive ? v >= max : v > max) return false;
-  return true;
-}
-
-std::string Range::describe() const {
-  const bool has_min = min > -1e29;
-  const bool has_max = max < 1e29;
-  if (has_min && has_max) {
-    return std::string("in ") + (min_exclusive ? "(" : "[") + format_number(min) + ", " +
-           format_number(max) + (max_exclusive ? ")" : "]");
-  }
-  if (has_min) return std::string(min_exclusive ? "> " : ">= ") + format_number(min);
-  if (has_max) return std::string(max_exclusive ? "< " : "<= ") + format_number(max);
-  return "finite";
-}
-
 std::string closest_match(std::string_view word, std::span<const std::string_view> candidates) {
   std::string best;
   std::size_t best_distance = std::max<std::size_t>(2, word.size() / 3) + 1;
@@ -128,6 +110,11 @@ bool JsonReader::check_object(const Json& value, const std::string& pointer, std
     error(codes::scene::kUnknownKey, std::move(message), base::pointer_append(pointer, key), true);
   }
   return true;
+}
+
+bool JsonReader::check_object(const Json& value, const std::string& pointer, SceneKind kind) {
+  const std::vector<std::string_view> known = scene_key_names(kind);
+  return check_object(value, pointer, scene_kind(kind).what, known);
 }
 
 const Json* JsonReader::member(const Json& object, const std::string& pointer, std::string_view key,

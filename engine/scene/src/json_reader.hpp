@@ -12,24 +12,14 @@
 #include <glm/glm.hpp>
 
 #include "antumbra/base/json_document.hpp"
+#include "antumbra/scene/scene_format.hpp"
 
 namespace antumbra::scene::detail {
 
 using base::Json;
 
-struct Range {
-  double min = -1e30;
-  double max = 1e30;
-  bool min_exclusive = false;
-  bool max_exclusive = false;
-
-  static Range any() { return {}; }
-  static Range non_negative() { return {0.0, 1e30, false, false}; }
-  static Range positive() { return {0.0, 1e30, true, false}; }
-  static Range unit() { return {0.0, 1.0, false, false}; }
-  [[nodiscard]] bool contains(double v) const;
-  [[nodiscard]] std::string describe() const;  // "> 0", "in [0, 1]"...
-};
+// Ranges are declared in the scene format's table (scene_format.hpp).
+using scene::Range;
 
 // The closest of `candidates` to `word` when it is a plausible typo, else "".
 std::string closest_match(std::string_view word, std::span<const std::string_view> candidates);
@@ -38,6 +28,11 @@ inline std::string closest_match(std::string_view word,
   return closest_match(word, std::span(candidates.begin(), candidates.size()));
 }
 const char* json_type_name(const Json& value);
+
+// The range the scene format's table declares for `key` of `kind`.
+inline Range range_of(SceneKind kind, std::string_view key) {
+  return scene_key(kind, key).range;
+}
 
 class JsonReader {
  public:
@@ -59,6 +54,8 @@ class JsonReader {
                     std::initializer_list<std::string_view> known) {
     return check_object(value, pointer, what, std::span(known.begin(), known.size()));
   }
+  // The keys and the name ("a light") of `kind` come from the scene format's table.
+  bool check_object(const Json& value, const std::string& pointer, SceneKind kind);
   bool check_type(const Json& value, const std::string& pointer, Json::value_t type);
 
   // Member readers. Absent and optional -> `fallback`; absent and required (no

@@ -1,5 +1,6 @@
 // The "objects" array: procedural primitives, glTF files and other scene files, each with
 // a transform, an optional material and an optional "repeat" grid.
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <vector>
@@ -14,8 +15,6 @@
 
 namespace antumbra::scene::detail {
 namespace {
-
-constexpr std::string_view kPrimitives[] = {"box", "plane", "cylinder", "sphere", "arch"};
 
 glm::mat4 compose(const glm::vec3& position, const glm::vec3& rotation_deg,
                   const glm::vec3& scale) {
@@ -43,8 +42,9 @@ bool parse_repeat(JsonReader& r, const Json& value, const std::string& p, Placem
   long long total = 1;
   std::vector<std::pair<int, glm::vec3>> grid;
   for (const auto& [axis, ap] : axes) {
-    if (!r.check_object(*axis, ap, "'repeat'", {"count", "offset"})) return false;
-    const auto count = r.get_int(*axis, ap, "count", std::nullopt, {1.0, 1e9, false, false});
+    if (!r.check_object(*axis, ap, SceneKind::repeat)) return false;
+    const auto count =
+        r.get_int(*axis, ap, "count", std::nullopt, range_of(SceneKind::repeat, "count"));
     const auto offset = r.get_vec3(*axis, ap, "offset", std::nullopt);
     if (!count || !offset) return false;
     total *= *count;
@@ -82,11 +82,12 @@ std::optional<Placement> parse_placement(JsonReader& r, const Json& o, const std
   const auto position = r.get_vec3(o, p, "position", glm::vec3(0.0f));
   const auto rotation = r.get_vec3(o, p, "rotation", glm::vec3(0.0f));
   std::optional<glm::vec3> scale = glm::vec3(1.0f);
+  const Range scale_range = range_of(SceneKind::object, "scale");
   if (const auto it = o.find("scale"); it != o.end() && it->is_number()) {
-    const auto s = r.get_float(o, p, "scale", 1.0f, Range::positive());
+    const auto s = r.get_float(o, p, "scale", 1.0f, scale_range);
     scale = s ? std::optional<glm::vec3>(glm::vec3(*s)) : std::nullopt;
   } else {
-    scale = r.get_vec3(o, p, "scale", glm::vec3(1.0f), Range::positive());
+    scale = r.get_vec3(o, p, "scale", glm::vec3(1.0f), scale_range);
   }
   bool ok = position && rotation && scale;
   if (const auto it = o.find("repeat"); it != o.end()) {
@@ -115,54 +116,70 @@ std::optional<int> parse_material_ref(ParseContext& ctx, const Json& o, const st
   return std::nullopt;
 }
 
+std::optional<Mesh> build_arch(JsonReader& r, const Json& o, const std::string& p) {
+  const auto range = [](std::string_view key) { return range_of(SceneKind::arch, key); };
+  ArchParams a;
+  const auto width = r.get_float(o, p, "width", a.width, range("width"));
+  const auto height = r.get_float(o, p, "height", a.height, range("height"));
+  const auto depth = r.get_float(o, p, "depth", a.depth, range("depth"));
+  const auto pier = r.get_float(o, p, "pierWidth", a.pier_width, range("pierWidth"));
+  const auto crown = r.get_float(o, p, "crown", a.crown, range("crown"));
+  const auto style = r.get_string(o, p, "style", "round");
+  const auto segments = r.get_int(o, p, "segments", a.segments, range("segments"));
+  if (!width || !height || !depth || !pier || !crown || !style || !segments) return std::nullopt;
+  const auto& styles = scene_key(SceneKind::arch, "style").choices;
+  if (std::find(styles.begin(), styles.end(), *style) == styles.end()) {
+    r.error(codes::scene::kOutOfRange, "arch style '" + *style + "' must be 'round' or 'pointed'",
+            p + "/style");
+    return std::nullopt;
+  }
+  a = ArchParams{*width,   *height, *depth,
+                 *pier,    *crown,  *style == "round" ? ArchStyle::round : ArchStyle::pointed,
+                 *segments};
+  if (a.width - 2.0f * a.pier_width <= 0.0f) {
+    r.error(codes::scene::kBadArchShape, "arch piers (2 x pierWidth) leave no opening in its width",
+            p);
+    return std::nullopt;
+  }
+  if (arch_springline(a) < 0.0f) {
+    r.error(codes::scene::kBadArchShape,
+            "arch opening does not fit: height - crown is below the curve's rise", p);
+    return std::nullopt;
+  }
+  return make_arch(a);
+}
+
+// A primitive of the type `kind` (one the table declares), its ranges from the table.
 std::optional<Mesh> build_primitive(JsonReader& r, const Json& o, const std::string& p,
-                                    std::string_view kind) {
-  const Range positive = Range::positive();
-  if (kind == "box") {
-    const auto size = r.get_vec3(o, p, "size", glm::vec3(1.0f), positive);
-    if (size) return make_box(*size);
-  } else if (kind == "plane") {
-    const auto size = r.get_vec2(o, p, "size", glm::vec2(1.0f), positive);
-    if (size) return make_plane(*size);
-  } else if (kind == "cylinder") {
-    const auto radius = r.get_float(o, p, "radius", 0.5f, positive);
-    const auto height = r.get_float(o, p, "height", 1.0f, positive);
-    const auto segments = r.get_int(o, p, "segments", 24, {3, 256});
-    if (radius && height && segments) return make_cylinder(*radius, *height, *segments);
-  } else if (kind == "sphere") {
-    const auto radius = r.get_float(o, p, "radius", 0.5f, positive);
-    const auto segments = r.get_int(o, p, "segments", 24, {3, 256});
-    const auto rings = r.get_int(o, p, "rings", 12, {2, 256});
-    if (radius && segments && rings) return make_sphere(*radius, *segments, *rings);
-  } else if (kind == "arch") {
-    ArchParams a;
-    const auto width = r.get_float(o, p, "width", a.width, positive);
-    const auto height = r.get_float(o, p, "height", a.height, positive);
-    const auto depth = r.get_float(o, p, "depth", a.depth, positive);
-    const auto pier = r.get_float(o, p, "pierWidth", a.pier_width, positive);
-    const auto crown = r.get_float(o, p, "crown", a.crown, positive);
-    const auto style = r.get_string(o, p, "style", "round");
-    const auto segments = r.get_int(o, p, "segments", a.segments, {1, 64});
-    if (!width || !height || !depth || !pier || !crown || !style || !segments) return std::nullopt;
-    if (*style != "round" && *style != "pointed") {
-      r.error(codes::scene::kOutOfRange, "arch style '" + *style + "' must be 'round' or 'pointed'",
-              p + "/style");
-      return std::nullopt;
+                                    const SceneKindDesc& kind) {
+  const auto range = [&kind](std::string_view key) { return range_of(kind.kind, key); };
+  switch (kind.kind) {
+    case SceneKind::box:
+      if (const auto size = r.get_vec3(o, p, "size", glm::vec3(1.0f), range("size")))
+        return make_box(*size);
+      break;
+    case SceneKind::plane:
+      if (const auto size = r.get_vec2(o, p, "size", glm::vec2(1.0f), range("size")))
+        return make_plane(*size);
+      break;
+    case SceneKind::cylinder: {
+      const auto radius = r.get_float(o, p, "radius", 0.5f, range("radius"));
+      const auto height = r.get_float(o, p, "height", 1.0f, range("height"));
+      const auto segments = r.get_int(o, p, "segments", 24, range("segments"));
+      if (radius && height && segments) return make_cylinder(*radius, *height, *segments);
+      break;
     }
-    a = ArchParams{*width,   *height, *depth,
-                   *pier,    *crown,  *style == "round" ? ArchStyle::round : ArchStyle::pointed,
-                   *segments};
-    if (a.width - 2.0f * a.pier_width <= 0.0f) {
-      r.error(codes::scene::kBadArchShape,
-              "arch piers (2 x pierWidth) leave no opening in its width", p);
-      return std::nullopt;
+    case SceneKind::sphere: {
+      const auto radius = r.get_float(o, p, "radius", 0.5f, range("radius"));
+      const auto segments = r.get_int(o, p, "segments", 24, range("segments"));
+      const auto rings = r.get_int(o, p, "rings", 12, range("rings"));
+      if (radius && segments && rings) return make_sphere(*radius, *segments, *rings);
+      break;
     }
-    if (arch_springline(a) < 0.0f) {
-      r.error(codes::scene::kBadArchShape,
-              "arch opening does not fit: height - crown is below the curve's rise", p);
-      return std::nullopt;
-    }
-    return make_arch(a);
+    case SceneKind::arch:
+      return build_arch(r, o, p);
+    default:
+      break;
   }
   return std::nullopt;
 }
@@ -221,41 +238,24 @@ void parse_object(ParseContext& ctx, const Json& o, const std::string& p, std::s
     return;
   }
   std::optional<std::string> kind;
+  const SceneKindDesc* primitive = nullptr;
   if (is_primitive) {
     kind = r.get_string(o, p, "primitive", std::nullopt);
     if (!kind) return;
-    if (std::find(std::begin(kPrimitives), std::end(kPrimitives), *kind) == std::end(kPrimitives)) {
+    primitive = primitive_kind(*kind);
+    if (primitive == nullptr) {
       std::string message = "unknown primitive '" + *kind + "'";
-      const std::string hint = closest_match(*kind, {"box", "plane", "cylinder", "sphere", "arch"});
+      const std::string hint = closest_match(*kind, primitive_names());
       message += hint.empty() ? "; expected box, plane, cylinder, sphere or arch"
                               : "; did you mean '" + hint + "'?";
       r.error(codes::scene::kUnknownPrimitive, std::move(message), p + "/primitive");
       return;
     }
   }
-  const auto check_keys = [&](std::initializer_list<std::string_view> extra) {
-    std::vector<std::string_view> keys = {"name",  "position", "rotation",
-                                          "scale", "material", "repeat"};
-    keys.insert(keys.end(), extra.begin(), extra.end());
-    const std::string what = kind       ? "a " + *kind + " object"
-                             : is_scene ? std::string("a scene object")
-                                        : std::string("a glTF object");
-    r.check_object(o, p, what, keys);
-  };
-  if (is_scene) {
-    check_keys({"scene"});
-  } else if (!kind) {
-    check_keys({"gltf"});
-  } else if (*kind == "box" || *kind == "plane") {
-    check_keys({"primitive", "size"});
-  } else if (*kind == "cylinder") {
-    check_keys({"primitive", "radius", "height", "segments"});
-  } else if (*kind == "sphere") {
-    check_keys({"primitive", "radius", "segments", "rings"});
-  } else {
-    check_keys(
-        {"primitive", "width", "height", "depth", "pierWidth", "crown", "style", "segments"});
-  }
+  r.check_object(o, p,
+                 primitive != nullptr ? primitive->kind
+                 : is_scene           ? SceneKind::scene_instance
+                                      : SceneKind::gltf);
   const auto name = r.get_string(o, p, "name", std::string());
   const auto placement = parse_placement(r, o, p);
   const bool has_material = o.contains("material");
@@ -274,7 +274,7 @@ void parse_object(ParseContext& ctx, const Json& o, const std::string& p, std::s
     parse_gltf_object(ctx, o, p, *placement, has_material ? material : std::optional<int>(), base);
     return;
   }
-  auto mesh = build_primitive(r, o, p, *kind);
+  auto mesh = build_primitive(r, o, p, *primitive);
   if (!mesh) return;
   mesh->material = *material;
   add_copies(ctx, *mesh, *placement, base);

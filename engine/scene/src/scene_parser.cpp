@@ -19,6 +19,7 @@ namespace {
 using detail::Json;
 using detail::JsonReader;
 using detail::Range;
+using detail::range_of;
 
 // Returns false when the version is missing or unusable: the rest of the file is then
 // not validated, since its meaning is unknown.
@@ -57,16 +58,14 @@ void parse_camera(JsonReader& r, const Json& root, Camera& camera) {
     r.error(codes::scene::kMissingKey, "missing required key 'camera'", "");
     return;
   }
-  if (!r.check_object(*it, p, "the camera", {"position", "target", "up", "fovY", "near", "far"})) {
-    return;
-  }
+  if (!r.check_object(*it, p, SceneKind::camera)) return;
   const Json& c = *it;
   const auto position = r.get_vec3(c, p, "position", std::nullopt);
   const auto target = r.get_vec3(c, p, "target", std::nullopt);
   const auto up = r.get_vec3(c, p, "up", glm::vec3(0, 1, 0));
-  const auto fov = r.get_float(c, p, "fovY", 60.0f, {0.0, 180.0, true, true});
-  const auto near = r.get_float(c, p, "near", 0.1f, Range::positive());
-  const auto far = r.get_float(c, p, "far", 200.0f, Range::positive());
+  const auto fov = r.get_float(c, p, "fovY", 60.0f, range_of(SceneKind::camera, "fovY"));
+  const auto near = r.get_float(c, p, "near", 0.1f, range_of(SceneKind::camera, "near"));
+  const auto far = r.get_float(c, p, "far", 200.0f, range_of(SceneKind::camera, "far"));
   if (position) camera.position = *position;
   if (target) camera.target = *target;
   if (up) camera.up = *up;
@@ -89,16 +88,20 @@ void parse_camera(JsonReader& r, const Json& root, Camera& camera) {
 }
 
 void parse_material(JsonReader& r, const Json& m, const std::string& p, Material& out) {
-  if (!r.check_object(m, p, "a material",
-                      {"albedo", "roughness", "metallic", "translucent", "transmittance"})) {
-    return;
+  constexpr SceneKind kKind = SceneKind::material;
+  if (!r.check_object(m, p, kKind)) return;
+  if (auto v = r.get_vec3(m, p, "albedo", out.albedo, range_of(kKind, "albedo"))) out.albedo = *v;
+  if (auto v = r.get_float(m, p, "roughness", out.roughness, range_of(kKind, "roughness"))) {
+    out.roughness = *v;
   }
-  if (auto v = r.get_vec3(m, p, "albedo", out.albedo, Range::non_negative())) out.albedo = *v;
-  if (auto v = r.get_float(m, p, "roughness", out.roughness, Range::unit())) out.roughness = *v;
-  if (auto v = r.get_float(m, p, "metallic", out.metallic, Range::unit())) out.metallic = *v;
+  if (auto v = r.get_float(m, p, "metallic", out.metallic, range_of(kKind, "metallic"))) {
+    out.metallic = *v;
+  }
   if (auto v = r.get_bool(m, p, "translucent", false)) out.translucent = *v;
   const glm::vec4 fallback(glm::clamp(out.albedo, 0.0f, 1.0f), 0.5f);
-  if (auto v = r.get_vec4(m, p, "transmittance", fallback, Range::unit())) out.transmittance = *v;
+  if (auto v = r.get_vec4(m, p, "transmittance", fallback, range_of(kKind, "transmittance"))) {
+    out.transmittance = *v;
+  }
   if (m.contains("transmittance") && !out.translucent) {
     r.warning(codes::scene::kTransmittanceIgnored,
               "'transmittance' has no effect unless 'translucent' is true", p + "/transmittance",
@@ -139,11 +142,12 @@ void parse_light_aim(JsonReader& r, const Json& l, const std::string& p, PointLi
               p + "/direction", true);
   }
   if (out.type == LightType::spot) {
-    if (auto v = r.get_float(l, p, "angle", out.spot_outer, {0.0, 90.0, true, false})) {
+    if (auto v = r.get_float(l, p, "angle", out.spot_outer, range_of(SceneKind::light, "angle"))) {
       out.spot_outer = *v;
     }
     out.spot_inner = keep_cone ? std::min(out.spot_inner, out.spot_outer) : 0.8f * out.spot_outer;
-    if (auto v = r.get_float(l, p, "innerAngle", out.spot_inner, {0.0, 90.0, false, false})) {
+    if (auto v = r.get_float(l, p, "innerAngle", out.spot_inner,
+                             range_of(SceneKind::light, "innerAngle"))) {
       out.spot_inner = *v;
       if (*v > out.spot_outer) {
         r.error(codes::scene::kSpotAngles, "'innerAngle' must not exceed 'angle' (the outer cone)",
@@ -169,11 +173,7 @@ void parse_light_aim(JsonReader& r, const Json& l, const std::string& p, PointLi
 void parse_light(JsonReader& r, const Json& l, const std::string& p, PointLight& out,
                  bool overriding) {
   const LightType imported_type = out.type;
-  if (!r.check_object(l, p, "a light",
-                      {"name", "type", "position", "direction", "angle", "innerAngle", "color",
-                       "intensity", "range", "size", "castsShadows"})) {
-    return;
-  }
+  if (!r.check_object(l, p, SceneKind::light)) return;
   if (auto v = r.get_string(l, p, "name", std::nullopt)) out.name = *v;
   const char* type_default = !overriding                               ? "point"
                              : imported_type == LightType::spot        ? "spot"
@@ -212,14 +212,21 @@ void parse_light(JsonReader& r, const Json& l, const std::string& p, PointLight&
   } else {
     const auto kept_position = overriding ? std::optional(out.position) : std::nullopt;
     if (auto v = r.get_vec3(l, p, "position", kept_position)) out.position = *v;
-    if (auto v = r.get_float(l, p, "range", out.range, Range::positive())) out.range = *v;
+    if (auto v = r.get_float(l, p, "range", out.range, range_of(SceneKind::light, "range"))) {
+      out.range = *v;
+    }
   }
   parse_light_aim(r, l, p, out, overriding && imported_type == LightType::spot, overriding);
-  if (auto v = r.get_vec3(l, p, "color", out.color, Range::non_negative())) out.color = *v;
-  if (auto v = r.get_float(l, p, "intensity", out.intensity, Range::non_negative())) {
+  if (auto v = r.get_vec3(l, p, "color", out.color, range_of(SceneKind::light, "color"))) {
+    out.color = *v;
+  }
+  if (auto v =
+          r.get_float(l, p, "intensity", out.intensity, range_of(SceneKind::light, "intensity"))) {
     out.intensity = *v;
   }
-  const Range size_range = directional ? Range{0.0, 10.0, false, false} : Range::non_negative();
+  // The sun's size is an angle (its limit is in the key's description), the others' a radius.
+  const Range size_range =
+      directional ? Range{0.0, 10.0, false, false} : range_of(SceneKind::light, "size");
   if (auto v = r.get_float(l, p, "size", out.size, size_range)) out.size = *v;
   if (auto v = r.get_bool(l, p, "castsShadows", out.casts_shadows)) out.casts_shadows = *v;
 }
@@ -308,12 +315,11 @@ base::Result<Scene> parse_scene_document(const base::JsonDocument& document,
   const Json& root = document.root();
   if (!r.check_type(root, "", Json::value_t::object)) return diagnostics;
   if (!check_version(r, root)) return diagnostics;
-  r.check_object(root, "", "the scene",
-                 {"version", "name", "description", "camera", "ambient", "materials", "objects",
-                  "lights", "dynamic"});
+  r.check_object(root, "", SceneKind::file);
   if (auto v = r.get_string(root, "", "name", std::string())) scene.name = *v;
   (void)r.get_string(root, "", "description", std::string());
-  if (auto v = r.get_vec3(root, "", "ambient", glm::vec3(0.0f), Range::non_negative())) {
+  if (auto v =
+          r.get_vec3(root, "", "ambient", glm::vec3(0.0f), range_of(SceneKind::file, "ambient"))) {
     scene.ambient = *v;
   }
   parse_camera(r, root, scene.camera);
