@@ -4,8 +4,8 @@
 // (overlay.cpp). Antumbra renders the scene with layered soft shadows into the engine's
 // image, recorded into the engine's command buffer. This file is the integration itself.
 //
-//   host [--headless [--out F.png]] [--frames N] [--size WxH] [--no-overlay] [--validation]
-//        [--scene FILE] [--graph FILE]
+//   host [--headless [--out F.png]] [--frames N] [--size WxH] [--resize WxH] [--no-overlay]
+//        [--validation] [--scene FILE] [--graph FILE]
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -37,6 +37,7 @@ struct Options {
   bool validation = false;
   int frames = -1;  // -1: until the window closes (headless: 3)
   VkExtent2D size{1280, 720};
+  VkExtent2D resize{0, 0};  // the window's size after the first frame (a test of resizing)
   std::string out = "host.png";
   std::string scene;  // empty: the scene built below
   std::string graph = std::string(antumbra_data_dir()) + "/data/graphs/layered-ssss.json";
@@ -62,6 +63,8 @@ bool parse(int argc, char** argv, Options& o) {
       o.graph = argv[++i];
     } else if (arg == "--size" && value) {
       if (std::sscanf(argv[++i], "%ux%u", &o.size.width, &o.size.height) != 2) return false;
+    } else if (arg == "--resize" && value) {
+      if (std::sscanf(argv[++i], "%ux%u", &o.resize.width, &o.resize.height) != 2) return false;
     } else {
       return false;
     }
@@ -208,6 +211,7 @@ int run(const Options& o) {
         overlay->draw(f.cmd, f.target.view, vk.extent(), static_cast<std::uint32_t>(frame));
       }
       vk.end_frame(f, submission.semaphore, submission.value, o.headless && frame + 1 == o.frames);
+      if (frame == 0 && o.resize.width > 0) vk.request_size(o.resize);
     }
     vk.wait_idle();  // the overlay's pipeline is destroyed next
     if (o.headless && !gpu::write_png(o.out, vk.read_back())) return 1;
@@ -229,8 +233,8 @@ int main(int argc, char** argv) {
   Options options;
   if (!parse(argc, argv, options)) {
     std::fprintf(stderr,
-                 "usage: host [--headless [--out F.png]] [--frames N] [--size WxH] [--no-overlay]\n"
-                 "            [--validation] [--scene FILE] [--graph FILE]\n");
+                 "usage: host [--headless [--out F.png]] [--frames N] [--size WxH] [--resize WxH]\n"
+                 "            [--no-overlay] [--validation] [--scene FILE] [--graph FILE]\n");
     return 2;
   }
   try {

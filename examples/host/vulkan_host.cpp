@@ -269,6 +269,11 @@ void VulkanHost::create_offscreen() {
   check(vkBindBufferMemory(host_.device, readback_, readback_memory_, 0), "vkBindBufferMemory");
 }
 
+void VulkanHost::request_size(VkExtent2D extent) const {
+  if (window_ == nullptr) return;
+  glfwSetWindowSize(window_, static_cast<int>(extent.width), static_cast<int>(extent.height));
+}
+
 bool VulkanHost::poll() const {
   if (window_ == nullptr) return true;
   glfwPollEvents();

@@ -36,6 +36,9 @@ class VulkanHost {
   [[nodiscard]] std::size_t validation_messages() const { return messages_; }
   // False once the window was closed (always true headless).
   [[nodiscard]] bool poll() const;
+  // Asks the window for a new size, as a user dragging its border does: the next frames see
+  // it through the framebuffer-size callback (no window: nothing).
+  void request_size(VkExtent2D extent) const;
 
   // What one frame renders into, and where the engine left it before the frame.
   struct Target {

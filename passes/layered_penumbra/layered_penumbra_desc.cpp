@@ -14,6 +14,20 @@ void check(const fg::PlanPass& pass, const LayeredPenumbraParams& /*params*/, co
   check_layer_storage(pass, plan, graph, cap, port::kEsm, diagnostics);
 }
 
+// The colour map and the min-filtered faces are read texel for texel with the atlas, at
+// its face layers.
+void declare_atlas_contracts(std::vector<fg::PortDesc>& ports) {
+  for (fg::PortDesc& p : ports) {
+    if (p.name == port::kColour.name()) {
+      p.size_of = fg::SizeContract{port::kAtlas, fg::SizeRelation::same};
+      p.layers_of = fg::LayerContract{port::kAtlas, fg::LayerRelation::at_least};
+    } else if (p.name == port::kMinDepth.name()) {
+      p.size_of = fg::SizeContract{port::kAtlas, fg::SizeRelation::exact_fraction_even};
+      p.layers_of = fg::LayerContract{port::kAtlas, fg::LayerRelation::at_least};
+    }
+  }
+}
+
 }  // namespace
 
 fg::PassDesc LayeredPenumbraPass::describe() {
@@ -85,16 +99,7 @@ fg::PassDesc LayeredPenumbraPass::describe() {
        .description = "Exponential-shadow-map visibility exp(-c (d_receiver - d_occluder)) per "
                       "layer, 8 bits, 4 layers per texel: a soft alternative to the hard bits "
                       "that avoids self-shadowing (anisotropic-blur's `esm` input)."});
-  // Both are read texel for texel with the atlas, at its face layers.
-  for (fg::PortDesc& p : desc.ports) {
-    if (p.name == port::kColour.name()) {
-      p.size_of = fg::SizeContract{port::kAtlas, fg::SizeRelation::same};
-      p.layers_of = fg::LayerContract{port::kAtlas, fg::LayerRelation::at_least};
-    } else if (p.name == port::kMinDepth.name()) {
-      p.size_of = fg::SizeContract{port::kAtlas, fg::SizeRelation::exact_fraction_even};
-      p.layers_of = fg::LayerContract{port::kAtlas, fg::LayerRelation::at_least};
-    }
-  }
+  declare_atlas_contracts(desc.ports);
   const auto& table = param_table();
   desc.params = table.descs();
   desc.check = table.check(&check);

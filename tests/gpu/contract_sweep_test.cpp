@@ -108,15 +108,18 @@ std::vector<base::Json> size_mutations(const base::Json& size) {
 std::vector<FieldMutant> field_mutants(const base::Json& graph) {
   std::vector<FieldMutant> out;
   const std::string output = graph.value("output", "");
-  for (const auto& [name, resource] : graph.at("resources").items()) {
+  for (const auto& item : graph.at("resources").items()) {
+    const std::string& name = item.key();
+    const base::Json& resource = item.value();
     if (resource.value("kind", "image") != "image") continue;
     const std::string users = users_of(graph, name);
     const auto add = [&](const std::string& field, const base::Json& value, const Rule& rule) {
       base::Json copy = graph;
       copy["resources"][name][field] = value;
       std::string context = copy["resources"][name].dump() + " " + users;
-      out.push_back(
-          {name + "." + field + " = " + value.dump(), std::move(copy), rule, std::move(context)});
+      std::string what = name;
+      what.append(".").append(field).append(" = ").append(value.dump());
+      out.push_back({std::move(what), std::move(copy), rule, std::move(context)});
     };
     const std::string format = resource.value("format", "");
     for (const fg::Format f : fg::all_formats()) {

@@ -193,6 +193,14 @@ case "$mode" in
       run "host in a window" xvfb-run -a "$tmp/host-build/host" --validation --frames 3 \
         --size 160x90
       step "host in a window under Xvfb"
+      # The window resized after its first frame, as a user drags its border: a new
+      # swapchain, RenderSession::resize and the new images bound, under validation.
+      xvfb-run -a "$tmp/host-build/host" --validation --frames 40 --size 160x90 \
+        --resize 200x120 >"$tmp/resized.txt" 2>&1 || fail "host in a resized window exited with $?"
+      cat "$tmp/resized.txt" >>"$log"
+      grep -q "^host: window resized to 200x120$" "$tmp/resized.txt" \
+        || fail "the host's window was resized, but it never said so: $(cat "$tmp/resized.txt")"
+      step "host in a window resized to 200x120 under Xvfb"
     fi
     mv "$tmp/P" "$tmp/P2"
     rm "$tmp/o.png"
