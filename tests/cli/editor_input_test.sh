@@ -30,6 +30,13 @@ log="$2/log.txt"
   --graph "$2/graph.json" > "$log" 2>&1 &
 editor=$!
 source "$editor_driver"
+# Waits (up to 60 s) until the saved scene differs from $1: a save lands in whichever frame
+# polls its key press, later than two frames on a loaded machine.
+saved_unlike() {
+  for _ in $(seq 1 600); do cmp -s "$2/scene.json" "$1" || return 0; sleep 0.1; done
+  echo "timed out waiting for a save unlike $1"
+}
+cp "$2/scene.json" "$2/before-drag.json"
 wait_for "first frame presented"
 step mousemove 280 439
 step mousedown 1
@@ -37,9 +44,11 @@ step mousemove 330 439
 step mousemove 380 439
 step mouseup 1
 step key ctrl+s
+saved_unlike "$2/before-drag.json" "$2"
 cp "$2/scene.json" "$2/after-drag.json"
 step key ctrl+z
 step key ctrl+s
+saved_unlike "$2/after-drag.json" "$2"
 cp "$2/scene.json" "$2/after-undo.json"
 # The whole drag between two frames (press, move, release in one burst, as a fast hand
 # or a slow lavapipe frame makes it): the queued press is replayed where it happened.
