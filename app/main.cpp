@@ -138,8 +138,12 @@ int dispatch(int argc, char** argv) {
                        "Exit 1 when the graph or a pass (e.g. the layer cap) warns");
 
   ValidateOptions validate;
-  auto* validate_cmd = cli.add_subcommand("validate", "Check frame graph files (no GPU needed)");
-  validate_cmd->add_option("files", validate.files, "Graph files")->required();
+  auto* validate_cmd =
+      cli.add_subcommand("validate", "Check frame graph and scene files (no GPU needed)");
+  validate_cmd
+      ->add_option("files", validate.files,
+                   "Graph files, and scene files (told apart by their keys or $schema)")
+      ->required();
   validate_cmd->add_option("--format", validate.format, "text|json")
       ->check(CLI::IsMember({"text", "json"}))
       ->capture_default_str();

@@ -80,9 +80,15 @@ bool size_holds(const PlanResource& mine, const PlanResource& other, SizeRelatio
   return extents_hold(mine.extent, other.extent, relation);
 }
 
-std::string size_text(const PlanResource& r) {
-  const std::string extent = std::to_string(r.extent.width) + "x" + std::to_string(r.extent.height);
-  return r.size.relative ? describe_size(r.size) + " (" + extent + " here)" : extent;
+std::string extent_text(Extent2D e) {
+  return std::to_string(e.width) + "x" + std::to_string(e.height);
+}
+
+// "viewport/2 (640x360 at a 1280x720 viewport)": the size as written, and what it is here.
+std::string size_text(const PlanResource& r, Extent2D viewport) {
+  if (!r.size.relative) return extent_text(r.extent);
+  return describe_size(r.size) + " (" + extent_text(r.extent) + " at a " + extent_text(viewport) +
+         " viewport)";
 }
 
 void check_size(const GraphDesc& graph, const Plan& plan, const PlanPass& pass,
@@ -94,10 +100,12 @@ void check_size(const GraphDesc& graph, const Plan& plan, const PlanPass& pass,
   }
   diags.add(graph.document.make(
       codes::kPortContract, Severity::error,
-      "pass " + quote_name(pass.name) + " (" + pass.type + "): " + quote_name(port.name) +
-          " must be " + describe_size_contract(port) + ", but " + quote_name(mine->name) + " is " +
-          size_text(*mine) + " and " + quote_name(other->name) + " (bound to " +
-          quote_name(port.size_of->port) + ") is " + size_text(*other),
+      "pass " + quote_name(pass.name) + " (" + pass.type + "): port " + quote_name(port.name) +
+          " must be " + describe_size_contract(port) + ", but its resource " +
+          quote_name(mine->name) + " is " + size_text(*mine, plan.viewport) + " and " +
+          quote_name(other->name) + ", bound to port " + quote_name(port.size_of->port) + ", is " +
+          size_text(*other, plan.viewport) + "; change one of /resources/" + mine->name +
+          "/size and /resources/" + other->name + "/size",
       binding_pointer(graph, pass, port)));
 }
 
@@ -112,10 +120,12 @@ void check_layers(const GraphDesc& graph, const Plan& plan, const PlanPass& pass
   if (holds) return;
   diags.add(graph.document.make(
       codes::kPortContract, Severity::error,
-      "pass " + quote_name(pass.name) + " (" + pass.type + "): " + quote_name(port.name) +
-          " must have " + describe_layer_contract(port) + ", but " + quote_name(mine->name) +
-          " has " + std::to_string(mine->layers) + " layer(s) and " + quote_name(other->name) +
-          " (bound to " + quote_name(port.layers_of->port) + ") " + std::to_string(other->layers),
+      "pass " + quote_name(pass.name) + " (" + pass.type + "): port " + quote_name(port.name) +
+          " must have " + describe_layer_contract(port) + ", but its resource " +
+          quote_name(mine->name) + " has " + std::to_string(mine->layers) + " layer(s) and " +
+          quote_name(other->name) + ", bound to port " + quote_name(port.layers_of->port) + ", " +
+          std::to_string(other->layers) + "; change one of /resources/" + mine->name +
+          "/layers and /resources/" + other->name + "/layers",
       binding_pointer(graph, pass, port)));
 }
 

@@ -139,17 +139,30 @@ Json generate_schema(const Registry& registry) {
   }
   Json pass = Json::object();
   pass["type"] = "object";
-  pass["properties"] = Json{
-      {"name", Json{{"type", "string"}, {"pattern", kNamePattern}}},
-      {"type", Json{{"enum", std::move(types)}}},
-      {"description", Json{{"type", "string"}}},
-      {"params", Json{{"type", "object"}}},
-      {"in", Json{{"type", "object"}}},
-      {"out", Json{{"type", "object"}}},
-      {"after",
-       Json{{"type", "array"}, {"items", Json{{"type", "string"}, {"pattern", kNamePattern}}}}},
-      {"sideEffects", Json{{"type", "boolean"}}},
-      {"enabled", Json{{"type", "boolean"}, {"default", true}}}};
+  pass["properties"] =
+      Json{{"name", Json{{"type", "string"},
+                         {"pattern", kNamePattern},
+                         {"description", "The pass's name, unique in the graph."}}},
+           {"type",
+            Json{{"enum", std::move(types)}, {"description", "The pass type (docs/passes.md)."}}},
+           {"description", Json{{"type", "string"}}},
+           {"params", Json{{"type", "object"}, {"description", "The type's parameters by name."}}},
+           {"in", Json{{"type", "object"}, {"description", "Input port -> resource name."}}},
+           {"out", Json{{"type", "object"}, {"description", "Output port -> resource name."}}},
+           {"after", Json{{"type", "array"},
+                          {"items", Json{{"type", "string"}, {"pattern", kNamePattern}}},
+                          {"description",
+                           "Names of passes this one must run after, though it reads nothing they "
+                           "write (an ordering a resource does not express)."}}},
+           {"sideEffects", Json{{"type", "boolean"},
+                                {"description",
+                                 "Never culled, even when nothing it writes reaches the output "
+                                 "(default: the type's)."}}},
+           {"enabled", Json{{"type", "boolean"},
+                            {"default", true},
+                            {"description",
+                             "false: the pass and whatever only it feeds are left "
+                             "out (FG075)."}}}};
   pass["required"] = Json::array({"name", "type"});
   pass["additionalProperties"] = false;
   pass["allOf"] = std::move(branches);

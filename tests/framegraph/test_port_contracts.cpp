@@ -86,8 +86,10 @@ TEST(PortContracts, ABrokenContractIsLocatedAtItsBindingAndNamesBothResources) {
   ASSERT_NE(d, nullptr) << result.diagnostics().to_text();
   EXPECT_EQ(d->pointer, "/passes/1/out/small");
   EXPECT_GT(d->line, 0);
-  for (const char* part : {"'small' must be same size as `full`", "'b' is viewport/2 (32x16 here)",
-                           "'a' (bound to 'full') is viewport (64x32 here)"}) {
+  for (const char* part : {"port 'small' must be same size as `full`",
+                           "its resource 'b' is viewport/2 (32x16 at a 64x32 viewport)",
+                           "'a', bound to port 'full', is viewport (64x32 at a 64x32 viewport)",
+                           "; change one of /resources/b/size and /resources/a/size"}) {
     EXPECT_NE(d->message.find(part), std::string::npos) << part << "\n" << d->message;
   }
 }
@@ -134,7 +136,9 @@ TEST(PortContracts, Layers) {
   ASSERT_FALSE(fewer.ok());
   const base::Diagnostic* d = fewer.diagnostics().find("FG092");
   ASSERT_NE(d, nullptr);
-  EXPECT_NE(d->message.find("'b' has 4 layer(s) and 'a' (bound to 'full') 6"), std::string::npos)
+  EXPECT_NE(d->message.find("'b' has 4 layer(s) and 'a', bound to port 'full', 6; change one of "
+                            "/resources/b/layers and /resources/a/layers"),
+            std::string::npos)
       << d->message;
   EXPECT_FALSE(compile_with(same, graph("\"viewport\"", "\"viewport\"", 6, 8)).ok());
   EXPECT_TRUE(compile_with(at_least, graph("\"viewport\"", "\"viewport\"", 6, 8)).ok());
