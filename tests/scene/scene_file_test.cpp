@@ -134,5 +134,31 @@ TEST(SceneFile, GltfObjectsResolveRelativeToTheSceneFile) {
   EXPECT_EQ(s.triangle_count(), 2u);
 }
 
+// A misspelt kind key is named at its own place with the key it looks like (a newcomer's
+// "primitve" got only "an object needs a 'primitive', a 'gltf' or a 'scene' key").
+TEST(SceneFile, AMisspeltKindKeyIsNamedWithTheKeyItLooksLike) {
+  const auto s = parse(R"(, "objects": [{"primitve": "box"}])");
+  const base::Diagnostic* d = s.diagnostics().find(codes::scene::kObjectKind);
+  ASSERT_NE(d, nullptr) << s.diagnostics().to_text();
+  EXPECT_EQ(d->pointer, "/objects/0/primitve");
+  EXPECT_NE(d->message.find("did you mean 'primitive' for 'primitve'?"), std::string::npos)
+      << d->message;
+  const auto none = parse(R"(, "objects": [{"size": [1, 1, 1]}])");
+  ASSERT_NE(none.diagnostics().find(codes::scene::kObjectKind), nullptr);
+  EXPECT_EQ(none.diagnostics().find(codes::scene::kObjectKind)->pointer, "/objects/0");
+}
+
+// An unknown material with no near name lists the ones the file defines.
+TEST(SceneFile, AnUnknownMaterialListsTheDefinedOnes) {
+  const auto s = parse(R"(, "materials": {"floor": {}, "wood": {}},
+    "objects": [{"primitive": "box", "material": "stone"}])");
+  const base::Diagnostic* d = s.diagnostics().find(codes::scene::kUnknownMaterial);
+  ASSERT_NE(d, nullptr) << s.diagnostics().to_text();
+  EXPECT_NE(
+      d->message.find("unknown material 'stone'; the scene defines 'default', 'floor', 'wood'"),
+      std::string::npos)
+      << d->message;
+}
+
 }  // namespace
 }  // namespace antumbra::scene

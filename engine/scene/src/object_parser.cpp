@@ -8,6 +8,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "antumbra/base/diagnostic_codes.hpp"
+#include "antumbra/base/text.hpp"
 #include "antumbra/scene/gltf_loader.hpp"
 #include "antumbra/scene/primitives.hpp"
 #include "antumbra/scene/scene_file.hpp"
@@ -108,9 +109,15 @@ std::optional<int> parse_material_ref(ParseContext& ctx, const Json& o, const st
   if (index >= 0) return index;
   std::string message = "unknown material '" + *name + "'";
   std::vector<std::string_view> names;
-  for (const auto& m : ctx.scene.materials) names.push_back(m.name);
+  std::vector<std::string> defined;
+  for (const auto& m : ctx.scene.materials) {
+    names.push_back(m.name);
+    defined.push_back(m.name);
+  }
   if (const std::string hint = closest_match(*name, names); !hint.empty()) {
     message += "; did you mean '" + hint + "'?";
+  } else {
+    message += "; the scene defines " + base::name_list(defined);
   }
   ctx.reader.error(codes::scene::kUnknownMaterial, std::move(message), p + "/material");
   return std::nullopt;
@@ -223,6 +230,21 @@ void parse_gltf_object(ParseContext& ctx, const Json& o, const std::string& p,
   import_lights(ctx, imported->lights, placement, {name, p, "/gltf", "the glTF", true});
 }
 
+// An object with none of the three kind keys: most often one of them misspelt, which is
+// then named at its own place.
+void report_missing_kind(JsonReader& r, const Json& o, const std::string& p) {
+  for (const auto& [key, unused] : o.items()) {
+    const std::string hint = closest_match(key, {"primitive", "gltf", "scene"});
+    if (hint.empty()) continue;
+    r.error(codes::scene::kObjectKind,
+            "an object needs a 'primitive', a 'gltf' or a 'scene' key; did you mean '" + hint +
+                "' for '" + key + "'?",
+            base::pointer_append(p, key), true);
+    return;
+  }
+  r.error(codes::scene::kObjectKind, "an object needs a 'primitive', a 'gltf' or a 'scene' key", p);
+}
+
 void parse_object(ParseContext& ctx, const Json& o, const std::string& p, std::size_t index) {
   JsonReader& r = ctx.reader;
   if (!r.check_type(o, p, Json::value_t::object)) return;
@@ -230,11 +252,13 @@ void parse_object(ParseContext& ctx, const Json& o, const std::string& p, std::s
   const bool is_gltf = o.contains("gltf");
   const bool is_scene = o.contains("scene");
   const int kinds = int{is_primitive} + int{is_gltf} + int{is_scene};
-  if (kinds != 1) {
+  if (kinds > 1) {
     r.error(codes::scene::kObjectKind,
-            kinds > 1 ? "an object has one of 'primitive', 'gltf' or 'scene', not several"
-                      : "an object needs a 'primitive', a 'gltf' or a 'scene' key",
-            p);
+            "an object has one of 'primitive', 'gltf' or 'scene', not several", p);
+    return;
+  }
+  if (kinds == 0) {
+    report_missing_kind(r, o, p);
     return;
   }
   std::optional<std::string> kind;
