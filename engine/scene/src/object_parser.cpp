@@ -236,10 +236,12 @@ void report_missing_kind(JsonReader& r, const Json& o, const std::string& p) {
   for (const auto& [key, unused] : o.items()) {
     const std::string hint = closest_match(key, {"primitive", "gltf", "scene"});
     if (hint.empty()) continue;
-    r.error(codes::scene::kObjectKind,
-            "an object needs a 'primitive', a 'gltf' or a 'scene' key; did you mean '" + hint +
-                "' for '" + key + "'?",
-            base::pointer_append(p, key), true);
+    std::string message = "an object needs a 'primitive', a 'gltf' or a 'scene' key; did you mean ";
+    message.append(base::quote_name(hint))
+        .append(" for ")
+        .append(base::quote_name(key))
+        .append("?");
+    r.error(codes::scene::kObjectKind, std::move(message), base::pointer_append(p, key), true);
     return;
   }
   r.error(codes::scene::kObjectKind, "an object needs a 'primitive', a 'gltf' or a 'scene' key", p);
