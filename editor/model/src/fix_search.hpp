@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include <glm/geometric.hpp>
+
 #include "antumbra/layering/layer_assignment.hpp"
 #include "antumbra/scene/scene.hpp"
 
@@ -48,5 +50,24 @@ class FitCheck {
 // The range below which `light` stops conflicting with sphere u (bisection: a light's
 // sphere only grows with its range, so the conflict is monotone in it).
 [[nodiscard]] double conflict_threshold(scene::PointLight light, const layering::LightSphere& u);
+
+// On the ground plane, away from each neighbour of v that `counts` and from all of them
+// together: the directions both searches try moving a light in.
+template <class Neighbours, class Position, class Counts>
+std::vector<glm::vec3> away_on_ground(const Neighbours& neighbours, Position position,
+                                      std::uint32_t v, Counts counts) {
+  std::vector<glm::vec3> directions;
+  glm::vec3 sum(0.0f);
+  for (std::uint32_t u : neighbours) {
+    if (!counts(u)) continue;
+    glm::vec3 d = position(v) - position(u);
+    d.y = 0.0f;
+    if (glm::length(d) < 1e-6f) continue;
+    directions.push_back(glm::normalize(d));
+    sum += directions.back();
+  }
+  if (glm::length(sum) > 1e-6f) directions.push_back(glm::normalize(sum));
+  return directions;
+}
 
 }  // namespace antumbra::editor::detail

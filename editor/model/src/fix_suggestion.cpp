@@ -80,18 +80,9 @@ std::optional<LayerFix> range_fix(Search& s, std::uint32_t v) {
 
 // Directions on the ground plane away from each neighbour, and away from all of them.
 std::vector<glm::vec3> away_directions(const Search& s, std::uint32_t v) {
-  std::vector<glm::vec3> directions;
-  glm::vec3 sum(0.0f);
-  for (std::uint32_t u : s.graph.adjacent(v)) {
-    if (s.spheres[u].own_layer) continue;
-    glm::vec3 d = s.spheres[v].position - s.spheres[u].position;
-    d.y = 0.0f;
-    if (glm::length(d) < 1e-6f) continue;
-    directions.push_back(glm::normalize(d));
-    sum += directions.back();
-  }
-  if (glm::length(sum) > 1e-6f) directions.push_back(glm::normalize(sum));
-  return directions;
+  return detail::away_on_ground(
+      s.graph.adjacent(v), [&](std::uint32_t k) { return s.spheres[k].position; }, v,
+      [&](std::uint32_t u) { return !s.spheres[u].own_layer; });
 }
 
 // The smallest move of light v along `direction` that fits. Moving a light moves its

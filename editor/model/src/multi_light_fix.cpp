@@ -10,6 +10,7 @@
 
 #include "antumbra/layering/scene_spheres.hpp"
 #include "fix_cover.hpp"
+#include "fix_search.hpp"
 #include "shared/limits.h"
 
 namespace antumbra::editor::detail {
@@ -168,18 +169,9 @@ bool clear_of_colour(const Layout& layout, std::span<const int> colours, std::ui
 // On the ground plane, away from each same-colour neighbour of v and from all of them.
 std::vector<glm::vec3> away_from_colour(const Layout& layout, std::span<const int> colours,
                                         std::uint32_t v) {
-  std::vector<glm::vec3> directions;
-  glm::vec3 sum(0.0f);
-  for (std::uint32_t u : layout.graph.adjacent(v)) {
-    if (colours[u] != colours[v]) continue;
-    glm::vec3 d = layout.spheres[v].position - layout.spheres[u].position;
-    d.y = 0.0f;
-    if (glm::length(d) < 1e-6f) continue;
-    directions.push_back(glm::normalize(d));
-    sum += directions.back();
-  }
-  if (glm::length(sum) > 1e-6f) directions.push_back(glm::normalize(sum));
-  return directions;
+  return away_on_ground(
+      layout.graph.adjacent(v), [&](std::uint32_t k) { return layout.spheres[k].position; }, v,
+      [&](std::uint32_t u) { return colours[u] == colours[v]; });
 }
 
 // Distances along `direction` at which v's sphere leaves a same-colour sphere's reach (one
