@@ -30,6 +30,9 @@ bool inside(const Rect& inner, const Rect& outer) {
 // Nothing overlaps the viewport or another part, and everything is inside the window.
 void expect_disjoint(const EditorLayout& layout) {
   std::vector<Rect> parts{layout.column_handle, layout.bar_handle, layout.status};
+  // The node view's handle lies on its top edge, inside it: they are one part.
+  parts.push_back(layout.node_view);
+  EXPECT_TRUE(layout.node_view_handle.empty() || inside(layout.node_view_handle, layout.node_view));
   for (const Rect& panel : layout.panels) parts.push_back(panel);
   for (std::size_t i = 0; i < parts.size(); ++i) {
     EXPECT_FALSE(parts[i].intersects(layout.viewport)) << "part " << i;
@@ -122,6 +125,33 @@ TEST(EditorLayout, DraggingTheHandlesChangesTheSizes) {
   EXPECT_FLOAT_EQ(bar_after_drag(layout, 500.0f), LayoutSettings::kMinBar);
 }
 
+TEST(EditorLayout, TheNodeViewSitsUnderTheViewportAndNeverTakesItsShare) {
+  LayoutSettings settings;
+  EXPECT_TRUE(compute_layout({1280.0f, 800.0f}, 1.0f, settings, kTitle).node_view.empty());
+  settings.node_view_open = true;
+  EditorLayout layout = compute_layout({1280.0f, 800.0f}, 1.0f, settings, kTitle);
+  EXPECT_FLOAT_EQ(layout.node_view.height, LayoutSettings::kDefaultNodeView);
+  EXPECT_FLOAT_EQ(layout.node_view.y, layout.viewport.height);
+  EXPECT_FLOAT_EQ(layout.node_view.y + layout.node_view.height, layout.bar.y);
+  EXPECT_FLOAT_EQ(layout.node_view.width, layout.viewport.width);
+  EXPECT_FLOAT_EQ(layout.viewport.height,
+                  800.0f - LayoutSettings::kDefaultBar - LayoutSettings::kDefaultNodeView);
+  expect_disjoint(layout);
+  // A tall saved view in a short window: the viewport keeps 40 % of the height.
+  settings.node_view_height = 3000.0f;
+  settings.bar_height = 100.0f;
+  layout = compute_layout({1280.0f, 500.0f}, 1.0f, settings, kTitle);
+  EXPECT_FLOAT_EQ(layout.viewport.height, 200.0f);
+  EXPECT_FLOAT_EQ(layout.node_view.height, 200.0f);
+  expect_disjoint(layout);
+  // Dragging its handle up by 40 units at scale 2 makes it 20 unscaled units taller.
+  settings = LayoutSettings{};
+  settings.node_view_open = true;
+  layout = compute_layout({2560.0f, 1600.0f}, 2.0f, settings, kTitle);
+  EXPECT_FLOAT_EQ(node_view_after_drag(layout, -40.0f), LayoutSettings::kDefaultNodeView + 20.0f);
+  EXPECT_FLOAT_EQ(node_view_after_drag(layout, 1e6f), LayoutSettings::kMinNodeView);
+}
+
 TEST(EditorLayout, PixelsAndTheImageInTheViewport) {
   const PixelRect px = to_pixels({10.0f, 0.0f, 100.5f, 50.0f}, {2.0f, 2.0f});
   EXPECT_EQ(px.x, 20);
@@ -139,6 +169,8 @@ TEST(EditorLayoutFile, RoundTrip) {
   settings.column_width = 512.0f;
   settings.bar_height = 44.0f;
   settings.collapsed[static_cast<std::size_t>(Panel::graph)] = true;
+  settings.node_view_open = true;
+  settings.node_view_height = 250.0f;
   settings.imgui_state = "[Window][Unsaved changes]\nPos=60,60\nSize=300,80\n";
   const ParsedLayout parsed = parse_layout(serialise(settings));
   EXPECT_TRUE(parsed.problems.empty()) << parsed.problems.front();
@@ -148,8 +180,9 @@ TEST(EditorLayoutFile, RoundTrip) {
 TEST(EditorLayoutFile, BadLinesAreNamedAndTheRestIsRead) {
   const ParsedLayout parsed = parse_layout(
       "[antumbra]\nversion=1\ncolumn_width=wide\nbar_height=1e30\ncollapsed=lights,bogus\n"
-      "colour=red\n[Window][X]\nPos=1,1\n");
-  ASSERT_EQ(parsed.problems.size(), 4u);
+      "colour=red\nnode_view=ajar\n[Window][X]\nPos=1,1\n");
+  ASSERT_EQ(parsed.problems.size(), 5u);
+  EXPECT_EQ(parsed.problems[4], "line 7: node_view: 'ajar' is neither open nor closed");
   EXPECT_EQ(parsed.problems[0], "line 3: column_width: 'wide' is not a number");
   EXPECT_NE(parsed.problems[1].find("line 4: bar_height"), std::string::npos);
   EXPECT_EQ(parsed.problems[2], "line 5: collapsed: no panel 'bogus'");

@@ -84,13 +84,15 @@ void LayoutView::begin_frame() {
     slots_[i].target = layout_.panels[i];
     slots_[i].drawn = false;
   }
-  draw_handle("##column splitter", layout_.column_handle, true);
-  draw_handle("##bar splitter", layout_.bar_handle, false);
+  draw_handle("##column splitter", layout_.column_handle, Handle::column);
+  draw_handle("##bar splitter", layout_.bar_handle, Handle::bar);
+  draw_handle("##node view splitter", layout_.node_view_handle, Handle::node_view);
 }
 
 // A splitter: a bare window over its grab strip. Dragging it resizes the column (or the
 // bar); the strip lights up under the cursor so it can be found.
-void LayoutView::draw_handle(const char* id, const editor::Rect& rect, bool column) {
+void LayoutView::draw_handle(const char* id, const editor::Rect& rect, Handle handle) {
+  const bool column = handle == Handle::column;
   if (rect.empty()) return;  // a window too small for one
   ImGui::SetNextWindowPos({rect.x, rect.y}, ImGuiCond_Always);
   ImGui::SetNextWindowSize({rect.width, rect.height}, ImGuiCond_Always);
@@ -110,10 +112,16 @@ void LayoutView::draw_handle(const char* id, const editor::Rect& rect, bool colu
   if (hot) ImGui::SetMouseCursor(column ? ImGuiMouseCursor_ResizeEW : ImGuiMouseCursor_ResizeNS);
   const ImVec2 delta = ImGui::GetIO().MouseDelta;
   if (ImGui::IsItemActive() && (delta.x != 0.0f || delta.y != 0.0f)) {
-    if (column) {
-      settings_.column_width = editor::column_after_drag(layout_, delta.x);
-    } else {
-      settings_.bar_height = editor::bar_after_drag(layout_, delta.y);
+    switch (handle) {
+      case Handle::column:
+        settings_.column_width = editor::column_after_drag(layout_, delta.x);
+        break;
+      case Handle::bar:
+        settings_.bar_height = editor::bar_after_drag(layout_, delta.y);
+        break;
+      case Handle::node_view:
+        settings_.node_view_height = editor::node_view_after_drag(layout_, delta.y);
+        break;
     }
     dirty_ = true;
   }
@@ -171,6 +179,8 @@ bool LayoutView::write_report(const std::string& path, VkExtent2D image,
   std::fprintf(out, "  \"image\": {\"width\": %u, \"height\": %u},\n", image.width, image.height);
   write_rect(out, "status", editor::to_pixels(layout_.status, fb));
   write_rect(out, "column_handle", editor::to_pixels(layout_.column_handle, fb));
+  if (!layout_.node_view.empty())
+    write_rect(out, "node_view", editor::to_pixels(layout_.node_view, fb));
   std::fprintf(out, "  \"panels\": [");
   for (std::size_t i = 0; i < editor::kPanelCount; ++i) {
     const editor::PixelRect r = editor::to_pixels(slots_[i].shown, fb);

@@ -45,6 +45,13 @@ class LayoutView {
     return slots_[static_cast<std::size_t>(panel)];
   }
   [[nodiscard]] const editor::EditorLayout& layout() const { return layout_; }
+  // The node view under the viewport (F2 or the status bar's button): opening it shrinks
+  // the viewport, so nothing covers the image.
+  [[nodiscard]] bool node_view_open() const { return settings_.node_view_open; }
+  void toggle_node_view() {
+    settings_.node_view_open = !settings_.node_view_open;
+    dirty_ = true;
+  }
   // The viewport in framebuffer pixels: where the graph's image goes, and its size.
   [[nodiscard]] editor::PixelRect viewport_pixels() const;
   // After the panels: keeps what their title bars collapsed, saves a changed layout once
@@ -56,7 +63,8 @@ class LayoutView {
   bool write_report(const std::string& path, VkExtent2D image, editor::PixelRect shown) const;
 
  private:
-  void draw_handle(const char* id, const editor::Rect& rect, bool column);
+  enum class Handle { column, bar, node_view };
+  void draw_handle(const char* id, const editor::Rect& rect, Handle handle);
 
   std::optional<std::filesystem::path> file_;
   editor::LayoutSettings settings_;

@@ -44,11 +44,13 @@ std::string window_title(const EditorState& state, const fs::path& scene, const 
 }
 
 // Ctrl+Z, Ctrl+Shift+Z, Ctrl+S; Ctrl+Q closes like the window's close button (with the
-// prompt when there are unsaved changes). A text field that has the keyboard keeps its
-// own undo.
-void handle_shortcuts(EditorState& state, const std::vector<KeyPress>& presses, Window& window) {
+// prompt when there are unsaved changes); F2 opens or closes the node view. A text field
+// that has the keyboard keeps its own undo.
+void handle_shortcuts(EditorState& state, const std::vector<KeyPress>& presses, Window& window,
+                      LayoutView& layout) {
   if (ImGui::GetIO().WantTextInput) return;
   for (const KeyPress& press : presses) {
+    if (press.key == GLFW_KEY_F2 && press.mods == 0) layout.toggle_node_view();
     if ((press.mods & GLFW_MOD_CONTROL) == 0) continue;
     if (press.key == GLFW_KEY_Z) {
       if ((press.mods & GLFW_MOD_SHIFT) != 0) {
@@ -65,7 +67,7 @@ void handle_shortcuts(EditorState& state, const std::vector<KeyPress>& presses, 
 }
 
 // The status bar: the layout's bottom strip, under the viewport and the column.
-void draw_status_bar(EditorState& state, const editor::Rect& rect) {
+void draw_status_bar(EditorState& state, const editor::Rect& rect, LayoutView& layout) {
   if (rect.empty()) return;
   ImGui::SetNextWindowPos({rect.x, rect.y});
   ImGui::SetNextWindowSize({rect.width, rect.height});
@@ -85,6 +87,10 @@ void draw_status_bar(EditorState& state, const editor::Rect& rect) {
   ImGui::EndDisabled();
   ImGui::SameLine();
   if (ImGui::SmallButton("Save")) state.save();
+  ImGui::SameLine();
+  if (ImGui::SmallButton(layout.node_view_open() ? "Hide nodes (F2)" : "Nodes (F2)")) {
+    layout.toggle_node_view();
+  }
   ImGui::SameLine();
   ImGui::Text("%s %s", state.dirty() ? "unsaved changes." : "",
               state.drag_note().empty() ? state.message().c_str() : state.drag_note().c_str());
@@ -297,12 +303,12 @@ class FrameLoop {
     ui_.begin_frame(window_);
     layout_.begin_frame();
     const std::vector<KeyPress> presses = window_.take_key_presses();
-    handle_shortcuts(state_, presses, window_);
+    handle_shortcuts(state_, presses, window_, layout_);
     update_viewport(presses);
     draw_lights_panel(state_, layout_.slot(editor::Panel::lights));
     draw_layers_panel(state_, layout_.slot(editor::Panel::layers));
     draw_graph_panel(state_, layout_.slot(editor::Panel::graph));
-    draw_status_bar(state_, layout_.layout().status);
+    draw_status_bar(state_, layout_.layout().status, layout_);
     switch (draw_close_prompt(state_, close_requested && prompt_)) {
       case CloseChoice::close:
         quit_ = true;

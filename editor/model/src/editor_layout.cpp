@@ -38,8 +38,11 @@ float reserved_for_viewport(float size, float scale) {
 
 // The column's or bar's extent: the saved size scaled, within its limits and what the
 // window leaves after the viewport's share (which wins), whole window units.
-float fitted(float saved, float min_unscaled, float size, float scale) {
-  const float room = std::max(0.0f, size - reserved_for_viewport(size, scale));
+// `whole`: the window's extent the viewport's share is taken of, when `size` is only what
+// is left of it.
+float fitted(float saved, float min_unscaled, float size, float scale, float whole = -1.0f) {
+  const float of = whole < 0.0f ? size : whole;
+  const float room = std::max(0.0f, size - reserved_for_viewport(of, scale));
   const float low = std::min(min_unscaled * scale, room);
   return std::round(std::clamp(saved * scale, low, room));
 }
@@ -138,6 +141,16 @@ void read_setting(const std::string& line_text, int line, LayoutSettings& settin
   } else if (key == "bar_height") {
     read_size(key, value, LayoutSettings::kMinBar, LayoutSettings::kMaxBar, settings.bar_height,
               problems, line);
+  } else if (key == "node_view_height") {
+    read_size(key, value, LayoutSettings::kMinNodeView, LayoutSettings::kMaxNodeView,
+              settings.node_view_height, problems, line);
+  } else if (key == "node_view") {
+    if (value == "open" || value == "closed") {
+      settings.node_view_open = value == "open";
+    } else {
+      problems.push_back("line " + std::to_string(line) + ": node_view: '" + value +
+                         "' is neither open nor closed");
+    }
   } else if (key == "collapsed") {
     read_collapsed(value, settings, problems, line);
   } else {
@@ -162,6 +175,8 @@ LayoutSettings LayoutSettings::clamped() const {
   LayoutSettings out = *this;
   out.column_width = std::clamp(finite_or(column_width, kDefaultColumn), kMinColumn, kMaxColumn);
   out.bar_height = std::clamp(finite_or(bar_height, kDefaultBar), kMinBar, kMaxBar);
+  out.node_view_height =
+      std::clamp(finite_or(node_view_height, kDefaultNodeView), kMinNodeView, kMaxNodeView);
   return out;
 }
 
@@ -175,7 +190,16 @@ EditorLayout compute_layout(glm::vec2 window_size, float scale, const LayoutSett
   layout.window = {0.0f, 0.0f, w, h};
   const float column = fitted(s.column_width, LayoutSettings::kMinColumn, w, layout.scale);
   const float bar = fitted(s.bar_height, LayoutSettings::kMinBar, h, layout.scale);
-  layout.viewport = {0.0f, 0.0f, w - column, h - bar};
+  // The node view takes what the bar leaves of the panels' share, never the viewport's.
+  const float nodes = s.node_view_open ? fitted(s.node_view_height, LayoutSettings::kMinNodeView,
+                                                h - bar, layout.scale, h)
+                                       : 0.0f;
+  layout.viewport = {0.0f, 0.0f, w - column, h - bar - nodes};
+  if (nodes > 0.0f) {
+    layout.node_view = {0.0f, layout.viewport.height, w - column, nodes};
+    const float grab = std::min(nodes, std::round(kBarHandle * layout.scale));
+    layout.node_view_handle = {0.0f, layout.node_view.y, layout.node_view.width, grab};
+  }
   layout.column = {w - column, 0.0f, column, h - bar};
   const float handle = std::min(column, std::round(kHandleWidth * layout.scale));
   layout.column_handle = {layout.column.x, 0.0f, handle, layout.column.height};
@@ -196,6 +220,11 @@ float column_after_drag(const EditorLayout& layout, float dx) {
 float bar_after_drag(const EditorLayout& layout, float dy) {
   const float height = (layout.bar.height - finite_or(dy, 0.0f)) / layout.scale;
   return std::clamp(height, LayoutSettings::kMinBar, LayoutSettings::kMaxBar);
+}
+
+float node_view_after_drag(const EditorLayout& layout, float dy) {
+  const float height = (layout.node_view.height - finite_or(dy, 0.0f)) / layout.scale;
+  return std::clamp(height, LayoutSettings::kMinNodeView, LayoutSettings::kMaxNodeView);
 }
 
 PixelRect to_pixels(const Rect& rect, glm::vec2 framebuffer_scale) {
@@ -219,7 +248,8 @@ std::string serialise(const LayoutSettings& settings) {
   std::ostringstream out;
   out << "# The antumbra editor's layout, saved on exit; delete it for the defaults.\n"
       << kSection << "\nversion=" << kVersion << "\ncolumn_width=" << s.column_width
-      << "\nbar_height=" << s.bar_height << "\ncollapsed=";
+      << "\nbar_height=" << s.bar_height << "\nnode_view_height=" << s.node_view_height
+      << "\nnode_view=" << (s.node_view_open ? "open" : "closed") << "\ncollapsed=";
   bool first = true;
   for (std::size_t i = 0; i < kPanelCount; ++i) {
     if (!s.collapsed[i]) continue;

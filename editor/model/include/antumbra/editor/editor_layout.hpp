@@ -46,8 +46,15 @@ struct LayoutSettings {
   static constexpr float kMinBar = 26.0f;  // one line of buttons and the message
   static constexpr float kMaxBar = 600.0f;
 
-  float column_width = kDefaultColumn;  // the side column, unscaled
-  float bar_height = kDefaultBar;       // the bottom status bar, unscaled
+  // The node view: a strip under the viewport (the graph's passes as nodes and its plan).
+  static constexpr float kDefaultNodeView = 320.0f;
+  static constexpr float kMinNodeView = 120.0f;  // lower, a node's ports do not fit
+  static constexpr float kMaxNodeView = 4000.0f;
+
+  float column_width = kDefaultColumn;        // the side column, unscaled
+  float bar_height = kDefaultBar;             // the bottom status bar, unscaled
+  float node_view_height = kDefaultNodeView;  // unscaled, kept while the view is closed
+  bool node_view_open = false;  // closed: the viewport keeps the height (toggled with F2)
   std::array<bool, kPanelCount> collapsed{};
   std::string imgui_state;  // Dear ImGui's own .ini text (its windows and tables)
 
@@ -62,12 +69,14 @@ struct LayoutSettings {
 // The rectangles of one frame, in window units.
 struct EditorLayout {
   Rect window;
-  Rect viewport;       // where the graph's image goes: nothing else is drawn over it
-  Rect column;         // the side column: the splitter and the panels
-  Rect column_handle;  // the column's left edge: dragging it sets the column's width
-  Rect bar;            // the bottom strip: its handle above the status bar
-  Rect bar_handle;     // the bar's top edge: dragging it sets the bar's height
-  Rect status;         // the status bar window (buttons and messages)
+  Rect viewport;          // where the graph's image goes: nothing else is drawn over it
+  Rect column;            // the side column: the splitter and the panels
+  Rect column_handle;     // the column's left edge: dragging it sets the column's width
+  Rect bar;               // the bottom strip: its handle above the status bar
+  Rect bar_handle;        // the bar's top edge: dragging it sets the bar's height
+  Rect status;            // the status bar window (buttons and messages)
+  Rect node_view;         // under the viewport, left of the column; empty while closed
+  Rect node_view_handle;  // its top edge: dragging it sets the node view's height
   std::array<Rect, kPanelCount> panels;
   float scale = 1.0f;
   [[nodiscard]] const Rect& panel(Panel p) const { return panels[static_cast<std::size_t>(p)]; }
@@ -88,6 +97,7 @@ constexpr float kHandleWidth = 6.0f;   // the splitters' grab strips, unscaled
 // with a dead zone; the result is within the settings' limits.
 float column_after_drag(const EditorLayout& layout, float dx);
 float bar_after_drag(const EditorLayout& layout, float dy);
+float node_view_after_drag(const EditorLayout& layout, float dy);
 
 // A window-unit rectangle in framebuffer pixels (`framebuffer_scale`: pixels per window
 // unit), snapped to whole pixels; at least 1x1.
