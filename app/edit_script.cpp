@@ -14,6 +14,7 @@
 #include "antumbra/editor/edit_session.hpp"
 #include "antumbra/editor/fix_suggestion.hpp"
 #include "antumbra/editor/graph_document.hpp"
+#include "antumbra/editor/graph_edits.hpp"
 #include "antumbra/editor/layer_status.hpp"
 #include "antumbra/editor/scene_document.hpp"
 #include "antumbra/editor/viewport.hpp"
@@ -67,6 +68,7 @@ class ScriptRun {
 
   void run_step(const Json& step) {
     if (step.contains("do")) {
+      refusal_.reset();
       act(step.at("do").get<std::string>(), step);
     } else if (step.contains("expect")) {
       check(step.at("expect").get<std::string>(), step);
@@ -74,6 +76,9 @@ class ScriptRun {
       throw StepError{"a step needs \"do\" or \"expect\""};
     }
   }
+
+  // The next step is {"expect": "refused"}: a refused edit is what it checks, not a failure.
+  void expect_refusal_next(bool expected) { refusal_expected_ = expected; }
 
   void render(int frames) {
     gpu::CpuTimer wall;
@@ -143,9 +148,11 @@ class ScriptRun {
   }
 
   void act(const std::string& what, const Json& step) {
-    if (act_on_view(what, step) || act_on_files(what, step)) return;
+    if (act_on_view(what, step) || act_on_files(what, step) || act_on_graph(what, step)) return;
     if (what == "undo" || what == "redo") {
+      const std::uint64_t graph_revision = edit_.graph().revision();
       if (!(what == "undo" ? edit_.undo() : edit_.redo())) throw StepError{"nothing to " + what};
+      if (edit_.graph().revision() != graph_revision) note_graph_reload();
     } else if (what == "set-param") {
       set_param(step);
     } else {
@@ -194,11 +201,61 @@ class ScriptRun {
     return true;
   }
 
+  // Structural graph edits (add-pass, connect, ...) as the node view makes them: one undo
+  // step each, then a reload, whose outcome reload-ok and reload-failed check. False for
+  // any other action.
+  bool act_on_graph(const std::string& what, const Json& step) {
+    const std::uint64_t revision = edit_.graph().revision();
+    bool known = true;
+    const editor::EditResult result = edit_.edit_graph([&](editor::GraphDocument& graph) {
+      fg::CompileOptions options;
+      options.viewport = {session_.viewport().width, session_.viewport().height};
+      editor::GraphEdits edits(graph, session_.pass_registry().reflection(), options);
+      auto made = editor::run_graph_step(edits, what, step);
+      known = made.has_value();
+      return made.value_or(editor::EditResult{});
+    });
+    if (!known) return false;
+    if (!result) {
+      refused(result, revision);
+      return true;
+    }
+    if (!result.message.empty()) std::printf("  %s\n", result.message.c_str());
+    if (result.changed) note_graph_reload();
+    render(1);
+    return true;
+  }
+
+  // A refused edit fails the step, unless the next step expects it (then it records what
+  // refused it, and whether the graph stayed as it was).
+  void refused(const editor::EditResult& result, std::uint64_t graph_revision) {
+    const std::string why = (result.code.empty() ? "" : "[" + result.code + "] ") + result.message;
+    refusal_ = Refusal{result.code, why, edit_.graph().revision() == graph_revision};
+    if (!refusal_expected_) throw StepError{"edit refused: " + why};
+    std::printf("  refused: %s\n", why.c_str());
+  }
+
+  // After a graph edit, or its undo or redo: the reload it made.
+  void note_graph_reload() {
+    last_reload_ = edit_.diagnostics();
+    reload_ok_ = !last_reload_.has_errors();
+    if (reload_ok_) {
+      std::printf("  %s\n", edit_.reload_summary().c_str());
+      return;
+    }
+    print(last_reload_);
+    std::printf("  the graph does not compile; the last good frame keeps running\n");
+  }
+
   // A parameter through the graph's reflection (range clamped), as the graph panel sets it.
   void set_param(const Json& step) {
+    const std::uint64_t revision = edit_.graph().revision();
     const auto result = edit_.set_param(step.at("pass").get<std::string>(),
                                         step.at("name").get<std::string>(), step.at("value"));
-    if (!result) throw StepError{"edit refused: " + result.message};
+    if (!result) {
+      refused(result, revision);
+      return;
+    }
     if (!result.changed) return;
     print(edit_.diagnostics());
     if (edit_.diagnostics().has_errors()) throw StepError{"the edited graph was refused"};
@@ -444,6 +501,8 @@ class ScriptRun {
                       tolerance);
         throw StepError{text};
       }
+    } else if (what == "refused") {
+      check_refused(step);
     } else if (what == "dirty") {
       if (edit_.scene().dirty() != step.at("value").get<bool>()) {
         throw StepError{std::string("the scene is ") + (edit_.scene().dirty() ? "" : "not ") +
@@ -454,11 +513,29 @@ class ScriptRun {
     }
   }
 
+  void check_refused(const Json& step) const {
+    if (!refusal_) throw StepError{"the step before was not refused"};
+    const std::string code = step.value("code", std::string());
+    if (!code.empty() && refusal_->code != code) {
+      throw StepError{"refused with '" + refusal_->code + "', not '" + code +
+                      "': " + refusal_->message};
+    }
+    if (!refusal_->unchanged) throw StepError{"the refused step changed the graph"};
+  }
+
+  struct Refusal {
+    std::string code;
+    std::string message;
+    bool unchanged = true;  // the graph document as it was before the step
+  };
+
   runtime::RenderSession& session_;
   editor::EditSession& edit_;
   fs::path script_dir_;
   base::Diagnostics last_reload_;
   bool reload_ok_ = true;
+  std::optional<Refusal> refusal_;  // the last step's, for {"expect": "refused"}
+  bool refusal_expected_ = false;
   std::vector<double> frame_ms_;
 };
 
@@ -519,6 +596,8 @@ int run_script_steps(ScriptRun& run, const base::JsonDocument& script,
     std::printf("step %zu (%s:%d): %s\n", i, script_path.c_str(), location.line,
                 describe_step(steps[i]).c_str());
     try {
+      run.expect_refusal_next(i + 1 < steps.size() &&
+                              steps[i + 1].value("expect", std::string()) == "refused");
       run.run_step(steps[i]);
     } catch (const StepError& e) {
       ++failures;

@@ -71,6 +71,32 @@ TEST(EditScriptCheck, UnknownActionsMissingKeysAndWrongTypesAreAllReported) {
   for (const auto& d : problems) EXPECT_EQ(d.code, "ED101");
 }
 
+TEST(EditScriptCheck, GraphEditsAndARefusalAreChecked) {
+  EXPECT_TRUE(check(R"({"steps": [
+    {"do": "add-pass", "type": "blur"},
+    {"do": "add-pass", "type": "blur", "name": "soften"},
+    {"do": "rename-pass", "pass": "soften", "to": "blur2"},
+    {"do": "connect", "from": ["lighting", "hdr"], "to": ["blur", "src"]},
+    {"expect": "refused", "code": "FG071"},
+    {"do": "bind", "pass": "blur", "port": "dst", "resource": "hdr"},
+    {"expect": "refused"},
+    {"do": "create-resource", "pass": "blur", "port": "dst"},
+    {"do": "disconnect", "pass": "blur", "port": "src"},
+    {"do": "remove-pass", "pass": "blur"}
+  ]})")
+                  .empty());
+  const auto problems = check(R"({"steps": [
+    {"do": "connect", "from": "lighting.hdr", "to": ["blur", "src"]},
+    {"do": "rename-pass", "pass": "blur", "name": "x"},
+    {"expect": "refused", "cod": "FG071"}
+  ]})");
+  ASSERT_EQ(problems.size(), 4u) << problems.to_text();
+  EXPECT_NE(problems.to_text().find("'from' must be [pass, port] (two strings)"), std::string::npos)
+      << problems.to_text();
+  EXPECT_NE(problems.to_text().find("'rename-pass' needs 'to'"), std::string::npos);
+  EXPECT_NE(problems.to_text().find("did you mean 'code'"), std::string::npos);
+}
+
 TEST(EditScriptCheck, AScriptWithoutStepsIsMalformed) {
   EXPECT_EQ(check(R"({"step": []})").size(), 2u);
   EXPECT_EQ(check(R"([1, 2])").size(), 1u);

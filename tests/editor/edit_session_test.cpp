@@ -12,6 +12,7 @@
 
 #include "antumbra/base/diagnostic_codes.hpp"
 #include "antumbra/editor/edit_session.hpp"
+#include "antumbra/editor/graph_edits.hpp"
 #include "antumbra/editor/recovery_file.hpp"
 #include "antumbra/fg/graph_source.hpp"
 #include "antumbra/scene/scene_file.hpp"
@@ -182,6 +183,41 @@ TEST_F(EditSessionTest, UndoFollowsOneOrderAcrossSceneAndGraph) {
   EXPECT_EQ(running_cap(renderer_), 4);
   EXPECT_FALSE(edit().redo());
   EXPECT_TRUE(edit().dirty());
+}
+
+TEST_F(EditSessionTest, RemovingAPassOthersReadKeepsTheLastGoodGraphAndUndoRestoresIt) {
+  ASSERT_TRUE(edit().start()) << edit().diagnostics().to_text();
+  const std::string original = edit().graph().to_text();
+  const auto remove = [&](GraphDocument& graph) {
+    return GraphEdits(graph, registry_).remove_pass("lighting");
+  };
+  ASSERT_TRUE(edit().edit_graph(remove).changed);
+  // tonemap reads hdr, which nobody writes now: located, and the running plan stays.
+  EXPECT_TRUE(edit().graph_refused());
+  const base::Diagnostic* error = edit().diagnostics().find(codes::graph::kReadNeverWritten);
+  ASSERT_NE(error, nullptr) << edit().diagnostics().to_text();
+  EXPECT_GT(error->line, 0);
+  ASSERT_NE(renderer_.plan(), nullptr);
+  EXPECT_EQ(renderer_.plan()->passes.size(), 3u);
+  EXPECT_TRUE(edit().graph().dirty());
+
+  ASSERT_TRUE(edit().undo());
+  EXPECT_FALSE(edit().graph_refused()) << edit().diagnostics().to_text();
+  EXPECT_EQ(edit().graph().to_text(), original);
+  EXPECT_FALSE(edit().graph().dirty());
+  ASSERT_TRUE(edit().redo());
+  EXPECT_TRUE(edit().graph_refused());
+
+  ASSERT_TRUE(edit().undo());
+
+  // A refused connection changes nothing and reloads nothing.
+  const int loads = renderer_.loads;
+  const auto into_buffer = [&](GraphDocument& graph) {
+    return GraphEdits(graph, registry_).connect({"lighting", "hdr"}, {"lighting", "assignment"});
+  };
+  EXPECT_EQ(edit().edit_graph(into_buffer).code, codes::graph::kPortKind);
+  EXPECT_EQ(renderer_.loads, loads);
+  EXPECT_EQ(edit().graph().to_text(), original);
 }
 
 TEST_F(EditSessionTest, AGestureIsOneUndoStepUntilReleased) {

@@ -154,6 +154,15 @@ fg::Registry make_fake_registry() {
                      choice("operator", "aces", {"aces", "reinhard", "none"}), enabled},
                     {port("hdr", kIn, kImage, fg::Access::sampled),
                      port("ldr", kOut, kImage, fg::Access::storage_write)}));
+  // For the structural edits: an image in and out, and a buffer in to refuse images.
+  fg::PortDesc src = port("src", kIn, kImage, fg::Access::sampled);
+  src.optional = true;
+  fg::PortDesc weights = port("weights", kIn, kBuffer, fg::Access::storage_read);
+  weights.optional = true;
+  fg::PortDesc dst = port("dst", kOut, kImage, fg::Access::storage_write);
+  dst.formats = {fg::Format::rgba16f, fg::Format::rgba8};
+  dst.size_of = fg::SizeContract{"src", fg::SizeRelation::same};
+  registry.add(pass("blur", {number("radius", 2.0, 0.0, 64.0)}, {src, weights, dst}));
   registry.add(pass("shadow-pcss",
                     {integer("blockerSearch", 5, 1, 16), choice("kernel", "11", {"5", "11", "21"}),
                      number("lightSizeScale", 1.0, 0.0, 8.0)}));

@@ -49,9 +49,10 @@ class ScratchDir {
 };
 
 // light-layering (maxLayers integer 1..32, order enum), lighting (ambient number 0..4),
-// tonemap (exposure number 0..16, operator enum, enabled bool) and shadow-pcss, so
-// that the fixture and the shipped graphs can be edited in tests; the first three with
-// ports, so that live_graph.json compiles (the edit session's tests).
+// tonemap (exposure number 0..16, operator enum, enabled bool), blur (optional image
+// `src` and buffer `weights` in, image `dst` out of src's size: structural edits) and
+// shadow-pcss, so that the fixture and the shipped graphs can be edited in tests; all but
+// the last with ports, so that live_graph.json compiles (the edit session's tests).
 fg::Registry make_fake_registry();
 
 }  // namespace antumbra::editor::testing

@@ -15,8 +15,20 @@ namespace {
 using base::Json;
 
 // What a key's value must be. `at`: a viewport position ([x, y], a light's name or
-// {"over": [x, y, z]}).
-enum class Kind { number, integer, boolean, string, vec2, vec3, at, any, string_or_null, plane };
+// {"over": [x, y, z]}); `port`: a pass's port, [pass, port].
+enum class Kind {
+  number,
+  integer,
+  boolean,
+  string,
+  vec2,
+  vec3,
+  at,
+  any,
+  string_or_null,
+  plane,
+  port
+};
 
 const std::vector<std::string>& plane_names() {
   static const std::vector<std::string> kNames{"horizontal", "vertical"};
@@ -57,6 +69,16 @@ const std::map<std::string, Action, std::less<>>& do_actions() {
       {"set-param",
        {{{"pass", Kind::string, true}, {"name", Kind::string, true}, {"value", Kind::any, true}}}},
       {"save-graph", {}},
+      {"add-pass", {{{"type", Kind::string, true}, {"name", Kind::string}}}},
+      {"remove-pass", {{{"pass", Kind::string, true}}}},
+      {"rename-pass", {{{"pass", Kind::string, true}, {"to", Kind::string, true}}}},
+      {"connect", {{{"from", Kind::port, true}, {"to", Kind::port, true}}}},
+      {"disconnect", {{{"pass", Kind::string, true}, {"port", Kind::string, true}}}},
+      {"bind",
+       {{{"pass", Kind::string, true},
+         {"port", Kind::string, true},
+         {"resource", Kind::string, true}}}},
+      {"create-resource", {{{"pass", Kind::string, true}, {"port", Kind::string, true}}}},
       {"write-file",
        {{{"path", Kind::string, true}, {"text", Kind::string}, {"from", Kind::string}}}},
       {"reload", {}},
@@ -94,6 +116,7 @@ const std::map<std::string, Action, std::less<>>& expectations() {
          {"position", Kind::vec3, true},
          {"tolerance", Kind::number}}}},
       {"dirty", {{{"value", Kind::boolean, true}}}},
+      {"refused", {{{"code", Kind::string}}}},
   };
   return kActions;
 }
@@ -125,6 +148,8 @@ bool fits(const Json& v, Kind kind) {
     case Kind::plane:
       return v.is_string() && std::find(plane_names().begin(), plane_names().end(),
                                         v.get<std::string>()) != plane_names().end();
+    case Kind::port:
+      return v.is_array() && v.size() == 2 && v[0].is_string() && v[1].is_string();
     case Kind::any:
       return true;
   }
@@ -151,6 +176,8 @@ const char* expected(Kind kind) {
       return "[x, y] pixels, a light's name or {\"over\": [x, y, z]}";
     case Kind::plane:
       return "\"horizontal\" or \"vertical\"";
+    case Kind::port:
+      return "[pass, port] (two strings)";
     case Kind::any:
       return "a value";
   }

@@ -250,6 +250,19 @@ EditResult EditSession::set_param(const std::string& pass, const std::string& na
   return result;
 }
 
+EditResult EditSession::edit_graph(const std::function<EditResult(GraphDocument&)>& edit) {
+  end_frame(false);  // a structural edit is a step of its own, never part of a drag
+  auto result = edit(graph_);
+  if (!result) {
+    message_ = "edit refused: " + result.message;
+    return result;
+  }
+  if (!result.changed) return result;
+  note_edit(DocKind::graph);
+  reload_graph();
+  return result;
+}
+
 bool EditSession::undo() {
   return step_history(undo_order_, redo_order_, true);
 }

@@ -175,6 +175,9 @@ inline constexpr const char* kLightField = "ED012";      // a light field has th
 inline constexpr const char* kLightName = "ED013";       // missing, empty or duplicate name
 inline constexpr const char* kSecondSun = "ED014";       // more than one directional light
 inline constexpr const char* kNoRecovery = "ED020";      // recover() without a recovery file
+// A connection the graph editor refuses although the compiler would take it: a second pass
+// writing a resource (the compiler orders the writes and culls the earlier writer).
+inline constexpr const char* kSecondWriter = "ED030";
 // Edit scripts (docs/edit-script.md): a step that ran and failed; a script that is malformed
 // (unknown action or key, missing key, wrong value type), found before anything runs.
 inline constexpr const char* kStepFailed = "ED100";

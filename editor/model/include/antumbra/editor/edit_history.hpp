@@ -49,8 +49,11 @@ struct EditResult {
   bool ok = true;
   bool changed = false;  // false for a refused edit or one that changes nothing
   std::string message;   // why it was refused, or a note (e.g. "clamped to 32")
+  std::string code;      // a refusal's diagnostic code, where one says it (FG040, FG071)
   explicit operator bool() const { return ok; }
-  static EditResult refused(std::string why) { return {false, false, std::move(why)}; }
+  static EditResult refused(std::string why, std::string code = {}) {
+    return {false, false, std::move(why), std::move(code)};
+  }
 };
 
 class EditHistory {

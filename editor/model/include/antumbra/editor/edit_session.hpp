@@ -13,6 +13,7 @@
 
 #include <chrono>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -71,6 +72,10 @@ class EditSession {
   // A parameter edit through the reflection, then a reload. A graph that refuses it keeps
   // the edit in the document (diagnostics() says why) and the last good graph running.
   EditResult set_param(const std::string& pass, const std::string& name, const base::Json& value);
+  // A structural edit of the graph (a GraphEdits made over the document `edit` is given),
+  // then a reload, as set_param. A graph the edit broke (a pass removed that others read)
+  // keeps the edit in the document, undoable, while the last good graph keeps running.
+  EditResult edit_graph(const std::function<EditResult(GraphDocument&)>& edit);
   // One order across both documents; false when there is nothing to undo (redo).
   bool undo();
   bool redo();

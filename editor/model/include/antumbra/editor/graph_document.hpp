@@ -91,6 +91,7 @@ class GraphDocument {
   [[nodiscard]] RecoveryFile& recovery() { return file_.recovery(); }
 
  private:
+  friend class GraphEdits;  // structural edits (graph_edits.hpp), in the same history
   GraphDocument() = default;
   [[nodiscard]] PassView view(std::size_t index) const;
 

@@ -1,9 +1,9 @@
 #pragma once
 // Writing documents back without reformatting them. Hand-formatted files (one light per
-// line, compact arrays) stay as they were: when an edit changed only values, each changed
-// value is replaced in place in the loaded text and nothing else moves, so a diff shows
-// exactly the edit. Structural edits (a light added or removed, a key added) fall back to
-// a canonical 2-space layout of the whole document.
+// line, compact arrays) stay as they were: a changed value is replaced in place, and a
+// structural edit (a pass or a light added, removed or moved, a key added or removed) is
+// spliced into the loaded text with its siblings' layout, so a diff shows exactly the edit.
+// Only text that cannot be spliced falls back to a canonical 2-space layout.
 
 #include <string>
 #include <string_view>
@@ -17,7 +17,7 @@ namespace antumbra::editor {
 
 // The text of `current`, reusing `original_text` (parsed as `original`) wherever the two
 // documents agree. The result always parses back to `current` with its key order; when
-// that cannot be had by replacing values in place, it is format_json(current).
+// that cannot be had by splicing, it is format_json(current).
 [[nodiscard]] std::string preserve_format(const base::JsonDocument& original,
                                           std::string_view original_text,
                                           const base::Json& current);
