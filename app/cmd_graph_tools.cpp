@@ -6,11 +6,13 @@
 #include "antumbra/fg/graph_source.hpp"
 #include "antumbra/fg/plan_io.hpp"
 #include "antumbra/fg/plan_memory.hpp"
+#include "antumbra/fg/plan_schedule.hpp"
 #include "antumbra/fg/schema.hpp"
 #include "antumbra/runtime/render_session.hpp"
 #include "antumbra/scene/scene_file.hpp"
 #include "antumbra/scene/scene_format.hpp"
 #include "commands.hpp"
+#include "plan_times.hpp"
 
 namespace antumbra::app {
 namespace {
@@ -168,12 +170,29 @@ int run_plan(const PlanOptions& options) {
       std::fprintf(stderr, "%s\n", base::format_text(d).c_str());
   }
   if (!result.ok()) return runtime::exit_code_for(result.diagnostics());
+  const fg::Plan& plan = result.value();
   if (options.format == "dot") {
-    std::cout << fg::plan_to_dot(result.value());
-  } else if (options.format == "text") {
-    print_plan_text(result.value());
+    std::cout << fg::plan_to_dot(plan);
+    return runtime::kExitOk;
+  }
+  PlanTimes times{fg::unit_weights(plan), "unit"};
+  if (!options.times.empty()) {
+    try {
+      times = load_plan_times(plan, options.times, options.scenario);
+    } catch (const std::runtime_error& e) {
+      std::fprintf(stderr, "antumbra plan: --times: %s\n", e.what());
+      return runtime::kExitUsage;
+    }
+  }
+  const fg::Schedule schedule = fg::analyse_schedule(fg::schedule_input(plan, times.ms));
+  if (options.format == "text") {
+    print_plan_text(plan);
+    std::cout << fg::schedule_summary_text(plan, schedule, times.source);
   } else {
-    std::cout << fg::plan_to_json_text(result.value());
+    // The canonical plan, then what its dependencies allow (docs/architecture.md, section 3).
+    base::Json json = fg::plan_to_json(plan);
+    json["schedule"] = fg::schedule_to_json(plan, schedule, times.source);
+    std::cout << json.dump(2) << '\n';
   }
   return runtime::kExitOk;
 }

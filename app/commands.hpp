@@ -25,6 +25,8 @@ struct PlanOptions {
   std::string file;
   std::string format = "json";  // json | dot | text
   std::string size = "1280x720";
+  std::string times;     // bench.json whose per-pass medians weigh the schedule; empty: 1 each
+  std::string scenario;  // the bench.json scenario to take them from (needed when several)
 };
 
 struct PassesOptions {

@@ -165,6 +165,12 @@ int dispatch(int argc, char** argv) {
   plan_format->require_option(0, 1);
   plan_cmd->add_option("--size", plan.size, "Viewport WxH the plan is compiled for")
       ->capture_default_str();
+  auto* plan_times = plan_cmd->add_option(
+      "--times", plan.times,
+      "bench.json (antumbra bench): its per-pass GPU medians weigh the schedule (default: 1 "
+      "per pass)");
+  plan_cmd->add_option("--scenario", plan.scenario, "The --times scenario (when it has several)")
+      ->needs(plan_times);
 
   EditOptions edit;
   auto* edit_cmd = cli.add_subcommand(

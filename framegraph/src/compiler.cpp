@@ -117,6 +117,23 @@ Diagnostic cycle_error(const GraphDesc& graph, const std::vector<ResolvedPass>& 
       closing_pointer(graph, passes, closing));
 }
 
+// PlanPass::after: each executed pass's "after" entries that name an executed pass.
+void link_after(const GraphDesc& graph, const std::vector<int>& order, Plan& plan) {
+  std::vector<int> executed_at(graph.passes.size(), -1);
+  for (std::size_t k = 0; k < order.size(); ++k)
+    executed_at[static_cast<std::size_t>(order[k])] = static_cast<int>(k);
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    std::vector<int>& after = plan.passes[k].after;
+    for (const std::string& name : graph.passes[static_cast<std::size_t>(order[k])].after) {
+      const int source = graph.find_pass(name);
+      if (source >= 0 && executed_at[static_cast<std::size_t>(source)] >= 0)
+        after.push_back(executed_at[static_cast<std::size_t>(source)]);
+    }
+    std::sort(after.begin(), after.end());
+    after.erase(std::unique(after.begin(), after.end()), after.end());
+  }
+}
+
 // Builds the plan's passes and resources from the kept passes in execution order.
 Plan assemble(const GraphDesc& graph, const std::vector<ResolvedPass>& passes,
               const std::vector<bool>& keep, const std::vector<int>& order, int output,
@@ -177,6 +194,7 @@ Plan assemble(const GraphDesc& graph, const std::vector<ResolvedPass>& passes,
     }
     plan.passes.push_back(std::move(pass));
   }
+  link_after(graph, order, plan);
   for (std::size_t i = 0; i < passes.size(); ++i) {
     const std::string& name = graph.passes[i].name;
     if (!passes[i].enabled) {

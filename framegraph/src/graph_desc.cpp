@@ -39,14 +39,18 @@ class GraphParser {
             "");
       return std::move(diags_);
     }
-    check_keys(root, "",
-               {"$schema", "version", "name", "description", "resources", "passes", "output"});
+    check_keys(
+        root, "",
+        {"$schema", "version", "name", "description", "resources", "passes", "output", "editor"});
     parse_version(root, graph);
     if (root.contains("name")) expect_string(root["name"], "/name", graph.name);
     if (root.contains("description")) {
       std::string ignored;
       expect_string(root["description"], "/description", ignored);
     }
+    // The editor's own block (node positions, ...): its business, not the compiler's.
+    if (root.contains("editor") && !root["editor"].is_object())
+      wrong_type(root["editor"], "/editor", "an object");
     if (require(root, "", "resources")) parse_resources(root["resources"], graph);
     if (require(root, "", "passes")) parse_passes(root["passes"], graph);
     if (require(root, "", "output") && expect_string(root["output"], "/output", graph.output) &&

@@ -128,6 +128,24 @@ Json resource_schema() {
   return Json{{"type", "object"}, {"oneOf", Json::array({std::move(image), std::move(buffer)})}};
 }
 
+// The editor's block: the compiler ignores it, so only what the editor reads is described
+// and anything else it keeps there is allowed.
+Json editor_schema() {
+  const Json point = Json{{"type", "array"},
+                          {"items", Json{{"type", "number"}}},
+                          {"minItems", 2},
+                          {"maxItems", 2},
+                          {"description", "[x, y] of the node's top-left corner, in pixels."}};
+  return Json{
+      {"type", "object"},
+      {"description",
+       "The editor's own data, ignored by the compiler: node positions of the node "
+       "view and whatever else the editor keeps."},
+      {"properties", Json{{"nodes", Json{{"type", "object"},
+                                         {"description", "Pass name -> the node's position."},
+                                         {"additionalProperties", point}}}}}};
+}
+
 }  // namespace
 
 Json generate_schema(const Registry& registry) {
@@ -182,7 +200,8 @@ Json generate_schema(const Registry& registry) {
                               {"additionalProperties", Json{{"$ref", "#/$defs/resource"}}}}},
            {"passes",
             Json{{"type", "array"}, {"minItems", 1}, {"items", Json{{"$ref", "#/$defs/pass"}}}}},
-           {"output", Json{{"type", "string"}, {"pattern", kNamePattern}}}};
+           {"output", Json{{"type", "string"}, {"pattern", kNamePattern}}},
+           {"editor", editor_schema()}};
   schema["required"] = Json::array({"version", "resources", "passes", "output"});
   schema["additionalProperties"] = false;
   schema["$defs"] = Json{{"resource", resource_schema()}, {"pass", std::move(pass)}};

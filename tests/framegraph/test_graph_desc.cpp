@@ -3,6 +3,7 @@
 
 #include "antumbra/base/diagnostic_codes.hpp"
 #include "antumbra/fg/graph_desc.hpp"
+#include "antumbra/fg/plan_io.hpp"
 #include "test_support.hpp"
 
 namespace antumbra::fg {
@@ -62,6 +63,33 @@ TEST(GraphDesc, UnknownKeyPointsAtKeyWithSuggestion) {
   EXPECT_EQ(d->line, 2);
   EXPECT_EQ(d->column, 3);
   EXPECT_NE(d->message.find("did you mean 'passes'"), std::string::npos);
+}
+
+// The editor keeps node positions (and whatever else it likes) in the file; the compiler
+// neither warns about the block nor lets it change the plan.
+TEST(GraphDesc, TheEditorBlockIsIgnored) {
+  const std::string plain = testing::read_text(testing::data_path("graphs/good/after.json"));
+  std::string with_editor = plain;
+  with_editor.insert(with_editor.find("\"version\""),
+                     R"("editor": {"nodes": {"gbuffer": [0, 40], "tonemap": [800.5, 12]},
+                                   "zoom": 1.5, "notes": ["anything"]},
+  )");
+  const auto a = testing::compile_json(plain);
+  const auto b = testing::compile_json(with_editor);
+  ASSERT_TRUE(a.ok()) << a.diagnostics().to_text();
+  ASSERT_TRUE(b.ok()) << b.diagnostics().to_text();
+  EXPECT_EQ(b.diagnostics().warning_count(), 0u) << b.diagnostics().to_text();
+  EXPECT_EQ(b.diagnostics().size(), a.diagnostics().size()) << b.diagnostics().to_text();
+  EXPECT_EQ(plan_to_json_text(b.value()), plan_to_json_text(a.value()));
+}
+
+TEST(GraphDesc, TheEditorBlockMustBeAnObject) {
+  auto g = parse(R"({"version":1,"resources":{},"passes":[{"name":"p","type":"t"}],
+                    "output":"x","editor":[1,2]})");
+  ASSERT_FALSE(g.ok());
+  const Diagnostic* d = g.diagnostics().find(codes::kWrongType);
+  ASSERT_NE(d, nullptr);
+  EXPECT_EQ(d->pointer, "/editor");
 }
 
 TEST(GraphDesc, VersionChecks) {

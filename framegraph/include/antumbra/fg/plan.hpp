@@ -104,6 +104,9 @@ struct PlanPass {
   Json params;            // every parameter, defaults filled in
   std::vector<PlanBinding> bindings;
   std::vector<PlanBarrier> barriers;  // executed before the pass
+  // The executed passes its "after" names (indices into Plan::passes, ascending): order
+  // the bindings do not show, kept for the schedule analysis (plan_schedule.hpp).
+  std::vector<int> after;
 };
 
 struct AliasingReport {
