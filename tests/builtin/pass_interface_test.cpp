@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "anisotropic_blur/anisotropic_blur_interface.h"
+#include "colour_grade/colour_grade_interface.h"
 #include "debug_views/debug_views_interface.h"
 #include "deferred_lighting/deferred_lighting_interface.h"
 #include "gbuffer/gbuffer_interface.h"
@@ -57,6 +58,7 @@ namespace fs = std::filesystem;
 // Every header included above, relative to passes/: keep the two lists together.
 const std::vector<std::string> kHeaders{
     "anisotropic_blur/anisotropic_blur_interface.h",
+    "colour_grade/colour_grade_interface.h",
     "debug_views/debug_views_interface.h",
     "deferred_lighting/deferred_lighting_interface.h",
     "gbuffer/gbuffer_interface.h",
@@ -168,6 +170,8 @@ const std::vector<gpu::ShaderDefine> kTiledLayered{
     {"HDR_FORMAT", "rgba16f"},
 };
 
+const std::vector<gpu::ShaderDefine> kGradeRgba16f{{"HDR_FORMAT", "rgba16f"}};
+
 const std::vector<gpu::ShaderDefine> kMoments{{"MOMENTS_TECHNIQUE", "2"},
                                               {"MOMENTS_FORMAT", "rgba32f"}};
 
@@ -182,6 +186,8 @@ struct PushCase {
 const std::vector<PushCase>& push_cases() {
   static const std::vector<PushCase> kCases{
       {"tonemap/tonemap_interface.h", "tonemap/tonemap.frag", {}, sizeof(shared::TonemapPush)},
+      {"colour_grade/colour_grade_interface.h", "colour_grade/colour_grade.comp", kGradeRgba16f,
+       sizeof(shared::ColourGradePush)},
       {"deferred_lighting/deferred_lighting_interface.h",
        "deferred_lighting/deferred_lighting.frag",
        {},
@@ -276,6 +282,10 @@ struct BindingCase {
 const std::vector<BindingCase>& binding_cases() {
   static const std::vector<BindingCase> kCases{
       {"tonemap/tonemap_interface.h", "tonemap/tonemap.frag", {}, "hdr", shared::kTonemapHdr},
+      {"colour_grade/colour_grade_interface.h", "colour_grade/colour_grade.comp", kGradeRgba16f,
+       "source_image", shared::kColourGradeSource},
+      {"colour_grade/colour_grade_interface.h", "colour_grade/colour_grade.comp", kGradeRgba16f,
+       "target", shared::kColourGradeTarget},
       // layered.glsl's bindings come from the same header as tiled_lighting.comp's.
       {"tiled_lighting/tiled_lighting_interface.h", "tiled_lighting/tiled_lighting.comp",
        kTiledLayered, "out_hdr", shared::kTiledHdr},
