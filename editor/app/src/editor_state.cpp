@@ -13,6 +13,31 @@ void print(const base::Diagnostics& diagnostics) {
 
 }  // namespace
 
+editor::EditResult EditorState::edit_structure(
+    const std::function<editor::EditResult(editor::GraphEdits&)>& edit) {
+  fg::CompileOptions options;
+  options.viewport = {session_.viewport().width, session_.viewport().height};
+  return edit_graph([&](editor::GraphDocument& graph) {
+    editor::GraphEdits edits(graph, session_.pass_registry().reflection(), options);
+    return edit(edits);
+  });
+}
+
+editor::EditResult EditorState::check_connect(const editor::PortRef& from,
+                                              const editor::PortRef& to) {
+  const std::string key = from.pass + "." + from.port + ">" + to.pass + "." + to.port + "@" +
+                          std::to_string(graph().revision());
+  if (key == last_verdict_.key) return last_verdict_.result;
+  fg::CompileOptions options;
+  options.viewport = {session_.viewport().width, session_.viewport().height};
+  last_verdict_ = {key, ask_graph([&](editor::GraphDocument& graph) {
+                     return editor::GraphEdits(graph, session_.pass_registry().reflection(),
+                                               options)
+                         .check_connect(from, to);
+                   })};
+  return last_verdict_.result;
+}
+
 void EditorState::frame_presented() {
   const auto latency = take_change_latency_ms();
   if (!latency) return;

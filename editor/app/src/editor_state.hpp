@@ -5,10 +5,13 @@
 // shows: the status bar's drag note, per-pass GPU times and the log line after a reload
 // from disk reaches the screen. Panels draw from it and forward their edits to it.
 
+#include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "antumbra/editor/edit_session.hpp"
+#include "antumbra/editor/graph_edits.hpp"
 #include "antumbra/editor_app/session_renderer.hpp"
 #include "antumbra/runtime/render_session.hpp"
 
@@ -35,6 +38,22 @@ class EditorState : public editor::EditSession {
   // the change to this frame, added to message() (the status bar) and printed to the log.
   void frame_presented();
 
+  // The pass selected in the node view or the graph panel (one selection for both); a new
+  // selection is revealed once in the graph panel (its parameters opened).
+  [[nodiscard]] const std::string& selected_pass() const { return selected_pass_; }
+  void select_pass(std::string pass) {
+    reveal_ = pass != selected_pass_;
+    selected_pass_ = std::move(pass);
+  }
+  bool take_selection_reveal() { return std::exchange(reveal_, false); }
+
+  // Structural edits of the graph from the node view (editor::GraphEdits over the session's
+  // pass registry, compiled at the viewport's size), each one undo step and a reload.
+  editor::EditResult edit_structure(
+      const std::function<editor::EditResult(editor::GraphEdits&)>& edit);
+  // A connection's verdict without making it, remembered per pair (a drag asks every frame).
+  editor::EditResult check_connect(const editor::PortRef& from, const editor::PortRef& to);
+
   // Per-pass GPU times, refreshed every few frames (medians over those frames).
   [[nodiscard]] const std::vector<runtime::PassTiming>& timings() const { return timings_; }
   void refresh_timings();
@@ -45,6 +64,13 @@ class EditorState : public editor::EditSession {
  private:
   runtime::RenderSession& session_;
   std::string drag_note_;
+  std::string selected_pass_;
+  struct ConnectVerdict {
+    std::string key;  // from and to, at a graph revision
+    editor::EditResult result;
+  };
+  ConnectVerdict last_verdict_;
+  bool reveal_ = false;
   std::vector<runtime::PassTiming> timings_;
 };
 

@@ -135,7 +135,15 @@ void draw_passes(EditorState& state) {
       title += "  " + state.pass_time_text(view.name);
     }
     if (planned == nullptr) ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(140, 140, 140, 255));
-    const bool open = ImGui::TreeNode(view.name.c_str(), "%s", title.c_str());
+    // The node view's selection opens its pass here (once per new selection), highlighted.
+    const bool selected = state.selected_pass() == view.name;
+    if (selected && state.take_selection_reveal()) {
+      ImGui::SetNextItemOpen(true);
+      ImGui::SetScrollHereY(0.2f);
+    }
+    const ImGuiTreeNodeFlags flags = selected ? ImGuiTreeNodeFlags_Selected : 0;
+    const bool open = ImGui::TreeNodeEx(view.name.c_str(), flags, "%s", title.c_str());
+    if (ImGui::IsItemClicked()) state.select_pass(view.name);
     if (planned == nullptr) ImGui::PopStyleColor();
     if (!open) continue;
     for (const auto& p : view.params) draw_param(state, view, p);

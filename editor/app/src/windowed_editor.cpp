@@ -20,6 +20,7 @@
 #include "editor_state.hpp"
 #include "imgui_layer.hpp"
 #include "layout_view.hpp"
+#include "node_view_panel.hpp"
 #include "panels.hpp"
 #include "presenter.hpp"
 #include "viewport_view.hpp"
@@ -308,6 +309,7 @@ class FrameLoop {
     draw_lights_panel(state_, layout_.slot(editor::Panel::lights));
     draw_layers_panel(state_, layout_.slot(editor::Panel::layers));
     draw_graph_panel(state_, layout_.slot(editor::Panel::graph));
+    draw_node_view();
     draw_status_bar(state_, layout_.layout().status, layout_);
     switch (draw_close_prompt(state_, close_requested && prompt_)) {
       case CloseChoice::close:
@@ -322,6 +324,15 @@ class FrameLoop {
     state_.end_frame(ImGui::IsAnyItemActive() || viewport_.dragging());
     layout_.end_frame();
     ui_.end_frame();
+  }
+
+  // The node view fills its strip below the strip's splitter.
+  void draw_node_view() {
+    const editor::EditorLayout& l = layout_.layout();
+    if (l.node_view.empty()) return;
+    const float grab = l.node_view_handle.height;
+    node_view_.draw(state_, {l.node_view.x, l.node_view.y + grab, l.node_view.width,
+                             l.node_view.height - grab});
   }
 
   void update_viewport(const std::vector<KeyPress>& presses) {
@@ -375,6 +386,7 @@ class FrameLoop {
   Presenter& presenter_;
   ImguiLayer& ui_;
   LayoutView& layout_;
+  NodeViewPanel node_view_;
   EditorState& state_;
   fs::path scene_file_;
   fs::path graph_file_;

@@ -1,6 +1,7 @@
 #include "antumbra/editor/edit_session.hpp"
 
 #include <algorithm>
+#include <cassert>
 #include <cstdio>
 
 #include "antumbra/editor/atomic_file.hpp"
@@ -261,6 +262,14 @@ EditResult EditSession::edit_graph(const std::function<EditResult(GraphDocument&
   note_edit(DocKind::graph);
   reload_graph();
   return result;
+}
+
+EditResult EditSession::ask_graph(const std::function<EditResult(GraphDocument&)>& ask) {
+  const std::uint64_t before = graph_.revision();
+  EditResult answer = ask(graph_);
+  assert(graph_.revision() == before && "a question edited the graph");
+  (void)before;
+  return answer;
 }
 
 bool EditSession::undo() {

@@ -89,6 +89,15 @@ EditResult GraphEdits::remove_pass(std::string_view name) {
   return commit({{}, {"Remove pass '" + std::string(name) + "'", edits.edits(), index, -1}});
 }
 
+EditResult GraphEdits::set_editor_block(const Json& block) {
+  if (!block.is_object()) return EditResult::refused("the editor block must be an object");
+  const auto it = graph_.json().find("editor");
+  if (it != graph_.json().end() && *it == block) return {};
+  EditBuilder edits(graph_.json());
+  edits.set("", "editor", block);
+  return commit({{}, {"Move nodes", edits.edits(), -1, -1}});
+}
+
 EditResult GraphEdits::rename_pass(std::string_view from, std::string_view to) {
   const int index = graph_.find_pass(from);
   if (index < 0) return EditResult::refused("there is no pass " + base::quote_name(from));

@@ -76,6 +76,11 @@ class EditSession {
   // then a reload, as set_param. A graph the edit broke (a pass removed that others read)
   // keeps the edit in the document, undoable, while the last good graph keeps running.
   EditResult edit_graph(const std::function<EditResult(GraphDocument&)>& edit);
+  // Asks an edit's question without making it (GraphEdits::check_connect while a wire is
+  // dragged): `ask` must leave the document as it was.
+  EditResult ask_graph(const std::function<EditResult(GraphDocument&)>& ask);
+  // The pass types' reflection the documents are read with.
+  [[nodiscard]] const PassDescLookup& lookup() const { return lookup_; }
   // One order across both documents; false when there is nothing to undo (redo).
   bool undo();
   bool redo();

@@ -63,6 +63,9 @@ class GraphEdits {
   // Declares a new resource for the port (a unique name; kind, format, size and layers from
   // the port's reflection and the pass's other bindings) and binds it there.
   EditResult create_resource(const PortRef& port);
+  // Replaces the top-level "editor" block (the node view's positions: the compiler ignores
+  // it) as one undo step; an equal block changes nothing.
+  EditResult set_editor_block(const base::Json& block);
 
  private:
   struct Planned;  // an edit worked out against a copy of the document (graph_connect.cpp)

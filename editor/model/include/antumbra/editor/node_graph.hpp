@@ -95,7 +95,7 @@ struct NodeGraph {
   std::vector<DanglingEnd> dangling;
   std::vector<base::Diagnostic> graph_diagnostics;  // located at no pass
 
-  [[nodiscard]] int find_node(std::string_view name) const;      // -1 when absent
+  [[nodiscard]] int find_node(std::string_view name) const;          // -1 when absent
   [[nodiscard]] const NodePort* port(const NodePortRef& ref) const;  // null when out of range
 };
 
