@@ -556,6 +556,7 @@ int run_windowed(const EditOptions& options) {
   windowed.screenshot = options.out;
   windowed.select = options.select;
   windowed.frame_log = options.frame_log;
+  windowed.shots = options.shots;
   windowed.layout_file = options.layout_file;
   windowed.ui_scale = options.ui_scale;
   windowed.layout_report = options.layout_report;

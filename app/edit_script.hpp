@@ -26,6 +26,7 @@ struct EditOptions {
   std::string out;            // optional PNG of the last frame
   std::string select;         // window: the light selected at start
   bool frame_log = false;     // window: a line per presented frame
+  std::string shots;          // window: F12 screenshots go here
   std::string layout_file;    // window: the layout file instead of the per-user one
   float ui_scale = 0.0f;      // window: > 0 overrides the DPI scale
   std::string layout_report;  // window: JSON of the layout as drawn, on exit

@@ -187,7 +187,10 @@ int dispatch(int argc, char** argv) {
   edit_cmd->add_flag("--headless", edit.headless, "No window: run the script offscreen");
   edit_cmd->add_option("--select", edit.select, "Window: the light selected at start (by name)");
   edit_cmd->add_flag("--frame-log", edit.frame_log,
-                     "Window: print a line per presented frame (for scripts driving it)");
+                     "Window: print a line per presented frame and where the node view's ports "
+                     "and the graph panel's fields are (for scripts driving it)");
+  edit_cmd->add_option("--shots", edit.shots,
+                       "Window: a folder; F12 writes the window as presented to shot-N.png there");
   edit_cmd->add_option("--size", edit.size, "Window WxH (headless: the viewport)")
       ->capture_default_str();
   edit_cmd->add_option("--layout-file", edit.layout_file,

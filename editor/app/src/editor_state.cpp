@@ -38,6 +38,18 @@ editor::EditResult EditorState::check_connect(const editor::PortRef& from,
   return last_verdict_.result;
 }
 
+void EditorState::log_target(const std::string& what, float x, float y) {
+  if (!log_targets_) return;
+  const std::string at =
+      std::to_string(static_cast<int>(x)) + " " + std::to_string(static_cast<int>(y));
+  std::string& last = logged_targets_[what];
+  if (last == at) return;
+  last = at;
+  std::printf("%s: at %s: %s\n", what.substr(0, what.find('|')).c_str(), at.c_str(),
+              what.substr(what.find('|') + 1).c_str());
+  std::fflush(stdout);
+}
+
 void EditorState::frame_presented() {
   const auto latency = take_change_latency_ms();
   if (!latency) return;

@@ -6,6 +6,7 @@
 // from disk reaches the screen. Panels draw from it and forward their edits to it.
 
 #include <functional>
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -54,6 +55,11 @@ class EditorState : public editor::EditSession {
   // A connection's verdict without making it, remembered per pair (a drag asks every frame).
   editor::EditResult check_connect(const editor::PortRef& from, const editor::PortRef& to);
 
+  // Input scripts (--frame-log) find widgets by where the panels say they are:
+  // "graph panel: at X Y: param colour-grade.exposure", printed when it changes.
+  void set_log_targets(bool on) { log_targets_ = on; }
+  void log_target(const std::string& what, float x, float y);
+
   // Per-pass GPU times, refreshed every few frames (medians over those frames).
   [[nodiscard]] const std::vector<runtime::PassTiming>& timings() const { return timings_; }
   void refresh_timings();
@@ -70,6 +76,8 @@ class EditorState : public editor::EditSession {
     editor::EditResult result;
   };
   ConnectVerdict last_verdict_;
+  bool log_targets_ = false;
+  std::map<std::string, std::string> logged_targets_;
   bool reveal_ = false;
   std::vector<runtime::PassTiming> timings_;
 };

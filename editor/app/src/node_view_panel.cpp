@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <map>
 
@@ -105,6 +106,12 @@ base::Json plan_with_schedule(const fg::Plan& plan,
   return json;
 }
 
+// The pass the last add_pass appended: the document's last pass.
+std::string graph_after_add(const EditorState& state) {
+  const auto passes = state.graph().passes();
+  return passes.empty() ? std::string() : passes.back().name;
+}
+
 }  // namespace
 
 void NodeViewPanel::draw(EditorState& state, const editor::Rect& area) {
@@ -148,7 +155,6 @@ void NodeViewPanel::refresh(EditorState& state) {
     }
     return;
   }
-  const bool first = revision_ == ~std::uint64_t{0};
   revision_ = revision;
   plan_source_ = plan;
   diagnostics_seen_ = diagnostics;
@@ -157,18 +163,22 @@ void NodeViewPanel::refresh(EditorState& state) {
   // A refused document's nodes carry its errors; the running plan is another graph's.
   outcome.plan = refused ? nullptr : plan;
   outcome.diagnostics = &state.diagnostics();
+  const std::size_t nodes = graph_.nodes.size();
+  const std::size_t edges = graph_.edges.size();
   graph_ = editor::build_node_graph(state.graph().json(), state.lookup(), outcome);
+  // A pass added, removed or wired differently may move nodes: show the whole graph again.
+  if (graph_.nodes.size() != nodes || graph_.edges.size() != edges) fit_pending_ = true;
   layout_ = editor::place_nodes(graph_, editor::layout_from_json(state.graph().json()));
   plan_times_ = time_table(state);
   plan_ = plan != nullptr ? editor::build_plan_view(plan_with_schedule(*plan, plan_times_))
                           : editor::PlanView{};
   set_pass_times(plan_, plan_times_);
-  if (first) fit_pending_ = true;
 }
 
 void NodeViewPanel::draw_toolbar(EditorState& state) {
   if (ImGui::SmallButton("Fit")) fit_pending_ = true;
   ImGui::SameLine();
+  add_button_ = gv(ImGui::GetCursorScreenPos()) + glm::vec2(20.0f, 6.0f);
   if (ImGui::SmallButton("Add pass")) {
     palette_filter_.clear();
     ImGui::OpenPopup("##palette");
@@ -197,15 +207,20 @@ void NodeViewPanel::draw_palette(EditorState& state) {
   std::array<char, 128> filter{};
   std::strncpy(filter.data(), palette_filter_.c_str(), filter.size() - 1);
   if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
-  if (ImGui::InputTextWithHint("##filter", "search pass types", filter.data(), filter.size())) {
-    palette_filter_ = filter.data();
-  }
+  // Enter takes the first type that matches.
+  const bool enter = ImGui::InputTextWithHint("##filter", "search pass types", filter.data(),
+                                              filter.size(), ImGuiInputTextFlags_EnterReturnsTrue);
+  palette_filter_ = filter.data();
+  bool first = true;
   const fg::Registry& registry = state.session().pass_registry().reflection();
   for (const std::string& type : registry.types()) {
     if (!palette_filter_.empty() && type.find(palette_filter_) == std::string::npos) continue;
-    if (ImGui::Selectable(type.c_str())) {
+    const bool take = enter && first;
+    first = false;
+    if (ImGui::Selectable(type.c_str()) || take) {
       const editor::EditResult r = state.edit_structure([&](auto& e) { return e.add_pass(type); });
       refusal_ = r.ok ? "" : r.message;
+      if (r.ok) state.select_pass(graph_after_add(state));
       ImGui::CloseCurrentPopup();
     }
     if (ImGui::IsItemHovered()) {
@@ -236,6 +251,7 @@ void NodeViewPanel::draw_canvas(EditorState& state) {
   draw_nodes(state, origin);
   handle_mouse(state, origin, hovered);
   draw->PopClipRect();
+  if (log_targets_) log_targets(origin);
   draw_context_menu(state);
   // Errors the compiler located at no pass: over the canvas's corner.
   std::string graph_level = diagnostic_lines(graph_.graph_diagnostics);
@@ -509,6 +525,29 @@ void NodeViewPanel::draw_context_menu(EditorState& state) {
     ImGui::CloseCurrentPopup();
   }
   ImGui::EndPopup();
+}
+
+void NodeViewPanel::log_targets(glm::vec2 origin) {
+  const auto at = [](glm::vec2 p) {
+    return "node view: at " + std::to_string(static_cast<int>(std::lround(p.x))) + " " +
+           std::to_string(static_cast<int>(std::lround(p.y))) + ": ";
+  };
+  std::string text = at(add_button_) + "button Add pass\n";
+  for (std::size_t n = 0; n < graph_.nodes.size(); ++n) {
+    for (const PortSide side : {PortSide::input, PortSide::output}) {
+      const auto& ports = graph_.nodes[n].ports(side);
+      for (std::size_t p = 0; p < ports.size(); ++p) {
+        const editor::NodePortRef ref{static_cast<int>(n), side, static_cast<int>(p)};
+        text += at(origin + view_.to_screen(editor::port_anchor(layout_, ref))) + "port " +
+                graph_.nodes[n].name + "." + ports[p].name +
+                (side == PortSide::input ? " in\n" : " out\n");
+      }
+    }
+  }
+  if (text == logged_) return;
+  logged_ = text;
+  std::fputs(text.c_str(), stdout);
+  std::fflush(stdout);
 }
 
 // Moved nodes are kept in the graph file's "editor" block (the compiler ignores it), as

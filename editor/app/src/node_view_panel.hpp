@@ -24,6 +24,10 @@ namespace antumbra::editor_app {
 
 class NodeViewPanel {
  public:
+  // `log_targets`: print where the buttons and ports are on the screen whenever that
+  // changes ("node view: at X Y: port lighting.hdr out"), for input scripts (--frame-log).
+  explicit NodeViewPanel(bool log_targets = false) : log_targets_(log_targets) {}
+
   // Draws the strip in `area` (window units, below its splitter); nothing when empty.
   void draw(EditorState& state, const editor::Rect& area);
 
@@ -51,6 +55,7 @@ class NodeViewPanel {
   void draw_context_menu(EditorState& state);
   void store_positions(EditorState& state);
   void draw_plan(EditorState& state);
+  void log_targets(glm::vec2 origin);
 
   editor::NodeGraph graph_;
   editor::GraphLayout layout_;
@@ -70,6 +75,9 @@ class NodeViewPanel {
   std::string palette_filter_;
   std::string rename_text_;
   std::string refusal_;  // the last refused structural edit, shown until the next edit
+  bool log_targets_ = false;
+  std::string logged_;  // what log_targets printed last
+  glm::vec2 add_button_{0.0f};
 };
 
 }  // namespace antumbra::editor_app

@@ -244,7 +244,9 @@ class FrameLoop {
         layout_(layout),
         state_(state),
         scene_file_(std::move(scene_file)),
-        graph_file_(std::move(graph_file)) {}
+        graph_file_(std::move(graph_file)) {
+    state_.set_log_targets(options.frame_log);
+  }
 
   void run() {
     while (!quit_) {
@@ -305,6 +307,7 @@ class FrameLoop {
     layout_.begin_frame();
     const std::vector<KeyPress> presses = window_.take_key_presses();
     handle_shortcuts(state_, presses, window_, layout_);
+    for (const KeyPress& press : presses) shot_requested_ |= press.key == GLFW_KEY_F12;
     update_viewport(presses);
     draw_lights_panel(state_, layout_.slot(editor::Panel::lights));
     draw_layers_panel(state_, layout_.slot(editor::Panel::layers));
@@ -354,7 +357,7 @@ class FrameLoop {
     const fgvk::BoundImage* shown = session_.executor().image(state_.shown_resource());
     if (presenter_.present(
             shown, layout_.viewport_pixels(), [&](VkCommandBuffer cmd) { ui_.draw(cmd); },
-            last && from_window ? options_.screenshot : std::string())) {
+            last && from_window ? options_.screenshot : take_shot())) {
       if (last && !from_window && !options_.screenshot.empty()) {
         session_.write_image(state_.shown_resource(), options_.screenshot);
       }
@@ -367,6 +370,15 @@ class FrameLoop {
       if (presented_ == 1 || options_.frame_log) std::fflush(stdout);
     }
     if (last) session_.gpu().end_debugger_capture();
+  }
+
+  // F12 (with --shots): the next presented frame is written to the shots folder.
+  std::string take_shot() {
+    if (!shot_requested_ || options_.shots.empty()) return {};
+    shot_requested_ = false;
+    const std::string path = options_.shots + "/shot-" + std::to_string(++shots_) + ".png";
+    std::printf("editor: screenshot %s\n", path.c_str());
+    return path;
   }
 
   void finish_frame() {
@@ -386,7 +398,9 @@ class FrameLoop {
   Presenter& presenter_;
   ImguiLayer& ui_;
   LayoutView& layout_;
-  NodeViewPanel node_view_;
+  NodeViewPanel node_view_{options_.frame_log};
+  bool shot_requested_ = false;
+  int shots_ = 0;
   EditorState& state_;
   fs::path scene_file_;
   fs::path graph_file_;

@@ -23,6 +23,7 @@ struct WindowedOptions {
   unsigned height = 720;
   std::string screenshot;     // PNG of the last presented window image (UI included)
   std::string select;         // a light's name: selected at start (its range sphere shown)
+  std::string shots;          // a folder: F12 writes the window as presented to shot-N.png
   bool frame_log = false;     // "editor: frame N" per presented frame, flushed (input scripts)
   std::string layout_file;    // empty: the per-user editor.ini (ANTUMBRA_CONFIG_DIR, XDG, ~)
   float ui_scale = 0.0f;      // > 0: instead of the window's DPI scale
