@@ -79,9 +79,10 @@ class ComputeRasterizer {
   void bind(fgvk::ExecuteContext& context, const ComputePipeline& pipeline,
             const shared::RasterPush& push, VkPipeline variant = VK_NULL_HANDLE,
             bool textures = false);
-  // Rasterises list `list` (its dispatch arguments) with `pipeline`.
+  // Rasterises list `list` (its dispatch arguments) with `pipeline` (`textures`: the CUT
+  // variant, which reads them).
   void raster_list(fgvk::ExecuteContext& context, shared::RasterPush push, std::uint32_t list,
-                   VkPipeline pipeline, const char* label);
+                   VkPipeline pipeline, const char* label, bool textures);
   void clear_chunk(VkCommandBuffer cmd, const Chunk& chunk, std::uint32_t tint_faces);
   void record_chunk(fgvk::ExecuteContext& context, const AtlasFrame& frame, const Chunk& chunk,
                     const std::vector<bool>& tinted, const ComputeRasterSettings& settings);
@@ -93,7 +94,9 @@ class ComputeRasterizer {
 
   ComputePipeline cull_;
   ComputePipeline args_;
-  ComputePipeline raster_;
+  ComputePipeline raster_;  // the depth list's variant (FIXED_LIST)
+  // The tint list's solid variant, in raster_'s layout: built the first time a light tints.
+  LazyPipeline raster_tint_;
   // shadow_raster.comp with CUT, in raster_'s layout: built the first time a scene has cut
   // clusters (a shader JIT on CPU devices that most scenes never need).
   LazyPipeline raster_cut_;

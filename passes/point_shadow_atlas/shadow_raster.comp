@@ -22,9 +22,9 @@
 // centres, no face culling, near-plane clipping, depth clipping to [0, 1], the Vulkan
 // depth bias for float formats (constant * 2^(exponent(max z) - 23) + slope * max |dz|);
 // edges are inclusive, which may cover a texel the hardware's tie rule leaves out.
-// Compiled twice (docs/technique.md, "Compute shadow rasteriser", cut clusters): without
-// CUT for the depth and tint lists, which hold only solid two-sided casters and
-// translucent ones, and with CUT for the cut list (clusters of one-sided or alpha-tested
+// Compiled three times (docs/technique.md, "Compute shadow rasteriser", cut clusters):
+// without CUT once for the depth list and once for the tint list (FIXED_LIST), which hold
+// only solid two-sided casters and translucent ones, and with CUT for the cut list (clusters of one-sided or alpha-tested
 // materials), as shadow_cut.frag: a one-sided triangle casts only when the light sees its
 // front, an alpha-tested one only at texels whose alpha (perspective-correct texture
 // coordinates, gradients from the coordinate planes) reaches the cutoff. The solid
@@ -32,6 +32,15 @@
 // in shared memory, so scenes without such materials pay nothing for them.
 
 layout(local_size_x = kRasterGroup) in;
+
+// FIXED_LIST: the one list this variant works through (the depth list's and the tint list's
+// solid variants), a constant the compiler folds into the per-texel code; without it (the
+// CUT variant, which serves the cut list and cut translucent casters) the push constant's.
+#ifdef FIXED_LIST
+const uint g_list = FIXED_LIST;
+#else
+#define g_list list
+#endif
 
 layout(std430, binding = kRasterClusters) readonly buffer Clusters {
   RasterCluster clusters[];
@@ -143,7 +152,7 @@ bool setup(vec3 a, vec3 b, vec3 c VERTEX_UVS, ivec4 region, out Tri tri) {
   }
 #endif
   float bias = 0.0;
-  if (list != kListTint) {
+  if (g_list != kListTint) {
     float zmax = max(max(a.z, b.z), c.z);
     int e;
     frexp(max(zmax, 0.0), e);
@@ -174,7 +183,7 @@ void cover(Tri tri, int x, int y) {
   }
 #endif
   uint index = g_face.info.y + uint(y) * g_size + uint(x);
-  if (list != kListTint) {
+  if (g_list != kListTint) {
     // A plain read first: most covered texels already hold something nearer, and an
     // atomic per texel costs more than a load on every device.
     uint value = floatBitsToUint(clamp(z + tri.z.w, 0.0, 1.0));
@@ -305,8 +314,8 @@ vec2 vertex_uv(uint index) {
 
 void main() {
   uint item_index = gl_WorkGroupID.y * kMaxGroupsX + gl_WorkGroupID.x;
-  if (item_index >= min(counts[list], list_capacity(list))) return;  // uniform over the group
-  uvec2 item = items[list_base(list) + item_index];
+  if (item_index >= min(counts[g_list], list_capacity(g_list))) return;  // uniform over the group
+  uvec2 item = items[list_base(g_list) + item_index];
   RasterCluster cluster = clusters[item.x];
   g_face = faces[face_first + (item.y & 0xFFFFu)];
   g_size = g_face.info.z;
@@ -335,7 +344,7 @@ void main() {
     vec3 p[3] = vec3[3](vertex_position(i0), vertex_position(i1), vertex_position(i2));
     // Surfaces turned towards the light: only they tint (a closed pane counts once), and
     // only they cast where the material is one-sided.
-    bool facing_only = list == kListTint;
+    bool facing_only = g_list == kListTint;
 #ifdef CUT
     facing_only = facing_only || one_sided;
 #endif
