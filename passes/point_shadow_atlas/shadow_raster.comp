@@ -24,12 +24,12 @@
 // edges are inclusive, which may cover a texel the hardware's tie rule leaves out.
 // Compiled three times (docs/technique.md, "Compute shadow rasteriser", cut clusters):
 // without CUT once for the depth list and once for the tint list (FIXED_LIST), which hold
-// only solid two-sided casters and translucent ones, and with CUT for the cut list (clusters of one-sided or alpha-tested
-// materials), as shadow_cut.frag: a one-sided triangle casts only when the light sees its
-// front, an alpha-tested one only at texels whose alpha (perspective-correct texture
-// coordinates, gradients from the coordinate planes) reaches the cutoff. The solid
-// variant carries none of that: no coordinates per vertex or texel, smaller triangles
-// in shared memory, so scenes without such materials pay nothing for them.
+// only solid two-sided casters and translucent ones, and with CUT for the cut list (clusters of
+// one-sided or alpha-tested materials), as shadow_cut.frag: a one-sided triangle casts only when
+// the light sees its front, an alpha-tested one only at texels whose alpha (perspective-correct
+// texture coordinates, gradients from the coordinate planes) reaches the cutoff. The solid variant
+// carries none of that: no coordinates per vertex or texel, smaller triangles in shared memory, so
+// scenes without such materials pay nothing for them.
 
 layout(local_size_x = kRasterGroup) in;
 

@@ -376,7 +376,7 @@ class FrameLoop {
   std::string take_shot() {
     if (!shot_requested_ || options_.shots.empty()) return {};
     shot_requested_ = false;
-    const std::string path = options_.shots + "/shot-" + std::to_string(++shots_) + ".png";
+    std::string path = options_.shots + "/shot-" + std::to_string(++shots_) + ".png";
     std::printf("editor: screenshot %s\n", path.c_str());
     return path;
   }
