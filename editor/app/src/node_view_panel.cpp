@@ -123,17 +123,21 @@ void NodeViewPanel::draw(EditorState& state, const editor::Rect& area) {
                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoTitleBar |
                    ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
   refresh(state);
-  if (ImGui::BeginTabBar("##node view tabs")) {
-    if (ImGui::BeginTabItem("Nodes")) {
-      draw_toolbar(state);
-      draw_canvas(state);
-      ImGui::EndTabItem();
-    }
-    if (ImGui::BeginTabItem("Plan")) {
-      draw_plan(state);
-      ImGui::EndTabItem();
-    }
-    ImGui::EndTabBar();
+  // Two buttons, not an ImGui tab bar: a button takes a click pressed and released within
+  // one frame (ImGui 1.86's backend latches it), a tab does not, and lavapipe frames are slow.
+  for (const bool plan : {false, true}) {
+    if (plan) ImGui::SameLine();
+    const bool current = show_plan_ == plan;
+    if (current) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetColorU32(ImGuiCol_TabActive));
+    if (ImGui::SmallButton(plan ? "Plan" : "Nodes")) show_plan_ = plan;
+    if (current) ImGui::PopStyleColor();
+  }
+  ImGui::Separator();
+  if (show_plan_) {
+    draw_plan(state);
+  } else {
+    draw_toolbar(state);
+    draw_canvas(state);
   }
   ImGui::End();
 }

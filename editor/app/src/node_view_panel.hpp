@@ -68,6 +68,7 @@ class NodeViewPanel {
   std::size_t diagnostics_seen_ = ~std::size_t{0};
   bool refused_seen_ = false;
   bool fit_pending_ = true;
+  bool show_plan_ = false;  // which of the two views the strip shows
   glm::vec2 canvas_size_{0.0f};
   WireDrag wire_;
   NodeDrag node_drag_;
