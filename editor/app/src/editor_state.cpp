@@ -38,15 +38,14 @@ editor::EditResult EditorState::check_connect(const editor::PortRef& from,
   return last_verdict_.result;
 }
 
-void EditorState::log_target(const std::string& what, float x, float y) {
+void EditorState::log_target(const std::string& panel, const std::string& what, float x, float y) {
   if (!log_targets_) return;
   const std::string at =
       std::to_string(static_cast<int>(x)) + " " + std::to_string(static_cast<int>(y));
-  std::string& last = logged_targets_[what];
+  std::string& last = logged_targets_[panel + ": " + what];
   if (last == at) return;
   last = at;
-  std::printf("%s: at %s: %s\n", what.substr(0, what.find('|')).c_str(), at.c_str(),
-              what.substr(what.find('|') + 1).c_str());
+  std::printf("%s: at %s: %s\n", panel.c_str(), at.c_str(), what.c_str());
   std::fflush(stdout);
 }
 

@@ -58,7 +58,7 @@ class EditorState : public editor::EditSession {
   // Input scripts (--frame-log) find widgets by where the panels say they are:
   // "graph panel: at X Y: param colour-grade.exposure", printed when it changes.
   void set_log_targets(bool on) { log_targets_ = on; }
-  void log_target(const std::string& what, float x, float y);
+  void log_target(const std::string& panel, const std::string& what, float x, float y);
 
   // Per-pass GPU times, refreshed every few frames (medians over those frames).
   [[nodiscard]] const std::vector<runtime::PassTiming>& timings() const { return timings_; }

@@ -90,7 +90,7 @@ void draw_param(EditorState& state, const editor::PassView& pass, const editor::
     ImGui::SetTooltip("%s", p.description.c_str());
   }
   const ImVec2 field = ImGui::GetItemRectMin();
-  state.log_target("graph panel|param " + pass.name + "." + p.name, field.x + 30.0f,
+  state.log_target("graph panel", "param " + pass.name + "." + p.name, field.x + 30.0f,
                    field.y + 8.0f);
   if (changed) state.set_param(pass.name, p.name, value);
 }

@@ -108,8 +108,8 @@ base::Json plan_with_schedule(const fg::Plan& plan,
 
 // The pass the last add_pass appended: the document's last pass.
 std::string graph_after_add(const EditorState& state) {
-  const auto passes = state.graph().passes();
-  return passes.empty() ? std::string() : passes.back().name;
+  const base::Json& passes = state.graph().json()["passes"];
+  return passes.empty() ? std::string() : passes.back().value("name", std::string());
 }
 
 }  // namespace
@@ -152,10 +152,12 @@ void NodeViewPanel::refresh(EditorState& state) {
   if (revision == revision_ && plan == plan_source_ && diagnostics == diagnostics_seen_ &&
       refused == refused_seen_) {
     auto times = time_table(state);
-    if (plan != nullptr && times != plan_times_) {
-      plan_ = editor::build_plan_view(plan_with_schedule(*plan, times));
-      set_pass_times(plan_, times);
-      plan_times_ = std::move(times);
+    if (times != plan_times_) {
+      if (plan != nullptr) {
+        plan_ = editor::build_plan_view(plan_with_schedule(*plan, times));
+        set_pass_times(plan_, times);
+      }
+      plan_times_ = std::move(times);  // the nodes' heat colours and hovers read them too
     }
     return;
   }
@@ -278,7 +280,7 @@ void NodeViewPanel::draw_edges(glm::vec2 origin) const {
                     edge.resource.c_str());
     }
   }
-  // Ends that lead nowhere: a short stub with the resource's name.
+  // Ends that lead nowhere: a short line with the resource's name.
   for (const editor::DanglingEnd& end : graph_.dangling) {
     const glm::vec2 a = origin + view_.to_screen(editor::port_anchor(layout_, end.port));
     const float dx = (end.port.side == PortSide::output ? 30.0f : -30.0f) * view_.zoom();
@@ -296,7 +298,7 @@ void NodeViewPanel::draw_edges(glm::vec2 origin) const {
 
 void NodeViewPanel::draw_nodes(EditorState& state, glm::vec2 origin) const {
   ImDrawList* draw = ImGui::GetWindowDrawList();
-  const auto times = time_table(state);
+  const auto& times = plan_times_;  // this frame's, from refresh()
   double slowest = 0.0;
   for (const auto& [name, ms] : times) slowest = std::max(slowest, ms);
   const float z = view_.zoom();
@@ -404,7 +406,7 @@ void NodeViewPanel::handle_mouse(EditorState& state, glm::vec2 origin, bool hove
     rename_text_ = hit.node >= 0 ? graph_.nodes[static_cast<std::size_t>(hit.node)].name : "";
     ImGui::OpenPopup("##node menu");
   }
-  if (hovered && !wire_.active && node_drag_.node < 0) draw_hover(state, hit);
+  if (hovered && !wire_.active && node_drag_.node < 0) draw_hover(hit);
   if (hovered && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Delete)) &&
       !state.selected_pass().empty()) {
     const std::string pass = state.selected_pass();
@@ -443,8 +445,8 @@ void NodeViewPanel::finish_wire(EditorState& state, const NodeHit& hit) {
   refusal_ = r.ok ? "" : r.message;
 }
 
-void NodeViewPanel::draw_hover(EditorState& state, const NodeHit& hit) const {
-  const auto times = time_table(state);
+void NodeViewPanel::draw_hover(const NodeHit& hit) const {
+  const auto& times = plan_times_;  // this frame's, from refresh()
   switch (hit.kind) {
     case NodeHit::Kind::input_port:
     case NodeHit::Kind::output_port: {

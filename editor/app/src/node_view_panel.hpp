@@ -51,7 +51,7 @@ class NodeViewPanel {
   void draw_edges(glm::vec2 origin) const;
   void draw_nodes(EditorState& state, glm::vec2 origin) const;
   void draw_wire(EditorState& state, glm::vec2 origin, glm::vec2 mouse);
-  void draw_hover(EditorState& state, const editor::NodeHit& hit) const;
+  void draw_hover(const editor::NodeHit& hit) const;
   void draw_context_menu(EditorState& state);
   void store_positions(EditorState& state);
   void draw_plan(EditorState& state);
