@@ -284,7 +284,7 @@ std::vector<std::string> apply_overrides(fg::GraphDesc& graph,
 }
 
 void fit_shadow_resources(fg::GraphDesc& graph, int lights, unsigned face) {
-  constexpr int kMaxLayers = 2046;  // 341 lights x 6 faces; Vulkan guarantees 2048 layers
+  constexpr int kMaxLayers = 2046;  // Vulkan guarantees 2048 layers
   const int layers = std::clamp(6 * lights, 6, kMaxLayers);
   // A map derived from the atlas (shadow-min-filter's, shadow-moments', penumbra-wedges')
   // keeps its factor of the face size.
@@ -308,8 +308,12 @@ void fit_shadow_resources(fg::GraphDesc& graph, int lights, unsigned face) {
       r.size.height = size;
     }
     if (r.kind == fg::ResourceKind::buffer && r.name == "shadowData") {
-      // shadow_data.hpp: header + 1024 lights + one face record per layer.
-      const std::uint64_t bytes = 16 + 64 * 1024 + 80 * static_cast<std::uint64_t>(layers);
+      // shadow_data.hpp: header + 1024 lights + a face record for every light's six faces
+      // (at least one per layer): faces smaller than a layer share layers, so every light
+      // casts its shadow however few layers there are (docs/technique.md, "Packed faces").
+      const std::uint64_t records =
+          std::max(6 * static_cast<std::uint64_t>(lights), static_cast<std::uint64_t>(layers));
+      const std::uint64_t bytes = 16 + 64 * 1024 + 80 * records;
       r.buffer_size = (bytes + 255) / 256 * 256;
     }
   }

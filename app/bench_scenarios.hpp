@@ -101,7 +101,8 @@ std::vector<std::string> apply_overrides(fg::GraphDesc& graph,
 // Sizes the shadow atlas (and its colour twin, min-filtered and moment maps, and shadowData)
 // of a graph for `lights` shadow-casting lights: 6 layers per light up to the
 // device-independent limit of 2046 layers, faces of `face` texels (a derived map keeps
-// its factor of the graph's atlas size).
+// its factor of the graph's atlas size), and a face record for every light's faces (past
+// 341 lights their faces share layers at smaller sizes: every light casts its shadow).
 void fit_shadow_resources(fg::GraphDesc& graph, int lights, unsigned face);
 
 // The atlas format the scenario's rasterizer writes fastest: r32f for "compute" (its

@@ -5,31 +5,36 @@
 //
 // Conventions (mirrored by passes/common/shadow_faces.cpp, tested there):
 //  - face k of a point light (0..5 = +X -X +Y -Y +Z -Z, the Vulkan cube-map orientation)
-//    lives at atlas layer ShadowLight.params.z + k; params.z < 0: the light has no faces;
+//    is face record ShadowLight.params.z + k; params.z < 0: the light has no faces;
 //    a spot light has its one face at params.z, a directional light its cascades at
-//    params.z + 0..n-1 (light_faces.hpp), nearest first;
+//    params.z + 0..n-1 (light_faces.hpp), nearest first. A record's texels lie at its
+//    place (ShadowFace.info.y: an atlas layer and a square in it), which
+//    shadow_coord reads: ShadowCoord.layer is the atlas layer, `index` the record;
 //  - directional maps are orthographic: clip.w = 1, depth linear from the box's near
 //    plane (0) to its far plane (1, position_range.w metres away); `linear` is then the
 //    distance below the near plane in metres;
 //  - ShadowFace.view_proj maps world -> face clip: clip.w = distance along the face's
 //    axis, depth = clip.z / clip.w (0 at near = params.y, 1 at far = position_range.w),
 //    uv = clip.xy / clip.w * 0.5 + 0.5 (v grows with texel rows);
-//  - ShadowFace.info.z = 1 when the layer holds this frame's depth for that face;
-//  - a light's faces have ShadowLight.projection.y texels per side and fill the square
-//    [0, projection.z) of their layers' uv (per-light resolution): ShadowCoord.uv is the
-//    face's own uv (0..1), and shadow_atlas_uv() turns it into the atlas's.
+//  - ShadowFace.info.z = 1 when its place holds this frame's depth for that face;
+//  - a light's faces have ShadowLight.projection.y texels per side and fill a square
+//    projection.z wide in their layers' uv, at ShadowCoord.origin (per-light resolution,
+//    packed faces): ShadowCoord.uv is the face's own uv (0..1), and shadow_atlas_uv()
+//    turns it into the atlas's.
 
 //
 // Primitive API (no buffer access):
 //   uint  shadow_cube_face(vec3 light_to_point)
-//   int   shadow_face_layer(ShadowLight l, vec3 world_pos)          -1: no shadow faces
+//   int   shadow_face_layer(ShadowLight l, vec3 world_pos)          face record, -1: none
+//   uint  shadow_face_of(uvec4 info), int shadow_face_atlas_layer(uvec4 info),
+//   vec2  shadow_face_origin(uvec4 info, float share)               a record's place
 //   float shadow_linearise(float depth, float near, float far)      metres along the axis
 //   float shadow_linearise_light(ShadowLight l, float depth)         same, any light type
 //   bool  shadow_is_ortho(ShadowLight l)                             directional light
 //   float shadow_depth_fraction(ShadowLight l, float depth)          0..1 of the range
 //   vec3  shadow_offset_position(ShadowLight l, vec3 world_pos, vec3 normal, float face_size)
 //   float shadow_face_texels(ShadowLight l, float atlas_size)       the light's face size
-//   ShadowCoord shadow_coord(mat4 face_view_proj, ShadowLight l, int layer, vec3 world_pos)
+//   ShadowCoord shadow_coord(ShadowFace face, ShadowLight l, int index, vec3 world_pos)
 //   vec2  shadow_atlas_uv(ShadowCoord c, vec2 face_uv)             clamped to the face
 //   float shadow_hard_coord(sampler2DArray atlas, ShadowCoord c)    1 lit, 0 shadowed
 //   int   shadow_cascade_count(ShadowLight l)                       1 unless directional
@@ -62,7 +67,8 @@
 
 struct ShadowCoord {
   vec2 uv;       // face uv (0..1)
-  float layer;   // atlas layer
+  float layer;   // atlas layer (the face's place, not its record's index)
+  vec2 origin;   // atlas uv of the face's square's corner
   float depth;   // receiver depth in face clip space (0..1)
   float linear;  // receiver distance along the face axis (metres)
   bool valid;    // false: no faces, or the point is nearer the light than its near plane
@@ -77,7 +83,24 @@ float shadow_face_texels(ShadowLight l, float atlas_size) {
 // Face uv -> atlas uv, clamped to the face's texel centres so that no filter tap reads
 // another face's texels (or the unused rest of the layer).
 vec2 shadow_atlas_uv(ShadowCoord c, vec2 face_uv) {
-  return clamp(face_uv, vec2(0.5 / c.texels), vec2(1.0 - 0.5 / c.texels)) * c.share;
+  return clamp(face_uv, vec2(0.5 / c.texels), vec2(1.0 - 0.5 / c.texels)) * c.share + c.origin;
+}
+
+// A face record's place (shadow_data.h, ShadowFace.info.y).
+uint shadow_face_of(uvec4 info) {
+  return info.y & ((1u << ANTUMBRA_FACE_INDEX_BITS) - 1u);
+}
+
+int shadow_face_atlas_layer(uvec4 info) {
+  return int((info.y >> ANTUMBRA_FACE_LAYER_SHIFT) & ((1u << ANTUMBRA_FACE_LAYER_BITS) - 1u));
+}
+
+// `share`: the face's width in uv of its layer (ShadowLight.projection.z, 1 for 0).
+vec2 shadow_face_origin(uvec4 info, float share) {
+  uint mask = (1u << ANTUMBRA_FACE_CELL_BITS) - 1u;
+  return vec2(uvec2(info.y >> ANTUMBRA_FACE_COLUMN_SHIFT, info.y >> ANTUMBRA_FACE_ROW_SHIFT) &
+              uvec2(mask)) *
+         share;
 }
 
 uint shadow_cube_face(vec3 d) {
@@ -117,8 +140,8 @@ ShadowLight shadow_face_light(ShadowLight l, mat4 face_view_proj) {
 }
 
 struct ShadowPick {
-  int layer;    // atlas layer, -1: none (no faces, or outside every cascade)
-  int next;     // the next cascade's layer to blend in, -1: none
+  int layer;    // face record, -1: none (no faces, or outside every cascade)
+  int next;     // the next cascade's record to blend in, -1: none
   float blend;  // its weight, 0..1
 };
 
@@ -166,12 +189,15 @@ vec3 shadow_offset_position(ShadowLight l, vec3 world_pos, vec3 normal, float fa
 
 // Orthographic maps: points outside the box's xy square or above its near plane are
 // invalid (lit); below the far plane, depth > 1 reads as lit like a light's range.
-ShadowCoord shadow_coord(mat4 face_view_proj, ShadowLight l, int layer, vec3 world_pos) {
-  ShadowCoord c = ShadowCoord(vec2(0.0), float(max(layer, 0)), 1.0, 0.0, false,
-                              l.projection.y > 0.0 ? l.projection.y : 65536.0,
-                              l.projection.z > 0.0 ? l.projection.z : 1.0);
-  if (layer < 0) return c;
-  vec4 clip = face_view_proj * vec4(world_pos, 1.0);
+// `index`: the face record `face` was read from (< 0: none).
+ShadowCoord shadow_coord(ShadowFace face, ShadowLight l, int index, vec3 world_pos) {
+  float share = l.projection.z > 0.0 ? l.projection.z : 1.0;
+  ShadowCoord c = ShadowCoord(vec2(0.0), 0.0, vec2(0.0), 1.0, 0.0, false,
+                              l.projection.y > 0.0 ? l.projection.y : 65536.0, share);
+  if (index < 0) return c;
+  c.layer = float(shadow_face_atlas_layer(face.info));
+  c.origin = shadow_face_origin(face.info, share);
+  vec4 clip = face.view_proj * vec4(world_pos, 1.0);
   if (shadow_is_ortho(l)) {
     c.uv = clip.xy * 0.5 + 0.5;
     c.depth = clip.z;
@@ -239,8 +265,8 @@ float shadow_hard(sampler2DArray atlas, ShadowLight l, vec3 world_pos, vec3 norm
   if (pick.layer < 0) return 1.0;
   ShadowLookup q = shadow_offset_lookup(l, pick.layer, world_pos, normal,
                                         shadow_face_texels(l, float(textureSize(atlas, 0).x)));
-  return shadow_hard_coord(
-      atlas, shadow_coord(SHADOW_FACES[q.layer].view_proj, q.light, q.layer, q.position));
+  return shadow_hard_coord(atlas,
+                           shadow_coord(SHADOW_FACES[q.layer], q.light, q.layer, q.position));
 }
 #endif
 

@@ -17,19 +17,22 @@ float sat_scale(ivec2 size) {
 }
 
 #ifdef SAT_MAP
-// The sum of texels [0, corner) (corner in whole texels, clamped to [0, last + 1]).
-uvec2 sat_corner(ivec2 corner, ivec2 last, int layer) {
+// The sum of a face's texels [0, corner) (corner in whole texels, clamped to [0, last + 1]);
+// the face's table starts at the layer's texel `first` and sums from there (one table per
+// face: packed faces share layers, shadow-moments' moments_sat.comp).
+uvec2 sat_corner(ivec2 corner, ivec2 first, ivec2 last, int layer) {
   ivec2 c = min(corner, last + 1);
   if (c.x <= 0 || c.y <= 0) return uvec2(0u);
-  return texelFetch(SAT_MAP, ivec3(c - 1, layer), 0).xy;
+  return texelFetch(SAT_MAP, ivec3(first + c - 1, layer), 0).xy;
 }
 
-// Mean moments over the box [lo, hi) in texels of a face whose texels are [0, last], in a
-// table of `scale` (sat_scale of the whole layer's size):
+// Mean moments over the box [lo, hi) in texels of a face whose texels are [0, last] (the
+// layer's [first, first + last]), in a table of `scale`
+// (sat_scale of the whole layer's size):
 // the box is clipped to the face, its fractional edges weighted exactly (the integral
 // of the texels is bilinear in the box's corners; the four integer boxes around each
 // fractional edge pair are summed in uint first, so wrapping cancels).
-vec2 sat_box_mean(vec2 lo, vec2 hi, ivec2 last, int layer, float scale) {
+vec2 sat_box_mean(vec2 lo, vec2 hi, ivec2 first, ivec2 last, int layer, float scale) {
   vec2 extent = vec2(last + 1);
   lo = clamp(lo, vec2(0.0), extent - 1.0);
   hi = clamp(hi, lo + 1.0, extent);
@@ -41,7 +44,7 @@ vec2 sat_box_mean(vec2 lo, vec2 hi, ivec2 last, int layer, float scale) {
   ivec4 xs = ivec4(a.x, a.x + 1, b.x, b.x + 1);
   ivec4 ys = ivec4(a.y, a.y + 1, b.y, b.y + 1);
   for (int j = 0; j < 4; ++j) {
-    for (int i = 0; i < 4; ++i) c[j][i] = sat_corner(ivec2(xs[i], ys[j]), last, layer);
+    for (int i = 0; i < 4; ++i) c[j][i] = sat_corner(ivec2(xs[i], ys[j]), first, last, layer);
   }
   vec2 wx[2] = vec2[2](vec2(1.0 - fa.x, fa.x), vec2(1.0 - fb.x, fb.x));
   vec2 wy[2] = vec2[2](vec2(1.0 - fa.y, fa.y), vec2(1.0 - fb.y, fb.y));

@@ -1,9 +1,11 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// Debug view "atlas-view": shadow faces of the atlas (one per array layer) tiled into a
-// grid of square cells, nearest sampled. With shadowData bound, depth is linearised with
-// the owning light's near plane and range (bright = near the light, black = cleared /
-// nothing within range); without it, raw depth is shown as 1 - depth.
+// Debug view "atlas-view": shadow faces of the atlas tiled into a grid of square cells,
+// nearest sampled. With shadowData bound, each cell is a face record's square (where
+// ShadowFace.info.y places it; faces smaller than a layer share layers), its depth
+// linearised with the owning light's near plane and range (bright = near the light,
+// black = cleared / nothing within range); without it, each cell is a whole layer and raw
+// depth is shown as 1 - depth.
 
 #include "../interface/shared/workgroups.h"
 layout(local_size_x = ANTUMBRA_IMAGE_GROUP, local_size_y = ANTUMBRA_IMAGE_GROUP) in;
@@ -34,12 +36,20 @@ void main() {
   vec3 colour = vec3(0.08, 0.0, 0.12);  // outside the grid, or past the atlas
   if (grid.x < columns && index < face_count && face < layers) {
     vec2 uv = (vec2(local) + 0.5) / float(cell);
+    int layer = int(face);
+#ifdef HAS_SHADOW_DATA
+    ShadowLight light = shadow_lights[min(faces[face].info.x, ANTUMBRA_MAX_SHADOW_LIGHTS - 1u)];
+    if (faces[face].info.x < ANTUMBRA_MAX_SHADOW_LIGHTS) {
+      float share = light.projection.z > 0.0 ? light.projection.z : 1.0;
+      uv = uv * share + shadow_face_origin(faces[face].info, share);
+      layer = shadow_face_atlas_layer(faces[face].info);
+    }
+#endif
     ivec2 texel = ivec2(uv * vec2(textureSize(atlas, 0).xy));
-    float depth = texelFetch(atlas, ivec3(texel, int(face)), 0).r;
+    float depth = texelFetch(atlas, ivec3(texel, layer), 0).r;
     float value = 1.0 - depth;
 #ifdef HAS_SHADOW_DATA
     {
-      ShadowLight light = shadow_lights[min(faces[face].info.x, ANTUMBRA_MAX_SHADOW_LIGHTS - 1u)];
       float far = light.position_range.w;
       float near = light.params.y;
       // Directional maps store linear depth already (near plane 0).

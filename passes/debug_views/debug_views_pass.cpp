@@ -7,6 +7,7 @@
 #include "antumbra/gpu/pipelines.hpp"
 #include "common/frame_resources.hpp"
 #include "common/ports.hpp"
+#include "common/shadow_data.hpp"
 #include "debug_views_interface.h"
 
 namespace antumbra::passes {
@@ -115,7 +116,10 @@ void AtlasViewPass::execute(fgvk::ExecuteContext& context) {
   const auto& atlas = b.required_image(port::kAtlas);
   const auto& view = b.required_image(port::kView);
   const auto first = params_.first_face;
-  const std::uint32_t available = atlas.layers > first ? atlas.layers - first : 1u;
+  // With shadowData: face records (faces smaller than a layer share layers), else layers.
+  const std::uint32_t shown =
+      linearise_ ? face_records(b.buffer(port::kShadowData)->size, atlas.layers) : atlas.layers;
+  const std::uint32_t available = shown > first ? shown - first : 1u;
   const std::uint32_t faces = std::min(params_.faces, available);
   std::uint32_t columns = 1;
   std::uint32_t cell = 1;
@@ -130,7 +134,7 @@ void AtlasViewPass::execute(fgvk::ExecuteContext& context) {
     descriptors.storage_buffer(shared::kAtlasViewShadowData, b.buffer(port::kShadowData)->buffer);
   descriptors.storage_image(shared::kAtlasViewOut, view.view, view.layout)
       .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, compute_.layout);
-  const AtlasViewPush constants{first, faces, columns, cell, atlas.layers};
+  const AtlasViewPush constants{first, faces, columns, cell, shown};
   vkCmdPushConstants(cmd, compute_.layout, kCompute, 0, sizeof constants, &constants);
   dispatch_groups(cmd, view.extent, ANTUMBRA_IMAGE_GROUP);
 }

@@ -45,7 +45,7 @@ bool penumbra_blocker_depth(ShadowLight sl, ShadowCoord c, vec2 at, float light_
     for (int x = 0; x < taps; ++x) {
       vec2 offset = (vec2(x, y) - 0.5 * float(taps - 1)) * step_uv;
       vec2 tap = clamp(c.uv + offset, vec2(0.5 * texel), vec2(1.0 - 0.5 * texel));
-      float stored = textureLod(atlas, vec3(tap * c.share, c.layer), 0.0).r;
+      float stored = textureLod(atlas, vec3(tap * c.share + c.origin, c.layer), 0.0).r;
       if (stored < c.depth) {
         blocker_sum += shadow_linearise_light(sl, stored);
         ++blockers;
@@ -76,7 +76,7 @@ PenumbraSample estimate_penumbra(ShadowLight light, vec3 world, vec3 n_world, bo
                            world, n_world, face_size);
   ShadowLight sl = q.light;
   float light_size = sl.params.x * light_size_scale;
-  ShadowCoord c = shadow_coord(faces[q.layer].view_proj, sl, q.layer, q.position);
+  ShadowCoord c = shadow_coord(faces[q.layer], sl, q.layer, q.position);
   if (!c.valid || c.depth >= 1.0) return result;
   result.in_shadow = shadow_hard_coord(atlas, c) < 0.5;
   // ESM (docs/technique.md section 3): the occluder at the lookup against the receiver, in

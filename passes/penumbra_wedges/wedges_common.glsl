@@ -23,11 +23,21 @@ uint wedge_segment_capacity(ShadowLight l) {
   return l.direction_type.w < 0.5 ? 6u * capacity : capacity;
 }
 
+// Whether face record `record` lies where this pass draws its wedges: at the corner of
+// the layer of its own number. Faces packed into shared layers (shadow_data.h; per-light
+// resolution or a full atlas) are not drawn into yet: their lights' edges stay as the
+// lighting's hard test draws them (penumbra_map_shadow.glsl).
+bool wedge_face_in_own_layer(uint record, ShadowFace face) {
+  uint layer = (face.info.y >> ANTUMBRA_FACE_LAYER_SHIFT) & ((1u << ANTUMBRA_FACE_LAYER_BITS) - 1u);
+  return layer == record && (face.info.y >> ANTUMBRA_FACE_COLUMN_SHIFT) == 0u;
+}
+
 // The light drawn into `layer` when this frame holds its depth there, or -1.
 int wedge_face_light(uint layer) {
   if (layer >= layers) return -1;
   ShadowFace face = shadow_faces[layer];
   if (face.info.z == 0u || face.info.x >= ANTUMBRA_MAX_SHADOW_LIGHTS) return -1;
+  if (!wedge_face_in_own_layer(layer, face)) return -1;
   return wedge_light_supported(shadow_lights[face.info.x]) ? int(face.info.x) : -1;
 }
 

@@ -1,8 +1,10 @@
 #include "atlas_planner.hpp"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
+#include <set>
 
 #include "common/light_faces.hpp"
 #include "common/shadow_faces.hpp"
@@ -41,24 +43,30 @@ ShadowLight shadow_light(const scene::PointLight& light, float range, float near
 
 }  // namespace
 
+FaceSquare face_square(const AtlasFrame& frame, std::uint32_t slot) {
+  const ShadowFace& face = frame.faces.at(slot);
+  const FacePlace place = face_place(face);
+  const std::uint32_t light = face.info.x;
+  std::uint32_t size = frame.header.counts.z;
+  if (light < frame.lights.size() && frame.lights[light].projection.y > 0.0f) {
+    size = std::min(static_cast<std::uint32_t>(frame.lights[light].projection.y), size);
+  }
+  return {.layer = place.layer, .origin = place.cell * size, .size = size};
+}
+
 const AtlasFrame& AtlasPlanner::plan(const scene::Scene& scene, const glm::mat4& camera_view_proj,
                                      std::uint64_t geometry_version, std::uint32_t frame_index,
                                      const AtlasSettings& settings, const SceneMotion& motion) {
   begin_frame(scene, frame_index, settings);
   mark_dynamic(motion);
+  claim_lights(scene, settings);
+  place_claims(scene, settings);
   work_.clear();
-  std::uint32_t next_layer = 0;
-  for (std::uint32_t i = 0; i < frame_.header.counts.x; ++i) {
+  for (const Claim& claim : claims_) {
+    if (claim.given == 0) continue;
     LightWork work;
-    if (wish_light(scene, i, next_layer, camera_view_proj, geometry_version, settings, work)) {
-      work_.push_back(work);
-    }
-  }
-  // Layers no light owns this frame hold nothing useful any more.
-  for (std::uint32_t layer = next_layer; layer < settings.layers; ++layer) {
-    layers_[layer].valid = false;
-    layers_[layer].shown = false;
-    layers_[layer].owner.clear();
+    wish_light(scene, claim, camera_view_proj, geometry_version, settings, work);
+    work_.push_back(work);
   }
   apply_budget(settings);
   for (const LightWork& work : work_) {
@@ -68,14 +76,20 @@ const AtlasFrame& AtlasPlanner::plan(const scene::Scene& scene, const glm::mat4&
       keep_light(work);
     }
   }
+  const PackerStats packed = packer_.stats();
+  frame_.stats.layers_used = packed.layers_used;
+  frame_.stats.texels_held = packed.texels;
   return frame_;
 }
 
 void AtlasPlanner::begin_frame(const scene::Scene& scene, std::uint32_t frame_index,
                                const AtlasSettings& settings) {
-  const std::uint32_t layer_count = settings.layers;
-  if (layers_.size() != layer_count) {
-    layers_.assign(layer_count, LayerState{});
+  const std::uint32_t records = std::max(settings.records, settings.layers);
+  if (layers_.size() != records || packer_.records() != records ||
+      packer_.layer_size() != settings.face_size || packer_.shares() != settings.pack ||
+      !contents_known_) {
+    layers_.assign(records, LayerState{});
+    packer_.reset(settings.layers, settings.face_size, records, settings.pack);
     contents_known_ = false;
   }
   frame_ = AtlasFrame{};
@@ -83,11 +97,13 @@ void AtlasPlanner::begin_frame(const scene::Scene& scene, std::uint32_t frame_in
   contents_known_ = true;
   const auto light_count =
       static_cast<std::uint32_t>(std::min<std::size_t>(scene.lights.size(), kMaxShadowLights));
-  frame_.header.counts = {light_count, layer_count, settings.face_size, frame_index};
+  frame_.header.counts = {light_count, records, settings.face_size, frame_index};
   frame_.lights.assign(light_count, ShadowLight{});
-  frame_.faces.assign(layer_count, ShadowFace{});
-  frame_.epochs.assign(layer_count, 0u);
-  for (auto& face : frame_.faces) face.info = {0xFFFFFFFFu, 0u, 0u, 0u};  // unused layer
+  frame_.faces.assign(records, ShadowFace{});
+  frame_.epochs.assign(records, 0u);
+  for (std::uint32_t record = 0; record < records; ++record) {  // until a light owns it
+    frame_.faces[record].info = {0xFFFFFFFFu, encode_face_info(0u, place_of(record)), 0u, 0u};
+  }
 }
 
 // Layers whose contents a dynamic mesh entered or left are stale.
@@ -101,33 +117,173 @@ void AtlasPlanner::mark_dynamic(const SceneMotion& motion) {
   }
 }
 
-bool AtlasPlanner::wish_light(const scene::Scene& scene, std::uint32_t i, std::uint32_t& next_layer,
+void AtlasPlanner::claim_lights(const scene::Scene& scene, const AtlasSettings& settings) {
+  namespace lf = light_faces;
+  claims_.clear();
+  const auto records = static_cast<std::uint32_t>(layers_.size());
+  std::uint32_t next = 0;
+  for (std::uint32_t i = 0; i < frame_.header.counts.x; ++i) {
+    const scene::PointLight& light = scene.lights[i];
+    const bool directional = light.type == scene::LightType::directional;
+    const float range = directional ? 0.0f : light.range;
+    frame_.lights[i] = shadow_light(light, range, std::min(settings.near_plane, 0.5f * range));
+    if (!light.casts_shadows) continue;
+    std::uint32_t faces = light.type == scene::LightType::point ? shadow_faces::kFaceCount : 1u;
+    if (directional) {
+      // As many cascades as fit, at least one: a full atlas costs the far cascades first.
+      const std::uint32_t left = records > next ? records - next : 0u;
+      faces = std::clamp(std::min(settings.sun_cascades, left), 1u,
+                         static_cast<std::uint32_t>(lf::kMaxCascades));
+    }
+    if (next + faces > records) {
+      frame_.unshadowed.push_back(light.name);
+      continue;
+    }
+    claims_.push_back({.light = i,
+                       .first = next,
+                       .faces = faces,
+                       .wanted = light_resolution(light, next, settings)});
+    next += faces;
+  }
+  // Records no light owns this frame hold nothing useful any more.
+  for (std::uint32_t record = next; record < records; ++record) {
+    layers_[record].valid = false;
+    layers_[record].shown = false;
+    layers_[record].owner.clear();
+    packer_.release(record);
+  }
+}
+
+namespace {
+
+// The next face size below `size` that the packer takes (a power of two).
+std::uint32_t smaller_size(std::uint32_t size) {
+  return std::has_single_bit(size) ? size / 2 : std::bit_floor(size);
+}
+
+// A size's class in fit_sizes: its log2, one above for a layer size that is no power of
+// two (it is the largest size, so nothing else takes that class).
+int size_class(std::uint32_t size) {
+  return std::bit_width(size) + (std::has_single_bit(size) || size == 0 ? 0 : 1);
+}
+
+}  // namespace
+
+// Face sizes that fit the atlas together: each claim's wanted size while the squares of
+// every size class fill no more layers than there are; else the largest squares halve
+// first (the last claim of a size before earlier ones), so that a full atlas gives every
+// light smaller faces instead of some lights none. Claims left at 0 do not fit even at
+// the smallest size.
+std::vector<std::uint32_t> AtlasPlanner::fit_sizes(const AtlasSettings& settings,
+                                                   std::uint32_t smallest) const {
+  std::vector<std::uint32_t> sizes;
+  sizes.reserve(claims_.size());
+  // Per size class (its log2): the claims holding it and their faces.
+  constexpr int kClasses = 32;
+  std::array<std::set<std::size_t>, kClasses> members;
+  std::array<std::uint64_t, kClasses> faces{};
+  for (std::size_t i = 0; i < claims_.size(); ++i) {
+    sizes.push_back(claims_[i].wanted);
+    const int c = size_class(claims_[i].wanted);
+    members[c].insert(i);
+    faces[c] += claims_[i].faces;
+  }
+  const auto layers_needed = [&] {
+    std::uint64_t layers = 0;
+    for (int c = 0; c < kClasses; ++c) {
+      if (faces[c] == 0) continue;
+      const std::uint64_t per_layer = packer_.squares_per_layer(sizes[*members[c].begin()]);
+      layers += (faces[c] + per_layer - 1) / std::max<std::uint64_t>(per_layer, 1);
+    }
+    return layers;
+  };
+  while (layers_needed() > settings.layers) {
+    int c = kClasses - 1;
+    while (c > 0 && members[c].empty()) --c;
+    if (members[c].empty()) break;
+    const std::size_t i = *members[c].rbegin();
+    members[c].erase(i);
+    faces[c] -= claims_[i].faces;
+    if (sizes[i] <= smallest) {
+      // Every claim is at the smallest size: the last ones go without.
+      sizes[i] = 0;
+      continue;
+    }
+    sizes[i] = smaller_size(sizes[i]);
+    const int down = size_class(sizes[i]);
+    members[down].insert(i);
+    faces[down] += claims_[i].faces;
+  }
+  return sizes;
+}
+
+void AtlasPlanner::place_claims(const scene::Scene& scene, const AtlasSettings& settings) {
+  const std::uint32_t smallest =
+      std::max(FacePacker::smallest(settings.face_size), std::min(16u, settings.face_size));
+  const std::vector<std::uint32_t> sizes = fit_sizes(settings, smallest);
+  // Claims whose squares are not of their size give them up first, so that every claim
+  // placed below sees all the room there is.
+  std::vector<Claim*> pending;
+  std::vector<std::pair<FacePlace, std::uint32_t>> before(layers_.size());
+  for (std::size_t i = 0; i < claims_.size(); ++i) {
+    Claim& claim = claims_[i];
+    claim.given = sizes[i];
+    const scene::PointLight& light = scene.lights[claim.light];
+    bool keep = claim.given != 0 && layers_[claim.first].owner == light.name;
+    for (std::uint32_t f = 0; f < claim.faces; ++f) {
+      const std::uint32_t record = claim.first + f;
+      keep = keep && packer_.size_of(record) == claim.given;
+      before[record] = {place_of(record), packer_.size_of(record)};
+    }
+    if (keep) continue;
+    for (std::uint32_t f = 0; f < claim.faces; ++f) packer_.release(claim.first + f);
+    if (claim.given != 0) pending.push_back(&claim);
+  }
+  for (Claim* claim : pending) {
+    // Squares scattered by earlier frames may leave less room than the fit counted:
+    // smaller still, then.
+    const std::uint32_t fitted = claim->given;
+    claim->given = 0;
+    for (std::uint32_t size = fitted; size >= smallest && claim->given == 0;
+         size = smaller_size(size)) {
+      std::uint32_t placed = 0;
+      while (placed < claim->faces && packer_.place(claim->first + placed, size)) ++placed;
+      if (placed == claim->faces) {
+        claim->given = size;
+      } else {
+        for (std::uint32_t f = 0; f < placed; ++f) packer_.release(claim->first + f);
+      }
+    }
+    for (std::uint32_t f = 0; f < claim->faces; ++f) {
+      const std::uint32_t record = claim->first + f;
+      claim->moved =
+          claim->moved || before[record] != std::pair{place_of(record), packer_.size_of(record)};
+    }
+  }
+  for (const Claim& claim : claims_) {
+    const std::string& name = scene.lights[claim.light].name;
+    if (claim.given == 0) {
+      frame_.unshadowed.push_back(name);
+    } else if (claim.given < claim.wanted) {
+      frame_.degraded.push_back({.name = name, .wanted = claim.wanted, .given = claim.given});
+    }
+  }
+}
+
+void AtlasPlanner::wish_light(const scene::Scene& scene, const Claim& claim,
                               const glm::mat4& camera_view_proj, std::uint64_t geometry_version,
                               const AtlasSettings& settings, LightWork& work) {
   namespace sf = shadow_faces;
   namespace lf = light_faces;
+  const std::uint32_t i = claim.light;
   const scene::PointLight& light = scene.lights[i];
   ShadowLight& out = frame_.lights[i];
-  const bool directional = light.type == scene::LightType::directional;
-  const float range = directional ? 0.0f : light.range;
-  const float near = std::min(settings.near_plane, 0.5f * range);
-  out = shadow_light(light, range, near);
-  if (!light.casts_shadows) return false;
-  std::uint32_t face_count = light.type == scene::LightType::point ? sf::kFaceCount : 1u;
-  if (directional) {
-    // As many cascades as fit, at least one: a full atlas costs the far cascades first.
-    const std::uint32_t left = settings.layers > next_layer ? settings.layers - next_layer : 0u;
-    face_count = std::clamp(std::min(settings.sun_cascades, left), 1u,
-                            static_cast<std::uint32_t>(lf::kMaxCascades));
-  }
-  if (next_layer + face_count > settings.layers) {
-    frame_.unshadowed.push_back(light.name);
-    return false;
-  }
-  work = {.light = i, .first = next_layer, .faces = face_count};
-  next_layer += face_count;
+  const std::uint32_t face_count = claim.faces;
+  const float near = out.params.y;
+  const float range = out.position_range.w;
+  work = {.light = i, .first = claim.first, .faces = face_count};
   out.params.z = static_cast<float>(work.first);
-  work.resolution = light_resolution(light, work.first, settings);
+  work.resolution = claim.given;
   out.projection.y = static_cast<float>(work.resolution);
   out.projection.z = static_cast<float>(work.resolution) / static_cast<float>(settings.face_size);
   const sf::Frustum camera = sf::camera_frustum(camera_view_proj);
@@ -152,8 +308,10 @@ bool AtlasPlanner::wish_light(const scene::Scene& scene, std::uint32_t i, std::u
     }
   }
   const LayerState& head = layers_[work.first];
+  const bool directional = light.type == scene::LightType::directional;
+  // Squares placed anew hold nothing of the light: it cannot wait for the budget.
   work.must = directional || !settings.cache || head.owner != light.name ||
-              head.waited >= settings.max_stale;
+              head.waited >= settings.max_stale || claim.moved;
   for (std::uint32_t face = 0; face < face_count; ++face) {
     const std::uint32_t layer = work.first + face;
     ShadowFace& out_face = frame_.faces[layer];
@@ -163,10 +321,9 @@ bool AtlasPlanner::wish_light(const scene::Scene& scene, std::uint32_t i, std::u
       out_face.view_proj =
           lf::spot_view_proj(light.position, light.direction, out.projection.x, near, range);
     }
-    out_face.info = {i, face, 0u, 0u};
+    out_face.info = {i, encode_face_info(face, place_of(layer)), 0u, 0u};
     const LayerState& state = layers_[layer];
-    const bool holds =
-        state.valid && state.key == FaceKey{out_face.view_proj, geometry_version, work.resolution};
+    const bool holds = state.valid && state.key == face_key(layer, geometry_version, work);
     if ((work.visible & (1u << face)) != 0u && (!holds || state.dynamic_dirty)) {
       work.needed |= 1u << face;
       // Nothing of this face can be shown while it waits.
@@ -175,7 +332,6 @@ bool AtlasPlanner::wish_light(const scene::Scene& scene, std::uint32_t i, std::u
   }
   work.priority =
       directional ? 0.0f : projected_radius(light.position, light.range, settings.resolution);
-  return true;
 }
 
 // Lights that must be drawn take the budget first, then the longest waiting and the
@@ -219,7 +375,8 @@ void AtlasPlanner::keep_light(const LightWork& work) {
     const LayerState& state = layers_[layer];
     ShadowFace& out_face = frame_.faces[layer];
     out_face.view_proj = state.key.view_proj;
-    out_face.info = {work.light, face, state.valid && state.shown ? 1u : 0u, 0u};
+    out_face.info = {work.light, encode_face_info(face, place_of(layer)),
+                     state.valid && state.shown ? 1u : 0u, 0u};
     frame_.epochs[layer] = state.epoch;
     ++frame_.stats.total;
     if ((work.visible & (1u << face)) != 0u) {
@@ -242,9 +399,8 @@ void AtlasPlanner::plan_light(const scene::Scene& scene, const LightWork& work,
       !(work.light < settings.uncached_lights.size() && settings.uncached_lights[work.light]);
   for (std::uint32_t face = 0; face < work.faces; ++face) {
     const std::uint32_t layer = work.first + face;
-    plan_layer(layer, (work.visible & (1u << face)) != 0u,
-               FaceKey{frame_.faces[layer].view_proj, geometry_version, work.resolution}, settings,
-               cacheable, motion);
+    plan_layer(layer, (work.visible & (1u << face)) != 0u, face_key(layer, geometry_version, work),
+               settings, cacheable, motion);
   }
 }
 

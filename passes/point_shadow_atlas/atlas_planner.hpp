@@ -18,6 +18,7 @@
 
 #include "antumbra/scene/scene.hpp"
 #include "common/shadow_data.hpp"
+#include "face_packer.hpp"
 #include "face_resolution.hpp"
 
 namespace antumbra::passes {
@@ -25,6 +26,12 @@ namespace antumbra::passes {
 struct AtlasSettings {
   std::uint32_t layers = 6;
   std::uint32_t face_size = 512;
+  // Face records the shadowData buffer holds (0: one per layer). Faces smaller than a
+  // layer share layers (face_packer.hpp), so with per-light resolution, or when the atlas
+  // is full and faces are drawn smaller, more faces than layers fit.
+  std::uint32_t records = 0;
+  // Faces smaller than a layer share layers; off: one face per layer, at its origin.
+  bool pack = true;
   float near_plane = 0.05f;
   bool cull_faces = true;
   bool cache = true;
@@ -67,17 +74,26 @@ struct SceneMotion {
 enum class FaceUpdate : std::uint8_t { all, over_cache, fill_cache };
 
 struct AtlasStats {
-  std::uint32_t total = 0;       // faces of shadowed lights (6 point, 1 spot, 1-4 sun)
-  std::uint32_t culled = 0;      // not needed for the visible image
-  std::uint32_t rendered = 0;    // drawn this frame
-  std::uint32_t cached = 0;      // needed and still valid from an earlier frame
-  std::uint32_t candidates = 0;  // gpu_decides: visible faces handed to the GPU's decision
-  std::uint64_t texels = 0;      // of the faces drawn (each light's face size squared)
-  std::uint32_t dynamic = 0;     // drawn because dynamic meshes moved through them
-  std::uint32_t over_cache = 0;  // drawn over their static cache (fill_cache included)
-  std::uint32_t deferred = 0;    // needed but left for a later frame (budget)
-  std::uint32_t forced = 0;      // drawn past the budget (never drawn, or too stale)
-  std::uint32_t stalest = 0;     // frames the oldest shadow shown is behind its light
+  std::uint32_t total = 0;        // faces of shadowed lights (6 point, 1 spot, 1-4 sun)
+  std::uint32_t culled = 0;       // not needed for the visible image
+  std::uint32_t rendered = 0;     // drawn this frame
+  std::uint32_t cached = 0;       // needed and still valid from an earlier frame
+  std::uint32_t candidates = 0;   // gpu_decides: visible faces handed to the GPU's decision
+  std::uint64_t texels = 0;       // of the faces drawn (each light's face size squared)
+  std::uint32_t dynamic = 0;      // drawn because dynamic meshes moved through them
+  std::uint32_t over_cache = 0;   // drawn over their static cache (fill_cache included)
+  std::uint32_t deferred = 0;     // needed but left for a later frame (budget)
+  std::uint32_t forced = 0;       // drawn past the budget (never drawn, or too stale)
+  std::uint32_t stalest = 0;      // frames the oldest shadow shown is behind its light
+  std::uint32_t layers_used = 0;  // atlas layers holding a face
+  std::uint64_t texels_held = 0;  // texels of every shadowed light's faces
+};
+
+// A light whose faces are smaller than it wants: the atlas had no room at its size.
+struct DegradedLight {
+  std::string name;
+  std::uint32_t wanted = 0;  // texels per face side
+  std::uint32_t given = 0;
 };
 
 // What one layer's contents were rendered for; a face is re-rendered when this changes.
@@ -85,7 +101,8 @@ struct AtlasStats {
 struct FaceKey {
   glm::mat4 view_proj{0.0f};
   std::uint64_t geometry_version = 0;
-  std::uint32_t resolution = 0;  // texels per side, drawn at the layer's origin
+  std::uint32_t resolution = 0;  // texels per side, drawn at `place`
+  FacePlace place;
   bool operator==(const FaceKey&) const = default;
 };
 
@@ -99,9 +116,20 @@ struct AtlasFrame {
   // changes, it is drawn (CPU decision) or cached contents are not allowed; 0: none.
   std::vector<std::uint32_t> epochs;
   std::vector<std::string> unshadowed;  // casters left without a slot (atlas full)
+  std::vector<DegradedLight> degraded;  // casters drawn smaller than wanted (atlas full)
   bool clear_all = false;  // the whole atlas has undefined contents (first frame, reload)
   AtlasStats stats;
 };
+
+// Where face record `slot`'s texels are (ShadowFace.info.y): its layer, and its square's
+// corner and width in texels (its light's face size; the whole layer for a record no
+// light owns).
+struct FaceSquare {
+  std::uint32_t layer = 0;
+  glm::uvec2 origin{0u};
+  std::uint32_t size = 0;
+};
+FaceSquare face_square(const AtlasFrame& frame, std::uint32_t slot);
 
 class AtlasPlanner {
  public:
@@ -132,6 +160,15 @@ class AtlasPlanner {
     std::string owner;
     std::uint32_t waited = 0;
   };
+  // A shadowed light's records and face size (before the squares are placed).
+  struct Claim {
+    std::uint32_t light = 0;
+    std::uint32_t first = 0;
+    std::uint32_t faces = 0;
+    std::uint32_t wanted = 0;  // face size it asks for
+    std::uint32_t given = 0;   // what the atlas had room for (0: none)
+    bool moved = false;        // its squares changed this frame: what they held is gone
+  };
   // This frame's wish for one shadowed light, before the budget decides.
   struct LightWork {
     std::uint32_t light = 0;
@@ -146,10 +183,17 @@ class AtlasPlanner {
   };
   void begin_frame(const scene::Scene& scene, std::uint32_t frame_index,
                    const AtlasSettings& settings);
-  // Fills frame_.lights/faces with this frame's wish for light `i`; false: no layers.
-  bool wish_light(const scene::Scene& scene, std::uint32_t i, std::uint32_t& next_layer,
-                  const glm::mat4& camera_view_proj, std::uint64_t geometry_version,
-                  const AtlasSettings& settings, LightWork& work);
+  // Gives every shadowed light its records and wanted face size (claims_); lights past
+  // the records are unshadowed.
+  void claim_lights(const scene::Scene& scene, const AtlasSettings& settings);
+  // Squares for every claim: kept while the size holds, else placed anew, smaller when
+  // there is no room (frame_.degraded), none when not even the smallest fits.
+  void place_claims(const scene::Scene& scene, const AtlasSettings& settings);
+  [[nodiscard]] std::vector<std::uint32_t> fit_sizes(const AtlasSettings& settings,
+                                                     std::uint32_t smallest) const;
+  // Fills frame_.lights/faces with this frame's wish for a placed claim.
+  void wish_light(const scene::Scene& scene, const Claim& claim, const glm::mat4& camera_view_proj,
+                  std::uint64_t geometry_version, const AtlasSettings& settings, LightWork& work);
   void mark_dynamic(const SceneMotion& motion);
   void apply_budget(const AtlasSettings& settings);
   // Publishes a waiting light as it was last drawn.
@@ -164,10 +208,20 @@ class AtlasPlanner {
                   const AtlasSettings& settings, bool cacheable, const SceneMotion& motion);
   // The GPU decides (settings.gpu_decides): visible faces are candidates.
   void plan_candidate(std::uint32_t layer, bool visible, const FaceKey& key, bool cache);
+  // Where face record `slot`'s texels are (unplaced: layer 0, never read).
+  [[nodiscard]] FacePlace place_of(std::uint32_t slot) const {
+    return packer_.place_of(slot).value_or(FacePlace{});
+  }
+  [[nodiscard]] FaceKey face_key(std::uint32_t record, std::uint64_t geometry_version,
+                                 const LightWork& work) const {
+    return {frame_.faces[record].view_proj, geometry_version, work.resolution, place_of(record)};
+  }
   [[nodiscard]] FaceUpdate choose_update(std::uint32_t layer, const FaceKey& key, bool cacheable,
                                          const SceneMotion& motion);
-  std::vector<LayerState> layers_;
+  std::vector<LayerState> layers_;  // per face record
+  std::vector<Claim> claims_;
   std::vector<LightWork> work_;
+  FacePacker packer_;
   std::uint32_t next_epoch_ = 1;
   bool contents_known_ = false;
   AtlasFrame frame_;

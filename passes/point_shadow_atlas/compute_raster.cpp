@@ -259,8 +259,11 @@ void ComputeRasterizer::write_records(fgvk::ExecuteContext& context, const Atlas
     // A depth atlas is filled by copies the CPU records: every candidate is drawn.
     std::vector<bool> drawn(frame.faces.size(), false);
     for (const std::uint32_t layer : layers) drawn[layer] = true;
-    for (std::uint32_t layer = 0; layer < frame.faces.size(); ++layer) {
-      if (!drawn[layer]) untouched_.push_back(layer);
+    for (std::uint32_t record = 0; record < frame.faces.size(); ++record) {
+      // A record no light owns has no square to fill.
+      if (!drawn[record] && frame.faces[record].info.x != 0xFFFFFFFFu) {
+        untouched_.push_back(record);
+      }
     }
   }
   if (faces_.size() < context.frame.frames_in_flight) faces_.resize(context.frame.frames_in_flight);
@@ -299,7 +302,7 @@ void ComputeRasterizer::write_records(fgvk::ExecuteContext& context, const Atlas
     r.params = glm::vec4(l.params.y, ortho ? 1.0f : 0.0f, static_cast<float>(face_size),
                          std::bit_cast<float>(static_cast<std::uint32_t>(face_texels)));
     const bool tint = settings.tint && light < tinted.size() && tinted[light];
-    r.info = {layers[i], offset, face_size, tint ? ++tint_slot : 0u};
+    r.info = {face.info.y, offset, face_size, tint ? ++tint_slot : 0u};
     scratch_offsets_[i] = offset;
     face_sizes_[i] = face_size;
     offset += face_size * face_size;
@@ -307,7 +310,9 @@ void ComputeRasterizer::write_records(fgvk::ExecuteContext& context, const Atlas
   for (std::size_t i = 0; i < untouched_.size(); ++i) {
     shared::RasterFace& r = out[layers.size() + i];
     r = {};
-    r.info = {untouched_[i], static_cast<std::uint32_t>(chunk_faces_ * face_texels), size, 0u};
+    r.info = {frame.faces[untouched_[i]].info.y,
+              static_cast<std::uint32_t>(chunk_faces_ * face_texels),
+              face_square(frame, untouched_[i]).size, 0u};
   }
 }
 
@@ -455,11 +460,13 @@ void ComputeRasterizer::copy_out(fgvk::ExecuteContext& context, const AtlasFrame
   regions.reserve(chunk.count);
   for (std::uint32_t i = 0; i < chunk.count; ++i) {
     VkBufferImageCopy region{};
-    // The face's own square at the layer's origin (per-light resolution).
+    // The face's own square at its place (per-light resolution, packed faces).
     const std::uint32_t side = face_sizes_[chunk.first + i];
+    const FaceSquare square = face_square(frame, frame.render_layers[chunk.first + i]);
     region.bufferOffset = VkDeviceSize{scratch_offsets_[chunk.first + i]} * 4;
-    region.imageSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, frame.render_layers[chunk.first + i],
-                               1};
+    region.imageSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, square.layer, 1};
+    region.imageOffset = {static_cast<std::int32_t>(square.origin.x),
+                          static_cast<std::int32_t>(square.origin.y), 0};
     region.imageExtent = {side, side, 1};
     regions.push_back(region);
   }
@@ -491,11 +498,14 @@ void ComputeRasterizer::fill_untouched(fgvk::ExecuteContext& context, const Atla
                       VK_ACCESS_2_TRANSFER_READ_BIT);
   std::vector<VkBufferImageCopy> regions;
   regions.reserve(untouched_.size());
-  for (const std::uint32_t layer : untouched_) {
+  for (const std::uint32_t slot : untouched_) {
+    const FaceSquare square = face_square(frame, slot);
     VkBufferImageCopy region{};
     region.bufferOffset = cleared;
-    region.imageSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, layer, 1};
-    region.imageExtent = {size, size, 1};
+    region.imageSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, square.layer, 1};
+    region.imageOffset = {static_cast<std::int32_t>(square.origin.x),
+                          static_cast<std::int32_t>(square.origin.y), 0};
+    region.imageExtent = {square.size, square.size, 1};
     regions.push_back(region);
   }
   vkCmdCopyBufferToImage(context.cmd, depth_, atlas.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,

@@ -51,8 +51,10 @@ struct RasterFace {
   vec4 params;     // x near distance, y 1 = orthographic (the sun), z face size (float),
                    // w texels between tint slots (uint bits: the atlas's face, whatever
                    // this face's own size)
-  uvec4 info;      // x atlas layer, y scratch offset (texels), z face size, w tint slot + 1
-                   // (0: untinted; tinted faces share the tint scratch in their chunk)
+  uvec4 info;      // x where its square is (ShadowFace.info.y: atlas layer, column and row
+                   // in units of the face size), y scratch offset (texels), z face size, w
+                   // tint slot + 1 (0: untinted; tinted faces share the tint scratch in
+                   // their chunk)
 };
 
 // Header of the counters buffer; the dispatch arguments follow at kRasterArgsOffset.

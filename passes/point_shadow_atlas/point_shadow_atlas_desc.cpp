@@ -16,6 +16,13 @@ void check(const fg::PlanPass& pass, const PointShadowAtlasParams& params, const
   const auto* atlas = bound_resource(pass, plan, port::kAtlas);
   const auto* data = bound_resource(pass, plan, port::kShadowData);
   if (atlas == nullptr) return;  // a required port: the compiler has reported it
+  if (atlas->layers > kMaxAtlasLayers) {
+    add_pass_error(graph, pass, codes::shadow_atlas::kTooManyLayers,
+                   "the atlas '" + atlas->name + "' has " + std::to_string(atlas->layers) +
+                       " layers; a face record names at most " + std::to_string(kMaxAtlasLayers) +
+                       " (passes/interface/shared/shadow_data.h)",
+                   "/out/atlas", diagnostics);
+  }
   const std::size_t needed = shadow_data_bytes(atlas->layers);
   if (data != nullptr && data->buffer_size < needed) {
     add_pass_error(graph, pass, codes::shadow_atlas::kShadowDataTooSmall,
@@ -136,8 +143,10 @@ fg::PassDesc PointShadowAtlasPass::describe() {
        .access = Access::transfer_dst,
        .stage = Stage::transfer,
        .description =
-           "Header, ShadowLight per scene light and ShadowFace per layer "
-           "(passes/interface/shared/shadow_data.h); at least shadow_data_bytes(layers)."},
+           "Header, ShadowLight per scene light and ShadowFace records "
+           "(passes/interface/shared/shadow_data.h); at least shadow_data_bytes(layers), one "
+           "record per layer. Faces smaller than a layer share layers, so more records "
+           "(up to 6 per light) let more lights cast shadows than the layers hold whole faces."},
   };
   const auto& table = param_table();
   desc.params = table.descs();

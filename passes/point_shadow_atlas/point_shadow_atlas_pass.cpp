@@ -29,6 +29,26 @@ namespace {
 // shadow_atlas.vert's FaceDraw: the same 80 bytes as a ShadowFace (info.x = layer).
 using FaceDraw = ShadowFace;
 
+// Appends a face's square to clear; whole layers in a row become one rect.
+void add_clear_rect(std::vector<VkClearRect>& rects, const FaceSquare& square) {
+  const VkClearRect rect{
+      {{static_cast<std::int32_t>(square.origin.x), static_cast<std::int32_t>(square.origin.y)},
+       {square.size, square.size}},
+      square.layer,
+      1};
+  if (!rects.empty()) {
+    VkClearRect& last = rects.back();
+    if (last.rect.offset.x == rect.rect.offset.x && last.rect.offset.y == rect.rect.offset.y &&
+        last.rect.extent.width == rect.rect.extent.width &&
+        last.rect.extent.height == rect.rect.extent.height &&
+        last.baseArrayLayer + last.layerCount == rect.baseArrayLayer) {
+      ++last.layerCount;
+      return;
+    }
+  }
+  rects.push_back(rect);
+}
+
 constexpr VkClearColorValue kWhite{{1.0f, 1.0f, 1.0f, 1.0f}};
 
 gpu::ImageView layer_view(gpu::Context& gpu, const fgvk::BoundImage& image, std::uint32_t layer,
@@ -132,6 +152,10 @@ void PointShadowAtlasPass::prepare(fgvk::PrepareContext& context) {
   // shadowData and colour sizes are compiler checks (point_shadow_atlas_desc.cpp).
   settings_.layers = atlas.layers;
   settings_.face_size = atlas.extent.width;
+  // As many face records as shadowData holds (at least one per layer: a compiler check),
+  // up to every light's six faces: packed faces may outnumber the layers.
+  const fgvk::BoundBuffer* data = context.bindings.buffer(port::kShadowData);
+  settings_.records = face_records(data != nullptr ? data->size : 0, atlas.layers);
   colour_map_ = colour != nullptr;
   colour_ = colour_map_ && params_.translucent_colour;
   if (params_.rasterizer == ShadowRasterizer::automatic) {
@@ -145,6 +169,9 @@ void PointShadowAtlasPass::prepare(fgvk::PrepareContext& context) {
   static_cache_enabled_ = layered_ && params_.static_cache && params_.cache;
   // Receiver culling needs the decision to pick which layers stay untouched, which only
   // the resolve shader (an r32f atlas) can follow; copies into a depth atlas cannot.
+  // Faces share layers where nothing drawn for one can land in another's square: the
+  // compute rasteriser writes squares only, the hardware one clips to them.
+  settings_.pack = compute || context.gpu.features().shader_clip_distance;
   settings_.gpu_decides = compute && params_.receiver_culling &&
                           context.bindings.image(port::kDepth) != nullptr &&
                           atlas.format == VK_FORMAT_R32_SFLOAT;
@@ -160,6 +187,8 @@ void PointShadowAtlasPass::prepare(fgvk::PrepareContext& context) {
                          settings_.sun_blend,
                          static_cast<float>(settings_.sun_cascades)};
   const std::uint32_t flags[] = {settings_.layers,
+                                 settings_.records,
+                                 settings_.pack,
                                  settings_.face_size,
                                  settings_.cull_faces,
                                  settings_.cache,
@@ -195,6 +224,10 @@ void PointShadowAtlasPass::prepare_hardware(fgvk::PrepareContext& context,
     colour_defines.push_back({"LAYERED", ""});
   }
   if (colour_) depth_defines.push_back({"SKIP_TRANSLUCENT", ""});
+  if (settings_.pack) {
+    depth_defines.push_back({"CLIP_TO_SQUARE", ""});
+    colour_defines.push_back({"CLIP_TO_SQUARE", ""});
+  }
   auto depth_vert = load_shader(context, "point_shadow_atlas/shadow_atlas.vert", shader_files_,
                                 depth_defines, &key);
   std::vector<gpu::ShaderDefine> cut_defines = depth_defines;
@@ -331,16 +364,7 @@ void PointShadowAtlasPass::execute(fgvk::ExecuteContext& context) {
   SlotBuffers& slot = slots_[context.frame.slot];
   upload(context, frame, slot);
 
-  if (!frame.unshadowed.empty()) {
-    context.report.add(
-        {context.pass.name, codes::shadow_atlas::kLightsUnshadowed, base::Severity::warning,
-         std::to_string(frame.unshadowed.size()) +
-             " shadow-casting light(s) do not fit the atlas (" + std::to_string(settings_.layers) +
-             " layers: 6 per point light, 1 per spot or sun) and cast no "
-             "shadows: " +
-             base::name_list(frame.unshadowed),
-         base::Json{{"lights", frame.unshadowed}, {"layers", settings_.layers}}});
-  }
+  report_fit(context, frame);
   if (params_.rasterizer == ShadowRasterizer::compute) compute_.count_clusters(context);
   // The GPU's counts come back with a delay: those of this slot's previous frame.
   context.report.add(
@@ -366,7 +390,7 @@ void PointShadowAtlasPass::execute(fgvk::ExecuteContext& context) {
 
 void PointShadowAtlasPass::upload(fgvk::ExecuteContext& context, const AtlasFrame& frame,
                                   SlotBuffers& slot) {
-  const std::size_t bytes = shadow_data_bytes(settings_.layers);
+  const std::size_t bytes = shadow_data_bytes(settings_.records);
   if (!slot.staging) {
     // Appended, not operator+(const char*, string&&): GCC 12 warns falsely (-Wrestrict).
     std::string suffix = ".";
@@ -375,7 +399,7 @@ void PointShadowAtlasPass::upload(fgvk::ExecuteContext& context, const AtlasFram
                                        gpu::MemoryUsage::upload,
                                        context.pass.name + ".shadowData.staging" + suffix);
     slot.draws = gpu::Buffer::create(
-        context.gpu, sizeof(FaceDraw) * std::max<std::uint32_t>(settings_.layers, 1),
+        context.gpu, sizeof(FaceDraw) * std::max<std::uint32_t>(settings_.records, 1),
         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, gpu::MemoryUsage::upload,
         context.pass.name + ".faceDraws" + suffix);
   }
@@ -417,10 +441,60 @@ void PointShadowAtlasPass::upload(fgvk::ExecuteContext& context, const AtlasFram
     // distance as a fraction of it (shadow_colour.frag).
     const std::uint32_t light = frame.faces[layer].info.x;
     const float far = light < frame.lights.size() ? frame.lights[light].position_range.w : 1.0f;
-    // info.w: the face's share of the layer (per-light resolution; shadow_atlas.vert).
+    // info.w: the face's share of the layer (per-light resolution; shadow_atlas.vert), x
+    // and y where its square is (the layer, and ShadowFace.info.y's place).
     const float share = light < frame.lights.size() ? frame.lights[light].projection.z : 1.0f;
-    draws[i].info = {layer, frame.faces[layer].info.y, std::bit_cast<std::uint32_t>(far),
-                     std::bit_cast<std::uint32_t>(share)};
+    draws[i].info = {face_place(frame.faces[layer]).layer, frame.faces[layer].info.y,
+                     std::bit_cast<std::uint32_t>(far), std::bit_cast<std::uint32_t>(share)};
+  }
+}
+
+// SHD002: lights without faces (no face records left, or no room even for the smallest
+// squares); SHD005: lights whose faces are drawn smaller than they want (the atlas is full).
+void PointShadowAtlasPass::report_fit(fgvk::ExecuteContext& context, const AtlasFrame& frame) {
+  // Appended, not operator+(string&&, ...): GCC 12 warns falsely (-Wrestrict).
+  std::string where = "; the shadowData buffer holds ";
+  where += std::to_string(settings_.records);
+  where += " face records (6 per point light, 1 per spot, 1-4 for the sun), the atlas ";
+  where += std::to_string(settings_.layers);
+  where += " layers of ";
+  where += std::to_string(settings_.face_size);
+  where += "^2 texels";
+  const base::Json sizes{{"records", settings_.records},
+                         {"layers", settings_.layers},
+                         {"layersUsed", frame.stats.layers_used},
+                         {"texelsHeld", frame.stats.texels_held}};
+  if (!frame.unshadowed.empty()) {
+    base::Json details = sizes;
+    details["lights"] = frame.unshadowed;
+    std::string message = std::to_string(frame.unshadowed.size());
+    message += " shadow-casting light(s) do not fit and cast no shadows: ";
+    message += base::name_list(frame.unshadowed);
+    message += where;
+    context.report.add({context.pass.name, codes::shadow_atlas::kLightsUnshadowed,
+                        base::Severity::warning, message, details});
+  }
+  if (!frame.degraded.empty()) {
+    base::Json lights = base::Json::array();
+    std::vector<std::string> names;
+    for (const DegradedLight& d : frame.degraded) {
+      lights.push_back({{"light", d.name}, {"wanted", d.wanted}, {"given", d.given}});
+      std::string name = d.name;
+      name += ' ';
+      name += std::to_string(d.given);
+      name += " of ";
+      name += std::to_string(d.wanted);
+      names.push_back(std::move(name));
+    }
+    base::Json details = sizes;
+    details["lights"] = lights;
+    std::string message = std::to_string(frame.degraded.size());
+    message += " light(s) have smaller faces than they want, the atlas being full (texels per ";
+    message += "side, given of wanted): ";
+    message += base::name_list(names);
+    message += where;
+    context.report.add({context.pass.name, codes::shadow_atlas::kFacesDegraded,
+                        base::Severity::note, message, details});
   }
 }
 
@@ -596,23 +670,18 @@ void PointShadowAtlasPass::draw_layered(fgvk::ExecuteContext& context, const Atl
   draw_over_cache(context, frame, draws);
   gpu::cmd_begin_rendering(cmd, &rendering);
   set_viewport(cmd, atlas.extent);
-  // One rect per run of consecutive layers.
+  // Each face's square (runs of whole consecutive layers as one rect).
   const auto runs = [&](auto&& wanted) {
     std::vector<VkClearRect> rects;
-    for (std::uint32_t layer : frame.render_layers) {
-      if (!wanted(layer)) continue;
-      if (!rects.empty() && rects.back().baseArrayLayer + rects.back().layerCount == layer) {
-        ++rects.back().layerCount;
-      } else {
-        rects.push_back({{{0, 0}, atlas.extent}, layer, 1});
-      }
+    for (std::uint32_t slot : frame.render_layers) {
+      if (wanted(slot)) add_clear_rect(rects, face_square(frame, slot));
     }
     return rects;
   };
   const std::uint32_t drawn_all = update_counts_[static_cast<std::size_t>(FaceUpdate::all)];
   if (!frame.clear_all) {
     // Faces restored from the static cache are overwritten whole: no clear.
-    std::vector<bool> restored(settings_.layers, false);
+    std::vector<bool> restored(frame.faces.size(), false);
     for (std::size_t i = drawn_all; i < draw_order_.size(); ++i) {
       restored[frame.render_layers[draw_order_[i]]] = true;
     }
@@ -647,12 +716,12 @@ void PointShadowAtlasPass::draw_over_cache(fgvk::ExecuteContext& context, const 
   const std::uint32_t fills = update_counts_[static_cast<std::size_t>(FaceUpdate::fill_cache)];
   if (draw_order_.size() == drawn_all) return;
   if (fills > 0) {
-    std::vector<std::uint32_t> layers;
-    layers.reserve(fills);
+    std::vector<VkClearRect> rects;
+    rects.reserve(fills);
     for (std::uint32_t i = drawn_all; i < drawn_all + fills; ++i) {
-      layers.push_back(frame.render_layers[draw_order_[i]]);
+      add_clear_rect(rects, face_square(frame, frame.render_layers[draw_order_[i]]));
     }
-    static_cache_.fill(context, draws, drawn_all, fills, layers, layout_);
+    static_cache_.fill(context, draws, drawn_all, fills, rects, layout_);
   }
   static_cache_.make_readable(context.cmd);
 }
@@ -664,15 +733,12 @@ void PointShadowAtlasPass::draw_per_face(fgvk::ExecuteContext& context, const At
   depth_clear.depthStencil = {1.0f, 0};
   VkClearValue colour_clear{};
   colour_clear.color = kWhite;
-  // Every layer drawn is dirty, so each rendering clears its one layer.
-  std::vector<std::int64_t> entry(settings_.layers, -1);
-  for (std::size_t i = 0; i < draw_order_.size(); ++i) {
-    entry[frame.render_layers[draw_order_[i]]] = static_cast<std::int64_t>(i);
-  }
-  for (std::uint32_t layer = 0; layer < settings_.layers; ++layer) {
-    if (entry[layer] < 0 && !frame.clear_all) continue;
-    const VkRenderingAttachmentInfo depth_attachment = attachment(
-        depth_layer_views_[layer], VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, true, depth_clear);
+  // One rendering of a layer: cleared whole (`clear_all`, contents unknown) or the face
+  // `entry`'s square cleared (depth; the colour where its light tints) and drawn.
+  const auto render = [&](std::uint32_t layer, bool tinted, std::optional<std::uint32_t> entry) {
+    const VkRenderingAttachmentInfo depth_attachment =
+        attachment(depth_layer_views_[layer], VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
+                   !entry.has_value(), depth_clear);
     VkRenderingAttachmentInfo colour_attachment{};
     VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
     rendering.renderArea = {{0, 0}, atlas.extent};
@@ -681,16 +747,32 @@ void PointShadowAtlasPass::draw_per_face(fgvk::ExecuteContext& context, const At
     if (colour_map_) {
       colour_attachment =
           attachment(colour_layer_views_[layer], VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                     layer < frame.faces.size() && layer_tinted(frame, layer), colour_clear);
+                     !entry.has_value() && tinted, colour_clear);
       rendering.colorAttachmentCount = 1;
       rendering.pColorAttachments = &colour_attachment;
     }
     gpu::cmd_begin_rendering(context.cmd, &rendering);
     set_viewport(context.cmd, atlas.extent);
-    if (entry[layer] >= 0) {
-      draw_scene(context, draws, static_cast<std::uint32_t>(entry[layer]), 1, {true, true});
+    if (entry.has_value()) {
+      const std::uint32_t slot = frame.render_layers[draw_order_[*entry]];
+      std::vector<VkClearRect> rects;
+      add_clear_rect(rects, face_square(frame, slot));
+      rects[0].baseArrayLayer = 0;  // of the one-layer view
+      const VkClearAttachment clears[2]{{VK_IMAGE_ASPECT_DEPTH_BIT, 0, depth_clear},
+                                        {VK_IMAGE_ASPECT_COLOR_BIT, 0, colour_clear}};
+      vkCmdClearAttachments(context.cmd, colour_map_ && tinted ? 2 : 1, clears, 1, rects.data());
+      draw_scene(context, draws, *entry, 1, {true, true});
     }
     gpu::cmd_end_rendering(context.cmd);
+  };
+  if (frame.clear_all) {
+    for (std::uint32_t layer = 0; layer < settings_.layers; ++layer) {
+      render(layer, layer < frame.faces.size() && layer_tinted(frame, layer), std::nullopt);
+    }
+  }
+  for (std::uint32_t i = 0; i < draw_order_.size(); ++i) {
+    const std::uint32_t slot = frame.render_layers[draw_order_[i]];
+    render(face_square(frame, slot).layer, layer_tinted(frame, slot), i);
   }
 }
 

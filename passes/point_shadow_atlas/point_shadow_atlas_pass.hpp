@@ -88,6 +88,7 @@ class PointShadowAtlasPass final : public fgvk::Pass {
   void upload(fgvk::ExecuteContext& context, const AtlasFrame& frame, SlotBuffers& slot);
   // SHD010: the planner's counts, and the GPU's decision of an earlier frame (compute).
   [[nodiscard]] base::Json face_sizes() const;
+  void report_fit(fgvk::ExecuteContext& context, const AtlasFrame& frame);
   [[nodiscard]] fgvk::PassMessage face_stats(const std::string& pass,
                                              const std::optional<FaceDecisionStats>& gpu) const;
   // Which shadowed lights have a translucent caster within range (their colour layers

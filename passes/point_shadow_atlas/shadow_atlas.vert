@@ -6,13 +6,15 @@
 #endif
 #include "../common/material.glsl"
 #include "point_shadow_atlas_interface.h"
+#include "face_square.glsl"
 
 // One instance per face to render: the whole atlas update is one instanced draw of the
 // merged world-space scene (LAYERED), or one draw per face with firstInstance = face
 // entry into a single-layer view when the device cannot write gl_Layer here.
 struct FaceDraw {
   mat4 view_proj;
-  uvec4 info;  // x atlas layer, w the face's share of the layer (float bits; 0: all)
+  uvec4 info;  // x atlas layer, y its place (face_square.glsl), z far (float bits), w its
+               // share of the layer (float bits; 0: all)
 };
 
 layout(set = 0, binding = kAtlasFaces) readonly buffer Faces {
@@ -45,6 +47,12 @@ layout(location = 1) out vec4 out_uv;
 // (s, t, forward) is left-handed), so that gl_FrontFacing is flipped back to mean "the
 // surface's front faces the light" as it does for the camera and spot faces.
 layout(location = 2) flat out uint out_mirrored;
+#endif
+
+#ifdef CLIP_TO_SQUARE
+// Faces share layers (face_square.glsl): what lies outside the face's own frustum is
+// clipped instead of landing in a neighbour's square.
+out float gl_ClipDistance[4];
 #endif
 
 void main() {
@@ -89,11 +97,15 @@ void main() {
     out_uv = in_uv;
   }
 #endif
-  // A face smaller than the layer fills the square [0, share) of its uv: the face's
-  // [-w, w] maps onto [-w, (2 share - 1) w]; what lands beyond it is never read.
-  float share = uintBitsToFloat(face.info.w);
-  if (share > 0.0 && share < 1.0) position.xy = (position.xy + position.w) * share - position.w;
-  gl_Position = keep ? position : vec4(0.0, 0.0, 2.0, 1.0);
+  // A face smaller than the layer fills its square there (face_square.glsl); what lands
+  // beyond it is never read.
+  gl_Position = keep ? to_face_square(position, face.info) : vec4(0.0, 0.0, 2.0, 1.0);
+#ifdef CLIP_TO_SQUARE
+  gl_ClipDistance[0] = position.w + position.x;
+  gl_ClipDistance[1] = position.w - position.x;
+  gl_ClipDistance[2] = position.w + position.y;
+  gl_ClipDistance[3] = position.w - position.y;
+#endif
 #ifdef LAYERED
   gl_Layer = int(face.info.x);
 #endif

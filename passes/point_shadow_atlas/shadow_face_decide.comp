@@ -74,8 +74,9 @@ void main() {
       atomicAdd(stats[wanted ? kStatCached : kStatReceivers], 1u);
     }
   }
-  if (!draw && fill_first != 0u) {
-    // Unknown contents (a new image): far depth, so nothing reads undefined texels.
+  if (!draw && fill_first != 0u && owned) {
+    // Unknown contents (a new image): far depth in the face's square, so no lookup reads
+    // undefined texels (a record no light owns has no square).
     uint slot = atomicAdd(args[chunks].z, 1u);
     list[chunks * chunk_faces + slot] = fill_first - 1u + i;
   }

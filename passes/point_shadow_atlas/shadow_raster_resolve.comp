@@ -1,6 +1,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #include "compute_raster_interface.h"
+#include "../interface/shared/shadow_data.h"
 
 // Writes finished faces from the scratch into the graph's images (x, y: texels; z: an
 // entry of the resolve list, which names the record; docs/technique.md, "Compute shadow
@@ -35,7 +36,13 @@ void main() {
   uint size = face.info.z;
   uvec2 p = gl_GlobalInvocationID.xy;
   if (p.x >= size || p.y >= size) return;
-  ivec3 texel = ivec3(ivec2(p), int(face.info.x));
+  // Its square at its place (shadow_data.h, ShadowFace.info.y).
+  uint place = face.info.x;
+  uint cell_mask = (1u << ANTUMBRA_FACE_CELL_BITS) - 1u;
+  uvec2 cell = uvec2(place >> ANTUMBRA_FACE_COLUMN_SHIFT, place >> ANTUMBRA_FACE_ROW_SHIFT) &
+               uvec2(cell_mask);
+  uint layer = (place >> ANTUMBRA_FACE_LAYER_SHIFT) & ((1u << ANTUMBRA_FACE_LAYER_BITS) - 1u);
+  ivec3 texel = ivec3(ivec2(cell * size + p), int(layer));
 #ifdef WRITE_DEPTH
   imageStore(atlas, texel, vec4(uintBitsToFloat(depth[face.info.y + p.y * size + p.x])));
 #endif

@@ -87,7 +87,7 @@ void StaticDepthCache::ensure_image(fgvk::ExecuteContext& context) {
 }
 
 void StaticDepthCache::fill(fgvk::ExecuteContext& context, VkBuffer draws, std::uint32_t first,
-                            std::uint32_t count, const std::vector<std::uint32_t>& layers,
+                            std::uint32_t count, const std::vector<VkClearRect>& squares,
                             VkPipelineLayout layout) {
   ensure_image(context);
   const VkCommandBuffer cmd = context.cmd;
@@ -114,13 +114,11 @@ void StaticDepthCache::fill(fgvk::ExecuteContext& context, VkBuffer draws, std::
   context.gpu.begin_label(cmd, context.pass.name + ".fillStaticCache");
   gpu::cmd_begin_rendering(cmd, &rendering);
   set_viewport(cmd, extent_);
-  std::vector<VkClearRect> rects;
-  rects.reserve(layers.size());
-  for (const std::uint32_t layer : layers) rects.push_back({{{0, 0}, extent_}, layer, 1});
   VkClearAttachment clear{aspect, 0, {}};
   clear.clearValue.depthStencil = {1.0f, 0};
-  if (!rects.empty()) {
-    vkCmdClearAttachments(cmd, 1, &clear, static_cast<std::uint32_t>(rects.size()), rects.data());
+  if (!squares.empty()) {
+    vkCmdClearAttachments(cmd, 1, &clear, static_cast<std::uint32_t>(squares.size()),
+                          squares.data());
   }
   if (context.frame.static_index_count > 0 && count > 0) {
     push_scene_draw_descriptors(context, draws, layout);
@@ -157,7 +155,7 @@ void StaticDepthCache::restore(fgvk::ExecuteContext& context, VkBuffer draws, st
       .combined_image_sampler(shared::kAtlasCache, image_.view(), sampler_,
                               VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL)
       .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, restore_layout_);
-  vkCmdDraw(cmd, 3, count, 0, first);
+  vkCmdDraw(cmd, 6, count, 0, first);  // a quad per face's square
 }
 
 void StaticDepthCache::adopt(StaticDepthCache& previous) {

@@ -36,10 +36,11 @@ class StaticDepthCache {
     cut_fill_pipeline_ = std::move(cut);
   }
 
-  // Outside any rendering: clears `layers` of the cache and draws the static meshes
-  // (indices [0, static_indices)) of draw entries [first, first + count) into them.
+  // Outside any rendering: clears `squares` of the cache (the faces' squares) and draws the
+  // static meshes (indices [0, static_indices)) of draw entries [first, first + count)
+  // into them.
   void fill(fgvk::ExecuteContext& context, VkBuffer draws, std::uint32_t first, std::uint32_t count,
-            const std::vector<std::uint32_t>& layers, VkPipelineLayout layout);
+            const std::vector<VkClearRect>& squares, VkPipelineLayout layout);
   // Outside any rendering, before restore(): the cache becomes readable.
   void make_readable(VkCommandBuffer cmd);
   // Inside the atlas's rendering: writes the cached depth of entries [first, first + count).

@@ -12,9 +12,10 @@ layout(local_size_x = GROUP, local_size_y = GROUP) in;
 layout(set = 0, binding = kMinInput) uniform sampler2DArray atlas;
 layout(set = 0, binding = kMinOutput, r32f) uniform writeonly image2DArray coarse;
 
-float nearest_under(ivec2 p, uint layer) {
+// `p`: a texel of the coarse map's layer `layer` (not of the face).
+float nearest_under(ivec2 p, int layer) {
   ivec2 base = p * int(factor);
-  if (factor == 1u) return texelFetch(atlas, ivec3(base, int(layer)), 0).r;
+  if (factor == 1u) return texelFetch(atlas, ivec3(base, layer), 0).r;
   // Faces smaller than the layer are powers of two of at least `factor` texels, so the
   // quads below never reach past the face.
   vec2 texel = 1.0 / vec2(textureSize(atlas, 0).xy);
@@ -31,16 +32,18 @@ float nearest_under(ivec2 p, uint layer) {
 }
 
 void main() {
-  uint layer = gl_WorkGroupID.z;
-  if (!derived_layer_needed(layer, force_all != 0u)) return;
-  ivec2 size = derived_face_extent(layer, imageSize(coarse).xy);
+  uint record = gl_WorkGroupID.z;
+  if (!derived_layer_needed(record, force_all != 0u)) return;
+  ivec2 size = derived_face_extent(record, imageSize(coarse).xy);
+  ivec2 corner = derived_face_origin(record, imageSize(coarse).xy);
+  int layer = derived_face_layer(record);
   if (any(greaterThanEqual(ivec2(gl_WorkGroupID.xy) * int(span), size))) return;
   ivec2 origin = ivec2(gl_WorkGroupID.xy) * int(span) + ivec2(gl_LocalInvocationID.xy);
   for (int y = 0; y < int(span); y += GROUP) {
     for (int x = 0; x < int(span); x += GROUP) {
       ivec2 p = origin + ivec2(x, y);
       if (all(lessThan(p, size))) {
-        imageStore(coarse, ivec3(p, int(layer)), vec4(nearest_under(p, layer)));
+        imageStore(coarse, ivec3(corner + p, layer), vec4(nearest_under(corner + p, layer)));
       }
     }
   }

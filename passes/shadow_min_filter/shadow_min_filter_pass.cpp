@@ -6,6 +6,7 @@
 #include "antumbra/gpu/context.hpp"
 #include "antumbra/gpu/pipelines.hpp"
 #include "common/ports.hpp"
+#include "common/shadow_data.hpp"
 #include "shadow_min_filter_interface.h"
 #include "shared/workgroups.h"
 
@@ -55,7 +56,9 @@ void ShadowMinFilterPass::execute(fgvk::ExecuteContext& context) {
       force_all ? 1u : 0u,
       groups.span,
   };
-  const std::uint32_t layers = std::min(atlas.layers, out.layers);
+  // One z per face record: a record's face is a square of its layer (derived_faces.glsl).
+  const std::uint32_t layers =
+      face_records(b.buffer(port::kShadowData)->size, std::min(atlas.layers, out.layers));
 
   dispatch_face_step(
       context, downsample_,

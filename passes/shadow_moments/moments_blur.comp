@@ -17,14 +17,15 @@ layout(set = 0, binding = kMomentsOutput, MOMENTS_FORMAT) uniform writeonly imag
 shared vec4 tile[TILE][TILE];
 shared vec4 rows[TILE][GROUP];
 
-void filter_block(ivec2 block, uint layer, ivec2 size, int r) {
+// `block`, `size`: in the face's texels; its texel 0 is the layer's `corner`.
+void filter_block(ivec2 block, int layer, ivec2 corner, ivec2 size, int r) {
   int span_r = GROUP + 2 * r;
   ivec2 origin = block - r;
   ivec2 local = ivec2(gl_LocalInvocationID.xy);
   for (int y = local.y; y < span_r; y += GROUP) {
     for (int x = local.x; x < span_r; x += GROUP) {
       ivec2 q = clamp(origin + ivec2(x, y), ivec2(0), size - 1);
-      tile[y][x] = texelFetch(raw, ivec3(q, int(layer)), 0);
+      tile[y][x] = texelFetch(raw, ivec3(corner + q, layer), 0);
     }
   }
   barrier();
@@ -38,21 +39,23 @@ void filter_block(ivec2 block, uint layer, ivec2 size, int r) {
   if (all(lessThan(p, size))) {
     vec4 s = vec4(0.0);
     for (int dy = 0; dy <= 2 * r; ++dy) s += rows[local.y + dy][local.x];
-    imageStore(map_out, ivec3(p, int(layer)), s / float((2 * r + 1) * (2 * r + 1)));
+    imageStore(map_out, ivec3(corner + p, layer), s / float((2 * r + 1) * (2 * r + 1)));
   }
   barrier();  // the next block overwrites the tile
 }
 
 void main() {
-  uint layer = gl_WorkGroupID.z;
-  if (!derived_layer_needed(layer, force_all != 0u)) return;  // uniform: before any barrier
-  ivec2 size = derived_face_extent(layer, textureSize(raw, 0).xy);
+  uint record = gl_WorkGroupID.z;
+  if (!derived_layer_needed(record, force_all != 0u)) return;  // uniform: before any barrier
+  ivec2 size = derived_face_extent(record, textureSize(raw, 0).xy);
+  ivec2 corner = derived_face_origin(record, textureSize(raw, 0).xy);
+  int layer = derived_face_layer(record);
   int r = min(int(radius), MAX_RADIUS);
   ivec2 region = ivec2(gl_WorkGroupID.xy) * int(span);
   if (any(greaterThanEqual(region, size))) return;  // past a small face: uniform
   for (int y = 0; y < int(span); y += GROUP) {
     for (int x = 0; x < int(span); x += GROUP) {
-      filter_block(region + ivec2(x, y), layer, size, r);
+      filter_block(region + ivec2(x, y), layer, corner, size, r);
     }
   }
 }

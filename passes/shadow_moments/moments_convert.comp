@@ -15,11 +15,13 @@ layout(set = 0, binding = kMomentsInput) uniform sampler2DArray atlas;
 layout(set = 0, binding = kMomentsOutput, rgba32f) uniform writeonly image2DArray raw;
 
 void main() {
-  uint layer = gl_WorkGroupID.z;
-  if (!derived_layer_needed(layer, force_all != 0u)) return;
-  ivec2 size = derived_face_extent(layer, imageSize(raw).xy);
+  uint record = gl_WorkGroupID.z;
+  if (!derived_layer_needed(record, force_all != 0u)) return;
+  ivec2 size = derived_face_extent(record, imageSize(raw).xy);
   if (any(greaterThanEqual(ivec2(gl_WorkGroupID.xy) * int(span), size))) return;
-  ShadowLight l = shadow_lights[min(faces[layer].info.x, uint(ANTUMBRA_MAX_SHADOW_LIGHTS - 1))];
+  ivec2 corner = derived_face_origin(record, imageSize(raw).xy);
+  int layer = derived_face_layer(record);
+  ShadowLight l = shadow_lights[min(faces[record].info.x, uint(ANTUMBRA_MAX_SHADOW_LIGHTS - 1))];
   ivec2 origin = ivec2(gl_WorkGroupID.xy) * int(span) + ivec2(gl_LocalInvocationID.xy);
   int f = int(factor);
   for (int y = 0; y < int(span); y += GROUP) {
@@ -29,11 +31,11 @@ void main() {
       vec4 sum = vec4(0.0);
       for (int dy = 0; dy < f; ++dy) {
         for (int dx = 0; dx < f; ++dx) {
-          float d = texelFetch(atlas, ivec3(p * f + ivec2(dx, dy), int(layer)), 0).r;
+          float d = texelFetch(atlas, ivec3((corner + p) * f + ivec2(dx, dy), layer), 0).r;
           sum += moments_encode(shadow_depth_fraction(l, d));
         }
       }
-      imageStore(raw, ivec3(p, int(layer)), sum / float(f * f));
+      imageStore(raw, ivec3(corner + p, layer), sum / float(f * f));
     }
   }
 }

@@ -16,18 +16,19 @@ layout(set = 0, binding = kMomentsInput) uniform sampler2DArray raw;
 layout(set = 0, binding = kMomentsOutput, rg32ui) uniform coherent uimage2DArray table;
 
 void main() {
-  uint layer = gl_WorkGroupID.z;
-  if (!derived_layer_needed(layer, force_all != 0u)) return;  // uniform: before the barrier
+  uint record = gl_WorkGroupID.z;
+  if (!derived_layer_needed(record, force_all != 0u)) return;  // uniform: before the barrier
   ivec2 full = imageSize(table).xy;
-  ivec2 size = derived_face_extent(layer, full);
+  ivec2 size = derived_face_extent(record, full);
+  ivec2 corner = derived_face_origin(record, full);  // the face's table starts there
   float scale = sat_scale(full);
-  int l = int(layer);
+  int l = derived_face_layer(record);
   for (int y = int(gl_LocalInvocationID.x); y < size.y; y += SAT_THREADS) {
     uvec2 run = uvec2(0u);
     for (int x = 0; x < size.x; ++x) {
-      vec2 m = clamp(texelFetch(raw, ivec3(x, y, l), 0).xy, 0.0, 1.0);
+      vec2 m = clamp(texelFetch(raw, ivec3(corner + ivec2(x, y), l), 0).xy, 0.0, 1.0);
       run += uvec2(round(m * scale));
-      imageStore(table, ivec3(x, y, l), uvec4(run, 0u, 0u));
+      imageStore(table, ivec3(corner + ivec2(x, y), l), uvec4(run, 0u, 0u));
     }
   }
   memoryBarrierImage();
@@ -35,8 +36,8 @@ void main() {
   for (int x = int(gl_LocalInvocationID.x); x < size.x; x += SAT_THREADS) {
     uvec2 run = uvec2(0u);
     for (int y = 0; y < size.y; ++y) {
-      run += imageLoad(table, ivec3(x, y, l)).xy;
-      imageStore(table, ivec3(x, y, l), uvec4(run, 0u, 0u));
+      run += imageLoad(table, ivec3(corner + ivec2(x, y), l)).xy;
+      imageStore(table, ivec3(corner + ivec2(x, y), l), uvec4(run, 0u, 0u));
     }
   }
 }

@@ -6,6 +6,7 @@
 #include "antumbra/gpu/context.hpp"
 #include "antumbra/gpu/pipelines.hpp"
 #include "common/ports.hpp"
+#include "common/shadow_data.hpp"
 #include "shadow_moments_interface.h"
 #include "shared/workgroups.h"
 
@@ -74,7 +75,9 @@ void ShadowMomentsPass::execute(fgvk::ExecuteContext& context) {
   const FaceGroups groups = face_groups(out.extent, kGroup, kGroupsPerAxis);
   const ShadowMomentsPush constants{atlas.extent.width / std::max(out.extent.width, 1u),
                                     params_.blur, force_all ? 1u : 0u, groups.span};
-  const std::uint32_t layers = std::min(atlas.layers, out.layers);
+  // One z per face record: a record's face is a square of its layer (derived_faces.glsl).
+  const std::uint32_t layers =
+      face_records(b.buffer(port::kShadowData)->size, std::min(atlas.layers, out.layers));
 
   dispatch_face_step(
       context, convert_,

@@ -13,16 +13,18 @@
 #define MOMENT_EPSILON 0.002
 #endif
 
-// Bilinear by hand: 32-bit float formats need not support linear filtering.
-vec4 moments_bilinear(vec2 face_uv, float layer, float texels, float share) {
+// Bilinear by hand: 32-bit float formats need not support linear filtering. The face's
+// square is `share` wide at `origin` (ShadowCoord); no tap leaves it.
+vec4 moments_bilinear(vec2 face_uv, float layer, float texels, float share, vec2 origin) {
   vec2 size = vec2(textureSize(moments_map, 0).xy);
-  vec2 uv = clamp(face_uv, vec2(0.5 / texels), vec2(1.0 - 0.5 / texels)) * share;
+  vec2 uv = clamp(face_uv, vec2(0.5 / texels), vec2(1.0 - 0.5 / texels)) * share + origin;
   vec2 pos = uv * size - 0.5;
   ivec2 base = ivec2(floor(pos));
   vec2 f = pos - vec2(base);
-  ivec2 last = ivec2(ceil(size * share)) - 1;
-  ivec2 a = clamp(base, ivec2(0), last);
-  ivec2 b = clamp(base + 1, ivec2(0), last);
+  ivec2 first = ivec2(round(origin * size));
+  ivec2 last = first + ivec2(ceil(size * share)) - 1;
+  ivec2 a = clamp(base, first, last);
+  ivec2 b = clamp(base + 1, first, last);
   int l = int(layer);
   vec4 m00 = texelFetch(moments_map, ivec3(a.x, a.y, l), 0);
   vec4 m10 = texelFetch(moments_map, ivec3(b.x, a.y, l), 0);
@@ -36,9 +38,9 @@ float moment_shadow_face(ShadowLight light, int layer, vec3 p_world, vec3 n_worl
   float share = light.projection.z > 0.0 ? light.projection.z : 1.0;
   float texels = max(float(textureSize(moments_map, 0).x) * share, 1.0);
   ShadowLookup q = shadow_offset_lookup(light, layer, p_world, n_world, texels);
-  ShadowCoord c = shadow_coord(shadow_faces[q.layer].view_proj, q.light, q.layer, q.position);
+  ShadowCoord c = shadow_coord(shadow_faces[q.layer], q.light, q.layer, q.position);
   if (!c.valid || c.depth >= 1.0) return 1.0;
-  vec4 m = moments_bilinear(c.uv, c.layer, texels, share);
+  vec4 m = moments_bilinear(c.uv, c.layer, texels, share, c.origin);
   return moments_visibility(m, shadow_depth_fraction(q.light, c.depth), MOMENT_EPSILON,
                             BLEEDING_REDUCTION);
 }

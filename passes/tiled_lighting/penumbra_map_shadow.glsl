@@ -38,7 +38,11 @@ float penumbra_map_face(ShadowLight sl, int layer, vec3 p_world, vec3 n_world) {
   FilterCoord c;
   if (!filter_coord(sl, layer, p_world, n_world, c)) return 1.0;
   float lit = filter_hard(c);
-  vec3 at = vec3(clamp(c.uv, vec2(0.5 * c.texel), vec2(1.0 - 0.5 * c.texel)) * c.share, c.layer);
+  // penumbra-wedges draws only faces at the corner of their own layer (wedges_common.glsl,
+  // wedge_face_in_own_layer); a face packed elsewhere keeps its hard edge.
+  if (int(c.layer) != layer || any(notEqual(c.origin, vec2(0.0)))) return lit;
+  vec3 at = vec3(clamp(c.uv, vec2(0.5 * c.texel), vec2(1.0 - 0.5 * c.texel)) * c.share + c.origin,
+                 c.layer);
   vec2 texel = textureLod(penumbra_map, at, 0.0).rg;
   float wedge = texel.g;
   if (lit > 0.5) {

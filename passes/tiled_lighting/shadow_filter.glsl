@@ -32,6 +32,7 @@ struct FilterCoord {
   float far;
   float texel;  // one texel in face uv (the light's face size)
   float share;  // the face's uv square in its layer (shadow_atlas_uv)
+  vec2 origin;  // and its corner
   float scale;  // ShadowLight.projection.x: 1 point, tan(half fov) spot, half width sun
   bool ortho;   // directional light: depth linear in metres (0 at near, far at 1)
 };
@@ -45,11 +46,12 @@ vec3 filter_project(mat4 view_proj, vec3 p) {
 // (orthographic): the caller treats the point as lit. `layer` is shadow_pick's (face
 // choice, cascades); projection is shadow_sampling.glsl's.
 bool filter_coord(ShadowLight light, int layer, vec3 p_world, vec3 n_world, out FilterCoord c) {
-  c = FilterCoord(vec2(0.0), 0.0, 0.0, vec2(0.0), 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 1.0, false);
+  c = FilterCoord(vec2(0.0), 0.0, 0.0, vec2(0.0), 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, vec2(0.0), 1.0,
+                  false);
   if (layer < 0) return false;
   mat4 view_proj = shadow_faces[layer].view_proj;
   ShadowLight sl = shadow_face_light(light, view_proj);
-  ShadowCoord base = shadow_coord(view_proj, sl, layer, p_world);
+  ShadowCoord base = shadow_coord(shadow_faces[layer], sl, layer, p_world);
   if (!base.valid) return false;
   c.uv = base.uv;
   c.layer = base.layer;
@@ -59,6 +61,7 @@ bool filter_coord(ShadowLight light, int layer, vec3 p_world, vec3 n_world, out 
   c.far = sl.position_range.w;
   c.texel = 1.0 / shadow_face_texels(sl, float(textureSize(atlas, 0).x));
   c.share = base.share;
+  c.origin = base.origin;
   c.scale = sl.projection.x;
   c.ortho = shadow_is_ortho(sl);
 
@@ -93,7 +96,7 @@ bool filter_coord(ShadowLight light, int layer, vec3 p_world, vec3 n_world, out 
 float filter_fetch(FilterCoord c, inout vec2 offset) {
   vec2 uv = clamp(c.uv + offset, vec2(0.5 * c.texel), vec2(1.0 - 0.5 * c.texel));
   offset = uv - c.uv;
-  return textureLod(atlas, vec3(uv * c.share, c.layer), 0.0).r;
+  return textureLod(atlas, vec3(uv * c.share + c.origin, c.layer), 0.0).r;
 }
 
 float filter_tap(FilterCoord c, vec2 offset) {

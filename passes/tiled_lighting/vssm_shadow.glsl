@@ -28,10 +28,11 @@ float vssm_shadow_face(ShadowLight light, int layer, vec3 p_world, vec3 n_world)
   ivec2 map = textureSize(moments_map, 0).xy;
   float texels = max(float(map.x) * share, 1.0);
   ShadowLookup q = shadow_offset_lookup(light, layer, p_world, n_world, texels);
-  ShadowCoord c = shadow_coord(shadow_faces[q.layer].view_proj, q.light, q.layer, q.position);
+  ShadowCoord c = shadow_coord(shadow_faces[q.layer], q.light, q.layer, q.position);
   if (!c.valid || c.depth >= 1.0) return 1.0;
   float t = shadow_depth_fraction(q.light, c.depth);
   ivec2 last = ivec2(ceil(vec2(map) * share)) - 1;
+  ivec2 first = ivec2(round(c.origin * vec2(map)));  // the face's corner in the table
   float scale = sat_scale(map);
   int l = int(c.layer);
   vec2 centre = c.uv * texels;
@@ -46,7 +47,7 @@ float vssm_shadow_face(ShadowLight light, int layer, vec3 p_world, vec3 n_world)
   float search = ortho ? radius * d_r * texels / (2.0 * half_face)
                        : radius * 0.5 * texels / half_face * max(d_r - near, 0.0) / d_r;
   search = clamp(search, 1.0, widest);
-  vec2 m = sat_box_mean(centre - search, centre + search, last, l, scale);
+  vec2 m = sat_box_mean(centre - search, centre + search, first, last, l, scale);
   float variance = max(m.y - m.x * m.x, MOMENT_EPSILON * MOMENT_EPSILON);
   float filter_radius = 0.5;
   if (t > m.x + MOMENT_EPSILON) {
@@ -58,7 +59,7 @@ float vssm_shadow_face(ShadowLight light, int layer, vec3 p_world, vec3 n_world)
     float texel_metres = ortho ? 2.0 * half_face / texels : 2.0 * d_r * half_face / texels;
     filter_radius = clamp(penumbra / texel_metres, 0.5, widest);
   }
-  vec2 f = sat_box_mean(centre - filter_radius, centre + filter_radius, last, l, scale);
+  vec2 f = sat_box_mean(centre - filter_radius, centre + filter_radius, first, last, l, scale);
   return moments_visibility(vec4(f, 0.0, 0.0), t, MOMENT_EPSILON, BLEEDING_REDUCTION);
 }
 

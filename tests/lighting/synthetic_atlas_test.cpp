@@ -118,7 +118,8 @@ class AtlasFillPass final : public fgvk::Pass {
       std::memcpy(bytes + passes::kShadowLightsOffset + i * sizeof light, &light, sizeof light);
     }
     for (std::uint32_t face = 0; face < 6; ++face) {
-      const passes::ShadowFace f{face_view_proj(face), {0u, face, 1u, 0u}};
+      const passes::ShadowFace f{face_view_proj(face),
+                                 {0u, passes::encode_face_info(face, {.layer = face}), 1u, 0u}};
       std::memcpy(bytes + passes::kShadowFacesOffset + face * sizeof f, &f, sizeof f);
     }
   }

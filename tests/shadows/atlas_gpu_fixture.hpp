@@ -183,6 +183,52 @@ class AtlasGpuTest : public gpu::testing::GpuTest {
              texels.data());
     return texels;
   }
+  // The shadowData buffer as the last frame left it.
+  std::vector<std::byte> read_shadow_data() {
+    frames_->wait_all();
+    const gpu::Buffer* buffer = executor_->gpu_buffer("shadowData");
+    EXPECT_NE(buffer, nullptr);
+    if (buffer == nullptr) return {};
+    auto readback = gpu::Buffer::create(ctx(), buffer->size(), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                        gpu::MemoryUsage::readback, "test.shadowData.readback");
+    ctx().submit_immediate([&](VkCommandBuffer cmd) {
+      gpu::buffer_barrier(cmd, buffer->handle(), VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+                          VK_ACCESS_2_MEMORY_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT,
+                          VK_ACCESS_2_TRANSFER_READ_BIT);
+      const VkBufferCopy region{0, 0, buffer->size()};
+      vkCmdCopyBuffer(cmd, buffer->handle(), readback.handle(), 1, &region);
+      gpu::buffer_barrier(cmd, readback.handle(), VK_PIPELINE_STAGE_2_COPY_BIT,
+                          VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT,
+                          VK_ACCESS_2_HOST_READ_BIT);
+    });
+    std::vector<std::byte> out(buffer->size());
+    std::memcpy(out.data(), readback.mapped(), out.size());
+    return out;
+  }
+  // Face record `record`'s square (ShadowFace.info.y, its light's face size), its depth
+  // copied into the corner of a layer-sized array (kFace texels a row; far elsewhere).
+  std::vector<float> read_face(std::uint32_t record) {
+    const auto data = read_shadow_data();
+    passes::ShadowFace face;
+    std::memcpy(&face, data.data() + passes::kShadowFacesOffset + record * sizeof face,
+                sizeof face);
+    passes::ShadowLight light;
+    std::memcpy(&light, data.data() + passes::kShadowLightsOffset + face.info.x * sizeof light,
+                sizeof light);
+    const auto size =
+        light.projection.y > 0.0f ? static_cast<std::uint32_t>(light.projection.y) : kFace;
+    const passes::FacePlace place = passes::face_place(face);
+    const auto layer = read_layer(place.layer);
+    std::vector<float> out(std::size_t{kFace} * kFace, 1.0f);
+    for (std::uint32_t y = 0; y < size; ++y) {
+      for (std::uint32_t x = 0; x < size; ++x) {
+        const std::size_t row = std::size_t{place.cell.y} * size + y;
+        const std::size_t column = std::size_t{place.cell.x} * size + x;
+        out[std::size_t{y} * kFace + x] = layer[row * kFace + column];
+      }
+    }
+    return out;
+  }
   // One colour-map layer, RGBA8 packed per texel.
   std::vector<std::uint32_t> read_colour_layer(std::uint32_t layer) {
     std::vector<std::uint32_t> texels(std::size_t{kFace} * kFace);

@@ -90,6 +90,37 @@ TEST_F(AtlasGpuTest, TooSmallShadowDataIsACompilerError) {
   EXPECT_GT(d->line, 0);
 }
 
+// A face record names its layer in 11 bits (shadow_data.h): more layers are refused at the
+// atlas binding, with the limit, before anything is allocated.
+TEST_F(AtlasGpuTest, MoreLayersThanAFaceCanNameIsACompilerError) {
+  auto document = base::load_json_file((source_dir() / "tests/data/shadows/atlas.json").string());
+  ASSERT_TRUE(document.ok());
+  auto graph = fg::parse_graph(document.value());
+  ASSERT_TRUE(graph.ok());
+  for (auto& r : graph.value().resources) {
+    if (r.name == "atlas" || r.name == "shadowColour") {
+      r.layers = 2049;
+      r.size = {false, 1.0, 1.0, 16, 16};
+    }
+    if (r.name == "shadowData") r.buffer_size = passes::shadow_data_bytes(2049);
+  }
+  fg::CompileOptions options;
+  options.viewport = {kViewport.width, kViewport.height};
+  auto plan = fg::compile(graph.value(), registry_->reflection(), options);
+  ASSERT_FALSE(plan.ok());
+  const base::Diagnostic* d = plan.diagnostics().find("SHD006");
+  ASSERT_NE(d, nullptr) << plan.diagnostics().to_text();
+  EXPECT_NE(d->message.find("2049 layers"), std::string::npos) << d->message;
+  EXPECT_NE(d->message.find("2048"), std::string::npos) << d->message;
+  EXPECT_EQ(d->pointer.rfind("/passes/", 0), 0u) << d->pointer;
+  for (auto& r : graph.value().resources) {
+    if (r.name == "atlas" || r.name == "shadowColour") r.layers = 2048;
+  }
+  EXPECT_EQ(
+      fg::compile(graph.value(), registry_->reflection(), options).diagnostics().find("SHD006"),
+      nullptr);
+}
+
 TEST_F(AtlasGpuTest, SamplingIncludeAgreesWithCpuFaceMath) {
   // One light, its six faces, and points all round it.
   const glm::vec3 light(1.0f, 2.0f, -1.5f);
@@ -103,7 +134,7 @@ TEST_F(AtlasGpuTest, SamplingIncludeAgreesWithCpuFaceMath) {
   for (std::uint32_t f = 0; f < 6; ++f) {
     passes::ShadowFace face;
     face.view_proj = sf::face_view_proj(light, f, 0.05f, range);
-    face.info = {0u, f, 1u, 0u};
+    face.info = {0u, passes::encode_face_info(f, {.layer = f}), 1u, 0u};
     std::memcpy(data.data() + passes::kShadowFacesOffset + f * sizeof face, &face, sizeof face);
   }
   std::vector<glm::vec4> points;

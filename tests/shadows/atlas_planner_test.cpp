@@ -63,7 +63,8 @@ TEST(AtlasPlanner, FirstFrameRendersEveryVisibleFaceOfAtrium) {
   for (std::uint32_t i = 0; i < 16; ++i) {
     EXPECT_EQ(f.lights[i].params.z, static_cast<float>(6 * i));
     EXPECT_EQ(f.faces[6 * i + 3].info.x, i);
-    EXPECT_EQ(f.faces[6 * i + 3].info.y, 3u);
+    EXPECT_EQ(passes::face_of(f.faces[6 * i + 3]), 3u);
+    EXPECT_EQ(passes::face_place(f.faces[6 * i + 3]).layer, 6 * i + 3);
   }
   EXPECT_EQ(f.header.counts.x, 16u);
   EXPECT_EQ(f.header.counts.y, 96u);
@@ -246,7 +247,7 @@ TEST(AtlasPlanner, LayersAreAllocatedByLightType) {
   EXPECT_EQ(f.lights[0].projection.w, 0.0f) << "only the sun has cascades";
   for (std::uint32_t c = 0; c < 4; ++c) {
     EXPECT_EQ(f.faces[7 + c].info.x, 2u);
-    EXPECT_EQ(f.faces[7 + c].info.y, c);
+    EXPECT_EQ(passes::face_of(f.faces[7 + c]), c);
   }
   // One layer short: the last point light goes unshadowed, the others keep theirs.
   const auto& g = planner.plan(s, camera_of(s), 1, 1, settings(16));

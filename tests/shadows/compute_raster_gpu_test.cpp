@@ -219,7 +219,7 @@ TEST_F(ComputeRasterGpuTest, ScreenResolutionDrawsIntoTheCornerOnBothRasterisers
     std::size_t compared = 0;
     std::size_t differ = 0;
     for (std::uint32_t face = 0; face < 6; ++face) {
-      const auto small = read_layer(6 * kLight + face);
+      const auto small = read_face(6 * kLight + face);
       // Texel (x, y) of the small face covers the reference's texels around its centre
       // scaled up; it must match one of the 3x3 reference texels there (edges move).
       for (std::uint32_t y = 0; y < size; ++y) {

@@ -30,7 +30,7 @@ void main() {
   vec3 p = points[i].xyz;
   ShadowPick pick = shadow_pick(l, p);
   int layer = pick.layer;
-  ShadowCoord c = shadow_coord(shadow_faces[max(layer, 0)].view_proj, l, layer, p);
+  ShadowCoord c = shadow_coord(shadow_faces[max(layer, 0)], l, layer, p);
   if (shadow_is_ortho(l)) {
     results[i] = vec4(float(layer), float(pick.next), pick.blend, c.valid ? c.depth : -1.0);
   } else {

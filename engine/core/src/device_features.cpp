@@ -49,6 +49,7 @@ const std::array kOptional = {
     ANTUMBRA_FEATURE(features2.features, imageCubeArray),
     ANTUMBRA_FEATURE(features2.features, fillModeNonSolid),
     ANTUMBRA_FEATURE(features2.features, multiDrawIndirect),
+    ANTUMBRA_FEATURE(features2.features, shaderClipDistance),
     ANTUMBRA_FEATURE(v11, multiview),
     ANTUMBRA_FEATURE(v11, shaderDrawParameters),
     ANTUMBRA_FEATURE(v12, hostQueryReset),
@@ -133,6 +134,7 @@ DeviceFeatures enabled_features(const FeatureChain& enabled) {
   f.image_cube_array = on(enabled, "imageCubeArray");
   f.fill_mode_non_solid = on(enabled, "fillModeNonSolid");
   f.multi_draw_indirect = on(enabled, "multiDrawIndirect");
+  f.shader_clip_distance = on(enabled, "shaderClipDistance");
   f.multiview = on(enabled, "multiview");
   f.shader_draw_parameters = on(enabled, "shaderDrawParameters");
   f.host_query_reset = on(enabled, "hostQueryReset");

@@ -394,6 +394,14 @@ const gpu::Image* Executor::gpu_image(std::string_view resource) const {
   return rr.image ? &rr.image : nullptr;
 }
 
+const gpu::Buffer* Executor::gpu_buffer(std::string_view resource) const {
+  if (!state_) return nullptr;
+  const int index = state_->plan.find_resource(resource);
+  if (index < 0) return nullptr;
+  const auto& rr = state_->resources[static_cast<std::size_t>(index)];
+  return rr.buffer ? &rr.buffer : nullptr;
+}
+
 std::uint64_t Executor::resource_bytes() const {
   return state_ ? state_->bytes : 0;
 }

@@ -191,7 +191,9 @@ inline constexpr const char* kShadowDataTooSmall =
 inline constexpr const char* kLightsUnshadowed = "SHD002";  // warning: lights do not fit the atlas
 // SHD003 (a colour map with fewer layers) is now the port contract FG092.
 inline constexpr const char* kRasterizerFormat = "SHD004";  // atlas format vs the rasteriser
-inline constexpr const char* kFaceStats = "SHD010";         // note: faces culled/drawn/cached
+inline constexpr const char* kFacesDegraded = "SHD005";  // note: faces drawn smaller (atlas full)
+inline constexpr const char* kTooManyLayers = "SHD006";  // atlas layers past what a face names
+inline constexpr const char* kFaceStats = "SHD010";      // note: faces culled/drawn/cached
 }  // namespace shadow_atlas
 
 // gbuffer.

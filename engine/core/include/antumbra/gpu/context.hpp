@@ -93,6 +93,7 @@ struct DeviceFeatures {
   bool image_cube_array = false;
   bool fill_mode_non_solid = false;
   bool multi_draw_indirect = false;
+  bool shader_clip_distance = false;  // gl_ClipDistance (the atlas packs faces with it)
   bool scalar_block_layout = false;
   bool shader_draw_parameters = false;
   bool int64_buffer_atomics = false;  // shaderInt64 + shaderBufferInt64Atomics

@@ -19,8 +19,9 @@
 #include "antumbra/fgvk/vk_sync.hpp"
 
 namespace antumbra::gpu {
+class Buffer;
 class Image;
-}
+}  // namespace antumbra::gpu
 
 namespace antumbra::fgvk {
 
@@ -112,6 +113,9 @@ class Executor {
   [[nodiscard]] const BoundImage* image(std::string_view resource) const;
   // The realised image itself (for read-back); nullptr if none.
   [[nodiscard]] const gpu::Image* gpu_image(std::string_view resource) const;
+  // The realised buffer of a resource (for read-back: every graph buffer is a transfer
+  // source); nullptr if none.
+  [[nodiscard]] const gpu::Buffer* gpu_buffer(std::string_view resource) const;
   // Bytes of device memory the plan's resources use (heap + individual allocations).
   [[nodiscard]] std::uint64_t resource_bytes() const;
   // Every shader file the passes read (for file watching).
