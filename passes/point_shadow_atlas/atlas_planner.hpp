@@ -1,12 +1,14 @@
 #pragma once
-// Vulkan-free per-frame bookkeeping of the point-shadow atlas: which light owns which
-// layers (allocated in light order: 6 per point light, 1 per spot light, one per cascade of
-// the directional light, fewer when the atlas is nearly full;
-// ShadowLight.params.z = the first), which faces the camera may need (culling), which layers still
-// hold valid depth from an earlier frame (static caching), which ones dynamic meshes made
-// stale, which updates fit this frame's budget and so which faces to draw, and how (over a
-// cache of their static depth or not). Also fills the shadowData contents (shadow_data.hpp).
-// The pass uploads and draws what it says (docs/technique.md, "Static and dynamic casters").
+// Vulkan-free per-frame bookkeeping of the point-shadow atlas: which light owns which face
+// records (in light order: 6 per point light, 1 per spot light, one per cascade of the
+// directional light, fewer when the records run out; ShadowLight.params.z = the first),
+// where each record's square lies and at what size (face_packer.hpp: smaller when the atlas
+// is full; docs/technique.md, "Packed faces"), which faces the camera may need (culling),
+// which records still hold valid depth from an earlier frame (static caching), which ones
+// dynamic meshes made stale, which updates fit this frame's budget and so which faces to
+// draw, and how (over a cache of their static depth or not). Also fills the shadowData
+// contents (shadow_data.hpp). The pass uploads and draws what it says (docs/technique.md,
+// "Static and dynamic casters").
 
 #include <cstdint>
 #include <limits>
