@@ -3,8 +3,11 @@
 `antumbra bench` in turn, so drift hits all sides alike. Results are written to $OUT after each
 group, so a run cut short still returns what it measured.
 
-  abx.py --pair BASE:HEAD [--pair ...] --group 'pat1,pat2' [--group ...] [--rounds 2]
+  abx.py --pair BASE:HEAD [--pair ...] --group '[SIDE+SIDE@]pat1,pat2' [--group ...] [--rounds 2]
          [--budget SECONDS] -- BENCH_ARGS...
+
+A group prefixed with 'SIDE+SIDE@' runs only those sides (a pair whose sides did not both run
+a group simply has no rows for it), so one call can hold groups that matter to one pair only.
 """
 import argparse, csv, os, shutil, statistics, subprocess, sys, time
 
@@ -89,9 +92,16 @@ for gi, group in enumerate(args.group):
     if time.time() - start > args.budget:
         say(f"budget spent: groups {gi}.. not run")
         break
+    group_sides = sides
+    if "@" in group:
+        named, group = group.split("@", 1)
+        group_sides = [s for s in named.split("+") if s]
+        unknown = [s for s in group_sides if s not in sides]
+        if unknown:
+            sys.exit(f"group names sides that no --pair names: {unknown}")
     pats = [p for p in group.split(",") if p]
     for rnd in range(1, args.rounds + 1):
-        for side in sides:
+        for side in group_sides:
             dst = f"/tmp/abx-run/{side}-{rnd}-{gi}"
             shutil.rmtree(dst, ignore_errors=True)
             cmd = [os.path.join(here, side, "bin", "antumbra"), "bench", *bench]
