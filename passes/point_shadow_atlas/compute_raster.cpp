@@ -31,8 +31,8 @@ using own_sync::transfer_to_compute;
 // faces is rasterised in several rounds through the same buffers.
 constexpr VkDeviceSize kMaxScratchBytes = VkDeviceSize{256} << 20;
 constexpr VkDeviceSize kMaxItems = VkDeviceSize{32} << 20;
-constexpr std::uint32_t kClearDepthBits = 0x3F800000u;  // 1.0f
-constexpr std::uint32_t kClearTint = 0xFFFFFFFFu;       // white, nearest distance 1
+constexpr std::uint32_t kClearDepthBits = shared::kRasterClearDepth;
+constexpr std::uint32_t kClearTint = shared::kRasterClearTint;
 
 std::uint32_t regions_per_face(std::uint32_t size) {
   const std::uint32_t per_axis =
@@ -45,8 +45,8 @@ gpu::DescriptorSetLayoutBuilder raster_bindings() {
   for (const std::uint32_t binding :
        {shared::kRasterClusters, shared::kRasterIndices, shared::kRasterVertices,
         shared::kRasterFaces, shared::kRasterCounters, shared::kRasterItems, shared::kRasterDepth,
-        shared::kRasterTint, shared::kRasterMaterials, shared::kRasterDrawFlags,
-        shared::kRasterResolveList, shared::kRasterAttributes}) {
+        shared::kRasterTint, shared::kRasterMaterials, shared::kRasterResolveList,
+        shared::kRasterAttributes}) {
     b.storage_buffer(binding, VK_SHADER_STAGE_COMPUTE_BIT);
   }
   b.add(shared::kRasterSrgbTextures, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT,
@@ -191,6 +191,8 @@ void ComputeRasterizer::ensure_scratch(fgvk::ExecuteContext& context, std::uint3
   const std::string& name = context.pass.name;
   // One more face than a chunk holds: the cleared face copied into untouched layers.
   const VkDeviceSize bytes = face_bytes * (chunk_faces_ + 1);
+  depth_dirty_ = VK_WHOLE_SIZE;  // new buffers: fill them whole before their first use
+  tint_dirty_ = VK_WHOLE_SIZE;
   depth_ =
       gpu::Buffer::create(context.gpu, bytes,
                           VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
@@ -229,7 +231,8 @@ void ComputeRasterizer::execute(fgvk::ExecuteContext& context, const AtlasFrame&
                    {.records = static_cast<std::uint32_t>(layers.size()),
                     .chunk_faces = chunk_faces_,
                     .face_size = size,
-                    .fill_first = fill_first_});
+                    .fill_first = fill_first_,
+                    .cull_groups = group_count(cluster_count_, shared::kCullGroup)});
   for (std::size_t first = 0; first < layers.size(); first += chunk_faces_) {
     const Chunk chunk{
         static_cast<std::uint32_t>(first),
@@ -240,6 +243,7 @@ void ComputeRasterizer::execute(fgvk::ExecuteContext& context, const AtlasFrame&
   }
   if (frame.clear_all) fill_untouched(context, frame);
   decision_.finish(context);
+  last_epochs_ = frame.epochs;
 }
 
 // One record per face to draw, then (when the atlas's contents are unknown and it is
@@ -331,7 +335,6 @@ void ComputeRasterizer::bind(fgvk::ExecuteContext& context, const ComputePipelin
       .storage_buffer(shared::kRasterDepth, depth_)
       .storage_buffer(shared::kRasterTint, tint_ ? tint_.handle() : depth_.handle())
       .storage_buffer(shared::kRasterMaterials, context.frame.materials)
-      .storage_buffer(shared::kRasterDrawFlags, decision_.draw_flags())
       .storage_buffer(shared::kRasterResolveList, decision_.list());
   if (textures) {
     // Pushed only where read: every push writes its descriptors into the command stream.
@@ -352,25 +355,52 @@ void ComputeRasterizer::bind(fgvk::ExecuteContext& context, const ComputePipelin
 
 // Clears the scratch a chunk uses, once the previous round has read it: its faces' depth
 // (packed by their sizes) and `tint_faces` tint faces (only the tinted faces have one).
-void ComputeRasterizer::clear_chunk(VkCommandBuffer cmd, const Chunk& chunk,
-                                    std::uint32_t tint_faces) {
-  const VkDeviceSize face_bytes = VkDeviceSize{scratch_size_} * scratch_size_ * 4;
-  const std::uint32_t last = chunk.first + chunk.count - 1;
-  const VkDeviceSize depth_bytes =
-      (VkDeviceSize{scratch_offsets_[last]} + VkDeviceSize{face_sizes_[last]} * face_sizes_[last]) *
-      4;
-  after_all(cmd, {depth_, counters_}, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
-            VK_ACCESS_2_TRANSFER_WRITE_BIT);
+// Only what earlier chunks left dirty is filled: a resolve with RasterPush.reset_scratch
+// puts the cleared values back into the texels it read, and only faces the decision drew
+// were dirtied, so after such a chunk nothing needs a fill.
+void ComputeRasterizer::clear_chunk(VkCommandBuffer cmd, std::uint32_t tint_faces) {
+  after_all(cmd, {counters_}, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
   after_all(cmd, {items_}, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
             VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
-  vkCmdFillBuffer(cmd, depth_, 0, depth_bytes, kClearDepthBits);
   vkCmdFillBuffer(cmd, counters_, 0, VK_WHOLE_SIZE, 0u);
-  transfer_to_compute(cmd, {depth_, counters_});
-  if (tint_faces > 0) {
-    after_all(cmd, {tint_}, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
-    vkCmdFillBuffer(cmd, tint_, 0, face_bytes * tint_faces, kClearTint);
-    transfer_to_compute(cmd, {tint_});
+  transfer_to_compute(cmd, {counters_});
+  clear_scratch(cmd, depth_, kClearDepthBits, depth_dirty_);
+  if (tint_faces > 0) clear_scratch(cmd, tint_, kClearTint, tint_dirty_);
+}
+
+// Fills the first `dirty` bytes of a scratch buffer with `value` (VK_WHOLE_SIZE: all of
+// it), or, when nothing is dirty, only orders the last resolve's writes before this
+// chunk's rasterisation.
+void ComputeRasterizer::clear_scratch(VkCommandBuffer cmd, VkBuffer scratch, std::uint32_t value,
+                                      VkDeviceSize& dirty) {
+  if (dirty == 0) {
+    compute_to_compute(cmd, {scratch});
+    return;
   }
+  after_all(cmd, {scratch}, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
+  vkCmdFillBuffer(cmd, scratch, 0, dirty, value);
+  transfer_to_compute(cmd, {scratch});
+  dirty = 0;
+}
+
+// Whether this chunk's resolve should clean the scratch behind it: when the faces likely
+// to be drawn (their epoch changed since the last frame) hold under a third of the
+// candidates' texels. Otherwise most candidates are drawn, and one fill of the chunk's
+// scratch costs less than the resolve's extra writes (docs/technique.md, "Receiver-driven
+// faces").
+bool ComputeRasterizer::resolve_cleans(const AtlasFrame& frame, const Chunk& chunk) const {
+  if (!storage_atlas_) return false;  // copies fill a depth atlas: no resolve reads depth
+  std::uint64_t candidates = 0;
+  std::uint64_t changing = 0;
+  for (std::uint32_t i = chunk.first; i < chunk.first + chunk.count; ++i) {
+    const std::uint64_t texels = std::uint64_t{face_sizes_[i]} * face_sizes_[i];
+    const std::uint32_t layer = frame.render_layers[i];
+    candidates += texels;
+    const bool same = layer < last_epochs_.size() && layer < frame.epochs.size() &&
+                      last_epochs_[layer] == frame.epochs[layer];
+    if (!same) changing += texels;
+  }
+  return changing * 3 < candidates;
 }
 
 void ComputeRasterizer::record_chunk(fgvk::ExecuteContext& context, const AtlasFrame& frame,
@@ -384,7 +414,7 @@ void ComputeRasterizer::record_chunk(fgvk::ExecuteContext& context, const AtlasF
   }
   const bool any_tint = tint_faces > 0 && tint_;
   context.gpu.begin_label(cmd, context.pass.name + ".clear");
-  clear_chunk(cmd, chunk, any_tint ? tint_faces : 0u);
+  clear_chunk(cmd, any_tint ? tint_faces : 0u);
   context.gpu.end_label(cmd);
 
   shared::RasterPush push{};
@@ -397,10 +427,14 @@ void ComputeRasterizer::record_chunk(fgvk::ExecuteContext& context, const AtlasF
   push.capacity_cut = capacity_cut_;
   push.depth_bias = settings.depth_bias;
   push.slope_bias = settings.slope_bias;
+  const bool cleans = resolve_cleans(frame, chunk);
+  push.reset_scratch = cleans ? 1u : 0u;
   context.gpu.begin_label(cmd, context.pass.name + ".cull");
   bind(context, cull_, push);
   if (cluster_count_ > 0) {
-    vkCmdDispatch(cmd, group_count(cluster_count_, shared::kCullGroup), chunk.count, 1);
+    // As many rows as the decision drew records in this chunk (face_decision.hpp).
+    vkCmdDispatchIndirect(cmd, decision_.args(),
+                          DecisionLayout::cull_args(chunk.first / chunk_faces_));
   }
   compute_to_compute(cmd, {counters_, items_});
   bind(context, args_, push);
@@ -424,10 +458,20 @@ void ComputeRasterizer::record_chunk(fgvk::ExecuteContext& context, const AtlasF
     const bool cut = cut_translucent_clusters_ > 0;
     raster_list(context, push, shared::kListTint, cut ? raster_cut_.get() : raster_tint_.get(),
                 ".rasterTint", cut);
-    compute_to_compute(cmd, {tint_});
+    // The tint pass read the depth, which the resolve writes back cleared.
+    compute_to_compute(cmd, {tint_, depth_});
   }
   if (!storage_atlas_) compute_to_copy(cmd, {depth_});
   if (storage_atlas_ || any_tint) resolve(context, push, chunk.first, chunk.first / chunk_faces_);
+  // What this chunk leaves dirty for the next one (clear_chunk).
+  const std::uint32_t last = chunk.first + chunk.count - 1;
+  const VkDeviceSize depth_bytes =
+      (VkDeviceSize{scratch_offsets_[last]} + VkDeviceSize{face_sizes_[last]} * face_sizes_[last]) *
+      4;
+  if (!cleans) depth_dirty_ = depth_bytes;
+  if (any_tint && !(cleans && storage_colour_)) {
+    tint_dirty_ = VkDeviceSize{scratch_size_} * scratch_size_ * 4 * tint_faces;
+  }
 }
 
 void ComputeRasterizer::raster_list(fgvk::ExecuteContext& context, shared::RasterPush push,
@@ -447,7 +491,7 @@ void ComputeRasterizer::resolve(fgvk::ExecuteContext& context, shared::RasterPus
   context.gpu.begin_label(context.cmd, context.pass.name + ".resolve");
   push.face_first = list_first;
   bind(context, resolve_, push);
-  vkCmdDispatchIndirect(context.cmd, decision_.args(), VkDeviceSize{args_index} * 16);
+  vkCmdDispatchIndirect(context.cmd, decision_.args(), DecisionLayout::resolve_args(args_index));
   context.gpu.end_label(context.cmd);
 }
 

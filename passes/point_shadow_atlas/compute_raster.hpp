@@ -83,7 +83,10 @@ class ComputeRasterizer {
   // variant, which reads them).
   void raster_list(fgvk::ExecuteContext& context, shared::RasterPush push, std::uint32_t list,
                    VkPipeline pipeline, const char* label, bool textures);
-  void clear_chunk(VkCommandBuffer cmd, const Chunk& chunk, std::uint32_t tint_faces);
+  void clear_chunk(VkCommandBuffer cmd, std::uint32_t tint_faces);
+  static void clear_scratch(VkCommandBuffer cmd, VkBuffer scratch, std::uint32_t value,
+                            VkDeviceSize& dirty);
+  [[nodiscard]] bool resolve_cleans(const AtlasFrame& frame, const Chunk& chunk) const;
   void record_chunk(fgvk::ExecuteContext& context, const AtlasFrame& frame, const Chunk& chunk,
                     const std::vector<bool>& tinted, const ComputeRasterSettings& settings);
   // Resolves the list entries whose dispatch arguments are at `args_index`.
@@ -101,9 +104,12 @@ class ComputeRasterizer {
   // clusters (a shader JIT on CPU devices that most scenes never need).
   LazyPipeline raster_cut_;
   ComputePipeline resolve_;
-  bool storage_atlas_ = false;            // r32f atlas: written by resolve_, not copied
-  bool storage_colour_ = false;           // colour map bound: tinted faces written by resolve_
-  std::vector<std::uint32_t> untouched_;  // layers filled with far depth (first frame)
+  bool storage_atlas_ = false;                // r32f atlas: written by resolve_, not copied
+  bool storage_colour_ = false;               // colour map bound: tinted faces written by resolve_
+  VkDeviceSize depth_dirty_ = VK_WHOLE_SIZE;  // depth_'s first bytes not clean (clear_chunk)
+  VkDeviceSize tint_dirty_ = VK_WHOLE_SIZE;   // tint_'s likewise
+  std::vector<std::uint32_t> last_epochs_;    // the last frame's AtlasFrame.epochs
+  std::vector<std::uint32_t> untouched_;      // layers filled with far depth (first frame)
   // Per record of this frame: where its depth starts in the scratch and its size. Faces
   // are packed by their own size (per-light resolution), so a chunk clears only theirs.
   std::vector<std::uint32_t> scratch_offsets_;

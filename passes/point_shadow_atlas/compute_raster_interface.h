@@ -62,10 +62,14 @@ const uint kRasterCountersBytes = 16;  // uint counts[3] (per list), overflow
 const uint kRasterOverflow = 3;        // counts[3]: items that did not fit (never: sized)
 const uint kRasterArgsOffset = 16;     // VkDispatchIndirectCommand (12 bytes) per list
 const uint kRasterCountersSize = 64;
+// What a clean scratch texel holds: far depth (1.0f's bits), and a white tint whose
+// nearest distance is 1.
+const uint kRasterClearDepth = 0x3F800000u;
+const uint kRasterClearTint = 0xFFFFFFFFu;
 
 ANTUMBRA_PUSH_CONSTANTS(RasterPush) {
   uint face_first;      // this chunk's first entry in the face records
-  uint face_count;      // faces of this chunk
+  uint face_count;      // candidate faces of this chunk
   uint cluster_count;   // clusters of the scene
   uint tint_mode;       // 1: translucent clusters go to the tint list, not into depth
   uint list;            // shadow_raster.comp: which list this dispatch works through
@@ -74,9 +78,12 @@ ANTUMBRA_PUSH_CONSTANTS(RasterPush) {
   float depth_bias;   // constant factor, in units of the float depth's resolution
   float slope_bias;   // factor of the depth slope per texel
   uint capacity_cut;  // the cut list starts after the tint list
+  // shadow_raster_resolve.comp: 1 puts the cleared values back into the scratch texels it
+  // read, so the next chunk finds them clean without a fill over every candidate face.
+  uint reset_scratch;
 };
-// shadow_raster_resolve.comp reads its records from kRasterResolveList at face_first
-// (face_decision.hpp's lists); the cull skips records whose kRasterDrawFlags entry is 0.
+// shadow_cull.comp and shadow_raster_resolve.comp read the records drawn from
+// kRasterResolveList at face_first (face_decision.hpp's lists).
 
 ANTUMBRA_BINDING(kRasterClusters, 0)
 ANTUMBRA_BINDING(kRasterIndices, 1)   // uint vertex indices in cluster order
@@ -89,7 +96,6 @@ ANTUMBRA_BINDING(kRasterTint, 7)   // uint per texel: RGBA8 tint (rgb product, a
 ANTUMBRA_BINDING(kRasterMaterials, 8)
 ANTUMBRA_BINDING(kRasterAtlas, 9)         // r32f atlas, image2DArray (shadow_raster_resolve.comp)
 ANTUMBRA_BINDING(kRasterColour, 10)       // rgba8 colour map, image2DArray (the same)
-ANTUMBRA_BINDING(kRasterDrawFlags, 11)    // uint per record: the GPU decided to draw it
 ANTUMBRA_BINDING(kRasterResolveList, 12)  // uint records to resolve (face_decision.hpp)
 // Cut materials (shadow_raster.comp): texture coordinates and base-colour textures.
 ANTUMBRA_BINDING(kRasterAttributes, 13)    // GpuVertexAttributes[], parallel to the vertices

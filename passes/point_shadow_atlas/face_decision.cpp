@@ -21,8 +21,8 @@ gpu::DescriptorSetLayoutBuilder decision_bindings() {
   gpu::DescriptorSetLayoutBuilder b;
   for (const std::uint32_t binding :
        {shared::kDecideShadowIn, shared::kDecideShadowOut, shared::kDecideRequests,
-        shared::kDecideNeeded, shared::kDecideContent, shared::kDecideDrawFlags,
-        shared::kDecideArgs, shared::kDecideList, shared::kDecideStats}) {
+        shared::kDecideNeeded, shared::kDecideContent, shared::kDecideArgs, shared::kDecideList,
+        shared::kDecideStats}) {
     b.storage_buffer(binding, VK_SHADER_STAGE_COMPUTE_BIT);
   }
   b.combined_image_sampler(shared::kReceiverDepth, VK_SHADER_STAGE_COMPUTE_BIT)
@@ -85,20 +85,15 @@ void FaceDecision::ensure_buffers(fgvk::ExecuteContext& context, std::uint32_t l
     stats_ = storage(context, kStatBytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, ".faceStats");
   }
   const std::uint32_t chunks = layout.chunks();
-  const std::uint32_t records = std::max(layout.records, 1u);
   const std::uint32_t list = chunks * layout.chunk_faces + layers;
-  if (records > records_capacity_) {
-    records_capacity_ = records;
-    draw_flags_ = storage(context, VkDeviceSize{records} * 4, 0, ".drawFlags");
-  }
   if (list > list_capacity_) {
     list_capacity_ = list;
     list_ = storage(context, VkDeviceSize{list} * 4, 0, ".resolveList");
   }
   if (chunks + 1 > args_capacity_) {
     args_capacity_ = chunks + 1;
-    args_ = storage(context, VkDeviceSize{args_capacity_} * 16, VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,
-                    ".resolveArgs");
+    args_ = storage(context, DecisionLayout::resolve_args(args_capacity_),
+                    VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, ".dispatchArgs");
   }
   if (slots_.size() < context.frame.frames_in_flight) slots_.resize(context.frame.frames_in_flight);
   Slot& slot = slots_[context.frame.slot];
@@ -148,15 +143,18 @@ void FaceDecision::reset(fgvk::ExecuteContext& context, VkBuffer staging, const 
     vkCmdFillBuffer(cmd, content_, 0, VK_WHOLE_SIZE, 0u);
     content_cleared_ = true;
   }
-  // Chunks grow to their largest drawn face (shadow_face_decide.comp); the fill list
-  // covers whole layers.
+  // Resolves grow to their chunk's largest drawn face and culls by one row of workgroups
+  // per drawn record (shadow_face_decide.comp); the fill list covers whole layers.
   const std::uint32_t groups = group_count(layout.face_size, shared::kResolveGroup);
-  std::vector<glm::uvec4> args(layout.chunks() + 1, glm::uvec4(0u));
+  std::vector<glm::uvec4> args(std::size_t{layout.chunks()} * 2 + 1, glm::uvec4(0u));
+  for (std::uint32_t chunk = 0; chunk < layout.chunks(); ++chunk) {
+    args[std::size_t{chunk} * 2 + 1] = glm::uvec4(layout.cull_groups, 0u, 1u, 0u);
+  }
   args.back() = glm::uvec4(groups, groups, 0u, 0u);
   vkCmdUpdateBuffer(cmd, args_, 0, args.size() * sizeof(glm::uvec4), args.data());
   transfer_to_compute(cmd, {shadow_in_, needed_, content_, args_, stats_});
-  // Last frame's rasterisation read the flags and the lists.
-  after_all(cmd, {draw_flags_, list_}, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, kStorage);
+  // Last frame's rasterisation read the lists.
+  after_all(cmd, {list_}, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, kStorage);
 }
 
 void FaceDecision::bind(fgvk::ExecuteContext& context, const ComputePipeline& pipeline,
@@ -168,7 +166,6 @@ void FaceDecision::bind(fgvk::ExecuteContext& context, const ComputePipeline& pi
       .storage_buffer(shared::kDecideRequests, slot.requests)
       .storage_buffer(shared::kDecideNeeded, needed_)
       .storage_buffer(shared::kDecideContent, content_)
-      .storage_buffer(shared::kDecideDrawFlags, draw_flags_)
       .storage_buffer(shared::kDecideArgs, args_)
       .storage_buffer(shared::kDecideList, list_)
       .storage_buffer(shared::kDecideStats, stats_)
@@ -214,8 +211,7 @@ void FaceDecision::record(fgvk::ExecuteContext& context, const AtlasFrame& frame
   bind(context, decide_, slot);
   vkCmdPushConstants(cmd, decide_.layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
   vkCmdDispatch(cmd, group_count(std::max(push.header_vec4s, layers), shared::kDecideGroup), 1, 1);
-  barriers(cmd, {draw_flags_, list_, args_, content_, stats_},
-           VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, kStorage,
+  barriers(cmd, {list_, args_, content_, stats_}, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, kStorage,
            VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT,
            VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT);
   context.gpu.end_label(cmd);

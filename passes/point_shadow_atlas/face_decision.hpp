@@ -30,15 +30,25 @@ struct FaceDecisionStats {
   std::uint64_t texels = 0;           // of the drawn faces
 };
 
-// Where the decision puts drawn records: chunk c's resolve list starts at c * chunk_faces
-// and its dispatch arguments at c * 16 bytes; the fill list (far depth for every layer
-// not drawn when the contents are unknown) follows the last chunk.
+// Where the decision puts drawn records: chunk c's list starts at c * chunk_faces; its
+// resolve's dispatch arguments at resolve_args(c) and its cull's at cull_args(c) (the
+// cull covers only the drawn records, never the skipped candidates); the fill list (far
+// depth for every layer not drawn when the contents are unknown) follows the last chunk,
+// with its resolve arguments at resolve_args(chunks()).
 struct DecisionLayout {
   std::uint32_t records = 0;      // candidate records (frame.render_layers)
   std::uint32_t chunk_faces = 1;  // records per chunk
   std::uint32_t face_size = 0;
-  std::uint32_t fill_first = 0;  // 0: no fill; else 1 + the record of layer 0's fill
+  std::uint32_t fill_first = 0;   // 0: no fill; else 1 + the record of layer 0's fill
+  std::uint32_t cull_groups = 0;  // the cull's workgroups along the clusters
   [[nodiscard]] std::uint32_t chunks() const { return (records + chunk_faces - 1) / chunk_faces; }
+  // Byte offsets into FaceDecision::args(): a uvec4 pair per chunk (face_decision_interface.h).
+  [[nodiscard]] static VkDeviceSize resolve_args(std::uint32_t chunk) {
+    return VkDeviceSize{chunk} * 32;
+  }
+  [[nodiscard]] static VkDeviceSize cull_args(std::uint32_t chunk) {
+    return VkDeviceSize{chunk} * 32 + 16;
+  }
 };
 
 class FaceDecision {
@@ -60,7 +70,6 @@ class FaceDecision {
 
   [[nodiscard]] bool receivers() const { return receivers_; }
   [[nodiscard]] std::uint32_t last_slot() const { return last_slot_; }
-  [[nodiscard]] VkBuffer draw_flags() const { return draw_flags_; }
   [[nodiscard]] VkBuffer list() const { return list_; }
   [[nodiscard]] VkBuffer args() const { return args_; }
 
@@ -82,14 +91,12 @@ class FaceDecision {
   ComputePipeline receivers_pipeline_;
   ComputePipeline decide_;
   std::uint32_t layers_ = 0;
-  std::uint32_t records_capacity_ = 0;
   std::uint32_t list_capacity_ = 0;
   std::uint32_t args_capacity_ = 0;
-  gpu::Buffer shadow_in_;   // device copy of the staging data (read by every tile)
-  gpu::Buffer needed_;      // uint per layer
-  gpu::Buffer content_;     // uint per layer: the epoch it holds
-  gpu::Buffer draw_flags_;  // uint per record
-  gpu::Buffer args_;        // uvec4 per chunk + fill
+  gpu::Buffer shadow_in_;  // device copy of the staging data (read by every tile)
+  gpu::Buffer needed_;     // uint per layer
+  gpu::Buffer content_;    // uint per layer: the epoch it holds
+  gpu::Buffer args_;       // uvec4 pair per chunk (resolve, cull) + the fill's
   gpu::Buffer list_;
   gpu::Buffer stats_;
   bool content_cleared_ = false;  // content_ starts at zero (nothing held)

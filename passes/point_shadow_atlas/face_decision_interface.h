@@ -56,12 +56,14 @@ ANTUMBRA_BINDING(kDecideShadowOut, 1)  // the graph's shadowData (info.z/w decid
 ANTUMBRA_BINDING(kDecideRequests, 2)   // FaceRequest per layer
 ANTUMBRA_BINDING(kDecideNeeded, 3)     // uint per layer: a visible pixel needs it
 ANTUMBRA_BINDING(kDecideContent, 4)    // uint per layer: the epoch the layer holds
-ANTUMBRA_BINDING(kDecideDrawFlags, 5)  // uint per record: drawn this frame
-ANTUMBRA_BINDING(kDecideArgs, 6)       // uvec4 per chunk (+ fill): resolve dispatch
-ANTUMBRA_BINDING(kDecideList, 7)       // uint records to resolve, per chunk then fill
-ANTUMBRA_BINDING(kDecideStats, 8)      // uint[kStatCount]
-ANTUMBRA_BINDING(kReceiverDepth, 9)    // the G-buffer depth (sampler2D)
-ANTUMBRA_BINDING(kReceiverFrame, 10)   // FrameUniforms
+// uvec4 pair per chunk: the resolve's dispatch (x, y: its largest drawn face, z: drawn
+// records) then the cull's (x: cluster groups, y: drawn records, z: 1); then the fill's
+// resolve. A chunk's cull and resolve cover its drawn records only.
+ANTUMBRA_BINDING(kDecideArgs, 6)
+ANTUMBRA_BINDING(kDecideList, 7)      // uint records drawn, per chunk (cull, resolve) then fill
+ANTUMBRA_BINDING(kDecideStats, 8)     // uint[kStatCount]
+ANTUMBRA_BINDING(kReceiverDepth, 9)   // the G-buffer depth (sampler2D)
+ANTUMBRA_BINDING(kReceiverFrame, 10)  // FrameUniforms
 
 ANTUMBRA_SHARED_END
 

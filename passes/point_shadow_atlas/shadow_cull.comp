@@ -3,7 +3,9 @@
 #include "compute_raster_interface.h"
 #include "raster_lists.glsl"
 
-// Culls every cluster against every face of the chunk (x: clusters, y: faces) and appends
+// Culls every cluster against every face the chunk draws (x: clusters, y: an entry of the
+// chunk's list of drawn records, which the face decision wrote; an indirect dispatch as
+// long as that list, so candidates the decision skipped cost nothing here) and appends
 // one work item per screen region the cluster's projection touches (docs/technique.md,
 // "Compute shadow rasteriser"). Tests, all conservative: the light's range, the face's
 // frustum and, for a closed mesh seen from outside its bounds, a normal cone facing away.
@@ -22,8 +24,8 @@ layout(std430, binding = kRasterCounters) buffer Counters {
 layout(std430, binding = kRasterItems) writeonly buffer Items {
   uvec2 items[];
 };
-layout(std430, binding = kRasterDrawFlags) readonly buffer DrawFlags {
-  uint draw_flags[];
+layout(std430, binding = kRasterResolveList) readonly buffer List {
+  uint records[];
 };
 
 const float kHalfPi = 1.57079632679;
@@ -48,9 +50,8 @@ bool sphere_outside(vec4 plane, vec4 sphere) {
 
 void main() {
   uint c = gl_GlobalInvocationID.x;
-  uint f = gl_GlobalInvocationID.y;
-  if (c >= cluster_count || f >= face_count) return;
-  if (draw_flags[face_first + f] == 0u) return;  // not needed, or already current
+  if (c >= cluster_count) return;
+  uint f = records[face_first + gl_GlobalInvocationID.y] - face_first;  // within the chunk
   RasterCluster cluster = clusters[c];
   RasterFace face = faces[face_first + f];
   bool translucent = (cluster.info.z & kClusterTranslucent) != 0u;

@@ -1,15 +1,16 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-#include "face_decision_interface.h"
 #include "../interface/shared/shadow_data.h"
+#include "face_decision_interface.h"
 
 // Decides, per atlas layer, whether the compute rasteriser draws its face this frame
 // and publishes the shadow data with that decision (docs/technique.md, "Receiver-driven
 // faces"): a candidate face is drawn when a visible pixel needs it (or `receivers` is 0)
 // and its layer does not already hold its current epoch. ShadowFace.info.z says whether
 // the layer holds the face's current depth, info.w whether it was drawn this frame.
-// Drawn records go to their chunk's resolve list; on a frame whose atlas contents are
-// unknown (fill_first > 0) every layer not drawn is filled with far depth instead.
+// Drawn records go to their chunk's list, which its cull and its resolve work through; on a frame
+// whose atlas contents are unknown (fill_first > 0) every layer not drawn is filled with far depth
+// instead.
 
 layout(local_size_x = kDecideGroup) in;
 
@@ -27,9 +28,6 @@ layout(std430, binding = kDecideNeeded) readonly buffer Needed {
 };
 layout(std430, binding = kDecideContent) buffer Content {
   uint content[];
-};
-layout(std430, binding = kDecideDrawFlags) writeonly buffer DrawFlags {
-  uint draw_flags[];
 };
 layout(std430, binding = kDecideArgs) buffer Args {
   uvec4 args[];
@@ -58,13 +56,13 @@ void main() {
   bool draw = candidate && wanted && held != request.epoch;
   if (candidate) {
     uint record = request.record - 1u;
-    draw_flags[record] = draw ? 1u : 0u;
     if (draw) {
       uint chunk = record / chunk_faces;
       uint groups = (request.size + resolve_group - 1u) / resolve_group;
-      atomicMax(args[chunk].x, groups);
-      atomicMax(args[chunk].y, groups);
-      uint slot = atomicAdd(args[chunk].z, 1u);
+      atomicMax(args[2u * chunk].x, groups);
+      atomicMax(args[2u * chunk].y, groups);
+      uint slot = atomicAdd(args[2u * chunk].z, 1u);
+      atomicAdd(args[2u * chunk + 1u].y, 1u);  // the cull's row for this record
       list[chunk * chunk_faces + slot] = record;
       atomicAdd(stats[kStatDrawn], 1u);
       atomicAdd(stats[kStatTexels], request.texels);
@@ -77,7 +75,7 @@ void main() {
   if (!draw && fill_first != 0u && owned) {
     // Unknown contents (a new image): far depth in the face's square, so no lookup reads
     // undefined texels (a record no light owns has no square).
-    uint slot = atomicAdd(args[chunks].z, 1u);
+    uint slot = atomicAdd(args[2u * chunks].z, 1u);
     list[chunks * chunk_faces + slot] = fill_first - 1u + i;
   }
   info.z = owned && held == request.epoch ? 1u : 0u;

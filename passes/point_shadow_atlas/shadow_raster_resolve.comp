@@ -19,13 +19,13 @@ layout(std430, binding = kRasterResolveList) readonly buffer List {
   uint records[];
 };
 #ifdef WRITE_DEPTH
-layout(std430, binding = kRasterDepth) readonly buffer Depth {
+layout(std430, binding = kRasterDepth) buffer Depth {
   uint depth[];
 };
 layout(binding = kRasterAtlas, r32f) uniform writeonly image2DArray atlas;
 #endif
 #ifdef WRITE_COLOUR
-layout(std430, binding = kRasterTint) readonly buffer Tint {
+layout(std430, binding = kRasterTint) buffer Tint {
   uint tint[];
 };
 layout(binding = kRasterColour, rgba8) uniform writeonly image2DArray colour;
@@ -44,12 +44,15 @@ void main() {
   uint layer = (place >> ANTUMBRA_FACE_LAYER_SHIFT) & ((1u << ANTUMBRA_FACE_LAYER_BITS) - 1u);
   ivec3 texel = ivec3(ivec2(cell * size + p), int(layer));
 #ifdef WRITE_DEPTH
-  imageStore(atlas, texel, vec4(uintBitsToFloat(depth[face.info.y + p.y * size + p.x])));
+  uint at = face.info.y + p.y * size + p.x;
+  imageStore(atlas, texel, vec4(uintBitsToFloat(depth[at])));
+  if (reset_scratch != 0u) depth[at] = kRasterClearDepth;  // clean for the next chunk
 #endif
 #ifdef WRITE_COLOUR
   if (face.info.w > 0u) {
     uint slot = (face.info.w - 1u) * floatBitsToUint(face.params.w) + p.y * size + p.x;
     imageStore(colour, texel, unpackUnorm4x8(tint[slot]));
+    if (reset_scratch != 0u) tint[slot] = kRasterClearTint;
   }
 #endif
 }

@@ -280,6 +280,17 @@ class AtlasGpuTest : public gpu::testing::GpuTest {
 
 // l05 hangs 2.6 m above open floor (top at y = 0) in view of the atrium camera.
 constexpr std::uint32_t kLight = 5;
+
+// The pass's rule: a light whose range reaches a translucent caster's bounds.
+inline bool tinted_light(const scene::Scene& scene, std::size_t light) {
+  const auto& l = scene.lights[light];
+  for (const auto& mesh : scene.meshes) {
+    if (!scene.materials[static_cast<std::size_t>(mesh.material)].translucent) continue;
+    const glm::vec3 d = glm::clamp(l.position, mesh.bounds.min, mesh.bounds.max) - l.position;
+    if (glm::dot(d, d) <= l.range * l.range) return true;
+  }
+  return false;
+}
 constexpr float kLightHeight = 2.6f;
 
 [[maybe_unused]] float centre_linear_depth(const std::vector<float>& texels,

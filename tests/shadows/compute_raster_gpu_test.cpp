@@ -74,17 +74,6 @@ class ComputeRasterGpuTest : public AtlasGpuTest {
   void expect_agreement(fg::Format compute_format);
 };
 
-// The pass's rule: a light whose range reaches a translucent caster's bounds.
-bool tinted_light(const scene::Scene& scene, std::size_t light) {
-  const auto& l = scene.lights[light];
-  for (const auto& mesh : scene.meshes) {
-    if (!scene.materials[static_cast<std::size_t>(mesh.material)].translucent) continue;
-    const glm::vec3 d = glm::clamp(l.position, mesh.bounds.min, mesh.bounds.max) - l.position;
-    if (glm::dot(d, d) <= l.range * l.range) return true;
-  }
-  return false;
-}
-
 }  // namespace
 
 // Every face of every light, drawn by both rasterisers: the depths agree off the edges

@@ -195,3 +195,54 @@ TEST_F(ReceiverCullingGpuTest, ScreenResolutionLightsLikeFullSizeFaces) {
     EXPECT_LT(far_off, full.size() / 4 / 300) << graph << ": pixels off by more than 25%";
   }
 }
+
+// One light of sixteen moves: few candidates change, so each resolve cleans the scratch
+// behind it instead of the next chunk filling it (docs/technique.md, "Receiver-driven
+// faces"), and when the light moves back its faces come out exactly as first drawn; then
+// all of them move, which takes the fill instead. A texel left dirty would keep the
+// nearer depth (atomic minima) or the moved light's tint.
+TEST_F(ReceiverCullingGpuTest, TheResolveLeavesTheScratchCleanForTheNextDraw) {
+  std::uint32_t light = 0;
+  while (light < scene_.lights.size() && !tinted_light(scene_, light)) ++light;
+  ASSERT_LT(light, scene_.lights.size()) << "the scene needs a light behind a pane";
+  load_hard(true, base::Json::object(), "data/graphs/layered-ssss.json");
+  const auto faces = [&] {
+    std::vector<std::vector<float>> depth;
+    std::vector<std::vector<std::uint32_t>> tint;
+    for (std::uint32_t face = 0; face < 6; ++face) {
+      depth.push_back(read_layer(6 * light + face));
+      tint.push_back(read_colour_layer(6 * light + face));
+    }
+    return std::pair{depth, tint};
+  };
+  counted_frame();
+  const auto first = faces();
+  EXPECT_EQ(counted_frame().rendered, 0u);
+  const glm::vec3 home = scene_.lights[light].position;
+  scene_.lights[light].position.y -= 0.5f;  // nearer the floor: nearer depths below it
+  const GpuCounts moved = counted_frame();
+  EXPECT_GT(moved.rendered, 0u);
+  EXPECT_LE(moved.rendered, 6u) << "only the moved light's faces";
+  scene_.lights[light].position = home;
+  EXPECT_EQ(counted_frame().rendered, moved.rendered);
+  const auto back = faces();
+  std::size_t tinted = 0;
+  for (std::uint32_t face = 0; face < 6; ++face) {
+    EXPECT_EQ(back.first[face], first.first[face]) << "depth of face " << face;
+    EXPECT_EQ(back.second[face], first.second[face]) << "tint of face " << face;
+    for (const std::uint32_t t : first.second[face]) tinted += t != 0xFFFFFFFFu ? 1 : 0;
+  }
+  EXPECT_GT(tinted, 0u) << "a pane tints some of the light's faces";
+  // Every light moves, down and back: most candidates change, so the resolves leave the
+  // scratch dirty and the next chunk fills what they dirtied.
+  const auto homes = scene_.lights;
+  for (auto& l : scene_.lights) l.position.y -= 0.5f;
+  counted_frame();
+  scene_.lights = homes;
+  counted_frame();
+  const auto again = faces();
+  for (std::uint32_t face = 0; face < 6; ++face) {
+    EXPECT_EQ(again.first[face], first.first[face]) << "depth of face " << face << ", all moved";
+    EXPECT_EQ(again.second[face], first.second[face]) << "tint of face " << face << ", all moved";
+  }
+}
