@@ -170,8 +170,12 @@ void PointShadowAtlasPass::prepare(fgvk::PrepareContext& context) {
   // Receiver culling needs the decision to pick which layers stay untouched, which only
   // the resolve shader (an r32f atlas) can follow; copies into a depth atlas cannot.
   // Faces share layers where nothing drawn for one can land in another's square: the
-  // compute rasteriser writes squares only, the hardware one clips to them.
-  settings_.pack = compute || context.gpu.features().shader_clip_distance;
+  // compute rasteriser writes squares only, the hardware one clips to them. The clip
+  // distances cost the hardware rasteriser's vertices (1.8 % of a table1 frame, H200), so
+  // it packs only where faces can be smaller than a layer: per-light resolution, or more
+  // face records than layers (sizes halve until every light's faces fit).
+  const bool may_share = settings_.adaptive_resolution || settings_.records > settings_.layers;
+  settings_.pack = compute || (may_share && context.gpu.features().shader_clip_distance);
   settings_.gpu_decides = compute && params_.receiver_culling &&
                           context.bindings.image(port::kDepth) != nullptr &&
                           atlas.format == VK_FORMAT_R32_SFLOAT;

@@ -97,14 +97,20 @@ void main() {
     out_uv = in_uv;
   }
 #endif
-  // A face smaller than the layer fills its square there (face_square.glsl); what lands
-  // beyond it is never read.
-  gl_Position = keep ? to_face_square(position, face.info) : vec4(0.0, 0.0, 2.0, 1.0);
 #ifdef CLIP_TO_SQUARE
+  // A face smaller than the layer fills its square there (face_square.glsl), clipped to it.
+  gl_Position = keep ? to_face_square(position, face.info) : vec4(0.0, 0.0, 2.0, 1.0);
   gl_ClipDistance[0] = position.w + position.x;
   gl_ClipDistance[1] = position.w - position.x;
   gl_ClipDistance[2] = position.w + position.y;
   gl_ClipDistance[3] = position.w - position.y;
+#else
+  // Faces do not share layers: a face smaller than the layer fills the square [0, share)
+  // of its uv, the face's [-w, w] mapped onto [-w, (2 share - 1) w]; what lands beyond it
+  // is never read.
+  float share = face_square_share(face.info);
+  if (share < 1.0) position.xy = (position.xy + position.w) * share - position.w;
+  gl_Position = keep ? position : vec4(0.0, 0.0, 2.0, 1.0);
 #endif
 #ifdef LAYERED
   gl_Layer = int(face.info.x);
