@@ -22,6 +22,7 @@
 #include "antumbra/gpu/shader_compiler.hpp"
 #include "antumbra/scene/light_motion.hpp"
 #include "antumbra/scene/scene_file.hpp"
+#include "atrium_scene.hpp"
 #include "common/gpu_scene.hpp"
 #include "common/shadow_data.hpp"
 #include "common/shadow_faces.hpp"
@@ -42,9 +43,7 @@ constexpr VkExtent2D kViewport{160, 90};
 constexpr std::uint32_t kFace = 256;
 
 scene::Scene atrium() {
-  auto loaded = scene::load_scene_file((source_dir() / "data/scenes/atrium.json").string());
-  if (!loaded.ok()) throw std::runtime_error("cannot load atrium.json");
-  return std::move(loaded.value());
+  return test::atrium_scene();
 }
 
 struct Counts {

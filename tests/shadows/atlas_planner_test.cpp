@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "antumbra/scene/scene_file.hpp"
+#include "atrium_scene.hpp"
 #include "common/shadow_faces.hpp"
 #include "point_shadow_atlas/point_shadow_atlas_pass.hpp"
 
@@ -20,11 +21,7 @@ using passes::AtlasSettings;
 namespace {
 
 scene::Scene atrium() {
-  auto loaded = scene::load_scene_file(
-      (std::filesystem::path(ANTUMBRA_TEST_SOURCE_DIR) / "data" / "scenes" / "atrium.json")
-          .string());
-  if (!loaded.ok()) throw std::runtime_error("cannot load atrium.json");
-  return std::move(loaded.value());
+  return test::atrium_scene();
 }
 
 glm::mat4 camera_of(const scene::Scene& s) {

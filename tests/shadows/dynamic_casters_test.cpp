@@ -11,6 +11,7 @@
 
 #include "antumbra/scene/light_motion.hpp"
 #include "antumbra/scene/scene_file.hpp"
+#include "atrium_scene.hpp"
 #include "common/shadow_faces.hpp"
 #include "point_shadow_atlas/atlas_planner.hpp"
 
@@ -51,10 +52,7 @@ AtlasSettings settings() {
 }
 
 scene::Scene atrium() {
-  auto loaded =
-      scene::load_scene_file(std::string(ANTUMBRA_TEST_SOURCE_DIR) + "/data/scenes/atrium.json");
-  if (!loaded.ok()) throw std::runtime_error(loaded.diagnostics().to_text());
-  return std::move(loaded.value());
+  return test::atrium_scene();
 }
 
 // Every atrium light has its six layers.

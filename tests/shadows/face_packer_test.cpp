@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include "antumbra/scene/scene_file.hpp"
+#include "atrium_scene.hpp"
 #include "point_shadow_atlas/atlas_planner.hpp"
 
 using namespace antumbra;
@@ -41,11 +42,7 @@ void expect_disjoint(const FacePacker& packer, std::uint32_t layers) {
 }
 
 scene::Scene atrium() {
-  auto loaded = scene::load_scene_file(
-      (std::filesystem::path(ANTUMBRA_TEST_SOURCE_DIR) / "data" / "scenes" / "atrium.json")
-          .string());
-  if (!loaded.ok()) throw std::runtime_error("cannot load atrium.json");
-  return std::move(loaded.value());
+  return test::atrium_scene();
 }
 
 }  // namespace
