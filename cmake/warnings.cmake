@@ -14,7 +14,18 @@ function(antumbra_target_defaults target)
     target_compile_options(${target} PRIVATE -fsanitize=address,undefined -fno-omit-frame-pointer)
     target_link_options(${target} PRIVATE -fsanitize=address,undefined)
   endif()
+  if(ANTUMBRA_TSAN)
+    target_compile_options(${target} PRIVATE -fsanitize=thread -fno-omit-frame-pointer)
+    target_link_options(${target} PRIVATE -fsanitize=thread)
+  endif()
 endfunction()
+
+if(ANTUMBRA_SANITIZE AND ANTUMBRA_TSAN)
+  message(FATAL_ERROR "ANTUMBRA_SANITIZE (ASan) and ANTUMBRA_TSAN cannot share a build")
+endif()
+if(ANTUMBRA_TSAN)
+  add_link_options(-fsanitize=thread)
+endif()
 
 if(ANTUMBRA_SANITIZE)
   # Link-time sanitizer runtime must reach every executable, including tests.
