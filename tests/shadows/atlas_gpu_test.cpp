@@ -69,11 +69,20 @@ TEST_F(AtlasGpuTest, PerFaceFallbackMatchesLayeredDraw) {
   EXPECT_EQ(layered, fallback);
 }
 
+namespace {
+
+// tests/data/shadows/atlas.json as parsed, for the compiler checks below to change.
+base::Result<fg::GraphDesc> atlas_graph() {
+  auto document = base::load_json_file((source_dir() / "tests/data/shadows/atlas.json").string());
+  if (!document.ok()) return document.diagnostics();
+  return fg::parse_graph(document.value());
+}
+
+}  // namespace
+
 // A compiler check (validate reports it without a device), located at the binding.
 TEST_F(AtlasGpuTest, TooSmallShadowDataIsACompilerError) {
-  auto document = base::load_json_file((source_dir() / "tests/data/shadows/atlas.json").string());
-  ASSERT_TRUE(document.ok());
-  auto graph = fg::parse_graph(document.value());
+  auto graph = atlas_graph();
   ASSERT_TRUE(graph.ok());
   for (auto& r : graph.value().resources) {
     if (r.name == "shadowData") r.buffer_size = 1024;
@@ -93,9 +102,7 @@ TEST_F(AtlasGpuTest, TooSmallShadowDataIsACompilerError) {
 // A face record names its layer in 11 bits (shadow_data.h): more layers are refused at the
 // atlas binding, with the limit, before anything is allocated.
 TEST_F(AtlasGpuTest, MoreLayersThanAFaceCanNameIsACompilerError) {
-  auto document = base::load_json_file((source_dir() / "tests/data/shadows/atlas.json").string());
-  ASSERT_TRUE(document.ok());
-  auto graph = fg::parse_graph(document.value());
+  auto graph = atlas_graph();
   ASSERT_TRUE(graph.ok());
   for (auto& r : graph.value().resources) {
     if (r.name == "atlas" || r.name == "shadowColour") {

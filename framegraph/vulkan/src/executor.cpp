@@ -378,28 +378,25 @@ void Executor::collect(FrameReport& report) {
   for (const auto& pass : state_->passes) pass->collect(report);
 }
 
-const BoundImage* Executor::image(std::string_view resource) const {
+const RealisedResource* Executor::realised(std::string_view resource) const {
   if (!state_) return nullptr;
   const int index = state_->plan.find_resource(resource);
-  if (index < 0) return nullptr;
-  const auto& rr = state_->resources[static_cast<std::size_t>(index)];
-  return rr.bound_image.image == VK_NULL_HANDLE ? nullptr : &rr.bound_image;
+  return index < 0 ? nullptr : &state_->resources[static_cast<std::size_t>(index)];
+}
+
+const BoundImage* Executor::image(std::string_view resource) const {
+  const RealisedResource* rr = realised(resource);
+  return rr == nullptr || rr->bound_image.image == VK_NULL_HANDLE ? nullptr : &rr->bound_image;
 }
 
 const gpu::Image* Executor::gpu_image(std::string_view resource) const {
-  if (!state_) return nullptr;
-  const int index = state_->plan.find_resource(resource);
-  if (index < 0) return nullptr;
-  const auto& rr = state_->resources[static_cast<std::size_t>(index)];
-  return rr.image ? &rr.image : nullptr;
+  const RealisedResource* rr = realised(resource);
+  return rr != nullptr && rr->image ? &rr->image : nullptr;
 }
 
 const gpu::Buffer* Executor::gpu_buffer(std::string_view resource) const {
-  if (!state_) return nullptr;
-  const int index = state_->plan.find_resource(resource);
-  if (index < 0) return nullptr;
-  const auto& rr = state_->resources[static_cast<std::size_t>(index)];
-  return rr.buffer ? &rr.buffer : nullptr;
+  const RealisedResource* rr = realised(resource);
+  return rr != nullptr && rr->buffer ? &rr->buffer : nullptr;
 }
 
 std::uint64_t Executor::resource_bytes() const {

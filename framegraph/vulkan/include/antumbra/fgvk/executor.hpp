@@ -126,6 +126,8 @@ class Executor {
 
  private:
   struct State;
+  // The live resource named `resource` (image(), gpu_image(), gpu_buffer()), or null.
+  [[nodiscard]] const struct RealisedResource* realised(std::string_view resource) const;
   // Index of the live resource `resource` may take over, or -1.
   [[nodiscard]] int live_match(const fg::PlanResource& resource) const;
   // The steps of load(), in order; each works on the state being built.
