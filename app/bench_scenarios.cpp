@@ -313,8 +313,9 @@ void fit_shadow_resources(fg::GraphDesc& graph, int lights, unsigned face) {
       // casts its shadow however few layers there are (docs/technique.md, "Packed faces").
       const std::uint64_t records =
           std::max(6 * static_cast<std::uint64_t>(lights), static_cast<std::uint64_t>(layers));
-      const std::uint64_t bytes = 16 + 64 * 1024 + 80 * records;
-      r.buffer_size = (bytes + 255) / 256 * 256;
+      // Exactly that many: a spare record beyond the layers would make the hardware
+      // rasteriser pack faces (and pay for clip distances) where they never share a layer.
+      r.buffer_size = 16 + 64 * 1024 + 80 * records;
     }
   }
 }

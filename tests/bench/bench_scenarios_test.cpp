@@ -80,6 +80,11 @@ TEST(BenchScenarios, FitShadowResourcesUsesTheFaceAndKeepsTheMinMapsFactor) {
   EXPECT_EQ(colour.size.width, 256u);
   EXPECT_EQ(min_depth.size.width, 32u);  // the graph's 1024 / 128 = 8 kept
   EXPECT_EQ(min_depth.layers, 24u);
+  // One face record per layer and not one more: a spare record makes the hardware
+  // rasteriser pack faces and pay for clip distances (shadow_data.h: header, 1024 lights,
+  // 80-byte records).
+  const auto& data = resources[static_cast<std::size_t>(graph->find_resource("shadowData"))];
+  EXPECT_EQ(data.buffer_size, 16u + 64u * 1024u + 80u * 24u);
 }
 
 TEST(BenchScenarios, MovingTableHasThreeTechniquesPerLightCountOnBothRasterisers) {
