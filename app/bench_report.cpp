@@ -107,6 +107,7 @@ nlohmann::json results_json(const std::vector<BenchResult>& results) {
                          {"detail", r.detail},
                          {"frame", stats_json(r.frame)},
                          {"passes", passes}});
+    if (!r.notes.empty()) scenarios.back()["notes"] = r.notes;
     if (!r.steps.empty()) {
       auto& steps = scenarios.back()["steps"];
       steps = nlohmann::json::array();
@@ -119,6 +120,24 @@ nlohmann::json results_json(const std::vector<BenchResult>& results) {
     }
   }
   return scenarios;
+}
+
+nlohmann::json compact_details(const nlohmann::json& details) {
+  if (!details.is_object()) return details.is_array() ? nlohmann::json::object() : details;
+  constexpr std::size_t kSmallObject = 1024;  // bytes of JSON kept whole (faceSizes)
+  auto out = nlohmann::json::object();
+  for (const auto& [key, value] : details.items()) {
+    if (value.is_array()) {
+      std::string name = key;  // appended: operator+ makes GCC 12 warn falsely (-Wrestrict)
+      name += "Count";
+      out[name] = value.size();
+    } else if (value.is_object() && value.dump().size() > kSmallObject) {
+      out[key] = compact_details(value);
+    } else {
+      out[key] = value;
+    }
+  }
+  return out;
 }
 
 nlohmann::json bench_json(const BenchRun& run, const std::vector<BenchResult>& results) {

@@ -46,7 +46,15 @@ struct BenchResult {
   TimingStats frame;  // per-frame sum of the passes
   // `bench --steps`: the steps inside passes (type: the pass), not part of the frame's sum.
   std::vector<PassStats> steps;
+  // What the passes reported about the last timed frame, e.g. SHD010's faces and texels
+  // drawn and SHD005's lights drawn smaller (bench.json's "notes": code, pass, severity,
+  // message, details with lists shortened to their lengths: compact_details).
+  nlohmann::json notes = nlohmann::json::array();
 };
+
+// A pass message's details for bench.json: scalars and small objects as they are, each
+// list as "<key>Count" (SHD002 lists every unshadowed light: thousands in the city).
+nlohmann::json compact_details(const nlohmann::json& details);
 
 // RFC 4180: a field with a comma, quote or line break is quoted, quotes doubled.
 std::string csv_field(const std::string& text);

@@ -54,6 +54,9 @@ inline constexpr const char* kSunScene = "courtyard-sun.json";
 inline constexpr int kSunSceneLights = 5;
 // The "dynamic" table's scene: the atrium with moving carts and a ball.
 inline constexpr const char* kDynamicScene = "atrium-dynamic.json";
+// The "many" table's 4096-light scene: 16 x 16 atria (issue 32: every light shadowed).
+inline constexpr const char* kCityScene = "city.json";
+inline constexpr int kCityLights = 4096;
 // The "materials" table's textured scene: the atrium with alpha-tested lattice screens.
 inline constexpr const char* kCutoutScene = "atrium-cutouts.json";
 

@@ -137,6 +137,13 @@ void measure(runtime::RenderSession& session, const BenchOptions& options,
   for (const auto& step : session.step_timings()) {
     r.steps.push_back({step.name, step.type, summarize(step.gpu_samples), 0.0});
   }
+  for (const auto& m : session.last_report().messages()) {
+    r.notes.push_back({{"code", m.code},
+                       {"pass", m.pass},
+                       {"severity", base::to_string(m.severity)},
+                       {"message", m.message},
+                       {"details", compact_details(nlohmann::json::parse(m.details.dump()))}});
+  }
 }
 
 // Scenes by file name under data/scenes/, each loaded once per run.

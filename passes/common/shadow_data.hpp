@@ -39,6 +39,14 @@ inline constexpr std::size_t shadow_data_bytes(std::uint32_t atlas_layers) {
   return kShadowFacesOffset + sizeof(ShadowFace) * atlas_layers;
 }
 
+// Bytes of the header and the first `lights` light entries: what a frame with that many
+// lights needs copied of the lights array (lookups read only lights below the header's
+// count), so a scene of 16 lights does not move 4096 entries a frame.
+inline constexpr std::size_t shadow_lights_bytes(std::size_t lights) {
+  return kShadowLightsOffset +
+         sizeof(ShadowLight) * std::min<std::size_t>(lights, kMaxShadowLights);
+}
+
 // Face records a shadowData buffer of `bytes` holds for an atlas of `layers` layers: at
 // least one per layer (a compiler check), at most six per light (face_packer.hpp: faces
 // smaller than a layer share layers, so records may outnumber the layers).

@@ -1,6 +1,7 @@
 #include "face_decision.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cstring>
 #include <initializer_list>
 
@@ -135,8 +136,15 @@ void FaceDecision::reset(fgvk::ExecuteContext& context, VkBuffer staging, const 
   const VkCommandBuffer cmd = context.cmd;
   after_all(cmd, {shadow_in_, needed_, content_, args_, stats_},
             VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
-  const VkBufferCopy region{0, 0, shadow_data_bytes(layers_)};
-  vkCmdCopyBuffer(cmd, staging, shadow_in_, 1, &region);
+  // The header and the lights any frame has had (the staging's entries past them are zero
+  // or never read), then the face records.
+  lights_high_ = std::max<std::size_t>(lights_high_, frame.lights.size());
+  const std::array<VkBufferCopy, 2> regions{
+      VkBufferCopy{0, 0, shadow_lights_bytes(lights_high_)},
+      VkBufferCopy{kShadowFacesOffset, kShadowFacesOffset,
+                   shadow_data_bytes(layers_) - kShadowFacesOffset}};
+  vkCmdCopyBuffer(cmd, staging, shadow_in_, static_cast<std::uint32_t>(regions.size()),
+                  regions.data());
   vkCmdFillBuffer(cmd, needed_, 0, VK_WHOLE_SIZE, 0u);
   vkCmdFillBuffer(cmd, stats_, 0, VK_WHOLE_SIZE, 0u);
   if (frame.clear_all || !content_cleared_) {
@@ -196,6 +204,7 @@ void FaceDecision::record(fgvk::ExecuteContext& context, const AtlasFrame& frame
   push.chunks = layout.chunks();
   push.fill_first = layout.fill_first;
   push.header_vec4s = static_cast<std::uint32_t>(kShadowFacesOffset / 16);
+  push.copy_vec4s = static_cast<std::uint32_t>(shadow_lights_bytes(lights_high_) / 16);
   push.resolve_group = shared::kResolveGroup;
   if (receivers_) {
     const fgvk::BoundImage& depth = context.bindings.required_image(port::kDepth);
@@ -210,7 +219,7 @@ void FaceDecision::record(fgvk::ExecuteContext& context, const AtlasFrame& frame
   }
   bind(context, decide_, slot);
   vkCmdPushConstants(cmd, decide_.layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
-  vkCmdDispatch(cmd, group_count(std::max(push.header_vec4s, layers), shared::kDecideGroup), 1, 1);
+  vkCmdDispatch(cmd, group_count(std::max(push.copy_vec4s, layers), shared::kDecideGroup), 1, 1);
   barriers(cmd, {list_, args_, content_, stats_}, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, kStorage,
            VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT,
            VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT);

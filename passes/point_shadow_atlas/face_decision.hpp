@@ -91,6 +91,7 @@ class FaceDecision {
   ComputePipeline receivers_pipeline_;
   ComputePipeline decide_;
   std::uint32_t layers_ = 0;
+  std::size_t lights_high_ = 0;  // the most lights a frame has had (reset's copy)
   std::uint32_t list_capacity_ = 0;
   std::uint32_t args_capacity_ = 0;
   gpu::Buffer shadow_in_;  // device copy of the staging data (read by every tile)

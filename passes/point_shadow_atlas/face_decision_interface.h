@@ -45,9 +45,9 @@ ANTUMBRA_PUSH_CONSTANTS(DecisionPush) {
   uint chunk_faces;    // records per rasterisation chunk (resolve list per chunk)
   uint chunks;         // chunks this frame; the fill list's arguments follow theirs
   uint fill_first;     // 0: no fill; else 1 + the record of layer 0's fill (far depth)
-  uint header_vec4s;   // uvec4s before the face records (header and lights), copied as is
+  uint header_vec4s;   // uvec4s before the face records (header and the lights array)
   uint resolve_group;  // the resolve's workgroup side: a chunk's dispatch covers its largest face
-  uint unused1;
+  uint copy_vec4s;     // of those, the header and the lights frames have had: copied as is
   uint unused2;
 };
 

@@ -143,10 +143,11 @@ fg::PassDesc PointShadowAtlasPass::describe() {
        .access = Access::transfer_dst,
        .stage = Stage::transfer,
        .description =
-           "Header, ShadowLight per scene light and ShadowFace records "
-           "(passes/interface/shared/shadow_data.h); at least shadow_data_bytes(layers), one "
-           "record per layer. Faces smaller than a layer share layers, so more records "
-           "(up to 6 per light) let more lights cast shadows than the layers hold whole faces."},
+           "Header, ShadowLight for each of up to 4096 scene lights and ShadowFace records "
+           "(passes/interface/shared/shadow_data.h); at least shadow_data_bytes(layers) = 16 + "
+           "64 * 4096 + 80 * layers bytes, one record per layer. Faces smaller than a layer "
+           "share layers, so more records (80 bytes each, up to 6 per light) let more lights "
+           "cast shadows than the layers hold whole faces."},
   };
   const auto& table = param_table();
   desc.params = table.descs();

@@ -402,6 +402,7 @@ void PointShadowAtlasPass::upload(fgvk::ExecuteContext& context, const AtlasFram
     slot.staging = gpu::Buffer::create(context.gpu, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                                        gpu::MemoryUsage::upload,
                                        context.pass.name + ".shadowData.staging" + suffix);
+    std::memset(slot.staging.mapped(), 0, bytes);  // lights past the high-water mark: none
     slot.draws = gpu::Buffer::create(
         context.gpu, sizeof(FaceDraw) * std::max<std::uint32_t>(settings_.records, 1),
         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, gpu::MemoryUsage::upload,
@@ -410,7 +411,10 @@ void PointShadowAtlasPass::upload(fgvk::ExecuteContext& context, const AtlasFram
   std::byte* out = slot.staging.mapped();
   std::memcpy(out, &frame.header, sizeof frame.header);
   auto* lights = reinterpret_cast<ShadowLight*>(out + kShadowLightsOffset);
-  std::fill(lights, lights + kMaxShadowLights, ShadowLight{});
+  // Entries past this frame's lights are cleared up to the most lights any frame had; the
+  // rest of the 4096 were never written (zero since the staging was made).
+  lights_high_ = std::max(lights_high_, frame.lights.size());
+  std::fill(lights + frame.lights.size(), lights + lights_high_, ShadowLight{});
   std::copy(frame.lights.begin(), frame.lights.end(), lights);
   // params.w = 1: the light's colour layers hold translucent tints (else: untinted,
   // consumers must not read them; they are never cleared, which saves a colour clear
@@ -422,9 +426,11 @@ void PointShadowAtlasPass::upload(fgvk::ExecuteContext& context, const AtlasFram
               frame.faces.size() * sizeof(ShadowFace));
   // The compute rasteriser's decision publishes it (after deciding info.z/w).
   if (params_.rasterizer == ShadowRasterizer::hardware) {
-    const VkBufferCopy region{0, 0, bytes};
+    const std::array<VkBufferCopy, 2> regions{
+        VkBufferCopy{0, 0, shadow_lights_bytes(lights_high_)},
+        VkBufferCopy{kShadowFacesOffset, kShadowFacesOffset, bytes - kShadowFacesOffset}};
     vkCmdCopyBuffer(context.cmd, slot.staging, context.bindings.buffer(port::kShadowData)->buffer,
-                    1, &region);
+                    static_cast<std::uint32_t>(regions.size()), regions.data());
   }
 
   // Entries grouped by how they are drawn (draw_layered draws each group in one call).

@@ -112,6 +112,8 @@ class PointShadowAtlasPass final : public fgvk::Pass {
   bool colour_map_ = false;   // `colour` bound
   bool colour_ = false;       // ... and translucent casters tint it
   std::vector<bool> tinted_;  // per scene light: its colour layers are valid (params.w = 1)
+  // The most lights a frame has uploaded: entries up to it are copied each frame (upload).
+  std::size_t lights_high_ = 0;
   std::vector<scene::Aabb> translucent_bounds_;
   std::uint64_t translucent_version_ = ~0ull;
   std::uint64_t drawing_key_ = 0;  // settings, biases and shader code that shape the faces

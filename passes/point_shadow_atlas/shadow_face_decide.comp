@@ -43,7 +43,7 @@ const uint kFaceVec4s = ANTUMBRA_SHADOW_FACE_VEC4S;  // ShadowFace: mat4 view_pr
 
 void main() {
   uint i = gl_GlobalInvocationID.x;
-  if (i < header_vec4s) words_out[i] = words_in[i];
+  if (i < copy_vec4s) words_out[i] = words_in[i];  // lights past them are never read
   if (i >= layers) return;
   uint face = header_vec4s + i * kFaceVec4s;
   for (uint k = 0u; k < 4u; ++k) words_out[face + k] = words_in[face + k];

@@ -117,6 +117,23 @@ TEST(ResultsJson, CarriesTheSameNumbers) {
   EXPECT_EQ(json[1]["status"], "invalid");
 }
 
+// The passes' notes about the last frame go into bench.json with their lists shortened to
+// lengths (SHD002 names every unshadowed light), counts and small objects kept.
+TEST(ResultsJson, NotesKeepCountsAndShortenLists) {
+  auto results = two_results();
+  const auto details = nlohmann::json::parse(
+      R"({"rendered": 20, "texels": 20971520, "faceSizes": {"1024": 16},
+          "lights": ["a", "b", "c"], "nested": {"big": [1, 2]}})");
+  EXPECT_EQ(compact_details(details), nlohmann::json::parse(R"({"rendered": 20, "texels": 20971520,
+                                      "faceSizes": {"1024": 16}, "lightsCount": 3,
+                                      "nested": {"big": [1, 2]}})"));
+  results[0].notes.push_back({{"code", "SHD010"}, {"details", compact_details(details)}});
+  const auto json = results_json(results);
+  EXPECT_EQ(json[0]["notes"][0]["details"]["lightsCount"], 3);
+  EXPECT_EQ(json[0]["notes"][0]["details"]["texels"], 20971520);
+  EXPECT_FALSE(json[1].contains("notes"));  // none reported: no key
+}
+
 // `bench --steps`: steps follow the frame row, typed by their pass, and stay out of the
 // frame's sum; the JSON carries them as "steps" (absent without them).
 TEST(LongCsv, StepsFollowTheFrameRowTypedByTheirPass) {

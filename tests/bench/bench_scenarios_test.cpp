@@ -81,10 +81,29 @@ TEST(BenchScenarios, FitShadowResourcesUsesTheFaceAndKeepsTheMinMapsFactor) {
   EXPECT_EQ(min_depth.size.width, 32u);  // the graph's 1024 / 128 = 8 kept
   EXPECT_EQ(min_depth.layers, 24u);
   // One face record per layer and not one more: a spare record makes the hardware
-  // rasteriser pack faces and pay for clip distances (shadow_data.h: header, 1024 lights,
+  // rasteriser pack faces and pay for clip distances (shadow_data.h: header, 4096 lights,
   // 80-byte records).
   const auto& data = resources[static_cast<std::size_t>(graph->find_resource("shadowData"))];
-  EXPECT_EQ(data.buffer_size, 16u + 64u * 1024u + 80u * 24u);
+  EXPECT_EQ(data.buffer_size, 16u + 64u * 4096u + 80u * 24u);
+}
+
+TEST(BenchScenarios, ManyTableShadowsTheDistrictAndTheCityOnTheComputeRasterisers) {
+  const auto many = select_scenarios(builtin_scenarios(1.0), {"many/"});
+  ASSERT_EQ(many.size(), 3u);
+  const auto& some = named(many, "many/ssss-11/1080p/1024l-64m/compute/screen/vis");
+  const auto& all = named(many, "many/ssss-11/1080p/1024l-1024m/compute/screen/vis");
+  const auto& city = named(many, "many/ssss-11/1080p/4096l-1024m/compute/screen/vis");
+  EXPECT_EQ(some.scene, kDistrictScene);
+  EXPECT_EQ(some.moving, 64);
+  EXPECT_EQ(all.moving, 1024);
+  EXPECT_EQ(city.scene, kCityScene);
+  EXPECT_EQ(city.lights, 4096);
+  EXPECT_EQ(city.moving, 1024);
+  EXPECT_EQ(city.rasterizer, "compute");
+  // --quick keeps the district's share of the lights for both scenes.
+  const auto quick = select_scenarios(builtin_scenarios(0.25, kQuickDistrict), {"many/"});
+  ASSERT_EQ(quick.size(), 3u);
+  EXPECT_EQ(named(quick, "many/ssss-11/135p/1024l-256m/compute/screen/vis").scene, kCityScene);
 }
 
 TEST(BenchScenarios, MovingTableHasThreeTechniquesPerLightCountOnBothRasterisers) {
@@ -143,7 +162,7 @@ TEST(BenchScenarios, MovingTableHasThreeTechniquesPerLightCountOnBothRasterisers
   // The other tables keep still lights in the atrium (the dynamic table's has moving
   // objects).
   for (const auto& s : builtin_scenarios(1.0)) {
-    if (s.table == "moving" || s.table == "materials") continue;
+    if (s.table == "moving" || s.table == "materials" || s.table == "many") continue;
     EXPECT_EQ(s.moving, 0) << s.name;
     const char* scene = s.table == "dynamic" ? kDynamicScene
                         : s.table == "sun"   ? kSunScene
@@ -191,7 +210,7 @@ TEST(BenchScenarios, QuickDistrictRowsAreSmallerAndSayWhatTheyHold) {
   EXPECT_EQ(district.moving, kQuickDistrict.moving);
   EXPECT_EQ(named(plain, "moving/ssss-11/270p/1024l").moving, kDistrictMovingLights);
   for (std::size_t i = 0; i < quick.size(); ++i) {
-    if (quick[i].scene == kDistrictScene) continue;
+    if (quick[i].scene == kDistrictScene || quick[i].scene == kCityScene) continue;
     EXPECT_EQ(quick[i].name, plain[i].name);
     EXPECT_EQ(quick[i].face, plain[i].face);
   }

@@ -94,7 +94,7 @@ TEST_F(AtlasGpuTest, TooSmallShadowDataIsACompilerError) {
   ASSERT_FALSE(plan.ok());
   const base::Diagnostic* d = plan.diagnostics().find("SHD001");
   ASSERT_NE(d, nullptr) << plan.diagnostics().to_text();
-  EXPECT_NE(d->message.find("73232"), std::string::npos) << d->message;
+  EXPECT_NE(d->message.find("269840"), std::string::npos) << d->message;
   EXPECT_EQ(d->pointer.rfind("/passes/", 0), 0u) << d->pointer;
   EXPECT_GT(d->line, 0);
 }

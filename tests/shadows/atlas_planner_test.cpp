@@ -209,7 +209,7 @@ TEST(PointShadowAtlasReflection, PortsAndParams) {
     ASSERT_NE(p, nullptr) << name;
     EXPECT_FALSE(p->description.empty()) << name;
   }
-  EXPECT_EQ(passes::shadow_data_bytes(96), 73232u);
+  EXPECT_EQ(passes::shadow_data_bytes(96), 269840u);
 }
 
 TEST(AtlasPlanner, LayersAreAllocatedByLightType) {

@@ -168,3 +168,38 @@ TEST(FacePackerPlanner, LightsThatFitNowhereAreUnshadowedFromTheEnd) {
   EXPECT_EQ(g.lights[0].projection.y, 16.0f);
   EXPECT_EQ(g.unshadowed.front(), scene.lights[1].name);
 }
+
+// Every light a scene may have casts its shadow (ANTUMBRA_MAX_SHADOW_LIGHTS = 4096, the
+// scene's maximum): 4096 lights in 2046 layers of 512^2 with a record for each face get
+// smaller faces and none is left without (the city's case; before, lights past 1024 had no
+// entry in shadowData at all).
+TEST(FacePackerPlanner, FourThousandLightsAllGetFaces) {
+  auto scene = atrium();
+  const auto first = scene.lights.front();
+  scene.lights.clear();
+  for (int i = 0; i < 4096; ++i) {
+    auto light = first;
+    light.name = std::to_string(i);
+    light.name.insert(0, 1, 'l');  // not operator+: GCC 12 warns falsely (-Wrestrict)
+    const int row = i / 64;        // a 64 x 64 grid, 2 m apart
+    light.position +=
+        glm::vec3(static_cast<float>(i % 64) * 2.0f, 0.0f, static_cast<float>(row) * 2.0f);
+    scene.lights.push_back(light);
+  }
+  passes::AtlasSettings s;
+  s.layers = 2046;
+  s.face_size = 512;
+  s.records = 6 * 4096;
+  passes::AtlasPlanner planner;
+  const auto& f = planner.plan(scene, scene.camera.view_projection(16.0f / 9.0f), 1, 0, s);
+  ASSERT_EQ(f.lights.size(), 4096u);
+  EXPECT_TRUE(f.unshadowed.empty());
+  EXPECT_EQ(f.lights[4095].params.z, 6.0f * 4095.0f);
+  // 24576 faces of 512^2 would take 24576 layers: the largest halve, the last lights first,
+  // until they fit (the first lights keep 256^2, four a layer; the rest 128^2, sixteen).
+  EXPECT_EQ(f.lights[0].projection.y, 256.0f);
+  EXPECT_EQ(f.lights[4095].projection.y, 128.0f);
+  EXPECT_EQ(f.degraded.size(), 4096u);
+  EXPECT_LE(f.stats.layers_used, 2046u);
+  EXPECT_GE(f.stats.layers_used, 2040u);  // and the atlas is used, not left half empty
+}

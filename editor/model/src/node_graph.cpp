@@ -38,7 +38,7 @@ std::string size_text(const Json& size) {
   return size.dump();
 }
 
-// "rgba16f viewport/2 x96", "buffer 4112 bytes"; "" when the file does not declare it.
+// "rgba16f viewport/2 x96", "buffer 16400 bytes"; "" when the file does not declare it.
 std::string resource_text(const Json& resources, const std::string& name) {
   if (!resources.is_object() || !resources.contains(name)) return "undeclared resource";
   const Json& r = resources[name];

@@ -4,7 +4,7 @@
 #define ANTUMBRA_LIMITS_H
 
 // Scene lights with an entry in shadowData and the layer table (indexed by scene light).
-#define ANTUMBRA_MAX_SHADOW_LIGHTS 1024
+#define ANTUMBRA_MAX_SHADOW_LIGHTS 4096
 // Screen shadow layers: one R32UI bit each in the penumbra pass's hard-shadow bits.
 #define ANTUMBRA_MAX_LAYERS 32
 // layer_of[] of a light without a screen layer (no shadow, or over the cap under the

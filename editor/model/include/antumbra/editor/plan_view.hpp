@@ -41,7 +41,7 @@ struct PlanViewPass {
 struct PlanViewLifetime {
   std::string resource;
   std::string kind;    // "image" or "buffer"
-  std::string detail;  // "rgba16f viewport/2 x1" or "4112 bytes"
+  std::string detail;  // "rgba16f viewport/2 x1" or "16400 bytes"
   int first = -1;      // index into PlanView::passes of its first use
   int last = -1;       // and its last
   bool persistent = false;
