@@ -56,10 +56,10 @@ Scenario make(const std::string& table, const Technique& t, int kernel, unsigned
   if (kernel > 0) s.overrides.push_back({t.kernel_pass, "kernel", std::to_string(kernel)});
   // Tables 1 and 2 re-render every shadow face every frame, as the seed's dynamic-light
   // measurements did; the many-light table measures the cached steady state. The moving
-  // table caches too: what stands still stays cached, a moving light's faces change
+  // and many tables cache too: what stands still stays cached, a moving light's faces change
   // their matrices and so redraw themselves.
-  s.shadow_cache = table == "lights" || table == "moving" || table == "materials" ||
-                   table == "penumbra" || table == "dynamic";
+  s.shadow_cache = table == "lights" || table == "moving" || table == "many" ||
+                   table == "materials" || table == "penumbra" || table == "dynamic";
   // No shadow atlas to pin in the unshadowed and the distance-field graphs.
   if (std::string(t.graph) != "lighting.json" && std::string(t.graph) != "sdf.json") {
     s.overrides.push_back({"point-shadow-atlas", "cache", s.shadow_cache});

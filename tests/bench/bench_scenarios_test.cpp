@@ -100,6 +100,9 @@ TEST(BenchScenarios, ManyTableShadowsTheDistrictAndTheCityOnTheComputeRasteriser
   EXPECT_EQ(city.lights, 4096);
   EXPECT_EQ(city.moving, 1024);
   EXPECT_EQ(city.rasterizer, "compute");
+  // Cached: still lights keep their faces, moving ones redraw theirs (as the moving table).
+  EXPECT_TRUE(some.shadow_cache);
+  EXPECT_TRUE(city.shadow_cache);
   // --quick keeps the district's share of the lights for both scenes.
   const auto quick = select_scenarios(builtin_scenarios(0.25, kQuickDistrict), {"many/"});
   ASSERT_EQ(quick.size(), 3u);
