@@ -1,5 +1,6 @@
 #include "antumbra/gpu/memory.hpp"
 
+#include <optional>
 #include <source_location>
 
 #include "antumbra/gpu/vk_check.hpp"
@@ -18,9 +19,12 @@ UsageFlags flags_for(MemoryUsage usage) {
     case MemoryUsage::gpu_only:
       return {VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT};
     case MemoryUsage::upload:
-      // Coherent so writes need no flush; device-local when a BAR/unified heap offers it.
+      // Coherent so writes need no flush; device-local when a BAR/unified heap offers it:
+      // shaders read per-frame records from it (face records once per workgroup), which
+      // over PCIe from host memory cost time that also varied with where blocks landed.
       return {VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT,
-              VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT};
+              VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT |
+                  VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT};
     case MemoryUsage::readback:
       return {VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT,
               VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT |
@@ -46,20 +50,28 @@ Allocator::~Allocator() {
   }
 }
 
-std::uint32_t Allocator::find_memory_type(std::uint32_t type_bits, MemoryUsage usage) const {
+std::optional<std::uint32_t> choose_memory_type(const VkPhysicalDeviceMemoryProperties& properties,
+                                                std::uint32_t type_bits, MemoryUsage usage,
+                                                bool only_required) {
   const UsageFlags flags = flags_for(usage);
   for (VkMemoryPropertyFlags wanted : {flags.preferred, flags.required}) {
-    for (std::uint32_t i = 0; i < properties_.memoryTypeCount; ++i) {
+    if (only_required && wanted != flags.required) continue;
+    for (std::uint32_t i = 0; i < properties.memoryTypeCount; ++i) {
       const bool allowed = (type_bits & (1u << i)) != 0;
-      if (allowed && (properties_.memoryTypes[i].propertyFlags & wanted) == wanted) return i;
+      if (allowed && (properties.memoryTypes[i].propertyFlags & wanted) == wanted) return i;
     }
   }
   // Device-local is a preference, not a requirement, on hosts with no such type.
   if (usage == MemoryUsage::gpu_only) {
-    for (std::uint32_t i = 0; i < properties_.memoryTypeCount; ++i) {
+    for (std::uint32_t i = 0; i < properties.memoryTypeCount; ++i) {
       if ((type_bits & (1u << i)) != 0) return i;
     }
   }
+  return std::nullopt;
+}
+
+std::uint32_t Allocator::find_memory_type(std::uint32_t type_bits, MemoryUsage usage) const {
+  if (const auto type = choose_memory_type(properties_, type_bits, usage)) return *type;
   throw VulkanError(VK_ERROR_OUT_OF_DEVICE_MEMORY, "find_memory_type (no suitable type)",
                     SourceLocation::current());
 }
@@ -93,6 +105,24 @@ VkDeviceMemory Allocator::allocate_memory(VkDeviceSize size, std::uint32_t type,
 Allocation Allocator::allocate(const VkMemoryRequirements& requirements, MemoryUsage usage,
                                ResourceTiling tiling) {
   const std::uint32_t type = find_memory_type(requirements.memoryTypeBits, usage);
+  try {
+    return allocate_in(type, requirements, tiling);
+  } catch (const VulkanError& e) {
+    // The preferred type's heap can be small (a 256 MiB BAR without resizable BAR): when it
+    // is full, the first type with only the required properties.
+    const std::uint32_t plain = required_type(requirements.memoryTypeBits, usage);
+    if (e.result() != VK_ERROR_OUT_OF_DEVICE_MEMORY || plain == type) throw;
+    return allocate_in(plain, requirements, tiling);
+  }
+}
+
+std::uint32_t Allocator::required_type(std::uint32_t type_bits, MemoryUsage usage) const {
+  if (const auto type = choose_memory_type(properties_, type_bits, usage, true)) return *type;
+  return find_memory_type(type_bits, usage);
+}
+
+Allocation Allocator::allocate_in(std::uint32_t type, const VkMemoryRequirements& requirements,
+                                  ResourceTiling tiling) {
   Allocation allocation;
   allocation.memory_type = type;
   allocation.size = requirements.size;

@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include <vulkan/vulkan.h>
@@ -39,6 +40,14 @@ struct Allocation {
   [[nodiscard]] bool valid() const { return memory != VK_NULL_HANDLE; }
 };
 
+// The memory type among type_bits for usage: the first with usage's preferred properties
+// (upload: device-local as well, where a BAR heap offers it), else the first with the
+// required ones; only_required skips the preference (Allocator's fallback when the preferred
+// heap is full). nullopt: none fits.
+std::optional<std::uint32_t> choose_memory_type(const VkPhysicalDeviceMemoryProperties& properties,
+                                                std::uint32_t type_bits, MemoryUsage usage,
+                                                bool only_required = false);
+
 class Allocator {
  public:
   static constexpr VkDeviceSize kBlockSize = VkDeviceSize{64} << 20;
@@ -65,6 +74,11 @@ class Allocator {
   [[nodiscard]] VkDeviceSize allocated_bytes() const { return allocated_bytes_; }
 
  private:
+  Allocation allocate_in(std::uint32_t type, const VkMemoryRequirements& requirements,
+                         ResourceTiling tiling);
+  // The first type among type_bits with usage's required properties (no preferences).
+  [[nodiscard]] std::uint32_t required_type(std::uint32_t type_bits, MemoryUsage usage) const;
+
   struct Block {
     VkDeviceMemory memory = VK_NULL_HANDLE;
     std::byte* mapped = nullptr;
