@@ -107,7 +107,12 @@ TEST(SceneFormat, EveryValidSceneFileValidatesAgainstTheSchema) {
     const auto problems = test::schema_problems(schema, json::parse(read_file(file)));
     EXPECT_TRUE(problems.empty()) << file << ": " << problems.front();
   }
-  EXPECT_EQ(shipped, 5u) << "every scene in data/scenes loads";
+  std::size_t in_folder = 0;  // every scene file shipped, loadable or not
+  for (const auto& entry : fs::directory_iterator(kRoot / "data" / "scenes")) {
+    in_folder += entry.path().extension() == ".json" ? 1 : 0;
+  }
+  EXPECT_GE(in_folder, 6u);  // the atrium and two variants, courtyard, district, city
+  EXPECT_EQ(shipped, in_folder) << "every scene in data/scenes loads";
   EXPECT_GE(files.size(), 12u);
 }
 
