@@ -8,6 +8,12 @@ group, so a run cut short still returns what it measured.
 
 A group prefixed with 'SIDE+SIDE@' runs only those sides (a pair whose sides did not both run
 a group simply has no rows for it), so one call can hold groups that matter to one pair only.
+
+  --as NEW=SIDE        NEW runs SIDE's program (for the same program under another --env)
+  --env SIDE:VAR=VALUE  VAR=VALUE in SIDE's environment (repeatable)
+
+The last lines printed are each pair's frame and top-level pass ratios, so that a call whose
+files do not all come back still shows the result.
 """
 import argparse, csv, os, shutil, statistics, subprocess, sys, time
 
@@ -18,6 +24,8 @@ ap.add_argument("--group", action="append", required=True)
 ap.add_argument("--rounds", type=int, default=2)
 ap.add_argument("--budget", type=float, default=1e9)
 ap.add_argument("--tag", default="ab")
+ap.add_argument("--as", dest="aliases", action="append", default=[])
+ap.add_argument("--env", dest="envs", action="append", default=[])
 args, bench = ap.parse_known_args()
 if bench and bench[0] == "--":
     bench = bench[1:]
@@ -33,6 +41,12 @@ env["LD_LIBRARY_PATH"] = os.path.join(here, "lib") + (":" + env["LD_LIBRARY_PATH
 icd = "/usr/local/nvidia/share/vulkan/icd.d/nvidia_icd.json"
 if not env.get("VK_DRIVER_FILES") and os.path.exists(icd):
     env["VK_DRIVER_FILES"] = icd
+program = dict(a.split("=", 1) for a in args.aliases)  # side -> the side whose program it runs
+side_env = {}
+for e in args.envs:
+    side, assignment = e.split(":", 1)
+    var, value = assignment.split("=", 1)
+    side_env.setdefault(side, {})[var] = value
 rows = {s: [] for s in sides}  # side -> list of (round, scenario, pass, type, median)
 start = time.time()
 log = open(os.path.join(out, f"{args.tag}-log.txt"), "w")
@@ -47,9 +61,11 @@ def say(msg):
 
 def rev(side):
     try:
-        return open(os.path.join(here, side, "REV")).read().strip()
+        name = open(os.path.join(here, program.get(side, side), "REV")).read().strip()
     except OSError:
-        return side
+        name = side
+    extra = " ".join(f"{k}={v}" for k, v in side_env.get(side, {}).items())
+    return f"{name} ({side}{', ' + extra if extra else ''})" if side in program or extra else name
 
 
 def load_means(side):
@@ -104,12 +120,14 @@ for gi, group in enumerate(args.group):
         for side in group_sides:
             dst = f"/tmp/abx-run/{side}-{rnd}-{gi}"
             shutil.rmtree(dst, ignore_errors=True)
-            cmd = [os.path.join(here, side, "bin", "antumbra"), "bench", *bench]
+            own = program.get(side, side)
+            cmd = [os.path.join(here, own, "bin", "antumbra"), "bench", *bench]
             for p in pats:
                 cmd += ["--scenario", p]
             cmd += ["--out", dst]
             t0 = time.time()
-            r = subprocess.run(cmd, cwd=os.path.join(here, side), env=env, capture_output=True, text=True)
+            r = subprocess.run(cmd, cwd=os.path.join(here, own), env={**env, **side_env.get(side, {})},
+                               capture_output=True, text=True)
             if r.returncode != 0:
                 say(f"{side} round {rnd} group {group}: rc {r.returncode}\n{(r.stdout + r.stderr)[-1500:]}")
             try:
@@ -123,3 +141,10 @@ for gi, group in enumerate(args.group):
 write_report(True)
 say("done")
 print(open(os.path.join(out, f"{args.tag}.md")).read())
+print("summary (head/base; frame and passes, no steps):")
+for b, h in pairs:
+    base, head = load_means(b), load_means(h)
+    for key in sorted(set(base) & set(head)):
+        if key[2].startswith("step:") or base[key] <= 0:
+            continue
+        print(f"  {h}/{b} {key[0]} {key[1]}: {base[key]:.3f} -> {head[key]:.3f} ({head[key] / base[key]:.3f})")
