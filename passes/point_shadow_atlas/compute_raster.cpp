@@ -219,7 +219,8 @@ void ComputeRasterizer::ensure_scratch(fgvk::ExecuteContext& context, std::uint3
 
 void ComputeRasterizer::execute(fgvk::ExecuteContext& context, const AtlasFrame& frame,
                                 const std::vector<bool>& tinted,
-                                const ComputeRasterSettings& settings, VkBuffer staging) {
+                                const ComputeRasterSettings& settings,
+                                const ShadowStaging& staging) {
   stats_.chunks = 0;
   const std::vector<std::uint32_t>& layers = frame.render_layers;
   count_clusters(context);  // uploads the clusters when the geometry changed

@@ -56,7 +56,7 @@ class ComputeRasterizer {
   void count_clusters(fgvk::ExecuteContext& context);
   void execute(fgvk::ExecuteContext& context, const AtlasFrame& frame,
                const std::vector<bool>& tinted, const ComputeRasterSettings& settings,
-               VkBuffer staging);
+               const ShadowStaging& staging);
   [[nodiscard]] const ComputeRasterStats& stats() const { return stats_; }
   // The CUT variant exists: built the first time a frame had cut clusters.
   [[nodiscard]] bool cut_pipeline_built() const { return raster_cut_.built(); }

@@ -1,7 +1,6 @@
 #include "face_decision.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cstring>
 #include <initializer_list>
 
@@ -131,20 +130,12 @@ void FaceDecision::write_requests(Slot& slot, const AtlasFrame& frame,
 
 // Fresh inputs: the shadow data, zero counters, empty lists; every earlier reader of
 // these buffers (last frame's shaders, copies and indirect dispatches) done first.
-void FaceDecision::reset(fgvk::ExecuteContext& context, VkBuffer staging, const AtlasFrame& frame,
-                         const DecisionLayout& layout) {
+void FaceDecision::reset(fgvk::ExecuteContext& context, const ShadowStaging& staging,
+                         const AtlasFrame& frame, const DecisionLayout& layout) {
   const VkCommandBuffer cmd = context.cmd;
   after_all(cmd, {shadow_in_, needed_, content_, args_, stats_},
             VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
-  // The header and the lights any frame has had (the staging's entries past them are zero
-  // or never read), then the face records.
-  lights_high_ = std::max<std::size_t>(lights_high_, frame.lights.size());
-  const std::array<VkBufferCopy, 2> regions{
-      VkBufferCopy{0, 0, shadow_lights_bytes(lights_high_)},
-      VkBufferCopy{kShadowFacesOffset, kShadowFacesOffset,
-                   shadow_data_bytes(layers_) - kShadowFacesOffset}};
-  vkCmdCopyBuffer(cmd, staging, shadow_in_, static_cast<std::uint32_t>(regions.size()),
-                  regions.data());
+  copy_shadow_data(cmd, staging, shadow_in_, shadow_data_bytes(layers_));
   vkCmdFillBuffer(cmd, needed_, 0, VK_WHOLE_SIZE, 0u);
   vkCmdFillBuffer(cmd, stats_, 0, VK_WHOLE_SIZE, 0u);
   if (frame.clear_all || !content_cleared_) {
@@ -186,8 +177,8 @@ void FaceDecision::bind(fgvk::ExecuteContext& context, const ComputePipeline& pi
   descriptors.push(context.gpu, context.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.layout);
 }
 
-void FaceDecision::record(fgvk::ExecuteContext& context, const AtlasFrame& frame, VkBuffer staging,
-                          const DecisionLayout& layout) {
+void FaceDecision::record(fgvk::ExecuteContext& context, const AtlasFrame& frame,
+                          const ShadowStaging& staging, const DecisionLayout& layout) {
   const auto layers = static_cast<std::uint32_t>(frame.faces.size());
   ensure_buffers(context, layers, layout);
   Slot& slot = slots_[context.frame.slot];
@@ -204,7 +195,7 @@ void FaceDecision::record(fgvk::ExecuteContext& context, const AtlasFrame& frame
   push.chunks = layout.chunks();
   push.fill_first = layout.fill_first;
   push.header_vec4s = static_cast<std::uint32_t>(kShadowFacesOffset / 16);
-  push.copy_vec4s = static_cast<std::uint32_t>(shadow_lights_bytes(lights_high_) / 16);
+  push.copy_vec4s = static_cast<std::uint32_t>(shadow_lights_bytes(staging.lights) / 16);
   push.resolve_group = shared::kResolveGroup;
   if (receivers_) {
     const fgvk::BoundImage& depth = context.bindings.required_image(port::kDepth);

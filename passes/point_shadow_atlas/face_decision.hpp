@@ -18,6 +18,7 @@
 #include "antumbra/gpu/resources.hpp"
 #include "atlas_planner.hpp"
 #include "common/pass_support.hpp"
+#include "shadow_staging.hpp"
 
 namespace antumbra::passes {
 
@@ -58,7 +59,7 @@ class FaceDecision {
                std::vector<std::string>& shader_files, gpu::Fnv1a64& key);
   // Records everything up to the published shadowData and the resolve lists.
   // `staging`: this frame's shadow data as the planner made it (host-visible).
-  void record(fgvk::ExecuteContext& context, const AtlasFrame& frame, VkBuffer staging,
+  void record(fgvk::ExecuteContext& context, const AtlasFrame& frame, const ShadowStaging& staging,
               const DecisionLayout& layout);
   // After the rasterisation: the counters into this slot's readback buffer.
   void finish(fgvk::ExecuteContext& context);
@@ -83,7 +84,7 @@ class FaceDecision {
   void ensure_buffers(fgvk::ExecuteContext& context, std::uint32_t layers,
                       const DecisionLayout& layout);
   void write_requests(Slot& slot, const AtlasFrame& frame, const DecisionLayout& layout) const;
-  void reset(fgvk::ExecuteContext& context, VkBuffer staging, const AtlasFrame& frame,
+  void reset(fgvk::ExecuteContext& context, const ShadowStaging& staging, const AtlasFrame& frame,
              const DecisionLayout& layout);
   void bind(fgvk::ExecuteContext& context, const ComputePipeline& pipeline, Slot& slot);
 
@@ -91,7 +92,6 @@ class FaceDecision {
   ComputePipeline receivers_pipeline_;
   ComputePipeline decide_;
   std::uint32_t layers_ = 0;
-  std::size_t lights_high_ = 0;  // the most lights a frame has had (reset's copy)
   std::uint32_t list_capacity_ = 0;
   std::uint32_t args_capacity_ = 0;
   gpu::Buffer shadow_in_;  // device copy of the staging data (read by every tile)

@@ -21,6 +21,7 @@
 #include "common/pass_support.hpp"
 #include "common/ports.hpp"
 #include "point_shadow_atlas_interface.h"
+#include "shadow_staging.hpp"
 #include "shared/material_textures.h"
 
 namespace antumbra::passes {
@@ -381,7 +382,7 @@ void PointShadowAtlasPass::execute(fgvk::ExecuteContext& context) {
     compute_.execute(
         context, frame, tinted_,
         {.depth_bias = params_.depth_bias, .slope_bias = params_.slope_bias, .tint = colour_},
-        slot.staging);
+        {slot.staging, lights_high_});
     return;
   }
   if (frame.render_layers.empty() && !frame.clear_all) return;
@@ -426,11 +427,8 @@ void PointShadowAtlasPass::upload(fgvk::ExecuteContext& context, const AtlasFram
               frame.faces.size() * sizeof(ShadowFace));
   // The compute rasteriser's decision publishes it (after deciding info.z/w).
   if (params_.rasterizer == ShadowRasterizer::hardware) {
-    const std::array<VkBufferCopy, 2> regions{
-        VkBufferCopy{0, 0, shadow_lights_bytes(lights_high_)},
-        VkBufferCopy{kShadowFacesOffset, kShadowFacesOffset, bytes - kShadowFacesOffset}};
-    vkCmdCopyBuffer(context.cmd, slot.staging, context.bindings.buffer(port::kShadowData)->buffer,
-                    static_cast<std::uint32_t>(regions.size()), regions.data());
+    copy_shadow_data(context.cmd, {slot.staging, lights_high_},
+                     context.bindings.buffer(port::kShadowData)->buffer, bytes);
   }
 
   // Entries grouped by how they are drawn (draw_layered draws each group in one call).
