@@ -204,6 +204,8 @@ BenchResult run_scenario(runtime::RenderSession& session, const runtime::DataPat
   set_light_size(scene, scenario.light_size);
   const std::vector<scene::PointLight> base_lights = scene.lights;
   session.set_scene(std::move(scene));
+  // The scene's moving objects from their frame 0, as the moving lights (measure).
+  session.restart_motion();
   measure(session, options, base_lights, r);
   return r;
 }

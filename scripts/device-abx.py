@@ -11,6 +11,8 @@ a group simply has no rows for it), so one call can hold groups that matter to o
 
   --as NEW=SIDE        NEW runs SIDE's program (for the same program under another --env)
   --env SIDE:VAR=VALUE  VAR=VALUE in SIDE's environment (repeatable)
+  --extra SIDE:ARG     ARG appended to SIDE's bench arguments (repeatable), e.g. --steps for
+                       the sides whose program has it (an older base may not)
 
 The last lines printed are each pair's frame and top-level pass ratios, so that a call whose
 files do not all come back still shows the result.
@@ -26,6 +28,7 @@ ap.add_argument("--budget", type=float, default=1e9)
 ap.add_argument("--tag", default="ab")
 ap.add_argument("--as", dest="aliases", action="append", default=[])
 ap.add_argument("--env", dest="envs", action="append", default=[])
+ap.add_argument("--extra", dest="extras", action="append", default=[])
 args, bench = ap.parse_known_args()
 if bench and bench[0] == "--":
     bench = bench[1:]
@@ -47,6 +50,10 @@ for e in args.envs:
     side, assignment = e.split(":", 1)
     var, value = assignment.split("=", 1)
     side_env.setdefault(side, {})[var] = value
+side_args = {}
+for e in args.extras:
+    side, arg = e.split(":", 1)
+    side_args.setdefault(side, []).append(arg)
 rows = {s: [] for s in sides}  # side -> list of (round, scenario, pass, type, median)
 start = time.time()
 log = open(os.path.join(out, f"{args.tag}-log.txt"), "w")
@@ -121,7 +128,7 @@ for gi, group in enumerate(args.group):
             dst = f"/tmp/abx-run/{side}-{rnd}-{gi}"
             shutil.rmtree(dst, ignore_errors=True)
             own = program.get(side, side)
-            cmd = [os.path.join(here, own, "bin", "antumbra"), "bench", *bench]
+            cmd = [os.path.join(here, own, "bin", "antumbra"), "bench", *bench, *side_args.get(side, [])]
             for p in pats:
                 cmd += ["--scenario", p]
             cmd += ["--out", dst]

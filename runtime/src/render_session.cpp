@@ -213,6 +213,10 @@ base::Diagnostics RenderSession::frame_diagnostics() const {
   return out;
 }
 
+void RenderSession::restart_motion() {
+  motion_frame_ = 0;
+}
+
 void RenderSession::set_scene(scene::Scene scene) {
   if (frames_) frames_->wait_all();
   scene_ = std::move(scene);
@@ -280,8 +284,10 @@ void RenderSession::record_frame(VkCommandBuffer cmd) {
   gpu_->collect_garbage();
   observer_->gather_gpu();
   timer_->begin_frame(cmd, frames_->slot());
-  // Dynamic objects with a motion are where the frame index puts them.
-  if (!scene_->dynamic_objects.empty()) scene::animate_objects(*scene_, frames_->frame_number());
+  // Dynamic objects with a motion are where the frames recorded since restart_motion (or
+  // since the session began) put them: readbacks and other submissions do not count.
+  if (!scene_->dynamic_objects.empty()) scene::animate_objects(*scene_, motion_frame_);
+  ++motion_frame_;
   const auto frame =
       gpu_scene_->update(cmd, frames_->slot(), *scene_, options_.viewport, frames_->frame_number());
   executor_->record(cmd, frame, observer_.get(), &report_);

@@ -224,6 +224,42 @@ TEST_F(HostSceneTest, MovedLightMovesTheShadowAndNothingFarFromIt) {
   keep_images("lamp-moved", before, after);
 }
 
+// A scene file's object motion follows the frames since RenderSession::restart_motion (bench
+// calls it per scenario, so a row measures the same frames whatever ran before it): two
+// frames into a period of eight the box stands 2.4 m aside and the lamp lights where its
+// shadow was; restarted, the next frame is frame 0's image again.
+TEST_F(HostSceneTest, RestartedMotionRendersFrameZeroAgain) {
+  OPEN_SESSION(session, kView);
+  load_graph_ok(*session, load_graph_file(source_dir() / "data/graphs/layered-ssss.json"));
+  scene::Scene scene = host_scene(kLampLeft, kBoxCentre, /*box_dynamic=*/true);
+  scene::DynamicObject box{.name = "box", .meshes = {1}, .base = {scene.meshes.at(1).transform}};
+  ASSERT_TRUE(scene.meshes.at(1).dynamic);
+  box.pivot = kBoxCentre;
+  box.moves = true;
+  box.motion = {.offset = {2.4f, 0.0f, 0.0f}, .period = 8};
+  scene.dynamic_objects.push_back(box);
+  session->set_scene(std::move(scene));
+  session->restart_motion();  // as bench does: whatever frames the session rendered before
+  const Image8 first = render_frames(*session, 1);  // motion frame 0
+  const Image8 moved = render_frames(*session, 2);  // frame 2: the offset's whole 2.4 m
+  session->restart_motion();
+  const Image8 again = render_frames(*session, 1);
+  expect_no_validation_errors(*session);
+
+  const glm::ivec2 shadow = pixel_of(on_floor(kLampLeft, kBoxCentre));
+  EXPECT_GT(brightness(moved, shadow) - brightness(first, shadow), kChanged)
+      << "the box left its first shadow, at pixel " << shadow.x << "," << shadow.y << ": "
+      << brightness(first, shadow) << " -> " << brightness(moved, shadow);
+  int worst = 0;
+  for (int y = 1; y + 1 < static_cast<int>(kView.height); y += 3) {
+    for (int x = 1; x + 1 < static_cast<int>(kView.width); x += 3) {
+      worst = std::max(worst, largest_difference(first, again, {x, y}));
+    }
+  }
+  EXPECT_LE(worst, kSame) << "the restarted motion's first frame is frame 0's image";
+  keep_images("motion-restarted", first, again);
+}
+
 // The box built dynamic moves with set_mesh_transform: next frame its shadow moved and the
 // atlas redrew only faces the box left or entered, fewer than it holds; the image is the
 // one of a scene built with the box there.

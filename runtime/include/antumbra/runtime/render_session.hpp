@@ -96,6 +96,11 @@ class RenderSession {
   // previous graph running.
   base::Diagnostics load_graph(const fg::GraphDesc& graph);
   void set_scene(scene::Scene scene);
+  // The scene file's object motions start over: the next frame recorded puts every dynamic
+  // object with a motion where its frame 0 does. Without it they follow the frames recorded
+  // since the session began (so an editor's scene edits do not make them jump); bench calls
+  // it per scenario, so a row measures the same frames whatever ran before it.
+  void restart_motion();
   // Lights only (the editor's edits): geometry stays uploaded, so the static shadow
   // cache keeps every face a changed light does not reach.
   void set_lights(std::vector<scene::PointLight> lights);
@@ -188,6 +193,7 @@ class RenderSession {
   fgvk::FrameReport report_;
   base::JsonDocument live_document_;         // the source of the graph that is running
   std::optional<fg::GraphDesc> live_graph_;  // the graph that is running, for resize()
+  std::uint64_t motion_frame_ = 0;           // frames recorded since restart_motion
 };
 
 }  // namespace antumbra::runtime
