@@ -127,6 +127,38 @@ TEST(SceneInstance, LightNamesStayUnique) {
   EXPECT_EQ(overridden->lights[0].range, once->lights[static_cast<std::size_t>(a)].range);
 }
 
+TEST(SceneInstance, LightsPastTheSceneMaximumAreRefusedWhereTheyCome) {
+  static_assert(kMaxSceneLights == 4096);
+  // 2048 rooms bring 4096 lights (two each, the sun left out): the most a scene may have.
+  const auto full = parse(R"([{"name": "r", "scene": "room.json",
+                               "repeat": [{"count": 32, "offset": [5, 0, 0]},
+                                          {"count": 64, "offset": [0, 0, 5]}]}])");
+  ASSERT_TRUE(full.ok()) << full.diagnostics().to_text();
+  EXPECT_EQ(full->lights.size(), kMaxSceneLights);
+
+  // One room more is refused at the object, before its lights are copied.
+  const auto more = parse(R"([{"name": "r", "scene": "room.json",
+                               "repeat": {"count": 2049, "offset": [5, 0, 0]}}])");
+  ASSERT_FALSE(more.ok());
+  const base::Diagnostic* d = more.diagnostics().find("SC028");
+  ASSERT_NE(d, nullptr) << more.diagnostics().to_text();
+  EXPECT_EQ(d->pointer, "/objects/0/scene");
+  EXPECT_NE(d->message.find("4098 light(s) (2049 copies)"), std::string::npos) << d->message;
+  EXPECT_NE(d->message.find("4096"), std::string::npos) << d->message;
+
+  // One light of the file's own besides them: own lights come first, so the last room's
+  // last light is the 4097th, refused where it comes from (the object).
+  const auto own = parse(R"([{"name": "r", "scene": "room.json",
+                              "repeat": [{"count": 32, "offset": [5, 0, 0]},
+                                          {"count": 64, "offset": [0, 0, 5]}]}])",
+                         R"([{"name": "extra", "position": [0, 3, 0]}])");
+  ASSERT_FALSE(own.ok());
+  const base::Diagnostic* e = own.diagnostics().find("SC028");
+  ASSERT_NE(e, nullptr) << own.diagnostics().to_text();
+  EXPECT_EQ(e->pointer, "/objects/0/scene");
+  EXPECT_NE(e->message.find("light 4097"), std::string::npos) << e->message;
+}
+
 TEST(SceneInstance, ObjectKindsAreExclusive) {
   const auto s = parse(R"([{"scene": "room.json", "primitive": "box"}])");
   ASSERT_FALSE(s.ok());

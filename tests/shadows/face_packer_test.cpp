@@ -174,6 +174,8 @@ TEST(FacePackerPlanner, LightsThatFitNowhereAreUnshadowedFromTheEnd) {
 // smaller faces and none is left without (the city's case; before, lights past 1024 had no
 // entry in shadowData at all).
 TEST(FacePackerPlanner, FourThousandLightsAllGetFaces) {
+  // As many as a scene file may have (SC028): every light a scene can hold can cast.
+  static_assert(scene::kMaxSceneLights == shared::kMaxShadowLights);
   auto scene = atrium();
   const auto first = scene.lights.front();
   scene.lights.clear();

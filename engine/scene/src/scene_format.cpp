@@ -66,7 +66,8 @@ SceneKindDesc file_kind() {
                .type = K::kind_array,
                .kind = SceneKind::light,
                .description = "The file's lights, then entries that change imported lights "
-                              "(overrides, named like the imported light)."},
+                              "(overrides, named like the imported light). A scene has at most "
+                              "4096 lights, its own and those its objects bring (SC028)."},
               {.name = "dynamic",
                .type = K::dynamic_list,
                .kind = SceneKind::dynamic_entry,

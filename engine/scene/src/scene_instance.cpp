@@ -47,6 +47,23 @@ std::vector<int> import_materials(ParseContext& ctx, const Scene& child, const s
 // 16 lights are its first hall).
 void import_lights(ParseContext& ctx, const std::vector<PointLight>& lights,
                    const Placement& placement, const LightImport& from) {
+  // Refused before a light is copied: a repeat of a lit file multiplies its lights (suns, one per
+  // scene, are not counted here; parse_lights counts the whole scene again).
+  const auto suns =
+      static_cast<std::size_t>(std::count_if(lights.begin(), lights.end(), [](const PointLight& l) {
+        return l.type == LightType::directional;
+      }));
+  const std::size_t adding = (lights.size() - suns) * placement.offsets.size();
+  if (ctx.instanced_lights.size() + adding > kMaxSceneLights) {
+    ctx.reader.error(codes::scene::kTooManyLights,
+                     from.what + " brings " + std::to_string(adding) + " light(s) (" +
+                         std::to_string(placement.offsets.size()) + " copies) to the " +
+                         std::to_string(ctx.instanced_lights.size()) +
+                         " already imported: more than the " + std::to_string(kMaxSceneLights) +
+                         " a scene may have",
+                     from.pointer + from.key);
+    return;
+  }
   std::unordered_set<std::string> taken;
   for (const PointLight& l : ctx.instanced_lights) taken.insert(l.name);
   bool sun_skipped = false;

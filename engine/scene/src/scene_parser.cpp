@@ -234,6 +234,17 @@ void parse_light(JsonReader& r, const Json& l, const std::string& p, PointLight&
 // The file's lights, then the imported ones it does not override: an entry named like an
 // imported light ("<object>/<light>") changes that light in place of adding one. One sun
 // per scene: the file's own, else the first imported one.
+// False, with SC028 at `pointer`, when the scene already has the most lights it may have.
+bool room_for_light(JsonReader& r, const Scene& scene, const std::string& pointer) {
+  if (scene.lights.size() < kMaxSceneLights) return true;
+  r.error(codes::scene::kTooManyLights,
+          "a scene has at most " + std::to_string(kMaxSceneLights) +
+              " lights, its own and its objects'; this one is light " +
+              std::to_string(scene.lights.size() + 1),
+          pointer);
+  return false;
+}
+
 void parse_lights(JsonReader& r, const Json& root, Scene& scene, detail::ParseContext& ctx) {
   const std::vector<PointLight>& imported = ctx.instanced_lights;
   std::unordered_map<std::string_view, std::size_t> imported_index;
@@ -278,6 +289,7 @@ void parse_lights(JsonReader& r, const Json& root, Scene& scene, detail::ParseCo
           directional = static_cast<int>(i);
         }
       }
+      if (!room_for_light(r, scene, p)) break;
       scene.lights.push_back(std::move(light));
     }
   }
@@ -296,6 +308,7 @@ void parse_lights(JsonReader& r, const Json& root, Scene& scene, detail::ParseCo
       }
       directional = static_cast<int>(scene.lights.size());
     }
+    if (!room_for_light(r, scene, ctx.instanced_light_pointers[k])) break;
     scene.lights.push_back(imported[k]);
   }
   scene.imported_lights = imported;

@@ -120,6 +120,7 @@ inline constexpr const char* kSecondDirectional = "SC024";     // more than one 
 inline constexpr const char* kLightDirectionZero = "SC025";    // spot/directional direction ~ 0
 inline constexpr const char* kSpotAngles = "SC026";            // inner > outer
 inline constexpr const char* kLightKeyIgnored = "SC027";       // warning: key unused by this type
+inline constexpr const char* kTooManyLights = "SC028";  // past kMaxSceneLights (scene_file.hpp)
 
 // glTF import (SC030-SC049). Reported at the scene object's "gltf" key; the message names
 // the glTF file and the JSON Pointer inside it.

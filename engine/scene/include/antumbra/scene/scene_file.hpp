@@ -23,6 +23,10 @@ inline constexpr int kSceneFormatVersion = 1;
 inline constexpr int kMaxRepeatCopies = 4096;
 // Scene instancing may not make a scene larger than this (copies of copies multiply).
 inline constexpr std::size_t kMaxSceneTriangles = std::size_t{1} << 26;
+// The most lights a scene may have, its own and those its objects bring: what the renderer's
+// light buffer and shadow data hold (every one of them may cast its shadow). More are
+// refused at the entry or object that passes the limit (SC028), before they are copied.
+inline constexpr std::size_t kMaxSceneLights = 4096;
 
 // Reads, parses and validates a scene file; glTF paths resolve against its folder. A
 // .gltf or .glb path opens the model as the whole scene (gltf_scene.hpp).
