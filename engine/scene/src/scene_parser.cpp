@@ -231,9 +231,6 @@ void parse_light(JsonReader& r, const Json& l, const std::string& p, PointLight&
   if (auto v = r.get_bool(l, p, "castsShadows", out.casts_shadows)) out.casts_shadows = *v;
 }
 
-// The file's lights, then the imported ones it does not override: an entry named like an
-// imported light ("<object>/<light>") changes that light in place of adding one. One sun
-// per scene: the file's own, else the first imported one.
 // False, with SC028 at `pointer`, when the scene already has the most lights it may have.
 bool room_for_light(JsonReader& r, const Scene& scene, const std::string& pointer) {
   if (scene.lights.size() < kMaxSceneLights) return true;
@@ -245,6 +242,9 @@ bool room_for_light(JsonReader& r, const Scene& scene, const std::string& pointe
   return false;
 }
 
+// The file's lights, then the imported ones it does not override: an entry named like an
+// imported light ("<object>/<light>") changes that light in place of adding one. One sun
+// per scene: the file's own, else the first imported one.
 void parse_lights(JsonReader& r, const Json& root, Scene& scene, detail::ParseContext& ctx) {
   const std::vector<PointLight>& imported = ctx.instanced_lights;
   std::unordered_map<std::string_view, std::size_t> imported_index;
