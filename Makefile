@@ -27,7 +27,8 @@ demo: configure
 	$(BUILD)/app/antumbra render $(DEMO_ARGS)
 
 # Release tests (CPU-only suites and lavapipe GPU suites with validation), then the
-# Vulkan-free suites (label asan: framegraph, scene, layering, watch, editor) under ASan + UBSan.
+# Vulkan-free suites (label asan: framegraph, scene, layering, watch, editor, the fuzz targets'
+# replay) under ASan + UBSan.
 test: build
 	@ctest --test-dir $(BUILD) --output-on-failure --no-tests=error -j$(JOBS)
 	@$(MAKE) --no-print-directory test-asan
@@ -39,7 +40,7 @@ test-asan: deps
 	  "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" "-DCMAKE_C_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" \
 	  -DANTUMBRA_BUILD_BENCHMARKS=OFF $(CMAKE_ARGS)
 	@cmake --build $(ASAN_BUILD) -j$(JOBS) --target antumbra_framegraph_tests antumbra_scene_tests antumbra_layering_tests antumbra_watch_tests \
-	  antumbra_editor_model_tests
+	  antumbra_editor_model_tests antumbra_fuzz_replay_tests
 	@ctest --test-dir $(ASAN_BUILD) --output-on-failure --no-tests=error -j$(JOBS) -L asan
 
 # The watch and editor-model suites (reload, recovery, the editor's documents) under
@@ -55,17 +56,28 @@ test-tsan: deps
 	@TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1" ctest --test-dir $(TSAN_BUILD) \
 	  --output-on-failure --no-tests=error -j$(JOBS) -L asan
 
-# libFuzzer over graph parsing + compiling (clang). FUZZ_SECONDS bounds the run.
+# libFuzzer over every parser of outside data (clang; docs/robustness.md, "Fuzzing"): each
+# target in FUZZ_TARGETS runs FUZZ_SECONDS from its kept corpus (fuzz/corpus/<name>) and the
+# inputs it found before (FUZZ_BUILD/corpus/<name>), with its dictionary; a crash stops the
+# run and leaves its input in FUZZ_BUILD/crashes/<name>/ (keep it in fuzz/regressions/<name>/).
 FUZZ_BUILD   ?= build-fuzz
 FUZZ_SECONDS ?= 60
+FUZZ_TARGETS ?= graph scene gltf edit-script pfm png
 fuzz: deps
 	@cmake -S . -B $(FUZZ_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=clang \
 	  -DCMAKE_CXX_COMPILER=clang++ -DANTUMBRA_FUZZ=ON -DANTUMBRA_BUILD_TESTS=OFF \
+	  "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" "-DCMAKE_C_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" \
 	  -DANTUMBRA_BUILD_BENCHMARKS=OFF $(CMAKE_ARGS)
-	@cmake --build $(FUZZ_BUILD) -j$(JOBS) --target antumbra_fuzz_graph
-	@mkdir -p $(FUZZ_BUILD)/corpus
-	$(FUZZ_BUILD)/fuzz/antumbra_fuzz_graph -max_total_time=$(FUZZ_SECONDS) -dict=fuzz/graph.dict \
-	  $(FUZZ_BUILD)/corpus fuzz/corpus
+	@cmake --build $(FUZZ_BUILD) -j$(JOBS) --target $(addprefix antumbra_fuzz_,$(FUZZ_TARGETS))
+	@for t in $(FUZZ_TARGETS); do \
+	  mkdir -p $(FUZZ_BUILD)/corpus/$$t $(FUZZ_BUILD)/crashes/$$t || exit 1; \
+	  echo "fuzz: $$t for $(FUZZ_SECONDS) s"; \
+	  $(FUZZ_BUILD)/fuzz/antumbra_fuzz_$$t -max_total_time=$(FUZZ_SECONDS) -timeout=10 \
+	    -rss_limit_mb=3072 -malloc_limit_mb=2048 -print_final_stats=1 -dict=fuzz/dict/$$t.dict \
+	    -artifact_prefix=$(FUZZ_BUILD)/crashes/$$t/ $(FUZZ_BUILD)/corpus/$$t fuzz/corpus/$$t \
+	    2> $(FUZZ_BUILD)/fuzz-$$t.log || { tail -60 $(FUZZ_BUILD)/fuzz-$$t.log; exit 1; }; \
+	  grep -E "^stat::(number_of_executed_units|new_units_added|peak_rss_mb)|cov: " $(FUZZ_BUILD)/fuzz-$$t.log | tail -4; \
+	done
 
 # clang-format (no diff; C++ and GLSL), GLSL function lengths and clang-tidy (.clang-tidy,
 # every warning an error) over the project's own sources; clean results are cached outside

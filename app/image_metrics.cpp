@@ -8,6 +8,7 @@
 #include <cstring>
 #include <fstream>
 #include <limits>
+#include <sstream>
 #include <stdexcept>
 
 namespace antumbra::app {
@@ -17,7 +18,6 @@ constexpr int kSsimRadius = 5;  // 11x11 window
 constexpr double kSsimSigma = 1.5;
 constexpr double kC1 = 0.01 * 0.01;
 constexpr double kC2 = 0.03 * 0.03;
-constexpr std::uint32_t kMaxPfmSide = 65536;
 
 float byte_swapped(float value) {
   std::uint32_t bits = 0;
@@ -60,6 +60,65 @@ std::vector<double> blur(const std::vector<double>& in, std::uint32_t width, std
 
 }  // namespace
 
+std::optional<FloatImage> decode_pfm(std::span<const std::uint8_t> bytes, const std::string& name,
+                                     std::string& error) {
+  // The header is text: "PF"/"Pf", width, height and scale separated by whitespace, then
+  // one whitespace character; at most a few dozen bytes, so a bounded prefix is parsed.
+  const std::size_t prefix = std::min<std::size_t>(bytes.size(), 256);
+  std::istringstream header(std::string(reinterpret_cast<const char*>(bytes.data()), prefix));
+  std::string magic;
+  long long width = 0;
+  long long height = 0;
+  double scale = 0.0;
+  header >> magic >> width >> height >> scale;
+  if (!header || (magic != "PF" && magic != "Pf")) {
+    error = name + ": not a PFM file (expected a \"PF\" or \"Pf\" header)";
+    return std::nullopt;
+  }
+  if (width <= 0 || height <= 0 || width > kMaxPfmSide || height > kMaxPfmSide || !(scale != 0.0) ||
+      !std::isfinite(scale)) {
+    error = name + ": bad PFM header (size " + std::to_string(width) + "x" +
+            std::to_string(height) + ", scale must be finite and non-zero)";
+    return std::nullopt;
+  }
+  const auto pixels = static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height);
+  if (pixels > kMaxPfmPixels) {
+    error = name + ": PFM of " + std::to_string(width) + "x" + std::to_string(height) +
+            " pixels is over the limit of " + std::to_string(kMaxPfmPixels) +
+            " pixels (docs/robustness.md, \"Limits\")";
+    return std::nullopt;
+  }
+  // The single whitespace character after the scale; the rows start after it.
+  if (header.get() == std::char_traits<char>::eof()) {
+    error = name + ": truncated PFM (no data after the header)";
+    return std::nullopt;
+  }
+  const auto data_start = static_cast<std::size_t>(header.tellg());
+  FloatImage image;
+  image.width = static_cast<std::uint32_t>(width);
+  image.height = static_cast<std::uint32_t>(height);
+  image.channels = magic == "PF" ? 3 : 1;
+  const std::size_t row_floats = std::size_t{image.width} * image.channels;
+  // Every row is there before anything is allocated: a header alone cannot ask for memory.
+  const std::size_t rows_present = (bytes.size() - data_start) / (row_floats * 4);
+  if (rows_present < image.height) {
+    error = name + ": truncated PFM (" + std::to_string(rows_present) + " of " +
+            std::to_string(image.height) + " rows)";
+    return std::nullopt;
+  }
+  image.texels.resize(row_floats * image.height);
+  // PFM rows run bottom to top; keep ours top row first like gpu::HostImage.
+  for (std::uint32_t row = 0; row < image.height; ++row) {
+    float* dst = image.texels.data() + (image.height - 1 - row) * row_floats;
+    std::memcpy(dst, bytes.data() + data_start + std::size_t{row} * row_floats * 4, row_floats * 4);
+  }
+  const bool file_little = scale < 0.0;
+  if (file_little != (std::endian::native == std::endian::little)) {
+    for (float& v : image.texels) v = byte_swapped(v);
+  }
+  return image;
+}
+
 std::optional<FloatImage> read_pfm(const std::filesystem::path& path, std::string& error) {
   errno = 0;
   std::ifstream file(path, std::ios::binary);
@@ -69,42 +128,16 @@ std::optional<FloatImage> read_pfm(const std::filesystem::path& path, std::strin
             (reason != 0 ? std::strerror(reason) : "unknown reason");
     return std::nullopt;
   }
-  std::string magic;
-  long long width = 0;
-  long long height = 0;
-  double scale = 0.0;
-  file >> magic >> width >> height >> scale;
-  if (!file || (magic != "PF" && magic != "Pf")) {
-    error = path.string() + ": not a PFM file (expected a \"PF\" or \"Pf\" header)";
-    return std::nullopt;
+  // No more than the largest image the limits allow (and its header) is read.
+  const std::size_t most = kMaxPfmPixels * 3 * sizeof(float) + 256;
+  std::vector<std::uint8_t> bytes;
+  std::array<char, 1 << 16> chunk{};
+  while (file && bytes.size() <= most) {
+    file.read(chunk.data(), chunk.size());
+    const auto got = static_cast<std::size_t>(file.gcount());
+    bytes.insert(bytes.end(), chunk.begin(), chunk.begin() + static_cast<std::ptrdiff_t>(got));
   }
-  if (width <= 0 || height <= 0 || width > kMaxPfmSide || height > kMaxPfmSide || scale == 0.0) {
-    error = path.string() + ": bad PFM header (size " + std::to_string(width) + "x" +
-            std::to_string(height) + ", scale must be non-zero)";
-    return std::nullopt;
-  }
-  file.get();  // the single whitespace character after the scale
-  FloatImage image;
-  image.width = static_cast<std::uint32_t>(width);
-  image.height = static_cast<std::uint32_t>(height);
-  image.channels = magic == "PF" ? 3 : 1;
-  const std::size_t row_floats = std::size_t{image.width} * image.channels;
-  image.texels.resize(row_floats * image.height);
-  // PFM rows run bottom to top; keep ours top row first like gpu::HostImage.
-  for (std::uint32_t row = 0; row < image.height; ++row) {
-    float* dst = image.texels.data() + (image.height - 1 - row) * row_floats;
-    file.read(reinterpret_cast<char*>(dst), static_cast<std::streamsize>(row_floats * 4));
-    if (!file) {
-      error = path.string() + ": truncated PFM (" + std::to_string(row) + " of " +
-              std::to_string(image.height) + " rows)";
-      return std::nullopt;
-    }
-  }
-  const bool file_little = scale < 0.0;
-  if (file_little != (std::endian::native == std::endian::little)) {
-    for (float& v : image.texels) v = byte_swapped(v);
-  }
-  return image;
+  return decode_pfm(bytes, path.string(), error);
 }
 
 bool write_pfm(const std::filesystem::path& path, const FloatImage& image) {

@@ -20,12 +20,16 @@
 #include <cstdint>
 #include <filesystem>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
 namespace antumbra::app {
 
 inline constexpr double kPsnrCap = 100.0;
+// What a PFM may hold (docs/robustness.md, "Limits"): 64 Mpixel, 768 MiB of RGB floats.
+inline constexpr long long kMaxPfmSide = 65536;
+inline constexpr std::uint64_t kMaxPfmPixels = std::uint64_t{1} << 26;
 
 // Float image, row-major with the top row first, `channels` floats per texel.
 struct FloatImage {
@@ -43,6 +47,11 @@ struct FloatImage {
 // negative scale = little endian; big endian files are accepted too) and returns it top
 // row first. On failure returns nullopt and sets `error`.
 std::optional<FloatImage> read_pfm(const std::filesystem::path& path, std::string& error);
+// The same from the file's bytes; `name` starts the error. Images over kMaxPfmSide on a side
+// or kMaxPfmPixels in all are refused before anything is allocated, and so are files
+// shorter than their header says.
+std::optional<FloatImage> decode_pfm(std::span<const std::uint8_t> bytes, const std::string& name,
+                                     std::string& error);
 // Writes `image` (1 or 3 channels; 4 channels drop alpha) like gpu::write_pfm.
 bool write_pfm(const std::filesystem::path& path, const FloatImage& image);
 

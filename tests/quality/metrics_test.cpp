@@ -200,5 +200,37 @@ TEST(Pfm, ReportsMissingAndMalformedFiles) {
   EXPECT_NE(error.find("truncated"), std::string::npos);
 }
 
+std::vector<std::uint8_t> bytes_of(std::string_view text) {
+  return {text.begin(), text.end()};
+}
+
+// A header alone cannot make the reader allocate: 65536 x 1024 RGB floats (768 MiB) from
+// a 20-byte file was allocated before the rows were read.
+TEST(Pfm, AHeaderPromisingMoreRowsThanTheFileHoldsAllocatesNothing) {
+  std::string error;
+  EXPECT_FALSE(decode_pfm(bytes_of("PF\n65536 1024\n-1.0\n"), "big.pfm", error).has_value());
+  EXPECT_EQ(error, "big.pfm: truncated PFM (0 of 1024 rows)");
+}
+
+TEST(Pfm, ImagesPastThePixelLimitAreRefusedWithTheLimit) {
+  std::string error;
+  EXPECT_FALSE(decode_pfm(bytes_of("Pf\n65536 65536\n-1.0\n"), "huge.pfm", error).has_value());
+  EXPECT_NE(error.find("over the limit of 67108864 pixels"), std::string::npos) << error;
+  EXPECT_FALSE(decode_pfm(bytes_of("Pf\n65537 1\n-1.0\n"), "wide.pfm", error).has_value());
+  EXPECT_NE(error.find("bad PFM header (size 65537x1"), std::string::npos) << error;
+  EXPECT_FALSE(decode_pfm(bytes_of("Pf\n1 1\n0\n"), "zero.pfm", error).has_value());
+  EXPECT_NE(error.find("finite and non-zero"), std::string::npos) << error;
+}
+
+TEST(Pfm, DecodesFromBytesLikeFromAFile) {
+  std::string text = "Pf\n2 1\n-1.0\n";
+  const float row[2] = {0.25f, 4.0f};
+  text.append(reinterpret_cast<const char*>(row), sizeof row);
+  std::string error;
+  const auto image = decode_pfm(bytes_of(text), "two.pfm", error);
+  ASSERT_TRUE(image.has_value()) << error;
+  EXPECT_EQ(image->texels, (std::vector<float>{0.25f, 4.0f}));
+}
+
 }  // namespace
 }  // namespace antumbra::app

@@ -189,6 +189,34 @@ TEST(GltfMaterial, BrokenImagesFallBackToTheFactorWithALocatedWarning) {
   }
 }
 
+// Ten thousand images each under the per-image limit must not add up to more than one
+// file's budget: the image past it falls back to its factors, with the budget in the warning.
+TEST(GltfMaterial, ImagesPastTheFilesPixelBudgetFallBackToTheirFactors) {
+  const fs::path dir = fresh_dir("pixel_budget");
+  testing::write_file(dir / "a.png", testing::png_bytes(8, 8, testing::checkerboard_rgba(4, 2)));
+  testing::write_file(dir / "b.png", testing::png_bytes(8, 8, testing::checkerboard_rgba(2, 2)));
+  nlohmann::json doc = textured_quad("a.png");
+  doc["images"].push_back({{"uri", "b.png"}});
+  doc["textures"].push_back({{"source", 1}, {"sampler", 0}});
+  doc["materials"][0]["emissiveTexture"] = {{"index", 1}};
+  testing::write_json(dir / "quad.gltf", doc);
+  GltfLimits limits;
+  limits.images.max_total_pixels = 100;  // room for one 8x8 image, not two
+  const auto result = load_gltf((dir / "quad.gltf").string(), limits);
+  ASSERT_TRUE(result.ok()) << result.diagnostics().to_text();
+  const base::Diagnostic* d = result.diagnostics().find(codes::scene::kGltfImage);
+  ASSERT_NE(d, nullptr) << result.diagnostics().to_text();
+  EXPECT_EQ(d->pointer, "/images/1/uri");
+  EXPECT_NE(d->message.find("may hold 100 pixels in all; 64 are taken"), std::string::npos)
+      << d->message;
+  EXPECT_TRUE(result->materials[0].base_color_texture.used());
+  EXPECT_FALSE(result->materials[0].emissive_texture.used());
+  // With the default budget both load.
+  const auto both = load_gltf((dir / "quad.gltf").string());
+  ASSERT_TRUE(both.ok());
+  EXPECT_TRUE(both->materials[0].emissive_texture.used()) << both.diagnostics().to_text();
+}
+
 TEST(GltfMaterial, ATextureIndexThatNamesNothingIsALocatedError) {
   const fs::path dir = fresh_dir("bad_index");
   testing::write_file(dir / "checker.png",

@@ -79,7 +79,17 @@ INSTANTIATE_TEST_SUITE_P(
                 "/bufferViews/0/byteStride"},
         BadGltf{kFixtures + "float_indices.gltf", codes::scene::kGltfBadAccessor, "/accessors/1"},
         BadGltf{kFixtures + "cycle.gltf", codes::scene::kGltfNodeCycle, "/nodes/1/children/0"},
-        BadGltf{kFixtures + "no_such_file.gltf", codes::scene::kGltfFileMissing, ""}));
+        BadGltf{kFixtures + "no_such_file.gltf", codes::scene::kGltfFileMissing, ""},
+        // Found by the gltf fuzz target: an image's bufferView one byte past its buffer made
+        // tinygltf read past the heap block; refused before tinygltf runs.
+        BadGltf{std::string(ANTUMBRA_SOURCE_DIR) +
+                    "/fuzz/regressions/gltf/glb-image-view-past-buffer.glb",
+                codes::scene::kGltfOutOfBounds, "/bufferViews/3"},
+        // "extras" nested 200,000 deep overflowed tinygltf's recursive conversion; refused
+        // past 256 levels, before any parser runs.
+        BadGltf{
+            std::string(ANTUMBRA_SOURCE_DIR) + "/fuzz/regressions/gltf/extras-nested-300-deep.gltf",
+            codes::scene::kGltfParse, ""}));
 
 // Debian's assimp-testmodels: malformed files from the wild.
 INSTANTIATE_TEST_SUITE_P(

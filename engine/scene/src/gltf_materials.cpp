@@ -79,7 +79,8 @@ class MaterialConverter {
     std::shared_ptr<const ImageData> data;
   };
   std::vector<ImageState> images_;
-  std::size_t decoded_ = 0;                                // images tried, for progress
+  std::size_t decoded_ = 0;   // images tried, for progress
+  std::uint64_t pixels_ = 0;  // of the images this file's materials hold (max_total_pixels)
   std::map<std::tuple<int, int, bool>, int> texture_ids_;  // (image, sampler, srgb)
 };
 
@@ -111,8 +112,23 @@ std::shared_ptr<const ImageData> MaterialConverter::image(int source) {
   const std::string name = external ? file.string() : in_.path + "#" + pointer;
   std::string key =
       external ? file_version_key(file.string()) : file_version_key(in_.path) + "#" + pointer;
-  const auto decode = [&] { return decode_image(bytes, name, in_.limits); };
-  const DecodedImage result = key.empty() ? decode() : in_.cache.get(key, decode);
+  // What is left of the file's budget bounds this image too, so that ten thousand images
+  // each under the per-image limit cannot add up to more than the budget.
+  ImageLimits limits = in_.limits;
+  const std::uint64_t left = limits.max_total_pixels - std::min(limits.max_total_pixels, pixels_);
+  const bool budget_binds = left < limits.max_pixels;
+  limits.max_pixels = std::min(limits.max_pixels, left);
+  const auto decode = [&] { return decode_image(bytes, name, limits); };
+  DecodedImage result = key.empty() ? decode() : in_.cache.get(key, decode);
+  if (const auto* held = std::get_if<std::shared_ptr<const ImageData>>(&result);
+      held != nullptr && std::uint64_t{(*held)->width} * (*held)->height > left) {
+    result = std::string("its pixels are past what is left of the budget");  // a cache hit
+  }
+  if (auto* refusal = std::get_if<std::string>(&result); refusal != nullptr && budget_binds) {
+    *refusal += " (the images of one glTF file may hold " +
+                std::to_string(in_.limits.max_total_pixels) + " pixels in all; " +
+                std::to_string(pixels_) + " are taken)";
+  }
   ++decoded_;
   if (in_.cache.reporting()) {
     in_.cache.report(
@@ -127,6 +143,7 @@ std::shared_ptr<const ImageData> MaterialConverter::image(int source) {
     return nullptr;
   }
   state.data = std::get<std::shared_ptr<const ImageData>>(result);
+  pixels_ += std::uint64_t{state.data->width} * state.data->height;
   return state.data;
 }
 

@@ -3,13 +3,16 @@
 // with defaults, which turns schema errors into confusing downstream failures or
 // silently missing geometry. Properties the importer relies on are errors; the rest
 // (names, material details, extensions) are warnings, since the geometry is still fine.
+#include <algorithm>
 #include <cstring>
 #include <fstream>
 #include <iterator>
+#include <string_view>
 
 #include <nlohmann/json.hpp>
 
 #include "antumbra/base/diagnostic_codes.hpp"
+#include "antumbra/base/json_document.hpp"
 #include "gltf_accessors.hpp"
 
 namespace antumbra::scene::detail {
@@ -164,11 +167,103 @@ std::string json_text(const std::string& path) {
   return bytes.substr(20, length);
 }
 
+// A non-negative integer member of `object`, or -1 (missing or of another type: the rules
+// report those).
+long long index_or_none(const json& object, const char* key) {
+  const auto it = object.find(key);
+  if (it == object.end() || !it->is_number_integer() || it->get<long long>() < 0) return -1;
+  return it->get<long long>();
+}
+
+// The bufferView of every image inside its buffer's declared byteLength, before tinygltf
+// reads one: tinygltf hands an image's bufferView to the image loader without that check (a
+// GLB whose image view ran one byte past its buffer read past the end of the heap block;
+// fuzz/regressions/gltf). Views of accessors are checked against the loaded data instead
+// (gltf_accessors.cpp), which files in the wild with a short byteLength pass.
+void check_image_views(const json& root, std::vector<GltfIssue>& errors) {
+  const auto images = root.find("images");
+  const auto views = root.find("bufferViews");
+  const auto buffers = root.find("buffers");
+  if (images == root.end() || !images->is_array()) return;
+  for (std::size_t i = 0; i < images->size(); ++i) {
+    const json& image = (*images)[i];
+    const long long index = image.is_object() ? index_or_none(image, "bufferView") : -1;
+    if (index < 0) continue;
+    const std::string image_pointer = "/images/" + std::to_string(i) + "/bufferView";
+    if (views == root.end() || !views->is_array() ||
+        static_cast<std::size_t>(index) >= views->size()) {
+      errors.push_back({codes::scene::kGltfBadReference,
+                        "bufferView " + std::to_string(index) + " does not exist", image_pointer});
+      continue;
+    }
+    const json& view = (*views)[static_cast<std::size_t>(index)];
+    const std::string pointer = "/bufferViews/" + std::to_string(index);
+    const long long buffer = view.is_object() ? index_or_none(view, "buffer") : -1;
+    if (buffer < 0) continue;
+    if (buffers == root.end() || !buffers->is_array() ||
+        static_cast<std::size_t>(buffer) >= buffers->size()) {
+      errors.push_back({codes::scene::kGltfBadReference,
+                        "buffer " + std::to_string(buffer) + " does not exist",
+                        pointer + "/buffer"});
+      continue;
+    }
+    const json& target = (*buffers)[static_cast<std::size_t>(buffer)];
+    const long long size = target.is_object() ? index_or_none(target, "byteLength") : -1;
+    const long long offset = std::max(index_or_none(view, "byteOffset"), 0LL);
+    const long long length = index_or_none(view, "byteLength");
+    if (size < 0 || length < 0) continue;
+    if (length > size || offset > size - length) {
+      errors.push_back({codes::scene::kGltfOutOfBounds,
+                        "image " + std::to_string(i) + "'s bufferView (offset " +
+                            std::to_string(offset) + ", length " + std::to_string(length) +
+                            ") lies outside buffer " + std::to_string(buffer) + " of " +
+                            std::to_string(size) + " bytes",
+                        pointer});
+    }
+  }
+}
+
+// The byte offset where `text` first nests arrays and objects deeper than `limit`, or npos.
+// Brackets inside strings do not count. tinygltf converts "extras" and extension values
+// recursively, so a file nested 200,000 deep overflowed the stack (fuzz/regressions/gltf);
+// the text is scanned before anything parses it.
+std::size_t too_deep_at(std::string_view text, int limit) {
+  int depth = 0;
+  bool in_string = false;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (in_string) {
+      if (c == '\\') {
+        ++i;
+      } else if (c == '"') {
+        in_string = false;
+      }
+    } else if (c == '"') {
+      in_string = true;
+    } else if (c == '[' || c == '{') {
+      if (++depth > limit) return i;
+    } else if (c == ']' || c == '}') {
+      --depth;
+    }
+  }
+  return std::string_view::npos;
+}
+
 }  // namespace
 
 json check_gltf_schema(const std::string& path, std::vector<GltfIssue>& errors,
                        std::vector<GltfIssue>& warnings) {
-  json root = json::parse(json_text(path), nullptr, /*allow_exceptions=*/false);
+  const std::string text = json_text(path);
+  const base::JsonParseOptions limits;
+  if (const std::size_t at = too_deep_at(text, limits.max_depth); at != std::string_view::npos) {
+    errors.push_back({codes::scene::kGltfParse,
+                      "the JSON nests arrays and objects deeper than " +
+                          std::to_string(limits.max_depth) + " levels (at byte " +
+                          std::to_string(at) + " of the JSON text; docs/robustness.md, \"Limits\")",
+                      ""});
+    return json();
+  }
+  json root = json::parse(text, nullptr, /*allow_exceptions=*/false);
   if (root.is_discarded() || !root.is_object()) return root;  // tinygltf reports syntax errors
   // glTF 1.0 (techniques, shaders, objects keyed by id) is another format altogether.
   const auto asset = root.find("asset");
@@ -184,6 +279,7 @@ json check_gltf_schema(const std::string& path, std::vector<GltfIssue>& errors,
     return root;
   }
   for (const Rule& rule : kRules) check(root, rule.pattern, "", rule, errors, warnings);
+  if (errors.empty()) check_image_views(root, errors);
   return root;
 }
 

@@ -21,6 +21,9 @@ namespace antumbra::scene {
 struct ImageLimits {
   std::uint32_t max_side = 16384;                     // pixels, either dimension
   std::uint64_t max_pixels = std::uint64_t{1} << 26;  // 64 Mpixel (256 MiB decoded)
+  // All the images one glTF file's materials use: 256 Mpixel (1 GiB decoded). An image past
+  // what is left falls back to its material's factors, like one past max_pixels.
+  std::uint64_t max_total_pixels = std::uint64_t{1} << 28;
 };
 
 // The decoded image, or why it could not be decoded (a sentence for a diagnostic).
