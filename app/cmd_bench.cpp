@@ -239,7 +239,8 @@ BenchResult run_reported(runtime::RenderSession& session, const runtime::DataPat
     r = run_scenario(session, paths, scenes, s, options);
   } catch (const std::exception& e) {
     r = BenchResult{s};
-    r.status = "error";
+    // A lost device ends the run (the caller stops): every later scenario would fail too.
+    r.status = session.gpu().device_lost() ? "device-lost" : "error";
     r.detail = e.what();
   }
   if (r.status == "ok") {
@@ -326,6 +327,11 @@ int run_bench(const BenchOptions& options) {
       if (status != "ok" && status != "missing-graph") ++failures;
       run.finished = results.size();
       write_reports(options.out, run, results, baseline, rule);
+      if (status == "device-lost") {
+        std::fprintf(stderr, "antumbra bench: stopped after %zu of %zu scenarios: %s\n",
+                     results.size(), chosen.size(), results.back().detail.c_str());
+        return runtime::kExitRuntime;
+      }
     }
   } catch (const std::exception& e) {
     std::fprintf(stderr, "antumbra bench: %s\n", e.what());

@@ -640,6 +640,16 @@ void print_edit_summary(const runtime::RenderSession& session, const ScriptRun& 
   std::printf("%d step(s) failed\n", failures);
 }
 
+// The device is gone, the documents are not (docs/robustness.md, "Device loss"): unsaved
+// edits go to recovery files, which the editor offers when it opens the files again.
+int keep_work_after_device_loss(editor::EditSession& edit, const std::exception& e) {
+  std::fprintf(stderr, "antumbra edit: error: %s\n", e.what());
+  const std::vector<std::string> kept = edit.close_keeping_unsaved();
+  for (const auto& line : kept) std::fprintf(stderr, "antumbra edit: %s\n", line.c_str());
+  if (kept.empty()) std::fprintf(stderr, "antumbra edit: there were no unsaved changes\n");
+  return runtime::kExitRuntime;
+}
+
 }  // namespace
 
 int run_edit(const EditOptions& options) {
@@ -690,10 +700,16 @@ int run_edit(const EditOptions& options) {
   ScriptRun run(
       session, edit,
       options.script.empty() ? fs::current_path() : fs::absolute(options.script).parent_path());
-  if (!run.start()) return runtime::kExitDiagnostics;
-  const int failures = script ? run_script_steps(run, *script, options.script) : 0;
-  if (options.frames > 0) run.render(options.frames);
-  if (!options.out.empty()) write_graph_output(session, options.out);
+  int failures = 0;
+  try {
+    if (!run.start()) return runtime::kExitDiagnostics;
+    failures = script ? run_script_steps(run, *script, options.script) : 0;
+    if (options.frames > 0) run.render(options.frames);
+    if (!options.out.empty()) write_graph_output(session, options.out);
+  } catch (const std::exception& e) {
+    if (!session.gpu().device_lost()) throw;
+    return keep_work_after_device_loss(edit, e);
+  }
   print_edit_summary(session, run, width, height, failures);
   return failures == 0 ? runtime::kExitOk : runtime::kExitDiagnostics;
 }

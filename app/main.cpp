@@ -8,6 +8,7 @@
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 
+#include "antumbra/gpu/vk_check.hpp"
 #include "antumbra/runtime/data_paths.hpp"
 #include "bench_baseline.hpp"
 #include "bench_scenarios.hpp"
@@ -348,6 +349,14 @@ int main(int argc, char** argv) {
   } catch (const antumbra::runtime::DataPathsError& e) {
     std::fprintf(stderr, "antumbra: error: %s\n", e.what());
     return antumbra::runtime::kExitUsage;
+  } catch (const antumbra::gpu::DeviceLostError& e) {
+    std::fprintf(stderr, "antumbra: error: %s\n", e.what());
+    return antumbra::runtime::kExitRuntime;
+  } catch (const antumbra::gpu::VulkanError& e) {
+    // Met outside a frame (an upload, a readback): said plainly all the same.
+    std::fprintf(stderr, "antumbra: error: %s%s\n",
+                 e.result() == VK_ERROR_DEVICE_LOST ? "the GPU device was lost: " : "", e.what());
+    return antumbra::runtime::kExitRuntime;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "antumbra: error: %s\n", e.what());
     return antumbra::runtime::kExitRuntime;

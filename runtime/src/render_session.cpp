@@ -251,7 +251,12 @@ void RenderSession::render(int frames, TraceWriter* trace, const BeforeFrame& be
     }
     const bool capture = options_.capture_last_frame && i + 1 == frames;
     if (capture) gpu_->begin_debugger_capture();
-    frames_->end_frame();
+    try {
+      frames_->end_frame();
+    } catch (const gpu::VulkanError& e) {
+      if (e.result() != VK_ERROR_DEVICE_LOST) throw;
+      throw_device_lost_at_submission(e);
+    }
     if (capture) gpu_->end_debugger_capture();
     if (trace != nullptr) {
       trace->add({"frame " + std::to_string(i), "cpu", frame_start * 1000.0,
@@ -265,7 +270,12 @@ void RenderSession::render(int frames, TraceWriter* trace, const BeforeFrame& be
     VkCommandBuffer cmd = frames_->begin_frame();
     observer_->gather_gpu();
     timer_->begin_frame(cmd, frames_->slot());
-    frames_->end_frame();
+    try {
+      frames_->end_frame();
+    } catch (const gpu::VulkanError& e) {
+      if (e.result() != VK_ERROR_DEVICE_LOST) throw;
+      throw_device_lost_at_submission(e);
+    }
   }
   frames_->wait_all();
   observer_->gather_gpu();
@@ -277,6 +287,20 @@ void RenderSession::render(int frames, TraceWriter* trace, const BeforeFrame& be
       t += timing.gpu_ms;
     }
   }
+}
+
+// A loss met when a frame was submitted: no pass was recording, and the device says so
+// when it notices, so the message names the frame's last pass and what else may be at fault.
+void RenderSession::throw_device_lost_at_submission(const gpu::VulkanError& e) const {
+  const auto& passes = executor_->plan().passes;
+  const std::string last = passes.empty() ? std::string() : passes.back().name;
+  throw gpu::DeviceLostError("the GPU device was lost when frame " +
+                                 std::to_string(frames_->frame_number()) +
+                                 " was submitted (its last pass: '" + last +
+                                 "'; any pass of it or of the frames before it still in flight "
+                                 "may be at fault) (" +
+                                 e.what() + ")",
+                             last, e.location());
 }
 
 // One frame into `cmd`, own or the host's: the scene's per-frame data, then the plan.

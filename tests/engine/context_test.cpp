@@ -45,6 +45,29 @@ TEST_F(GpuTest, SubmitsSignalTheTimeline) {
   EXPECT_GE(ctx().completed_value(), before + 1);
 }
 
+// The test hook of docs/robustness.md, "Device loss": the chosen submission fails as on a
+// lost device, and so does every later one.
+TEST_F(GpuTest, AnInjectedDeviceLossFailsThatSubmissionAndEveryLaterOne) {
+  ContextOptions options = testing::validation_options();
+  options.lose_device_at_submission = 2;
+  Context lossy(options);
+  lossy.submit_immediate([](VkCommandBuffer) {});
+  EXPECT_FALSE(lossy.device_lost());
+  for (int attempt = 0; attempt < 2; ++attempt) {
+    try {
+      lossy.submit_immediate([](VkCommandBuffer) {});
+      ADD_FAILURE() << "submission " << attempt + 2 << " reached the queue";
+    } catch (const VulkanError& e) {
+      EXPECT_EQ(e.result(), VK_ERROR_DEVICE_LOST);
+      EXPECT_NE(std::string(e.what()).find("device loss injected at submission 2"),
+                std::string::npos)
+          << e.what();
+    }
+    EXPECT_TRUE(lossy.device_lost());
+  }
+  EXPECT_EQ(lossy.validation_error_count(), 0u);
+}
+
 TEST_F(GpuTest, ValidationErrorsAreCounted) {
   // A deliberate misuse proves the counter works (and is then reset for TearDown).
   VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};

@@ -426,6 +426,17 @@ void close_documents(EditorState& state, const FrameLoop& loop) {
   }
 }
 
+// The device is gone, the documents are not (docs/robustness.md, "Device loss"): unsaved
+// edits go to recovery files, which the editor offers when it opens the files again; the
+// window closes.
+int keep_work_after_device_loss(EditorState& state, const std::exception& e) {
+  std::fprintf(stderr, "editor: error: %s\n", e.what());
+  const std::vector<std::string> kept = state.close_keeping_unsaved();
+  for (const auto& line : kept) std::fprintf(stderr, "editor: %s\n", line.c_str());
+  if (kept.empty()) std::fprintf(stderr, "editor: there were no unsaved changes\n");
+  return runtime::kExitRuntime;
+}
+
 void print_summary(runtime::RenderSession& session, const Presenter& presenter,
                    const FrameLoop& loop, const WindowedOptions& options) {
   std::printf("editor: %d frame(s) presented, %u swapchain rebuild(s)\n", loop.presented(),
@@ -479,7 +490,12 @@ int run_windowed_editor(const WindowedOptions& options) {
   }
 
   FrameLoop loop(options, *window, session, presenter, ui, layout, state, scene_file, graph_file);
-  loop.run();
+  try {
+    loop.run();
+  } catch (const std::exception& e) {
+    if (!session.gpu().device_lost()) throw;
+    return keep_work_after_device_loss(state, e);
+  }
   layout.save();
   if (!options.layout_report.empty() && loop.presented() > 0 &&
       !layout.write_report(options.layout_report, session.viewport(), loop.shown_rect())) {

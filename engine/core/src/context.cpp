@@ -58,6 +58,20 @@ std::uint32_t requested_api_version(const ContextOptions& options) {
   throw std::invalid_argument("ANTUMBRA_VULKAN_API is '" + text + "': it must be 1.2 or 1.3");
 }
 
+// ContextOptions::lose_device_at_submission, else ANTUMBRA_TEST_LOSE_DEVICE_AT, else 0.
+std::uint64_t lose_device_at(const ContextOptions& options) {
+  if (options.lose_device_at_submission != 0) return options.lose_device_at_submission;
+  const char* value = std::getenv("ANTUMBRA_TEST_LOSE_DEVICE_AT");
+  if (value == nullptr || *value == '\0') return 0;
+  char* end = nullptr;
+  const unsigned long long n = std::strtoull(value, &end, 10);
+  if (*end != '\0' || n == 0) {
+    throw std::invalid_argument(std::string("ANTUMBRA_TEST_LOSE_DEVICE_AT is '") + value +
+                                "': it must be a submission number (1 or more)");
+  }
+  return n;
+}
+
 // The instance's apiVersion: the requested version, unless the loader is older.
 std::uint32_t instance_api_version(const ContextOptions& options) {
   const std::uint32_t requested = requested_api_version(options);
@@ -135,7 +149,7 @@ void load_debug_utils_functions(VkInstance instance, ExtensionFunctions& ext) {
 
 }  // namespace
 
-Context::Context(const ContextOptions& options) {
+Context::Context(const ContextOptions& options) : lose_device_at_(lose_device_at(options)) {
   try {
     create_instance(options);
     select_physical_device(options);

@@ -98,6 +98,15 @@ std::uint64_t Context::completed_value() const {
 }
 
 std::uint64_t Context::submit(VkCommandBuffer cmd, const SubmitExtras& extras) {
+  if (device_lost_ || (lose_device_at_ != 0 && ++submissions_ >= lose_device_at_)) {
+    device_lost_ = true;
+    throw VulkanError(VK_ERROR_DEVICE_LOST,
+                      lose_device_at_ != 0
+                          ? "vkQueueSubmit2 (a device loss injected at submission " +
+                                std::to_string(lose_device_at_) + ")"
+                          : std::string("vkQueueSubmit2 (the device is lost)"),
+                      SourceLocation::current());
+  }
   const std::uint64_t value = last_submitted_ + 1;
   VkCommandBufferSubmitInfo cmd_info{VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO};
   cmd_info.commandBuffer = cmd;
@@ -115,7 +124,9 @@ std::uint64_t Context::submit(VkCommandBuffer cmd, const SubmitExtras& extras) {
   info.pCommandBufferInfos = &cmd_info;
   info.signalSemaphoreInfoCount = static_cast<std::uint32_t>(signals.size());
   info.pSignalSemaphoreInfos = signals.data();
-  check(queue_submit2(queue_, 1, &info, extras.fence), "vkQueueSubmit2");
+  const VkResult result = queue_submit2(queue_, 1, &info, extras.fence);
+  if (result == VK_ERROR_DEVICE_LOST) device_lost_ = true;
+  check(result, "vkQueueSubmit2");
   last_submitted_ = value;
   return value;
 }

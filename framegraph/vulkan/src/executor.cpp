@@ -354,8 +354,10 @@ void Executor::record(VkCommandBuffer cmd, const FrameResources& frame, PassObse
   for (std::size_t i = 0; i < state_->resources.size(); ++i) {
     state_->frame_start[i] = state_->resources[i].tracked;
   }
+  std::size_t recording = 0;  // the pass being recorded, for a lost device's message
   try {
     for (std::size_t i = 0; i < state_->passes.size(); ++i) {
+      recording = i;
       const auto& pass = state_->plan.passes[i];
       gpu_.begin_label(cmd, pass.name);
       record_barriers(cmd, pass.barriers, pass.name);
@@ -366,6 +368,13 @@ void Executor::record(VkCommandBuffer cmd, const FrameResources& frame, PassObse
       gpu_.end_label(cmd);
     }
     record_barriers(cmd, state_->plan.final_barriers, {});
+  } catch (const gpu::VulkanError& e) {
+    restore_frame_start();
+    if (e.result() != VK_ERROR_DEVICE_LOST || dynamic_cast<const gpu::DeviceLostError*>(&e)) throw;
+    const auto& pass = state_->plan.passes[recording];
+    throw gpu::DeviceLostError("the GPU device was lost while pass '" + pass.name + "' (" +
+                                   pass.type + ") was recording (" + e.what() + ")",
+                               pass.name, e.location());
   } catch (...) {
     restore_frame_start();
     throw;

@@ -171,6 +171,7 @@ class RenderSession {
 
  private:
   class Observer;
+  [[noreturn]] void throw_device_lost_at_submission(const gpu::VulkanError& e) const;
   void record_frame(VkCommandBuffer cmd);
   // FG101 errors for each image bound to an import of `plan` that does not fit it; an
   // image that differs only in extent (a resize) is a note, and its name goes to `stale`,

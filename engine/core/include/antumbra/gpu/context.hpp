@@ -39,6 +39,11 @@ struct ContextOptions {
   // maintenance4 through their KHR extensions). 0: the ANTUMBRA_VULKAN_API environment
   // variable ("1.2" or "1.3") when it is set, else 1.3.
   std::uint32_t max_api_version = 0;
+  // A test hook (docs/robustness.md, "Device loss"): the n-th submission (submit() and
+  // submit_immediate(), uploads included, counted from 1) and every one after it fail with
+  // VK_ERROR_DEVICE_LOST instead of reaching the queue, as on a lost device. 0: the
+  // ANTUMBRA_TEST_LOSE_DEVICE_AT environment variable when it is set, else never.
+  std::uint64_t lose_device_at_submission = 0;
 };
 
 // A device the host created and keeps owning (docs/integration.md, "The host's device"):
@@ -203,7 +208,9 @@ class Context {
   [[nodiscard]] VkSemaphore timeline() const { return timeline_; }
   [[nodiscard]] std::uint64_t last_submitted_value() const { return last_submitted_; }
   [[nodiscard]] std::uint64_t completed_value() const;
+  // Throws VulkanError; VK_ERROR_DEVICE_LOST (real or injected) also makes device_lost() true.
   std::uint64_t submit(VkCommandBuffer cmd, const SubmitExtras& extras = {});
+  [[nodiscard]] bool device_lost() const { return device_lost_; }
   void wait_for(std::uint64_t timeline_value) const;
   // A submission the host makes (docs/integration.md, "The frame"): reserves the next
   // timeline value, which the host's submit of the recorded work must signal on
@@ -268,6 +275,9 @@ class Context {
 
   VkSemaphore timeline_ = VK_NULL_HANDLE;
   std::uint64_t last_submitted_ = 0;
+  std::uint64_t lose_device_at_ = 0;  // ContextOptions::lose_device_at_submission
+  std::uint64_t submissions_ = 0;     // counted only while lose_device_at_ is set
+  bool device_lost_ = false;
   VkCommandPool immediate_pool_ = VK_NULL_HANDLE;
 
   std::deque<PendingDestroy> pending_;

@@ -6,6 +6,7 @@
 #include <source_location>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include <vulkan/vulkan.h>
 
@@ -35,9 +36,30 @@ class VulkanError : public std::runtime_error {
   [[nodiscard]] VkResult result() const { return result_; }
   [[nodiscard]] const SourceLocation& location() const { return location_; }
 
+ protected:
+  struct Formatted {};  // `message` is the whole text
+  VulkanError(Formatted /*tag*/, VkResult result, const std::string& message,
+              SourceLocation location)
+      : std::runtime_error(message), result_(result), location_(location) {}
+
  private:
   VkResult result_;
   SourceLocation location_;
+};
+
+// VK_ERROR_DEVICE_LOST, with where the frame was when it came: `pass` names the pass that
+// was recording (or the frame's last one, for a loss met at submission). Nothing more can be
+// submitted to the device; hosts stop rendering, keep the user's work and exit or recreate
+// the device (docs/robustness.md, "Device loss").
+class DeviceLostError : public VulkanError {
+ public:
+  DeviceLostError(const std::string& message, std::string pass,
+                  SourceLocation location = SourceLocation::current())
+      : VulkanError(Formatted{}, VK_ERROR_DEVICE_LOST, message, location), pass_(std::move(pass)) {}
+  [[nodiscard]] const std::string& pass() const { return pass_; }
+
+ private:
+  std::string pass_;
 };
 
 // No Vulkan driver, no physical device, or instance creation refused: tests skip on this.
