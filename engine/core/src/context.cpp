@@ -72,6 +72,20 @@ std::uint64_t lose_device_at(const ContextOptions& options) {
   return n;
 }
 
+// ContextOptions::fail_heaps_above, else ANTUMBRA_TEST_FAIL_HEAPS_ABOVE, else 0.
+std::uint64_t fail_heaps_above(const ContextOptions& options) {
+  if (options.fail_heaps_above != 0) return options.fail_heaps_above;
+  const char* value = std::getenv("ANTUMBRA_TEST_FAIL_HEAPS_ABOVE");
+  if (value == nullptr || *value == '\0') return 0;
+  char* end = nullptr;
+  const unsigned long long n = std::strtoull(value, &end, 10);
+  if (*end != '\0' || n == 0) {
+    throw std::invalid_argument(std::string("ANTUMBRA_TEST_FAIL_HEAPS_ABOVE is '") + value +
+                                "': it must be a number of bytes (1 or more)");
+  }
+  return n;
+}
+
 // The instance's apiVersion: the requested version, unless the loader is older.
 std::uint32_t instance_api_version(const ContextOptions& options) {
   const std::uint32_t requested = requested_api_version(options);
@@ -155,6 +169,7 @@ Context::Context(const ContextOptions& options) : lose_device_at_(lose_device_at
     select_physical_device(options);
     create_device(options);
     create_own_objects();
+    allocator_->fail_heaps_above(fail_heaps_above(options));
   } catch (...) {
     // The destructor does not run for a half-built object: undo what exists.
     destroy_own_objects();

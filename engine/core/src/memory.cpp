@@ -2,6 +2,7 @@
 
 #include <optional>
 #include <source_location>
+#include <string>
 
 #include "antumbra/gpu/vk_check.hpp"
 
@@ -159,6 +160,13 @@ Allocation Allocator::allocate_in(std::uint32_t type, const VkMemoryRequirements
 }
 
 Allocation Allocator::allocate_heap(VkDeviceSize size, std::uint32_t memory_type_bits) {
+  if (fail_heaps_above_ != 0 && size > fail_heaps_above_) {
+    throw VulkanError(VK_ERROR_OUT_OF_DEVICE_MEMORY,
+                      "vkAllocateMemory of a " + std::to_string(size) +
+                          "-byte heap (an out-of-memory injected above " +
+                          std::to_string(fail_heaps_above_) + " bytes)",
+                      SourceLocation::current());
+  }
   Allocation allocation;
   allocation.memory_type = find_memory_type(memory_type_bits, MemoryUsage::gpu_only);
   allocation.size = size;

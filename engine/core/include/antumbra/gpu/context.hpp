@@ -44,6 +44,10 @@ struct ContextOptions {
   // VK_ERROR_DEVICE_LOST instead of reaching the queue, as on a lost device. 0: the
   // ANTUMBRA_TEST_LOSE_DEVICE_AT environment variable when it is set, else never.
   std::uint64_t lose_device_at_submission = 0;
+  // A test hook (docs/robustness.md, "Out of device memory"): every transient heap a graph
+  // allocates of more than this many bytes fails with VK_ERROR_OUT_OF_DEVICE_MEMORY. 0: the
+  // ANTUMBRA_TEST_FAIL_HEAPS_ABOVE environment variable when it is set, else never.
+  std::uint64_t fail_heaps_above = 0;
 };
 
 // A device the host created and keeps owning (docs/integration.md, "The host's device"):

@@ -66,6 +66,9 @@ class Allocator {
   // (transient aliasing). Mapped when the chosen type is host-visible.
   Allocation allocate_heap(VkDeviceSize size, std::uint32_t memory_type_bits);
   void free(const Allocation& allocation);
+  // A test hook (ContextOptions::fail_heaps_above): allocate_heap() of more than `bytes`
+  // throws VK_ERROR_OUT_OF_DEVICE_MEMORY, as a full device would. 0: off.
+  void fail_heaps_above(VkDeviceSize bytes) { fail_heaps_above_ = bytes; }
 
   // The memory type index for usage among type_bits; throws when none fits.
   [[nodiscard]] std::uint32_t find_memory_type(std::uint32_t type_bits, MemoryUsage usage) const;
@@ -97,6 +100,7 @@ class Allocator {
   std::vector<Pool> pools_;  // index = memory_type * 2 + tiling
   std::size_t dedicated_count_ = 0;
   VkDeviceSize allocated_bytes_ = 0;
+  VkDeviceSize fail_heaps_above_ = 0;
 };
 
 }  // namespace antumbra::gpu
