@@ -16,7 +16,8 @@ void gltf(Bytes data) {
   const auto path = scratch_folder() / (binary ? "fuzz.glb" : "fuzz.gltf");
   {
     std::ofstream out(path, std::ios::binary | std::ios::trunc);
-    out.write(reinterpret_cast<const char*>(data.data()), static_cast<std::streamsize>(data.size()));
+    out.write(reinterpret_cast<const char*>(data.data()),
+              static_cast<std::streamsize>(data.size()));
     if (!out) __builtin_trap();  // the harness, not the input: the run means nothing
   }
   const auto imported = scene::load_gltf(path.string());

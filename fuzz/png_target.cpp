@@ -5,6 +5,8 @@
 
 namespace antumbra::fuzz {
 
-void png(Bytes data) { (void)scene::decode_image(data, "fuzz.png"); }
+void png(Bytes data) {
+  (void)scene::decode_image(data, "fuzz.png");
+}
 
 }  // namespace antumbra::fuzz

@@ -101,7 +101,8 @@ TEST_P(FuzzReplay, SeededMutantsEndInAResultOrDiagnostics) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Targets, FuzzReplay, ::testing::ValuesIn(targets().begin(), targets().end()),
+INSTANTIATE_TEST_SUITE_P(Targets, FuzzReplay,
+                         ::testing::ValuesIn(targets().begin(), targets().end()),
                          [](const ::testing::TestParamInfo<Target>& param) {
                            std::string name(param.param.name);
                            std::erase(name, '-');

@@ -54,7 +54,8 @@ std::vector<Input> read_dictionary(const std::filesystem::path& path) {
 }
 
 Mutator::Mutator(std::uint32_t seed, std::vector<Input> dictionary)
-    : random_(seed), dictionary_(std::move(dictionary)) {}
+    : random_(seed), dictionary_(std::move(dictionary)) {
+}
 
 std::size_t Mutator::position(const Input& data, bool past_end) {
   const std::size_t n = data.size() + (past_end ? 1 : 0);
@@ -63,8 +64,8 @@ std::size_t Mutator::position(const Input& data, bool past_end) {
 }
 
 void Mutator::one_move(Input& data, const Input& other) {
-  static constexpr std::array<std::uint8_t, 12> kInteresting{
-      0x00, 0x01, 0x7F, 0x80, 0xFF, '"', '{', '[', '-', '9', 'e', '.'};
+  static constexpr std::array<std::uint8_t, 12> kInteresting{0x00, 0x01, 0x7F, 0x80, 0xFF, '"',
+                                                             '{',  '[',  '-',  '9',  'e',  '.'};
   const int move = std::uniform_int_distribution<int>(0, 6)(random_);
   if (data.empty() && move < 4) {
     data.push_back(kInteresting[position(Input(kInteresting.size()), false)]);
