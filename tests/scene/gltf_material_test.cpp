@@ -217,6 +217,46 @@ TEST(GltfMaterial, ImagesPastTheFilesPixelBudgetFallBackToTheirFactors) {
   EXPECT_TRUE(both->materials[0].emissive_texture.used()) << both.diagnostics().to_text();
 }
 
+// A glTF names only files beside it or below it: tinygltf opens whatever a URI names (an
+// absolute path, a device, a pipe), so such URIs are refused before it runs unless allowed.
+TEST(GltfMaterial, UrisOutsideTheFilesFolderAreRefusedUnlessAllowed) {
+  const fs::path dir = fresh_dir("outside");
+  testing::write_file(dir / "checker.png",
+                      testing::png_bytes(8, 8, testing::checkerboard_rgba(4, 2)));
+  fs::create_directories(dir / "model" / "sub");
+  const std::vector<std::string> uris = {"../checker.png", "sub/%2E%2E/%2E%2E/checker.png",
+                                         (dir / "checker.png").string()};
+  for (const std::string& uri : uris) {
+    testing::write_json(dir / "model" / "quad.gltf", textured_quad(uri));
+    const auto refused = load_gltf((dir / "model" / "quad.gltf").string());
+    ASSERT_FALSE(refused.ok()) << uri;
+    const base::Diagnostic* d = refused.diagnostics().find(codes::scene::kGltfPathOutside);
+    ASSERT_NE(d, nullptr) << uri << ": " << refused.diagnostics().to_text();
+    EXPECT_EQ(d->severity, base::Severity::error);
+    EXPECT_EQ(d->pointer, "/images/0/uri");
+    EXPECT_NE(d->message.find("outside the glTF file's folder"), std::string::npos) << d->message;
+    GltfLimits allow;
+    allow.allow_outside_paths = true;
+    const auto allowed = load_gltf((dir / "model" / "quad.gltf").string(), allow);
+    ASSERT_TRUE(allowed.ok()) << uri << ": " << allowed.diagnostics().to_text();
+    const base::Diagnostic* w = allowed.diagnostics().find(codes::scene::kGltfPathOutside);
+    ASSERT_NE(w, nullptr);
+    EXPECT_EQ(w->severity, base::Severity::warning);
+    // tinygltf joins even an absolute URI to the file's folder, so only relative ones load.
+    if (uri.front() != '/') {
+      EXPECT_TRUE(allowed->materials[0].base_color_texture.used()) << uri;
+    }
+  }
+  // Inside the folder, ".." that stays inside is fine.
+  fs::create_directories(dir / "model" / "tex");
+  testing::write_file(dir / "model" / "tex" / "c.png",
+                      testing::png_bytes(8, 8, testing::checkerboard_rgba(4, 2)));
+  testing::write_json(dir / "model" / "quad.gltf", textured_quad("tex/../tex/c.png"));
+  const auto inside = load_gltf((dir / "model" / "quad.gltf").string());
+  ASSERT_TRUE(inside.ok()) << inside.diagnostics().to_text();
+  EXPECT_EQ(inside.diagnostics().find(codes::scene::kGltfPathOutside), nullptr);
+}
+
 TEST(GltfMaterial, ATextureIndexThatNamesNothingIsALocatedError) {
   const fs::path dir = fresh_dir("bad_index");
   testing::write_file(dir / "checker.png",

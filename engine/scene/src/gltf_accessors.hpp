@@ -56,5 +56,11 @@ void generate_tangents(Mesh& mesh, int set);
 // parsed JSON (discarded when it does not parse: tinygltf reports that).
 nlohmann::json check_gltf_schema(const std::string& path, std::vector<GltfIssue>& errors,
                                  std::vector<GltfIssue>& warnings);
+// Every buffer and image URI that names a file (not a data: URI) names one in the glTF's
+// own folder or below it (docs/robustness.md, "Paths"): an absolute path or one that climbs
+// out through ".." is an error (SC046) at its pointer, or a warning when `allow_outside`.
+// Run before tinygltf, which opens whatever a URI names.
+void check_gltf_uris(const nlohmann::json& root, bool allow_outside, std::vector<GltfIssue>& errors,
+                     std::vector<GltfIssue>& warnings);
 
 }  // namespace antumbra::scene::detail

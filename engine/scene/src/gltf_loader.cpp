@@ -339,6 +339,7 @@ base::Result<GltfImport> load_gltf(const std::string& path, const GltfLimits& li
   std::vector<GltfIssue> schema_errors;
   std::vector<GltfIssue> schema_warnings;
   const nlohmann::json root = detail::check_gltf_schema(path, schema_errors, schema_warnings);
+  detail::check_gltf_uris(root, limits.allow_outside_paths, schema_errors, schema_warnings);
   const PunctualLights lights = detail::read_punctual_lights(root, schema_warnings);
   for (const GltfIssue& w : schema_warnings) {
     report(w.code, base::Severity::warning, w.message, w.pointer);

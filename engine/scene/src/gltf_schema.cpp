@@ -4,7 +4,9 @@
 // silently missing geometry. Properties the importer relies on are errors; the rest
 // (names, material details, extensions) are warnings, since the geometry is still fine.
 #include <algorithm>
+#include <cctype>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <string_view>
@@ -249,7 +251,64 @@ std::size_t too_deep_at(std::string_view text, int limit) {
   return std::string_view::npos;
 }
 
+// Percent-decoded, as tinygltf opens it ("%2E%2E/" is "../").
+std::string decoded_uri(const std::string& uri) {
+  std::string out;
+  for (std::size_t i = 0; i < uri.size(); ++i) {
+    if (uri[i] == '%' && i + 2 < uri.size() &&
+        std::isxdigit(static_cast<unsigned char>(uri[i + 1])) != 0 &&
+        std::isxdigit(static_cast<unsigned char>(uri[i + 2])) != 0) {
+      out.push_back(static_cast<char>(std::stoi(uri.substr(i + 1, 2), nullptr, 16)));
+      i += 2;
+    } else {
+      out.push_back(uri[i]);
+    }
+  }
+  return out;
+}
+
+// Why `uri` names a file outside the glTF's folder, or "" when it does not.
+std::string outside_reason(const std::string& uri) {
+  const std::filesystem::path path(decoded_uri(uri));
+  if (path.has_root_path()) return "an absolute path";
+  const std::filesystem::path normal = path.lexically_normal();
+  if (!normal.empty() && *normal.begin() == "..") return "a path that climbs out through '..'";
+  return {};
+}
+
 }  // namespace
+
+void check_gltf_uris(const json& root, bool allow_outside, std::vector<GltfIssue>& errors,
+                     std::vector<GltfIssue>& warnings) {
+  if (!root.is_object()) return;
+  for (const char* kind : {"buffers", "images"}) {
+    const auto list = root.find(kind);
+    if (list == root.end() || !list->is_array()) continue;
+    for (std::size_t i = 0; i < list->size(); ++i) {
+      const json& entry = (*list)[i];
+      if (!entry.is_object() || !entry.contains("uri") || !entry["uri"].is_string()) continue;
+      const std::string uri = entry["uri"].get<std::string>();
+      if (uri.starts_with("data:")) continue;
+      const std::string why = outside_reason(uri);
+      if (why.empty()) continue;
+      const std::string pointer = "/" + std::string(kind) + "/" + std::to_string(i) + "/uri";
+      if (allow_outside) {
+        warnings.push_back({codes::scene::kGltfPathOutside,
+                            "'" + uri + "' is " + why +
+                                ", outside the glTF file's folder; read "
+                                "because outside paths are allowed",
+                            pointer});
+      } else {
+        errors.push_back({codes::scene::kGltfPathOutside,
+                          "'" + uri + "' is " + why +
+                              ", outside the glTF file's folder: refused "
+                              "(a file names only what lies beside it or below; "
+                              "GltfLimits::allow_outside_paths allows it)",
+                          pointer});
+      }
+    }
+  }
+}
 
 json check_gltf_schema(const std::string& path, std::vector<GltfIssue>& errors,
                        std::vector<GltfIssue>& warnings) {

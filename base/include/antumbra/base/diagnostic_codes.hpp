@@ -146,6 +146,8 @@ inline constexpr const char* kGltfMaterial =
     "SC044";  // warning: material value invalid or unsupported (its default is used)
 inline constexpr const char* kGltfLight =
     "SC045";  // warning: KHR_lights_punctual light or reference invalid (skipped)
+inline constexpr const char* kGltfPathOutside =
+    "SC046";  // a buffer/image URI outside the glTF's folder (warning when allowed)
 
 // Dynamic objects (SC050-SC059), reported at the "dynamic" entry.
 inline constexpr const char* kUnknownObject = "SC050";    // names no object of the file

@@ -40,6 +40,9 @@ struct GltfLimits {
   std::size_t max_triangles = 10'000'000;
   std::size_t max_node_visits = 100'000;  // bounds instancing blow-ups
   ImageLimits images;
+  // Buffer and image URIs may name files outside the glTF's folder (absolute, or climbing
+  // out through ".."): a warning (SC046) instead of an error (docs/robustness.md, "Paths").
+  bool allow_outside_paths = false;
 };
 
 // Diagnostics carry file = `path` and a JSON Pointer into the glTF (e.g. /accessors/3),
