@@ -70,6 +70,15 @@ TEST(ImageDecode, FormatsOtherThanPngAndJpegAreRefusedByTheirFirstBytes) {
   EXPECT_NE(refusal(decode_image(bmp, "b")).find("neither PNG nor JPEG"), std::string::npos);
 }
 
+// Found by the png fuzz target too: the last chunk's length and type, with too few bytes
+// after them, made stb_image grow its buffer to the claimed length (2 GiB).
+TEST(ImageDecode, AChunkCutShortByTheEndOfTheFileIsRefused) {
+  const std::string reason =
+      refusal(decode_image(read_bytes(kFuzz + "regressions/png/chunk-header-cut-short.png"), "x"));
+  EXPECT_NE(reason.find("is cut short by the end of the 71-byte file"), std::string::npos)
+      << reason;
+}
+
 TEST(ImageDecode, ASidePastTheLimitIsRefusedWithTheLimit) {
   const std::string reason = refusal(decode_image(png_header(65536, 1), "wide"));
   EXPECT_NE(reason.find("65536x1 is past the limit (16384 pixels a side"), std::string::npos)

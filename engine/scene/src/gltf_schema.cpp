@@ -292,20 +292,17 @@ void check_gltf_uris(const json& root, bool allow_outside, std::vector<GltfIssue
       const std::string why = outside_reason(uri);
       if (why.empty()) continue;
       const std::string pointer = "/" + std::string(kind) + "/" + std::to_string(i) + "/uri";
-      if (allow_outside) {
-        warnings.push_back({codes::scene::kGltfPathOutside,
-                            "'" + uri + "' is " + why +
-                                ", outside the glTF file's folder; read "
-                                "because outside paths are allowed",
-                            pointer});
-      } else {
-        errors.push_back({codes::scene::kGltfPathOutside,
-                          "'" + uri + "' is " + why +
-                              ", outside the glTF file's folder: refused "
-                              "(a file names only what lies beside it or below; "
-                              "GltfLimits::allow_outside_paths allows it)",
-                          pointer});
-      }
+      std::string message = "'";
+      message += uri;
+      message += "' is ";
+      message += why;
+      message += allow_outside ? ", outside the glTF file's folder; read because outside paths "
+                                 "are allowed"
+                               : ", outside the glTF file's folder: refused (a file names only "
+                                 "what lies beside it or below; GltfLimits::allow_outside_paths "
+                                 "allows it)";
+      auto& sink = allow_outside ? warnings : errors;
+      sink.push_back({codes::scene::kGltfPathOutside, std::move(message), pointer});
     }
   }
 }

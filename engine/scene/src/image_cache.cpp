@@ -22,7 +22,11 @@ std::string png_chunks_outside(std::span<const std::uint8_t> bytes) {
   constexpr std::uint8_t kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
   if (bytes.size() < 8 || !std::equal(kSignature, kSignature + 8, bytes.begin())) return {};
   std::size_t at = 8;
-  while (bytes.size() - at >= 12) {  // length, type, data, CRC
+  while (at < bytes.size()) {
+    if (bytes.size() - at < 12) {  // length, type and CRC, at least; stb reads the length
+      return "a PNG chunk at byte " + std::to_string(at) + " is cut short by the end of the " +
+             std::to_string(bytes.size()) + "-byte file";
+    }
     const std::uint32_t length = big_endian32(bytes.data() + at);
     if (length > bytes.size() - at - 12) {
       return "a PNG chunk at byte " + std::to_string(at) + " claims " + std::to_string(length) +
