@@ -102,9 +102,9 @@ std::uint64_t Context::submit(VkCommandBuffer cmd, const SubmitExtras& extras) {
     device_lost_ = true;
     throw VulkanError(VK_ERROR_DEVICE_LOST,
                       lose_device_at_ != 0
-                          ? "vkQueueSubmit2 (a device loss injected at submission " +
-                                std::to_string(lose_device_at_) + ")"
-                          : std::string("vkQueueSubmit2 (the device is lost)"),
+                          ? "vkQueueSubmit2 [a device loss injected at submission " +
+                                std::to_string(lose_device_at_) + "]"
+                          : std::string("vkQueueSubmit2 [the device is lost]"),
                       SourceLocation::current());
   }
   const std::uint64_t value = last_submitted_ + 1;
