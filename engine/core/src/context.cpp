@@ -58,30 +58,17 @@ std::uint32_t requested_api_version(const ContextOptions& options) {
   throw std::invalid_argument("ANTUMBRA_VULKAN_API is '" + text + "': it must be 1.2 or 1.3");
 }
 
-// ContextOptions::lose_device_at_submission, else ANTUMBRA_TEST_LOSE_DEVICE_AT, else 0.
-std::uint64_t lose_device_at(const ContextOptions& options) {
-  if (options.lose_device_at_submission != 0) return options.lose_device_at_submission;
-  const char* value = std::getenv("ANTUMBRA_TEST_LOSE_DEVICE_AT");
+// A test hook's count: `option` when set, else the environment variable `name` (a positive
+// integer; `unit` says of what in the error), else 0.
+std::uint64_t test_hook(std::uint64_t option, const char* name, const char* unit) {
+  if (option != 0) return option;
+  const char* value = std::getenv(name);
   if (value == nullptr || *value == '\0') return 0;
   char* end = nullptr;
   const unsigned long long n = std::strtoull(value, &end, 10);
   if (*end != '\0' || n == 0) {
-    throw std::invalid_argument(std::string("ANTUMBRA_TEST_LOSE_DEVICE_AT is '") + value +
-                                "': it must be a submission number (1 or more)");
-  }
-  return n;
-}
-
-// ContextOptions::fail_heaps_above, else ANTUMBRA_TEST_FAIL_HEAPS_ABOVE, else 0.
-std::uint64_t fail_heaps_above(const ContextOptions& options) {
-  if (options.fail_heaps_above != 0) return options.fail_heaps_above;
-  const char* value = std::getenv("ANTUMBRA_TEST_FAIL_HEAPS_ABOVE");
-  if (value == nullptr || *value == '\0') return 0;
-  char* end = nullptr;
-  const unsigned long long n = std::strtoull(value, &end, 10);
-  if (*end != '\0' || n == 0) {
-    throw std::invalid_argument(std::string("ANTUMBRA_TEST_FAIL_HEAPS_ABOVE is '") + value +
-                                "': it must be a number of bytes (1 or more)");
+    throw std::invalid_argument(std::string(name) + " is '" + value + "': it must be " + unit +
+                                " (1 or more)");
   }
   return n;
 }
@@ -163,13 +150,16 @@ void load_debug_utils_functions(VkInstance instance, ExtensionFunctions& ext) {
 
 }  // namespace
 
-Context::Context(const ContextOptions& options) : lose_device_at_(lose_device_at(options)) {
+Context::Context(const ContextOptions& options)
+    : lose_device_at_(test_hook(options.lose_device_at_submission, "ANTUMBRA_TEST_LOSE_DEVICE_AT",
+                                "a submission number")) {
   try {
     create_instance(options);
     select_physical_device(options);
     create_device(options);
     create_own_objects();
-    allocator_->fail_heaps_above(fail_heaps_above(options));
+    allocator_->fail_heaps_above(
+        test_hook(options.fail_heaps_above, "ANTUMBRA_TEST_FAIL_HEAPS_ABOVE", "a number of bytes"));
   } catch (...) {
     // The destructor does not run for a half-built object: undo what exists.
     destroy_own_objects();
