@@ -194,7 +194,7 @@ TEST(GltfMaterial, BrokenImagesFallBackToTheFactorWithALocatedWarning) {
 TEST(GltfMaterial, ImagesPastTheFilesPixelBudgetFallBackToTheirFactors) {
   const fs::path dir = fresh_dir("pixel_budget");
   testing::write_file(dir / "a.png", testing::png_bytes(8, 8, testing::checkerboard_rgba(4, 2)));
-  testing::write_file(dir / "b.png", testing::png_bytes(8, 8, testing::checkerboard_rgba(2, 2)));
+  testing::write_file(dir / "b.png", testing::png_bytes(8, 8, testing::checkerboard_rgba(2, 4)));
   nlohmann::json doc = textured_quad("a.png");
   doc["images"].push_back({{"uri", "b.png"}});
   doc["textures"].push_back({{"source", 1}, {"sampler", 0}});

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -117,6 +118,10 @@ inline nlohmann::json lit_quad_gltf() {
 // RGBA8 pixels as PNG bytes.
 inline std::vector<std::uint8_t> png_bytes(int width, int height,
                                            const std::vector<std::uint8_t>& rgba) {
+  // stb reads width * height * 4 bytes whatever the vector holds: a short one is a test bug.
+  if (rgba.size() != static_cast<std::size_t>(width) * height * 4) {
+    throw std::invalid_argument("png_bytes: the pixels do not fill the image");
+  }
   std::vector<std::uint8_t> out;
   stbi_write_png_to_func(
       [](void* context, void* data, int size) {
