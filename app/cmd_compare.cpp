@@ -256,7 +256,8 @@ bool load_quality_inputs(const QualityOptions& options, const runtime::DataPaths
     if (!graph) return false;
     inputs.graphs.push_back(std::move(*graph));
   }
-  auto scene = scene::load_scene_file(inputs.scene_path);
+  auto scene = scene::load_scene_file(inputs.scene_path, nullptr,
+                                      {.allow_outside_paths = options.allow_outside_paths});
   for (const auto& d : scene.diagnostics())
     std::fprintf(stderr, "%s\n", base::format_text(d).c_str());
   if (!scene.ok()) return false;

@@ -93,7 +93,8 @@ int run_validate(const ValidateOptions& options) {
   nlohmann::json report = nlohmann::json::array();
   for (const auto& file : options.files) {
     if (looks_like_scene(file)) {
-      const auto scene = scene::load_scene_file(file);
+      const auto scene = scene::load_scene_file(
+          file, nullptr, {.allow_outside_paths = options.allow_outside_paths});
       const auto& diagnostics = scene.diagnostics();
       const bool file_failed = !scene.ok() || (options.werror && diagnostics.warning_count() > 0);
       failed = failed || file_failed;

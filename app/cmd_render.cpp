@@ -140,7 +140,8 @@ int load_render_inputs(const RenderOptions& options, bool json, RenderInputs& in
   scene::ImageCache images;  // the load's shared state, progress sink included
   runtime::LoadProgressPrinter progress;
   images.set_progress(progress.sink());
-  auto scene = scene::load_scene_file(inputs.scene_path, &images);
+  auto scene = scene::load_scene_file(inputs.scene_path, &images,
+                                      {.allow_outside_paths = options.allow_outside_paths});
   progress.finish();
   images.set_progress({});
   if (!scene.ok()) {
@@ -299,6 +300,7 @@ int run_render(const RenderOptions& options) {
     std::fflush(stdout);
     runtime::WatchOptions watch{inputs.graph_path, inputs.scene_path, options.output, options.out,
                                 options.watch_seconds};
+    watch.scene_options.allow_outside_paths = options.allow_outside_paths;
     const int code = runtime::run_watch_loop(session, watch);
     if (code != runtime::kExitOk) return code;
   }

@@ -19,6 +19,7 @@ struct ValidateOptions {
   std::vector<std::string> files;
   std::string format = "text";  // text | json
   bool werror = false;
+  bool allow_outside_paths = false;  // scene paths outside their file's folder: warnings
 };
 
 struct PlanOptions {
@@ -35,8 +36,9 @@ struct PassesOptions {
 };
 
 struct RenderOptions {
-  std::string graph;  // empty: the default graph
-  std::string scene;  // empty: the default scene
+  std::string graph;                 // empty: the default graph
+  std::string scene;                 // empty: the default scene
+  bool allow_outside_paths = false;  // scene paths outside their file's folder: warnings
   std::string size = "1280x720";
   int frames = 1;
   std::string out = "out/frame.png";
@@ -87,12 +89,13 @@ struct CompareOptions {
 };
 
 struct QualityOptions {
-  std::vector<std::string> graphs;  // technique graphs compared with the reference
-  std::string reference;            // empty: data/graphs/reference.json
-  std::string scene;                // empty: data/scenes/atrium.json
-  std::string size = "960x540";     // the smallest size whose ranking held (cmd_compare.cpp)
-  std::string resource = "hdr";     // the HDR resource of every graph
-  std::string out;                  // folder for per-technique error heat maps; empty: none
+  std::vector<std::string> graphs;   // technique graphs compared with the reference
+  std::string reference;             // empty: data/graphs/reference.json
+  std::string scene;                 // empty: data/scenes/atrium.json
+  bool allow_outside_paths = false;  // scene paths outside their file's folder: warnings
+  std::string size = "960x540";      // the smallest size whose ranking held (cmd_compare.cpp)
+  std::string resource = "hdr";      // the HDR resource of every graph
+  std::string out;                   // folder for per-technique error heat maps; empty: none
   std::string device = "auto";
   bool validation = false;
   std::string format = "text";

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <optional>
 #include <sstream>
+#include <utility>
 #include <vector>
 
 #include "antumbra/base/diagnostic_codes.hpp"
@@ -23,6 +24,7 @@
 #include "antumbra/gpu/timing.hpp"
 #include "antumbra/runtime/render_session.hpp"
 #include "commands.hpp"
+#include "device_memory_use.hpp"
 
 namespace antumbra::app {
 namespace {
@@ -94,14 +96,25 @@ class ScriptRun {
     return files;
   }
 
-  [[nodiscard]] double median_frame_ms() const {
-    if (frame_ms_.empty()) return 0.0;
-    auto sorted = frame_ms_;
+  [[nodiscard]] double median_frame_ms() const { return median_ms(0, frame_ms_.size()); }
+
+  // The first and the last tenth of the frames' wall-clock medians: a long script (the
+  // soak) shows whether frames grew slower as it went. Empty for fewer than 20 frames.
+  [[nodiscard]] std::optional<std::pair<double, double>> frame_ms_trend() const {
+    const std::size_t tenth = frame_ms_.size() / 10;
+    if (tenth < 2) return std::nullopt;
+    return std::make_pair(median_ms(0, tenth), median_ms(frame_ms_.size() - tenth, tenth));
+  }
+
+ private:
+  [[nodiscard]] double median_ms(std::size_t first, std::size_t count) const {
+    if (count == 0) return 0.0;
+    std::vector<double> sorted(frame_ms_.begin() + static_cast<std::ptrdiff_t>(first),
+                               frame_ms_.begin() + static_cast<std::ptrdiff_t>(first + count));
     std::sort(sorted.begin(), sorted.end());
     return sorted[sorted.size() / 2];
   }
 
- private:
   fs::path resolve(const std::string& name) const {
     if (name == "$graph") return edit_.graph().file();
     if (name == "$scene") return edit_.scene().file();
@@ -195,6 +208,9 @@ class ScriptRun {
       std::ofstream(target, std::ios::binary | std::ios::trunc) << text;
     } else if (what == "reload") {
       reload();
+    } else if (what == "mark-memory") {
+      memory_mark_ = settle_and_measure(session_.gpu());
+      std::printf("  device memory: %s\n", describe(*memory_mark_).c_str());
     } else {
       return false;
     }
@@ -503,6 +519,8 @@ class ScriptRun {
       }
     } else if (what == "refused") {
       check_refused(step);
+    } else if (what == "memory-within") {
+      check_memory(step.value("percent", 1.0), step.value("extraAllocations", -1));
     } else if (what == "dirty") {
       if (edit_.scene().dirty() != step.at("value").get<bool>()) {
         throw StepError{std::string("the scene is ") + (edit_.scene().dirty() ? "" : "not ") +
@@ -510,6 +528,25 @@ class ScriptRun {
       }
     } else {
       throw StepError{"unknown expectation '" + what + "'"};
+    }
+  }
+
+  // Device memory in use against the last mark-memory step's (docs/robustness.md, "Soak").
+  // extra_allocations >= 0: at most that many more live allocations than at the mark (a
+  // leak of small buffers hides in the bytes of a large atlas, not in the count).
+  void check_memory(double percent, int extra_allocations) {
+    if (!memory_mark_) throw StepError{"no mark-memory step came before"};
+    const DeviceMemoryUse now = settle_and_measure(session_.gpu());
+    std::printf("  device memory: %s (at the mark: %s)\n", describe(now).c_str(),
+                describe(*memory_mark_).c_str());
+    if (auto problem = memory_growth_problem(*memory_mark_, now, percent)) {
+      throw StepError{*problem};
+    }
+    if (extra_allocations >= 0 &&
+        now.allocations > memory_mark_->allocations + static_cast<std::size_t>(extra_allocations)) {
+      throw StepError{"there are " + std::to_string(now.allocations - memory_mark_->allocations) +
+                      " more device memory allocations than at the mark (at most " +
+                      std::to_string(extra_allocations) + " allowed)"};
     }
   }
 
@@ -537,6 +574,7 @@ class ScriptRun {
   std::optional<Refusal> refusal_;  // the last step's, for {"expect": "refused"}
   bool refusal_expected_ = false;
   std::vector<double> frame_ms_;
+  std::optional<DeviceMemoryUse> memory_mark_;
 };
 
 std::string describe_step(const Json& step) {
@@ -551,8 +589,9 @@ int run_windowed(const EditOptions& options) {
     std::fprintf(stderr, "antumbra edit: --script runs headless; add --headless\n");
     return runtime::kExitUsage;
   }
-  editor_app::WindowedOptions windowed{options.graph, options.scene, options.device,
-                                       options.validation, options.frames};
+  editor_app::WindowedOptions windowed{
+      options.graph,  options.scene,      options.allow_outside_paths,
+      options.device, options.validation, options.frames};
   windowed.screenshot = options.out;
   windowed.select = options.select;
   windowed.frame_log = options.frame_log;
@@ -633,6 +672,11 @@ void print_edit_summary(const runtime::RenderSession& session, const ScriptRun& 
       "editor frame (%ux%u): %.2f ms wall median (edit + layer status + render + wait), "
       "%.3f ms GPU (sum of pass medians)\n",
       width, height, run.median_frame_ms(), gpu_ms);
+  if (const auto trend = run.frame_ms_trend()) {
+    std::printf(
+        "editor frame, wall median of the first tenth of frames: %.2f ms; of the last: %.2f ms\n",
+        trend->first, trend->second);
+  }
   for (const auto& file : run.unsaved()) {
     std::printf("warning: unsaved changes to %s were not saved (no \"save\" step after them)\n",
                 file.c_str());
@@ -683,7 +727,8 @@ int run_edit(const EditOptions& options) {
   session_options.viewport = {width, height};
   // The session's pass types, for the documents read before the device starts.
   const fgvk::PassRegistry registry = runtime::pass_registry(session_options);
-  auto scene = editor::SceneDocument::open(scene_path);
+  auto scene = editor::SceneDocument::open(scene_path, nullptr,
+                                           {.allow_outside_paths = options.allow_outside_paths});
   auto graph = editor::GraphDocument::load(graph_path, editor::lookup_in(registry.reflection()));
   print(scene.diagnostics());
   print(graph.diagnostics());

@@ -15,8 +15,9 @@
 namespace antumbra::app {
 
 struct EditOptions {
-  std::string graph;  // empty: the default graph
-  std::string scene;  // empty: the default scene
+  std::string graph;                 // empty: the default graph
+  std::string scene;                 // empty: the default scene
+  bool allow_outside_paths = false;  // scene paths outside their file's folder: warnings
   std::string device = "auto";
   bool validation = false;
   int frames = 0;  // > 0: render this many frames after the script, then close

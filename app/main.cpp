@@ -40,6 +40,14 @@ int run_plan_with_deprecated_flags(antumbra::app::PlanOptions plan,
   return antumbra::app::run_plan(plan);
 }
 
+// Scene files may name glTF and scene files outside their own folder only when asked
+// (docs/robustness.md, "Paths").
+void add_outside_paths_flag(CLI::App* cmd, bool& allow) {
+  cmd->add_flag("--allow-outside-paths", allow,
+                "Let scene files (and their glTFs) read files outside their own folder: absolute "
+                "paths and paths climbing out through '..' (a warning instead of an error)");
+}
+
 CLI::App* add_techniques_command(CLI::App& cli, antumbra::app::TechniquesOptions& options) {
   auto* cmd = cli.add_subcommand(
       "techniques",
@@ -113,6 +121,7 @@ int dispatch(int argc, char** argv) {
   render_cmd->add_option("--graph", render.graph,
                          "Frame graph JSON (default: data/graphs/layered-ssss.json)");
   render_cmd->add_option("--scene", render.scene, "Scene JSON (default: data/scenes/atrium.json)");
+  add_outside_paths_flag(render_cmd, render.allow_outside_paths);
   render_cmd->add_option("--size", render.size, "Viewport WxH")->capture_default_str();
   render_cmd->add_option("--frames", render.frames, "Frames to render")
       ->check(CLI::Range(1, 100000))
@@ -149,6 +158,7 @@ int dispatch(int argc, char** argv) {
       ->check(CLI::IsMember({"text", "json"}))
       ->capture_default_str();
   validate_cmd->add_flag("--werror", validate.werror, "Treat warnings as errors");
+  add_outside_paths_flag(validate_cmd, validate.allow_outside_paths);
 
   PlanOptions plan;
   auto* plan_cmd = cli.add_subcommand("plan", "Print the compiled plan of a graph");
@@ -178,6 +188,7 @@ int dispatch(int argc, char** argv) {
       "edit", "Edit lights and graph parameters with live layer-cap warnings (headless: scripted)");
   edit_cmd->add_option("--graph", edit.graph, "Frame graph JSON (default: layered-ssss.json)");
   edit_cmd->add_option("--scene", edit.scene, "Scene JSON (default: data/scenes/atrium.json)");
+  add_outside_paths_flag(edit_cmd, edit.allow_outside_paths);
   edit_cmd->add_option("--device", edit.device, "auto|cpu|gpu|N|<name substring>")
       ->capture_default_str();
   edit_cmd->add_flag("--validation", edit.validation,
@@ -288,6 +299,7 @@ int dispatch(int argc, char** argv) {
                           "Reference graph (default: data/graphs/reference.json)");
   quality_cmd->add_option("--scene", quality.scene,
                           "Scene JSON (default: data/scenes/atrium.json)");
+  add_outside_paths_flag(quality_cmd, quality.allow_outside_paths);
   quality_cmd->add_option("--size", quality.size, "Viewport WxH")->capture_default_str();
   quality_cmd->add_option("--out", quality.out,
                           "Folder for per-technique error heat maps (<graph>-error.png)");

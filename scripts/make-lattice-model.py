@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Writes data/models/lattice.gltf, lattice.bin and lattice.png: a 2 x 2 m carved wooden
+"""Writes data/scenes/models/lattice.gltf, lattice.bin and lattice.png: a 2 x 2 m carved wooden
 screen (one quad, uv 0..1) whose base-colour texture cuts a diamond lattice out of it by
 its alpha (alphaMode MASK, cutoff 0.5). The cut-out scene data/scenes/atrium-cutouts.json
 stands copies of it in the atrium, so that `bench --scenario materials/` measures what
@@ -30,7 +30,7 @@ def png(width, height, rows):
             + chunk(b"IDAT", zlib.compress(raw, 9)) + chunk(b"IEND", b""))
 
 def main():
-    out = Path("data/models")
+    out = Path("data/scenes/models")
     out.mkdir(parents=True, exist_ok=True)
     rows = [b"".join(texel(x, y) for x in range(SIZE)) for y in range(SIZE)]
     (out / "lattice.png").write_bytes(png(SIZE, SIZE, rows))

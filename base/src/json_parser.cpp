@@ -449,8 +449,23 @@ Diagnostic JsonDocument::make(std::string code, Severity severity, std::string m
                     pointer,         pos.line, pos.column};
 }
 
+namespace {
+
+Diagnostics too_large(const std::string& file, std::uint64_t size, std::uint64_t limit) {
+  Diagnostics diagnostics;
+  diagnostics.add(Diagnostic{codes::graph::kJsonTooLarge, Severity::error,
+                             "the JSON is " + std::to_string(size) +
+                                 " bytes; a JSON file may hold at most " + std::to_string(limit) +
+                                 " bytes (docs/robustness.md, \"Limits\")",
+                             file, "", 0, 0});
+  return diagnostics;
+}
+
+}  // namespace
+
 Result<JsonDocument> parse_json(std::string_view text, const std::string& file,
                                 const JsonParseOptions& options) {
+  if (text.size() > options.max_bytes) return too_large(file, text.size(), options.max_bytes);
   Parser parser(text, options);
   try {
     Json root = parser.parse_document();
@@ -483,6 +498,9 @@ Result<JsonDocument> load_json_file(const std::string& path, const JsonParseOpti
                                    (reason != 0 ? std::strerror(reason) : "unknown reason"),
                                path, "", 0, 0});
     return diagnostics;
+  }
+  if (const auto size = std::filesystem::file_size(path, ec); !ec && size > options.max_bytes) {
+    return too_large(path, size, options.max_bytes);
   }
   std::ostringstream buffer;
   buffer << in.rdbuf();

@@ -58,7 +58,7 @@ int run_watch_loop(RenderSession& session, const WatchOptions& options) {
     base::Diagnostics diagnostics;
     const fg::Plan before = session.executor().plan();
     if (scene_changed) {
-      auto scene = scene::load_scene_file(options.scene_path);
+      auto scene = scene::load_scene_file(options.scene_path, nullptr, options.scene_options);
       diagnostics.append(scene.diagnostics());
       if (scene.ok()) session.set_scene(std::move(scene.value()));
     }

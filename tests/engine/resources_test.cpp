@@ -72,6 +72,28 @@ TEST_F(GpuTest, SubAllocatorSharesBlocks) {
   }
 }
 
+// The soak's leak check reads these: each live allocation counts once, its bytes with it,
+// until its destruction is collected; a dedicated one (over half a block) as well.
+TEST_F(GpuTest, TheAllocatorCountsLiveAllocationsAndTheirBytes) {
+  const Allocator& allocator = ctx().allocator();
+  const std::size_t live = allocator.live_allocations();
+  const VkDeviceSize in_use = allocator.in_use_bytes();
+  Buffer small = Buffer::create(ctx(), 1000, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                                MemoryUsage::upload, "test.small");
+  Buffer large = Buffer::create(ctx(), Allocator::kBlockSize, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                MemoryUsage::gpu_only, "test.large");
+  EXPECT_TRUE(large.allocation().dedicated);
+  EXPECT_EQ(allocator.live_allocations(), live + 2);
+  EXPECT_EQ(allocator.in_use_bytes(), in_use + small.allocation().size + large.allocation().size);
+  EXPECT_GE(allocator.allocated_bytes(), allocator.in_use_bytes());
+  small.reset();
+  large.reset();
+  ctx().submit_immediate([](VkCommandBuffer) {});
+  ctx().collect_garbage();
+  EXPECT_EQ(allocator.live_allocations(), live);
+  EXPECT_EQ(allocator.in_use_bytes(), in_use);
+}
+
 TEST_F(GpuTest, LayerViewsAndCubeViews) {
   Image array =
       Image::create(ctx(), {VK_FORMAT_R16G16B16A16_SFLOAT,

@@ -1,6 +1,10 @@
 // The position-tracking JSON parser: values, positions and every error code.
 #include <gtest/gtest.h>
 
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+
 #include "antumbra/base/diagnostic_codes.hpp"
 #include "antumbra/base/json_document.hpp"
 
@@ -9,6 +13,13 @@ namespace {
 
 Diagnostic parse_error(std::string_view text) {
   auto r = parse_json(text, "x.json");
+  EXPECT_FALSE(r.ok()) << text;
+  if (r.ok() || r.diagnostics().empty()) return {};
+  return r.diagnostics()[0];
+}
+
+Diagnostic parse_error_with(std::string_view text, const JsonParseOptions& options) {
+  auto r = parse_json(text, "x.json", options);
   EXPECT_FALSE(r.ok()) << text;
   if (r.ok() || r.diagnostics().empty()) return {};
   return r.diagnostics()[0];
@@ -98,6 +109,27 @@ TEST(JsonParser, DepthLimit) {
   EXPECT_EQ(parse_error(deep).code, codes::graph::kJsonTooDeep);
   auto ok = parse_json(deep, "x.json", JsonParseOptions{400});
   EXPECT_TRUE(ok.ok());
+}
+
+// A file past the size limit is refused by its size, before a byte is read: a sparse file
+// of 65 MiB costs no disk.
+TEST(JsonParser, SizeLimit) {
+  const std::filesystem::path big =
+      std::filesystem::temp_directory_path() / "antumbra_json_size_limit.json";
+  { std::ofstream(big) << "{}"; }
+  std::filesystem::resize_file(big, (std::uintmax_t{65} << 20));
+  auto r = load_json_file(big.string());
+  std::filesystem::remove(big);
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.diagnostics()[0].code, codes::graph::kJsonTooLarge);
+  EXPECT_NE(r.diagnostics()[0].message.find("the JSON is 68157440 bytes; a JSON file may hold at "
+                                            "most 67108864 bytes"),
+            std::string::npos)
+      << r.diagnostics()[0].message;
+  JsonParseOptions small;
+  small.max_bytes = 4;
+  EXPECT_EQ(parse_error_with("{\"a\": 1}", small).code, codes::graph::kJsonTooLarge);
+  EXPECT_TRUE(parse_json("{}", "x.json", small).ok());
 }
 
 TEST(JsonParser, ByteOrderMarkIsSkipped) {

@@ -181,7 +181,8 @@ std::optional<Documents> load_documents(const WindowedOptions& options,
   auto images = std::make_unique<scene::ImageCache>();
   runtime::LoadProgressPrinter progress;
   images->set_progress(progress.sink());
-  auto scene = editor::SceneDocument::open(scene_path, images.get());
+  auto scene = editor::SceneDocument::open(scene_path, images.get(),
+                                           {.allow_outside_paths = options.allow_outside_paths});
   progress.finish();
   images->set_progress({});
   auto graph = editor::GraphDocument::load(graph_path, editor::lookup_in(registry.reflection()));

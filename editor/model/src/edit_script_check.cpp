@@ -82,6 +82,7 @@ const std::map<std::string, Action, std::less<>>& do_actions() {
       {"write-file",
        {{{"path", Kind::string, true}, {"text", Kind::string}, {"from", Kind::string}}}},
       {"reload", {}},
+      {"mark-memory", {}},
       {"camera",
        {{{"reset", Kind::boolean},
          {"pivot", Kind::string},
@@ -117,6 +118,7 @@ const std::map<std::string, Action, std::less<>>& expectations() {
          {"tolerance", Kind::number}}}},
       {"dirty", {{{"value", Kind::boolean, true}}}},
       {"refused", {{{"code", Kind::string}}}},
+      {"memory-within", {{{"percent", Kind::number}, {"extraAllocations", Kind::integer}}}},
   };
   return kActions;
 }

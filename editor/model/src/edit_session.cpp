@@ -54,7 +54,8 @@ bool EditSession::start(scene::ImageCache* images) {
   reload_graph();
   reload_summary_ = "none yet";  // the first load is not a reload
   if (diagnostics_.has_errors()) return false;
-  auto parsed = scene::parse_scene_text(scene_.to_text(), scene_.file().string(), images);
+  auto parsed = scene::parse_scene_text(scene_.to_text(), scene_.file().string(), images,
+                                        scene_.file_options());
   if (!parsed.ok()) {
     diagnostics_ = parsed.diagnostics();
     return false;
@@ -136,13 +137,14 @@ void EditSession::reload_scene_file() {
     message_ = "the scene changed on disk; your unsaved edits are kept";
     return;
   }
-  auto loaded = SceneDocument::load(scene_.file());
+  auto loaded = SceneDocument::load(scene_.file(), nullptr, scene_.file_options());
   if (!loaded.ok()) {
     diagnostics_ = loaded.diagnostics();
     message_ = refusal_text("scene", diagnostics_);
     return;
   }
-  auto parsed = scene::parse_scene_text(loaded->to_text(), scene_.file().string());
+  auto parsed = scene::parse_scene_text(loaded->to_text(), scene_.file().string(), nullptr,
+                                        scene_.file_options());
   if (!parsed.ok()) {
     diagnostics_ = parsed.diagnostics();
     message_ = refusal_text("scene", diagnostics_);

@@ -17,6 +17,7 @@ namespace {
 // engine's parser; only files with such objects pay for the load.
 std::vector<scene::PointLight> imported_lights_of(const base::JsonDocument& document,
                                                   scene::ImageCache* images,
+                                                  const scene::SceneFileOptions& options,
                                                   base::Diagnostics& diagnostics) {
   const auto objects = document.root().find("objects");
   if (objects == document.root().end() || !objects->is_array()) return {};
@@ -24,7 +25,7 @@ std::vector<scene::PointLight> imported_lights_of(const base::JsonDocument& docu
     return o.is_object() && (o.contains("gltf") || o.contains("scene"));
   });
   if (!imports) return {};
-  auto parsed = scene::parse_scene(document, images);
+  auto parsed = scene::parse_scene(document, images, options);
   if (parsed.ok()) return parsed->imported_lights;
   // Without them, overrides would read as lights lacking a position: say why first.
   for (const base::Diagnostic& d : parsed.diagnostics()) {
@@ -60,21 +61,23 @@ std::vector<scene::PointLight> check_scene(const base::JsonDocument& document,
 }  // namespace
 
 base::Result<SceneDocument> SceneDocument::load(const std::filesystem::path& file,
-                                                scene::ImageCache* images) {
+                                                scene::ImageCache* images,
+                                                const scene::SceneFileOptions& options) {
   auto text = read_text_file(file);
   if (!text.ok()) return text.diagnostics();
-  return parse(text.value(), file, images);
+  return parse(text.value(), file, images, options);
 }
 
 base::Result<SceneDocument> SceneDocument::open(const std::filesystem::path& file,
-                                                scene::ImageCache* images) {
-  if (!scene::is_gltf_file(file)) return load(file, images);
+                                                scene::ImageCache* images,
+                                                const scene::SceneFileOptions& options) {
+  if (!scene::is_gltf_file(file)) return load(file, images, options);
   const std::filesystem::path settings = scene::gltf_scene_file(file);
   std::error_code ec;
-  if (std::filesystem::is_regular_file(settings, ec)) return load(settings, images);
-  auto text = scene::gltf_scene_text(file, images);
+  if (std::filesystem::is_regular_file(settings, ec)) return load(settings, images, options);
+  auto text = scene::gltf_scene_text(file, images, options.allow_outside_paths);
   if (!text.ok()) return text.diagnostics();
-  auto doc = parse(text.value(), settings, images);
+  auto doc = parse(text.value(), settings, images, options);
   // The model's own warnings (missing textures, skipped lights), located in the glTF.
   if (doc.ok()) {
     for (const base::Diagnostic& d : text.diagnostics()) doc.diagnostics().add(d);
@@ -84,12 +87,13 @@ base::Result<SceneDocument> SceneDocument::open(const std::filesystem::path& fil
 
 base::Result<SceneDocument> SceneDocument::parse(std::string_view text,
                                                  const std::filesystem::path& file,
-                                                 scene::ImageCache* images) {
+                                                 scene::ImageCache* images,
+                                                 const scene::SceneFileOptions& options) {
   auto document = base::parse_json(text, file.string());
   if (!document.ok()) return document.diagnostics();
   base::Diagnostics diagnostics;
   std::vector<scene::PointLight> imported =
-      imported_lights_of(document.value(), images, diagnostics);
+      imported_lights_of(document.value(), images, options, diagnostics);
   std::vector<LightOrigin> origins;
   std::vector<scene::PointLight> lights =
       check_scene(document.value(), imported, origins, diagnostics);
@@ -99,6 +103,7 @@ base::Result<SceneDocument> SceneDocument::parse(std::string_view text,
   doc.lights_ = std::move(lights);
   doc.origins_ = std::move(origins);
   doc.imported_ = std::move(imported);
+  doc.file_options_ = options;
   return base::Result<SceneDocument>(std::move(doc), std::move(diagnostics));
 }
 
@@ -154,7 +159,7 @@ bool SceneDocument::redo() {
 }
 
 base::Diagnostics SceneDocument::validate() const {
-  return scene::parse_scene_text(to_text(), file().string()).diagnostics();
+  return scene::parse_scene_text(to_text(), file().string(), nullptr, file_options_).diagnostics();
 }
 
 base::Diagnostics SceneDocument::recover() {

@@ -132,6 +132,7 @@ Allocation Allocator::allocate_in(std::uint32_t type, const VkMemoryRequirements
     allocation.memory =
         allocate_memory(requirements.size, type, &allocation.mapped, "allocator.dedicated");
     ++dedicated_count_;
+    count_in(allocation);
     return allocation;
   }
   const std::uint32_t pool_index = type * 2 + (tiling == ResourceTiling::optimal ? 1u : 0u);
@@ -145,6 +146,7 @@ Allocation Allocator::allocate_in(std::uint32_t type, const VkMemoryRequirements
       allocation.offset = *offset;
       allocation.block = static_cast<std::uint32_t>(b);
       allocation.mapped = block->mapped ? block->mapped + *offset : nullptr;
+      count_in(allocation);
       return allocation;
     }
   }
@@ -156,6 +158,7 @@ Allocation Allocator::allocate_in(std::uint32_t type, const VkMemoryRequirements
   allocation.mapped = block->mapped ? block->mapped + *offset : nullptr;
   allocation.block = static_cast<std::uint32_t>(pool.blocks.size());
   pool.blocks.push_back(std::move(block));
+  count_in(allocation);
   return allocation;
 }
 
@@ -173,11 +176,19 @@ Allocation Allocator::allocate_heap(VkDeviceSize size, std::uint32_t memory_type
   allocation.dedicated = true;
   allocation.memory = allocate_memory(size, allocation.memory_type, &allocation.mapped, "heap");
   ++dedicated_count_;
+  count_in(allocation);
   return allocation;
+}
+
+void Allocator::count_in(const Allocation& allocation) {
+  ++live_allocations_;
+  in_use_bytes_ += allocation.size;
 }
 
 void Allocator::free(const Allocation& allocation) {
   if (!allocation.valid()) return;
+  --live_allocations_;
+  in_use_bytes_ -= allocation.size;
   if (allocation.dedicated) {
     vkFreeMemory(device_, allocation.memory, nullptr);
     allocated_bytes_ -= allocation.size;

@@ -29,8 +29,11 @@ std::filesystem::path gltf_scene_file(const std::filesystem::path& model) {
   return model.parent_path() / (model.filename().string() + ".scene.json");
 }
 
-base::Result<std::string> gltf_scene_text(const std::filesystem::path& model, ImageCache* images) {
-  auto imported = load_gltf(model.string(), GltfLimits{}, images);
+base::Result<std::string> gltf_scene_text(const std::filesystem::path& model, ImageCache* images,
+                                          bool allow_outside_paths) {
+  GltfLimits limits;
+  limits.allow_outside_paths = allow_outside_paths;
+  auto imported = load_gltf(model.string(), limits, images);
   if (!imported.ok()) return imported.diagnostics();
   Aabb box;
   for (const Mesh& mesh : imported->meshes) box.expand(mesh.bounds);

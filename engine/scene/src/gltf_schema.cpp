@@ -16,6 +16,7 @@
 #include "antumbra/base/diagnostic_codes.hpp"
 #include "antumbra/base/json_document.hpp"
 #include "gltf_accessors.hpp"
+#include "outside_path.hpp"
 
 namespace antumbra::scene::detail {
 namespace {
@@ -268,12 +269,8 @@ std::string decoded_uri(const std::string& uri) {
 }
 
 // Why `uri` names a file outside the glTF's folder, or "" when it does not.
-std::string outside_reason(const std::string& uri) {
-  const std::filesystem::path path(decoded_uri(uri));
-  if (path.has_root_path()) return "an absolute path";
-  const std::filesystem::path normal = path.lexically_normal();
-  if (!normal.empty() && *normal.begin() == "..") return "a path that climbs out through '..'";
-  return {};
+std::string uri_outside_reason(const std::string& uri) {
+  return outside_reason(std::filesystem::path(decoded_uri(uri)));
 }
 
 }  // namespace
@@ -289,7 +286,7 @@ void check_gltf_uris(const json& root, bool allow_outside, std::vector<GltfIssue
       if (!entry.is_object() || !entry.contains("uri") || !entry["uri"].is_string()) continue;
       const std::string uri = entry["uri"].get<std::string>();
       if (uri.starts_with("data:")) continue;
-      const std::string why = outside_reason(uri);
+      const std::string why = uri_outside_reason(uri);
       if (why.empty()) continue;
       const std::string pointer = "/" + std::string(kind) + "/" + std::to_string(i) + "/uri";
       std::string message = "'";
@@ -299,8 +296,8 @@ void check_gltf_uris(const json& root, bool allow_outside, std::vector<GltfIssue
       message += allow_outside ? ", outside the glTF file's folder; read because outside paths "
                                  "are allowed"
                                : ", outside the glTF file's folder: refused (a file names only "
-                                 "what lies beside it or below; GltfLimits::allow_outside_paths "
-                                 "allows it)";
+                                 "what lies beside it or below; --allow-outside-paths, or "
+                                 "GltfLimits::allow_outside_paths, allows it)";
       auto& sink = allow_outside ? warnings : errors;
       sink.push_back({codes::scene::kGltfPathOutside, std::move(message), pointer});
     }

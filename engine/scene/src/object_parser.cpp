@@ -197,6 +197,7 @@ void parse_gltf_object(ParseContext& ctx, const Json& o, const std::string& p,
   const auto relative = ctx.reader.get_string(o, p, "gltf", std::nullopt);
   if (!relative) return;
   const std::string gp = p + "/gltf";
+  if (!path_allowed(ctx, *relative, gp)) return;
   const std::filesystem::path path = ctx.base_dir / *relative;
   std::error_code ec;
   if (relative->empty() || !std::filesystem::is_regular_file(path, ec)) {
@@ -204,7 +205,9 @@ void parse_gltf_object(ParseContext& ctx, const Json& o, const std::string& p,
                      gp);
     return;
   }
-  auto imported = load_gltf(path.string(), GltfLimits{}, &ctx.images);
+  GltfLimits limits;
+  limits.allow_outside_paths = ctx.options.allow_outside_paths;
+  auto imported = load_gltf(path.string(), limits, &ctx.images);
   for (const base::Diagnostic& d : imported.diagnostics()) {
     std::string message = "in glTF '" + *relative + "': " + d.message;
     if (!d.pointer.empty()) message += " (at " + d.pointer + " in the glTF)";

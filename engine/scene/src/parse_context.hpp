@@ -10,6 +10,7 @@
 #include "antumbra/base/diagnostics.hpp"
 #include "antumbra/scene/image_cache.hpp"
 #include "antumbra/scene/scene.hpp"
+#include "antumbra/scene/scene_file.hpp"
 #include "json_reader.hpp"
 
 namespace antumbra::scene::detail {
@@ -23,6 +24,7 @@ struct ParseContext {
   std::vector<std::filesystem::path>& chain;
   // Decoded images, shared by every glTF of this load (and of the files it instances).
   ImageCache& images;
+  const SceneFileOptions& options;
   // Lights of instanced scenes. They follow the file's own lights in Scene::lights, so
   // that /lights/i stays scene light i for the editor.
   std::vector<PointLight> instanced_lights{};
@@ -79,6 +81,11 @@ void parse_scene_instance(ParseContext& ctx, const Json& object, const std::stri
 // parse_scene() for a document whose file is the last entry of `chain`.
 base::Result<Scene> parse_scene_document(const base::JsonDocument& document,
                                          std::vector<std::filesystem::path>& chain,
-                                         ImageCache& images);
+                                         ImageCache& images, const SceneFileOptions& options);
+
+// The "gltf" or "scene" path `relative` at `pointer`, checked against the file's folder
+// (docs/robustness.md, "Paths"): false when it is refused (SC046, reported); an allowed
+// outside path is reported as a warning and read.
+bool path_allowed(ParseContext& ctx, const std::string& relative, const std::string& pointer);
 
 }  // namespace antumbra::scene::detail

@@ -114,6 +114,7 @@ void parse_scene_instance(ParseContext& ctx, const Json& object, const std::stri
   const auto relative = r.get_string(object, pointer, "scene", std::nullopt);
   if (!relative) return;
   const std::string sp = pointer + "/scene";
+  if (!path_allowed(ctx, *relative, sp)) return;
   const std::filesystem::path path = ctx.base_dir / *relative;
   std::error_code ec;
   if (relative->empty() || !std::filesystem::is_regular_file(path, ec)) {
@@ -135,7 +136,7 @@ void parse_scene_instance(ParseContext& ctx, const Json& object, const std::stri
     return;
   }
   ctx.chain.push_back(canonical);
-  auto child = parse_scene_document(document.value(), ctx.chain, ctx.images);
+  auto child = parse_scene_document(document.value(), ctx.chain, ctx.images, ctx.options);
   ctx.chain.pop_back();
   r.append(child.diagnostics());  // located in the instanced file itself
   if (!child.ok()) {

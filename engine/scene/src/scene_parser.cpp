@@ -320,7 +320,7 @@ namespace detail {
 
 base::Result<Scene> parse_scene_document(const base::JsonDocument& document,
                                          std::vector<std::filesystem::path>& chain,
-                                         ImageCache& images) {
+                                         ImageCache& images, const SceneFileOptions& options) {
   base::Diagnostics diagnostics;
   JsonReader r(document, diagnostics);
   Scene scene;
@@ -337,8 +337,8 @@ base::Result<Scene> parse_scene_document(const base::JsonDocument& document,
   }
   parse_camera(r, root, scene.camera);
   parse_materials(r, root, scene);
-  detail::ParseContext ctx{r, scene, std::filesystem::path(document.file()).parent_path(), chain,
-                           images};
+  detail::ParseContext ctx{r,     scene,  std::filesystem::path(document.file()).parent_path(),
+                           chain, images, options};
   if (const auto it = root.find("objects"); it != root.end()) {
     detail::parse_objects(ctx, *it, "/objects");
   }
@@ -353,14 +353,16 @@ base::Result<Scene> parse_scene_document(const base::JsonDocument& document,
 
 }  // namespace detail
 
-base::Result<Scene> parse_scene(const base::JsonDocument& document, ImageCache* images) {
+base::Result<Scene> parse_scene(const base::JsonDocument& document, ImageCache* images,
+                                const SceneFileOptions& options) {
   std::error_code ec;
   ImageCache own_images;
   std::vector<std::filesystem::path> chain;
   if (!document.file().empty()) {
     chain.push_back(std::filesystem::weakly_canonical(document.file(), ec));
   }
-  return detail::parse_scene_document(document, chain, images != nullptr ? *images : own_images);
+  return detail::parse_scene_document(document, chain, images != nullptr ? *images : own_images,
+                                      options);
 }
 
 namespace {
@@ -387,31 +389,32 @@ base::Result<Scene> locate_in_model(base::Result<Scene> parsed, const base::Diag
 
 }  // namespace
 
-base::Result<Scene> load_scene_file(const std::string& path, ImageCache* images) {
+base::Result<Scene> load_scene_file(const std::string& path, ImageCache* images,
+                                    const SceneFileOptions& options) {
   if (is_gltf_file(path)) {
     // A model as the whole scene: its saved scene file when there is one, else a view
     // generated for it (gltf_scene.hpp).
     const std::filesystem::path settings = gltf_scene_file(path);
     std::error_code ec;
     if (std::filesystem::is_regular_file(settings, ec))
-      return load_scene_file(settings.string(), images);
+      return load_scene_file(settings.string(), images, options);
     ImageCache own_images;
     ImageCache& cache = images != nullptr ? *images : own_images;
-    auto text = gltf_scene_text(path, &cache);
+    auto text = gltf_scene_text(path, &cache, options.allow_outside_paths);
     if (!text.ok()) return text.diagnostics();
-    auto parsed = parse_scene_text(text.value(), settings.string(), &cache);
+    auto parsed = parse_scene_text(text.value(), settings.string(), &cache, options);
     return locate_in_model(std::move(parsed), text.diagnostics(), path, settings.string());
   }
   auto document = base::load_json_file(path);
   if (!document.ok()) return document.diagnostics();
-  return parse_scene(document.value(), images);
+  return parse_scene(document.value(), images, options);
 }
 
 base::Result<Scene> parse_scene_text(std::string_view text, const std::string& file,
-                                     ImageCache* images) {
+                                     ImageCache* images, const SceneFileOptions& options) {
   auto document = base::parse_json(text, file);
   if (!document.ok()) return document.diagnostics();
-  return parse_scene(document.value(), images);
+  return parse_scene(document.value(), images, options);
 }
 
 }  // namespace antumbra::scene

@@ -26,6 +26,7 @@ inline constexpr const char* kJsonEmpty = "FG002";
 inline constexpr const char* kJsonInvalidUtf8 = "FG003";
 inline constexpr const char* kJsonDuplicateKey = "FG004";
 inline constexpr const char* kJsonTooDeep = "FG005";
+inline constexpr const char* kJsonTooLarge = "FG006";  // past JsonParseOptions::max_bytes
 
 // Document structure and JSON types (graph_desc.cpp).
 inline constexpr const char* kWrongType = "FG010";           // a value has the wrong JSON type
@@ -147,7 +148,7 @@ inline constexpr const char* kGltfMaterial =
 inline constexpr const char* kGltfLight =
     "SC045";  // warning: KHR_lights_punctual light or reference invalid (skipped)
 inline constexpr const char* kGltfPathOutside =
-    "SC046";  // a buffer/image URI outside the glTF's folder (warning when allowed)
+    "SC046";  // a glTF URI or scene path outside its file's folder (warning when allowed)
 
 // Dynamic objects (SC050-SC059), reported at the "dynamic" entry.
 inline constexpr const char* kUnknownObject = "SC050";    // names no object of the file

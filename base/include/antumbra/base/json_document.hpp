@@ -3,6 +3,7 @@
 // does not track positions, so this parser builds the tree itself and records the
 // line:column of each value (and of each object key) under its JSON Pointer.
 
+#include <cstdint>
 #include <string>
 #include <string_view>
 #include <unordered_map>
@@ -51,6 +52,10 @@ class JsonDocument {
 
 struct JsonParseOptions {
   int max_depth = 256;  // guards the recursive parser against stack exhaustion
+  // A JSON file or text longer than this is refused before it is read (FG006): graphs,
+  // scenes and scripts are kilobytes; the document keeps a position per value, so a
+  // file's parse takes several times its size.
+  std::uint64_t max_bytes = std::uint64_t{64} << 20;
 };
 
 // Parses `text` strictly (RFC 8259: no comments, no trailing commas, no duplicate

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "antumbra/runtime/render_session.hpp"
+#include "antumbra/scene/scene_file.hpp"
 
 namespace antumbra::runtime {
 
@@ -18,6 +19,7 @@ struct WatchOptions {
   std::string out;     // image written after each successful reload
   double seconds = 0;  // stop after this long (0 = until interrupted)
   double poll_ms = 100;
+  scene::SceneFileOptions scene_options;  // for every reload of the scene
 };
 
 // Returns the process exit code (0 when the loop ends by time).

@@ -14,8 +14,9 @@ class PassRegistry;
 namespace antumbra::editor_app {
 
 struct WindowedOptions {
-  std::string graph;  // empty: the default graph
-  std::string scene;  // empty: the default scene
+  std::string graph;                 // empty: the default graph
+  std::string scene;                 // empty: the default scene
+  bool allow_outside_paths = false;  // scene paths outside their file's folder: warnings
   std::string device = "auto";
   bool validation = false;
   int frames = 0;         // > 0: close after this many presented frames (tests)

@@ -19,6 +19,7 @@
 #include "antumbra/editor/json_file.hpp"
 #include "antumbra/scene/image_cache.hpp"
 #include "antumbra/scene/scene.hpp"
+#include "antumbra/scene/scene_file.hpp"
 
 namespace antumbra::editor {
 
@@ -55,16 +56,23 @@ class SceneDocument {
   // diagnostics with file and line:column. recovery_available() tells whether a newer
   // recovery file was found beside the file.
   // `images` (optional) is the load's shared state: decoded images kept for the caller's
-  // own load of the scene, and its progress sink for long loads.
+  // own load of the scene, and its progress sink for long loads. `options` (what the file
+  // may make the loader read) stays with the document for every later parse of it.
   static base::Result<SceneDocument> load(const std::filesystem::path& file,
-                                          scene::ImageCache* images = nullptr);
+                                          scene::ImageCache* images = nullptr,
+                                          const scene::SceneFileOptions& options = {});
   // load(), except that a .gltf or .glb opens the model as the whole scene: its scene
   // file beside it when saved before, else a generated one (scene/gltf_scene.hpp), not
   // written until saved. Edits never touch the model.
   static base::Result<SceneDocument> open(const std::filesystem::path& file,
-                                          scene::ImageCache* images = nullptr);
+                                          scene::ImageCache* images = nullptr,
+                                          const scene::SceneFileOptions& options = {});
   static base::Result<SceneDocument> parse(std::string_view text, const std::filesystem::path& file,
-                                           scene::ImageCache* images = nullptr);
+                                           scene::ImageCache* images = nullptr,
+                                           const scene::SceneFileOptions& options = {});
+
+  // The options it was loaded with: every parse of its text uses them.
+  [[nodiscard]] const scene::SceneFileOptions& file_options() const { return file_options_; }
 
   [[nodiscard]] const std::filesystem::path& file() const { return file_.path(); }
   [[nodiscard]] const base::Json& json() const { return file_.root(); }
@@ -153,6 +161,7 @@ class SceneDocument {
   std::vector<scene::PointLight> lights_;
   std::vector<LightOrigin> origins_;  // parallel to lights_
   std::vector<scene::PointLight> imported_;
+  scene::SceneFileOptions file_options_;
   int selected_ = -1;
 };
 

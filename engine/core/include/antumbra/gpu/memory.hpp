@@ -74,7 +74,12 @@ class Allocator {
   [[nodiscard]] std::uint32_t find_memory_type(std::uint32_t type_bits, MemoryUsage usage) const;
   [[nodiscard]] std::size_t block_count() const;
   [[nodiscard]] std::size_t dedicated_count() const { return dedicated_count_; }
+  // VkDeviceMemory held (blocks and dedicated allocations).
   [[nodiscard]] VkDeviceSize allocated_bytes() const { return allocated_bytes_; }
+  // What live allocations take of it, and how many there are: a leak shows here even
+  // when it hides in a block that stays for other reasons (the editor's soak).
+  [[nodiscard]] VkDeviceSize in_use_bytes() const { return in_use_bytes_; }
+  [[nodiscard]] std::size_t live_allocations() const { return live_allocations_; }
 
  private:
   Allocation allocate_in(std::uint32_t type, const VkMemoryRequirements& requirements,
@@ -91,6 +96,7 @@ class Allocator {
     std::vector<std::unique_ptr<Block>> blocks;
   };
 
+  void count_in(const Allocation& allocation);
   VkDeviceMemory allocate_memory(VkDeviceSize size, std::uint32_t type, std::byte** mapped,
                                  const char* name);
 
@@ -100,6 +106,8 @@ class Allocator {
   std::vector<Pool> pools_;  // index = memory_type * 2 + tiling
   std::size_t dedicated_count_ = 0;
   VkDeviceSize allocated_bytes_ = 0;
+  VkDeviceSize in_use_bytes_ = 0;
+  std::size_t live_allocations_ = 0;
   VkDeviceSize fail_heaps_above_ = 0;
 };
 

@@ -24,7 +24,9 @@ std::filesystem::path gltf_scene_file(const std::filesystem::path& model);
 // camera or a framing one, a dim ambient and, when the model has no lights of its own
 // (KHR_lights_punctual), a three-light rig (key, fill, rim) sized to the model's bounds. The text
 // refers to the model by file name (the scene file lives beside it).
+// `allow_outside_paths`: GltfLimits::allow_outside_paths of the model's load.
 base::Result<std::string> gltf_scene_text(const std::filesystem::path& model,
-                                          ImageCache* images = nullptr);
+                                          ImageCache* images = nullptr,
+                                          bool allow_outside_paths = false);
 
 }  // namespace antumbra::scene

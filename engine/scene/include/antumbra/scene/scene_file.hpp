@@ -28,15 +28,26 @@ inline constexpr std::size_t kMaxSceneTriangles = std::size_t{1} << 26;
 // refused at the entry or object that passes the limit (SC028), before they are copied.
 inline constexpr std::size_t kMaxSceneLights = 4096;
 
+// What a scene file may make the loader read (docs/robustness.md, "Paths").
+struct SceneFileOptions {
+  // A "gltf" or "scene" path (and a glTF's buffer or image URI) that is absolute or climbs
+  // out of its file's folder through "..": a warning (SC046) instead of an error. The
+  // command line's --allow-outside-paths.
+  bool allow_outside_paths = false;
+};
+
 // Reads, parses and validates a scene file; glTF paths resolve against its folder. A
 // .gltf or .glb path opens the model as the whole scene (gltf_scene.hpp).
 // `images` shares decoded textures across loads (reloads); without it each load
 // decodes its own.
-base::Result<Scene> load_scene_file(const std::string& path, ImageCache* images = nullptr);
+base::Result<Scene> load_scene_file(const std::string& path, ImageCache* images = nullptr,
+                                    const SceneFileOptions& options = {});
 // Validates an already parsed document; glTF paths resolve against document.file()'s folder.
-base::Result<Scene> parse_scene(const base::JsonDocument& document, ImageCache* images = nullptr);
+base::Result<Scene> parse_scene(const base::JsonDocument& document, ImageCache* images = nullptr,
+                                const SceneFileOptions& options = {});
 // Convenience for tests and the editor: parse JSON text reported as coming from `file`.
 base::Result<Scene> parse_scene_text(std::string_view text, const std::string& file,
-                                     ImageCache* images = nullptr);
+                                     ImageCache* images = nullptr,
+                                     const SceneFileOptions& options = {});
 
 }  // namespace antumbra::scene
