@@ -59,8 +59,7 @@ TEST(ScenePaths, AnInstancedSceneOutsideTheFilesFolderIsRefusedUnlessAllowed) {
   expect_refused_then_allowed(R"({"name": "r", "scene": "../instance/room.json"})",
                               kInstanceDir + "parent.json", "/objects/0/scene", "'..'");
   expect_refused_then_allowed(R"({"name": "r", "scene": ")" + kInstanceDir + R"(room.json"})",
-                              kInstanceDir + "parent.json", "/objects/0/scene",
-                              "an absolute path");
+                              kInstanceDir + "parent.json", "/objects/0/scene", "an absolute path");
 }
 
 TEST(ScenePaths, AGltfOutsideTheFilesFolderIsRefusedUnlessAllowed) {
@@ -71,8 +70,8 @@ TEST(ScenePaths, AGltfOutsideTheFilesFolderIsRefusedUnlessAllowed) {
   quad["materials"] = nlohmann::json::array({nlohmann::json::object()});
   testing::write_json(dir / "quad.gltf", quad);
   const std::string file = (dir / "scenes" / "s.json").string();
-  expect_refused_then_allowed(R"({"name": "q", "gltf": "../quad.gltf"})", file,
-                              "/objects/0/gltf", "'..'");
+  expect_refused_then_allowed(R"({"name": "q", "gltf": "../quad.gltf"})", file, "/objects/0/gltf",
+                              "'..'");
   expect_refused_then_allowed(R"({"name": "q", "gltf": ")" + (dir / "quad.gltf").string() + "\"}",
                               file, "/objects/0/gltf", "an absolute path");
 }
