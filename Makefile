@@ -60,16 +60,19 @@ test-tsan: deps
 # generated script of SOAK_EDITS edits and SOAK_RELOADS shader and graph reloads; no step
 # may fail, no sanitizer report, and the device memory in use ends within 1 % of after the
 # first reload. Without the validation layer: it leaks at each vkDestroyInstance and is
-# unloaded before LeakSanitizer could name it. CI runs the 300-edit version in Release with
+# unloaded before LeakSanitizer could name it. lavapipe is preloaded (SOAK_PRELOAD, after the
+# ASan runtime, into the program alone) so that its global state stays reachable until exit
+# instead of being unloaded with the device. CI runs the 300-edit version in Release with
 # validation (cli.edit_soak): an ASan build of the Vulkan program does not fit its cold run.
 SOAK_EDITS   ?= 10000
 SOAK_RELOADS ?= 500
+SOAK_PRELOAD ?= $(shell $(CXX) -print-file-name=libasan.so) $(firstword $(wildcard /usr/lib/*/libvulkan_lvp.so))
 soak: deps
 	@cmake -S . -B $(ASAN_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DANTUMBRA_SANITIZE=ON \
 	  "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" "-DCMAKE_C_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" \
 	  -DANTUMBRA_BUILD_BENCHMARKS=OFF $(CMAKE_ARGS)
 	@cmake --build $(ASAN_BUILD) -j$(JOBS) --target antumbra
-	@ASAN_OPTIONS="detect_leaks=1:halt_on_error=1" UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1" \
+	@SOAK_PRELOAD="$(SOAK_PRELOAD)" ASAN_OPTIONS="detect_leaks=1:halt_on_error=1" UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1" \
 	  tests/cli/soak_test.sh $(ASAN_BUILD)/app/antumbra $(CURDIR) $(SOAK_EDITS) $(SOAK_RELOADS) no-validation
 
 # libFuzzer over every parser of outside data (clang; docs/robustness.md, "Fuzzing"): each

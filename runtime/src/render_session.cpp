@@ -30,8 +30,12 @@ double median(std::vector<double> values) {
 // steps, every label the pass opens becomes a nested scope (gpu::LabelScopes).
 class RenderSession::Observer final : public fgvk::PassObserver {
  public:
-  Observer(gpu::Context& gpu, gpu::GpuTimer& timer, bool steps)
-      : gpu_(gpu), timer_(timer), labels_(timer), steps_(steps) {}
+  Observer(gpu::Context& gpu, gpu::GpuTimer& timer, bool steps, std::size_t window)
+      : gpu_(gpu),
+        timer_(timer),
+        labels_(timer),
+        steps_(steps),
+        window_(std::max<std::size_t>(window, 1)) {}
 
   void begin_pass(VkCommandBuffer cmd, const fg::PlanPass& pass) override {
     scope_ = timer_.begin_scope(cmd, pass.name);
@@ -39,7 +43,7 @@ class RenderSession::Observer final : public fgvk::PassObserver {
     cpu_.restart();
   }
   void end_pass(VkCommandBuffer cmd, const fg::PlanPass& pass) override {
-    cpu_ms[pass.name].push_back(cpu_.elapsed_ms());
+    keep(cpu_ms[pass.name], cpu_.elapsed_ms());
     if (steps_) gpu_.set_label_listener(nullptr);
     timer_.end_scope(cmd, scope_);
   }
@@ -50,7 +54,7 @@ class RenderSession::Observer final : public fgvk::PassObserver {
     std::string pass;
     for (const auto& scope : timer_.last_results()) {
       if (scope.depth == 0) {
-        gpu_ms[scope.name].push_back(scope.gpu_ms);
+        keep(gpu_ms[scope.name], scope.gpu_ms);
         pass = scope.name;
         continue;
       }
@@ -60,7 +64,7 @@ class RenderSession::Observer final : public fgvk::PassObserver {
       }
       frame_steps[scope.name] += scope.gpu_ms;
     }
-    for (const auto& [name, ms] : frame_steps) step_ms[name].push_back(ms);
+    for (const auto& [name, ms] : frame_steps) keep(step_ms[name], ms);
   }
   std::map<std::string, std::vector<double>> cpu_ms;
   std::map<std::string, std::vector<double>> gpu_ms;
@@ -72,7 +76,17 @@ class RenderSession::Observer final : public fgvk::PassObserver {
   gpu::Context& gpu_;
   gpu::GpuTimer& timer_;
   gpu::LabelScopes labels_;
+  // A sample, dropping the oldest beyond the window: past twice the window, all but the
+  // latest `window_` go at once, so a frame costs amortised O(1).
+  void keep(std::vector<double>& samples, double ms) const {
+    samples.push_back(ms);
+    if (samples.size() > 2 * window_) {
+      samples.erase(samples.begin(), samples.end() - static_cast<std::ptrdiff_t>(window_));
+    }
+  }
+
   bool steps_ = false;
+  std::size_t window_;
   gpu::CpuTimer cpu_;
   std::uint32_t scope_ = 0;
   std::uint64_t last_completed_ = 0;
@@ -117,7 +131,7 @@ RenderSession::RenderSession(const DataPaths& paths, const SessionOptions& optio
   constexpr std::uint32_t kStepScopes = 4096;
   timer_ = std::make_unique<gpu::GpuTimer>(*gpu_, frames_->frames_in_flight(),
                                            options.time_steps ? kStepScopes : kPassScopes);
-  observer_ = std::make_unique<Observer>(*gpu_, *timer_, options.time_steps);
+  observer_ = std::make_unique<Observer>(*gpu_, *timer_, options.time_steps, options.timing_window);
 }
 
 RenderSession::~RenderSession() {
@@ -323,6 +337,12 @@ void RenderSession::reset_timings() {
   observer_->cpu_ms.clear();
   observer_->gpu_ms.clear();
   observer_->step_ms.clear();
+}
+
+std::size_t RenderSession::timing_samples() const {
+  std::size_t most = 0;
+  for (const auto& [name, samples] : observer_->gpu_ms) most = std::max(most, samples.size());
+  return most;
 }
 
 std::vector<PassTiming> RenderSession::pass_timings() const {

@@ -31,8 +31,9 @@ python3 "$source_root/scripts/soak-script.py" --scene "$tmp/scene.json" --graph 
   || fail "soak-script.py failed"
 
 start=$(date +%s)
+# SOAK_PRELOAD (make soak): libraries loaded into the program alone, before it starts.
 # shellcheck disable=SC2086  # $validation is one flag or nothing
-"$antumbra" edit --headless $validation --size 64x36 --graph "$graph" --scene "$tmp/scene.json" \
+LD_PRELOAD="${SOAK_PRELOAD:-${LD_PRELOAD:-}}" "$antumbra" edit --headless $validation --size 64x36 --graph "$graph" --scene "$tmp/scene.json" \
   --script "$tmp/soak.json" >"$log" 2>&1
 rc=$?
 [ $rc -eq 0 ] || fail "edit exited with $rc"

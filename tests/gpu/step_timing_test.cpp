@@ -50,6 +50,27 @@ TEST_F(StepTimingTest, LabelsInsideAPassAreItsStepsAndNotPasses) {
   EXPECT_TRUE(session->step_timings().empty()) << "reset_timings() forgets the steps too";
 }
 
+// A session running for hours holds the samples of its latest frames only: between the
+// window and twice it, dropped oldest first, for passes and steps alike.
+TEST_F(StepTimingTest, TimingsHoldTheLatestFramesOnly) {
+  runtime::SessionOptions options;
+  options.viewport = {32, 18};
+  options.time_steps = true;
+  options.timing_window = 3;
+  OPEN_SESSION(session, options);
+  load_graph_ok(*session, compute_graph());
+  session->set_scene(default_scene());
+  session->render(6);
+  EXPECT_EQ(session->timing_samples(), 6u);
+  session->render(1);  // past twice the window: the latest 3 stay
+  EXPECT_EQ(session->timing_samples(), 3u);
+  session->render(20);
+  EXPECT_GE(session->timing_samples(), 3u);
+  EXPECT_LE(session->timing_samples(), 6u);
+  for (const auto& pass : session->pass_timings()) EXPECT_LE(pass.gpu_samples.size(), 6u);
+  for (const auto& step : session->step_timings()) EXPECT_LE(step.gpu_samples.size(), 6u);
+}
+
 TEST_F(StepTimingTest, WithoutTheOptionThereAreNoSteps) {
   OPEN_SESSION(session);
   load_graph_ok(*session, compute_graph());

@@ -57,6 +57,11 @@ struct SessionOptions {
   // Also time the steps inside passes (every label a pass opens: a shadow pass's cull,
   // raster and resolve): step_timings(). A timestamp pair per step costs a little.
   bool time_steps = false;
+  // Timings keep the samples of the latest frames only, between this many and twice as
+  // many per pass (and step), so that a session running for hours (render --watch, the
+  // headless editor) holds bounded memory: pass_timings() is then the median of those
+  // latest frames. reset_timings() starts over.
+  std::size_t timing_window = 8192;
 };
 
 // What the host's submission of a frame record() filled must signal (docs/integration.md,
@@ -117,6 +122,9 @@ class RenderSession {
   [[nodiscard]] VkExtent2D viewport() const { return options_.viewport; }
   // Forget the timings gathered so far (after warm-up frames).
   void reset_timings();
+  // How many frames' samples the timings hold now (at most twice
+  // SessionOptions::timing_window).
+  [[nodiscard]] std::size_t timing_samples() const;
 
   // Called with the frame's index in this render() call before the frame reads the
   // scene: per-frame changes (bench's moving lights, through set_lights) without leaving
