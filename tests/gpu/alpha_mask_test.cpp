@@ -85,7 +85,7 @@ std::string scene_text(const std::filesystem::path& dir, Caster caster, float li
   }
   if (caster != Caster::none) {
     // Rotated half a turn about x, the quad faces down (its uv mirrored in z).
-    scene["objects"].push_back({{"gltf", (dir / "quad.gltf").string()},
+    scene["objects"].push_back({{"gltf", "quad.gltf"},  // beside scene.json
                                 {"position", {0.0, kQuadHeight, 0.0}},
                                 {"rotation", {down ? 180.0 : 0.0, 0.0, 0.0}}});
   }

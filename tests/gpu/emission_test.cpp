@@ -71,8 +71,7 @@ scene::Scene quad_scene(const std::string& name, const json& material,
   antumbra::testing::write_json(dir / "quad.gltf", doc);
   const std::string text =
       R"({"version": 1, "camera": {"position": [0, 3, 1], "target": [0, 0, 0]},
-          "objects": [{"gltf": ")" +
-      (dir / "quad.gltf").string() + R"("}]})";
+          "objects": [{"gltf": "quad.gltf"}]})";  // beside scene.json
   auto parsed = scene::parse_scene_text(text, (dir / "scene.json").string());
   EXPECT_TRUE(parsed.ok()) << describe(parsed.diagnostics());
   scene::Scene s = parsed.ok() ? parsed.value() : scene::Scene{};

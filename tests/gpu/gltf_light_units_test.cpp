@@ -44,8 +44,7 @@ scene::Scene lit_quad(const std::string& name, const json& light, const json& no
   antumbra::testing::write_json(dir / "quad.gltf", doc);
   const std::string text =
       R"({"version": 1, "camera": {"position": [0, 3, 1], "target": [0, 0, 0]},
-          "objects": [{"name": "q", "gltf": ")" +
-      (dir / "quad.gltf").string() + R"("}]})";
+          "objects": [{"name": "q", "gltf": "quad.gltf"}]})";  // beside scene.json
   auto parsed = scene::parse_scene_text(text, (dir / "scene.json").string());
   EXPECT_TRUE(parsed.ok()) << describe(parsed.diagnostics());
   return parsed.ok() ? parsed.value() : scene::Scene{};

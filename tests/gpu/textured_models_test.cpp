@@ -26,8 +26,10 @@ const std::string kModels = "/usr/share/assimp/models/glTF2";
 scene::Scene model_scene(const std::string& file, bool textured = true) {
   const std::string text = R"({"version": 1, "camera": {"position": [0, 0, 5], "target": [0, 0, 0]},
     "ambient": [0.08, 0.08, 0.08], "objects": [{"gltf": ")" +
-                           file + R"("}]})";
-  auto parsed = scene::parse_scene_text(text, "/tmp/textured-model.json");
+                           std::filesystem::path(file).filename().string() + R"("}]})";
+  // Read as if it lay beside the model: a scene names only files in its own folder.
+  const auto beside = std::filesystem::path(file).parent_path() / "textured-model.json";
+  auto parsed = scene::parse_scene_text(text, beside.string());
   EXPECT_TRUE(parsed.ok()) << describe(parsed.diagnostics());
   scene::Scene s = parsed.ok() ? parsed.value() : scene::Scene{};
   if (s.meshes.empty()) return s;

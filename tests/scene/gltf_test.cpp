@@ -13,6 +13,7 @@ namespace {
 namespace fs = std::filesystem;
 
 const std::string kFixtures = std::string(ANTUMBRA_SOURCE_DIR) + "/tests/data/scenes/gltf/";
+const std::string kBadScenes = std::string(ANTUMBRA_SOURCE_DIR) + "/tests/data/scenes/bad/";
 const std::string kAssimp = ANTUMBRA_GLTF_MODELS_DIR;
 
 void expect_triangle(const base::Result<GltfImport>& result) {
@@ -72,13 +73,13 @@ TEST_P(BadGltfFiles, FailWithTheExpectedCode) {
 INSTANTIATE_TEST_SUITE_P(
     Fixtures, BadGltfFiles,
     ::testing::Values(
-        BadGltf{kFixtures + "bad_index.gltf", codes::scene::kGltfIndexOutOfRange, "/accessors/1"},
+        BadGltf{kBadScenes + "bad_index.gltf", codes::scene::kGltfIndexOutOfRange, "/accessors/1"},
         BadGltf{kFixtures + "accessor_overflow.gltf", codes::scene::kGltfOutOfBounds,
                 "/accessors/0"},
         BadGltf{kFixtures + "bad_stride.gltf", codes::scene::kGltfBadAccessor,
                 "/bufferViews/0/byteStride"},
         BadGltf{kFixtures + "float_indices.gltf", codes::scene::kGltfBadAccessor, "/accessors/1"},
-        BadGltf{kFixtures + "cycle.gltf", codes::scene::kGltfNodeCycle, "/nodes/1/children/0"},
+        BadGltf{kBadScenes + "cycle.gltf", codes::scene::kGltfNodeCycle, "/nodes/1/children/0"},
         BadGltf{kFixtures + "no_such_file.gltf", codes::scene::kGltfFileMissing, ""},
         // Found by the gltf fuzz target: an image's bufferView one byte past its buffer made
         // tinygltf read past the heap block; refused before tinygltf runs.
