@@ -12,6 +12,7 @@
 #include "antumbra/gpu/commands.hpp"
 #include "antumbra/gpu/context.hpp"
 #include "antumbra/gpu/pipelines.hpp"
+#include "chunk_plan.hpp"
 #include "common/frame_resources.hpp"
 #include "common/own_buffer_sync.hpp"
 #include "common/ports.hpp"
@@ -27,17 +28,15 @@ using own_sync::compute_to_copy;
 using own_sync::kStorageReadWrite;
 using own_sync::transfer_to_compute;
 
-// Scratch bounds per chunk: depth texels and work items. A frame that asks for more
-// faces is rasterised in several rounds through the same buffers.
-constexpr VkDeviceSize kMaxScratchBytes = VkDeviceSize{256} << 20;
-constexpr VkDeviceSize kMaxItems = VkDeviceSize{32} << 20;
 constexpr std::uint32_t kClearDepthBits = shared::kRasterClearDepth;
 constexpr std::uint32_t kClearTint = shared::kRasterClearTint;
 
-std::uint32_t regions_per_face(std::uint32_t size) {
-  const std::uint32_t per_axis =
-      (size + (1u << shared::kRasterRegionShift) - 1u) >> shared::kRasterRegionShift;
-  return per_axis * per_axis;
+// A face's size: its light's own (per-light resolution), at most the atlas's.
+std::uint32_t face_size_of(const AtlasFrame& frame, std::uint32_t layer, std::uint32_t atlas_size) {
+  const ShadowLight& light = frame.lights.at(frame.faces[layer].info.x);
+  return light.projection.y > 0.0f
+             ? std::min(static_cast<std::uint32_t>(light.projection.y), atlas_size)
+             : atlas_size;
 }
 
 gpu::DescriptorSetLayoutBuilder raster_bindings() {
@@ -164,23 +163,29 @@ void ComputeRasterizer::place_dynamic(fgvk::ExecuteContext& context) {
 }
 
 void ComputeRasterizer::ensure_scratch(fgvk::ExecuteContext& context, std::uint32_t faces,
-                                       std::uint32_t size) {
+                                       std::uint32_t largest, std::uint32_t atlas_size) {
+  // Slots of the largest face drawn, grown but never shrunk while the geometry and the
+  // atlas stay (a light crossing a size band would otherwise remake the buffers), so a
+  // frame of small faces (per-light resolution) fits many more per chunk: each chunk
+  // records its clear, cull, rasterisation and resolve even where the decision draws
+  // nothing, and the district's 6144 candidates were 187 chunks of 1024^2 slots (3 of 128^2).
+  const std::uint32_t size =
+      atlas_size == atlas_size_ && chunk_faces_ > 0 ? std::max(largest, scratch_size_) : largest;
   const VkDeviceSize face_bytes = VkDeviceSize{size} * size * 4;
-  // Every list's worst case per face: each cluster once in the depth or the cut list, a
-  // translucent one in the tint list instead (or besides, counted twice to be safe).
-  const VkDeviceSize items_per_face = std::max<VkDeviceSize>(
-      1, (VkDeviceSize{cluster_count_} + translucent_clusters_) * regions_per_face(size));
-  // Each buffer is bound whole, so none may pass maxStorageBufferRange (128 MiB on
-  // lavapipe); the depth scratch holds one face more than a chunk (the cleared face).
-  const VkDeviceSize range = context.gpu.limits().maxStorageBufferRange;
-  const VkDeviceSize scratch = std::min(kMaxScratchBytes, range) / face_bytes;
-  const VkDeviceSize items = std::min(kMaxItems, range / 8) / items_per_face;
-  const auto fit = static_cast<std::uint32_t>(
-      std::clamp<VkDeviceSize>(std::min(scratch > 0 ? scratch - 1 : 0, items), 1, 65535));
-  const std::uint32_t wanted = std::clamp(faces, 1u, fit);
-  if (chunk_faces_ >= wanted && scratch_size_ == size) return;
+  const VkDeviceSize cleared_bytes = VkDeviceSize{atlas_size} * atlas_size * 4;
+  // A frame that asks for more faces is rasterised in several rounds through the same
+  // buffers (chunk_plan.hpp).
+  const std::uint32_t wanted =
+      chunk_faces({.faces = faces,
+                   .slot_size = size,
+                   .atlas_size = atlas_size,
+                   .clusters = cluster_count_,
+                   .translucent_clusters = translucent_clusters_,
+                   .max_buffer_bytes = context.gpu.limits().maxStorageBufferRange});
+  if (chunk_faces_ >= wanted && scratch_size_ == size && atlas_size_ == atlas_size) return;
   chunk_faces_ = wanted;
   scratch_size_ = size;
+  atlas_size_ = atlas_size;
   // The depth list never holds cut clusters; the three lists together fit items_per_face.
   capacity_depth_ = static_cast<std::uint32_t>(VkDeviceSize{cluster_count_ - cut_clusters_} *
                                                regions_per_face(size) * chunk_faces_);
@@ -189,8 +194,9 @@ void ComputeRasterizer::ensure_scratch(fgvk::ExecuteContext& context, std::uint3
   capacity_cut_ = static_cast<std::uint32_t>(VkDeviceSize{cut_clusters_} * regions_per_face(size) *
                                              chunk_faces_);
   const std::string& name = context.pass.name;
-  // One more face than a chunk holds: the cleared face copied into untouched layers.
-  const VkDeviceSize bytes = face_bytes * (chunk_faces_ + 1);
+  // After the chunk's faces, the cleared face (of the atlas's size) that fills untouched
+  // layers.
+  const VkDeviceSize bytes = face_bytes * chunk_faces_ + cleared_bytes;
   depth_dirty_ = VK_WHOLE_SIZE;  // new buffers: fill them whole before their first use
   tint_dirty_ = VK_WHOLE_SIZE;
   depth_ =
@@ -226,7 +232,10 @@ void ComputeRasterizer::execute(fgvk::ExecuteContext& context, const AtlasFrame&
   count_clusters(context);  // uploads the clusters when the geometry changed
   place_dynamic(context);
   const std::uint32_t size = frame.header.counts.z;
-  ensure_scratch(context, static_cast<std::uint32_t>(layers.size()), size);
+  std::uint32_t largest = 1;
+  for (const std::uint32_t layer : layers)
+    largest = std::max(largest, face_size_of(frame, layer, size));
+  ensure_scratch(context, static_cast<std::uint32_t>(layers.size()), largest, size);
   write_records(context, frame, tinted, settings);
   decision_.record(context, frame, staging,
                    {.records = static_cast<std::uint32_t>(layers.size()),
@@ -253,7 +262,7 @@ void ComputeRasterizer::write_records(fgvk::ExecuteContext& context, const Atlas
                                       const std::vector<bool>& tinted,
                                       const ComputeRasterSettings& settings) {
   const std::vector<std::uint32_t>& layers = frame.render_layers;
-  const std::uint32_t size = scratch_size_;
+  const std::uint32_t size = scratch_size_;  // a slot's side (tint slots, the cleared face)
   untouched_.clear();
   fill_first_ = 0;
   if (frame.clear_all && storage_atlas_) {
@@ -299,8 +308,7 @@ void ComputeRasterizer::write_records(fgvk::ExecuteContext& context, const Atlas
     const ShadowLight& l = frame.lights.at(light);
     const bool ortho = l.direction_type.w == kLightTypeDirectional;
     // Per-light resolution: the face is drawn into the square at its layer's origin.
-    const std::uint32_t face_size =
-        l.projection.y > 0.0f ? std::min(static_cast<std::uint32_t>(l.projection.y), size) : size;
+    const std::uint32_t face_size = face_size_of(frame, layers[i], atlas_size_);
     shared::RasterFace& r = out[i];
     r.view_proj = face.view_proj;
     r.light = glm::vec4(glm::vec3(l.position_range), l.position_range.w);
@@ -526,11 +534,11 @@ void ComputeRasterizer::fill_untouched(fgvk::ExecuteContext& context, const Atla
   if (untouched_.empty()) return;
   const auto& atlas = context.bindings.required_image(port::kAtlas);
   const std::uint32_t size = scratch_size_;
-  const VkDeviceSize face_bytes = VkDeviceSize{size} * size * 4;
-  const VkDeviceSize cleared = face_bytes * chunk_faces_;
+  const VkDeviceSize cleared = VkDeviceSize{size} * size * 4 * chunk_faces_;
   after_all(context.cmd, {depth_}, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
             VK_ACCESS_2_TRANSFER_WRITE_BIT);
-  vkCmdFillBuffer(context.cmd, depth_, cleared, face_bytes, kClearDepthBits);
+  vkCmdFillBuffer(context.cmd, depth_, cleared, VkDeviceSize{atlas_size_} * atlas_size_ * 4,
+                  kClearDepthBits);
   if (storage_atlas_) {
     transfer_to_compute(context.cmd, {depth_});
     const DecisionLayout layout{.records = static_cast<std::uint32_t>(frame.render_layers.size()),

@@ -71,7 +71,10 @@ class ComputeRasterizer {
   void upload_geometry(fgvk::ExecuteContext& context);
   // Moves the dynamic clusters' bounds where their meshes are this frame.
   void place_dynamic(fgvk::ExecuteContext& context);
-  void ensure_scratch(fgvk::ExecuteContext& context, std::uint32_t faces, std::uint32_t size);
+  // Scratch for `faces` faces of at most `largest` texels a side, in chunks, and the
+  // cleared face of the atlas's size.
+  void ensure_scratch(fgvk::ExecuteContext& context, std::uint32_t faces, std::uint32_t largest,
+                      std::uint32_t atlas_size);
   void write_records(fgvk::ExecuteContext& context, const AtlasFrame& frame,
                      const std::vector<bool>& tinted, const ComputeRasterSettings& settings);
   // `variant`: a pipeline of the same layout to bind instead of `pipeline`'s own; only
@@ -125,7 +128,8 @@ class ComputeRasterizer {
   std::uint64_t dynamic_version_ = ~0ull;
   std::vector<gpu::Buffer> dynamic_staging_;  // per frame-in-flight slot
   std::uint32_t chunk_faces_ = 0;             // faces the scratch holds, plus one cleared face
-  std::uint32_t scratch_size_ = 0;
+  std::uint32_t scratch_size_ = 0;            // a face slot's side: the largest face drawn so far
+  std::uint32_t atlas_size_ = 0;              // the atlas's face size (the cleared face's side)
   gpu::Buffer depth_;
   gpu::Buffer tint_;
   gpu::Buffer counters_;
