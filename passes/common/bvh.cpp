@@ -243,6 +243,18 @@ Bvh build_bvh(std::span<const glm::vec3> positions, std::span<const std::uint32_
   return Builder(std::move(prims)).build();
 }
 
+std::vector<glm::vec4> bvh_vertices(const Bvh& bvh, std::span<const glm::vec3> positions,
+                                    std::span<const std::uint32_t> indices) {
+  std::vector<glm::vec4> out;
+  out.reserve(bvh.triangles.size() * 3);
+  for (const std::uint32_t triangle : bvh.triangles) {
+    for (int k = 0; k < 3; ++k) {
+      out.emplace_back(vertex(positions, indices, triangle, k), std::bit_cast<float>(triangle));
+    }
+  }
+  return out;
+}
+
 std::optional<BvhHit> closest_hit(const Bvh& bvh, std::span<const glm::vec3> positions,
                                   std::span<const std::uint32_t> indices, glm::vec3 origin,
                                   glm::vec3 direction, float t_min, float t_max) {

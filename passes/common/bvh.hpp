@@ -28,6 +28,11 @@ struct Bvh {
 // out of range or the index count is not a multiple of 3.
 Bvh build_bvh(std::span<const glm::vec3> positions, std::span<const std::uint32_t> indices);
 
+// The triangles' vertices in leaf order, as the GPU reads them (bvh.glsl's BVH_VERTEX):
+// 3 per triangle, xyz the position, w the triangle's input index as uint bits.
+std::vector<glm::vec4> bvh_vertices(const Bvh& bvh, std::span<const glm::vec3> positions,
+                                    std::span<const std::uint32_t> indices);
+
 struct BvhHit {
   std::uint32_t triangle = 0;  // index into the input's triangles
   float t = 0.0f;              // distance along the ray in units of `direction`
