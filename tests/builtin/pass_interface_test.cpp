@@ -25,6 +25,7 @@
 #include "deferred_lighting/deferred_lighting_interface.h"
 #include "gbuffer/gbuffer_interface.h"
 #include "gbuffer/visibility_interface.h"
+#include "interface/shared/bvh.h"
 #include "interface/shared/frame_uniforms.h"
 #include "interface/shared/glsl_cpp.h"
 #include "interface/shared/layer_palette.h"
@@ -63,6 +64,7 @@ const std::vector<std::string> kHeaders{
     "deferred_lighting/deferred_lighting_interface.h",
     "gbuffer/gbuffer_interface.h",
     "gbuffer/visibility_interface.h",
+    "interface/shared/bvh.h",
     "interface/shared/frame_uniforms.h",
     "interface/shared/glsl_cpp.h",
     "interface/shared/layer_palette.h",
@@ -95,6 +97,8 @@ static_assert(offsetof(shared::AnisotropicBlurPush, depth_threshold) == 8);
 static_assert(offsetof(shared::ReferenceAccumulatePush, sample_index) == 8);
 static_assert(offsetof(shared::TiledLightingPush, image_size) == 16);
 static_assert(offsetof(shared::ReferenceResolvePush, image_size) == 24);
+// The BVH's nodes: two vec4, 32 bytes, as common/bvh.glsl indexes them.
+static_assert(sizeof(shared::BvhNode) == 32 && offsetof(shared::BvhNode, hi) == 16);
 
 const fs::path kPasses = fs::path(ANTUMBRA_SOURCE_DIR) / "passes";
 
