@@ -99,6 +99,7 @@ int run_techniques(const TechniquesOptions& options) {
   quality.scene = options.scene;
   quality.size = options.size;
   quality.device = options.device;
+  quality.allow_outside_paths = options.allow_outside_paths;
   // Said before minutes of rendering, and again in the file.
   const auto size_warning = size_warning_of(options.size);
   if (size_warning) std::fprintf(stderr, "%s\n", base::format_text(*size_warning).c_str());

@@ -142,6 +142,7 @@ struct TechniquesOptions {
   std::string cpu_bench;  // bench.json from lavapipe (table1 rows); empty: no column
   std::string out = kTechniquesDefaultOut;  // never the committed docs/ unless named
   std::string device = "auto";
+  bool allow_outside_paths = false;  // scene paths outside their file's folder: warnings
 };
 int run_techniques(const TechniquesOptions& options);
 

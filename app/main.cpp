@@ -67,6 +67,7 @@ CLI::App* add_techniques_command(CLI::App& cli, antumbra::app::TechniquesOptions
       ->capture_default_str();
   cmd->add_option("--device", options.device, "auto|cpu|gpu|N|<name substring>")
       ->capture_default_str();
+  add_outside_paths_flag(cmd, options.allow_outside_paths);
   return cmd;
 }
 

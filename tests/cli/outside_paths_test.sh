@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # A scene file names only what lies beside it or below (docs/robustness.md, "Paths"): a
-# "gltf" path climbing out of its folder is error SC046, located, in validate, render and the
-# headless editor (exit 1, nothing rendered); --allow-outside-paths makes it a warning and
-# the model is read.
+# "gltf" path climbing out of its folder is error SC046, located, in validate, render, the
+# headless editor and techniques (exit 1, nothing rendered); --allow-outside-paths makes it
+# a warning and the model is read.
 set -u
 antumbra=$1
 source_root=$2
@@ -57,4 +57,16 @@ grep -Eq "$located" "$log" || fail "edit: no located SC046"
   >"$log" 2>&1
 rc=$?
 [ $rc -eq 0 ] || fail "edit --allow-outside-paths exited with $rc, not 0"
+"$antumbra" techniques --scene "$scene" --graph hard.json --size 32x18 --out "$tmp/t/refused.md" \
+  >"$log" 2>&1
+rc=$?
+[ $rc -eq 1 ] || fail "techniques exited with $rc, not 1"
+grep -Eq "$located" "$log" || fail "techniques: no located SC046"
+[ -e "$tmp/t/refused.md" ] && fail "techniques wrote a table of a refused scene"
+"$antumbra" techniques --allow-outside-paths --scene "$scene" --graph hard.json --size 32x18 \
+  --out "$tmp/t/read.md" >"$log" 2>&1
+rc=$?
+[ $rc -eq 0 ] || fail "techniques --allow-outside-paths exited with $rc, not 0"
+grep -q "warning\[SC046\]" "$log" || fail "techniques --allow-outside-paths: no SC046 warning"
+[ -s "$tmp/t/read.md" ] || fail "techniques --allow-outside-paths wrote no table"
 echo "outside paths: refused and located by default, read with a warning when allowed"
