@@ -145,8 +145,7 @@ class Builder {
       const auto at = static_cast<std::uint32_t>(middle - prims_.begin());
       if (at > first && at < first + count) return at;
     }
-    const std::uint32_t half = first + count / 2;
-    return half;
+    return first + count / 2;
   }
 
   static int bin_of(float value, float lo, float extent) {
