@@ -50,6 +50,23 @@ ANTUMBRA_BINDING(kRefFinalHdr, 4)
 ANTUMBRA_BINDING(kRefFinalPenumbra, 5)
 // HAS_EMISSIVE: the G-buffer's emission and occlusion.
 ANTUMBRA_BINDING(kRefFinalEmissive, 6)
+// reference_trace.comp (visibility "rays"): the accumulation's inputs and sums, the BVH
+// (nodes, then the triangles' vertices in leaf order: common/bvh.glsl) and what a hit
+// needs to decide whether it blocks, cuts or tints (the scene's indices, vertices,
+// texture coordinates, materials and base-colour textures).
+ANTUMBRA_BINDING(kRefTraceFrame, 0)
+ANTUMBRA_BINDING(kRefTraceLights, 1)
+ANTUMBRA_BINDING(kRefTraceDepth, 2)
+ANTUMBRA_BINDING(kRefTraceNormal, 3)
+ANTUMBRA_BINDING(kRefTracePoints, 4)
+ANTUMBRA_BINDING(kRefTraceVisibility, 5)
+ANTUMBRA_BINDING(kRefTraceBvh, 6)
+ANTUMBRA_BINDING(kRefTraceIndices, 7)
+ANTUMBRA_BINDING(kRefTraceVertices, 8)
+ANTUMBRA_BINDING(kRefTraceAttributes, 9)
+ANTUMBRA_BINDING(kRefTraceMaterials, 10)
+ANTUMBRA_BINDING(kRefTraceSrgbTextures, 11)
+ANTUMBRA_BINDING(kRefTraceSampler, 12)
 
 // reference_depth.vert
 #if defined(__cplusplus) || defined(ANTUMBRA_REFERENCE_DEPTH_SHADER)
@@ -76,6 +93,24 @@ ANTUMBRA_PUSH_CONSTANTS(ReferenceAccumulatePush) {
   uint weighting;  // 0 projected, 1 uniform
   float depth_bias;
   uint tinted;  // 1: the batch's colour layers hold this sample's tints
+};
+#endif
+
+// reference_trace.comp: samples [sample_first, sample_first + sample_count) of the batch's
+// lights, one ray each from every pixel.
+#if defined(__cplusplus) || defined(ANTUMBRA_REFERENCE_TRACE_SHADER)
+ANTUMBRA_PUSH_CONSTANTS(ReferenceTracePush) {
+  uvec2 image_size;
+  uint sample_first;
+  uint sample_count;
+  uint samples;  // per light (the points' stride)
+  uint first_light;
+  uint light_count;  // lights in this batch
+  uint node_count;   // BVH nodes (0: no triangles)
+  float near;        // a ray stops this far short of its sample (the maps' near plane)
+  float ray_offset;  // metres along the receiver's normal the ray starts from
+  uint weighting;    // 0 projected, 1 uniform
+  float scene_size;  // the sun's rays end this far away (the scene's bounding diagonal)
 };
 #endif
 

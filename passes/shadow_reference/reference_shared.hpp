@@ -17,5 +17,7 @@ inline constexpr std::uint32_t kFacesPerLight = 6;
 // Visibility strictly inside (kPenumbraLow, kPenumbraHigh) counts as penumbra.
 inline constexpr float kPenumbraLow = 0.02f;
 inline constexpr float kPenumbraHigh = 0.98f;
+// visibility "rays": samples one dispatch of reference_trace.comp traces per light.
+inline constexpr std::uint32_t kTraceSamplesPerDispatch = 8;
 
 }  // namespace antumbra::passes::reference

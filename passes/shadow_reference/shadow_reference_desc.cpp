@@ -20,7 +20,10 @@ fg::PassDesc ShadowReferencePass::describe() {
       "map around the visible receivers. Translucent casters tint instead of blocking: each "
       "sample's visibility is 0 behind an opaque caster, else the product of the tints of "
       "the panes in between, so shadows are coloured; a pane does not tint its own lit "
-      "surface. Slow, offline, deterministic.";
+      "surface. With visibility `rays` each sample is a ray through a BVH of the scene's "
+      "triangles instead of a map (sphere lights then sampled evenly over the solid angle "
+      "they subtend), with no bias or texel size. Slow, offline, deterministic; "
+      "samplesPerFrame spreads the samples over frames.";
   desc.ports = lighting_ports();
   desc.ports.back().description = "Linear HDR radiance with reference soft shadows.";
   desc.ports.push_back({.name = port::kPenumbraCount,
@@ -114,6 +117,38 @@ const fg::ParamTable<ShadowReferenceParams>& ShadowReferencePass::param_table() 
                 .description =
                     "Skip faces whose frustum misses the camera's (never changes the image)."},
                &ShadowReferenceParams::cull_faces)
+          .choice({.name = "visibility",
+                   .type = fg::ParamType::enumeration,
+                   .default_value = "shadowMaps",
+                   .choices = {"shadowMaps", "rays"},
+                   .description =
+                       "How each sample's visibility is found. shadowMaps: a hard test against "
+                       "cube faces rendered from the sample point (faceSize, nearPlane, the "
+                       "biases and normalOffset apply). rays: a ray from the pixel to the "
+                       "sample point through a BVH of the scene's triangles, with no map, bias "
+                       "or texel size (rayOffset applies); the same casters block, cut and "
+                       "tint."},
+                  &ShadowReferenceParams::visibility, {0u, 1u})
+          .add({.name = "rayOffset",
+                .type = fg::ParamType::number,
+                .default_value = 0.002,
+                .min = 0.0,
+                .max = 1.0,
+                .description = "visibility rays: metres along the receiver's normal the rays "
+                               "start from (above the depth buffer's reconstruction error)."},
+               &ShadowReferenceParams::ray_offset)
+          .add({.name = "samplesPerFrame",
+                .type = fg::ParamType::integer,
+                .default_value = 0,
+                .min = 0.0,
+                .max = 4096.0,
+                .description =
+                    "Samples per light a frame takes, light batch after light batch, until "
+                    "`samples` are in (0: all of them in the frame the view, lights or geometry "
+                    "change). Until then the output is the average of the samples so far, "
+                    "without the lights of batches not begun, and note SHR002 says how far it "
+                    "is; the finished image is the same as with 0."},
+               &ShadowReferenceParams::samples_per_frame)
           .include(&ShadowReferenceParams::lighting, lighting_param_table());
   return kTable;
 }

@@ -5,10 +5,12 @@
 #include <cstring>
 #include <memory>
 
+#include "antumbra/base/diagnostic_codes.hpp"
 #include "antumbra/gpu/context.hpp"
 #include "antumbra/gpu/memory_heaps.hpp"
 #include "antumbra/gpu/pipelines.hpp"
 #include "antumbra/scene/scene.hpp"
+#include "common/bvh.hpp"
 #include "common/frame_data.hpp"
 #include "common/frame_resources.hpp"
 #include "common/pass_support.hpp"
@@ -55,7 +57,11 @@ void ShadowReferencePass::prepare(fgvk::PrepareContext& context) {
   has_emissive_ = b.image(port::kEmissive) != nullptr;
   layered_ = context.gpu.features().shader_output_layer;
   shader_files_.clear();
-  prepare_raster_pipelines(context);
+  if (rays()) {
+    prepare_trace_pipeline(context);
+  } else {
+    prepare_raster_pipelines(context);
+  }
   prepare_compute_pipelines(context, hdr.format);
   key_.reset();  // new pipelines or bindings: accumulate again
 }
@@ -181,19 +187,21 @@ void ShadowReferencePass::prepare_compute_pipelines(fgvk::PrepareContext& contex
     pipeline = gpu::create_compute_pipeline(context.gpu, layout, module, name + "." + file,
                                             context.pipeline_cache);
   };
-  compute("reference_accumulate.comp",
-          gpu::DescriptorSetLayoutBuilder()
-              .uniform_buffer(shared::kRefAccumulateFrame, kComp)
-              .storage_buffer(shared::kRefAccumulateLights, kComp)
-              .combined_image_sampler(shared::kRefAccumulateDepth, kComp)
-              .combined_image_sampler(shared::kRefAccumulateNormal, kComp)
-              .combined_image_sampler(shared::kRefAccumulateFaces, kComp)
-              .storage_buffer(shared::kRefAccumulatePoints, kComp)
-              .storage_buffer(shared::kRefAccumulateVisibility, kComp)
-              .combined_image_sampler(shared::kRefAccumulateTints, kComp)
-              .storage_buffer(shared::kRefAccumulateMatrices, kComp),
-          sizeof(shared::ReferenceAccumulatePush), {}, accumulate_set_, accumulate_layout_,
-          accumulate_pipeline_);
+  if (!rays()) {
+    compute("reference_accumulate.comp",
+            gpu::DescriptorSetLayoutBuilder()
+                .uniform_buffer(shared::kRefAccumulateFrame, kComp)
+                .storage_buffer(shared::kRefAccumulateLights, kComp)
+                .combined_image_sampler(shared::kRefAccumulateDepth, kComp)
+                .combined_image_sampler(shared::kRefAccumulateNormal, kComp)
+                .combined_image_sampler(shared::kRefAccumulateFaces, kComp)
+                .storage_buffer(shared::kRefAccumulatePoints, kComp)
+                .storage_buffer(shared::kRefAccumulateVisibility, kComp)
+                .combined_image_sampler(shared::kRefAccumulateTints, kComp)
+                .storage_buffer(shared::kRefAccumulateMatrices, kComp),
+            sizeof(shared::ReferenceAccumulatePush), {}, accumulate_set_, accumulate_layout_,
+            accumulate_pipeline_);
+  }
   compute("reference_resolve.comp",
           gpu::DescriptorSetLayoutBuilder()
               .uniform_buffer(shared::kRefResolveFrame, kComp)
@@ -218,6 +226,35 @@ void ShadowReferencePass::prepare_compute_pipelines(fgvk::PrepareContext& contex
            {"HAS_PENUMBRA", has_penumbra_ ? "1" : "0"},
            {"HAS_EMISSIVE", has_emissive_ ? "1" : "0"}},
           final_set_, final_layout_, final_pipeline_);
+}
+
+// visibility "rays": one compute pipeline traces every sample (reference_trace.comp).
+void ShadowReferencePass::prepare_trace_pipeline(fgvk::PrepareContext& context) {
+  const std::string& name = context.pass.name;
+  gpu::DescriptorSetLayoutBuilder builder;
+  builder.uniform_buffer(shared::kRefTraceFrame, kComp)
+      .storage_buffer(shared::kRefTraceLights, kComp)
+      .combined_image_sampler(shared::kRefTraceDepth, kComp)
+      .combined_image_sampler(shared::kRefTraceNormal, kComp)
+      .storage_buffer(shared::kRefTracePoints, kComp)
+      .storage_buffer(shared::kRefTraceVisibility, kComp)
+      .storage_buffer(shared::kRefTraceBvh, kComp)
+      .storage_buffer(shared::kRefTraceIndices, kComp)
+      .storage_buffer(shared::kRefTraceVertices, kComp)
+      .storage_buffer(shared::kRefTraceAttributes, kComp)
+      .storage_buffer(shared::kRefTraceMaterials, kComp)
+      .add(shared::kRefTraceSrgbTextures, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, kComp,
+           shared::kTextureBuckets)
+      .sampler(shared::kRefTraceSampler, kComp);
+  auto module = load_shader(context, "shadow_reference/reference_trace.comp", shader_files_);
+  const auto push_bytes = static_cast<std::uint32_t>(sizeof(shared::ReferenceTracePush));
+  check_shader_interface(name, module, builder, push_bytes);
+  trace_set_ = builder.build(context.gpu, name + ".trace.set");
+  const std::array<VkDescriptorSetLayout, 1> sets{trace_set_};
+  const std::array<VkPushConstantRange, 1> push{{{kComp, 0, push_bytes}}};
+  trace_layout_ = gpu::create_pipeline_layout(context.gpu, sets, push, name + ".trace.layout");
+  trace_pipeline_ = gpu::create_compute_pipeline(context.gpu, trace_layout_, module,
+                                                 name + ".trace", context.pipeline_cache);
 }
 
 ShadowReferencePass::Key ShadowReferencePass::make_key(const fgvk::ExecuteContext& context) const {
@@ -284,7 +321,34 @@ void ShadowReferencePass::rebuild(fgvk::ExecuteContext& context, const Key& key)
                         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, name + ".matrices");
   index_list_ = host_buffer(gpu, plan_.indices.data(), plan_.indices.size() * sizeof(std::uint32_t),
                             VK_BUFFER_USAGE_INDEX_BUFFER_BIT, name + ".indices");
+  if (rays()) upload_bvh(context);
   allocate_targets(context, key);
+}
+
+// The BVH over the merged triangles, rebuilt when the geometry changed (docs/technique.md
+// 7, "Ray-traced reference"): 2 vec4 per node, then 3 vertices per triangle in leaf order.
+void ShadowReferencePass::upload_bvh(fgvk::ExecuteContext& context) {
+  if (bvh_ && bvh_version_ == merged_version_ && bvh_dynamic_ == merged_dynamic_) return;
+  const Bvh bvh = build_bvh(positions_, indices_);
+  const std::vector<glm::vec4> vertices = bvh_vertices(bvh, positions_, indices_);
+  std::vector<glm::vec4> data;
+  data.reserve(bvh.nodes.size() * 2 + vertices.size());
+  for (const shared::BvhNode& node : bvh.nodes) data.insert(data.end(), {node.lo, node.hi});
+  data.insert(data.end(), vertices.begin(), vertices.end());
+  bvh_nodes_ = static_cast<std::uint32_t>(bvh.nodes.size());
+  scene_size_ = 1.0f;
+  if (!bvh.nodes.empty()) {
+    const glm::vec3 extent = glm::vec3(bvh.nodes[0].hi) - glm::vec3(bvh.nodes[0].lo);
+    scene_size_ = std::max(1.0f, 2.0f * glm::length(extent));
+  }
+  gpu::Context& gpu = context.gpu;
+  const std::string& name = context.pass.name;
+  bvh_ = host_buffer(gpu, data.data(), data.size() * sizeof(glm::vec4),
+                     VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, name + ".bvh");
+  triangle_indices_ = host_buffer(gpu, indices_.data(), indices_.size() * sizeof(std::uint32_t),
+                                  VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, name + ".triangleIndices");
+  bvh_version_ = merged_version_;
+  bvh_dynamic_ = merged_dynamic_;
 }
 
 // The visibility sums, the accumulator and the face layers, sized for the plan's
@@ -305,9 +369,16 @@ void ShadowReferencePass::allocate_targets(fgvk::ExecuteContext& context, const 
                                       name + ".visibility");
   }
   if (!accum_ || accum_.size() < pixels * sizeof(glm::vec4)) {
-    accum_ = gpu::Buffer::create(gpu, pixels * sizeof(glm::vec4), storage,
+    accum_ = gpu::Buffer::create(gpu, pixels * sizeof(glm::vec4),
+                                 storage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                                  gpu::MemoryUsage::gpu_only, name + ".accum");
   }
+  // What a frame with samples still to take shows; only with samplesPerFrame.
+  if (params_.samples_per_frame > 0 && (!display_ || display_.size() < accum_.size())) {
+    display_ = gpu::Buffer::create(gpu, accum_.size(), storage, gpu::MemoryUsage::gpu_only,
+                                   name + ".display");
+  }
+  if (rays()) return;  // no maps
   const std::uint32_t layers = slots * reference::kFacesPerLight;
   if (!faces_ || faces_.layers() != layers || faces_.extent().width != params_.face_size) {
     gpu::ImageDesc desc;
@@ -339,13 +410,47 @@ void ShadowReferencePass::execute(fgvk::ExecuteContext& context) {
   Key key = make_key(context);
   if (!key_ || !(*key_ == key)) {
     rebuild(context, key);
-    record_samples(context);
+    begin_samples(context);
     key_ = std::move(key);
   }
-  record_final(context);
+  const bool was_complete = complete();
+  if (!was_complete) record_progress(context);
+  record_final(context, complete() ? accum_.handle() : display_.handle());
+  // With samplesPerFrame: while samples remain, and in the frame that takes the last ones.
+  if (!was_complete && params_.samples_per_frame > 0) {
+    context.report.add(progress_note(context.pass.name));
+  }
   // Spot lights are sampled like point lights (the cone is the shading's) and the sun
   // over its disc, so every light type is shadowed. (SHR001, "directional light drawn
   // unshadowed", is no longer reported; the code stays retired, never reused.)
+}
+
+// SHR002: how many samples per light the frame shows (docs/technique.md 7).
+fgvk::PassMessage ShadowReferencePass::progress_note(const std::string& pass) const {
+  const std::size_t batches = plan_.batches.size();
+  const bool done = complete();
+  std::uint32_t lights_done = 0;
+  for (std::size_t b = 0; b < std::min(progress_.batch, batches); ++b) {
+    lights_done += plan_.batches[b].light_count;
+  }
+  const std::string message =
+      done ? "reference complete: " + std::to_string(plan_.samples) + " samples per light"
+           : "reference in progress: batch " + std::to_string(progress_.batch + 1) + " of " +
+                 std::to_string(batches) + ", " + std::to_string(progress_.sample) + " of " +
+                 std::to_string(plan_.samples) +
+                 " samples per light (lights of later batches are not drawn yet)";
+  return {.pass = pass,
+          .code = codes::reference::kProgress,
+          .severity = base::Severity::note,
+          .message = message,
+          .details = {{"complete", done},
+                      {"samples", plan_.samples},
+                      {"samplesPerFrame", params_.samples_per_frame},
+                      {"batch", progress_.batch},
+                      {"batches", batches},
+                      {"batchSamples", progress_.sample},
+                      {"lightsDone", lights_done},
+                      {"visibility", rays() ? "rays" : "shadowMaps"}}};
 }
 
 }  // namespace antumbra::passes

@@ -3,6 +3,7 @@
 // executor placed their barriers before the pass).
 #include <algorithm>
 #include <array>
+#include <limits>
 #include <utility>
 
 #include "antumbra/gpu/commands.hpp"
@@ -64,10 +65,10 @@ void ShadowReferencePass::tints_to_sampled(VkCommandBuffer cmd) {
   tints_layout_ = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
 }
 
-void ShadowReferencePass::record_samples(fgvk::ExecuteContext& context) {
+void ShadowReferencePass::begin_samples(fgvk::ExecuteContext& context) {
   const VkCommandBuffer cmd = context.cmd;
   // The accumulation binds the colour layers whether or not a batch reads them.
-  if (tints_layout_ != VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL) {
+  if (!rays() && tints_layout_ != VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL) {
     tints_layout_ = VK_IMAGE_LAYOUT_UNDEFINED;
     tints_to_sampled(cmd);
   }
@@ -76,11 +77,69 @@ void ShadowReferencePass::record_samples(fgvk::ExecuteContext& context) {
   gpu::memory_barrier(cmd, kCompute | kTransfer, kStorageRW | VK_ACCESS_2_TRANSFER_WRITE_BIT,
                       kTransfer, VK_ACCESS_2_TRANSFER_WRITE_BIT);
   vkCmdFillBuffer(cmd, accum_, 0, VK_WHOLE_SIZE, 0);
-  for (const auto& batch : plan_.batches) record_batch(context, batch);
+  progress_ = {};
 }
 
-void ShadowReferencePass::record_batch(fgvk::ExecuteContext& context,
-                                       const reference::Batch& batch) {
+// This frame's share of the samples: samplesPerFrame of the current batch's lights (every
+// sample of every batch when 0); a finished batch is resolved into accum_. While samples remain,
+// the frame shows accum_ plus the current batch resolved from the samples it has so far (display_).
+void ShadowReferencePass::record_progress(fgvk::ExecuteContext& context) {
+  const VkCommandBuffer cmd = context.cmd;
+  std::uint32_t budget = params_.samples_per_frame == 0 ? std::numeric_limits<std::uint32_t>::max()
+                                                        : params_.samples_per_frame;
+  while (budget > 0 && progress_.batch < plan_.batches.size()) {
+    const reference::Batch& batch = plan_.batches[progress_.batch];
+    const std::uint32_t count = std::min(budget, plan_.samples - progress_.sample);
+    record_batch(context, batch, progress_.sample, count);
+    budget -= count;
+    progress_.sample += count;
+    if (progress_.sample == plan_.samples) {
+      record_resolve(context, batch, accum_);
+      ++progress_.batch;
+      progress_.sample = 0;
+      if (params_.samples_per_frame > 0) break;  // a frame's samples are one batch's
+    }
+  }
+  if (complete()) return;
+  // The resolves into accum_ (and the last frame's final reading display_) come first.
+  gpu::memory_barrier(cmd, kCompute | kTransfer, kStorageRW | VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                      kTransfer, VK_ACCESS_2_TRANSFER_READ_BIT | VK_ACCESS_2_TRANSFER_WRITE_BIT);
+  const VkBufferCopy region{0, 0, accum_.size()};
+  vkCmdCopyBuffer(cmd, accum_, display_, 1, &region);
+  gpu::memory_barrier(cmd, kTransfer, VK_ACCESS_2_TRANSFER_WRITE_BIT, kCompute, kStorageRW);
+  if (progress_.sample > 0) record_resolve(context, plan_.batches[progress_.batch], display_);
+}
+
+bool ShadowReferencePass::complete() const {
+  return progress_.batch >= plan_.batches.size();
+}
+
+// Samples [first, first + count) of the batch's lights into the visibility sums (cleared
+// at the batch's first sample).
+void ShadowReferencePass::record_batch(fgvk::ExecuteContext& context, const reference::Batch& batch,
+                                       std::uint32_t first, std::uint32_t count) {
+  const VkCommandBuffer cmd = context.cmd;
+  if (first == 0) {
+    // The previous batch's resolve has read the visibility sums before they are cleared.
+    gpu::memory_barrier(cmd, kCompute | kTransfer, kStorageRW | VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                        kTransfer, VK_ACCESS_2_TRANSFER_WRITE_BIT);
+    vkCmdFillBuffer(cmd, visibility_, 0, VK_WHOLE_SIZE, 0);
+  }
+  // The clear, or an earlier frame's samples and resolve, before these samples add in.
+  gpu::memory_barrier(cmd, kCompute | kTransfer, kStorageRW | VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                      kCompute, kStorageRW);
+  if (rays()) {
+    record_traces(context, batch, first, count);
+    return;
+  }
+
+  record_map_samples(context, batch, first, count);
+}
+
+// Shadow maps: per sample, the batch's faces rendered from the sample, then tested.
+void ShadowReferencePass::record_map_samples(fgvk::ExecuteContext& context,
+                                             const reference::Batch& batch, std::uint32_t first,
+                                             std::uint32_t count) {
   const VkCommandBuffer cmd = context.cmd;
   const auto& b = context.bindings;
   const auto& depth = b.required_image(port::kDepth);
@@ -88,14 +147,10 @@ void ShadowReferencePass::record_batch(fgvk::ExecuteContext& context,
   const VkExtent2D extent = b.required_image(port::kHdr).extent;
   const VkSampler nearest = context.samplers.nearest_clamp;
 
-  // The previous batch's resolve has read the visibility sums before they are cleared.
-  gpu::memory_barrier(cmd, kCompute | kTransfer, kStorageRW | VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                      kTransfer, VK_ACCESS_2_TRANSFER_WRITE_BIT);
-  vkCmdFillBuffer(cmd, visibility_, 0, VK_WHOLE_SIZE, 0);
-  gpu::memory_barrier(cmd, kTransfer, VK_ACCESS_2_TRANSFER_WRITE_BIT, kCompute, kStorageRW);
-
+  // Runs are sorted by sample: skip those of earlier samples.
   std::size_t run = 0;
-  for (std::uint32_t k = 0; k < plan_.samples; ++k) {
+  while (run < batch.runs.size() && batch.runs[run].sample < first) ++run;
+  for (std::uint32_t k = first; k < first + count; ++k) {
     // Contents of the previous sample are discarded; its sampling reads must be done.
     auto to_attachment =
         faces_barrier(faces_, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL);
@@ -154,13 +209,63 @@ void ShadowReferencePass::record_batch(fgvk::ExecuteContext& context,
     vkCmdPushConstants(cmd, accumulate_layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
     dispatch_pixels(cmd, extent);
   }
-  record_resolve(context, batch);
+}
+
+// visibility "rays": the batch's samples as rays through the BVH, a few samples per
+// dispatch so that no dispatch runs long on a large image.
+void ShadowReferencePass::record_traces(fgvk::ExecuteContext& context,
+                                        const reference::Batch& batch, std::uint32_t first_sample,
+                                        std::uint32_t count) {
+  const VkCommandBuffer cmd = context.cmd;
+  const auto& b = context.bindings;
+  const auto& depth = b.required_image(port::kDepth);
+  const auto& normal = b.required_image(port::kNormal);
+  const VkExtent2D extent = b.required_image(port::kHdr).extent;
+  const VkSampler nearest = context.samplers.nearest_clamp;
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, trace_pipeline_);
+  gpu::PushDescriptors()
+      .uniform_buffer(shared::kRefTraceFrame, context.frame.frame_uniforms)
+      .storage_buffer(shared::kRefTraceLights, context.frame.lights)
+      .combined_image_sampler(shared::kRefTraceDepth, depth.view, nearest, depth.layout)
+      .combined_image_sampler(shared::kRefTraceNormal, normal.view, nearest, normal.layout)
+      .storage_buffer(shared::kRefTracePoints, points_)
+      .storage_buffer(shared::kRefTraceVisibility, visibility_)
+      .storage_buffer(shared::kRefTraceBvh, bvh_)
+      .storage_buffer(shared::kRefTraceIndices, triangle_indices_)
+      .storage_buffer(shared::kRefTraceVertices, context.frame.vertices)
+      .storage_buffer(shared::kRefTraceAttributes, context.frame.vertex_attributes)
+      .storage_buffer(shared::kRefTraceMaterials, context.frame.materials)
+      .sampled_images(shared::kRefTraceSrgbTextures, context.frame.srgb_textures)
+      .sampler(shared::kRefTraceSampler, context.frame.texture_sampler)
+      .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, trace_layout_);
+  const std::uint32_t end = first_sample + count;
+  for (std::uint32_t first = first_sample; first < end;
+       first += reference::kTraceSamplesPerDispatch) {
+    // The previous dispatch's read-modify-write of the sums comes first.
+    if (first > first_sample) {
+      gpu::memory_barrier(cmd, kCompute, kStorageRW, kCompute, kStorageRW);
+    }
+    const shared::ReferenceTracePush push{
+        .image_size = {extent.width, extent.height},
+        .sample_first = first,
+        .sample_count = std::min(reference::kTraceSamplesPerDispatch, end - first),
+        .samples = plan_.samples,
+        .first_light = batch.first_light,
+        .light_count = batch.light_count,
+        .node_count = bvh_nodes_,
+        .near = params_.near_plane,
+        .ray_offset = params_.ray_offset,
+        .weighting = params_.weighting,
+        .scene_size = scene_size_};
+    vkCmdPushConstants(cmd, trace_layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
+    dispatch_pixels(cmd, extent);
+  }
 }
 
 // Adds the batch's lights, shaded with the visibility its samples accumulated, to the
 // accumulator.
 void ShadowReferencePass::record_resolve(fgvk::ExecuteContext& context,
-                                         const reference::Batch& batch) {
+                                         const reference::Batch& batch, VkBuffer target) {
   const VkCommandBuffer cmd = context.cmd;
   const auto& b = context.bindings;
   const auto& depth = b.required_image(port::kDepth);
@@ -177,7 +282,7 @@ void ShadowReferencePass::record_resolve(fgvk::ExecuteContext& context,
       .combined_image_sampler(shared::kRefResolveNormal, normal.view, nearest, normal.layout)
       .combined_image_sampler(shared::kRefResolveAlbedo, albedo.view, nearest, albedo.layout)
       .storage_buffer(shared::kRefResolveVisibility, visibility_)
-      .storage_buffer(shared::kRefResolveAccum, accum_)
+      .storage_buffer(shared::kRefResolveAccum, target)
       .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, resolve_layout_);
   const shared::ReferenceResolvePush push{batch.first_light,         batch.light_count,
                                           params_.lighting.specular, reference::kPenumbraLow,
@@ -320,7 +425,7 @@ void ShadowReferencePass::render_faces(fgvk::ExecuteContext& context, const refe
   }
 }
 
-void ShadowReferencePass::record_final(fgvk::ExecuteContext& context) {
+void ShadowReferencePass::record_final(fgvk::ExecuteContext& context, VkBuffer sums) {
   const VkCommandBuffer cmd = context.cmd;
   const auto& b = context.bindings;
   const auto& depth = b.required_image(port::kDepth);
@@ -335,7 +440,7 @@ void ShadowReferencePass::record_final(fgvk::ExecuteContext& context) {
   descriptors.uniform_buffer(shared::kRefFinalFrame, context.frame.frame_uniforms)
       .combined_image_sampler(shared::kRefFinalDepth, depth.view, nearest, depth.layout)
       .combined_image_sampler(shared::kRefFinalAlbedo, albedo.view, nearest, albedo.layout)
-      .storage_buffer(shared::kRefFinalAccum, accum_)
+      .storage_buffer(shared::kRefFinalAccum, sums)
       .storage_image(shared::kRefFinalHdr, hdr.view, hdr.layout);
   if (has_penumbra_) {
     const auto& penumbra = b.required_image(port::kPenumbraCount);

@@ -109,10 +109,12 @@ class AlphaMaskTest : public RenderTest {
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
     // "reference": the shadow-reference graph, a few samples of the small light (it is
-    // nearly a point, so they agree); else the atlas graph with that rasteriser.
+    // nearly a point, so they agree); "rays": the same with visibility "rays" (traced
+    // through the BVH, no maps); else the atlas graph with that rasteriser.
     // "wedges": the penumbra-wedges graph (its hardware atlas, peeling and wedges);
     // "sdf": the scene-sdf graph.
-    const bool reference = rasterizer == "reference";
+    const bool rays = rasterizer == "rays";
+    const bool reference = rasterizer == "reference" || rays;
     const bool wedges = rasterizer == "wedges";
     const bool sdf = rasterizer == "sdf";
     const char* file = reference ? "reference.json"
@@ -128,6 +130,7 @@ class AlphaMaskTest : public RenderTest {
       if (p.type == "shadow-reference") {
         p.params["samples"] = 16;
         p.params["faceSize"] = 512;
+        if (rays) p.params["visibility"] = "rays";
       }
     }
     runtime::RenderSession* session = open_session(kView);
@@ -277,6 +280,20 @@ TEST_F(AlphaMaskTest, OneSidedCastersCastOnlyFromTheirFrontUnderTheSunReference)
 
 TEST_F(AlphaMaskTest, OneSidedCastersCastOnlyFromTheirFrontUnderTheSunHardware) {
   expect_one_sided("hardware", true);
+}
+
+// The ray-traced reference decides cut and one-sided casters per hit, as the rasterisers
+// do per texel (reference_trace.comp).
+TEST_F(AlphaMaskTest, CheckerboardAlphaCastsACheckerboardShadowRays) {
+  expect_checkerboard("rays");
+}
+
+TEST_F(AlphaMaskTest, OneSidedCastersCastOnlyFromTheirFrontRays) {
+  expect_one_sided("rays");
+}
+
+TEST_F(AlphaMaskTest, OneSidedCastersCastOnlyFromTheirFrontUnderTheSunRays) {
+  expect_one_sided("rays", true);
 }
 
 TEST_F(AlphaMaskTest, CheckerboardAlphaCastsACheckerboardShadowWedges) {

@@ -31,6 +31,9 @@ constexpr double kDiskTenNinety = 0.6872;
 
 class ReferenceSunGlassGpu : public RenderTest {
  protected:
+  // visibility: the reference's parameter ("shadowMaps", or "rays": traced through the BVH).
+  void check_sun_penumbra(runtime::RenderSession* session, const char* visibility);
+
   // Renders `graph` (its hdr) and the unshadowed deferred frame of the session's scene.
   struct Frames {
     app::FloatImage shadowed;
@@ -94,8 +97,8 @@ glm::dvec3 mean_visibility(const app::FloatImage& shadowed, const app::FloatImag
 // above the plane looking down at the edge. A sun disc of angular radius a makes a
 // penumbra of full width 2 (d_receiver - d_blocker) tan(a) (the light size of the
 // technique, w_light = tan(a), is the disc's radius; the width spans its diameter).
-TEST_F(ReferenceSunGlassGpu, SunPenumbraWidthMatchesAngularRadius) {
-  OPEN_SESSION(session, kGolden);
+void ReferenceSunGlassGpu::check_sun_penumbra(runtime::RenderSession* session,
+                                              const char* visibility) {
   const AnalyticSetup setup;
   const float angular_radius = 5.0f;  // degrees
   scene::Scene s = analytic_scene(setup);
@@ -107,6 +110,7 @@ TEST_F(ReferenceSunGlassGpu, SunPenumbraWidthMatchesAngularRadius) {
   session->set_scene(s);
   auto reference = graph_for_hdr(graph_path("reference"));
   set_param(reference, "shadow-reference", "faceSize", 512);
+  set_param(reference, "shadow-reference", "visibility", visibility);
   const auto frames = render_pair(*session, reference);
 
   const auto row = visibility_row(frames.shadowed, frames.unshadowed);
@@ -121,11 +125,22 @@ TEST_F(ReferenceSunGlassGpu, SunPenumbraWidthMatchesAngularRadius) {
   const double expected =
       2.0 * double(setup.blocker) * std::tan(double(angular_radius) * kPi / 180.0);
   std::printf(
-      "sun penumbra (angular radius %.1f deg): 10-90%% width %.2f px = %.4f m -> full width "
-      "%.4f m, 2 (d_r - d_b) tan(a) = %.4f m (ratio %.3f)\n",
-      angular_radius, pixels, pixels * mpp, measured, expected, measured / expected);
-  RecordProperty("sun_penumbra_ratio", std::to_string(measured / expected));
+      "sun penumbra, %s (angular radius %.1f deg): 10-90%% width %.2f px = %.4f m -> full "
+      "width %.4f m, 2 (d_r - d_b) tan(a) = %.4f m (ratio %.3f)\n",
+      visibility, angular_radius, pixels, pixels * mpp, measured, expected, measured / expected);
+  RecordProperty(std::string("sun_penumbra_ratio_") + visibility,
+                 std::to_string(measured / expected));
   EXPECT_NEAR(measured / expected, 1.0, 0.05);
+}
+
+TEST_F(ReferenceSunGlassGpu, SunPenumbraWidthMatchesAngularRadius) {
+  OPEN_SESSION(session, kGolden);
+  check_sun_penumbra(session, "shadowMaps");
+}
+
+TEST_F(ReferenceSunGlassGpu, SunPenumbraWidthMatchesAngularRadiusRays) {
+  OPEN_SESSION(session, kGolden);
+  check_sun_penumbra(session, "rays");
 }
 
 // A 1 m glass pane (a thin box, like the atrium's panes) 1 m over a plane, under one
@@ -294,6 +309,30 @@ TEST_F(ReferenceSunGlassGpu, GlassPaneTintsTheReferenceAndTheLayeredTechniqueAgr
       EXPECT_NEAR(got_under[c], ref_under[c], kLayeredTolerance) << "channel " << c;
       EXPECT_NEAR(got_beside[c], 1.0, kLayeredTolerance) << "channel " << c;
     }
+  }
+}
+
+// The ray-traced reference (visibility "rays") tints through the pane as the map-based
+// one does: panes turned towards the light multiply their transmittance in, and a pane
+// does not tint its own lit surface (check_reference_glass's bands and penumbra counts).
+TEST_F(ReferenceSunGlassGpu, GlassPaneTintsTheRayTracedReference) {
+  OPEN_SESSION(session, kGolden);
+  for (const bool sun : {false, true}) {
+    GlassSetup setup;
+    setup.sun = sun;
+    session->set_scene(glass_scene(setup));
+    auto reference = graph_for_hdr(graph_path("reference"), {"penumbraCount"});
+    set_param(reference, "shadow-reference", "visibility", "rays");
+    load_graph_ok(*session, reference);
+    session->render(1, nullptr);
+    const auto shadowed = read_float_image(*session, "hdr");
+    const auto count = read_float_image(*session, "penumbraCount");
+    EXPECT_TRUE(session->last_report().messages().empty());
+    load_graph_ok(*session, graph_for_hdr(graph_path("deferred")));
+    session->render(1, nullptr);
+    const auto unshadowed = read_float_image(*session, "hdr");
+    const double mpp = metres_per_pixel(*session, setup.camera_height, setup.fov_y_degrees);
+    check_reference_glass(*this, setup, shadowed, unshadowed, count, mpp);
   }
 }
 

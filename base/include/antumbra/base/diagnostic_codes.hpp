@@ -248,6 +248,11 @@ inline constexpr const char* kPeeled = "PW003";        // `peeled` bound iff pee
 inline constexpr const char* kSilhouettesTooLarge = "PW005";  // silhouette buffer over 1 GiB
 }  // namespace wedges
 
+// shadow-reference (SHR001, a directional light drawn unshadowed, is retired: never reused).
+namespace reference {
+inline constexpr const char* kProgress = "SHR002";  // note: samples taken of the reference so far
+}  // namespace reference
+
 // antumbra quality.
 namespace quality {
 inline constexpr const char* kRankingUnreliable = "QU001";  // warning: too few pixels to rank
