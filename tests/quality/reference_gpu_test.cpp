@@ -77,8 +77,12 @@ TEST_F(ReferenceGpu, RaysAgreeWithShadowMapsAwayFromPenumbrae) {
     return std::pair{read_float_image(*session, "hdr"),
                      read_float_image(*session, "penumbraCount")};
   };
-  const auto [maps, maps_count] = render("shadowMaps");
-  const auto [rays, rays_count] = render("rays");
+  const auto maps_frame = render("shadowMaps");
+  const auto rays_frame = render("rays");
+  const app::FloatImage& maps = maps_frame.first;
+  const app::FloatImage& maps_count = maps_frame.second;
+  const app::FloatImage& rays = rays_frame.first;
+  const app::FloatImage& rays_count = rays_frame.second;
   ASSERT_EQ(maps.texels.size(), rays.texels.size());
   const auto w = static_cast<int>(maps.width);
   const auto h = static_cast<int>(maps.height);
@@ -87,7 +91,8 @@ TEST_F(ReferenceGpu, RaysAgreeWithShadowMapsAwayFromPenumbrae) {
       for (int dx = -1; dx <= 1; ++dx) {
         const int px = std::clamp(x + dx, 0, w - 1);
         const int py = std::clamp(y + dy, 0, h - 1);
-        const auto i = static_cast<std::size_t>(py * w + px);
+        const std::size_t i = static_cast<std::size_t>(py) * static_cast<std::size_t>(w) +
+                              static_cast<std::size_t>(px);
         if (maps_count.texels[i * maps_count.channels] >= 1.0f ||
             rays_count.texels[i * rays_count.channels] >= 1.0f) {
           return true;
