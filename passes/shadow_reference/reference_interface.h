@@ -111,6 +111,11 @@ ANTUMBRA_PUSH_CONSTANTS(ReferenceTracePush) {
   float ray_offset;  // metres along the receiver's normal the ray starts from
   uint weighting;    // 0 projected, 1 uniform
   float scene_size;  // the sun's rays end this far away (the scene's bounding diagonal)
+  // One step of the depth buffer's values (d16: 1/65535, d24: 1/16777215; 0 for d32f,
+  // whose step the shader takes relative to the value): the ray starts two steps' worth
+  // towards the camera, where the surface the depth stands for may lie.
+  float depth_step;
+  uint pad0;
 };
 #endif
 

@@ -18,6 +18,8 @@
 //  - an alpha-tested material blocks only where its alpha (the finest level of its base
 //    colour texture at the hit) reaches the cutoff;
 //  - anything else blocks, and ends the ray.
+// The ray starts two depth-buffer steps towards the camera and `ray_offset` along the
+// normal: positions rebuilt from a 16-bit depth would otherwise shadow themselves.
 #include "../common/frame.glsl"
 #include "../common/lights.glsl"
 #define ANTUMBRA_REFERENCE_TRACE_SHADER
@@ -159,7 +161,12 @@ void main() {
   vec2 uv = (vec2(pixel) + 0.5) / vec2(image_size);
   vec3 p = (frame.inv_view * vec4(view_position(uv, depth), 1.0)).xyz;
   vec3 n = normalize(mat3(frame.inv_view) * normalize(texelFetch(g_normal, ivec2(pixel), 0).xyz));
-  vec3 origin = p + n * ray_offset;
+  // A stored depth stands for any surface within a step of it along the view ray: start
+  // above the farthest of those, two steps towards the camera (a 16-bit depth buffer
+  // is centimetres off at a few metres), then rayOffset along the normal.
+  float step = max(depth_step, depth * 1.2e-7);
+  vec3 nearer = (frame.inv_view * vec4(view_position(uv, max(depth - step, 0.0)), 1.0)).xyz;
+  vec3 origin = p + 2.0 * (nearer - p) + n * ray_offset;
   uint pixels = image_size.x * image_size.y;
   uint pixel_index = pixel.y * image_size.x + pixel.x;
 

@@ -28,6 +28,20 @@ constexpr VkPipelineStageFlags2 kColourOutput = VK_PIPELINE_STAGE_2_COLOR_ATTACH
 constexpr VkAccessFlags2 kStorageRW =
     VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
 
+// One step of a depth format's stored values (reference_interface.h, depth_step).
+float depth_step(VkFormat format) {
+  switch (format) {
+    case VK_FORMAT_D16_UNORM:
+    case VK_FORMAT_D16_UNORM_S8_UINT:
+      return 1.0f / 65535.0f;
+    case VK_FORMAT_X8_D24_UNORM_PACK32:
+    case VK_FORMAT_D24_UNORM_S8_UINT:
+      return 1.0f / 16777215.0f;
+    default:
+      return 0.0f;  // float depth: relative to the value, in the shader
+  }
+}
+
 void dispatch_pixels(VkCommandBuffer cmd, VkExtent2D extent) {
   dispatch_groups(cmd, extent, ANTUMBRA_IMAGE_GROUP);
 }
@@ -256,7 +270,8 @@ void ShadowReferencePass::record_traces(fgvk::ExecuteContext& context,
         .near = params_.near_plane,
         .ray_offset = params_.ray_offset,
         .weighting = params_.weighting,
-        .scene_size = scene_size_};
+        .scene_size = scene_size_,
+        .depth_step = depth_step(depth.format)};
     vkCmdPushConstants(cmd, trace_layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
     dispatch_pixels(cmd, extent);
   }
