@@ -130,7 +130,7 @@ class AlphaMaskTest : public RenderTest {
       if (p.type == "shadow-reference") {
         p.params["samples"] = 16;
         p.params["faceSize"] = 512;
-        if (rays) p.params["visibility"] = "rays";
+        p.params["visibility"] = rays ? "rays" : "shadowMaps";  // reference.json: rays
       }
     }
     runtime::RenderSession* session = open_session(kView);

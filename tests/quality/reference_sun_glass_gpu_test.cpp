@@ -34,6 +34,35 @@ class ReferenceSunGlassGpu : public RenderTest {
   // visibility: the reference's parameter ("shadowMaps", or "rays": traced through the BVH).
   void check_sun_penumbra(runtime::RenderSession* session, const char* visibility);
 
+  // The glass scene's reference (hdr and penumbra count) and unshadowed frames, the
+  // reference's bands checked (check_reference_glass, defined below).
+  struct GlassFrames {
+    app::FloatImage shadowed;
+    app::FloatImage unshadowed;
+    double metres_per_pixel = 0.0;
+  };
+  template <typename Setup, typename Check>
+  GlassFrames render_glass(runtime::RenderSession& session, const Setup& setup,
+                           const char* visibility, const Check& check) {
+    GlassFrames f;
+    auto reference = graph_for_hdr(graph_path("reference"), {"penumbraCount"});
+    set_param(reference, "shadow-reference", "visibility", visibility);
+    if (std::string(visibility) == "shadowMaps") {
+      set_param(reference, "shadow-reference", "faceSize", 512);
+    }
+    load_graph_ok(session, reference);
+    session.render(1, nullptr);
+    f.shadowed = read_float_image(session, "hdr");
+    const auto count = read_float_image(session, "penumbraCount");
+    EXPECT_TRUE(session.last_report().messages().empty());
+    load_graph_ok(session, graph_for_hdr(graph_path("deferred")));
+    session.render(1, nullptr);
+    f.unshadowed = read_float_image(session, "hdr");
+    f.metres_per_pixel = metres_per_pixel(session, setup.camera_height, setup.fov_y_degrees);
+    check(f.shadowed, f.unshadowed, count, f.metres_per_pixel);
+    return f;
+  }
+
   // Renders `graph` (its hdr) and the unshadowed deferred frame of the session's scene.
   struct Frames {
     app::FloatImage shadowed;
@@ -273,18 +302,14 @@ TEST_F(ReferenceSunGlassGpu, GlassPaneTintsTheReferenceAndTheLayeredTechniqueAgr
     GlassSetup setup;
     setup.sun = sun;
     session->set_scene(glass_scene(setup));
-    auto reference = graph_for_hdr(graph_path("reference"), {"penumbraCount"});
-    set_param(reference, "shadow-reference", "faceSize", 512);
-    load_graph_ok(*session, reference);
-    session->render(1, nullptr);
-    const auto shadowed = read_float_image(*session, "hdr");
-    const auto count = read_float_image(*session, "penumbraCount");
-    EXPECT_TRUE(session->last_report().messages().empty());
-    load_graph_ok(*session, graph_for_hdr(graph_path("deferred")));
-    session->render(1, nullptr);
-    const auto unshadowed = read_float_image(*session, "hdr");
-    const double mpp = metres_per_pixel(*session, setup.camera_height, setup.fov_y_degrees);
-    check_reference_glass(*this, setup, shadowed, unshadowed, count, mpp);
+    const auto check = [&](const auto& shadowed, const auto& unshadowed, const auto& count,
+                           double mpp) {
+      check_reference_glass(*this, setup, shadowed, unshadowed, count, mpp);
+    };
+    const GlassFrames frames = render_glass(*session, setup, "shadowMaps", check);
+    const auto& shadowed = frames.shadowed;
+    const auto& unshadowed = frames.unshadowed;
+    const double mpp = frames.metres_per_pixel;
     if (sun || !layered) continue;
 
     // The layered technique (default graph) on the same frame: its coloured shadow under
@@ -321,18 +346,10 @@ TEST_F(ReferenceSunGlassGpu, GlassPaneTintsTheRayTracedReference) {
     GlassSetup setup;
     setup.sun = sun;
     session->set_scene(glass_scene(setup));
-    auto reference = graph_for_hdr(graph_path("reference"), {"penumbraCount"});
-    set_param(reference, "shadow-reference", "visibility", "rays");
-    load_graph_ok(*session, reference);
-    session->render(1, nullptr);
-    const auto shadowed = read_float_image(*session, "hdr");
-    const auto count = read_float_image(*session, "penumbraCount");
-    EXPECT_TRUE(session->last_report().messages().empty());
-    load_graph_ok(*session, graph_for_hdr(graph_path("deferred")));
-    session->render(1, nullptr);
-    const auto unshadowed = read_float_image(*session, "hdr");
-    const double mpp = metres_per_pixel(*session, setup.camera_height, setup.fov_y_degrees);
-    check_reference_glass(*this, setup, shadowed, unshadowed, count, mpp);
+    render_glass(*session, setup, "rays",
+                 [&](const auto& shadowed, const auto& unshadowed, const auto& count, double mpp) {
+                   check_reference_glass(*this, setup, shadowed, unshadowed, count, mpp);
+                 });
   }
 }
 
