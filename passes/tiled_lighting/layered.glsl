@@ -50,6 +50,28 @@ layout(set = 0, binding = kTiledHardBits) uniform usampler2D hard_bits;  // bit 
 // agrees with the pixel's own full-resolution hard bit, so the edge falls where the hard
 // test puts it instead of being smeared over a low-resolution texel.
 #define LAYERED_SHARP 0.35
+// With the atlas bound, a layer whose value changes by more than this over those texels
+// takes its light's shadow from the atlas (PCSS) at the pixel (g_layered_sharp): the
+// half-resolution texels there average both sides of a contact line (the rows under the
+// atrium's capitals), which the hard-bit weighting above does not undo. Against the
+// ray-traced reference on the atrium at 640x360, 0.2 took layered SSSS's penumbra RMSE
+// from 1.31x PCSS's to 0.77x; 0.25 to 0.35 left the overlapping-penumbra pixels 0.1 %
+// above PCSS's, and 0.5 gave back most of the gain (docs/technique.md 1, step 6).
+#define LAYERED_FALLBACK 0.2
+// With the atlas bound, a layer whose same-surface texels are all above this while the
+// pixel's own hard bit says shadowed (or all below 1 - this while it says lit) takes its
+// light's shadow from the atlas at the pixel too: the edge the hard test sees there is
+// narrower than a low-resolution texel, so no weighting of the four can show it.
+#define LAYERED_UNRESOLVED 0.8
+// The texel whose footprint holds the pixel lies on another surface when its
+// representative pixel is off the pixel's tangent plane by more than this fraction of the
+// view depth and by more than half the distance between the two (a normal tilted by a
+// curve or a normal map explains less). At 1280x720 the atrium's shafts start one pixel
+// under their capitals, 1 % further away and facing the same way, so the same-surface
+// test above lets the capital's texel stand for that pixel row; its contact shadow, one
+// pixel tall, is in no texel, and the row held 85 % of the excess error over PCSS on the
+// overlapping-penumbra pixels (docs/technique.md 1, step 6).
+#define LAYERED_STEP 0.002
 
 vec4 g_shadow[MAX_SHADOW_TEXELS];
 // The layers hold no trustworthy value for this pixel, so each light's shadow is filtered
@@ -60,8 +82,13 @@ vec4 g_shadow[MAX_SHADOW_TEXELS];
 // next to a surface boundary (a depth jump or a crease): there the screen-space blur saw
 // only one side of the boundary (the part of a penumbra on the background that
 // continues behind the foreground object is not on screen; a contact shadow continues
-// onto the other face), so its kernel was cut short and its estimate is biased.
+// onto the other face), so its kernel was cut short and its estimate is biased; or the
+// texel whose footprint holds the pixel lies on another surface (LAYERED_STEP).
 bool g_layered_foreign = false;
+// Bit L: layer L's edge is sharper than the low-resolution texels hold (LAYERED_FALLBACK)
+// or contradicts the pixel's hard bit (LAYERED_UNRESOLVED); with the atlas bound, that
+// layer's light is filtered from it at this pixel.
+uint g_layered_sharp = 0u;
 #if HAS_COLOUR
 uvec4 g_colour[MAX_SHADOW_TEXELS];
 #endif
@@ -71,6 +98,22 @@ const int g_shadow_texels = MAX_SHADOW_TEXELS;
 float layered_view_depth(ivec2 pixel) {
   float d = texelFetch(g_depth, clamp(pixel, ivec2(0), ivec2(image_size) - 1), 0).r;
   return -view_position((vec2(pixel) + 0.5) / vec2(image_size), d).z;
+}
+
+// View-space position of a full-resolution G-buffer pixel.
+vec3 layered_view_point(ivec2 pixel) {
+  ivec2 p = clamp(pixel, ivec2(0), ivec2(image_size) - 1);
+  return view_position((vec2(p) + 0.5) / vec2(image_size), texelFetch(g_depth, p, 0).r);
+}
+
+// Whether the low-resolution texel whose footprint holds the pixel was blurred on another
+// surface behind a small step (LAYERED_STEP): the pixel's surface then has no sample of
+// its own there, and a contact shadow under the step may be in no texel at all.
+bool layered_own_texel_elsewhere(ivec2 pixel, ivec2 scale, vec3 n) {
+  vec3 p = layered_view_point(pixel);
+  vec3 q = layered_view_point(pixel / scale * scale);
+  float step_off = abs(dot(q - p, n));
+  return step_off > LAYERED_STEP * -p.z && step_off > 0.5 * length(q - p);
 }
 
 // Whether the pixel lies next to a surface boundary (a depth jump or a crease), where the
@@ -114,6 +157,25 @@ void layered_sharpen(ivec2 pixel, vec4 lo[MAX_SHADOW_TEXELS], vec4 hi[MAX_SHADOW
     }
     g_shadow[i] = mix(g_shadow[i], guided / guided_weight, vec4(sharp));
   }
+}
+#endif
+
+#if HAS_HARD_BITS
+// Bit L: layer L's texels on the pixel's surface all contradict the pixel's own hard bit
+// (LAYERED_UNRESOLVED); lo > hi for a layer when no texel lies on the surface.
+uint layered_unresolved(ivec2 pixel, vec4 lo[MAX_SHADOW_TEXELS], vec4 hi[MAX_SHADOW_TEXELS]) {
+  uint bits = texelFetch(hard_bits, pixel, 0).r;
+  uint unresolved = 0u;
+  for (int i = 0; i < g_shadow_texels; ++i) {
+    uvec4 b = (uvec4(bits) >> uvec4(4 * i) + uvec4(0, 1, 2, 3)) & 1u;
+    bvec4 dark_in_light = greaterThan(lo[i], vec4(LAYERED_UNRESOLVED));
+    bvec4 lit_in_dark = lessThan(hi[i], vec4(1.0 - LAYERED_UNRESOLVED));
+    for (int c = 0; c < 4; ++c) {
+      bool contradicts = b[c] != 0u ? dark_in_light[c] : lit_in_dark[c];
+      unresolved |= contradicts && hi[i][c] >= lo[i][c] ? 1u << uint(4 * i + c) : 0u;
+    }
+  }
+  return unresolved;
 }
 #endif
 
@@ -161,7 +223,14 @@ bool layered_upsample(ivec2 pixel, ivec2 low, ivec2 scale, float z, vec3 n) {
       }
     }
   }
-  for (int i = 0; i < g_shadow_texels; ++i) g_shadow[i] = sum[i] / weight_sum;
+  for (int i = 0; i < g_shadow_texels; ++i) {
+    g_shadow[i] = sum[i] / weight_sum;
+    bvec4 sharp = greaterThan(hi[i] - lo[i], vec4(LAYERED_FALLBACK));
+    for (int c = 0; c < 4; ++c) g_layered_sharp |= sharp[c] ? 1u << uint(4 * i + c) : 0u;
+  }
+#if HAS_HARD_BITS && HAS_ATLAS
+  g_layered_sharp |= layered_unresolved(pixel, lo, hi);
+#endif
 #if HAS_HARD_BITS
   layered_sharpen(pixel, lo, hi, weights, texels);
 #endif
@@ -183,6 +252,9 @@ void layered_fetch(ivec2 pixel) {
     g_layered_foreign = near_edge;
   } else {
     g_layered_foreign = !layered_upsample(pixel, low, scale, z, n) || near_edge;
+#if HAS_ATLAS
+    g_layered_foreign = g_layered_foreign || layered_own_texel_elsewhere(pixel, scale, n);
+#endif
   }
 #if HAS_COLOUR
   ivec3 size = textureSize(colour_layers, 0);
@@ -230,7 +302,7 @@ vec3 layered_shadow(uint index, vec3 p_world, vec3 n_world) {
     }
 #endif
 #if HAS_ATLAS
-    if (g_layered_foreign)
+    if (g_layered_foreign || ((g_layered_sharp >> layer) & 1u) != 0u)
       return atlas_shadow(index, p_world, n_world, ANTUMBRA_SHADOW_PCSS) * tint;
 #endif
     return clamp(layered_value(layer), 0.0, 1.0) * tint;
