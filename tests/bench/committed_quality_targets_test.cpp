@@ -1,0 +1,78 @@
+// The accuracy targets of layered SSSS (docs/technique.md 1, step 6), checked on the quality
+// results committed under docs/results/ (`antumbra quality --format json`, measured against
+// the ray-traced reference): re-measuring after a change that costs accuracy fails here,
+// without a device. Which results these are is docs/measuring.md's table.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace {
+
+const std::filesystem::path kResults =
+    std::filesystem::path(ANTUMBRA_TEST_SOURCE_DIR) / "docs" / "results";
+
+nlohmann::json load(const std::string& name) {
+  std::ifstream in(kResults / name);
+  EXPECT_TRUE(in.good()) << (kResults / name);
+  return nlohmann::json::parse(in, nullptr, false);
+}
+
+// RMSE of graph `graph` (data/graphs/NAME.json) over `region`; -1 when not measured.
+double rmse(const nlohmann::json& results, const std::string& graph, const std::string& region) {
+  for (const auto& g : results.value("graphs", nlohmann::json::array())) {
+    if (g.value("graph", "") == "data/graphs/" + graph + ".json") {
+      return g.at("regions").at(region).at("rmse").get<double>();
+    }
+  }
+  return -1.0;
+}
+
+// The reference every number was measured against traces rays (data/graphs/reference.json).
+void expect_traced_reference(const nlohmann::json& results, const std::string& file) {
+  const auto reference = std::filesystem::path(results.value("reference", ""));
+  EXPECT_EQ(reference.filename(), "reference.json") << file;
+}
+
+class CommittedQuality : public ::testing::TestWithParam<const char*> {};
+
+// On the default atrium, layered SSSS is no further from the reference than PCSS over all
+// pixels, penumbra pixels and overlapping-penumbra pixels.
+TEST_P(CommittedQuality, LayeredSsssIsNoWorseThanPcssOnTheAtrium) {
+  const std::string file = GetParam();
+  const auto results = load(file);
+  ASSERT_FALSE(results.is_discarded()) << file;
+  expect_traced_reference(results, file);
+  EXPECT_EQ(std::filesystem::path(results.value("scene", "")).filename(), "atrium.json") << file;
+  for (const char* region : {"all", "penumbra", "overlap"}) {
+    const double layered = rmse(results, "layered-ssss", region);
+    const double pcss = rmse(results, "pcss", region);
+    ASSERT_GT(layered, 0.0) << file << ": no layered-ssss " << region;
+    ASSERT_GT(pcss, 0.0) << file << ": no pcss " << region;
+    EXPECT_LE(layered, pcss) << file << " region " << region;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Atrium, CommittedQuality,
+                         ::testing::Values("quality-640x360.json", "quality-1280x720.json"));
+
+// On the scene of four overlapping penumbrae, layered SSSS keeps at most 0.6x PCSS's error
+// and 0.1x the single-layer variant's on the overlapping pixels.
+TEST(CommittedQualityOverlap, LayeredSsssKeepsItsLeadWherePenumbraeOverlap) {
+  const auto results = load("quality-overlap-640x360.json");
+  ASSERT_FALSE(results.is_discarded());
+  expect_traced_reference(results, "quality-overlap-640x360.json");
+  const double layered = rmse(results, "layered-ssss", "overlap");
+  const double pcss = rmse(results, "pcss", "overlap");
+  const double single = rmse(results, "single-layer", "overlap");
+  ASSERT_GT(layered, 0.0);
+  ASSERT_GT(pcss, 0.0);
+  ASSERT_GT(single, 0.0) << "the overlap results lack data/graphs/single-layer.json";
+  EXPECT_LE(layered, 0.6 * pcss);
+  EXPECT_LE(layered, 0.1 * single);
+}
+
+}  // namespace
