@@ -48,15 +48,21 @@ layout(set = 0, binding = kTiledHardBits) uniform usampler2D hard_bits;  // bit 
 // pixel's surface, its shadow edge is sharper than the layers can hold (a penumbra of a
 // few pixels, as at contact): the upsample then also weighs each texel by how well it
 // agrees with the pixel's own full-resolution hard bit, so the edge falls where the hard
-// test puts it instead of being smeared over a low-resolution texel.
+// test puts it instead of being smeared over a low-resolution texel. With the atlas bound
+// such a layer always takes LAYERED_FALLBACK's PCSS instead (0.35 > 0.2), so this
+// weighting only runs in graphs without the atlas.
 #define LAYERED_SHARP 0.35
 // With the atlas bound, a layer whose value changes by more than this over those texels
 // takes its light's shadow from the atlas (PCSS) at the pixel (g_layered_sharp): the
 // half-resolution texels there average both sides of a contact line (the rows under the
-// atrium's capitals), which the hard-bit weighting above does not undo. Against the
-// ray-traced reference on the atrium at 640x360, 0.2 took layered SSSS's penumbra RMSE
-// from 1.31x PCSS's to 0.77x; 0.25 to 0.35 left the overlapping-penumbra pixels 0.1 %
-// above PCSS's, and 0.5 gave back most of the gain (docs/technique.md 1, step 6).
+// atrium's capitals), which the hard-bit weighting above does not undo. The four texels
+// are 1 to 1.4 texels apart, so this catches every penumbra narrower than about 5 to 7
+// texels (10 to 14 pixels at half resolution), not only contact lines: on the atrium at
+// 640x360 most penumbra pixels take PCSS (docs/technique.md 1, step 6). Against the
+// ray-traced reference there (lavapipe), 0.2 took layered SSSS's penumbra RMSE from
+// 1.31x PCSS's to 0.77x; 0.25 to 0.35 left the overlapping-penumbra pixels 0.1 % above
+// PCSS's, 0.5 gave back most of the gain, and 0.15 or less doubled the overlap scene's
+// error where penumbrae overlap.
 #define LAYERED_FALLBACK 0.2
 // With the atlas bound, a layer whose same-surface texels are all above this while the
 // pixel's own hard bit says shadowed (or all below 1 - this while it says lit) takes its
@@ -68,9 +74,11 @@ layout(set = 0, binding = kTiledHardBits) uniform usampler2D hard_bits;  // bit 
 // view depth and by more than half the distance between the two (a normal tilted by a
 // curve or a normal map explains less). At 1280x720 the atrium's shafts start one pixel
 // under their capitals, 1 % further away and facing the same way, so the same-surface
-// test above lets the capital's texel stand for that pixel row; its contact shadow, one
-// pixel tall, is in no texel, and the row held 85 % of the excess error over PCSS on the
-// overlapping-penumbra pixels (docs/technique.md 1, step 6).
+// tests let the capital's texel stand for that pixel row; the row's contact shadow, one
+// pixel tall, is diluted into that texel (the blur averaged it with the capital's lit
+// pixels) and blurred along the capital, and the row held 85 % of the excess error over
+// PCSS on the overlapping-penumbra pixels (docs/technique.md 1, step 6). The step may be
+// either way (in front or behind).
 #define LAYERED_STEP 0.002
 
 vec4 g_shadow[MAX_SHADOW_TEXELS];
@@ -107,11 +115,12 @@ vec3 layered_view_point(ivec2 pixel) {
 }
 
 // Whether the low-resolution texel whose footprint holds the pixel was blurred on another
-// surface behind a small step (LAYERED_STEP): the pixel's surface then has no sample of
+// surface across a small step (LAYERED_STEP): the pixel's surface then has no sample of
 // its own there, and a contact shadow under the step may be in no texel at all.
 bool layered_own_texel_elsewhere(ivec2 pixel, ivec2 scale, vec3 n) {
   vec3 p = layered_view_point(pixel);
-  vec3 q = layered_view_point(pixel / scale * scale);
+  ivec2 low = textureSize(shadow_layers, 0).xy;
+  vec3 q = layered_view_point(min(pixel / scale, low - 1) * scale);
   float step_off = abs(dot(q - p, n));
   return step_off > LAYERED_STEP * -p.z && step_off > 0.5 * length(q - p);
 }
@@ -231,7 +240,7 @@ bool layered_upsample(ivec2 pixel, ivec2 low, ivec2 scale, float z, vec3 n) {
 #if HAS_HARD_BITS && HAS_ATLAS
   g_layered_sharp |= layered_unresolved(pixel, lo, hi);
 #endif
-#if HAS_HARD_BITS
+#if HAS_HARD_BITS && !HAS_ATLAS  // with the atlas, LAYERED_FALLBACK replaces these layers
   layered_sharpen(pixel, lo, hi, weights, texels);
 #endif
   return matched;

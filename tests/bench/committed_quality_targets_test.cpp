@@ -1,7 +1,9 @@
-// The accuracy targets of layered SSSS (docs/technique.md 1, step 6), checked on the quality
-// results committed under docs/results/ (`antumbra quality --format json`, measured against
-// the ray-traced reference): re-measuring after a change that costs accuracy fails here,
-// without a device. Which results these are is docs/measuring.md's table.
+// The accuracy targets of layered SSSS (docs/technique.md 1, step 6, and 7), checked on the
+// quality results committed under docs/results/ (`antumbra quality --format json` against
+// data/graphs/reference.json, which traces rays): re-measuring after a change that costs
+// accuracy fails here, without a device. Which results these are is docs/measuring.md's
+// table. tests/quality/technique_quality_gpu_test.cpp checks looser bars on lavapipe at
+// 320x180, where the layers' half resolution is a coarser share of the frame.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -31,22 +33,33 @@ double rmse(const nlohmann::json& results, const std::string& graph, const std::
   return -1.0;
 }
 
-// The reference every number was measured against traces rays (data/graphs/reference.json).
-void expect_traced_reference(const nlohmann::json& results, const std::string& file) {
-  const auto reference = std::filesystem::path(results.value("reference", ""));
-  EXPECT_EQ(reference.filename(), "reference.json") << file;
+// The numbers were measured against the shipped reference graph (the file records its path,
+// not its parameters: that it traces rays is data/graphs/reference.json's business) on the
+// scene and at the size the targets name.
+void expect_measured_on(const nlohmann::json& results, const std::string& file,
+                        const std::string& scene, int width, int height) {
+  EXPECT_EQ(std::filesystem::path(results.value("reference", "")).filename(), "reference.json")
+      << file;
+  EXPECT_EQ(std::filesystem::path(results.value("scene", "")).filename(), scene) << file;
+  EXPECT_EQ(results.value("width", 0), width) << file;
+  EXPECT_EQ(results.value("height", 0), height) << file;
 }
 
-class CommittedQuality : public ::testing::TestWithParam<const char*> {};
+struct AtriumResults {
+  const char* file;
+  int width;
+  int height;
+};
+
+class CommittedQuality : public ::testing::TestWithParam<AtriumResults> {};
 
 // On the default atrium, layered SSSS is no further from the reference than PCSS over all
 // pixels, penumbra pixels and overlapping-penumbra pixels.
-TEST_P(CommittedQuality, LayeredSsssIsNoWorseThanPcssOnTheAtrium) {
-  const std::string file = GetParam();
+TEST_P(CommittedQuality, LayeredSsssIsNoWorseThanPcss) {
+  const std::string file = GetParam().file;
   const auto results = load(file);
   ASSERT_FALSE(results.is_discarded()) << file;
-  expect_traced_reference(results, file);
-  EXPECT_EQ(std::filesystem::path(results.value("scene", "")).filename(), "atrium.json") << file;
+  expect_measured_on(results, file, "atrium.json", GetParam().width, GetParam().height);
   for (const char* region : {"all", "penumbra", "overlap"}) {
     const double layered = rmse(results, "layered-ssss", region);
     const double pcss = rmse(results, "pcss", region);
@@ -57,14 +70,15 @@ TEST_P(CommittedQuality, LayeredSsssIsNoWorseThanPcssOnTheAtrium) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Atrium, CommittedQuality,
-                         ::testing::Values("quality-640x360.json", "quality-1280x720.json"));
+                         ::testing::Values(AtriumResults{"quality-640x360.json", 640, 360},
+                                           AtriumResults{"quality-1280x720.json", 1280, 720}));
 
 // On the scene of four overlapping penumbrae, layered SSSS keeps at most 0.6x PCSS's error
 // and 0.1x the single-layer variant's on the overlapping pixels.
 TEST(CommittedQualityOverlap, LayeredSsssKeepsItsLeadWherePenumbraeOverlap) {
   const auto results = load("quality-overlap-640x360.json");
   ASSERT_FALSE(results.is_discarded());
-  expect_traced_reference(results, "quality-overlap-640x360.json");
+  expect_measured_on(results, "quality-overlap-640x360.json", "overlap.json", 640, 360);
   const double layered = rmse(results, "layered-ssss", "overlap");
   const double pcss = rmse(results, "pcss", "overlap");
   const double single = rmse(results, "single-layer", "overlap");
