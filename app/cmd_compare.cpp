@@ -410,6 +410,19 @@ bool write_quality_error_maps(const QualityOptions& options, const std::vector<s
   return true;
 }
 
+// The reference graph's shadow-reference passes with their parameters as the file gives
+// them (the pass's defaults fill the rest): a results file then says which ruler measured
+// it, rays or shadow maps (docs/measuring.md).
+nlohmann::json reference_passes_json(const fg::GraphDesc& graph) {
+  auto passes = nlohmann::json::array();
+  for (const auto& pass : graph.passes) {
+    if (pass.enabled && pass.type == "shadow-reference") {
+      passes.push_back({{"name", pass.name}, {"params", pass.params}});
+    }
+  }
+  return passes;
+}
+
 void print_quality_json(runtime::RenderSession& session, const QualityInputs& inputs,
                         const ReferenceFrame& reference, unsigned width, unsigned height,
                         const TechniqueResults& results, const ErrorMaps& maps,
@@ -419,6 +432,7 @@ void print_quality_json(runtime::RenderSession& session, const QualityInputs& in
                         {"device", session.gpu().device_name()},
                         {"driver", driver_summary(session.gpu())},
                         {"reference", inputs.reference_path},
+                        {"referencePasses", reference_passes_json(inputs.reference)},
                         {"referenceMs", reference.ms},
                         {"scene", inputs.scene_path},
                         {"width", width},

@@ -33,13 +33,18 @@ double rmse(const nlohmann::json& results, const std::string& graph, const std::
   return -1.0;
 }
 
-// The numbers were measured against the shipped reference graph (the file records its path,
-// not its parameters: that it traces rays is data/graphs/reference.json's business) on the
-// scene and at the size the targets name.
+// The numbers were measured against the shipped reference graph, on the scene and at the
+// size the targets name. Files written since `quality` records the reference's passes
+// ("referencePasses") must show rays; older ones record only the graph's path.
 void expect_measured_on(const nlohmann::json& results, const std::string& file,
                         const std::string& scene, int width, int height) {
   EXPECT_EQ(std::filesystem::path(results.value("reference", "")).filename(), "reference.json")
       << file;
+  for (const auto& pass : results.value("referencePasses", nlohmann::json::array())) {
+    EXPECT_EQ(pass.value("params", nlohmann::json::object()).value("visibility", "shadowMaps"),
+              "rays")
+        << file << ": the reference pass " << pass.value("name", "") << " does not trace rays";
+  }
   EXPECT_EQ(std::filesystem::path(results.value("scene", "")).filename(), scene) << file;
   EXPECT_EQ(results.value("width", 0), width) << file;
   EXPECT_EQ(results.value("height", 0), height) << file;
@@ -71,7 +76,11 @@ TEST_P(CommittedQuality, LayeredSsssIsNoWorseThanPcss) {
 
 INSTANTIATE_TEST_SUITE_P(Atrium, CommittedQuality,
                          ::testing::Values(AtriumResults{"quality-640x360.json", 640, 360},
-                                           AtriumResults{"quality-1280x720.json", 1280, 720}));
+                                           AtriumResults{"quality-1280x720.json", 1280, 720}),
+                         [](const ::testing::TestParamInfo<AtriumResults>& results) {
+                           return std::to_string(results.param.width) + "x" +
+                                  std::to_string(results.param.height);
+                         });
 
 // On the scene of four overlapping penumbrae, layered SSSS keeps at most 0.6x PCSS's error
 // and 0.1x the single-layer variant's on the overlapping pixels.
