@@ -44,8 +44,8 @@ gpu::DescriptorSetLayoutBuilder raster_bindings() {
   for (const std::uint32_t binding :
        {shared::kRasterClusters, shared::kRasterIndices, shared::kRasterVertices,
         shared::kRasterFaces, shared::kRasterCounters, shared::kRasterItems, shared::kRasterDepth,
-        shared::kRasterTint, shared::kRasterMaterials, shared::kRasterResolveList,
-        shared::kRasterAttributes}) {
+        shared::kRasterTint, shared::kRasterMaterials, shared::kRasterPages,
+        shared::kRasterResolveList, shared::kRasterAttributes}) {
     b.storage_buffer(binding, VK_SHADER_STAGE_COMPUTE_BIT);
   }
   b.add(shared::kRasterSrgbTextures, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT,
@@ -237,12 +237,14 @@ void ComputeRasterizer::execute(fgvk::ExecuteContext& context, const AtlasFrame&
     largest = std::max(largest, face_size_of(frame, layer, size));
   ensure_scratch(context, static_cast<std::uint32_t>(layers.size()), largest, size);
   write_records(context, frame, tinted, settings);
-  decision_.record(context, frame, staging,
-                   {.records = static_cast<std::uint32_t>(layers.size()),
-                    .chunk_faces = chunk_faces_,
-                    .face_size = size,
-                    .fill_first = fill_first_,
-                    .cull_groups = group_count(cluster_count_, shared::kCullGroup)});
+  decision_layout_ = {.records = static_cast<std::uint32_t>(layers.size()),
+                      .chunk_faces = chunk_faces_,
+                      .face_size = size,
+                      .fill_first = fill_first_,
+                      .cull_groups = group_count(cluster_count_, shared::kCullGroup),
+                      .page_culling = settings.pages,
+                      .page_reach = settings.page_reach};
+  decision_.record(context, frame, staging, decision_layout_);
   for (std::size_t first = 0; first < layers.size(); first += chunk_faces_) {
     const Chunk chunk{
         static_cast<std::uint32_t>(first),
@@ -344,6 +346,7 @@ void ComputeRasterizer::bind(fgvk::ExecuteContext& context, const ComputePipelin
       .storage_buffer(shared::kRasterDepth, depth_)
       .storage_buffer(shared::kRasterTint, tint_ ? tint_.handle() : depth_.handle())
       .storage_buffer(shared::kRasterMaterials, context.frame.materials)
+      .storage_buffer(shared::kRasterPages, decision_.drawn_pages())
       .storage_buffer(shared::kRasterResolveList, decision_.list());
   if (textures) {
     // Pushed only where read: every push writes its descriptors into the command stream.
@@ -438,6 +441,7 @@ void ComputeRasterizer::record_chunk(fgvk::ExecuteContext& context, const AtlasF
   push.slope_bias = settings.slope_bias;
   const bool cleans = resolve_cleans(frame, chunk);
   push.reset_scratch = cleans ? 1u : 0u;
+  push.page_words = decision_.page_words();
   context.gpu.begin_label(cmd, context.pass.name + ".cull");
   bind(context, cull_, push);
   if (cluster_count_ > 0) {
@@ -471,7 +475,10 @@ void ComputeRasterizer::record_chunk(fgvk::ExecuteContext& context, const AtlasF
     compute_to_compute(cmd, {tint_, depth_});
   }
   if (!storage_atlas_) compute_to_copy(cmd, {depth_});
-  if (storage_atlas_ || any_tint) resolve(context, push, chunk.first, chunk.first / chunk_faces_);
+  if (storage_atlas_ || any_tint) {
+    const std::uint32_t index = chunk.first / chunk_faces_;
+    resolve(context, push, decision_layout_.page_list(index), index);
+  }
   // What this chunk leaves dirty for the next one (clear_chunk).
   const std::uint32_t last = chunk.first + chunk.count - 1;
   const VkDeviceSize depth_bytes =
@@ -541,9 +548,8 @@ void ComputeRasterizer::fill_untouched(fgvk::ExecuteContext& context, const Atla
                   kClearDepthBits);
   if (storage_atlas_) {
     transfer_to_compute(context.cmd, {depth_});
-    const DecisionLayout layout{.records = static_cast<std::uint32_t>(frame.render_layers.size()),
-                                .chunk_faces = chunk_faces_};
-    resolve(context, shared::RasterPush{}, layout.chunks() * chunk_faces_, layout.chunks());
+    const std::uint32_t fill = decision_layout_.chunks();
+    resolve(context, shared::RasterPush{}, decision_layout_.page_list(fill), fill);
     return;
   }
   gpu::buffer_barrier(context.cmd, depth_, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,

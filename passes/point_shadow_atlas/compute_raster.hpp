@@ -27,6 +27,10 @@ struct ComputeRasterSettings {
   float depth_bias = 2.0f;
   float slope_bias = 1.75f;
   bool tint = false;  // translucent casters tint the colour map instead of casting depth
+  // With receiver culling: only the pages of a face some visible pixel needs are drawn
+  // (docs/technique.md, "Receiver-driven pages"); off, every page of a needed face.
+  bool pages = true;
+  float page_reach = 1.0f;  // the blocker searches' reach the pages cover (shadow_receivers.comp)
 };
 
 struct ComputeRasterStats {
@@ -140,7 +144,8 @@ class ComputeRasterizer {
   std::vector<gpu::Buffer> faces_;  // RasterFace records per frame-in-flight slot
   ComputeRasterStats stats_;
   FaceDecision decision_;
-  std::uint32_t fill_first_ = 0;  // DecisionLayout::fill_first of this frame
+  std::uint32_t fill_first_ = 0;    // DecisionLayout::fill_first of this frame
+  DecisionLayout decision_layout_;  // this frame's
 };
 
 }  // namespace antumbra::passes

@@ -6,6 +6,7 @@
 #define ANTUMBRA_COMPUTE_RASTER_INTERFACE_H
 
 #include "../interface/shared/glsl_cpp.h"
+#include "pages.h"
 
 ANTUMBRA_SHARED_BEGIN
 
@@ -15,7 +16,9 @@ const uint kCullGroup = 64;
 const uint kRasterGroup = 128;
 // Square screen regions a work item covers: a cluster whose projection spans several
 // regions becomes one item per region, so no workgroup loops over a whole 1024^2 face
-// for one large triangle.
+// for one large triangle. The regions are the face decision's pages too
+// (face_decision_interface.h, kPageShift; the C++ asserts they agree): a page is drawn by
+// the items of its region.
 const uint kRasterRegionShift = 7;
 // An item's region when its cluster's projection fits in one region's size: the whole
 // face, so that a small cluster straddling region borders is not drawn several times.
@@ -81,9 +84,11 @@ ANTUMBRA_PUSH_CONSTANTS(RasterPush) {
   // shadow_raster_resolve.comp: 1 puts the cleared values back into the scratch texels it
   // read, so the next chunk finds them clean without a fill over every candidate face.
   uint reset_scratch;
+  uint page_words;  // shadow_cull.comp: uints of page bits per record in kRasterPages
 };
-// shadow_cull.comp and shadow_raster_resolve.comp read the records drawn from
-// kRasterResolveList at face_first (face_decision.hpp's lists).
+// shadow_cull.comp reads the records drawn from kRasterResolveList at face_first, and
+// shadow_raster_resolve.comp the pages drawn (record | page << 16) at face_first
+// (face_decision.hpp's lists).
 
 ANTUMBRA_BINDING(kRasterClusters, 0)
 ANTUMBRA_BINDING(kRasterIndices, 1)   // uint vertex indices in cluster order
@@ -94,9 +99,12 @@ ANTUMBRA_BINDING(kRasterItems, 5)  // uvec2: cluster, face | region << 16
 ANTUMBRA_BINDING(kRasterDepth, 6)  // uint per texel: float bits of the depth (atomicMin)
 ANTUMBRA_BINDING(kRasterTint, 7)   // uint per texel: RGBA8 tint (rgb product, a nearest)
 ANTUMBRA_BINDING(kRasterMaterials, 8)
-ANTUMBRA_BINDING(kRasterAtlas, 9)         // r32f atlas, image2DArray (shadow_raster_resolve.comp)
-ANTUMBRA_BINDING(kRasterColour, 10)       // rgba8 colour map, image2DArray (the same)
-ANTUMBRA_BINDING(kRasterResolveList, 12)  // uint records to resolve (face_decision.hpp)
+ANTUMBRA_BINDING(kRasterAtlas, 9)    // r32f atlas, image2DArray (shadow_raster_resolve.comp)
+ANTUMBRA_BINDING(kRasterColour, 10)  // rgba8 colour map, image2DArray (the same)
+// The pages each drawn record draws (face_decision_interface.h, kDecidePages): the cull
+// makes work items for those pages only.
+ANTUMBRA_BINDING(kRasterPages, 11)
+ANTUMBRA_BINDING(kRasterResolveList, 12)  // records to cull, pages to resolve (face_decision.hpp)
 // Cut materials (shadow_raster.comp): texture coordinates and base-colour textures.
 ANTUMBRA_BINDING(kRasterAttributes, 13)    // GpuVertexAttributes[], parallel to the vertices
 ANTUMBRA_BINDING(kRasterSrgbTextures, 14)  // texture2DArray[kTextureBuckets]

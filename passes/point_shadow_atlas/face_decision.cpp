@@ -17,12 +17,16 @@
 namespace antumbra::passes {
 namespace {
 
+// A page is a rasteriser region: the cull makes a page's items from its region.
+static_assert(shared::kPageShift == shared::kRasterRegionShift);
+static_assert(shared::kPageSize == 1u << shared::kPageShift);
+
 gpu::DescriptorSetLayoutBuilder decision_bindings() {
   gpu::DescriptorSetLayoutBuilder b;
   for (const std::uint32_t binding :
        {shared::kDecideShadowIn, shared::kDecideShadowOut, shared::kDecideRequests,
-        shared::kDecideNeeded, shared::kDecideContent, shared::kDecideArgs, shared::kDecideList,
-        shared::kDecideStats}) {
+        shared::kDecideNeeded, shared::kDecideContent, shared::kDecidePages, shared::kDecideArgs,
+        shared::kDecideList, shared::kDecideStats}) {
     b.storage_buffer(binding, VK_SHADER_STAGE_COMPUTE_BIT);
   }
   b.combined_image_sampler(shared::kReceiverDepth, VK_SHADER_STAGE_COMPUTE_BIT)
@@ -48,6 +52,19 @@ gpu::Buffer storage(fgvk::ExecuteContext& context, VkDeviceSize bytes, VkBufferU
 
 }  // namespace
 
+std::uint32_t pages_per_side(std::uint32_t size) {
+  return (std::max(size, 1u) + shared::kPageSize - 1) >> shared::kPageShift;
+}
+
+std::uint32_t page_slots(std::uint32_t atlas_face_size) {
+  const std::uint32_t side = pages_per_side(atlas_face_size);
+  return side * side;
+}
+
+std::uint32_t page_words(std::uint32_t atlas_face_size) {
+  return (page_slots(atlas_face_size) + 31) / 32;
+}
+
 void FaceDecision::prepare(fgvk::PrepareContext& context, bool receivers,
                            std::vector<std::string>& shader_files, gpu::Fnv1a64& key) {
   const gpu::DescriptorSetLayoutBuilder bindings = decision_bindings();
@@ -66,6 +83,8 @@ void FaceDecision::prepare(fgvk::PrepareContext& context, bool receivers,
 void FaceDecision::adopt(FaceDecision& previous) {
   if (previous.layers_ == 0 || !previous.content_) return;
   layers_ = previous.layers_;
+  page_words_ = previous.page_words_;
+  page_slots_ = previous.page_slots_;
   content_ = std::move(previous.content_);
   content_cleared_ = previous.content_cleared_;
   needed_ = std::move(previous.needed_);
@@ -74,18 +93,27 @@ void FaceDecision::adopt(FaceDecision& previous) {
 
 void FaceDecision::ensure_buffers(fgvk::ExecuteContext& context, std::uint32_t layers,
                                   const DecisionLayout& layout) {
-  if (layers != layers_ || !content_) {
+  const std::uint32_t words = passes::page_words(layout.face_size);
+  const std::uint32_t slots = passes::page_slots(layout.face_size);
+  if (layers != layers_ || !content_ || words != page_words_ || slots != page_slots_) {
     layers_ = layers;
+    page_words_ = words;
+    page_slots_ = slots;
     shadow_in_ = storage(context, shadow_data_bytes(layers), 0, ".decisionShadowData");
-    needed_ = storage(context, VkDeviceSize{layers} * 4, 0, ".neededFaces");
-    content_ = storage(context, VkDeviceSize{layers} * 4, 0, ".layerEpochs");
+    needed_ = storage(context, VkDeviceSize{layers} * words * 4, 0, ".neededPages");
+    content_ = storage(context, VkDeviceSize{layers} * slots * 4, 0, ".pageEpochs");
     content_cleared_ = false;
+    drawn_capacity_ = 0;
+  }
+  if (layout.records > drawn_capacity_ || !drawn_) {
+    drawn_capacity_ = std::max(layout.records, 1u);
+    drawn_ = storage(context, VkDeviceSize{drawn_capacity_} * words * 4, 0, ".drawnPages");
   }
   if (!stats_) {
     stats_ = storage(context, kStatBytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, ".faceStats");
   }
   const std::uint32_t chunks = layout.chunks();
-  const std::uint32_t list = chunks * layout.chunk_faces + layers;
+  const std::uint32_t list = layout.list_size(layers);
   if (list > list_capacity_) {
     list_capacity_ = list;
     list_ = storage(context, VkDeviceSize{list} * 4, 0, ".resolveList");
@@ -133,7 +161,7 @@ void FaceDecision::write_requests(Slot& slot, const AtlasFrame& frame,
 void FaceDecision::reset(fgvk::ExecuteContext& context, const ShadowStaging& staging,
                          const AtlasFrame& frame, const DecisionLayout& layout) {
   const VkCommandBuffer cmd = context.cmd;
-  after_all(cmd, {shadow_in_, needed_, content_, args_, stats_},
+  after_all(cmd, {shadow_in_, needed_, content_, drawn_, args_, stats_},
             VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
   copy_shadow_data(cmd, staging, shadow_in_, shadow_data_bytes(layers_));
   vkCmdFillBuffer(cmd, needed_, 0, VK_WHOLE_SIZE, 0u);
@@ -142,16 +170,17 @@ void FaceDecision::reset(fgvk::ExecuteContext& context, const ShadowStaging& sta
     vkCmdFillBuffer(cmd, content_, 0, VK_WHOLE_SIZE, 0u);
     content_cleared_ = true;
   }
-  // Resolves grow to their chunk's largest drawn face and culls by one row of workgroups
-  // per drawn record (shadow_face_decide.comp); the fill list covers whole layers.
-  const std::uint32_t groups = group_count(layout.face_size, shared::kResolveGroup);
+  // Resolves grow to their chunk's largest drawn page and culls by one row of workgroups
+  // per drawn record (shadow_face_decide.comp); the fill list covers whole pages.
+  const std::uint32_t groups =
+      group_count(std::min(layout.face_size, shared::kPageSize), shared::kResolveGroup);
   std::vector<glm::uvec4> args(std::size_t{layout.chunks()} * 2 + 1, glm::uvec4(0u));
   for (std::uint32_t chunk = 0; chunk < layout.chunks(); ++chunk) {
     args[std::size_t{chunk} * 2 + 1] = glm::uvec4(layout.cull_groups, 0u, 1u, 0u);
   }
   args.back() = glm::uvec4(groups, groups, 0u, 0u);
   vkCmdUpdateBuffer(cmd, args_, 0, args.size() * sizeof(glm::uvec4), args.data());
-  transfer_to_compute(cmd, {shadow_in_, needed_, content_, args_, stats_});
+  transfer_to_compute(cmd, {shadow_in_, needed_, content_, drawn_, args_, stats_});
   // Last frame's rasterisation read the lists.
   after_all(cmd, {list_}, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, kStorage);
 }
@@ -165,6 +194,7 @@ void FaceDecision::bind(fgvk::ExecuteContext& context, const ComputePipeline& pi
       .storage_buffer(shared::kDecideRequests, slot.requests)
       .storage_buffer(shared::kDecideNeeded, needed_)
       .storage_buffer(shared::kDecideContent, content_)
+      .storage_buffer(shared::kDecidePages, drawn_)
       .storage_buffer(shared::kDecideArgs, args_)
       .storage_buffer(shared::kDecideList, list_)
       .storage_buffer(shared::kDecideStats, stats_)
@@ -197,6 +227,11 @@ void FaceDecision::record(fgvk::ExecuteContext& context, const AtlasFrame& frame
   push.header_vec4s = static_cast<std::uint32_t>(kShadowFacesOffset / 16);
   push.copy_vec4s = static_cast<std::uint32_t>(shadow_lights_bytes(staging.lights) / 16);
   push.resolve_group = shared::kResolveGroup;
+  push.page_words = page_words_;
+  push.page_slots = page_slots_;
+  push.page_culling = layout.page_culling ? 1u : 0u;
+  push.page_margin = shared::kPageMargin;
+  push.page_reach = layout.page_reach;
   if (receivers_) {
     const fgvk::BoundImage& depth = context.bindings.required_image(port::kDepth);
     push.depth_size = {depth.extent.width, depth.extent.height};
@@ -211,8 +246,8 @@ void FaceDecision::record(fgvk::ExecuteContext& context, const AtlasFrame& frame
   bind(context, decide_, slot);
   vkCmdPushConstants(cmd, decide_.layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
   vkCmdDispatch(cmd, group_count(std::max(push.copy_vec4s, layers), shared::kDecideGroup), 1, 1);
-  barriers(cmd, {list_, args_, content_, stats_}, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, kStorage,
-           VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT,
+  barriers(cmd, {list_, args_, content_, drawn_, stats_}, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+           kStorage, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT,
            VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT);
   context.gpu.end_label(cmd);
   slot.frame_index = context.frame.frame_index;
@@ -241,6 +276,7 @@ std::optional<FaceDecisionStats> FaceDecision::completed(std::uint32_t slot_inde
   out.cached = counts[shared::kStatCached];
   out.receiver_culled = counts[shared::kStatReceivers];
   out.texels = counts[shared::kStatTexels];
+  out.pages = counts[shared::kStatPages];
   return out;
 }
 

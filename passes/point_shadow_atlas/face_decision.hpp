@@ -1,10 +1,11 @@
 #pragma once
 // The compute rasteriser's GPU-side face decision (docs/technique.md, "Receiver-driven
-// faces"): copies the frame's shadow data in, optionally marks the faces a visible pixel
-// needs (shadow_receivers.comp, from the G-buffer depth), then decides per layer what
-// is drawn and publishes the graph's shadowData (shadow_face_decide.comp). It keeps, per
-// layer, the epoch of what the layer holds, so a face skipped for lack of receivers is
-// drawn the first frame a receiver appears, and never shown stale. Counters come back
+// faces" and "Receiver-driven pages"): copies the frame's shadow data in, optionally marks
+// the pages of faces a visible pixel needs (shadow_receivers.comp, from the G-buffer
+// depth), then decides per layer which pages are drawn and publishes the graph's
+// shadowData (shadow_face_decide.comp). It keeps, per page, the epoch of what the page
+// holds, so a page skipped for lack of receivers is drawn the first frame a receiver
+// appears, and never shown stale. Counters come back
 // through a per-slot readback buffer. Every barrier here is on its own buffers.
 
 #include <array>
@@ -28,21 +29,39 @@ struct FaceDecisionStats {
   std::uint32_t drawn = 0;
   std::uint32_t cached = 0;
   std::uint32_t receiver_culled = 0;  // visible to the camera, but no visible pixel needs them
-  std::uint64_t texels = 0;           // of the drawn faces
+  std::uint64_t texels = 0;           // of the drawn pages
+  std::uint32_t pages = 0;            // drawn (face_decision_interface.h, kPageSize)
 };
 
-// Where the decision puts drawn records: chunk c's list starts at c * chunk_faces; its
-// resolve's dispatch arguments at resolve_args(c) and its cull's at cull_args(c) (the
-// cull covers only the drawn records, never the skipped candidates); the fill list (far
-// depth for every layer not drawn when the contents are unknown) follows the last chunk,
-// with its resolve arguments at resolve_args(chunks()).
+// Pages per side of a face `size` texels wide (face_decision_interface.h, kPageSize), the
+// pages a record has room for in the decision's buffers (the atlas's face size), and the
+// uints of one bit each.
+std::uint32_t pages_per_side(std::uint32_t size);
+std::uint32_t page_slots(std::uint32_t atlas_face_size);
+std::uint32_t page_words(std::uint32_t atlas_face_size);
+
+// Where the decision puts what is drawn: chunk c's drawn records (the cull's rows) at
+// c * chunk_faces, its drawn pages (the resolve's entries) at page_list(c); its resolve's
+// dispatch arguments at resolve_args(c) and its cull's at cull_args(c) (the cull covers
+// only the drawn records, never the skipped candidates, the resolve only the drawn pages);
+// the fill list (far depth for every page not drawn when the contents are unknown) at
+// page_list(chunks()), with its resolve arguments at resolve_args(chunks()).
 struct DecisionLayout {
   std::uint32_t records = 0;      // candidate records (frame.render_layers)
   std::uint32_t chunk_faces = 1;  // records per chunk
-  std::uint32_t face_size = 0;
+  std::uint32_t face_size = 0;    // the atlas's
   std::uint32_t fill_first = 0;   // 0: no fill; else 1 + the record of layer 0's fill
   std::uint32_t cull_groups = 0;  // the cull's workgroups along the clusters
+  bool page_culling = true;       // only the needed pages of a needed face
+  float page_reach = 1.0f;        // DecisionPush::page_reach
   [[nodiscard]] std::uint32_t chunks() const { return (records + chunk_faces - 1) / chunk_faces; }
+  [[nodiscard]] std::uint32_t page_list(std::uint32_t chunk) const {
+    return chunks() * chunk_faces + chunk * chunk_faces * page_slots(face_size);
+  }
+  // List entries for `layers` layers.
+  [[nodiscard]] std::uint32_t list_size(std::uint32_t layers) const {
+    return page_list(chunks()) + layers * page_slots(face_size);
+  }
   // Byte offsets into FaceDecision::args(): a uvec4 pair per chunk (face_decision_interface.h).
   [[nodiscard]] static VkDeviceSize resolve_args(std::uint32_t chunk) {
     return VkDeviceSize{chunk} * 32;
@@ -72,6 +91,9 @@ class FaceDecision {
   [[nodiscard]] bool receivers() const { return receivers_; }
   [[nodiscard]] std::uint32_t last_slot() const { return last_slot_; }
   [[nodiscard]] VkBuffer list() const { return list_; }
+  // Page bits of the drawn records (kDecidePages), which the cull reads.
+  [[nodiscard]] VkBuffer drawn_pages() const { return drawn_; }
+  [[nodiscard]] std::uint32_t page_words() const { return page_words_; }
   [[nodiscard]] VkBuffer args() const { return args_; }
 
  private:
@@ -95,9 +117,13 @@ class FaceDecision {
   std::uint32_t list_capacity_ = 0;
   std::uint32_t args_capacity_ = 0;
   gpu::Buffer shadow_in_;  // device copy of the staging data (read by every tile)
-  gpu::Buffer needed_;     // uint per layer
-  gpu::Buffer content_;    // uint per layer: the epoch it holds
-  gpu::Buffer args_;       // uvec4 pair per chunk (resolve, cull) + the fill's
+  gpu::Buffer needed_;     // page bits per layer
+  gpu::Buffer content_;    // page_slots uints per layer: the epoch each page holds
+  gpu::Buffer drawn_;      // page bits per drawn record
+  std::uint32_t page_words_ = 1;
+  std::uint32_t page_slots_ = 1;
+  std::uint32_t drawn_capacity_ = 0;  // records drawn_ holds
+  gpu::Buffer args_;                  // uvec4 pair per chunk (resolve, cull) + the fill's
   gpu::Buffer list_;
   gpu::Buffer stats_;
   bool content_cleared_ = false;  // content_ starts at zero (nothing held)

@@ -6,6 +6,7 @@
 #define ANTUMBRA_FACE_DECISION_INTERFACE_H
 
 #include "../interface/shared/glsl_cpp.h"
+#include "pages.h"
 
 ANTUMBRA_SHARED_BEGIN
 
@@ -34,8 +35,9 @@ struct FaceRequest {
 const uint kStatDrawn = 0;
 const uint kStatCached = 1;     // candidates needed and already current
 const uint kStatReceivers = 2;  // candidates no visible pixel needs: skipped
-const uint kStatTexels = 3;     // texels of the drawn faces
-const uint kStatCount = 4;
+const uint kStatTexels = 3;     // texels of the drawn pages
+const uint kStatPages = 4;      // pages drawn
+const uint kStatCount = 5;
 
 ANTUMBRA_PUSH_CONSTANTS(DecisionPush) {
   uvec2 depth_size;    // shadow_receivers.comp: the G-buffer depth's extent
@@ -48,19 +50,29 @@ ANTUMBRA_PUSH_CONSTANTS(DecisionPush) {
   uint header_vec4s;   // uvec4s before the face records (header and the lights array)
   uint resolve_group;  // the resolve's workgroup side: a chunk's dispatch covers its largest face
   uint copy_vec4s;     // of those, the header and the lights frames have had: copied as is
-  uint unused2;
+  uint page_words;     // uints of page bits per record (needed, drawn)
+  uint page_slots;     // pages per record in the content epochs and the page lists
+  uint page_culling;   // 1: only the needed pages of a needed face; 0: all of its pages
+  float page_margin;   // texels around a pixel's lookup whose pages it needs
+  float page_reach;    // the blocker searches' scale of the light's size the pages cover
 };
 
 ANTUMBRA_BINDING(kDecideShadowIn, 0)   // this frame's shadow data as the CPU wrote it
 ANTUMBRA_BINDING(kDecideShadowOut, 1)  // the graph's shadowData (info.z/w decided here)
 ANTUMBRA_BINDING(kDecideRequests, 2)   // FaceRequest per layer
-ANTUMBRA_BINDING(kDecideNeeded, 3)     // uint per layer: a visible pixel needs it
-ANTUMBRA_BINDING(kDecideContent, 4)    // uint per layer: the epoch the layer holds
-// uvec4 pair per chunk: the resolve's dispatch (x, y: its largest drawn face, z: drawn
-// records) then the cull's (x: cluster groups, y: drawn records, z: 1); then the fill's
-// resolve. A chunk's cull and resolve cover its drawn records only.
+// page_words uints per layer: bit k, a visible pixel needs page k (shadow_receivers.comp)
+ANTUMBRA_BINDING(kDecideNeeded, 3)
+ANTUMBRA_BINDING(kDecideContent, 4)  // page_slots uints per layer: the epoch each page holds
+// page_words uints per drawn record (RasterFace index): bit k, page k is drawn this frame
+// (read by shadow_cull.comp as kRasterPages)
+ANTUMBRA_BINDING(kDecidePages, 5)
+// uvec4 pair per chunk: the resolve's dispatch (x, y: its largest drawn page, z: drawn
+// pages) then the cull's (x: cluster groups, y: drawn records, z: 1); then the fill's
+// resolve. A chunk's cull covers its drawn records only, its resolve its drawn pages.
 ANTUMBRA_BINDING(kDecideArgs, 6)
-ANTUMBRA_BINDING(kDecideList, 7)      // uint records drawn, per chunk (cull, resolve) then fill
+// uint records drawn per chunk (the cull's rows); then the pages drawn per chunk and the
+// fill's pages (the resolve's entries: record | page << 16); face_decision.hpp's layout.
+ANTUMBRA_BINDING(kDecideList, 7)
 ANTUMBRA_BINDING(kDecideStats, 8)     // uint[kStatCount]
 ANTUMBRA_BINDING(kReceiverDepth, 9)   // the G-buffer depth (sampler2D)
 ANTUMBRA_BINDING(kReceiverFrame, 10)  // FrameUniforms

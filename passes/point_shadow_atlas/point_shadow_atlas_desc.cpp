@@ -190,6 +190,28 @@ void add_face_choice_params(fg::ParamTable<PointShadowAtlasParams>& table) {
                 "that gains a receiver is drawn that frame). Otherwise every face the "
                 "camera's frustum may need is drawn."},
            &PointShadowAtlasParams::receiver_culling)
+      .add({.name = "receiverPages",
+            .type = fg::ParamType::boolean,
+            .default_value = true,
+            .description =
+                "With receiverCulling: draw only the 128^2 pages of a face that some visible "
+                "pixel's lookups may read (within 64 texels of where it falls, plus the "
+                "blocker searches' reach: pageReach times the light's size over the "
+                "distance, at most a quarter face), each kept until its face changes; the "
+                "face's other pages hold far depth. Off: every page of a face some pixel "
+                "needs (docs/technique.md, \"Receiver-driven pages\")."},
+           &PointShadowAtlasParams::receiver_pages)
+      .add({.name = "pageReach",
+            .type = fg::ParamType::number,
+            .default_value = 1.0,
+            .min = 0.0,
+            .max = 16.0,
+            .description =
+                "With receiverPages: the blocker-search scale the drawn pages cover around "
+                "each visible pixel, in units of the light's size over its distance (the "
+                "searches of layered-penumbra and the moment lookups at searchScale x "
+                "lightSizeScale 1). Larger values draw more pages."},
+           &PointShadowAtlasParams::page_reach)
       .choice(
           {.name = "resolution",
            .type = fg::ParamType::enumeration,

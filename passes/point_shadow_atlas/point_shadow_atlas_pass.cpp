@@ -379,10 +379,13 @@ void PointShadowAtlasPass::execute(fgvk::ExecuteContext& context) {
 
   if (params_.rasterizer == ShadowRasterizer::compute) {
     // Runs every frame: its decision also publishes the shadow data.
-    compute_.execute(
-        context, frame, tinted_,
-        {.depth_bias = params_.depth_bias, .slope_bias = params_.slope_bias, .tint = colour_},
-        {slot.staging, lights_high_});
+    compute_.execute(context, frame, tinted_,
+                     {.depth_bias = params_.depth_bias,
+                      .slope_bias = params_.slope_bias,
+                      .tint = colour_,
+                      .pages = params_.receiver_pages,
+                      .page_reach = params_.page_reach},
+                     {slot.staging, lights_high_});
     return;
   }
   if (frame.render_layers.empty() && !frame.clear_all) return;
@@ -557,10 +560,13 @@ fgvk::PassMessage PointShadowAtlasPass::face_stats(
     details["rendered"] = g.drawn;
     details["cached"] = g.cached;
     details["texels"] = g.texels;
+    details["pages"] = g.pages;
+    details["receiverPages"] = params_.receiver_pages;
     details["statsFrame"] = gpu ? base::Json(g.frame_index) : base::Json(nullptr);
     text = "shadow faces: " + std::to_string(s.total) + " total, " + std::to_string(culled) +
            " culled (" + std::to_string(g.receiver_culled) + " without a visible receiver), " +
-           std::to_string(g.drawn) + " rendered, " + std::to_string(g.cached) + " cached" +
+           std::to_string(g.drawn) + " rendered (" + std::to_string(g.pages) + " pages), " +
+           std::to_string(g.cached) + " cached" +
            (gpu ? " (GPU counts of frame " + std::to_string(g.frame_index) + ")"
                 : " (GPU counts pending)");
   }

@@ -49,6 +49,8 @@ struct PointShadowAtlasParams {
   bool translucent_colour = true;
   bool layered_draw = true;
   bool receiver_culling = true;
+  bool receiver_pages = true;
+  float page_reach = 1.0f;
   FaceResolution resolution = FaceResolution::fixed;
   float resolution_scale = 1.0f;
   std::uint32_t min_resolution = 64;

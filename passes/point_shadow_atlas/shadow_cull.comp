@@ -7,7 +7,8 @@
 // chunk's list of drawn records, which the face decision wrote; an indirect dispatch as
 // long as that list, so candidates the decision skipped cost nothing here) and appends
 // one work item per screen region the cluster's projection touches (docs/technique.md,
-// "Compute shadow rasteriser"). Tests, all conservative: the light's range, the face's
+// "Compute shadow rasteriser") among the pages the decision draws ("Receiver-driven
+// pages": a region is a page). Tests, all conservative: the light's range, the face's
 // frustum and, for a closed mesh seen from outside its bounds, a normal cone facing away.
 
 layout(local_size_x = kCullGroup) in;
@@ -27,6 +28,9 @@ layout(std430, binding = kRasterItems) writeonly buffer Items {
 layout(std430, binding = kRasterResolveList) readonly buffer List {
   uint records[];
 };
+layout(std430, binding = kRasterPages) readonly buffer Pages {
+  uint drawn_pages[];
+};
 
 const float kHalfPi = 1.57079632679;
 
@@ -43,9 +47,55 @@ bool faces_away(RasterCluster c, vec3 eye) {
   return distance * cos(gap) + c.sphere.w < 0.0;
 }
 
+// 1 when page `page` of the record whose bits start at `base` is drawn this frame.
+uint page_drawn(uint base, uint page) {
+  return (drawn_pages[base + (page >> 5u)] >> (page & 31u)) & 1u;
+}
+
 bool sphere_outside(vec4 plane, vec4 sphere) {
   float len = length(plane.xyz);
   return len > 0.0 && dot(plane.xyz, sphere.xyz) + plane.w < -sphere.w * len;
+}
+
+// Appends cluster c's work items for face f (within the chunk) of `size` texels: one per
+// drawn page its texel rectangle [lo, hi] touches, or one over the whole face when the
+// rectangle is `small` (within a region's size) and all of its pages are drawn.
+void emit_items(uint c, uint f, uint list, vec2 lo, vec2 hi, bool small, uint size) {
+  uvec2 r0 = uvec2(lo) >> kRasterRegionShift;
+  uvec2 r1 = uvec2(hi) >> kRasterRegionShift;
+  uint regions_x = (size + (1u << kRasterRegionShift) - 1u) >> kRasterRegionShift;
+  // Only the regions whose pages are drawn: the items write nothing else, so the resolve
+  // reads (and cleans) only the drawn pages' scratch.
+  uint page_base = (face_first + f) * page_words;
+  uint drawn = 0u;
+  for (uint ry = r0.y; ry <= r1.y; ++ry) {
+    for (uint rx = r0.x; rx <= r1.x; ++rx) drawn += page_drawn(page_base, ry * regions_x + rx);
+  }
+  if (drawn == 0u) return;
+  // A small cluster whose pages are all drawn is one item over the whole face: its
+  // triangles lie in its rectangle, so it too writes only drawn pages.
+  uint rect = (r1.x - r0.x + 1u) * (r1.y - r0.y + 1u);
+  bool whole = small && drawn == rect;
+  uint count = whole ? 1u : drawn;
+  uint first = atomicAdd(counts[list], count);
+  if (first + count > list_capacity(list)) {
+    atomicAdd(counts[kRasterOverflow], 1u);  // the pass sized the lists for the worst case
+    return;
+  }
+  uint base = list_base(list);
+  if (whole) {
+    items[base + first] = uvec2(c, f | (kRegionWholeFace << 16));
+    return;
+  }
+  uint k = 0u;
+  for (uint ry = r0.y; ry <= r1.y; ++ry) {
+    for (uint rx = r0.x; rx <= r1.x; ++rx) {
+      uint region = ry * regions_x + rx;
+      if (page_drawn(page_base, region) == 0u) continue;
+      items[base + first + k] = uvec2(c, f | (region << 16));
+      ++k;
+    }
+  }
 }
 
 void main() {
@@ -101,26 +151,7 @@ void main() {
     lo = clamp(floor(pmin - 1.0), vec2(0.0), vec2(size - 1.0));
     hi = clamp(ceil(pmax + 1.0), vec2(0.0), vec2(size - 1.0));
   }
-  uvec2 r0 = uvec2(lo) >> kRasterRegionShift;
-  uvec2 r1 = uvec2(hi) >> kRasterRegionShift;
-  uint regions_x = (uint(size) + (1u << kRasterRegionShift) - 1u) >> kRasterRegionShift;
-  bool small = bounded && all(lessThanEqual(hi - lo, vec2(float(1u << kRasterRegionShift))));
-  uint count = small ? 1u : (r1.x - r0.x + 1u) * (r1.y - r0.y + 1u);
-  uint first = atomicAdd(counts[list], count);
-  if (first + count > list_capacity(list)) {
-    atomicAdd(counts[kRasterOverflow], 1u);  // the pass sized the lists for the worst case
-    return;
-  }
-  uint base = list_base(list);
-  if (small) {
-    items[base + first] = uvec2(c, f | (kRegionWholeFace << 16));
-    return;
-  }
-  uint k = 0u;
-  for (uint ry = r0.y; ry <= r1.y; ++ry) {
-    for (uint rx = r0.x; rx <= r1.x; ++rx) {
-      items[base + first + k] = uvec2(c, f | ((ry * regions_x + rx) << 16));
-      ++k;
-    }
-  }
+  emit_items(c, f, list, lo, hi,
+             bounded && all(lessThanEqual(hi - lo, vec2(float(1u << kRasterRegionShift)))),
+             uint(size));
 }

@@ -3,9 +3,11 @@
 #include "compute_raster_interface.h"
 #include "../interface/shared/shadow_data.h"
 
-// Writes finished faces from the scratch into the graph's images (x, y: texels; z: an
-// entry of the resolve list, which names the record; docs/technique.md, "Compute shadow
-// rasteriser"): WRITE_DEPTH, the depth
+// Writes finished pages from the scratch into the graph's images (x, y: texels of the
+// page; z: an entry of the page list, which names the record and its page, record | page
+// << 16; docs/technique.md, "Compute shadow rasteriser", "Receiver-driven pages"):
+// entries with kEntryFill write far depth and a white tint instead (pages nobody reads
+// this frame; pages.h). WRITE_DEPTH, the depth
 // scratch into an r32f atlas (a depth atlas is filled by copies instead); WRITE_COLOUR,
 // a tinted face's tint scratch into the rgba8 colour map. A record's info.y says where
 // its depth is in the scratch, info.w - 1 its tint slot (0: untinted).
@@ -32,10 +34,16 @@ layout(binding = kRasterColour, rgba8) uniform writeonly image2DArray colour;
 #endif
 
 void main() {
-  RasterFace face = faces[records[face_first + gl_GlobalInvocationID.z]];
+  uint entry = records[face_first + gl_GlobalInvocationID.z];
+  RasterFace face = faces[entry & 0xFFFFu];
   uint size = face.info.z;
-  uvec2 p = gl_GlobalInvocationID.xy;
+  uint page = (entry & ~kEntryFill) >> kEntryPageShift;
+  bool fill = (entry & kEntryFill) != 0u;
+  uint pages_x = (size + (1u << kRasterRegionShift) - 1u) >> kRasterRegionShift;
+  uvec2 p =
+      uvec2(page % pages_x, page / pages_x) * (1u << kRasterRegionShift) + gl_GlobalInvocationID.xy;
   if (p.x >= size || p.y >= size) return;
+  if (any(greaterThanEqual(gl_GlobalInvocationID.xy, uvec2(1u << kRasterRegionShift)))) return;
   // Its square at its place (shadow_data.h, ShadowFace.info.y).
   uint place = face.info.x;
   uint cell_mask = (1u << ANTUMBRA_FACE_CELL_BITS) - 1u;
@@ -45,11 +53,17 @@ void main() {
   ivec3 texel = ivec3(ivec2(cell * size + p), int(layer));
 #ifdef WRITE_DEPTH
   uint at = face.info.y + p.y * size + p.x;
-  imageStore(atlas, texel, vec4(uintBitsToFloat(depth[at])));
-  if (reset_scratch != 0u) depth[at] = kRasterClearDepth;  // clean for the next chunk
+  if (fill) {
+    imageStore(atlas, texel, vec4(uintBitsToFloat(kRasterClearDepth)));
+  } else {
+    imageStore(atlas, texel, vec4(uintBitsToFloat(depth[at])));
+    if (reset_scratch != 0u) depth[at] = kRasterClearDepth;  // clean for the next chunk
+  }
 #endif
 #ifdef WRITE_COLOUR
-  if (face.info.w > 0u) {
+  if (face.info.w > 0u && fill) {
+    imageStore(colour, texel, unpackUnorm4x8(kRasterClearTint));
+  } else if (face.info.w > 0u) {
     uint slot = (face.info.w - 1u) * floatBitsToUint(face.params.w) + p.y * size + p.x;
     imageStore(colour, texel, unpackUnorm4x8(tint[slot]));
     if (reset_scratch != 0u) tint[slot] = kRasterClearTint;

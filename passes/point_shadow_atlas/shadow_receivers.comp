@@ -5,11 +5,13 @@
 #include "../common/shadow_sampling.glsl"
 #include "face_decision_interface.h"
 
-// Marks every shadow face some visible pixel needs (docs/technique.md, "Receiver-driven
-// faces"). One workgroup per tile of the G-buffer depth: the tile's world-space box
-// first picks the lights whose range reaches it, then each pixel adds the faces its
-// direction from each of those lights falls in (with kReceiverMargin), and the tile
-// writes each face once.
+// Marks every page of a shadow face some visible pixel needs (docs/technique.md,
+// "Receiver-driven faces" and "Receiver-driven pages"). One workgroup per tile of the
+// G-buffer depth: the tile's world-space box first picks the lights whose range reaches
+// it, then each pixel adds the faces its direction from each of those lights falls in
+// (with kReceiverMargin) and, in each, the columns and rows of the pages within
+// page_margin texels of where it falls; the tile writes each face's pages once (the
+// columns times the rows it gathered: a superset of the pixels' own pages).
 
 layout(local_size_x = kReceiverGroup) in;
 
@@ -33,7 +35,9 @@ shared uint s_hi[3];
 shared uint s_any;
 shared uint s_count;
 shared uint s_lights[kReceiverGroup];
-shared uint s_bits[kReceiverGroup];
+// Per gathered light and face: bit c of s_cols, page column c is needed; s_rows, rows.
+shared uint s_cols[kReceiverGroup * 6u];
+shared uint s_rows[kReceiverGroup * 6u];
 
 // Floats as uints that sort like the floats (for atomicMin/atomicMax).
 uint ordered(float f) {
@@ -67,6 +71,58 @@ uint faces_of(ShadowLight l, vec3 p) {
   return bits;
 }
 
+// The light's face size in texels (per-light resolution, else the atlas's).
+uint face_texels(ShadowLight l) {
+  return l.projection.y > 0.0 ? uint(l.projection.y) : shadow_header.counts.z;
+}
+
+// Bits lo..hi (both < 32) set.
+uint bit_range(uint lo, uint hi) {
+  uint upper = hi >= 31u ? 0xFFFFFFFFu : (2u << hi) - 1u;
+  return upper & ~((1u << lo) - 1u);
+}
+
+// Adds the pages of face `f` (record `record`, `size` texels) a lookup from `p` may read
+// to gathered slot `slot`: those within page_margin texels of where it falls, plus the
+// reach of the blocker searches, which grows with the light's size over the receiver's
+// distance (penumbra_common.glsl: search radius light size / (distance * projection.x)
+// in face uv; the moments' search is half the light's size: max(1 / z, 0.5)), times
+// page_reach and at most a quarter of the face (their cap). A point in a neighbouring
+// face's margin falls just outside it: clamped to its edge.
+void add_pages(uint slot, uint f, uint record, ShadowLight l, float size, vec3 p) {
+  vec4 clip = shadow_faces[record].view_proj * vec4(p, 1.0);
+  float z = max(clip.w, 1e-6);
+  vec2 texel = (clip.xy / z * 0.5 + 0.5) * size;
+  float search = page_reach * l.params.x / max(l.projection.x, 1e-6) * max(1.0 / z, 0.5);
+  float reach = page_margin + min(search, 0.25) * size;
+  uvec2 lo = uvec2(clamp(texel - reach, vec2(0.0), vec2(size - 1.0))) >> kPageShift;
+  uvec2 hi = uvec2(clamp(texel + reach, vec2(0.0), vec2(size - 1.0))) >> kPageShift;
+  uint cols = bit_range(lo.x, hi.x);
+  uint rows = bit_range(lo.y, hi.y);
+  uint at = slot * 6u + f;
+  if ((s_cols[at] & cols) != cols) atomicOr(s_cols[at], cols);
+  if ((s_rows[at] & rows) != rows) atomicOr(s_rows[at], rows);
+}
+
+// Sets page bits rows x cols of layer `record`'s needed bits.
+void write_pages(uint record, uint pages_x, uint cols, uint rows) {
+  uint base = record * page_words;
+  for (uint r = 0u; r < pages_x; ++r) {
+    if ((rows & (1u << r)) == 0u) continue;
+    uint first = r * pages_x;
+    if ((first & 31u) + pages_x <= 32u) {
+      // The row's bits in one word (always for power-of-two faces).
+      atomicOr(needed[base + (first >> 5u)], cols << (first & 31u));
+      continue;
+    }
+    for (uint c = 0u; c < pages_x; ++c) {
+      if ((cols & (1u << c)) == 0u) continue;
+      uint k = first + c;
+      atomicOr(needed[base + (k >> 5u)], 1u << (k & 31u));
+    }
+  }
+}
+
 // Whether light `l`'s range reaches the box [lo, hi].
 bool reaches(ShadowLight l, vec3 lo, vec3 hi) {
   if (l.params.z < 0.0) return false;  // no faces
@@ -74,6 +130,47 @@ bool reaches(ShadowLight l, vec3 lo, vec3 hi) {
   vec3 c = clamp(l.position_range.xyz, lo, hi) - l.position_range.xyz;
   float reach = l.position_range.w * (1.0 + kReceiverMargin);
   return dot(c, c) <= reach * reach;
+}
+
+// Adds the pages pixel `p` needs of each of the n gathered lights' faces.
+void gather(uint n, vec3 p) {
+  for (uint k = 0u; k < n; ++k) {
+    ShadowLight l = shadow_lights[s_lights[k]];
+    uint bits = faces_of(l, p);
+    if (bits == 0u) continue;
+    if (l.direction_type.w > 1.5) {
+      // The sun's cascades: needed whole, as every cascade is.
+      for (uint f = 0u; f < 6u; ++f) {
+        if ((bits & (1u << f)) != 0u && s_cols[k * 6u + f] == 0u) s_cols[k * 6u + f] = 1u;
+      }
+      continue;
+    }
+    uint first = uint(l.params.z);
+    float size = float(face_texels(l));
+    for (uint f = 0u; f < 6u; ++f) {
+      if ((bits & (1u << f)) != 0u) add_pages(k, f, first + f, l, size, p);
+    }
+  }
+}
+
+// Writes gathered light t's pages (the columns times the rows) into its faces' bits.
+void publish(uint t) {
+  ShadowLight l = shadow_lights[s_lights[t]];
+  uint first = uint(l.params.z);
+  uint pages_x = (face_texels(l) + kPageSize - 1u) >> kPageShift;
+  // Faces over 32 pages a side (past 4096 texels) are needed whole: the masks hold 32.
+  bool whole = l.direction_type.w > 1.5 || pages_x > 32u;
+  pages_x = min(pages_x, 32u);
+  uint all_pages = bit_range(0u, pages_x - 1u);
+  for (uint f = 0u; f < 6u; ++f) {
+    uint cols = s_cols[t * 6u + f];
+    if (cols == 0u || first + f >= layers) continue;
+    if (whole) {
+      for (uint w = 0u; w < page_words; ++w) needed[(first + f) * page_words + w] = ~0u;
+      continue;
+    }
+    write_pages(first + f, pages_x, cols & all_pages, s_rows[t * 6u + f] & all_pages);
+  }
 }
 
 void main() {
@@ -114,25 +211,16 @@ void main() {
     if (i < light_count && reaches(shadow_lights[i], lo, hi)) {
       uint slot = atomicAdd(s_count, 1u);
       s_lights[slot] = i;
-      s_bits[slot] = 0u;
+      for (uint f = 0u; f < 6u; ++f) {
+        s_cols[slot * 6u + f] = 0u;
+        s_rows[slot * 6u + f] = 0u;
+      }
     }
     barrier();
     uint n = s_count;
-    if (geometry) {
-      for (uint k = 0u; k < n; ++k) {
-        uint bits = faces_of(shadow_lights[s_lights[k]], p);
-        if (bits != 0u) atomicOr(s_bits[k], bits);
-      }
-    }
+    if (geometry) gather(n, p);
     barrier();
-    if (t < n && s_bits[t] != 0u) {
-      ShadowLight l = shadow_lights[s_lights[t]];
-      uint first = uint(l.params.z);
-      uint bits = s_bits[t];
-      for (uint f = 0u; f < 6u; ++f) {
-        if ((bits & (1u << f)) != 0u && first + f < layers) atomicOr(needed[first + f], 1u);
-      }
-    }
+    if (t < n) publish(t);
     barrier();
   }
 }

@@ -42,6 +42,7 @@
 #include "penumbra_wedges/penumbra_wedges_interface.h"
 #include "point_shadow_atlas/compute_raster_interface.h"
 #include "point_shadow_atlas/face_decision_interface.h"
+#include "point_shadow_atlas/pages.h"
 #include "point_shadow_atlas/point_shadow_atlas_interface.h"
 #include "scene_sdf/scene_sdf_interface.h"
 #include "shader_reflection.hpp"
@@ -81,6 +82,7 @@ const std::vector<std::string> kHeaders{
     "penumbra_wedges/penumbra_wedges_interface.h",
     "point_shadow_atlas/compute_raster_interface.h",
     "point_shadow_atlas/face_decision_interface.h",
+    "point_shadow_atlas/pages.h",
     "point_shadow_atlas/point_shadow_atlas_interface.h",
     "scene_sdf/scene_sdf_interface.h",
     "shadow_min_filter/shadow_min_filter_interface.h",
@@ -322,6 +324,16 @@ const std::vector<BindingCase>& binding_cases() {
        {},
        "min_out",
        shared::kMinOutput},
+      {"point_shadow_atlas/compute_raster_interface.h",
+       "point_shadow_atlas/shadow_cull.comp",
+       {},
+       "Pages",
+       shared::kRasterPages},
+      {"point_shadow_atlas/face_decision_interface.h",
+       "point_shadow_atlas/shadow_face_decide.comp",
+       {},
+       "Pages",
+       shared::kDecidePages},
       {"point_shadow_atlas/point_shadow_atlas_interface.h",
        "point_shadow_atlas/shadow_atlas.vert",
        {},

@@ -91,6 +91,28 @@ class AtlasGpuTest : public gpu::testing::GpuTest {
     }
     load_desc(graph.value());
   }
+  // Graph `file` with its point-shadow-atlas on the compute rasteriser, `params` over its
+  // own, an r32f atlas (and colour map) of `face` texels, the min map at its factor (8),
+  // and `receivers`: the G-buffer depth bound (receiver culling).
+  void load_compute(const char* file, std::uint32_t face, const base::Json& params,
+                    bool receivers) {
+    auto document = base::load_json_file((source_dir() / file).string());
+    ASSERT_TRUE(document.ok());
+    auto graph = fg::parse_graph(document.value());
+    ASSERT_TRUE(graph.ok());
+    for (auto& r : graph.value().resources) {
+      if (r.name == "atlas") r.format = fg::Format::r32f;
+      if (r.name == "atlas" || r.name == "shadowColour") r.size = {false, 1.0, 1.0, face, face};
+      if (r.name == "minDepth") r.size = {false, 1.0, 1.0, face / 8, face / 8};
+    }
+    for (auto& p : graph.value().passes) {
+      if (p.type != "point-shadow-atlas") continue;
+      p.params["rasterizer"] = "compute";
+      p.params.update(params);
+      if (receivers) p.inputs.push_back({"depth", "depth", p.pointer + "/in/depth"});
+    }
+    load_desc(graph.value());
+  }
   // Compiles a graph at kViewport and runs it on the executor with the fixture's scene.
   void load_desc(const fg::GraphDesc& graph) {
     fg::CompileOptions compile_options;
@@ -117,6 +139,26 @@ class AtlasGpuTest : public gpu::testing::GpuTest {
            m.details["layered"].get<bool>()};
     }
     return c;
+  }
+
+  // One frame, then the details of its SHD010 note once the GPU is done (Pass::collect
+  // replaces the recorded counts with the GPU's); an empty object without one.
+  base::Json face_stats_frame() {
+    frame();
+    frames_->wait_all();
+    executor_->collect(report_);
+    base::Json details = base::Json::object();
+    for (const auto& m : report_.messages()) {
+      if (m.code == "SHD010") details = m.details;
+    }
+    return details;
+  }
+
+  // The lit frame (rgba16f hdr), as raw half floats.
+  std::vector<std::uint16_t> read_hdr() {
+    std::vector<std::uint16_t> out(std::size_t{kViewport.width} * kViewport.height * 4);
+    read_raw("hdr", VK_IMAGE_ASPECT_COLOR_BIT, 0, kViewport, 8, out.data());
+    return out;
   }
 
   // Runs tests/shadows/sampling_check.comp over `points` with the shadowData contents `data`.

@@ -74,12 +74,6 @@ class DynamicCastersGpuTest : public AtlasGpuTest {
     return c;
   }
 
-  std::vector<std::uint16_t> read_hdr() {
-    std::vector<std::uint16_t> out(std::size_t{kViewport.width} * kViewport.height * 4);
-    read_raw("hdr", VK_IMAGE_ASPECT_COLOR_BIT, 0, kViewport, 8, out.data());
-    return out;
-  }
-
   static scene::Scene crate_scene() {
     auto parsed = scene::parse_scene_text(kCrateScene, "crate.json");
     if (!parsed.ok()) throw std::runtime_error(parsed.diagnostics().to_text());

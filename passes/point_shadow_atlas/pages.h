@@ -1,0 +1,34 @@
+// Pages of the compute rasteriser's faces, shared by the face decision
+// (face_decision_interface.h) and the rasteriser (compute_raster_interface.h), valid GLSL
+// and C++ (docs/technique.md, "Receiver-driven pages").
+#ifndef ANTUMBRA_PAGES_H
+#define ANTUMBRA_PAGES_H
+
+#include "../interface/shared/glsl_cpp.h"
+
+ANTUMBRA_SHARED_BEGIN
+
+// Pages (docs/technique.md, "Receiver-driven pages"): a face is drawn in square pages of
+// kPageSize texels (its last row and column of pages cut at its edge; one page for a face
+// no larger), the compute rasteriser's screen regions (compute_raster_interface.h), and
+// only the pages some visible pixel may read are drawn. A pixel needs every page within
+// kPageMargin texels of where it falls in a face (the PCF and PCSS kernels, the derived
+// maps' filters) plus the blocker searches' reach, which grows with the light's size
+// (shadow_receivers.comp). When a face is drawn, its pages nobody needs that hold an
+// older epoch are filled with far depth, so a lookup reaching past the needed pages
+// reads "no blocker", never another frame's or another face's depth. Each record keeps a
+// bit per page (`page_words` uints) of what is needed, then of what is drawn, and an
+// epoch per page of what the page holds (kPageFilled set: far depth, filled at that
+// epoch).
+const uint kPageFilled = 0x80000000u;
+// A page-list entry: its record | page << kEntryPageShift, kEntryFill set to fill the page
+// with far depth (and a white tint) instead of resolving the scratch.
+const uint kEntryPageShift = 16;
+const uint kEntryFill = 0x80000000u;
+const uint kPageShift = 7;
+const uint kPageSize = 128;  // 1 << kPageShift
+const float kPageMargin = 64.0;
+
+ANTUMBRA_SHARED_END
+
+#endif
