@@ -210,7 +210,8 @@ void add_face_choice_params(fg::ParamTable<PointShadowAtlasParams>& table) {
                 "With receiverPages: the blocker-search scale the drawn pages cover around "
                 "each visible pixel, in units of the light's size over its distance (the "
                 "searches of layered-penumbra and the moment lookups at searchScale x "
-                "lightSizeScale 1). Larger values draw more pages."},
+                "lightSizeScale 1; set it to at least their product). Larger values draw "
+                "more pages."},
            &PointShadowAtlasParams::page_reach)
       .choice(
           {.name = "resolution",
