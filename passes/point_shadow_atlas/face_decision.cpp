@@ -101,7 +101,10 @@ void FaceDecision::ensure_buffers(fgvk::ExecuteContext& context, std::uint32_t l
     page_slots_ = slots;
     shadow_in_ = storage(context, shadow_data_bytes(layers), 0, ".decisionShadowData");
     needed_ = storage(context, VkDeviceSize{layers} * words * 4, 0, ".neededPages");
-    content_ = storage(context, VkDeviceSize{layers} * slots * 4, 0, ".pageEpochs");
+    // Per layer: the epoch its pages' bits refer to, the bits of pages holding it, the bits
+    // of pages filled with far depth at it (shadow_face_decide.comp).
+    content_ = storage(context, VkDeviceSize{layers} * (1 + 2 * VkDeviceSize{words}) * 4, 0,
+                       ".pageContent");
     content_cleared_ = false;
     drawn_capacity_ = 0;
   }

@@ -3,9 +3,9 @@
 // faces" and "Receiver-driven pages"): copies the frame's shadow data in, optionally marks
 // the pages of faces a visible pixel needs (shadow_receivers.comp, from the G-buffer
 // depth), then decides per layer which pages are drawn and publishes the graph's
-// shadowData (shadow_face_decide.comp). It keeps, per page, the epoch of what the page
-// holds, so a page skipped for lack of receivers is drawn the first frame a receiver
-// appears, and never shown stale. Counters come back
+// shadowData (shadow_face_decide.comp). It keeps, per layer, the epoch its pages refer to
+// and which of them hold it, so a page skipped for lack of receivers is drawn the first
+// frame a receiver appears, and never shown stale. Counters come back
 // through a per-slot readback buffer. Every barrier here is on its own buffers.
 
 #include <array>
@@ -118,7 +118,7 @@ class FaceDecision {
   std::uint32_t args_capacity_ = 0;
   gpu::Buffer shadow_in_;  // device copy of the staging data (read by every tile)
   gpu::Buffer needed_;     // page bits per layer
-  gpu::Buffer content_;    // page_slots uints per layer: the epoch each page holds
+  gpu::Buffer content_;    // per layer: what its pages hold (shadow_face_decide.comp)
   gpu::Buffer drawn_;      // page bits per drawn record
   std::uint32_t page_words_ = 1;
   std::uint32_t page_slots_ = 1;

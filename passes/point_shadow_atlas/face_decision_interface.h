@@ -51,7 +51,7 @@ ANTUMBRA_PUSH_CONSTANTS(DecisionPush) {
   uint resolve_group;  // the resolve's workgroup side: a chunk's dispatch covers its largest face
   uint copy_vec4s;     // of those, the header and the lights frames have had: copied as is
   uint page_words;     // uints of page bits per record (needed, drawn)
-  uint page_slots;     // pages per record in the content epochs and the page lists
+  uint page_slots;     // pages a record has room for in the page lists
   uint page_culling;   // 1: only the needed pages of a needed face; 0: all of its pages
   float page_margin;   // texels around a pixel's lookup whose pages it needs
   float page_reach;    // the blocker searches' scale of the light's size the pages cover
@@ -62,7 +62,8 @@ ANTUMBRA_BINDING(kDecideShadowOut, 1)  // the graph's shadowData (info.z/w decid
 ANTUMBRA_BINDING(kDecideRequests, 2)   // FaceRequest per layer
 // page_words uints per layer: bit k, a visible pixel needs page k (shadow_receivers.comp)
 ANTUMBRA_BINDING(kDecideNeeded, 3)
-ANTUMBRA_BINDING(kDecideContent, 4)  // page_slots uints per layer: the epoch each page holds
+// 1 + 2 page_words uints per layer: what its pages hold (shadow_face_decide.comp)
+ANTUMBRA_BINDING(kDecideContent, 4)
 // page_words uints per drawn record (RasterFace index): bit k, page k is drawn this frame
 // (read by shadow_cull.comp as kRasterPages)
 ANTUMBRA_BINDING(kDecidePages, 5)

@@ -17,10 +17,9 @@ ANTUMBRA_SHARED_BEGIN
 // (shadow_receivers.comp). When a face is drawn, its pages nobody needs that hold an
 // older epoch are filled with far depth, so a lookup reaching past the needed pages
 // reads "no blocker", never another frame's or another face's depth. Each record keeps a
-// bit per page (`page_words` uints) of what is needed, then of what is drawn, and an
-// epoch per page of what the page holds (kPageFilled set: far depth, filled at that
-// epoch).
-const uint kPageFilled = 0x80000000u;
+// bit per page (`page_words` uints) of what is needed, then of what is drawn, and what its
+// pages hold: the epoch they refer to, a bit per page holding that epoch's depth and one
+// per page filled with far depth at it (shadow_face_decide.comp).
 // A page-list entry: its record | page << kEntryPageShift, kEntryFill set to fill the page
 // with far depth (and a white tint) instead of resolving the scratch.
 const uint kEntryPageShift = 16;

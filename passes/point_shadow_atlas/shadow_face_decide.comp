@@ -47,15 +47,19 @@ layout(std430, binding = kDecideStats) buffer Stats {
 
 const uint kFaceVec4s = ANTUMBRA_SHADOW_FACE_VEC4S;  // ShadowFace: mat4 view_proj, uvec4 info
 
-bool page_needed(uint layer, uint k) {
-  return (needed[layer * page_words + (k >> 5u)] & (1u << (k & 31u))) != 0u;
-}
-
 // Texels of page k of a face `size` texels wide (pages at its edge are cut).
 uint page_texels(uint k, uint pages_x, uint size) {
   uvec2 origin = uvec2(k % pages_x, k / pages_x) * kPageSize;
   uvec2 side = min(uvec2(size) - origin, uvec2(kPageSize));
   return side.x * side.y;
+}
+
+// What a layer's pages hold (content[], content_uints() per layer): the epoch the bits
+// refer to, then per word of pages the bits of pages holding that epoch's depth
+// ("current"), then those filled with far depth at it. A new epoch makes every page
+// stale at once: epochs are never reused.
+uint content_base(uint layer) {
+  return layer * (1u + 2u * page_words);
 }
 
 // This invocation's layer, its request and its pages.
@@ -65,13 +69,32 @@ uint g_pages_x;
 uint g_pages;
 bool g_any_needed;  // a visible pixel needs some page (or receivers is 0)
 bool g_whole;       // a needed face needs every page
+bool g_held;        // the content bits refer to the request's epoch
 
-bool needs(uint k) {
-  return g_any_needed && (g_whole || page_needed(g_layer, k));
+// Bits of the face's pages in word w.
+uint valid_bits(uint w) {
+  uint first = w * 32u;
+  if (first >= g_pages) return 0u;
+  uint n = min(g_pages - first, 32u);
+  return n == 32u ? 0xFFFFFFFFu : (1u << n) - 1u;
 }
 
-// What this frame draws and fills of a candidate's pages, and whether the pages anyone
-// reads (the needed ones, all when none is) hold the face's epoch without drawing.
+uint needed_bits(uint w) {
+  if (!g_any_needed) return 0u;
+  return g_whole ? valid_bits(w) : needed[g_layer * page_words + w] & valid_bits(w);
+}
+
+uint current_bits(uint w) {
+  return g_held ? content[content_base(g_layer) + 1u + w] : 0u;
+}
+
+uint filled_bits(uint w) {
+  return g_held ? content[content_base(g_layer) + 1u + page_words + w] : 0u;
+}
+
+// What this frame draws and fills of a candidate's pages (bits per word, counted), and
+// whether the pages anyone reads (the needed ones, all when none is) hold the face's
+// epoch before drawing.
 struct Survey {
   uint drawn;
   uint filled;
@@ -81,18 +104,31 @@ struct Survey {
 
 Survey survey(bool candidate) {
   Survey r = Survey(0u, 0u, 0u, true);
-  uint filled_epoch = g_request.epoch | kPageFilled;
-  for (uint k = 0u; k < g_pages; ++k) {
-    bool need = needs(k);
-    uint held = content[g_layer * page_slots + k];
-    bool current = held == g_request.epoch;
-    if (candidate && need && !current) {
-      ++r.drawn;
-      r.texels += page_texels(k, g_pages_x, g_request.size);
-    } else if ((need || !g_any_needed) && !current) {
-      r.read_current = false;
+  for (uint w = 0u; w < page_words; ++w) {
+    uint need = needed_bits(w);
+    uint current = current_bits(w);
+    uint read = g_any_needed ? need : valid_bits(w);
+    if ((read & ~current) != 0u && !candidate) r.read_current = false;
+    if (!candidate) continue;
+    uint draw = need & ~current;
+    r.drawn += uint(bitCount(draw));
+    r.filled += uint(bitCount(valid_bits(w) & ~need & ~current & ~filled_bits(w)));
+    if (g_request.size % kPageSize == 0u || g_pages == 1u) {
+      uint side = min(g_request.size, kPageSize);
+      r.texels += uint(bitCount(draw)) * side * side;
+      continue;
     }
-    if (candidate && !need && !current && held != filled_epoch) ++r.filled;
+    for (uint bits = draw; bits != 0u; bits &= bits - 1u) {
+      r.texels += page_texels(w * 32u + uint(findLSB(bits)), g_pages_x, g_request.size);
+    }
+  }
+  // A candidate draws every needed page it lacks: afterwards they all hold its epoch.
+  if (candidate && r.drawn > 0u) r.read_current = true;
+  if (candidate && r.drawn == 0u) {
+    for (uint w = 0u; w < page_words; ++w) {
+      uint read = g_any_needed ? needed_bits(w) : valid_bits(w);
+      if ((read & ~current_bits(w)) != 0u) r.read_current = false;
+    }
   }
   // Only a face drawn now changes what its other pages mean.
   if (r.drawn == 0u) r.filled = 0u;
@@ -100,7 +136,7 @@ Survey survey(bool candidate) {
 }
 
 // Lists candidate `record` for its chunk's cull and its drawn and filled pages for the
-// chunk's resolve, with their bits (kDecidePages) and their new epochs.
+// chunk's resolve, with their bits (kDecidePages) and what its pages now hold.
 void draw_pages(uint record, Survey r) {
   uint chunk = record / chunk_faces;
   uint groups = (min(g_request.size, kPageSize) + resolve_group - 1u) / resolve_group;
@@ -110,43 +146,44 @@ void draw_pages(uint record, Survey r) {
   list[chunk * chunk_faces + slot] = record;
   uint page_list = chunks * chunk_faces + chunk * chunk_faces * page_slots;
   uint at = page_list + atomicAdd(args[2u * chunk].z, r.drawn + r.filled);
-  uint filled_epoch = g_request.epoch | kPageFilled;
+  uint base = content_base(g_layer);
   for (uint w = 0u; w < page_words; ++w) {
-    uint bits = 0u;
-    for (uint b = 0u; b < 32u; ++b) {
-      uint k = w * 32u + b;
-      if (k >= g_pages) break;
-      uint held = content[g_layer * page_slots + k];
-      if (held == g_request.epoch) continue;
-      if (needs(k)) {
-        bits |= 1u << b;
-        content[g_layer * page_slots + k] = g_request.epoch;
-        list[at++] = record | (k << kEntryPageShift);
-      } else if (held != filled_epoch) {
-        // Nobody reads it now: far depth, not an older frame's or another face's.
-        content[g_layer * page_slots + k] = filled_epoch;
-        list[at++] = record | (k << kEntryPageShift) | kEntryFill;
-      }
+    uint need = needed_bits(w);
+    uint current = current_bits(w);
+    uint filled = filled_bits(w);
+    uint draw = need & ~current;
+    // Nobody reads these now: far depth, not an older frame's or another face's.
+    uint fill = valid_bits(w) & ~need & ~current & ~filled;
+    for (uint bits = draw; bits != 0u; bits &= bits - 1u) {
+      list[at++] = record | ((w * 32u + uint(findLSB(bits))) << kEntryPageShift);
     }
-    drawn_pages[record * page_words + w] = bits;
+    for (uint bits = fill; bits != 0u; bits &= bits - 1u) {
+      list[at++] = record | ((w * 32u + uint(findLSB(bits))) << kEntryPageShift) | kEntryFill;
+    }
+    drawn_pages[record * page_words + w] = draw;
+    content[base + 1u + w] = current | draw;
+    content[base + 1u + page_words + w] = (filled | fill) & ~draw;
   }
+  content[base] = g_request.epoch;
   atomicAdd(stats[kStatDrawn], 1u);
   atomicAdd(stats[kStatTexels], r.texels);
   atomicAdd(stats[kStatPages], r.drawn);
 }
 
-// Unknown contents (a new image, every epoch cleared to 0): far depth in the pages neither
-// drawn nor filled just now, so no lookup reads undefined texels.
+// Unknown contents (a new image, every layer's content cleared): far depth in the pages
+// neither drawn nor filled just now, so no lookup reads undefined texels.
 void fill_unknown(Survey r) {
   uint fill = g_pages - r.drawn - r.filled;
   uint fill_list = chunks * chunk_faces * (1u + page_slots);
   uint at = fill_list + atomicAdd(args[2u * chunks].z, fill);
-  uint filled_epoch = g_request.epoch | kPageFilled;
-  for (uint k = 0u; k < g_pages && fill > 0u; ++k) {
-    uint held = content[g_layer * page_slots + k];
-    bool now = held == g_request.epoch || held == filled_epoch;
-    if (r.drawn > 0u && now) continue;
-    list[at++] = (fill_first - 1u + g_layer) | (k << kEntryPageShift);
+  uint base = content_base(g_layer);
+  bool now = r.drawn > 0u;  // draw_pages wrote what the pages hold this frame
+  for (uint w = 0u; w < page_words; ++w) {
+    uint done = now ? content[base + 1u + w] | content[base + 1u + page_words + w] : 0u;
+    for (uint bits = valid_bits(w) & ~done; bits != 0u; bits &= bits - 1u) {
+      list[at++] =
+          (fill_first - 1u + g_layer) | ((w * 32u + uint(findLSB(bits))) << kEntryPageShift);
+    }
   }
 }
 
@@ -163,6 +200,7 @@ void main() {
   bool candidate = owned && g_request.record != 0u;
   g_pages_x = (g_request.size + kPageSize - 1u) >> kPageShift;
   g_pages = min(g_pages_x * g_pages_x, page_slots);
+  g_held = content[content_base(i)] == g_request.epoch;
   g_any_needed = receivers == 0u;
   for (uint w = 0u; w < page_words && !g_any_needed; ++w) {
     g_any_needed = needed[i * page_words + w] != 0u;

@@ -111,8 +111,11 @@ void write_pages(uint record, uint pages_x, uint cols, uint rows) {
     if ((rows & (1u << r)) == 0u) continue;
     uint first = r * pages_x;
     if ((first & 31u) + pages_x <= 32u) {
-      // The row's bits in one word (always for power-of-two faces).
-      atomicOr(needed[base + (first >> 5u)], cols << (first & 31u));
+      // The row's bits in one word (always for power-of-two faces); many tiles mark the
+      // same pages, so the atomic only where a bit is missing.
+      uint at = base + (first >> 5u);
+      uint bits = cols << (first & 31u);
+      if ((needed[at] & bits) != bits) atomicOr(needed[at], bits);
       continue;
     }
     for (uint c = 0u; c < pages_x; ++c) {
@@ -146,9 +149,15 @@ void gather(uint n, vec3 p) {
       continue;
     }
     uint first = uint(l.params.z);
-    float size = float(face_texels(l));
+    uint texels = face_texels(l);
     for (uint f = 0u; f < 6u; ++f) {
-      if ((bits & (1u << f)) != 0u) add_pages(k, f, first + f, l, size, p);
+      if ((bits & (1u << f)) == 0u) continue;
+      if (texels <= kPageSize) {
+        // One page: no projection needed.
+        if (s_cols[k * 6u + f] == 0u) s_cols[k * 6u + f] = s_rows[k * 6u + f] = 1u;
+      } else {
+        add_pages(k, f, first + f, l, float(texels), p);
+      }
     }
   }
 }

@@ -29,8 +29,11 @@ class ReceiverPagesGpuTest : public AtlasGpuTest {
  protected:
   // `file` on the compute rasteriser with an r32f atlas of kPagedFace texels, the G-buffer
   // depth bound (receiver culling), and receiverPages as given.
-  void load_paged(bool pages, const char* file = "data/graphs/hard.json", double reach = 1.0) {
-    load_compute(file, kPagedFace, {{"receiverPages", pages}, {"pageReach", reach}}, true);
+  void load_paged(bool pages, const char* file = "data/graphs/hard.json", double reach = 1.0,
+                  const char* resolution = "fixed") {
+    load_compute(file, kPagedFace,
+                 {{"receiverPages", pages}, {"pageReach", reach}, {"resolution", resolution}},
+                 true);
   }
 
   PageCounts counted_frame() {
@@ -93,6 +96,24 @@ TEST_F(ReceiverPagesGpuTest, DrawsFewerPagesAndLightsTheSame) {
     std::printf("%s: %u of %u pages drawn\n", graph, paged.pages, whole.pages);
     EXPECT_EQ(read_hdr(), expected) << graph << ": no needed page missing";
   }
+}
+
+// Per-light resolution: from the atrium's camera at this size most lights get faces of
+// one page (128 texels or less), which the receivers mark without projecting; the image
+// is still the one whole faces give.
+TEST_F(ReceiverPagesGpuTest, SmallFacesLightTheSame) {
+  const char* graph = "data/graphs/layered-ssss.json";
+  load_paged(false, graph, 1.0, "screen");
+  const PageCounts whole = counted_frame();
+  const auto expected = read_hdr();
+  load_paged(true, graph, 1.0, "screen");
+  const PageCounts paged = counted_frame();
+  EXPECT_EQ(paged.rendered, whole.rendered);
+  EXPECT_LE(paged.pages, whole.pages);
+  EXPECT_GE(paged.pages, paged.rendered) << "a drawn face draws a page at least";
+  EXPECT_LT(paged.texels, std::uint64_t{paged.rendered} * kPage * kPage)
+      << "faces smaller than a page";
+  EXPECT_EQ(read_hdr(), expected);
 }
 
 // l05 moves down and back, seen from above: its faces change, and only the pages visible pixels
