@@ -52,11 +52,6 @@ uint page_drawn(uint base, uint page) {
   return (drawn_pages[base + (page >> 5u)] >> (page & 31u)) & 1u;
 }
 
-// page_drawn from `word` (the record's first word of bits, read once) when `one_word`.
-uint drawn_at(uint base, uint word, bool one_word, uint page) {
-  return one_word ? (word >> page) & 1u : page_drawn(base, page);
-}
-
 bool sphere_outside(vec4 plane, vec4 sphere) {
   float len = length(plane.xyz);
   return len > 0.0 && dot(plane.xyz, sphere.xyz) + plane.w < -sphere.w * len;
@@ -82,14 +77,9 @@ void emit_items(uint c, uint f, uint list, vec2 lo, vec2 hi, bool small, uint si
   // Only the regions whose pages are drawn: the items write nothing else, so the resolve
   // reads (and cleans) only the drawn pages' scratch.
   uint page_base = (face_first + f) * page_words;
-  // Faces of up to 32 pages (5 x 5 and less) have their bits in one word: read it once.
-  bool one_word = regions_x * regions_x <= 32u;
-  uint word = one_word ? drawn_pages[page_base] : 0u;
   uint drawn = 0u;
   for (uint ry = r0.y; ry <= r1.y; ++ry) {
-    for (uint rx = r0.x; rx <= r1.x; ++rx) {
-      drawn += drawn_at(page_base, word, one_word, ry * regions_x + rx);
-    }
+    for (uint rx = r0.x; rx <= r1.x; ++rx) drawn += page_drawn(page_base, ry * regions_x + rx);
   }
   if (drawn == 0u) return;
   // A small cluster whose pages are all drawn is one item over the whole face: its
@@ -111,7 +101,7 @@ void emit_items(uint c, uint f, uint list, vec2 lo, vec2 hi, bool small, uint si
   for (uint ry = r0.y; ry <= r1.y; ++ry) {
     for (uint rx = r0.x; rx <= r1.x; ++rx) {
       uint region = ry * regions_x + rx;
-      if (drawn_at(page_base, word, one_word, region) == 0u) continue;
+      if (page_drawn(page_base, region) == 0u) continue;
       items[base + first + k] = uvec2(c, f | (region << 16));
       ++k;
     }
