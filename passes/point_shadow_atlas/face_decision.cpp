@@ -1,6 +1,7 @@
 #include "face_decision.hpp"
 
 #include <algorithm>
+#include <cassert>
 #include <cstring>
 #include <initializer_list>
 
@@ -13,6 +14,7 @@
 #include "common/shadow_data.hpp"
 #include "compute_raster_interface.h"
 #include "face_decision_interface.h"
+#include "shared/limits.h"
 
 namespace antumbra::passes {
 namespace {
@@ -20,6 +22,14 @@ namespace {
 // A page is a rasteriser region: the cull makes a page's items from its region.
 static_assert(shared::kPageShift == shared::kRasterRegionShift);
 static_assert(shared::kPageSize == 1u << shared::kPageShift);
+// A page-list entry holds its record (a candidate, or a fill record past them: at most
+// two per face record, six per light) in 16 bits and its page in the 15 above (checked
+// against the atlas in ensure_buffers).
+static_assert(2 * 6 * shared::kMaxShadowLights <= 1u << shared::kEntryPageShift);
+constexpr std::uint32_t kMaxPagesPerFace = shared::kEntryFill >> shared::kEntryPageShift;
+constexpr std::uint32_t kMaxPagesPerSide =
+    (shared::kMaxPagedFace + shared::kPageSize - 1) / shared::kPageSize;
+static_assert(kMaxPagesPerSide * kMaxPagesPerSide <= kMaxPagesPerFace);
 
 gpu::DescriptorSetLayoutBuilder decision_bindings() {
   gpu::DescriptorSetLayoutBuilder b;
@@ -95,6 +105,8 @@ void FaceDecision::ensure_buffers(fgvk::ExecuteContext& context, std::uint32_t l
                                   const DecisionLayout& layout) {
   const std::uint32_t words = passes::page_words(layout.face_size);
   const std::uint32_t slots = passes::page_slots(layout.face_size);
+  // point_shadow_atlas_desc.cpp refuses larger atlas faces (SHD007).
+  assert(slots <= kMaxPagesPerFace);
   if (layers != layers_ || !content_ || words != page_words_ || slots != page_slots_) {
     layers_ = layers;
     page_words_ = words;
@@ -150,7 +162,8 @@ void FaceDecision::write_requests(Slot& slot, const AtlasFrame& frame,
     std::uint32_t side = layout.face_size;
     const std::uint32_t light = layer < frame.faces.size() ? frame.faces[layer].info.x : ~0u;
     if (light < frame.lights.size() && frame.lights[light].projection.y > 0.0f) {
-      side = static_cast<std::uint32_t>(frame.lights[light].projection.y);
+      // As the rasteriser and the receivers size it: at most the atlas's.
+      side = std::min(static_cast<std::uint32_t>(frame.lights[light].projection.y), side);
     }
     out[layer] = {layer < frame.epochs.size() ? frame.epochs[layer] : 0u, 0u, side * side, side};
   }

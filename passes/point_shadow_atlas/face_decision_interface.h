@@ -67,12 +67,15 @@ ANTUMBRA_BINDING(kDecideContent, 4)
 // page_words uints per drawn record (RasterFace index): bit k, page k is drawn this frame
 // (read by shadow_cull.comp as kRasterPages)
 ANTUMBRA_BINDING(kDecidePages, 5)
-// uvec4 pair per chunk: the resolve's dispatch (x, y: its largest drawn page, z: drawn
-// pages) then the cull's (x: cluster groups, y: drawn records, z: 1); then the fill's
-// resolve. A chunk's cull covers its drawn records only, its resolve its drawn pages.
+// uvec4 pair per chunk: the resolve's dispatch (x, y: its largest drawn page, z: drawn and
+// filled pages) then the cull's (x: cluster groups, y: drawn records, z: 1); then the
+// fill's resolve. A chunk's cull covers its drawn records only, its resolve its drawn and
+// filled pages.
 ANTUMBRA_BINDING(kDecideArgs, 6)
-// uint records drawn per chunk (the cull's rows); then the pages drawn per chunk and the
-// fill's pages (the resolve's entries: record | page << 16); face_decision.hpp's layout.
+// uint records drawn per chunk (the cull's rows); then the pages drawn or filled per chunk
+// and the fill's pages (the resolve's entries: record | page << kEntryPageShift, with
+// kEntryFill for a page filled with far depth; the fill list's records are the fill
+// records); face_decision.hpp's layout.
 ANTUMBRA_BINDING(kDecideList, 7)
 ANTUMBRA_BINDING(kDecideStats, 8)     // uint[kStatCount]
 ANTUMBRA_BINDING(kReceiverDepth, 9)   // the G-buffer depth (sampler2D)

@@ -12,21 +12,25 @@ ANTUMBRA_SHARED_BEGIN
 // kPageSize texels (its last row and column of pages cut at its edge; one page for a face
 // no larger), the compute rasteriser's screen regions (compute_raster_interface.h), and
 // only the pages some visible pixel may read are drawn. A pixel needs every page within
-// kPageMargin texels of where it falls in a face (the PCF and PCSS kernels, the derived
-// maps' filters) plus the blocker searches' reach, which grows with the light's size
-// (shadow_receivers.comp). When a face is drawn, its pages nobody needs that hold an
+// kPageMargin texels of where it falls in a face (the PCF and PCSS kernels; the derived
+// maps' filters: a min filter of radius 8 over texels 8 atlas texels wide reads up to
+// 8 x (8 + 1) = 72 away) plus the blocker searches' reach, which grows with the light's
+// size (shadow_receivers.comp). When a face is drawn, its pages nobody needs that hold an
 // older epoch are filled with far depth, so a lookup reaching past the needed pages
-// reads "no blocker", never another frame's or another face's depth. Each record keeps a
-// bit per page (`page_words` uints) of what is needed, then of what is drawn, and what its
-// pages hold: the epoch they refer to, a bit per page holding that epoch's depth and one
-// per page filled with far depth at it (shadow_face_decide.comp).
+// reads "no blocker", never another frame's or another face's depth. Each layer keeps a
+// bit per page (`page_words` uints) of what is needed and what its pages hold (the epoch
+// they refer to, a bit per page holding that epoch's depth and one per page filled with
+// far depth at it; shadow_face_decide.comp), and each drawn record a bit per page drawn.
 // A page-list entry: its record | page << kEntryPageShift, kEntryFill set to fill the page
 // with far depth (and a white tint) instead of resolving the scratch.
 const uint kEntryPageShift = 16;
 const uint kEntryFill = 0x80000000u;
 const uint kPageShift = 7;
 const uint kPageSize = 128;  // 1 << kPageShift
-const float kPageMargin = 64.0;
+const float kPageMargin = 72.0;
+// The largest atlas face the compute rasteriser takes: its pages (181^2) fit the 15 bits a
+// page-list entry names them in (point_shadow_atlas_desc.cpp, SHD007).
+const uint kMaxPagedFace = 23168;
 
 ANTUMBRA_SHARED_END
 

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <optional>
 #include <string>
 
@@ -5,6 +6,7 @@
 #include "common/ports.hpp"
 #include "common/rasterizer_choice.hpp"
 #include "common/shadow_data.hpp"
+#include "pages.h"
 #include "point_shadow_atlas_pass.hpp"
 
 namespace antumbra::passes {
@@ -33,6 +35,15 @@ void check(const fg::PlanPass& pass, const PointShadowAtlasParams& params, const
                    "/out/shadowData", diagnostics);
   }
   const bool compute = params.rasterizer == ShadowRasterizer::compute;
+  if (compute && std::max(atlas->extent.width, atlas->extent.height) > shared::kMaxPagedFace) {
+    add_pass_error(graph, pass, codes::shadow_atlas::kFaceTooLarge,
+                   "rasterizer \"compute\" draws faces of at most " +
+                       std::to_string(shared::kMaxPagedFace) + " texels (its page lists name " +
+                       "their 128^2 pages in 15 bits); the atlas '" + atlas->name + "' is " +
+                       std::to_string(atlas->extent.width) + "x" +
+                       std::to_string(atlas->extent.height),
+                   "/out/atlas", diagnostics);
+  }
   if (compute && atlas->format == fg::Format::d16) {
     add_pass_error(graph, pass, codes::shadow_atlas::kRasterizerFormat,
                    "rasterizer \"compute\" writes 32-bit float depth; the atlas '" + atlas->name +
@@ -195,7 +206,7 @@ void add_face_choice_params(fg::ParamTable<PointShadowAtlasParams>& table) {
             .default_value = true,
             .description =
                 "With receiverCulling: draw only the 128^2 pages of a face that some visible "
-                "pixel's lookups may read (within 64 texels of where it falls, plus the "
+                "pixel's lookups may read (within 72 texels of where it falls, plus the "
                 "blocker searches' reach: pageReach times the light's size over the "
                 "distance, at most a quarter face), each kept until its face changes; the "
                 "face's other pages hold far depth. Off: every page of a face some pixel "

@@ -173,11 +173,15 @@ void draw_pages(uint record, Survey r) {
 // Unknown contents (a new image, every layer's content cleared): far depth in the pages
 // neither drawn nor filled just now, so no lookup reads undefined texels.
 void fill_unknown(Survey r) {
-  uint fill = g_pages - r.drawn - r.filled;
-  uint fill_list = chunks * chunk_faces * (1u + page_slots);
-  uint at = fill_list + atomicAdd(args[2u * chunks].z, fill);
   uint base = content_base(g_layer);
   bool now = r.drawn > 0u;  // draw_pages wrote what the pages hold this frame
+  uint fill = 0u;
+  for (uint w = 0u; w < page_words; ++w) {
+    uint done = now ? content[base + 1u + w] | content[base + 1u + page_words + w] : 0u;
+    fill += uint(bitCount(valid_bits(w) & ~done));
+  }
+  uint fill_list = chunks * chunk_faces * (1u + page_slots);
+  uint at = fill_list + atomicAdd(args[2u * chunks].z, fill);
   for (uint w = 0u; w < page_words; ++w) {
     uint done = now ? content[base + 1u + w] | content[base + 1u + page_words + w] : 0u;
     for (uint bits = valid_bits(w) & ~done; bits != 0u; bits &= bits - 1u) {

@@ -73,7 +73,8 @@ uint faces_of(ShadowLight l, vec3 p) {
 
 // The light's face size in texels (per-light resolution, else the atlas's).
 uint face_texels(ShadowLight l) {
-  return l.projection.y > 0.0 ? uint(l.projection.y) : shadow_header.counts.z;
+  uint atlas = shadow_header.counts.z;
+  return l.projection.y > 0.0 ? min(uint(l.projection.y), atlas) : atlas;
 }
 
 // Bits lo..hi (both < 32) set.
@@ -152,8 +153,8 @@ void gather(uint n, vec3 p) {
     uint texels = face_texels(l);
     for (uint f = 0u; f < 6u; ++f) {
       if ((bits & (1u << f)) == 0u) continue;
-      if (texels <= kPageSize) {
-        // One page: no projection needed.
+      if (texels <= kPageSize || texels > 32u * kPageSize) {
+        // One page, or more than the masks hold (needed whole, publish): no projection.
         if (s_cols[k * 6u + f] == 0u) s_cols[k * 6u + f] = s_rows[k * 6u + f] = 1u;
       } else {
         add_pages(k, f, first + f, l, float(texels), p);

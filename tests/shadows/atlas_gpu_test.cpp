@@ -99,6 +99,35 @@ TEST_F(AtlasGpuTest, TooSmallShadowDataIsACompilerError) {
   EXPECT_GT(d->line, 0);
 }
 
+// The compute rasteriser's page lists name a face's 128^2 pages in 15 bits (pages.h): an
+// atlas with larger faces is refused at the atlas binding, with the limit.
+TEST_F(AtlasGpuTest, ComputeAtlasFacesPastThePageListsAreACompilerError) {
+  auto graph = atlas_graph();
+  ASSERT_TRUE(graph.ok());
+  const auto compile_with = [&](std::uint32_t side) {
+    for (auto& r : graph.value().resources) {
+      if (r.name == "atlas" || r.name == "shadowColour") {
+        r.size = {false, 1.0, 1.0, side, side};
+        r.layers = 6;
+      }
+      if (r.name == "atlas") r.format = fg::Format::r32f;
+      if (r.name == "shadowData") r.buffer_size = passes::shadow_data_bytes(6);
+    }
+    for (auto& p : graph.value().passes) {
+      if (p.type == "point-shadow-atlas") p.params["rasterizer"] = "compute";
+    }
+    fg::CompileOptions options;
+    options.viewport = {kViewport.width, kViewport.height};
+    return fg::compile(graph.value(), registry_->reflection(), options);
+  };
+  const auto large = compile_with(23296);
+  ASSERT_FALSE(large.ok());
+  const base::Diagnostic* d = large.diagnostics().find("SHD007");
+  ASSERT_NE(d, nullptr) << large.diagnostics().to_text();
+  EXPECT_NE(d->message.find("23168"), std::string::npos) << d->message;
+  EXPECT_EQ(compile_with(16384).diagnostics().find("SHD007"), nullptr);
+}
+
 // A face record names its layer in 11 bits (shadow_data.h): more layers are refused at the
 // atlas binding, with the limit, before anything is allocated.
 TEST_F(AtlasGpuTest, MoreLayersThanAFaceCanNameIsACompilerError) {

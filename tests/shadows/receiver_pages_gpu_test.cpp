@@ -136,7 +136,20 @@ TEST_F(ReceiverPagesGpuTest, AMovedLightRedrawsItsNeededPagesAndFillsTheRest) {
   const auto whole = light_faces();
   // Hard shadows read one texel: the 64-texel margin alone (pageReach 0) covers them.
   load_paged(true, "data/graphs/hard.json", 0.0);
-  counted_frame();
+  const PageCounts first = counted_frame();
+  // A new atlas: each page is drawn or filled with far depth, never left undefined.
+  const auto first_faces = light_faces();
+  std::uint32_t first_far = 0;
+  for (std::uint32_t face = 0; face < 6; ++face) {
+    for (std::uint32_t page = 0; page < kPagesPerFace; ++page) {
+      const auto got = page_of(first_faces[face], page);
+      const bool far = all_far(got);
+      EXPECT_TRUE(far || got == page_of(whole[face], page)) << "face " << face << " page " << page;
+      if (far && !all_far(page_of(whole[face], page))) ++first_far;
+    }
+  }
+  EXPECT_GT(first_far, 0u) << "pages no pixel needs are filled on a new atlas too";
+  EXPECT_LT(first.pages, first.rendered * kPagesPerFace);
   EXPECT_EQ(counted_frame().rendered, 0u) << "nothing moved: every needed page is cached";
   scene_.lights[kLight].position.y -= 0.5f;
   const PageCounts moved = counted_frame();

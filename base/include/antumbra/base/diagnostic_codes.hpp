@@ -197,7 +197,9 @@ inline constexpr const char* kLightsUnshadowed = "SHD002";  // warning: lights d
 inline constexpr const char* kRasterizerFormat = "SHD004";  // atlas format vs the rasteriser
 inline constexpr const char* kFacesDegraded = "SHD005";  // note: faces drawn smaller (atlas full)
 inline constexpr const char* kTooManyLayers = "SHD006";  // atlas layers past what a face names
-inline constexpr const char* kFaceStats = "SHD010";      // note: faces culled/drawn/cached
+// compute rasteriser: atlas faces with more pages than a page list names
+inline constexpr const char* kFaceTooLarge = "SHD007";
+inline constexpr const char* kFaceStats = "SHD010";  // note: faces culled/drawn/cached
 }  // namespace shadow_atlas
 
 // gbuffer.
