@@ -108,7 +108,7 @@ Survey survey(bool candidate) {
     uint need = needed_bits(w);
     uint current = current_bits(w);
     uint read = g_any_needed ? need : valid_bits(w);
-    if ((read & ~current) != 0u && !candidate) r.read_current = false;
+    if ((read & ~current) != 0u) r.read_current = false;
     if (!candidate) continue;
     uint draw = need & ~current;
     r.drawn += uint(bitCount(draw));
@@ -124,12 +124,6 @@ Survey survey(bool candidate) {
   }
   // A candidate draws every needed page it lacks: afterwards they all hold its epoch.
   if (candidate && r.drawn > 0u) r.read_current = true;
-  if (candidate && r.drawn == 0u) {
-    for (uint w = 0u; w < page_words; ++w) {
-      uint read = g_any_needed ? needed_bits(w) : valid_bits(w);
-      if ((read & ~current_bits(w)) != 0u) r.read_current = false;
-    }
-  }
   // Only a face drawn now changes what its other pages mean.
   if (r.drawn == 0u) r.filled = 0u;
   return r;
