@@ -43,14 +43,18 @@ ShadowLight shadow_light(const scene::PointLight& light, float range, float near
 
 }  // namespace
 
-FaceSquare face_square(const AtlasFrame& frame, std::uint32_t slot) {
-  const ShadowFace& face = frame.faces.at(slot);
-  const FacePlace place = face_place(face);
-  const std::uint32_t light = face.info.x;
-  std::uint32_t size = frame.header.counts.z;
+std::uint32_t face_size(const AtlasFrame& frame, std::uint32_t slot) {
+  const std::uint32_t atlas = frame.header.counts.z;
+  const std::uint32_t light = slot < frame.faces.size() ? frame.faces[slot].info.x : ~0u;
   if (light < frame.lights.size() && frame.lights[light].projection.y > 0.0f) {
-    size = std::min(static_cast<std::uint32_t>(frame.lights[light].projection.y), size);
+    return std::min(static_cast<std::uint32_t>(frame.lights[light].projection.y), atlas);
   }
+  return atlas;
+}
+
+FaceSquare face_square(const AtlasFrame& frame, std::uint32_t slot) {
+  const FacePlace place = face_place(frame.faces.at(slot));
+  const std::uint32_t size = face_size(frame, slot);
   return {.layer = place.layer, .origin = place.cell * size, .size = size};
 }
 

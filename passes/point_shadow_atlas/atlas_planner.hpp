@@ -132,6 +132,10 @@ struct FaceSquare {
   std::uint32_t size = 0;
 };
 FaceSquare face_square(const AtlasFrame& frame, std::uint32_t slot);
+// Face record `slot`'s size in texels: its light's (per-light resolution), at most the
+// atlas's; the atlas's for a record no light owns. The rasteriser, the decision's requests
+// and the squares all size a face by it (shadow_receivers.comp mirrors it on the GPU).
+std::uint32_t face_size(const AtlasFrame& frame, std::uint32_t slot);
 
 class AtlasPlanner {
  public:

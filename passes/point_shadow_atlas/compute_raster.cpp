@@ -31,14 +31,6 @@ using own_sync::transfer_to_compute;
 constexpr std::uint32_t kClearDepthBits = shared::kRasterClearDepth;
 constexpr std::uint32_t kClearTint = shared::kRasterClearTint;
 
-// A face's size: its light's own (per-light resolution), at most the atlas's.
-std::uint32_t face_size_of(const AtlasFrame& frame, std::uint32_t layer, std::uint32_t atlas_size) {
-  const ShadowLight& light = frame.lights.at(frame.faces[layer].info.x);
-  return light.projection.y > 0.0f
-             ? std::min(static_cast<std::uint32_t>(light.projection.y), atlas_size)
-             : atlas_size;
-}
-
 gpu::DescriptorSetLayoutBuilder raster_bindings() {
   gpu::DescriptorSetLayoutBuilder b;
   for (const std::uint32_t binding :
@@ -233,8 +225,7 @@ void ComputeRasterizer::execute(fgvk::ExecuteContext& context, const AtlasFrame&
   place_dynamic(context);
   const std::uint32_t size = frame.header.counts.z;
   std::uint32_t largest = 1;
-  for (const std::uint32_t layer : layers)
-    largest = std::max(largest, face_size_of(frame, layer, size));
+  for (const std::uint32_t layer : layers) largest = std::max(largest, face_size(frame, layer));
   ensure_scratch(context, static_cast<std::uint32_t>(layers.size()), largest, size);
   write_records(context, frame, tinted, settings);
   decision_layout_ = {.records = static_cast<std::uint32_t>(layers.size()),
@@ -310,17 +301,17 @@ void ComputeRasterizer::write_records(fgvk::ExecuteContext& context, const Atlas
     const ShadowLight& l = frame.lights.at(light);
     const bool ortho = l.direction_type.w == kLightTypeDirectional;
     // Per-light resolution: the face is drawn into the square at its layer's origin.
-    const std::uint32_t face_size = face_size_of(frame, layers[i], atlas_size_);
+    const std::uint32_t side = face_size(frame, layers[i]);
     shared::RasterFace& r = out[i];
     r.view_proj = face.view_proj;
     r.light = glm::vec4(glm::vec3(l.position_range), l.position_range.w);
-    r.params = glm::vec4(l.params.y, ortho ? 1.0f : 0.0f, static_cast<float>(face_size),
+    r.params = glm::vec4(l.params.y, ortho ? 1.0f : 0.0f, static_cast<float>(side),
                          std::bit_cast<float>(static_cast<std::uint32_t>(face_texels)));
     const bool tint = settings.tint && light < tinted.size() && tinted[light];
-    r.info = {face.info.y, offset, face_size, tint ? ++tint_slot : 0u};
+    r.info = {face.info.y, offset, side, tint ? ++tint_slot : 0u};
     scratch_offsets_[i] = offset;
-    face_sizes_[i] = face_size;
-    offset += face_size * face_size;
+    face_sizes_[i] = side;
+    offset += side * side;
   }
   for (std::size_t i = 0; i < untouched_.size(); ++i) {
     shared::RasterFace& r = out[layers.size() + i];

@@ -158,13 +158,9 @@ void FaceDecision::write_requests(Slot& slot, const AtlasFrame& frame,
                                   const DecisionLayout& layout) const {
   auto* out = reinterpret_cast<shared::FaceRequest*>(slot.requests.mapped());
   for (std::uint32_t layer = 0; layer < layers_; ++layer) {
-    // The light's face size (per-light resolution), else the atlas's.
-    std::uint32_t side = layout.face_size;
-    const std::uint32_t light = layer < frame.faces.size() ? frame.faces[layer].info.x : ~0u;
-    if (light < frame.lights.size() && frame.lights[light].projection.y > 0.0f) {
-      // As the rasteriser and the receivers size it: at most the atlas's.
-      side = std::min(static_cast<std::uint32_t>(frame.lights[light].projection.y), side);
-    }
+    // As the rasteriser and the receivers size it (atlas_planner.hpp).
+    const std::uint32_t side =
+        layer < frame.faces.size() ? face_size(frame, layer) : layout.face_size;
     out[layer] = {layer < frame.epochs.size() ? frame.epochs[layer] : 0u, 0u, side * side, side};
   }
   for (std::size_t i = 0; i < frame.render_layers.size(); ++i) {
