@@ -39,6 +39,16 @@ fg::PortDesc compute_buffer_input(fg::PortId name, std::string description) {
           .description = std::move(description)};
 }
 
+fg::PortDesc page_tables_input() {
+  fg::PortDesc port = compute_buffer_input(
+      port::kPageTables,
+      "A paged atlas's page tables (point-shadow-atlas's pageTables, with pagePool): the "
+      "lookups find each texel's page through them. Required when the atlas is paged, "
+      "else leave it unbound (the lookups then carry no table code).");
+  port.optional = true;
+  return port;
+}
+
 fg::PortDesc emissive_input(fg::Stage stage) {
   return {.name = port::kEmissive,
           .access = Access::sampled,

@@ -22,6 +22,10 @@ fg::PortDesc compute_array_input(fg::PortId name, std::vector<fg::Format> format
                                  std::string description, bool optional = false);
 // A buffer read as a storage buffer in compute (shadowData, layerTable).
 fg::PortDesc compute_buffer_input(fg::PortId name, std::string description);
+// The optional `pageTables` input of a pass that reads the shadow atlas: bound to a paged
+// atlas's tables (point-shadow-atlas's pagePool), its lookups go through them
+// (interface/shared/page_tables.h); unbound, they are compiled out.
+fg::PortDesc page_tables_input();
 
 // The G-buffer's optional emission + occlusion image (gbuffer's `emissive`), sampled at
 // `stage`: every lighting pass adds the emission unshadowed and scales its ambient term

@@ -24,6 +24,7 @@ inline constexpr fg::PortId kColour{"colour"};
 inline constexpr fg::PortId kMinDepth{"minDepth"};
 inline constexpr fg::PortId kMoments{"moments"};
 inline constexpr fg::PortId kShadowData{"shadowData"};
+inline constexpr fg::PortId kPageTables{"pageTables"};
 inline constexpr fg::PortId kLayerTable{"layerTable"};
 inline constexpr fg::PortId kSdf{"sdf"};
 inline constexpr fg::PortId kSdfInfo{"sdfInfo"};

@@ -74,7 +74,48 @@ struct ShadowCoord {
   bool valid;    // false: no faces, or the point is nearer the light than its near plane
   float texels;  // the face's size in texels
   float share;   // the face's size over the atlas's (its uv square in the layer)
+#ifdef SHADOW_PAGE_TABLES
+  int table;  // a paged light's face: its page table's first word (page_tables.h); else -1
+#endif
 };
+
+#ifdef SHADOW_PAGE_TABLES
+// Paged atlases (interface/shared/page_tables.h): the includer binds the tables as
+// `uint page_tables[]` and defines SHADOW_PAGE_TABLES. A lookup reads the nearest texel
+// through its own page, so a filter never reads across a page border into another
+// face's page: no guard texels are needed.
+#include "../interface/shared/page_tables.h"
+
+// The atlas texel of face texel `t` (0..texels - 1 per axis) of the face whose table
+// starts at `table`; z < 0 when its page has no place (far depth).
+ivec3 shadow_page_texel(int table, int texels, ivec2 t, int atlas_size) {
+  const int shift = int(ANTUMBRA_PAGE_SHIFT);
+  int pages_x = (texels + (1 << shift) - 1) >> shift;
+  uint entry = page_tables[table + (t.y >> shift) * pages_x + (t.x >> shift)];
+  if (entry == 0u) return ivec3(0, 0, -1);
+  int side = atlas_size >> shift;
+  int page = int(entry - 1u);
+  int in_layer = page % (side * side);
+  ivec2 corner = ivec2(in_layer % side, in_layer / side) << shift;
+  return ivec3(corner + (t & ((1 << shift) - 1)), page / (side * side));
+}
+
+// Stored depth at face uv (clamped to the face) of a paged face: its nearest texel.
+float shadow_page_depth(sampler2DArray atlas, int table, float texels, vec2 face_uv) {
+  int n = int(texels);
+  ivec2 t = clamp(ivec2(face_uv * texels), ivec2(0), ivec2(n - 1));
+  ivec3 at = shadow_page_texel(table, n, t, textureSize(atlas, 0).x);
+  return at.z < 0 ? 1.0 : texelFetch(atlas, at, 0).r;
+}
+
+// The colour map's tint there (white, nearest pane at the far plane, without a page).
+vec4 shadow_page_tint(sampler2DArray colour, int table, float texels, vec2 face_uv) {
+  int n = int(texels);
+  ivec2 t = clamp(ivec2(face_uv * texels), ivec2(0), ivec2(n - 1));
+  ivec3 at = shadow_page_texel(table, n, t, textureSize(colour, 0).x);
+  return at.z < 0 ? vec4(1.0) : texelFetch(colour, at, 0);
+}
+#endif
 
 float shadow_face_texels(ShadowLight l, float atlas_size) {
   return l.projection.y > 0.0 ? l.projection.y : atlas_size;
@@ -192,8 +233,14 @@ vec3 shadow_offset_position(ShadowLight l, vec3 world_pos, vec3 normal, float fa
 // `index`: the face record `face` was read from (< 0: none).
 ShadowCoord shadow_coord(ShadowFace face, ShadowLight l, int index, vec3 world_pos) {
   float share = l.projection.z > 0.0 ? l.projection.z : 1.0;
-  ShadowCoord c = ShadowCoord(vec2(0.0), 0.0, vec2(0.0), 1.0, 0.0, false,
-                              l.projection.y > 0.0 ? l.projection.y : 65536.0, share);
+  float texels = l.projection.y > 0.0 ? l.projection.y : 65536.0;
+#ifdef SHADOW_PAGE_TABLES
+  int table =
+      l.projection.z < 0.0 && index >= 0 ? int(face.info.y >> ANTUMBRA_FACE_LAYER_SHIFT) : -1;
+  ShadowCoord c = ShadowCoord(vec2(0.0), 0.0, vec2(0.0), 1.0, 0.0, false, texels, share, table);
+#else
+  ShadowCoord c = ShadowCoord(vec2(0.0), 0.0, vec2(0.0), 1.0, 0.0, false, texels, share);
+#endif
   if (index < 0) return c;
   c.layer = float(shadow_face_atlas_layer(face.info));
   c.origin = shadow_face_origin(face.info, share);
@@ -218,6 +265,9 @@ ShadowCoord shadow_coord(ShadowFace face, ShadowLight l, int index, vec3 world_p
 // light's range (depth > 1) read as lit.
 float shadow_hard_coord(sampler2DArray atlas, ShadowCoord c) {
   if (!c.valid || c.depth >= 1.0) return 1.0;
+#ifdef SHADOW_PAGE_TABLES
+  if (c.table >= 0) return c.depth <= shadow_page_depth(atlas, c.table, c.texels, c.uv) ? 1.0 : 0.0;
+#endif
   float stored = textureLod(atlas, vec3(shadow_atlas_uv(c, c.uv), c.layer), 0.0).r;
   return c.depth <= stored ? 1.0 : 0.0;
 }

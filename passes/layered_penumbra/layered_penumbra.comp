@@ -34,6 +34,12 @@ layout(set = 0, binding = kPenumbraLayerTable) readonly buffer Layers {
 layout(set = 0, binding = kPenumbraDepth) uniform sampler2D g_depth;
 layout(set = 0, binding = kPenumbraNormal) uniform sampler2D g_normal;
 layout(set = 0, binding = kPenumbraAtlas) uniform sampler2DArray atlas;
+#ifdef SHADOW_PAGE_TABLES
+// A paged atlas's tables (interface/shared/page_tables.h).
+layout(set = 0, binding = kPenumbraPageTables) readonly buffer PageTables {
+  uint page_tables[];
+};
+#endif
 layout(set = 0, binding = kPenumbraOut, rgba16f) uniform writeonly image2DArray penumbra_out;
 layout(set = 0, binding = kPenumbraHardOut, r32ui) uniform writeonly uimage2D hard_out;
 #ifdef HAS_COLOUR

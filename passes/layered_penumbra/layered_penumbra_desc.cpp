@@ -57,6 +57,7 @@ fg::PassDesc LayeredPenumbraPass::describe() {
           "blocker depth and the blocker search (searchScale, searchTaps) is skipped.",
           true),
       compute_buffer_input(port::kShadowData, "Face matrices and per-light shadow data."),
+      page_tables_input(),
       compute_buffer_input(port::kLayerTable, "Light -> screen layer (light-layering)."),
       {.name = port::kPenumbra,
        .direction = PortDirection::output,

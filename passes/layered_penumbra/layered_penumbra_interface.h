@@ -24,6 +24,8 @@ ANTUMBRA_BINDING(kPenumbraTranslucencyOut, 10)
 ANTUMBRA_BINDING(kPenumbraMinDepth, 11)
 // HAS_ESM: exponential shadow-map values for the ESM blur.
 ANTUMBRA_BINDING(kPenumbraEsmOut, 12)
+// A paged atlas's tables (interface/shared/page_tables.h; SHADOW_PAGE_TABLES).
+ANTUMBRA_BINDING(kPenumbraPageTables, 13)
 
 ANTUMBRA_PUSH_CONSTANTS(LayeredPenumbraPush) {
   uint max_layers;      // screen layers in use (<= 32)

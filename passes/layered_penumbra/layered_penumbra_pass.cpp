@@ -34,6 +34,8 @@ void LayeredPenumbraPass::prepare(fgvk::PrepareContext& context) {
   if (min_filter_) defines.push_back({"MIN_FILTER", "1"});
   esm_ = context.bindings.image(port::kEsm) != nullptr;
   if (esm_) defines.push_back({"HAS_ESM", "1"});
+  page_tables_ = context.bindings.buffer(port::kPageTables) != nullptr;
+  if (page_tables_) defines.push_back({"SHADOW_PAGE_TABLES", "1"});
   // The per-pixel arrays' size: constant-bounded loops keep them in registers.
   const fgvk::BoundImage* penumbra = context.bindings.image(port::kPenumbra);
   const std::uint32_t slots = penumbra != nullptr ? penumbra->layers : shared::kMaxPenumbraSlots;
@@ -55,6 +57,7 @@ void LayeredPenumbraPass::prepare(fgvk::PrepareContext& context) {
         .storage_image(shared::kPenumbraTranslucencyOut, kCompute);
   if (min_filter_) builder.combined_image_sampler(shared::kPenumbraMinDepth, kCompute);
   if (esm_) builder.storage_image(shared::kPenumbraEsmOut, kCompute);
+  if (page_tables_) builder.storage_buffer(shared::kPenumbraPageTables, kCompute);
   compute_ = build_compute_pipeline(context, shader, builder, sizeof(LayeredPenumbraPush));
 }
 
@@ -94,6 +97,9 @@ void LayeredPenumbraPass::execute(fgvk::ExecuteContext& context) {
   if (esm_) {
     const auto& esm = b.required_image(port::kEsm);
     descriptors.storage_image(shared::kPenumbraEsmOut, esm.array_view, esm.layout);
+  }
+  if (page_tables_) {
+    descriptors.storage_buffer(shared::kPenumbraPageTables, b.buffer(port::kPageTables)->buffer);
   }
   const VkCommandBuffer cmd = context.cmd;
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, compute_.pipeline);

@@ -32,8 +32,9 @@ class LayeredPenumbraPass final : public fgvk::Pass {
  private:
   LayeredPenumbraParams params_;
   bool colour_ = false;
-  bool min_filter_ = false;  // `minDepth` bound: one fetch instead of the blocker search
-  bool esm_ = false;         // `esm` bound
+  bool min_filter_ = false;   // `minDepth` bound: one fetch instead of the blocker search
+  bool esm_ = false;          // `esm` bound
+  bool page_tables_ = false;  // `pageTables` bound: the atlas is paged
   ComputePipeline compute_;
   std::vector<std::string> shader_files_;
 };

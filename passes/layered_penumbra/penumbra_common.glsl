@@ -45,7 +45,13 @@ bool penumbra_blocker_depth(ShadowLight sl, ShadowCoord c, vec2 at, float light_
     for (int x = 0; x < taps; ++x) {
       vec2 offset = (vec2(x, y) - 0.5 * float(taps - 1)) * step_uv;
       vec2 tap = clamp(c.uv + offset, vec2(0.5 * texel), vec2(1.0 - 0.5 * texel));
+#ifdef SHADOW_PAGE_TABLES
+      float stored = c.table >= 0
+                         ? shadow_page_depth(atlas, c.table, c.texels, tap)
+                         : textureLod(atlas, vec3(tap * c.share + c.origin, c.layer), 0.0).r;
+#else
       float stored = textureLod(atlas, vec3(tap * c.share + c.origin, c.layer), 0.0).r;
+#endif
       if (stored < c.depth) {
         blocker_sum += shadow_linearise_light(sl, stored);
         ++blockers;
@@ -84,7 +90,13 @@ PenumbraSample estimate_penumbra(ShadowLight light, vec3 world, vec3 n_world, bo
   // their own surface stay near 1, which is what keeps ESM free of acne.
   vec2 at = shadow_atlas_uv(c, c.uv);
 #ifdef HAS_ESM
-  float occluder = shadow_linearise_light(sl, textureLod(atlas, vec3(at, c.layer), 0.0).r);
+#ifdef SHADOW_PAGE_TABLES
+  float stored = c.table >= 0 ? shadow_page_depth(atlas, c.table, c.texels, c.uv)
+                              : textureLod(atlas, vec3(at, c.layer), 0.0).r;
+#else
+  float stored = textureLod(atlas, vec3(at, c.layer), 0.0).r;
+#endif
+  float occluder = shadow_linearise_light(sl, stored);
   float depth_range = max(sl.position_range.w, 1e-3);
   result.esm = clamp(exp(-esm_constant * max(c.linear - occluder, 0.0) / depth_range), 0.0, 1.0);
 #endif
@@ -95,7 +107,12 @@ PenumbraSample estimate_penumbra(ShadowLight light, vec3 world, vec3 n_world, bo
   // plane (shadow_colour.frag). A receiver not behind that pane (a lit pane's own
   // surface, offset towards the light) is not tinted by it.
   if (sl.params.w > 0.5) {
+#ifdef SHADOW_PAGE_TABLES
+    vec4 tint = c.table >= 0 ? shadow_page_tint(colour_atlas, c.table, c.texels, c.uv)
+                             : textureLod(colour_atlas, vec3(at, c.layer), 0.0);
+#else
     vec4 tint = textureLod(colour_atlas, vec3(at, c.layer), 0.0);
+#endif
     if (c.linear > tint.a * sl.position_range.w) result.colour = pack_colour(vec4(tint.rgb, 1.0));
   }
 #endif

@@ -8,6 +8,7 @@
 
 #include "common/light_faces.hpp"
 #include "common/shadow_faces.hpp"
+#include "pages.h"
 
 namespace antumbra::passes {
 
@@ -96,6 +97,9 @@ void AtlasPlanner::begin_frame(const scene::Scene& scene, std::uint32_t frame_in
     packer_.reset(settings.layers, settings.face_size, records, settings.pack);
     contents_known_ = false;
   }
+  const std::uint32_t pages_side =
+      (settings.face_size + shared::kPageSize - 1) >> shared::kPageShift;
+  table_stride_ = settings.page_pool ? pages_side * pages_side : 0u;
   frame_ = AtlasFrame{};
   frame_.clear_all = !contents_known_;
   contents_known_ = true;
@@ -106,7 +110,7 @@ void AtlasPlanner::begin_frame(const scene::Scene& scene, std::uint32_t frame_in
   frame_.faces.assign(records, ShadowFace{});
   frame_.epochs.assign(records, 0u);
   for (std::uint32_t record = 0; record < records; ++record) {  // until a light owns it
-    frame_.faces[record].info = {0xFFFFFFFFu, encode_face_info(0u, place_of(record)), 0u, 0u};
+    frame_.faces[record].info = {0xFFFFFFFFu, face_info_y(0u, record), 0u, 0u};
   }
 }
 
@@ -221,7 +225,24 @@ std::vector<std::uint32_t> AtlasPlanner::fit_sizes(const AtlasSettings& settings
   return sizes;
 }
 
+std::uint32_t AtlasPlanner::face_info_y(std::uint32_t face, std::uint32_t slot) const {
+  if (table_stride_ == 0) return encode_face_info(face, place_of(slot));
+  return (slot * table_stride_) << ANTUMBRA_FACE_LAYER_SHIFT | face;
+}
+
+void AtlasPlanner::size_pool_claims(const scene::Scene& scene) {
+  for (Claim& claim : claims_) {
+    claim.given = claim.wanted;
+    const std::string& name = scene.lights[claim.light].name;
+    if (claim.given == 0) frame_.unshadowed.push_back(name);
+  }
+}
+
 void AtlasPlanner::place_claims(const scene::Scene& scene, const AtlasSettings& settings) {
+  if (settings.page_pool) {
+    size_pool_claims(scene);
+    return;
+  }
   const std::uint32_t smallest =
       std::max(FacePacker::smallest(settings.face_size), std::min(16u, settings.face_size));
   const std::vector<std::uint32_t> sizes = fit_sizes(settings, smallest);
@@ -290,6 +311,7 @@ void AtlasPlanner::wish_light(const scene::Scene& scene, const Claim& claim,
   work.resolution = claim.given;
   out.projection.y = static_cast<float>(work.resolution);
   out.projection.z = static_cast<float>(work.resolution) / static_cast<float>(settings.face_size);
+  if (settings.page_pool) out.projection.z = -1.0f;  // paged: no square (page_tables.h)
   const sf::Frustum camera = sf::camera_frustum(camera_view_proj);
   work.visible = (1u << face_count) - 1u;
   if (light.type == scene::LightType::point) {
@@ -325,7 +347,7 @@ void AtlasPlanner::wish_light(const scene::Scene& scene, const Claim& claim,
       out_face.view_proj =
           lf::spot_view_proj(light.position, light.direction, out.projection.x, near, range);
     }
-    out_face.info = {i, encode_face_info(face, place_of(layer)), 0u, 0u};
+    out_face.info = {i, face_info_y(face, layer), 0u, 0u};
     const LayerState& state = layers_[layer];
     const bool holds = state.valid && state.key == face_key(layer, geometry_version, work);
     if ((work.visible & (1u << face)) != 0u && (!holds || state.dynamic_dirty)) {
@@ -379,8 +401,8 @@ void AtlasPlanner::keep_light(const LightWork& work) {
     const LayerState& state = layers_[layer];
     ShadowFace& out_face = frame_.faces[layer];
     out_face.view_proj = state.key.view_proj;
-    out_face.info = {work.light, encode_face_info(face, place_of(layer)),
-                     state.valid && state.shown ? 1u : 0u, 0u};
+    out_face.info = {work.light, face_info_y(face, layer), state.valid && state.shown ? 1u : 0u,
+                     0u};
     frame_.epochs[layer] = state.epoch;
     ++frame_.stats.total;
     if ((work.visible & (1u << face)) != 0u) {

@@ -41,6 +41,10 @@ struct AtlasSettings {
   // culling, face_decision.hpp): every visible face is a candidate, and the planner only
   // says which epoch of its contents each layer should hold.
   bool gpu_decides = false;
+  // The faces' pages live in a page pool (page_pool_interface.h; with gpu_decides): faces
+  // have no squares, every light gets the face size it wants, and a record's
+  // ShadowFace.info.y names its page table (interface/shared/page_tables.h).
+  bool page_pool = false;
   // Per-light face resolution from the light's size on screen (face_resolution.hpp);
   // off: every face has face_size texels. `resolution.maximum` is set from face_size.
   bool adaptive_resolution = false;
@@ -218,6 +222,11 @@ class AtlasPlanner {
   [[nodiscard]] FacePlace place_of(std::uint32_t slot) const {
     return packer_.place_of(slot).value_or(FacePlace{});
   }
+  // ShadowFace.info.y of record `slot` holding face `face`: its place, or in a page pool
+  // its page table's first word.
+  [[nodiscard]] std::uint32_t face_info_y(std::uint32_t face, std::uint32_t slot) const;
+  // A page pool's claims: every light at its wanted size (no squares to place).
+  void size_pool_claims(const scene::Scene& scene);
   [[nodiscard]] FaceKey face_key(std::uint32_t record, std::uint64_t geometry_version,
                                  const LightWork& work) const {
     return {frame_.faces[record].view_proj, geometry_version, work.resolution, place_of(record)};
@@ -229,6 +238,7 @@ class AtlasPlanner {
   std::vector<LightWork> work_;
   FacePacker packer_;
   std::uint32_t next_epoch_ = 1;
+  std::uint32_t table_stride_ = 0;  // page-table words per record (page pool), else 0
   bool contents_known_ = false;
   AtlasFrame frame_;
 };

@@ -37,7 +37,7 @@ gpu::DescriptorSetLayoutBuilder raster_bindings() {
        {shared::kRasterClusters, shared::kRasterIndices, shared::kRasterVertices,
         shared::kRasterFaces, shared::kRasterCounters, shared::kRasterItems, shared::kRasterDepth,
         shared::kRasterTint, shared::kRasterMaterials, shared::kRasterPages,
-        shared::kRasterResolveList, shared::kRasterAttributes}) {
+        shared::kRasterResolveList, shared::kRasterAttributes, shared::kRasterPoolTables}) {
     b.storage_buffer(binding, VK_SHADER_STAGE_COMPUTE_BIT);
   }
   b.add(shared::kRasterSrgbTextures, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT,
@@ -50,9 +50,9 @@ gpu::DescriptorSetLayoutBuilder raster_bindings() {
 
 }  // namespace
 
-void ComputeRasterizer::prepare(fgvk::PrepareContext& context, bool receivers,
+void ComputeRasterizer::prepare(fgvk::PrepareContext& context, bool receivers, bool pool,
                                 std::vector<std::string>& shader_files, gpu::Fnv1a64& key) {
-  decision_.prepare(context, receivers, shader_files, key);
+  decision_.prepare(context, receivers, pool, shader_files, key);
   const gpu::DescriptorSetLayoutBuilder bindings = raster_bindings();
   const auto push = static_cast<std::uint32_t>(sizeof(shared::RasterPush));
   const auto build = [&](const char* file, const std::vector<gpu::ShaderDefine>& defines) {
@@ -85,6 +85,7 @@ void ComputeRasterizer::prepare(fgvk::PrepareContext& context, bool receivers,
   std::vector<gpu::ShaderDefine> defines;
   if (storage_atlas_) defines.push_back({"WRITE_DEPTH", ""});
   if (storage_colour_) defines.push_back({"WRITE_COLOUR", ""});
+  if (pool) defines.push_back({"PAGE_POOL", ""});
   resolve_ = defines.empty() ? ComputePipeline{}
                              : build("point_shadow_atlas/shadow_raster_resolve.comp", defines);
   geometry_version_ = ~0ull;
@@ -234,7 +235,8 @@ void ComputeRasterizer::execute(fgvk::ExecuteContext& context, const AtlasFrame&
                       .fill_first = fill_first_,
                       .cull_groups = group_count(cluster_count_, shared::kCullGroup),
                       .page_culling = settings.pages,
-                      .page_reach = settings.page_reach};
+                      .page_reach = settings.page_reach,
+                      .pool_pages = settings.pool_pages};
   decision_.record(context, frame, staging, decision_layout_);
   for (std::size_t first = 0; first < layers.size(); first += chunk_faces_) {
     const Chunk chunk{
@@ -258,7 +260,9 @@ void ComputeRasterizer::write_records(fgvk::ExecuteContext& context, const Atlas
   const std::uint32_t size = scratch_size_;  // a slot's side (tint slots, the cleared face)
   untouched_.clear();
   fill_first_ = 0;
-  if (frame.clear_all && storage_atlas_) {
+  if (frame.clear_all && decision_.pool()) {
+    // A pool's faces have no squares to fill: a page without a place reads as far depth.
+  } else if (frame.clear_all && storage_atlas_) {
     // The decision picks which layers stay undrawn: a fill record for each layer.
     for (std::uint32_t layer = 0; layer < frame.faces.size(); ++layer) untouched_.push_back(layer);
     fill_first_ = static_cast<std::uint32_t>(layers.size()) + 1u;
@@ -351,6 +355,9 @@ void ComputeRasterizer::bind(fgvk::ExecuteContext& context, const ComputePipelin
   }
   if (&pipeline == &resolve_ && storage_colour_) {
     descriptors.storage_image(shared::kRasterColour, context.bindings.image(port::kColour)->view);
+  }
+  if (&pipeline == &resolve_ && decision_.pool()) {
+    descriptors.storage_buffer(shared::kRasterPoolTables, decision_.tables());
   }
   descriptors.push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.layout);
   vkCmdPushConstants(cmd, pipeline.layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
@@ -497,6 +504,7 @@ void ComputeRasterizer::resolve(fgvk::ExecuteContext& context, shared::RasterPus
                                 std::uint32_t list_first, std::uint32_t args_index) {
   context.gpu.begin_label(context.cmd, context.pass.name + ".resolve");
   push.face_first = list_first;
+  push.pool_side = atlas_size_ >> shared::kPageShift;
   bind(context, resolve_, push);
   vkCmdDispatchIndirect(context.cmd, decision_.args(), DecisionLayout::resolve_args(args_index));
   context.gpu.end_label(context.cmd);

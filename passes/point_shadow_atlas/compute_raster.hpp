@@ -31,6 +31,7 @@ struct ComputeRasterSettings {
   // (docs/technique.md, "Receiver-driven pages"); off, every page of a needed face.
   bool pages = true;
   float page_reach = 1.0f;  // the blocker searches' reach the pages cover (shadow_receivers.comp)
+  std::uint32_t pool_pages = 0;  // with a page pool (prepare's `pool`): the atlas's pages
 };
 
 struct ComputeRasterStats {
@@ -49,7 +50,8 @@ class ComputeRasterizer {
  public:
   // `receivers`: faces are drawn only where a visible pixel needs them (the G-buffer
   // depth is bound; needs an r32f atlas).
-  void prepare(fgvk::PrepareContext& context, bool receivers,
+  // `pool`: faces are drawn into a page pool (page_pool_interface.h, face_decision.hpp).
+  void prepare(fgvk::PrepareContext& context, bool receivers, bool pool,
                std::vector<std::string>& shader_files, gpu::Fnv1a64& key);
   // Records the decision (face_decision.hpp: which candidates of frame.render_layers are
   // drawn, and the published shadowData from `staging`), their rasterisation and, when

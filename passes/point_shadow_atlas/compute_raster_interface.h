@@ -85,6 +85,8 @@ ANTUMBRA_PUSH_CONSTANTS(RasterPush) {
   // read, so the next chunk finds them clean without a fill over every candidate face.
   uint reset_scratch;
   uint page_words;  // shadow_cull.comp: uints of page bits per record in kRasterPages
+  // shadow_raster_resolve.comp, PAGE_POOL: pool pages per side of a layer (page_pool_interface.h)
+  uint pool_side;
 };
 // shadow_cull.comp reads the records drawn from kRasterResolveList at face_first, and
 // shadow_raster_resolve.comp the pages drawn (record | page << 16) at face_first
@@ -109,6 +111,8 @@ ANTUMBRA_BINDING(kRasterResolveList, 12)  // records to cull, pages to resolve (
 ANTUMBRA_BINDING(kRasterAttributes, 13)    // GpuVertexAttributes[], parallel to the vertices
 ANTUMBRA_BINDING(kRasterSrgbTextures, 14)  // texture2DArray[kTextureBuckets]
 ANTUMBRA_BINDING(kRasterSampler, 15)
+// PAGE_POOL: the records' page tables (page_pool_interface.h), which the resolve follows.
+ANTUMBRA_BINDING(kRasterPoolTables, 16)
 
 // shadow_raster_resolve.comp's square workgroups.
 const uint kResolveGroup = 16;

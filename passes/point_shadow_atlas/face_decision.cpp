@@ -14,6 +14,7 @@
 #include "common/shadow_data.hpp"
 #include "compute_raster_interface.h"
 #include "face_decision_interface.h"
+#include "page_pool_interface.h"
 #include "shared/limits.h"
 
 namespace antumbra::passes {
@@ -31,7 +32,7 @@ constexpr std::uint32_t kMaxPagesPerSide =
     (shared::kMaxPagedFace + shared::kPageSize - 1) / shared::kPageSize;
 static_assert(kMaxPagesPerSide * kMaxPagesPerSide <= kMaxPagesPerFace);
 
-gpu::DescriptorSetLayoutBuilder decision_bindings() {
+gpu::DescriptorSetLayoutBuilder decision_bindings(bool pool) {
   gpu::DescriptorSetLayoutBuilder b;
   for (const std::uint32_t binding :
        {shared::kDecideShadowIn, shared::kDecideShadowOut, shared::kDecideRequests,
@@ -39,12 +40,30 @@ gpu::DescriptorSetLayoutBuilder decision_bindings() {
         shared::kDecideList, shared::kDecideStats}) {
     b.storage_buffer(binding, VK_SHADER_STAGE_COMPUTE_BIT);
   }
+  if (pool) {
+    for (const std::uint32_t binding :
+         {shared::kPoolTables, shared::kPoolOwners, shared::kPoolAges, shared::kPoolOrder,
+          shared::kPoolCounters, shared::kPoolSizes, shared::kPoolPublished}) {
+      b.storage_buffer(binding, VK_SHADER_STAGE_COMPUTE_BIT);
+    }
+  }
   b.combined_image_sampler(shared::kReceiverDepth, VK_SHADER_STAGE_COMPUTE_BIT)
       .uniform_buffer(shared::kReceiverFrame, VK_SHADER_STAGE_COMPUTE_BIT);
   return b;
 }
 
 constexpr VkDeviceSize kStatBytes = VkDeviceSize{shared::kStatCount} * 4;
+// The readback: the decision's counters, then the pool's (page_pool_interface.h).
+constexpr VkDeviceSize kPoolCounterBytes = VkDeviceSize{shared::kPoolCounterCount} * 4;
+constexpr VkDeviceSize kReadbackBytes = kStatBytes + kPoolCounterBytes;
+
+// Workgroups for `threads` threads of kPoolGroup-wide groups, spilled into y past the
+// dispatch's x limit (page_pool.glsl, pool_thread).
+glm::uvec2 pool_groups(std::uint32_t threads) {
+  const std::uint32_t groups = std::max(group_count(threads, shared::kPoolGroup), 1u);
+  const std::uint32_t x = std::min(groups, shared::kMaxGroupsX);
+  return {x, (groups + x - 1) / x};
+}
 
 using own_sync::after_all;
 using own_sync::barriers;
@@ -75,18 +94,23 @@ std::uint32_t page_words(std::uint32_t atlas_face_size) {
   return (page_slots(atlas_face_size) + 31) / 32;
 }
 
-void FaceDecision::prepare(fgvk::PrepareContext& context, bool receivers,
+void FaceDecision::prepare(fgvk::PrepareContext& context, bool receivers, bool pool,
                            std::vector<std::string>& shader_files, gpu::Fnv1a64& key) {
-  const gpu::DescriptorSetLayoutBuilder bindings = decision_bindings();
+  const gpu::DescriptorSetLayoutBuilder bindings = decision_bindings(pool);
   const auto push = static_cast<std::uint32_t>(sizeof(shared::DecisionPush));
+  std::vector<gpu::ShaderDefine> defines;
+  if (pool) defines.push_back({"PAGE_POOL", ""});
   const auto build = [&](const char* file) {
-    const Shader shader = load_shader(context, file, shader_files, {}, &key);
+    const Shader shader = load_shader(context, file, shader_files, defines, &key);
     return build_compute_pipeline(context, shader, bindings, push);
   };
   decide_ = build("point_shadow_atlas/shadow_face_decide.comp");
   receivers_ = receivers;
   receivers_pipeline_ =
       receivers ? build("point_shadow_atlas/shadow_receivers.comp") : ComputePipeline{};
+  pool_ = pool;
+  reclaim_ = pool ? build("point_shadow_atlas/shadow_pool_reclaim.comp") : ComputePipeline{};
+  publish_ = pool ? build("point_shadow_atlas/shadow_pool_publish.comp") : ComputePipeline{};
   layers_ = 0;  // buffers are made for the bound atlas at the first frame
 }
 
@@ -97,6 +121,18 @@ void FaceDecision::adopt(FaceDecision& previous) {
   page_slots_ = previous.page_slots_;
   content_ = std::move(previous.content_);
   content_cleared_ = previous.content_cleared_;
+  if (pool_ && previous.pool_) {  // what the pages hold comes with the pool that holds them
+    pool_pages_ = previous.pool_pages_;
+    table_words_ = previous.table_words_;
+    tables_ = std::move(previous.tables_);
+    table_sizes_ = std::move(previous.table_sizes_);
+    owners_ = std::move(previous.owners_);
+    ages_ = std::move(previous.ages_);
+    order_ = std::move(previous.order_);
+    pool_counters_ = std::move(previous.pool_counters_);
+  } else if (pool_ || previous.pool_) {
+    content_cleared_ = false;  // pages held in squares are not pages of a pool, nor back
+  }
   needed_ = std::move(previous.needed_);
   shadow_in_ = std::move(previous.shadow_in_);
 }
@@ -148,10 +184,28 @@ void FaceDecision::ensure_buffers(fgvk::ExecuteContext& context, std::uint32_t l
         gpu::Buffer::create(context.gpu, request_bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                             gpu::MemoryUsage::upload, context.pass.name + ".faceRequests" + suffix);
     slot.readback =
-        gpu::Buffer::create(context.gpu, kStatBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+        gpu::Buffer::create(context.gpu, kReadbackBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                             gpu::MemoryUsage::readback, context.pass.name + ".faceStats" + suffix);
     slot.written = false;
   }
+}
+
+// The pool's buffers for `layers` records and layout.pool_pages pages: made anew (nothing
+// held) when either changes.
+void FaceDecision::ensure_pool(fgvk::ExecuteContext& context, std::uint32_t layers,
+                               const DecisionLayout& layout) {
+  const std::uint32_t words = layers * page_slots_;
+  if (tables_ && words == table_words_ && layout.pool_pages == pool_pages_) return;
+  table_words_ = words;
+  pool_pages_ = layout.pool_pages;
+  tables_ = storage(context, VkDeviceSize{words} * 4, 0, ".pageTables");
+  table_sizes_ = storage(context, VkDeviceSize{layers} * 4, 0, ".pageTableSizes");
+  owners_ = storage(context, VkDeviceSize{pool_pages_} * 4, 0, ".poolOwners");
+  ages_ = storage(context, VkDeviceSize{pool_pages_} * 4, 0, ".poolAges");
+  order_ = storage(context, VkDeviceSize{pool_pages_} * 4, 0, ".poolOrder");
+  pool_counters_ =
+      storage(context, kPoolCounterBytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, ".poolCounters");
+  content_cleared_ = false;  // a new pool holds nothing: neither do the pages
 }
 
 void FaceDecision::write_requests(Slot& slot, const AtlasFrame& frame,
@@ -175,11 +229,23 @@ void FaceDecision::reset(fgvk::ExecuteContext& context, const ShadowStaging& sta
   const VkCommandBuffer cmd = context.cmd;
   after_all(cmd, {shadow_in_, needed_, content_, drawn_, args_, stats_},
             VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
+  const std::initializer_list<VkBuffer> pool_buffers = {tables_, table_sizes_, owners_,
+                                                        ages_,   order_,       pool_counters_};
+  if (pool_) {
+    after_all(cmd, pool_buffers, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+              VK_ACCESS_2_TRANSFER_WRITE_BIT);
+    vkCmdFillBuffer(cmd, pool_counters_, 0, VK_WHOLE_SIZE, 0u);
+  }
   copy_shadow_data(cmd, staging, shadow_in_, shadow_data_bytes(layers_));
   vkCmdFillBuffer(cmd, needed_, 0, VK_WHOLE_SIZE, 0u);
   vkCmdFillBuffer(cmd, stats_, 0, VK_WHOLE_SIZE, 0u);
   if (frame.clear_all || !content_cleared_) {
     vkCmdFillBuffer(cmd, content_, 0, VK_WHOLE_SIZE, 0u);
+    // Nothing held: no page is anyone's (the new atlas's texels are undefined).
+    for (const VkBuffer buffer :
+         std::initializer_list<VkBuffer>{tables_, table_sizes_, owners_, ages_}) {
+      if (pool_) vkCmdFillBuffer(cmd, buffer, 0, VK_WHOLE_SIZE, 0u);
+    }
     content_cleared_ = true;
   }
   // Resolves grow to their chunk's largest drawn page and culls by one row of workgroups
@@ -193,6 +259,7 @@ void FaceDecision::reset(fgvk::ExecuteContext& context, const ShadowStaging& sta
   args.back() = glm::uvec4(groups, groups, 0u, 0u);
   vkCmdUpdateBuffer(cmd, args_, 0, args.size() * sizeof(glm::uvec4), args.data());
   transfer_to_compute(cmd, {shadow_in_, needed_, content_, drawn_, args_, stats_});
+  if (pool_) transfer_to_compute(cmd, pool_buffers);
   // Last frame's rasterisation read the lists.
   after_all(cmd, {list_}, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, kStorage);
 }
@@ -211,6 +278,15 @@ void FaceDecision::bind(fgvk::ExecuteContext& context, const ComputePipeline& pi
       .storage_buffer(shared::kDecideList, list_)
       .storage_buffer(shared::kDecideStats, stats_)
       .uniform_buffer(shared::kReceiverFrame, context.frame.frame_uniforms);
+  if (pool_) {
+    descriptors.storage_buffer(shared::kPoolTables, tables_)
+        .storage_buffer(shared::kPoolOwners, owners_)
+        .storage_buffer(shared::kPoolAges, ages_)
+        .storage_buffer(shared::kPoolOrder, order_)
+        .storage_buffer(shared::kPoolCounters, pool_counters_)
+        .storage_buffer(shared::kPoolSizes, table_sizes_)
+        .storage_buffer(shared::kPoolPublished, context.bindings.buffer(port::kPageTables)->buffer);
+  }
   if (&pipeline == &receivers_pipeline_) {
     const fgvk::BoundImage& depth = context.bindings.required_image(port::kDepth);
     descriptors.combined_image_sampler(shared::kReceiverDepth, depth.view,
@@ -223,6 +299,7 @@ void FaceDecision::record(fgvk::ExecuteContext& context, const AtlasFrame& frame
                           const ShadowStaging& staging, const DecisionLayout& layout) {
   const auto layers = static_cast<std::uint32_t>(frame.faces.size());
   ensure_buffers(context, layers, layout);
+  if (pool_) ensure_pool(context, layers, layout);
   Slot& slot = slots_[context.frame.slot];
   write_requests(slot, frame, layout);
   const VkCommandBuffer cmd = context.cmd;
@@ -244,6 +321,9 @@ void FaceDecision::record(fgvk::ExecuteContext& context, const AtlasFrame& frame
   push.page_culling = layout.page_culling ? 1u : 0u;
   push.page_margin = shared::kPageMargin;
   push.page_reach = layout.page_reach;
+  push.table_stride = page_slots_;
+  push.pool_pages = pool_pages_;
+  push.frame_number = static_cast<std::uint32_t>(context.frame.frame_index);
   if (receivers_) {
     const fgvk::BoundImage& depth = context.bindings.required_image(port::kDepth);
     push.depth_size = {depth.extent.width, depth.extent.height};
@@ -255,9 +335,11 @@ void FaceDecision::record(fgvk::ExecuteContext& context, const AtlasFrame& frame
     vkCmdDispatch(cmd, tiles, 1, 1);
     compute_to_compute(cmd, {needed_});
   }
+  if (pool_) reclaim(context, slot, push);
   bind(context, decide_, slot);
   vkCmdPushConstants(cmd, decide_.layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
   vkCmdDispatch(cmd, group_count(std::max(push.copy_vec4s, layers), shared::kDecideGroup), 1, 1);
+  if (pool_) publish(context, slot, push);
   barriers(cmd, {list_, args_, content_, drawn_, stats_}, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
            kStorage, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT,
            VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT);
@@ -266,12 +348,47 @@ void FaceDecision::record(fgvk::ExecuteContext& context, const AtlasFrame& frame
   last_slot_ = context.frame.slot;
 }
 
+// Lines up the pool's pages for the decision (shadow_pool_reclaim.comp): bucket counts,
+// then each page's place after the buckets before its own.
+void FaceDecision::reclaim(fgvk::ExecuteContext& context, Slot& slot, shared::DecisionPush push) {
+  const VkCommandBuffer cmd = context.cmd;
+  const glm::uvec2 groups = pool_groups(pool_pages_);
+  bind(context, reclaim_, slot);
+  for (const std::uint32_t pass : {0u, 1u}) {
+    push.reclaim_pass = pass;
+    vkCmdPushConstants(cmd, reclaim_.layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
+    vkCmdDispatch(cmd, groups.x, groups.y, 1);
+    compute_to_compute(cmd, {pool_counters_, order_, owners_, ages_});
+  }
+  // The decision lays out anew the tables (and what their pages hold) the reclaim read.
+  compute_to_compute(cmd, {tables_, table_sizes_, content_});
+}
+
+// After the decision: drops what was taken or is stale and writes the graph's pageTables
+// (shadow_pool_publish.comp), which the atlas's readers bind.
+void FaceDecision::publish(fgvk::ExecuteContext& context, Slot& slot,
+                           const shared::DecisionPush& push) {
+  const VkCommandBuffer cmd = context.cmd;
+  compute_to_compute(cmd, {tables_, table_sizes_, owners_, ages_, content_, pool_counters_});
+  const glm::uvec2 groups = pool_groups(layers_ * page_slots_);
+  bind(context, publish_, slot);
+  vkCmdPushConstants(cmd, publish_.layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
+  vkCmdDispatch(cmd, groups.x, groups.y, 1);
+  compute_to_compute(cmd, {tables_, owners_, content_});  // the resolve follows the tables
+}
+
 void FaceDecision::finish(fgvk::ExecuteContext& context) {
   Slot& slot = slots_[context.frame.slot];
   barriers(context.cmd, {stats_}, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, kStorage,
            VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
   const VkBufferCopy region{0, 0, kStatBytes};
   vkCmdCopyBuffer(context.cmd, stats_, slot.readback, 1, &region);
+  if (pool_) {
+    barriers(context.cmd, {pool_counters_}, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, kStorage,
+             VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
+    const VkBufferCopy counters{0, kStatBytes, kPoolCounterBytes};
+    vkCmdCopyBuffer(context.cmd, pool_counters_, slot.readback, 1, &counters);
+  }
   barriers(context.cmd, {slot.readback}, VK_PIPELINE_STAGE_2_COPY_BIT,
            VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
   slot.written = true;
@@ -289,6 +406,18 @@ std::optional<FaceDecisionStats> FaceDecision::completed(std::uint32_t slot_inde
   out.receiver_culled = counts[shared::kStatReceivers];
   out.texels = counts[shared::kStatTexels];
   out.pages = counts[shared::kStatPages];
+  if (pool_) {
+    std::uint32_t pool[shared::kPoolCounterCount] = {};
+    std::memcpy(pool, static_cast<const std::byte*>(slot.readback.mapped()) + kStatBytes,
+                sizeof pool);
+    out.pool.pages = pool_pages_;
+    out.pool.kept = pool[shared::kPoolKept];
+    out.pool.missing = pool[shared::kPoolMissing];
+    std::uint32_t lined_up = 0;  // pages the reclaim offered
+    for (std::uint32_t b = 0; b < shared::kPoolBuckets; ++b) lined_up += pool[b];
+    out.pool.taken = std::min(pool[shared::kPoolTaken], lined_up);
+    out.pool.evicted = pool[shared::kPoolEvicted];
+  }
   return out;
 }
 

@@ -19,6 +19,7 @@
 #include "antumbra/gpu/resources.hpp"
 #include "atlas_planner.hpp"
 #include "common/pass_support.hpp"
+#include "face_decision_interface.h"
 #include "shadow_staging.hpp"
 
 namespace antumbra::passes {
@@ -31,6 +32,14 @@ struct FaceDecisionStats {
   std::uint32_t receiver_culled = 0;  // visible to the camera, but no visible pixel needs them
   std::uint64_t texels = 0;           // of the drawn pages
   std::uint32_t pages = 0;            // drawn (face_decision_interface.h, kPageSize)
+  // The page pool (page_pool_interface.h; all 0 without one).
+  struct Pool {
+    std::uint32_t pages = 0;    // in the pool
+    std::uint32_t kept = 0;     // held by a page some visible pixel needs
+    std::uint32_t taken = 0;    // handed to needed pages that had none
+    std::uint32_t missing = 0;  // needed pages left without one (they read as lit)
+    std::uint32_t evicted = 0;  // of those taken, pages another face held
+  } pool;
 };
 
 // Pages per side of a face `size` texels wide (face_decision_interface.h, kPageSize), the
@@ -54,6 +63,7 @@ struct DecisionLayout {
   std::uint32_t cull_groups = 0;  // the cull's workgroups along the clusters
   bool page_culling = true;       // only the needed pages of a needed face
   float page_reach = 1.0f;        // DecisionPush::page_reach
+  std::uint32_t pool_pages = 0;   // the page pool's pages (0: no pool; page_pool_interface.h)
   [[nodiscard]] std::uint32_t chunks() const { return (records + chunk_faces - 1) / chunk_faces; }
   [[nodiscard]] std::uint32_t page_list(std::uint32_t chunk) const {
     return chunks() * chunk_faces + chunk * chunk_faces * page_slots(face_size);
@@ -73,8 +83,10 @@ struct DecisionLayout {
 
 class FaceDecision {
  public:
-  // `receivers`: the G-buffer depth is bound and receiver culling is on.
-  void prepare(fgvk::PrepareContext& context, bool receivers,
+  // `receivers`: the G-buffer depth is bound and receiver culling is on. `pool`: the faces'
+  // pages live in a page pool (page_pool_interface.h), whose tables the decision publishes
+  // into the pass's pageTables output.
+  void prepare(fgvk::PrepareContext& context, bool receivers, bool pool,
                std::vector<std::string>& shader_files, gpu::Fnv1a64& key);
   // Records everything up to the published shadowData and the resolve lists.
   // `staging`: this frame's shadow data as the planner made it (host-visible).
@@ -95,6 +107,9 @@ class FaceDecision {
   [[nodiscard]] VkBuffer drawn_pages() const { return drawn_; }
   [[nodiscard]] std::uint32_t page_words() const { return page_words_; }
   [[nodiscard]] VkBuffer args() const { return args_; }
+  // The page pool's tables (valid after record; kept across frames).
+  [[nodiscard]] VkBuffer tables() const { return tables_; }
+  [[nodiscard]] bool pool() const { return pool_; }
 
  private:
   struct Slot {
@@ -109,6 +124,11 @@ class FaceDecision {
   void reset(fgvk::ExecuteContext& context, const ShadowStaging& staging, const AtlasFrame& frame,
              const DecisionLayout& layout);
   void bind(fgvk::ExecuteContext& context, const ComputePipeline& pipeline, Slot& slot);
+  void ensure_pool(fgvk::ExecuteContext& context, std::uint32_t layers,
+                   const DecisionLayout& layout);
+  // shadow_pool_reclaim.comp's two passes, then (after the decision) the publication.
+  void reclaim(fgvk::ExecuteContext& context, Slot& slot, shared::DecisionPush push);
+  void publish(fgvk::ExecuteContext& context, Slot& slot, const shared::DecisionPush& push);
 
   bool receivers_ = false;
   ComputePipeline receivers_pipeline_;
@@ -129,6 +149,18 @@ class FaceDecision {
   bool content_cleared_ = false;  // content_ starts at zero (nothing held)
   std::vector<Slot> slots_;
   std::uint32_t last_slot_ = 0;
+  // The page pool (page_pool_interface.h).
+  bool pool_ = false;
+  ComputePipeline reclaim_;
+  ComputePipeline publish_;
+  std::uint32_t pool_pages_ = 0;
+  std::uint32_t table_words_ = 0;
+  gpu::Buffer tables_;       // per record: its page table
+  gpu::Buffer table_sizes_;  // per record: the face size its table is laid out for
+  gpu::Buffer owners_;       // per pool page
+  gpu::Buffer ages_;         // per pool page
+  gpu::Buffer order_;        // pool pages in the order they are taken
+  gpu::Buffer pool_counters_;
 };
 
 }  // namespace antumbra::passes

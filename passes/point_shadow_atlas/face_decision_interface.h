@@ -55,6 +55,11 @@ ANTUMBRA_PUSH_CONSTANTS(DecisionPush) {
   uint page_culling;   // 1: only the needed pages of a needed face; 0: all of its pages
   float page_margin;   // texels around a pixel's lookup whose pages it needs
   float page_reach;    // the blocker searches' scale of the light's size the pages cover
+  // The page pool (page_pool_interface.h; PAGE_POOL variants only).
+  uint table_stride;  // page-table words per record
+  uint pool_pages;    // pages in the pool
+  uint frame_number;  // this frame's, for the pages' ages
+  uint reclaim_pass;  // shadow_pool_reclaim.comp: 0 counts the buckets, 1 fills them
 };
 
 ANTUMBRA_BINDING(kDecideShadowIn, 0)   // this frame's shadow data as the CPU wrote it

@@ -5,6 +5,7 @@
 #define ANTUMBRA_PAGES_H
 
 #include "../interface/shared/glsl_cpp.h"
+#include "../interface/shared/page_tables.h"
 
 ANTUMBRA_SHARED_BEGIN
 
@@ -25,7 +26,7 @@ ANTUMBRA_SHARED_BEGIN
 // with far depth (and a white tint) instead of resolving the scratch.
 const uint kEntryPageShift = 16;
 const uint kEntryFill = 0x80000000u;
-const uint kPageShift = 7;
+const uint kPageShift = ANTUMBRA_PAGE_SHIFT;
 const uint kPageSize = 128;  // 1 << kPageShift
 const float kPageMargin = 72.0;
 // The largest atlas face the compute rasteriser takes: its pages (181^2) fit the 15 bits a

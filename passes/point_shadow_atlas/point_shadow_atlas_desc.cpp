@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "common/plan_checks.hpp"
 #include "common/ports.hpp"
@@ -11,6 +12,84 @@
 
 namespace antumbra::passes {
 namespace {
+
+// A reader of a paged atlas that does not bind its tables would read pages as squares.
+void check_pool_readers(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& graph,
+                        base::Diagnostics& diagnostics) {
+  const int atlas = bound_index(pass, port::kAtlas);
+  const int tables = bound_index(pass, port::kPageTables);
+  for (const fg::PlanPass& reader : plan.passes) {
+    if (&reader == &pass) continue;
+    const auto reads = std::find_if(reader.bindings.begin(), reader.bindings.end(),
+                                    [&](const fg::PlanBinding& b) { return b.resource == atlas; });
+    if (reads == reader.bindings.end()) continue;
+    const auto port =
+        std::find_if(reader.bindings.begin(), reader.bindings.end(),
+                     [](const fg::PlanBinding& b) { return b.port == port::kPageTables.name(); });
+    if (port != reader.bindings.end() && port->resource == tables) continue;
+    const std::string atlas_name = plan.resources[static_cast<std::size_t>(atlas)].name;
+    const std::string owner =
+        "the atlas '" + atlas_name + "' is paged (pagePool of '" + pass.name + "')";
+    if (port == reader.bindings.end()) {
+      add_pass_error(graph, reader, codes::graph::kPortUnbound,
+                     owner + ", and a " + reader.type +
+                         " pass has no pageTables input to read its pages through: read an "
+                         "atlas without pagePool",
+                     "/in/" + reads->port, diagnostics);
+    } else {
+      add_pass_error(graph, reader, codes::graph::kPortUnbound,
+                     owner + ": bind its pageTables output '" +
+                         plan.resources[static_cast<std::size_t>(tables)].name +
+                         "' to this pass's pageTables, through which its pages are found",
+                     "/in/pageTables", diagnostics);
+    }
+  }
+}
+
+// pagePool's needs (docs/technique.md, "Page pool").
+void check_pool(const fg::PlanPass& pass, const PointShadowAtlasParams& params,
+                const fg::PlanResource& atlas, const fg::Plan& plan, const fg::GraphDesc& graph,
+                base::Diagnostics& diagnostics) {
+  if (!params.page_pool) return;
+  std::vector<std::string> wants;
+  if (params.rasterizer != ShadowRasterizer::compute) {
+    wants.emplace_back("rasterizer \"compute\" (its resolve writes the pool's pages)");
+  }
+  if (atlas.format != fg::Format::r32f) wants.emplace_back("an r32f atlas");
+  if (!params.receiver_culling || !params.receiver_pages || bound_index(pass, port::kDepth) < 0) {
+    wants.emplace_back(
+        "receiverCulling and receiverPages with `depth` bound (a page gets a place when a "
+        "visible pixel needs it)");
+  }
+  const std::uint32_t size = atlas.extent.width;
+  if (size != atlas.extent.height || size % shared::kPageSize != 0 || size > 4096) {
+    wants.emplace_back("a square atlas of whole " + std::to_string(shared::kPageSize) +
+                       "-texel pages, at most 4096 wide (it is " + std::to_string(size) + "x" +
+                       std::to_string(atlas.extent.height) + ")");
+  }
+  const fg::PlanResource* tables = bound_resource(pass, plan, port::kPageTables);
+  if (tables == nullptr)
+    wants.emplace_back("`pageTables` bound (the readers find pages through it)");
+  for (const std::string& want : wants) {
+    add_pass_error(graph, pass, codes::graph::kParamRange, "pagePool needs " + want,
+                   "/params/pagePool", diagnostics);
+  }
+  if (tables == nullptr) return;
+  const fg::PlanResource* data = bound_resource(pass, plan, port::kShadowData);
+  const std::uint64_t side = (size + shared::kPageSize - 1) / shared::kPageSize;
+  const std::uint64_t needed =
+      std::uint64_t{face_records(data != nullptr ? data->buffer_size : 0, atlas.layers)} * side *
+      side * 4;
+  if (tables->buffer_size < needed) {
+    add_pass_error(graph, pass, codes::shadow_atlas::kShadowDataTooSmall,
+                   "the pageTables buffer '" + tables->name + "' holds " +
+                       std::to_string(tables->buffer_size) + " bytes; a table of " +
+                       std::to_string(side * side) + " words for each face record needs " +
+                       std::to_string(needed),
+                   "/out/pageTables", diagnostics);
+  }
+  check_pool_readers(pass, plan, graph, diagnostics);
+}
 
 // Buffer and colour-map sizes against the atlas: compiler checks, so validate sees them.
 void check(const fg::PlanPass& pass, const PointShadowAtlasParams& params, const fg::Plan& plan,
@@ -58,6 +137,7 @@ void check(const fg::PlanPass& pass, const PointShadowAtlasParams& params, const
                        ": make it d32f or d16, or use rasterizer \"compute\"",
                    "/params/rasterizer", diagnostics);
   }
+  check_pool(pass, params, *atlas, plan, graph, diagnostics);
   const std::uint32_t minimum = params.min_resolution;
   if ((minimum & (minimum - 1)) != 0) {
     add_pass_error(graph, pass, codes::graph::kParamRange,
@@ -73,8 +153,8 @@ void check(const fg::PlanPass& pass, const PointShadowAtlasParams& params, const
 std::optional<fg::PortUse> port_use(const fg::PortDesc& port, const PointShadowAtlasParams& params,
                                     fg::Format format) {
   if (params.rasterizer != ShadowRasterizer::compute) return std::nullopt;
-  // The GPU's face decision publishes the shadow data (face_decision.hpp).
-  if (port.name == port::kShadowData.name()) {
+  // The GPU's face decision publishes the shadow data and the page tables (face_decision.hpp).
+  if (port.name == port::kShadowData.name() || port.name == port::kPageTables.name()) {
     return fg::PortUse{fg::Access::storage_write, fg::Stage::compute};
   }
   const bool storage = (port.name == port::kAtlas.name() && format == fg::Format::r32f) ||
@@ -159,6 +239,16 @@ fg::PassDesc PointShadowAtlasPass::describe() {
            "64 * 4096 + 80 * layers bytes, one record per layer. Faces smaller than a layer "
            "share layers, so more records (80 bytes each, up to 6 per light) let more lights "
            "cast shadows than the layers hold whole faces."},
+      {.name = port::kPageTables,
+       .direction = PortDirection::output,
+       .kind = ResourceKind::buffer,
+       .access = Access::storage_write,
+       .stage = Stage::compute,
+       .optional = true,
+       .description =
+           "With pagePool: each face record's page table (passes/interface/shared/"
+           "page_tables.h), 4 bytes per 128^2 page of an atlas face per record (records x "
+           "(size / 128)^2 x 4). Every pass that reads the atlas binds it."},
   };
   const auto& table = param_table();
   desc.params = table.descs();
@@ -224,6 +314,18 @@ void add_face_choice_params(fg::ParamTable<PointShadowAtlasParams>& table) {
                 "lightSizeScale 1; set it to at least their product). Larger values draw "
                 "more pages."},
            &PointShadowAtlasParams::page_reach)
+      .add({.name = "pagePool",
+            .type = fg::ParamType::boolean,
+            .default_value = false,
+            .description =
+                "The atlas's layers become one pool of 128^2 pages, and a light's faces "
+                "(each its own size, up to the atlas's) take pages only where a visible "
+                "pixel needs them, through page tables (`pageTables`, which every reader of "
+                "the atlas binds). A full pool gives the least recently needed pages to the "
+                "needed ones; a needed page left without one reads as lit, and SHD010 counts "
+                "it. Needs rasterizer \"compute\", an r32f square atlas, receiverCulling "
+                "and receiverPages with `depth` bound (docs/technique.md, \"Page pool\")."},
+           &PointShadowAtlasParams::page_pool)
       .choice(
           {.name = "resolution",
            .type = fg::ParamType::enumeration,

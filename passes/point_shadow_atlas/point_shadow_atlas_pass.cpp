@@ -180,6 +180,9 @@ void PointShadowAtlasPass::prepare(fgvk::PrepareContext& context) {
   settings_.gpu_decides = compute && params_.receiver_culling &&
                           context.bindings.image(port::kDepth) != nullptr &&
                           atlas.format == VK_FORMAT_R32_SFLOAT;
+  // The compiler refuses a pool without these (point_shadow_atlas_desc.cpp, FG033).
+  settings_.page_pool = params_.page_pool && settings_.gpu_decides &&
+                        context.bindings.buffer(port::kPageTables) != nullptr;
   name_ = context.pass.name;
 
   shader_files_.clear();
@@ -203,12 +206,13 @@ void PointShadowAtlasPass::prepare(fgvk::PrepareContext& context) {
                                  compute,
                                  settings_.gpu_decides,
                                  settings_.adaptive_resolution,
-                                 static_cache_enabled_};
+                                 static_cache_enabled_,
+                                 settings_.page_pool};
   key.update(shape, sizeof shape).update(flags, sizeof flags);
   depth_pipeline_ = {};
   colour_pipeline_ = {};
   if (compute) {
-    compute_.prepare(context, settings_.gpu_decides, shader_files_, key);
+    compute_.prepare(context, settings_.gpu_decides, settings_.page_pool, shader_files_, key);
   } else {
     prepare_hardware(context, atlas, colour, key);
   }
@@ -384,7 +388,8 @@ void PointShadowAtlasPass::execute(fgvk::ExecuteContext& context) {
                       .slope_bias = params_.slope_bias,
                       .tint = colour_,
                       .pages = params_.receiver_pages,
-                      .page_reach = params_.page_reach},
+                      .page_reach = params_.page_reach,
+                      .pool_pages = pool_pages()},
                      {slot.staging, lights_high_});
     return;
   }
@@ -563,6 +568,7 @@ fgvk::PassMessage PointShadowAtlasPass::face_stats(
     details["pages"] = g.pages;
     details["receiverPages"] = params_.receiver_pages;
     details["statsFrame"] = gpu ? base::Json(g.frame_index) : base::Json(nullptr);
+    if (settings_.page_pool) details["pool"] = pool_details(g.pool);
     text = "shadow faces: " + std::to_string(s.total) + " total, " + std::to_string(culled) +
            " culled (" + std::to_string(g.receiver_culled) + " without a visible receiver), " +
            std::to_string(g.drawn) + " rendered (" + std::to_string(g.pages) + " pages), " +
@@ -571,6 +577,24 @@ fgvk::PassMessage PointShadowAtlasPass::face_stats(
                 : " (GPU counts pending)");
   }
   return {pass, codes::shadow_atlas::kFaceStats, base::Severity::note, text, std::move(details)};
+}
+
+std::uint32_t PointShadowAtlasPass::pool_pages() const {
+  if (!settings_.page_pool) return 0;
+  const std::uint32_t side = settings_.face_size >> shared::kPageShift;
+  return settings_.layers * side * side;
+}
+
+// SHD010's `pool`: the page pool's pages and what the GPU did with them (face_decision.hpp).
+base::Json PointShadowAtlasPass::pool_details(const FaceDecisionStats::Pool& pool) const {
+  const std::uint64_t page_bytes = std::uint64_t{shared::kPageSize} * shared::kPageSize * 4;
+  return base::Json::object({{"pages", pool.pages},
+                             {"bytes", pool.pages * page_bytes},
+                             {"needed", pool.kept + pool.taken + pool.missing},
+                             {"kept", pool.kept},
+                             {"taken", pool.taken},
+                             {"evicted", pool.evicted},
+                             {"missing", pool.missing}});
 }
 
 // How many shadowed lights have each face size (per-light resolution), e.g. {"256": 3}.

@@ -51,6 +51,7 @@ struct PointShadowAtlasParams {
   bool receiver_culling = true;
   bool receiver_pages = true;
   float page_reach = 1.0f;
+  bool page_pool = false;
   FaceResolution resolution = FaceResolution::fixed;
   float resolution_scale = 1.0f;
   std::uint32_t min_resolution = 64;
@@ -90,6 +91,9 @@ class PointShadowAtlasPass final : public fgvk::Pass {
   void upload(fgvk::ExecuteContext& context, const AtlasFrame& frame, SlotBuffers& slot);
   // SHD010: the planner's counts, and the GPU's decision of an earlier frame (compute).
   [[nodiscard]] base::Json face_sizes() const;
+  // The page pool's pages (0 without one) and SHD010's account of them.
+  [[nodiscard]] std::uint32_t pool_pages() const;
+  [[nodiscard]] base::Json pool_details(const FaceDecisionStats::Pool& pool) const;
   void report_fit(fgvk::ExecuteContext& context, const AtlasFrame& frame);
   [[nodiscard]] fgvk::PassMessage face_stats(const std::string& pass,
                                              const std::optional<FaceDecisionStats>& gpu) const;

@@ -62,6 +62,10 @@ uint content_base(uint layer) {
   return layer * (1u + 2u * page_words);
 }
 
+#ifdef PAGE_POOL
+#include "page_pool.glsl"
+#endif
+
 // This invocation's layer, its request and its pages.
 uint g_layer;
 FaceRequest g_request;
@@ -92,6 +96,50 @@ uint filled_bits(uint w) {
   return g_held ? content[content_base(g_layer) + 1u + page_words + w] : 0u;
 }
 
+#ifdef PAGE_POOL
+// Page pool (page_pool_interface.h): the pages shadow_pool_reclaim.comp lined up.
+uint pool_available() {
+  uint n = 0u;
+  for (uint b = 0u; b < kPoolBuckets; ++b) n += pool_counters[b];
+  return n;
+}
+
+// Of the pages `draw` (bits of word w), those that have a pool page, after handing each one
+// without a page the next lined-up pool page while there is one. The page's former owner
+// keeps its table entry until shadow_pool_publish.comp sees the page is no longer its own.
+uint map_pages(uint w, uint draw) {
+  uint mapped = 0u;
+  for (uint bits = draw; bits != 0u; bits &= bits - 1u) {
+    uint k = w * 32u + uint(findLSB(bits));
+    uint word = g_layer * table_stride + k;
+    if (tables[word] == 0u) {
+      uint at = atomicAdd(pool_counters[kPoolTaken], 1u);
+      if (at >= pool_available()) {
+        atomicAdd(pool_counters[kPoolMissing], 1u);
+        continue;
+      }
+      uint page = order[at];
+      if (owners[page] != 0u) atomicAdd(pool_counters[kPoolEvicted], 1u);
+      owners[page] = word + 1u;
+      ages[page] = frame_number;
+      tables[word] = page + 1u;
+    }
+    mapped |= 1u << (k & 31u);
+  }
+  return mapped;
+}
+
+// The pages of `draw` that have a pool page (after map_pages).
+uint mapped_bits(uint w, uint draw) {
+  uint mapped = 0u;
+  for (uint bits = draw; bits != 0u; bits &= bits - 1u) {
+    uint k = w * 32u + uint(findLSB(bits));
+    if (tables[g_layer * table_stride + k] != 0u) mapped |= 1u << (k & 31u);
+  }
+  return mapped;
+}
+#endif
+
 // What this frame draws and fills of a candidate's pages (bits per word, counted), and
 // whether the pages anyone reads (the needed ones, all when none is) hold the face's
 // epoch before drawing.
@@ -100,10 +148,11 @@ struct Survey {
   uint filled;
   uint texels;
   bool read_current;
+  bool missing;  // a needed page found no pool page
 };
 
 Survey survey(bool candidate) {
-  Survey r = Survey(0u, 0u, 0u, true);
+  Survey r = Survey(0u, 0u, 0u, true, false);
   for (uint w = 0u; w < page_words; ++w) {
     uint need = needed_bits(w);
     uint current = current_bits(w);
@@ -111,8 +160,14 @@ Survey survey(bool candidate) {
     if ((read & ~current) != 0u) r.read_current = false;
     if (!candidate) continue;
     uint draw = need & ~current;
-    r.drawn += uint(bitCount(draw));
+#ifdef PAGE_POOL
+    uint mapped = map_pages(w, draw);
+    r.missing = r.missing || mapped != draw;
+    draw = mapped;
+#else
     r.filled += uint(bitCount(valid_bits(w) & ~need & ~current & ~filled_bits(w)));
+#endif
+    r.drawn += uint(bitCount(draw));
     if (g_request.size % kPageSize == 0u || g_pages == 1u) {
       uint side = min(g_request.size, kPageSize);
       r.texels += uint(bitCount(draw)) * side * side;
@@ -123,7 +178,7 @@ Survey survey(bool candidate) {
     }
   }
   // A candidate draws every needed page it lacks: afterwards they all hold its epoch.
-  if (candidate && r.drawn > 0u) r.read_current = true;
+  if (candidate && r.drawn > 0u && !r.missing) r.read_current = true;
   // Only a face drawn now changes what its other pages mean.
   if (r.drawn == 0u) r.filled = 0u;
   return r;
@@ -146,8 +201,13 @@ void draw_pages(uint record, Survey r) {
     uint current = current_bits(w);
     uint filled = filled_bits(w);
     uint draw = need & ~current;
-    // Nobody reads these now: far depth, not an older frame's or another face's.
+    // Nobody reads these now: far depth, not an older frame's or another face's (a pool's
+    // face has no page there: its lookups read far depth).
     uint fill = valid_bits(w) & ~need & ~current & ~filled;
+#ifdef PAGE_POOL
+    draw = mapped_bits(w, draw);
+    fill = 0u;
+#endif
     for (uint bits = draw; bits != 0u; bits &= bits - 1u) {
       list[at++] = record | ((w * 32u + uint(findLSB(bits))) << kEntryPageShift);
     }
@@ -199,6 +259,13 @@ void main() {
   g_pages_x = (g_request.size + kPageSize - 1u) >> kPageShift;
   g_pages = min(g_pages_x * g_pages_x, page_slots);
   g_held = content[content_base(i)] == g_request.epoch;
+#ifdef PAGE_POOL
+  if (table_sizes[i] != g_request.size) {
+    // Laid out anew: its pages went back to the pool (shadow_pool_reclaim.comp).
+    for (uint k = 0u; k < table_stride; ++k) tables[i * table_stride + k] = 0u;
+    table_sizes[i] = g_request.size;
+  }
+#endif
   g_any_needed = receivers == 0u;
   for (uint w = 0u; w < page_words && !g_any_needed; ++w) {
     g_any_needed = needed[i * page_words + w] != 0u;

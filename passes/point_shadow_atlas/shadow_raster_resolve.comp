@@ -26,6 +26,12 @@ layout(std430, binding = kRasterDepth) buffer Depth {
 };
 layout(binding = kRasterAtlas, r32f) uniform writeonly image2DArray atlas;
 #endif
+#ifdef PAGE_POOL
+// The page tables (page_pool_interface.h): a face's pages go to their pool pages.
+layout(std430, binding = kRasterPoolTables) readonly buffer PoolTables {
+  uint tables[];
+};
+#endif
 #ifdef WRITE_COLOUR
 layout(std430, binding = kRasterTint) buffer Tint {
   uint tint[];
@@ -44,13 +50,23 @@ void main() {
       uvec2(page % pages_x, page / pages_x) * (1u << kRasterRegionShift) + gl_GlobalInvocationID.xy;
   if (p.x >= size || p.y >= size) return;
   if (any(greaterThanEqual(gl_GlobalInvocationID.xy, uvec2(1u << kRasterRegionShift)))) return;
-  // Its square at its place (shadow_data.h, ShadowFace.info.y).
   uint place = face.info.x;
+#ifdef PAGE_POOL
+  // Its pool page (the record's table starts at place >> ANTUMBRA_FACE_LAYER_SHIFT).
+  uint pool_entry = tables[(place >> ANTUMBRA_FACE_LAYER_SHIFT) + page];
+  if (pool_entry == 0u) return;
+  uint per_layer = pool_side * pool_side;
+  uint in_layer = (pool_entry - 1u) % per_layer;
+  uvec2 corner = uvec2(in_layer % pool_side, in_layer / pool_side) << kRasterRegionShift;
+  ivec3 texel = ivec3(ivec2(corner + gl_GlobalInvocationID.xy), int((pool_entry - 1u) / per_layer));
+#else
+  // Its square at its place (shadow_data.h, ShadowFace.info.y).
   uint cell_mask = (1u << ANTUMBRA_FACE_CELL_BITS) - 1u;
   uvec2 cell = uvec2(place >> ANTUMBRA_FACE_COLUMN_SHIFT, place >> ANTUMBRA_FACE_ROW_SHIFT) &
                uvec2(cell_mask);
   uint layer = (place >> ANTUMBRA_FACE_LAYER_SHIFT) & ((1u << ANTUMBRA_FACE_LAYER_BITS) - 1u);
   ivec3 texel = ivec3(ivec2(cell * size + p), int(layer));
+#endif
 #ifdef WRITE_DEPTH
   uint at = face.info.y + p.y * size + p.x;
   if (fill) {

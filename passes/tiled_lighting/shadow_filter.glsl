@@ -35,6 +35,10 @@ struct FilterCoord {
   vec2 origin;  // and its corner
   float scale;  // ShadowLight.projection.x: 1 point, tan(half fov) spot, half width sun
   bool ortho;   // directional light: depth linear in metres (0 at near, far at 1)
+#ifdef SHADOW_PAGE_TABLES
+  int table;     // a paged face's table (ShadowCoord.table), else -1
+  float texels;  // its size in texels
+#endif
 };
 
 vec3 filter_project(mat4 view_proj, vec3 p) {
@@ -46,8 +50,13 @@ vec3 filter_project(mat4 view_proj, vec3 p) {
 // (orthographic): the caller treats the point as lit. `layer` is shadow_pick's (face
 // choice, cascades); projection is shadow_sampling.glsl's.
 bool filter_coord(ShadowLight light, int layer, vec3 p_world, vec3 n_world, out FilterCoord c) {
+#ifdef SHADOW_PAGE_TABLES
+  c = FilterCoord(vec2(0.0), 0.0, 0.0, vec2(0.0), 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, vec2(0.0), 1.0,
+                  false, -1, 1.0);
+#else
   c = FilterCoord(vec2(0.0), 0.0, 0.0, vec2(0.0), 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, vec2(0.0), 1.0,
                   false);
+#endif
   if (layer < 0) return false;
   mat4 view_proj = shadow_faces[layer].view_proj;
   ShadowLight sl = shadow_face_light(light, view_proj);
@@ -61,6 +70,10 @@ bool filter_coord(ShadowLight light, int layer, vec3 p_world, vec3 n_world, out 
   c.far = sl.position_range.w;
   c.texel = 1.0 / shadow_face_texels(sl, float(textureSize(atlas, 0).x));
   c.share = base.share;
+#ifdef SHADOW_PAGE_TABLES
+  c.table = base.table;
+  c.texels = base.texels;
+#endif
   c.origin = base.origin;
   c.scale = sl.projection.x;
   c.ortho = shadow_is_ortho(sl);
@@ -96,6 +109,9 @@ bool filter_coord(ShadowLight light, int layer, vec3 p_world, vec3 n_world, out 
 float filter_fetch(FilterCoord c, inout vec2 offset) {
   vec2 uv = clamp(c.uv + offset, vec2(0.5 * c.texel), vec2(1.0 - 0.5 * c.texel));
   offset = uv - c.uv;
+#ifdef SHADOW_PAGE_TABLES
+  if (c.table >= 0) return shadow_page_depth(atlas, c.table, c.texels, uv);
+#endif
   return textureLod(atlas, vec3(uv * c.share + c.origin, c.layer), 0.0).r;
 }
 

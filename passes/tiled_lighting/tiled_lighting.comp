@@ -33,6 +33,12 @@ layout(set = 0, binding = kTiledHdr, HDR_FORMAT) uniform writeonly image2D out_h
 #if HAS_ATLAS
 #include "../interface/shared/shadow_data.h"
 layout(set = 0, binding = kTiledAtlas) uniform sampler2DArray atlas;
+#ifdef SHADOW_PAGE_TABLES
+// A paged atlas's tables (interface/shared/page_tables.h).
+layout(set = 0, binding = kTiledPageTables) readonly buffer PageTables {
+  uint page_tables[];
+};
+#endif
 layout(set = 0, binding = kTiledShadowData, std430) readonly buffer ShadowData {
   ShadowHeader shadow_header;
   ShadowLight shadow_lights[ANTUMBRA_MAX_SHADOW_LIGHTS];

@@ -32,6 +32,7 @@ std::vector<fg::PortDesc> atlas_ports(bool optional) {
        .stage = Stage::compute,
        .optional = optional,
        .description = "Per-light atlas slots and face matrices (interface/shared/shadow_data.h)."},
+      page_tables_input(),
   };
 }
 

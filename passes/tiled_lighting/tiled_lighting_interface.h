@@ -35,6 +35,8 @@ ANTUMBRA_BINDING(kTiledPenumbraMap, 15)
 ANTUMBRA_BINDING(kTiledPeeled, 16)
 // HAS_EMISSIVE: the G-buffer's emission and occlusion.
 ANTUMBRA_BINDING(kTiledEmissive, 17)
+// A paged atlas's tables (interface/shared/page_tables.h; SHADOW_PAGE_TABLES).
+ANTUMBRA_BINDING(kTiledPageTables, 18)
 
 ANTUMBRA_PUSH_CONSTANTS(TiledLightingPush) {
   float exposure;

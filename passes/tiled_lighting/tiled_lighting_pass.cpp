@@ -96,6 +96,8 @@ void TiledLightingPass::prepare(fgvk::PrepareContext& context) {
   if (has_atlas_)
     builder.combined_image_sampler(shared::kTiledAtlas, kComp)
         .storage_buffer(shared::kTiledShadowData, kComp);
+  page_tables_ = has_atlas_ && b.buffer(port::kPageTables) != nullptr;
+  if (page_tables_) builder.storage_buffer(shared::kTiledPageTables, kComp);
   if (mode_ == ShadowMode::layered) {
     builder.storage_buffer(shared::kTiledLayerTable, kComp)
         .combined_image_sampler(shared::kTiledShadow, kComp);
@@ -118,7 +120,7 @@ void TiledLightingPass::prepare(fgvk::PrepareContext& context) {
   layout_ = gpu::create_pipeline_layout(context.gpu, sets, push, context.pass.name + ".layout");
 
   const auto hdr_format = b.required_image(port::kHdr).format;
-  const std::vector<gpu::ShaderDefine> defines{
+  std::vector<gpu::ShaderDefine> defines{
       {"SHADOW_MODE", std::to_string(static_cast<int>(mode_))},
       {"HAS_ATLAS", has_atlas_ ? "1" : "0"},
       {"ATLAS_D16",
@@ -138,6 +140,7 @@ void TiledLightingPass::prepare(fgvk::PrepareContext& context) {
       {"WEDGE_RECEIVER", params_.wedge_receiver ? "1" : "0"},
       {"HAS_EMISSIVE", has_emissive_ ? "1" : "0"},
   };
+  if (page_tables_) defines.push_back({"SHADOW_PAGE_TABLES", "1"});
   shader_files_.clear();
   auto module = load_shader(context, "tiled_lighting/tiled_lighting.comp", shader_files_, defines);
   check_shader_interface(context.pass.name, module, builder, sizeof(TiledLightingPush));
@@ -171,6 +174,9 @@ void TiledLightingPass::execute(fgvk::ExecuteContext& context) {
     const auto& atlas = b.required_image(port::kAtlas);
     descriptors.combined_image_sampler(shared::kTiledAtlas, atlas.array_view, nearest, atlas.layout)
         .storage_buffer(shared::kTiledShadowData, b.buffer(port::kShadowData)->buffer);
+  }
+  if (page_tables_) {
+    descriptors.storage_buffer(shared::kTiledPageTables, b.buffer(port::kPageTables)->buffer);
   }
   if (mode_ == ShadowMode::layered) {
     const auto& shadow = b.required_image(port::kShadow);

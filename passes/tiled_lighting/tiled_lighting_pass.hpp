@@ -86,6 +86,7 @@ class TiledLightingPass final : public fgvk::Pass {
   TiledLightingParams params_;
   ShadowMode mode_;
   bool has_atlas_ = false;
+  bool page_tables_ = false;  // `pageTables` bound: the atlas is paged
   bool has_colour_ = false;
   bool has_hard_bits_ = false;  // layered: full-resolution hard bits for sharp edges
   bool has_moments_ = false;    // vsm .. vssm: the filtered moment map

@@ -96,10 +96,16 @@ class AtlasGpuTest : public gpu::testing::GpuTest {
   // and `receivers`: the G-buffer depth bound (receiver culling).
   void load_compute(const char* file, std::uint32_t face, const base::Json& params,
                     bool receivers) {
+    load_desc(compute_graph(file, face, params, receivers));
+  }
+  // `file` with its atlas r32f of `face` texels, drawn by the compute rasteriser with
+  // `params` (and the G-buffer depth bound when `receivers`).
+  fg::GraphDesc compute_graph(const char* file, std::uint32_t face, const base::Json& params,
+                              bool receivers) {
     auto document = base::load_json_file((source_dir() / file).string());
-    ASSERT_TRUE(document.ok());
+    EXPECT_TRUE(document.ok()) << file;
     auto graph = fg::parse_graph(document.value());
-    ASSERT_TRUE(graph.ok());
+    EXPECT_TRUE(graph.ok()) << file;
     for (auto& r : graph.value().resources) {
       if (r.name == "atlas") r.format = fg::Format::r32f;
       if (r.name == "atlas" || r.name == "shadowColour") r.size = {false, 1.0, 1.0, face, face};
@@ -111,7 +117,7 @@ class AtlasGpuTest : public gpu::testing::GpuTest {
       p.params.update(params);
       if (receivers) p.inputs.push_back({"depth", "depth", p.pointer + "/in/depth"});
     }
-    load_desc(graph.value());
+    return std::move(graph.value());
   }
   // Compiles a graph at kViewport and runs it on the executor with the fixture's scene.
   void load_desc(const fg::GraphDesc& graph) {

@@ -1,0 +1,55 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+#include "face_decision_interface.h"
+#include "page_pool_interface.h"
+
+// Publishes the page tables the readers bind (docs/technique.md, "Page pool"): one thread
+// per table word. An entry whose pool page another face took this frame, or freed as
+// stale, is dropped with its page's "holds the epoch" bit; an entry whose page does not
+// hold its face's current depth (the face changed and the page was not drawn again) is
+// dropped and its page freed. So every published entry names a page holding this frame's
+// depth of its face, and a lookup without a page reads far depth (lit).
+
+layout(local_size_x = kPoolGroup) in;
+
+layout(std430, binding = kDecideRequests) readonly buffer Requests {
+  FaceRequest requests[];
+};
+layout(std430, binding = kDecideNeeded) readonly buffer Needed {
+  uint needed[];
+};
+layout(std430, binding = kDecideContent) buffer Content {
+  uint content[];
+};
+
+// shadow_face_decide.comp's layout of `content`.
+uint content_base(uint layer) {
+  return layer * (1u + 2u * page_words);
+}
+
+#include "page_pool.glsl"
+
+layout(std430, binding = kPoolPublished) writeonly buffer Published {
+  uint published[];
+};
+
+void main() {
+  uint word = pool_thread();
+  if (word >= layers * table_stride) return;
+  uint entry = tables[word];
+  if (entry != 0u) {
+    uint record = word / table_stride;
+    uint k = word % table_stride;
+    uint base = content_base(record);
+    uint bits = base + 1u + (k >> 5u);
+    bool owned = owners[entry - 1u] == word + 1u;
+    bool current = content[base] == requests[record].epoch && page_bit(content[bits], k);
+    if (!owned || !current) {
+      if (owned) owners[entry - 1u] = 0u;
+      atomicAnd(content[bits], ~(1u << (k & 31u)));
+      tables[word] = 0u;
+      entry = 0u;
+    }
+  }
+  published[word] = entry;
+}

@@ -1,0 +1,214 @@
+// The page pool (point-shadow-atlas `pagePool`; docs/technique.md, "Page pool") on a
+// device (lavapipe in CI, validation and synchronization validation on): faces take
+// 128^2 pages of the atlas's layers only where a visible pixel needs them, through page
+// tables every reader binds, and light the scene as faces in squares do; a pool too small
+// for the view leaves pages without a place, which read as lit (never another face's
+// depth); settings the pool cannot work with are compiler errors.
+
+#include <algorithm>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/gtc/packing.hpp>
+
+#include "atlas_gpu_fixture.hpp"
+
+namespace {
+
+// 512-texel faces: 4 x 4 pages of 128^2 per face, 16 per layer.
+constexpr std::uint32_t kPoolFace = 512;
+constexpr std::uint32_t kPagesPerLayer = (kPoolFace / 128) * (kPoolFace / 128);
+
+struct PoolCounts {
+  std::uint32_t pages = 0, kept = 0, taken = 0, missing = 0, evicted = 0, drawn = 0;
+};
+
+class PagePoolGpuTest : public AtlasGpuTest {
+ protected:
+  // `file` on the compute rasteriser with receiver pages, its atlas `layers` deep; with
+  // `pool`, a page pool whose tables its atlas readers bind.
+  fg::GraphDesc pool_graph(const char* file, bool pool, std::uint32_t layers = 0) {
+    fg::GraphDesc graph = compute_graph(file, kPoolFace, {{"pagePool", pool}}, true);
+    for (auto& r : graph.resources) {
+      if (layers > 0 && (r.name == "atlas" || r.name == "shadowColour")) r.layers = layers;
+    }
+    if (!pool) return graph;
+    fg::ResourceDesc tables;
+    tables.name = "pageTables";
+    tables.kind = fg::ResourceKind::buffer;
+    tables.buffer_size = 96 * kPagesPerLayer * 4;  // the graphs' 96 face records
+    tables.pointer = "/resources/pageTables";
+    graph.resources.push_back(tables);
+    for (auto& p : graph.passes) {
+      if (p.type == "point-shadow-atlas") {
+        p.outputs.push_back({"pageTables", "pageTables", p.pointer + "/out/pageTables"});
+        continue;
+      }
+      const bool reads_atlas = std::any_of(p.inputs.begin(), p.inputs.end(),
+                                           [](const auto& in) { return in.resource == "atlas"; });
+      if (reads_atlas && has_page_tables(p.type)) {
+        p.inputs.push_back({"pageTables", "pageTables", p.pointer + "/in/pageTables"});
+      }
+    }
+    return graph;
+  }
+
+  // Whether passes of `type` can read a paged atlas (have a pageTables input).
+  bool has_page_tables(const std::string& type) const {
+    const fg::PassDesc* desc = registry_->reflection().find(type);
+    return desc != nullptr && std::any_of(desc->ports.begin(), desc->ports.end(),
+                                          [](const auto& p) { return p.name == "pageTables"; });
+  }
+
+  PoolCounts pool_frame() {
+    const base::Json d = face_stats_frame();
+    PoolCounts c;
+    c.drawn = d["pages"].get<std::uint32_t>();
+    if (!d.contains("pool")) return c;
+    const base::Json& p = d["pool"];
+    c.pages = p["pages"].get<std::uint32_t>();
+    c.kept = p["kept"].get<std::uint32_t>();
+    c.taken = p["taken"].get<std::uint32_t>();
+    c.missing = p["missing"].get<std::uint32_t>();
+    c.evicted = p["evicted"].get<std::uint32_t>();
+    return c;
+  }
+
+  auto compile_graph(const fg::GraphDesc& graph) {
+    fg::CompileOptions options;
+    options.viewport = {kViewport.width, kViewport.height};
+    return fg::compile(graph, registry_->reflection(), options);
+  }
+};
+
+// The brightness of every pixel of an rgba16f image.
+std::vector<float> luminance(const std::vector<std::uint16_t>& hdr) {
+  std::vector<float> out;
+  for (std::size_t i = 0; i + 3 < hdr.size(); i += 4) {
+    out.push_back(glm::unpackHalf1x16(hdr[i]) + glm::unpackHalf1x16(hdr[i + 1]) +
+                  glm::unpackHalf1x16(hdr[i + 2]));
+  }
+  return out;
+}
+
+}  // namespace
+
+// A pool as large as the atlas holds every needed page: hard shadows (one texel a lookup)
+// and layered SSSS (blocker searches, ESM, tints) light the atrium exactly as faces in
+// squares do, and every page drawn took a place in the pool.
+TEST_F(PagePoolGpuTest, PagedFacesLightAsSquaresDo) {
+  for (const char* file : {"data/graphs/hard.json", "data/graphs/layered-ssss.json"}) {
+    load_desc(pool_graph(file, false));
+    const PoolCounts squares = pool_frame();
+    const auto expected = read_hdr();
+    load_desc(pool_graph(file, true));
+    const PoolCounts paged = pool_frame();
+    EXPECT_EQ(paged.pages, 96 * kPagesPerLayer) << file << ": the graph's 96 layers";
+    EXPECT_EQ(paged.drawn, squares.drawn) << file << ": the same pages are needed";
+    EXPECT_GT(paged.taken, 0u) << file;
+    EXPECT_EQ(paged.taken, paged.drawn) << file << ": a first frame draws every page it takes";
+    EXPECT_EQ(paged.missing, 0u) << file;
+    EXPECT_EQ(read_hdr(), expected) << file;
+    // The next frame finds every needed page in place.
+    const PoolCounts second = pool_frame();
+    EXPECT_EQ(second.kept, paged.taken) << file;
+    EXPECT_EQ(second.taken, 0u) << file;
+    EXPECT_EQ(second.drawn, 0u) << file << ": nothing moved";
+    EXPECT_EQ(read_hdr(), expected) << file;
+  }
+}
+
+// Six layers of 16 pages hold fewer pages than the view needs: the pages left without a
+// place are counted and read as lit, so no pixel is darker than with every page drawn,
+// and the frames after keep what they hold (no page changes hands back and forth).
+TEST_F(PagePoolGpuTest, ASmallPoolCountsWhatIsMissingAndNeverDarkens) {
+  load_desc(pool_graph("data/graphs/hard.json", true));
+  const PoolCounts full = pool_frame();
+  const auto lit = luminance(read_hdr());
+  load_desc(pool_graph("data/graphs/hard.json", true, 6));
+  const PoolCounts small = pool_frame();
+  EXPECT_EQ(small.pages, 6 * kPagesPerLayer);
+  ASSERT_GT(full.taken, small.pages) << "the view needs more pages than six layers hold";
+  EXPECT_EQ(small.taken, small.pages);
+  EXPECT_EQ(small.missing, full.taken - small.pages);
+  const auto partial = luminance(read_hdr());
+  ASSERT_EQ(partial.size(), lit.size());
+  std::size_t lighter = 0;
+  for (std::size_t i = 0; i < lit.size(); ++i) {
+    EXPECT_GE(partial[i], lit[i] - 1e-3f) << "pixel " << i << " darker than every page drawn";
+    if (partial[i] > lit[i] + 1e-3f) ++lighter;
+  }
+  EXPECT_GT(lighter, 0u) << "missing pages read as lit";
+  const PoolCounts next = pool_frame();
+  EXPECT_EQ(next.kept, small.pages) << "needed pages keep their places";
+  EXPECT_EQ(next.evicted, 0u);
+}
+
+// A light that moves makes its pages stale: they go back to the pool (taken again by its
+// new pages first), and the image is the squares' image of the same frame.
+TEST_F(PagePoolGpuTest, AMovedLightRedrawsIntoThePool) {
+  for (const bool pool : {false, true}) {
+    load_desc(pool_graph("data/graphs/hard.json", pool));
+    pool_frame();
+    scene_.lights[kLight].position.y -= 0.5f;
+    const PoolCounts moved = pool_frame();
+    if (pool) {
+      EXPECT_GT(moved.taken, 0u) << "the moved light's needed pages are drawn anew";
+      EXPECT_EQ(moved.missing, 0u);
+      EXPECT_EQ(moved.evicted, 0u) << "stale and free pages go first";
+    }
+    static std::vector<std::uint16_t> squares;
+    if (!pool) {
+      squares = read_hdr();
+    } else {
+      EXPECT_EQ(read_hdr(), squares);
+    }
+    scene_.lights[kLight].position.y += 0.5f;
+  }
+}
+
+// Settings the pool cannot work with are compiler errors at the parameter or port, and a
+// reader of the paged atlas must bind its tables.
+TEST_F(PagePoolGpuTest, BadPoolSettingsAreCompilerErrors) {
+  // `code` about the pass at `pass` (the graphs here are built in memory, so the pointer
+  // stops at the nearest node the file has), its message saying `what`.
+  const auto error_at = [&](const fg::GraphDesc& graph, const char* code, const char* pass,
+                            const char* what) {
+    const auto plan = compile_graph(graph);
+    ASSERT_FALSE(plan.ok());
+    const base::Diagnostic* d = plan.diagnostics().find(code);
+    ASSERT_NE(d, nullptr) << plan.diagnostics().to_text();
+    EXPECT_EQ(d->pointer.rfind(pass, 0), 0u) << d->pointer << ": " << d->message;
+    EXPECT_NE(d->message.find(what), std::string::npos) << d->message;
+    EXPECT_GT(d->line, 0);
+  };
+  ASSERT_TRUE(compile_graph(pool_graph("data/graphs/hard.json", true)).ok());
+  fg::GraphDesc hardware = pool_graph("data/graphs/hard.json", true);
+  for (auto& p : hardware.passes) {
+    if (p.type == "point-shadow-atlas") p.params["rasterizer"] = "hardware";
+  }
+  for (auto& r : hardware.resources) {
+    if (r.name == "atlas") r.format = fg::Format::d32f;
+  }
+  error_at(hardware, "FG033", "/passes/1", "pagePool needs rasterizer \"compute\"");
+  fg::GraphDesc unbound = pool_graph("data/graphs/hard.json", false);
+  for (auto& p : unbound.passes) {
+    if (p.type == "point-shadow-atlas") p.params["pagePool"] = true;
+  }
+  error_at(unbound, "FG033", "/passes/1", "pagePool needs `pageTables` bound");
+  fg::GraphDesc small = pool_graph("data/graphs/hard.json", true);
+  for (auto& r : small.resources) {
+    if (r.name == "pageTables") r.buffer_size = 64;
+  }
+  error_at(small, "SHD001", "/passes/1", "holds 64 bytes; a table of 16 words");
+  fg::GraphDesc blind = pool_graph("data/graphs/hard.json", true);
+  for (auto& p : blind.passes) {
+    if (p.type == "point-shadow-atlas") continue;
+    std::erase_if(p.inputs, [](const auto& in) { return in.port == "pageTables"; });
+  }
+  error_at(blind, "FG037", "/passes/2", "bind its pageTables output 'pageTables'");
+  // Derived maps (here the min filter) cannot read through the tables yet.
+  error_at(pool_graph("data/graphs/layered-ssss-min.json", true), "FG037", "/passes/3",
+           "a shadow-min-filter pass has no pageTables input");
+}
