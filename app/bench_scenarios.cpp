@@ -58,7 +58,7 @@ Scenario make(const std::string& table, const Technique& t, int kernel, unsigned
   // measurements did; the many-light table measures the cached steady state. The moving
   // and many tables cache too: what stands still stays cached, a moving light's faces change
   // their matrices and so redraw themselves.
-  s.shadow_cache = table == "lights" || table == "moving" || table == "many" ||
+  s.shadow_cache = table == "lights" || table == "moving" || table == "many" || table == "pages" ||
                    table == "materials" || table == "penumbra" || table == "dynamic";
   // No shadow atlas to pin in the unshadowed and the distance-field graphs.
   if (std::string(t.graph) != "lighting.json" && std::string(t.graph) != "sdf.json") {
@@ -187,6 +187,41 @@ void add_many_table(std::vector<Scenario>& out, double scale, const DistrictRows
   }
 }
 
+// Page pool (docs/technique.md, "Page pool"): the many table's rows and the atrium's 16
+// moving lights with the atlas a pool of pages that visible pixels need, far fewer layers
+// than the squares take: 32 of 1024^2 for the atrium (128 MiB of depth), 512 of 512^2
+// for the district and the city (512 MiB).
+void add_pages_table(std::vector<Scenario>& out, double scale, const DistrictRows& rows) {
+  struct Row {
+    const char* scene;
+    int lights;  // the scene's
+    int moving;
+    std::uint32_t pool_layers;
+  };
+  constexpr Row kRows[] = {{"atrium.json", 16, 16, 32},
+                           {kDistrictScene, kDistrictLights, kDistrictMovingLights, 512},
+                           {kDistrictScene, kDistrictLights, kDistrictLights, 512},
+                           {kCityScene, kCityLights, kCityLights / 4, 512}};
+  for (const Row& row : kRows) {
+    const bool many = row.lights >= kDistrictLights;
+    const int lights = many ? row.lights / kDistrictLights * rows.lights : row.lights;
+    const int moving =
+        many ? std::min(row.moving * rows.lights / kDistrictLights, lights) : row.moving;
+    Scenario s =
+        make("pages", technique("ssss"), 11, 1080, lights, many ? scale * rows.scale : scale);
+    s.name += "-";
+    s.name += std::to_string(moving);
+    s.name += "m";
+    s.scene = row.scene;
+    s.moving = moving;
+    s.pool_layers = row.pool_layers;
+    apply_raster(s, kRasters[3]);  // compute, per-light resolution, compute G-buffer
+    s.name += "/pool";
+    s.name += std::to_string(row.pool_layers);
+    out.push_back(std::move(s));
+  }
+}
+
 // Materials: the atrium against the atrium with textured, alpha-tested screens
 // (kCutoutScene), layered SSSS 11 under 16 moving lights on every rasteriser variant, so
 // that what textures and cut-outs cost is measured beside a scene without them.
@@ -250,6 +285,7 @@ std::vector<Scenario> builtin_scenarios(double scale, const DistrictRows& distri
   }
   add_moving_table(out, scale, district);
   add_many_table(out, scale, district);
+  add_pages_table(out, scale, district);
   add_materials_table(out, scale);
   add_dynamic_table(out, scale);
   add_sun_table(out, scale);
@@ -369,6 +405,37 @@ void fit_atlas_format(fg::GraphDesc& graph, const std::string& rasterizer) {
                     [](const fg::PortBindingDesc& in) { return in.port == "depth"; });
     if (pass.type == "point-shadow-atlas" && !bound) {
       pass.inputs.push_back({"depth", depth, pass.pointer + "/in/depth"});
+    }
+  }
+}
+
+void fit_page_pool(fg::GraphDesc& graph, std::uint32_t pool_layers) {
+  if (pool_layers == 0) return;
+  std::uint64_t records = 0;
+  std::uint32_t face = 0;
+  for (auto& r : graph.resources) {
+    if (r.name == "atlas" || r.name == "shadowColour") r.layers = pool_layers;
+    if (r.name == "atlas") face = r.size.width;
+    if (r.name == "shadowData") records = (r.buffer_size - 16 - 64 * 4096) / 80;
+  }
+  const std::uint64_t pages_side = (face + 127) / 128;  // interface/shared/page_tables.h
+  fg::ResourceDesc tables;
+  tables.name = "pageTables";
+  tables.kind = fg::ResourceKind::buffer;
+  tables.buffer_size = std::max<std::uint64_t>(records * pages_side * pages_side * 4, 16);
+  tables.pointer = "/resources/pageTables";
+  graph.resources.push_back(tables);
+  for (auto& pass : graph.passes) {
+    if (pass.type == "point-shadow-atlas") {
+      pass.params["pagePool"] = true;
+      pass.outputs.push_back({"pageTables", "pageTables", pass.pointer + "/out/pageTables"});
+      continue;
+    }
+    const bool reads_atlas =
+        std::any_of(pass.inputs.begin(), pass.inputs.end(),
+                    [](const fg::PortBindingDesc& in) { return in.resource == "atlas"; });
+    if (reads_atlas) {
+      pass.inputs.push_back({"pageTables", "pageTables", pass.pointer + "/in/pageTables"});
     }
   }
 }

@@ -38,6 +38,9 @@ struct Scenario {
   std::string rasterizer = "hardware";
   // The "penumbra" table: every light's radius in metres (0: the scene's own).
   float light_size = 0.0f;
+  // The "pages" table: the atlas is a page pool of this many layers (point-shadow-atlas's
+  // pagePool, its tables bound to every reader of the atlas); 0: faces in squares.
+  std::uint32_t pool_layers = 0;
 };
 
 // The penumbra table's light radii (metres): the seed's claim is that the screen-space
@@ -112,6 +115,11 @@ void fit_shadow_resources(fg::GraphDesc& graph, int lights, unsigned face);
 // resolve shader's storage image; a d32f atlas would be filled by copies), as the graph
 // says otherwise.
 void fit_atlas_format(fg::GraphDesc& graph, const std::string& rasterizer);
+
+// With `pool_layers` > 0: the atlas (and its colour twin) that many layers deep, made a
+// page pool whose tables (a `pageTables` buffer for every face record shadowData holds)
+// the atlas pass writes and every pass that reads the atlas binds.
+void fit_page_pool(fg::GraphDesc& graph, std::uint32_t pool_layers);
 
 // How the moving table's lights move (scene::animate_lights), for `scenario.moving`
 // lights; frame 0 is the first warm-up frame of each scenario.

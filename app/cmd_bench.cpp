@@ -194,6 +194,7 @@ BenchResult run_scenario(runtime::RenderSession& session, const runtime::DataPat
   }
   fit_shadow_resources(graph.value(), scenario.lights, scenario.face);
   fit_atlas_format(graph.value(), scenario.rasterizer);
+  fit_page_pool(graph.value(), scenario.pool_layers);
   session.set_viewport({scenario.width, scenario.height});
   if (auto diagnostics = session.load_graph(graph.value()); diagnostics.has_errors()) {
     r.status = "invalid";

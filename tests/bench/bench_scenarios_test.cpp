@@ -165,7 +165,9 @@ TEST(BenchScenarios, MovingTableHasThreeTechniquesPerLightCountOnBothRasterisers
   // The other tables keep still lights in the atrium (the dynamic table's has moving
   // objects).
   for (const auto& s : builtin_scenarios(1.0)) {
-    if (s.table == "moving" || s.table == "materials" || s.table == "many") continue;
+    if (s.table == "moving" || s.table == "materials" || s.table == "many" || s.table == "pages") {
+      continue;
+    }
     EXPECT_EQ(s.moving, 0) << s.name;
     const char* scene = s.table == "dynamic" ? kDynamicScene
                         : s.table == "sun"   ? kSunScene
@@ -243,6 +245,67 @@ TEST(BenchScenarios, MovingScenesHaveTheirLightsAfterTheLightCount) {
 }
 
 }  // namespace
+// The pages table: the many table's rows and the atrium's moving lights, each drawn into a
+// page pool of a fixed number of layers.
+TEST(BenchScenarios, PagesTableDrawsIntoAFixedPool) {
+  const auto pages = select_scenarios(builtin_scenarios(1.0), {"pages/"});
+  ASSERT_EQ(pages.size(), 4u);
+  const auto& atrium = named(pages, "pages/ssss-11/1080p/16l-16m/compute/screen/vis/pool32");
+  const auto& city = named(pages, "pages/ssss-11/1080p/4096l-1024m/compute/screen/vis/pool512");
+  EXPECT_EQ(atrium.pool_layers, 32u);
+  EXPECT_EQ(atrium.moving, 16);
+  EXPECT_EQ(city.scene, kCityScene);
+  EXPECT_EQ(city.pool_layers, 512u);
+  EXPECT_EQ(city.rasterizer, "compute");
+  EXPECT_TRUE(city.shadow_cache);
+  EXPECT_EQ(named(pages, "pages/ssss-11/1080p/1024l-64m/compute/screen/vis/pool512").moving, 64);
+  for (const auto& s : select_scenarios(builtin_scenarios(1.0), {"many/", "moving/"})) {
+    EXPECT_EQ(s.pool_layers, 0u) << s.name << ": squares";
+  }
+}
+
+// A pool row's graph: the atlas and its colour map pool_layers deep, a pageTables buffer
+// with a table for every face record shadowData holds, written by the atlas pass and bound
+// by exactly the passes that read the atlas.
+TEST(BenchScenarios, FitPagePoolBindsTheTablesToEveryReaderOfTheAtlas) {
+  fg::GraphDesc graph;
+  for (const char* name : {"atlas", "shadowColour", "depth"}) {
+    fg::ResourceDesc r;
+    r.name = name;
+    r.layers = 2046;
+    r.size = {false, 1.0, 1.0, 512, 512};
+    graph.resources.push_back(r);
+  }
+  fg::ResourceDesc data;
+  data.name = "shadowData";
+  data.kind = fg::ResourceKind::buffer;
+  data.buffer_size = 16 + 64 * 4096 + 80 * 6144;
+  graph.resources.push_back(data);
+  fg::PassInstanceDesc atlas;
+  atlas.type = "point-shadow-atlas";
+  atlas.outputs.push_back({"atlas", "atlas", "/passes/0/out/atlas"});
+  fg::PassInstanceDesc reader;
+  reader.type = "layered-penumbra";
+  reader.inputs.push_back({"atlas", "atlas", "/passes/1/in/atlas"});
+  fg::PassInstanceDesc other;
+  other.type = "anisotropic-blur";
+  other.inputs.push_back({"depth", "depth", "/passes/2/in/depth"});
+  graph.passes = {atlas, reader, other};
+  fit_page_pool(graph, 0);
+  EXPECT_EQ(graph.resources.size(), 4u) << "no pool: nothing changes";
+  fit_page_pool(graph, 512);
+  EXPECT_EQ(graph.resources[0].layers, 512u);
+  EXPECT_EQ(graph.resources[1].layers, 512u);
+  EXPECT_EQ(graph.resources[2].layers, 2046u);
+  ASSERT_EQ(graph.resources.size(), 5u);
+  EXPECT_EQ(graph.resources[4].name, "pageTables");
+  EXPECT_EQ(graph.resources[4].buffer_size, 6144u * 16 * 4) << "16 pages of 128^2 per face";
+  EXPECT_EQ(graph.passes[0].params["pagePool"], true);
+  EXPECT_EQ(graph.passes[0].outputs.back().port, "pageTables");
+  EXPECT_EQ(graph.passes[1].inputs.back().port, "pageTables");
+  EXPECT_EQ(graph.passes[2].inputs.size(), 1u);
+}
+
 TEST(BenchScenarios, ComputeRowsWriteAnR32fAtlas) {
   fg::GraphDesc graph;
   fg::ResourceDesc atlas;

@@ -32,6 +32,7 @@
 #include "interface/shared/layer_table.h"
 #include "interface/shared/limits.h"
 #include "interface/shared/material_textures.h"
+#include "interface/shared/page_tables.h"
 #include "interface/shared/scene_data.h"
 #include "interface/shared/sdf_info.h"
 #include "interface/shared/shadow_data.h"
@@ -42,6 +43,7 @@
 #include "penumbra_wedges/penumbra_wedges_interface.h"
 #include "point_shadow_atlas/compute_raster_interface.h"
 #include "point_shadow_atlas/face_decision_interface.h"
+#include "point_shadow_atlas/page_pool_interface.h"
 #include "point_shadow_atlas/pages.h"
 #include "point_shadow_atlas/point_shadow_atlas_interface.h"
 #include "scene_sdf/scene_sdf_interface.h"
@@ -72,6 +74,7 @@ const std::vector<std::string> kHeaders{
     "interface/shared/layer_table.h",
     "interface/shared/limits.h",
     "interface/shared/material_textures.h",
+    "interface/shared/page_tables.h",
     "interface/shared/scene_data.h",
     "interface/shared/sdf_info.h",
     "interface/shared/shadow_data.h",
@@ -82,6 +85,7 @@ const std::vector<std::string> kHeaders{
     "penumbra_wedges/penumbra_wedges_interface.h",
     "point_shadow_atlas/compute_raster_interface.h",
     "point_shadow_atlas/face_decision_interface.h",
+    "point_shadow_atlas/page_pool_interface.h",
     "point_shadow_atlas/pages.h",
     "point_shadow_atlas/point_shadow_atlas_interface.h",
     "scene_sdf/scene_sdf_interface.h",
@@ -175,6 +179,13 @@ const std::vector<gpu::ShaderDefine> kTiledLayered{
     {"BLOCKER_SEARCH", "3"},
     {"HDR_FORMAT", "rgba16f"},
 };
+
+std::vector<gpu::ShaderDefine> tiled_paged() {
+  std::vector<gpu::ShaderDefine> defines = kTiledLayered;
+  defines.push_back({"SHADOW_PAGE_TABLES", "1"});
+  return defines;
+}
+const std::vector<gpu::ShaderDefine> kTiledPaged = tiled_paged();
 
 const std::vector<gpu::ShaderDefine> kGradeRgba16f{{"HDR_FORMAT", "rgba16f"}};
 
@@ -334,6 +345,29 @@ const std::vector<BindingCase>& binding_cases() {
        {},
        "Pages",
        shared::kDecidePages},
+      // A paged atlas's readers (SHADOW_PAGE_TABLES, interface/shared/page_tables.h).
+      {"tiled_lighting/tiled_lighting_interface.h", "tiled_lighting/tiled_lighting.comp",
+       kTiledPaged, "PageTables", shared::kTiledPageTables},
+      {"layered_penumbra/layered_penumbra_interface.h",
+       "layered_penumbra/layered_penumbra.comp",
+       {{"SHADOW_PAGE_TABLES", "1"}},
+       "PageTables",
+       shared::kPenumbraPageTables},
+      {"point_shadow_atlas/page_pool_interface.h",
+       "point_shadow_atlas/shadow_pool_reclaim.comp",
+       {},
+       "PoolOrder",
+       shared::kPoolOrder},
+      {"point_shadow_atlas/page_pool_interface.h",
+       "point_shadow_atlas/shadow_pool_publish.comp",
+       {},
+       "Published",
+       shared::kPoolPublished},
+      {"point_shadow_atlas/compute_raster_interface.h",
+       "point_shadow_atlas/shadow_raster_resolve.comp",
+       {{"WRITE_DEPTH", ""}, {"PAGE_POOL", ""}},
+       "PoolTables",
+       shared::kRasterPoolTables},
       {"point_shadow_atlas/point_shadow_atlas_interface.h",
        "point_shadow_atlas/shadow_atlas.vert",
        {},
