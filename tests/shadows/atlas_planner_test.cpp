@@ -321,3 +321,32 @@ TEST(AtlasPlanner, DrawnFacesGetNewEpochsCachedOnesKeepTheirs) {
     }
   }
 }
+
+// A page pool (docs/technique.md, "Page pool"): six layers cannot hold the atrium's 96
+// faces at 256^2 in squares, so faces are drawn smaller; in a pool every light keeps its
+// size, has no square (projection.z < 0) and each record names its page table's first
+// word (record x (256 / 128)^2) above its face number.
+TEST(AtlasPlanner, APagePoolGivesEveryLightItsSizeAndATable) {
+  const auto scene = atrium();
+  AtlasSettings s = settings(6);
+  s.records = 96;
+  s.gpu_decides = true;
+  AtlasPlanner squares;
+  const auto packed = squares.plan(scene, camera_of(scene), 1, 0, s);
+  EXPECT_FALSE(packed.degraded.empty()) << "six layers hold fewer faces at their size";
+  s.page_pool = true;
+  AtlasPlanner pool;
+  const auto paged = pool.plan(scene, camera_of(scene), 1, 0, s);
+  EXPECT_TRUE(paged.degraded.empty());
+  EXPECT_TRUE(paged.unshadowed.empty());
+  for (const auto& light : paged.lights) {
+    EXPECT_EQ(light.projection.y, 256.0f);
+    EXPECT_LT(light.projection.z, 0.0f);
+  }
+  for (std::uint32_t record = 0; record < 96; ++record) {
+    const std::uint32_t info = paged.faces[record].info.y;
+    EXPECT_EQ(info >> ANTUMBRA_FACE_LAYER_SHIFT, record * 4) << "record " << record;
+    EXPECT_EQ(info & 7u, record % 6) << "record " << record;
+    EXPECT_EQ(passes::face_size(paged, record), 256u);
+  }
+}
