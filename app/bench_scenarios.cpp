@@ -215,6 +215,9 @@ void add_pages_table(std::vector<Scenario>& out, double scale, const DistrictRow
     s.scene = row.scene;
     s.moving = moving;
     s.pool_layers = row.pool_layers;
+    // The pool's layers are cut into whole 128^2 pages (interface/shared/page_tables.h):
+    // --quick's faces are rounded up to them.
+    s.face = std::max(128u, s.face / 128 * 128);
     apply_raster(s, kRasters[3]);  // compute, per-light resolution, compute G-buffer
     s.name += "/pool";
     s.name += std::to_string(row.pool_layers);

@@ -262,6 +262,11 @@ TEST(BenchScenarios, PagesTableDrawsIntoAFixedPool) {
   for (const auto& s : select_scenarios(builtin_scenarios(1.0), {"many/", "moving/"})) {
     EXPECT_EQ(s.pool_layers, 0u) << s.name << ": squares";
   }
+  // A pool's atlas is whole 128^2 pages, --quick's too.
+  for (const auto& s : select_scenarios(builtin_scenarios(0.25, kQuickDistrict), {"pages/"})) {
+    EXPECT_GE(s.face, 128u) << s.name;
+    EXPECT_EQ(s.face % 128, 0u) << s.name;
+  }
 }
 
 // A pool row's graph: the atlas and its colour map pool_layers deep, a pageTables buffer
