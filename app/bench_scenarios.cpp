@@ -419,7 +419,8 @@ void fit_page_pool(fg::GraphDesc& graph, std::uint32_t pool_layers) {
   for (auto& r : graph.resources) {
     if (r.name == "atlas" || r.name == "shadowColour") r.layers = pool_layers;
     if (r.name == "atlas") face = r.size.width;
-    if (r.name == "shadowData") records = (r.buffer_size - 16 - 64 * 4096) / 80;
+    // fit_shadow_resources' layout: header, 4096 lights, 80-byte face records.
+    if (r.name == "shadowData") records = (r.buffer_size - 16 - std::uint64_t{64} * 4096) / 80;
   }
   const std::uint64_t pages_side = (face + 127) / 128;  // interface/shared/page_tables.h
   fg::ResourceDesc tables;

@@ -345,7 +345,24 @@ const std::vector<BindingCase>& binding_cases() {
        {},
        "Pages",
        shared::kDecidePages},
-      // A paged atlas's readers (SHADOW_PAGE_TABLES, interface/shared/page_tables.h).
+      {"point_shadow_atlas/point_shadow_atlas_interface.h",
+       "point_shadow_atlas/shadow_atlas.vert",
+       {},
+       "Faces",
+       shared::kAtlasFaces},
+      {"gbuffer/gbuffer_interface.h",
+       "gbuffer/gbuffer.frag",
+       {},
+       "Materials",
+       shared::kGbufferMaterials},
+  };
+  return kCases;
+}
+
+// The page pool's shaders and the paged atlas's readers (page_pool_interface.h,
+// interface/shared/page_tables.h).
+const std::vector<BindingCase>& paged_binding_cases() {
+  static const std::vector<BindingCase> kCases{
       {"tiled_lighting/tiled_lighting_interface.h", "tiled_lighting/tiled_lighting.comp",
        kTiledPaged, "PageTables", shared::kTiledPageTables},
       {"layered_penumbra/layered_penumbra_interface.h",
@@ -368,22 +385,19 @@ const std::vector<BindingCase>& binding_cases() {
        {{"WRITE_DEPTH", ""}, {"PAGE_POOL", ""}},
        "PoolTables",
        shared::kRasterPoolTables},
-      {"point_shadow_atlas/point_shadow_atlas_interface.h",
-       "point_shadow_atlas/shadow_atlas.vert",
-       {},
-       "Faces",
-       shared::kAtlasFaces},
-      {"gbuffer/gbuffer_interface.h",
-       "gbuffer/gbuffer.frag",
-       {},
-       "Materials",
-       shared::kGbufferMaterials},
   };
   return kCases;
 }
 
+// Every binding case.
+std::vector<BindingCase> all_binding_cases() {
+  std::vector<BindingCase> cases = binding_cases();
+  cases.insert(cases.end(), paged_binding_cases().begin(), paged_binding_cases().end());
+  return cases;
+}
+
 TEST(PassInterface, ShadersDeclareBindingsAtTheHeadersNumbers) {
-  for (const BindingCase& c : binding_cases()) {
+  for (const BindingCase& c : all_binding_cases()) {
     EXPECT_EQ(binding_of(reflect(c.shader, c.defines), c.name), c.number)
         << c.shader << ": " << c.name;
   }
@@ -394,7 +408,7 @@ TEST(PassInterface, ShadersDeclareBindingsAtTheHeadersNumbers) {
 TEST(PassInterface, EveryPassInterfaceHeaderHasACase) {
   std::set<std::string> checked;
   for (const PushCase& c : push_cases()) checked.insert(c.header);
-  for (const BindingCase& c : binding_cases()) checked.insert(c.header);
+  for (const BindingCase& c : all_binding_cases()) checked.insert(c.header);
   for (const std::string& header : kHeaders) {
     if (!header.ends_with("_interface.h")) continue;
     EXPECT_TRUE(checked.contains(header)) << "no push-block or binding case checks " << header;

@@ -37,7 +37,7 @@ class PagePoolGpuTest : public AtlasGpuTest {
     fg::ResourceDesc tables;
     tables.name = "pageTables";
     tables.kind = fg::ResourceKind::buffer;
-    tables.buffer_size = 96 * kPagesPerLayer * 4;  // the graphs' 96 face records
+    tables.buffer_size = std::uint64_t{96} * kPagesPerLayer * 4;  // the graphs' 96 face records
     tables.pointer = "/resources/pageTables";
     graph.resources.push_back(tables);
     for (auto& p : graph.passes) {
