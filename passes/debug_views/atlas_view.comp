@@ -5,15 +5,22 @@
 // ShadowFace.info.y places it; faces smaller than a layer share layers), its depth
 // linearised with the owning light's near plane and range (bright = near the light,
 // black = cleared / nothing within range); without it, each cell is a whole layer and raw
-// depth is shown as 1 - depth.
+// depth is shown as 1 - depth. With SHADOW_PAGE_TABLES, a paged light's face is read
+// through its page table (interface/shared/page_tables.h), a page without a place in the
+// pool dark red: what the pool holds of each face, and what it misses.
 
 #include "../interface/shared/workgroups.h"
 layout(local_size_x = ANTUMBRA_IMAGE_GROUP, local_size_y = ANTUMBRA_IMAGE_GROUP) in;
 
 #include "../interface/shared/shadow_data.h"
-#include "../common/shadow_sampling.glsl"
 #define ANTUMBRA_ATLAS_VIEW_SHADER
 #include "debug_views_interface.h"
+#ifdef SHADOW_PAGE_TABLES
+layout(set = 0, binding = kAtlasViewPageTables) readonly buffer PageTables {
+  uint page_tables[];
+};
+#endif
+#include "../common/shadow_sampling.glsl"
 
 layout(set = 0, binding = kAtlasViewAtlas) uniform sampler2DArray atlas;
 #ifdef HAS_SHADOW_DATA
@@ -46,7 +53,21 @@ void main() {
     }
 #endif
     ivec2 texel = ivec2(uv * vec2(textureSize(atlas, 0).xy));
-    float depth = texelFetch(atlas, ivec3(texel, layer), 0).r;
+    ivec3 at = ivec3(texel, layer);
+#ifdef SHADOW_PAGE_TABLES
+    bool placed = true;
+    if (faces[face].info.x < ANTUMBRA_MAX_SHADOW_LIGHTS && light.projection.z < 0.0) {
+      int texels = int(light.projection.y);
+      ivec2 t = clamp(ivec2((vec2(local) + 0.5) / float(cell) * float(texels)), ivec2(0),
+                      ivec2(texels - 1));
+      at = shadow_page_texel(int(faces[face].info.y >> ANTUMBRA_FACE_LAYER_SHIFT), texels, t,
+                             textureSize(atlas, 0).x);
+      placed = at.z >= 0;
+    }
+    float depth = placed ? texelFetch(atlas, at, 0).r : 1.0;
+#else
+    float depth = texelFetch(atlas, at, 0).r;
+#endif
     float value = 1.0 - depth;
 #ifdef HAS_SHADOW_DATA
     {
@@ -58,6 +79,9 @@ void main() {
     }
 #endif
     colour = vec3(value);
+#ifdef SHADOW_PAGE_TABLES
+    if (!placed) colour = vec3(0.35, 0.0, 0.0);
+#endif
     // One-pixel grid lines so neighbouring faces stay apart.
     if (local.x == 0u || local.y == 0u) colour = vec3(0.2, 0.2, 0.5);
   }

@@ -62,7 +62,9 @@ fg::PassDesc AtlasViewPass::describe() {
   desc.type = "atlas-view";
   desc.description =
       "Debug view: shadow-atlas faces tiled into a grid, depth linearised with each light's "
-      "near plane and range when shadowData is bound (bright = near the light), raw otherwise.";
+      "near plane and range when shadowData is bound (bright = near the light), raw otherwise. "
+      "A paged atlas's faces (pageTables and shadowData bound) are shown through their page "
+      "tables, pages without a place in the pool dark red.";
   desc.ports = {
       compute_array_input(port::kAtlas, {Format::d32f, Format::d16, Format::r32f}, 1, 0,
                           "Shadow faces, one per array layer (point-shadow-atlas)."),
@@ -72,6 +74,7 @@ fg::PassDesc AtlasViewPass::describe() {
        .stage = Stage::compute,
        .optional = true,
        .description = "Face -> light and each light's near/far, for linear depth."},
+      page_tables_input(),
       view_port("The grid of faces."),
   };
   desc.params = param_table().descs();

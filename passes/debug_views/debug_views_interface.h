@@ -27,6 +27,8 @@ ANTUMBRA_BINDING(kPenumbraViewOut, 1)
 ANTUMBRA_BINDING(kAtlasViewAtlas, 0)
 ANTUMBRA_BINDING(kAtlasViewShadowData, 1)
 ANTUMBRA_BINDING(kAtlasViewOut, 2)
+// SHADOW_PAGE_TABLES: a paged atlas's tables (interface/shared/page_tables.h)
+ANTUMBRA_BINDING(kAtlasViewPageTables, 3)
 // cascade_view.comp
 ANTUMBRA_BINDING(kCascadeViewFrame, 0)
 ANTUMBRA_BINDING(kCascadeViewShadowData, 1)

@@ -103,10 +103,15 @@ void AtlasViewPass::prepare(fgvk::PrepareContext& context) {
   linearise_ = context.bindings.buffer(port::kShadowData) != nullptr;
   std::vector<gpu::ShaderDefine> defines;
   if (linearise_) defines.push_back({"HAS_SHADOW_DATA", "1"});
+  // Faces of a paged atlas are found through their tables, which need the shadow data;
+  // without it the view shows the pool's layers as they are.
+  page_tables_ = linearise_ && context.bindings.buffer(port::kPageTables) != nullptr;
+  if (page_tables_) defines.push_back({"SHADOW_PAGE_TABLES", "1"});
   auto shader = load_shader(context, "debug_views/atlas_view.comp", shader_files_, defines);
   gpu::DescriptorSetLayoutBuilder builder;
   builder.combined_image_sampler(shared::kAtlasViewAtlas, kCompute);
   if (linearise_) builder.storage_buffer(shared::kAtlasViewShadowData, kCompute);
+  if (page_tables_) builder.storage_buffer(shared::kAtlasViewPageTables, kCompute);
   builder.storage_image(shared::kAtlasViewOut, kCompute);
   compute_ = build_compute_pipeline(context, shader, builder, sizeof(AtlasViewPush));
 }
@@ -132,6 +137,9 @@ void AtlasViewPass::execute(fgvk::ExecuteContext& context) {
                                      context.samplers.nearest_clamp, atlas.layout);
   if (linearise_)
     descriptors.storage_buffer(shared::kAtlasViewShadowData, b.buffer(port::kShadowData)->buffer);
+  if (page_tables_) {
+    descriptors.storage_buffer(shared::kAtlasViewPageTables, b.buffer(port::kPageTables)->buffer);
+  }
   descriptors.storage_image(shared::kAtlasViewOut, view.view, view.layout)
       .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, compute_.layout);
   const AtlasViewPush constants{first, faces, columns, cell, shown};

@@ -79,6 +79,7 @@ class AtlasViewPass final : public fgvk::Pass {
  private:
   AtlasViewParams params_;
   bool linearise_ = false;
+  bool page_tables_ = false;  // `pageTables` bound (with shadowData): faces through their tables
   ComputePipeline compute_;
   std::vector<std::string> shader_files_;
 };

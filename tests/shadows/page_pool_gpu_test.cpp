@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <glm/gtc/packing.hpp>
@@ -211,4 +212,46 @@ TEST_F(PagePoolGpuTest, BadPoolSettingsAreCompilerErrors) {
   // Derived maps (here the min filter) cannot read through the tables yet.
   error_at(pool_graph("data/graphs/layered-ssss-min.json", true), "FG037", "/passes/3",
            "a shadow-min-filter pass has no pageTables input");
+}
+
+// The atlas view reads a paged atlas's faces through their tables: with every needed page
+// in the pool some of its cells show depth and no page reads as missing where the pool had
+// room; with six layers the pages left without a place show dark red.
+TEST_F(PagePoolGpuTest, TheAtlasViewShowsFacesThroughTheirTables) {
+  const auto view_of = [&](std::uint32_t layers) {
+    fg::GraphDesc graph = pool_graph("data/graphs/hard.json", true, layers);
+    fg::ResourceDesc view;
+    view.name = "atlasView";
+    view.format = fg::Format::rgba8;
+    view.pointer = "/resources/atlasView";
+    graph.resources.push_back(view);
+    fg::PassInstanceDesc pass;
+    pass.name = "atlasView";
+    pass.type = "atlas-view";
+    pass.pointer = "/passes/" + std::to_string(graph.passes.size());
+    pass.params = {{"faces", 96}};
+    pass.side_effects = true;
+    pass.inputs = {{"atlas", "atlas", pass.pointer + "/in/atlas"},
+                   {"shadowData", "shadowData", pass.pointer + "/in/shadowData"},
+                   {"pageTables", "pageTables", pass.pointer + "/in/pageTables"}};
+    pass.outputs = {{"view", "atlasView", pass.pointer + "/out/view"}};
+    graph.passes.push_back(pass);
+    load_desc(graph);
+    const PoolCounts counts = pool_frame();
+    std::vector<std::uint8_t> pixels(std::size_t{kViewport.width} * kViewport.height * 4);
+    read_raw("atlasView", VK_IMAGE_ASPECT_COLOR_BIT, 0, kViewport, 4, pixels.data());
+    std::size_t missing = 0, depth = 0;
+    for (std::size_t i = 0; i < pixels.size(); i += 4) {
+      const bool red = pixels[i] == 89 && pixels[i + 1] == 0 && pixels[i + 2] == 0;
+      if (red) ++missing;
+      if (!red && pixels[i] == pixels[i + 1] && pixels[i] > 8 && pixels[i] < 250) ++depth;
+    }
+    return std::tuple{counts, missing, depth};
+  };
+  const auto [full, full_missing, full_depth] = view_of(0);
+  EXPECT_EQ(full.missing, 0u);
+  EXPECT_GT(full_depth, 0u) << "faces through their tables show depth";
+  const auto [small, small_missing, small_depth] = view_of(6);
+  EXPECT_GT(small.missing, 0u);
+  EXPECT_GT(small_missing, full_missing) << "pages without a place show dark red";
 }
