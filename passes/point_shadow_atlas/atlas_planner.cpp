@@ -230,17 +230,21 @@ std::uint32_t AtlasPlanner::face_info_y(std::uint32_t face, std::uint32_t slot) 
   return (slot * table_stride_) << ANTUMBRA_FACE_LAYER_SHIFT | face;
 }
 
-void AtlasPlanner::size_pool_claims(const scene::Scene& scene) {
+void AtlasPlanner::size_pool_claims(const scene::Scene& scene, const AtlasSettings& settings) {
   for (Claim& claim : claims_) {
-    claim.given = claim.wanted;
+    claim.given = settings.pool_cap > 0 ? std::min(claim.wanted, settings.pool_cap) : claim.wanted;
     const std::string& name = scene.lights[claim.light].name;
-    if (claim.given == 0) frame_.unshadowed.push_back(name);
+    if (claim.given == 0) {
+      frame_.unshadowed.push_back(name);
+    } else if (claim.given < claim.wanted) {
+      frame_.degraded.push_back({.name = name, .wanted = claim.wanted, .given = claim.given});
+    }
   }
 }
 
 void AtlasPlanner::place_claims(const scene::Scene& scene, const AtlasSettings& settings) {
   if (settings.page_pool) {
-    size_pool_claims(scene);
+    size_pool_claims(scene, settings);
     return;
   }
   const std::uint32_t smallest =

@@ -45,6 +45,8 @@ struct AtlasSettings {
   // have no squares, every light gets the face size it wants, and a record's
   // ShadowFace.info.y names its page table (interface/shared/page_tables.h).
   bool page_pool = false;
+  // A page pool too small for the view (pool_fit.hpp): faces at most this size (0: none).
+  std::uint32_t pool_cap = 0;
   // Per-light face resolution from the light's size on screen (face_resolution.hpp);
   // off: every face has face_size texels. `resolution.maximum` is set from face_size.
   bool adaptive_resolution = false;
@@ -226,7 +228,7 @@ class AtlasPlanner {
   // its page table's first word.
   [[nodiscard]] std::uint32_t face_info_y(std::uint32_t face, std::uint32_t slot) const;
   // A page pool's claims: every light at its wanted size (no squares to place).
-  void size_pool_claims(const scene::Scene& scene);
+  void size_pool_claims(const scene::Scene& scene, const AtlasSettings& settings);
   [[nodiscard]] FaceKey face_key(std::uint32_t record, std::uint64_t geometry_version,
                                  const LightWork& work) const {
     return {frame_.faces[record].view_proj, geometry_version, work.resolution, place_of(record)};

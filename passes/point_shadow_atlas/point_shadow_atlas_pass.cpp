@@ -184,6 +184,8 @@ void PointShadowAtlasPass::prepare(fgvk::PrepareContext& context) {
   settings_.page_pool = params_.page_pool && settings_.gpu_decides &&
                         context.bindings.buffer(port::kPageTables) != nullptr;
   name_ = context.pass.name;
+  pool_fit_.reset();
+  pool_fit_frame_ = ~0ull;
 
   shader_files_.clear();
   gpu::Fnv1a64 key;
@@ -362,6 +364,7 @@ void PointShadowAtlasPass::execute(fgvk::ExecuteContext& context) {
   settings_.uncached_lights = tinted_;
   settings_.static_cache =
       static_cache_enabled_ && context.frame.static_index_count < context.frame.index_count;
+  fit_pool(context);
   SceneMotion motion;
   if (context.frame.moved_bounds != nullptr) motion.moved = *context.frame.moved_bounds;
   if (context.frame.dynamic_bounds != nullptr) motion.dynamic = *context.frame.dynamic_bounds;
@@ -467,6 +470,21 @@ void PointShadowAtlasPass::upload(fgvk::ExecuteContext& context, const AtlasFram
 
 // SHD002: lights without faces (no face records left, or no room even for the smallest
 // squares); SHD005: lights whose faces are drawn smaller than they want (the atlas is full).
+// A page pool's cap on face size follows the newest GPU counts (pool_fit.hpp), each frame's
+// once.
+void PointShadowAtlasPass::fit_pool(fgvk::ExecuteContext& context) {
+  if (!settings_.page_pool) return;
+  const auto gpu = compute_.decision().completed(context.frame.slot);
+  if (gpu && gpu->frame_index != pool_fit_frame_) {
+    pool_fit_frame_ = gpu->frame_index;
+    const FaceDecisionStats::Pool& p = gpu->pool;
+    pool_fit_.update(
+        {.pages = p.pages, .needed = p.kept + p.taken + p.missing, .missing = p.missing},
+        settings_.face_size);
+  }
+  settings_.pool_cap = pool_fit_.cap();
+}
+
 void PointShadowAtlasPass::report_fit(fgvk::ExecuteContext& context, const AtlasFrame& frame) {
   // Appended, not operator+(string&&, ...): GCC 12 warns falsely (-Wrestrict).
   std::string where = "; the shadowData buffer holds ";
@@ -505,8 +523,16 @@ void PointShadowAtlasPass::report_fit(fgvk::ExecuteContext& context, const Atlas
     base::Json details = sizes;
     details["lights"] = lights;
     std::string message = std::to_string(frame.degraded.size());
-    message += " light(s) have smaller faces than they want, the atlas being full (texels per ";
-    message += "side, given of wanted): ";
+    if (settings_.page_pool) {
+      details["poolCap"] = settings_.pool_cap;
+      message += " light(s) have smaller faces than they want, the page pool missing pages the ";
+      message += "view needs at their size (faces at most ";
+      message += std::to_string(settings_.pool_cap);
+      message += " texels until it holds them; texels per side, given of wanted): ";
+    } else {
+      message += " light(s) have smaller faces than they want, the atlas being full (texels per ";
+      message += "side, given of wanted): ";
+    }
     message += base::name_list(names);
     message += where;
     context.report.add({context.pass.name, codes::shadow_atlas::kFacesDegraded,

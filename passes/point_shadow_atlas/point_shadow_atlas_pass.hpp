@@ -25,6 +25,7 @@
 #include "atlas_planner.hpp"
 #include "common/lazy_pipeline.hpp"
 #include "compute_raster.hpp"
+#include "pool_fit.hpp"
 #include "static_depth_cache.hpp"
 
 namespace antumbra::passes {
@@ -127,6 +128,10 @@ class PointShadowAtlasPass final : public fgvk::Pass {
   VkImage colour_image_ = VK_NULL_HANDLE;
 
   AtlasPlanner planner_;
+  // A page pool's face-size cap from the GPU's counts, and the frame they were last of.
+  PoolFit pool_fit_;
+  std::uint64_t pool_fit_frame_ = ~0ull;
+  void fit_pool(fgvk::ExecuteContext& context);
   ComputeRasterizer compute_;
   StaticDepthCache static_cache_;
   bool static_cache_enabled_ = false;  // hardware, layered, staticCache and cache on

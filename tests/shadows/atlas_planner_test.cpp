@@ -13,6 +13,7 @@
 #include "atrium_scene.hpp"
 #include "common/shadow_faces.hpp"
 #include "point_shadow_atlas/point_shadow_atlas_pass.hpp"
+#include "point_shadow_atlas/pool_fit.hpp"
 
 using namespace antumbra;
 using passes::AtlasPlanner;
@@ -349,4 +350,45 @@ TEST(AtlasPlanner, APagePoolGivesEveryLightItsSizeAndATable) {
     EXPECT_EQ(info & 7u, record % 6) << "record " << record;
     EXPECT_EQ(passes::face_size(paged, record), 256u);
   }
+}
+
+// A pool too small halves the face-size cap at once; a pool with room to spare for faces
+// twice as wide doubles it after PoolFit::kCalmFrames frames, up to no cap.
+TEST(PoolFit, HalvesOnMissingPagesAndDoublesBackWhenCalm) {
+  passes::PoolFit fit;
+  EXPECT_EQ(fit.cap(), 0u);
+  fit.update({.pages = 100, .needed = 150, .missing = 50}, 1024);
+  EXPECT_EQ(fit.cap(), 512u);
+  fit.update({.pages = 100, .needed = 120, .missing = 20}, 1024);
+  EXPECT_EQ(fit.cap(), 256u);
+  for (int i = 0; i < 10; ++i) fit.update({.pages = 100, .needed = 5, .missing = 1}, 1024);
+  EXPECT_EQ(fit.cap(), 128u) << "never below a page";
+  for (std::uint32_t i = 0; i + 1 < passes::PoolFit::kCalmFrames; ++i) {
+    fit.update({.pages = 100, .needed = 23, .missing = 0}, 1024);
+  }
+  EXPECT_EQ(fit.cap(), 128u) << "not calm long enough";
+  fit.update({.pages = 100, .needed = 23, .missing = 0}, 1024);
+  EXPECT_EQ(fit.cap(), 256u);
+  for (std::uint32_t i = 0; i < 3 * passes::PoolFit::kCalmFrames; ++i) {
+    fit.update({.pages = 100, .needed = 40, .missing = 0}, 1024);
+  }
+  EXPECT_EQ(fit.cap(), 256u) << "faces twice as wide would not fit";
+  for (std::uint32_t i = 0; i < 2 * passes::PoolFit::kCalmFrames; ++i) {
+    fit.update({.pages = 100, .needed = 10, .missing = 0}, 1024);
+  }
+  EXPECT_EQ(fit.cap(), 0u) << "back to the atlas's size";
+}
+
+// The planner draws a pool's faces at most at the cap and names the lights it shrank.
+TEST(AtlasPlanner, APoolCapShrinksFacesAndSaysWhich) {
+  const auto scene = atrium();
+  AtlasSettings s = settings(6);
+  s.records = 96;
+  s.gpu_decides = true;
+  s.page_pool = true;
+  s.pool_cap = 128;
+  AtlasPlanner pool;
+  const auto capped = pool.plan(scene, camera_of(scene), 1, 0, s);
+  EXPECT_EQ(capped.degraded.size(), scene.lights.size());
+  for (const auto& light : capped.lights) EXPECT_EQ(light.projection.y, 128.0f);
 }

@@ -141,9 +141,31 @@ TEST_F(PagePoolGpuTest, ASmallPoolCountsWhatIsMissingAndNeverDarkens) {
     if (partial[i] > lit[i] + 1e-3f) ++lighter;
   }
   EXPECT_GT(lighter, 0u) << "missing pages read as lit";
-  const PoolCounts next = pool_frame();
-  EXPECT_EQ(next.kept, small.pages) << "needed pages keep their places";
-  EXPECT_EQ(next.evicted, 0u);
+}
+
+// A pool too small for the view draws every light's faces smaller (pool_fit.hpp) until it
+// holds what the view needs, and says so (SHD005 with the cap); the lit image then has no
+// missing page.
+TEST_F(PagePoolGpuTest, ATooSmallPoolDrawsFacesSmallerUntilTheViewFits) {
+  load_desc(pool_graph("data/graphs/hard.json", true, 6));
+  PoolCounts counts = pool_frame();
+  ASSERT_GT(counts.missing, 0u);
+  int frames = 1;
+  while (counts.missing > 0 && frames < 16) {
+    counts = pool_frame();
+    ++frames;
+  }
+  EXPECT_EQ(counts.missing, 0u) << "after " << frames << " frames";
+  EXPECT_LE(counts.kept + counts.taken, counts.pages);
+  const fgvk::PassMessage* degraded = nullptr;
+  for (const auto& m : report_.messages()) {
+    if (m.code == "SHD005") degraded = &m;
+  }
+  ASSERT_NE(degraded, nullptr) << "the smaller faces are a note";
+  const std::uint32_t cap = degraded->details["poolCap"].get<std::uint32_t>();
+  EXPECT_GE(cap, 128u);
+  EXPECT_LT(cap, kPoolFace);
+  EXPECT_NE(degraded->message.find("page pool"), std::string::npos) << degraded->message;
 }
 
 // A light that moves makes its pages stale: they go back to the pool (taken again by its
