@@ -17,19 +17,21 @@ namespace {
 void check_pool_readers(const fg::PlanPass& pass, const fg::Plan& plan, const fg::GraphDesc& graph,
                         base::Diagnostics& diagnostics) {
   const int atlas = bound_index(pass, port::kAtlas);
+  const int colour = bound_index(pass, port::kColour);  // paged alike
   const int tables = bound_index(pass, port::kPageTables);
   for (const fg::PlanPass& reader : plan.passes) {
     if (&reader == &pass) continue;
-    const auto reads = std::find_if(reader.bindings.begin(), reader.bindings.end(),
-                                    [&](const fg::PlanBinding& b) { return b.resource == atlas; });
+    const auto reads =
+        std::find_if(reader.bindings.begin(), reader.bindings.end(), [&](const fg::PlanBinding& b) {
+          return b.resource == atlas || (colour >= 0 && b.resource == colour);
+        });
     if (reads == reader.bindings.end()) continue;
     const auto port =
         std::find_if(reader.bindings.begin(), reader.bindings.end(),
                      [](const fg::PlanBinding& b) { return b.port == port::kPageTables.name(); });
     if (port != reader.bindings.end() && port->resource == tables) continue;
-    const std::string atlas_name = plan.resources[static_cast<std::size_t>(atlas)].name;
-    const std::string owner =
-        "the atlas '" + atlas_name + "' is paged (pagePool of '" + pass.name + "')";
+    const std::string atlas_name = plan.resources[static_cast<std::size_t>(reads->resource)].name;
+    const std::string owner = "'" + atlas_name + "' is paged (pagePool of '" + pass.name + "')";
     if (port == reader.bindings.end()) {
       add_pass_error(graph, reader, codes::graph::kPortUnbound,
                      owner + ", and a " + reader.type +

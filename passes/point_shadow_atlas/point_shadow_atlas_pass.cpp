@@ -181,7 +181,7 @@ void PointShadowAtlasPass::prepare(fgvk::PrepareContext& context) {
                           context.bindings.image(port::kDepth) != nullptr &&
                           atlas.format == VK_FORMAT_R32_SFLOAT;
   // The compiler refuses a pool without these (point_shadow_atlas_desc.cpp, FG033).
-  settings_.page_pool = params_.page_pool && settings_.gpu_decides &&
+  settings_.page_pool = params_.page_pool && settings_.gpu_decides && params_.receiver_pages &&
                         context.bindings.buffer(port::kPageTables) != nullptr;
   name_ = context.pass.name;
   pool_fit_.reset();
@@ -337,6 +337,8 @@ void PointShadowAtlasPass::adopt(fgvk::Pass& previous) {
   translucent_bounds_ = old->translucent_bounds_;
   translucent_version_ = old->translucent_version_;
   compute_.adopt(old->compute_);  // what each layer holds, as the GPU tracks it
+  pool_fit_ = old->pool_fit_;     // the sizes the pool's faces were drawn at
+  pool_fit_frame_ = old->pool_fit_frame_;
   static_cache_.adopt(old->static_cache_);
 }
 
@@ -478,9 +480,18 @@ void PointShadowAtlasPass::fit_pool(fgvk::ExecuteContext& context) {
   if (gpu && gpu->frame_index != pool_fit_frame_) {
     pool_fit_frame_ = gpu->frame_index;
     const FaceDecisionStats::Pool& p = gpu->pool;
+    std::uint32_t largest = 0;  // the largest face the last frame gave a light
+    for (const ShadowLight& light : planner_.last().lights) {
+      if (light.params.z >= 0.0f) {
+        largest = std::max(largest, static_cast<std::uint32_t>(light.projection.y));
+      }
+    }
     pool_fit_.update(
-        {.pages = p.pages, .needed = p.kept + p.taken + p.missing, .missing = p.missing},
-        settings_.face_size);
+        {.frame = gpu->frame_index,
+         .pages = p.pages,
+         .needed = p.kept + p.taken + p.missing,
+         .missing = p.missing},
+        {.index = context.frame.frame_index, .largest = largest, .atlas = settings_.face_size});
   }
   settings_.pool_cap = pool_fit_.cap();
 }

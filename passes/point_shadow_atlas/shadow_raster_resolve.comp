@@ -53,8 +53,10 @@ void main() {
   uint place = face.info.x;
 #ifdef PAGE_POOL
   // Its pool page (the record's table starts at place >> ANTUMBRA_FACE_LAYER_SHIFT).
+  // A page without one (never, while the compiler holds receiverPages on) still cleans
+  // its scratch for the next chunk.
   uint pool_entry = tables[(place >> ANTUMBRA_FACE_LAYER_SHIFT) + page];
-  if (pool_entry == 0u) return;
+  bool placed = pool_entry != 0u;
   uint per_layer = pool_side * pool_side;
   uint in_layer = (pool_entry - 1u) % per_layer;
   uvec2 corner = uvec2(in_layer % pool_side, in_layer / pool_side) << kRasterRegionShift;
@@ -66,13 +68,14 @@ void main() {
                uvec2(cell_mask);
   uint layer = (place >> ANTUMBRA_FACE_LAYER_SHIFT) & ((1u << ANTUMBRA_FACE_LAYER_BITS) - 1u);
   ivec3 texel = ivec3(ivec2(cell * size + p), int(layer));
+  const bool placed = true;
 #endif
 #ifdef WRITE_DEPTH
   uint at = face.info.y + p.y * size + p.x;
   if (fill) {
     imageStore(atlas, texel, vec4(uintBitsToFloat(kRasterClearDepth)));
   } else {
-    imageStore(atlas, texel, vec4(uintBitsToFloat(depth[at])));
+    if (placed) imageStore(atlas, texel, vec4(uintBitsToFloat(depth[at])));
     if (reset_scratch != 0u) depth[at] = kRasterClearDepth;  // clean for the next chunk
   }
 #endif
@@ -81,7 +84,7 @@ void main() {
     imageStore(colour, texel, unpackUnorm4x8(kRasterClearTint));
   } else if (face.info.w > 0u) {
     uint slot = (face.info.w - 1u) * floatBitsToUint(face.params.w) + p.y * size + p.x;
-    imageStore(colour, texel, unpackUnorm4x8(tint[slot]));
+    if (placed) imageStore(colour, texel, unpackUnorm4x8(tint[slot]));
     if (reset_scratch != 0u) tint[slot] = kRasterClearTint;
   }
 #endif

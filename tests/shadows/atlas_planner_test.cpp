@@ -352,30 +352,34 @@ TEST(AtlasPlanner, APagePoolGivesEveryLightItsSizeAndATable) {
   }
 }
 
-// A pool too small halves the face-size cap at once; a pool with room to spare for faces
-// twice as wide doubles it after PoolFit::kCalmFrames frames, up to no cap.
+// A pool too small halves the face-size cap from the largest face drawn; a pool with room
+// to spare for faces twice as wide doubles it after PoolFit::kCalmFrames frames, up to no
+// cap; counts of frames planned before a change are ignored (they come back late).
 TEST(PoolFit, HalvesOnMissingPagesAndDoublesBackWhenCalm) {
   passes::PoolFit fit;
+  std::uint64_t frame = 10;
+  // Counts of frame `frame - 2` (two frames in flight), while planning `frame`.
+  const auto step = [&](std::uint32_t needed, std::uint32_t missing, std::uint32_t largest) {
+    fit.update({.frame = frame - 2, .pages = 100, .needed = needed, .missing = missing},
+               {.index = frame, .largest = largest, .atlas = 1024});
+    ++frame;
+  };
   EXPECT_EQ(fit.cap(), 0u);
-  fit.update({.pages = 100, .needed = 150, .missing = 50}, 1024);
-  EXPECT_EQ(fit.cap(), 512u);
-  fit.update({.pages = 100, .needed = 120, .missing = 20}, 1024);
-  EXPECT_EQ(fit.cap(), 256u);
-  for (int i = 0; i < 10; ++i) fit.update({.pages = 100, .needed = 5, .missing = 1}, 1024);
+  step(150, 50, 512);
+  EXPECT_EQ(fit.cap(), 256u) << "half the largest face drawn, not of the atlas's";
+  step(150, 50, 512);
+  EXPECT_EQ(fit.cap(), 256u) << "the counts of a frame planned before the change are ignored";
+  step(120, 20, 256);
+  EXPECT_EQ(fit.cap(), 128u);
+  for (int i = 0; i < 10; ++i) step(5, 1, 128);
   EXPECT_EQ(fit.cap(), 128u) << "never below a page";
-  for (std::uint32_t i = 0; i + 1 < passes::PoolFit::kCalmFrames; ++i) {
-    fit.update({.pages = 100, .needed = 23, .missing = 0}, 1024);
-  }
+  for (std::uint32_t i = 0; i + 1 < passes::PoolFit::kCalmFrames; ++i) step(23, 0, 128);
   EXPECT_EQ(fit.cap(), 128u) << "not calm long enough";
-  fit.update({.pages = 100, .needed = 23, .missing = 0}, 1024);
+  step(23, 0, 128);
   EXPECT_EQ(fit.cap(), 256u);
-  for (std::uint32_t i = 0; i < 3 * passes::PoolFit::kCalmFrames; ++i) {
-    fit.update({.pages = 100, .needed = 40, .missing = 0}, 1024);
-  }
+  for (std::uint32_t i = 0; i < 3 * passes::PoolFit::kCalmFrames; ++i) step(40, 0, 256);
   EXPECT_EQ(fit.cap(), 256u) << "faces twice as wide would not fit";
-  for (std::uint32_t i = 0; i < 2 * passes::PoolFit::kCalmFrames; ++i) {
-    fit.update({.pages = 100, .needed = 10, .missing = 0}, 1024);
-  }
+  for (std::uint32_t i = 0; i < 3 * passes::PoolFit::kCalmFrames; ++i) step(10, 0, 256);
   EXPECT_EQ(fit.cap(), 0u) << "back to the atlas's size";
 }
 
