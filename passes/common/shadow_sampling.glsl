@@ -65,6 +65,73 @@
 #define SHADOW_NORMAL_OFFSET 1.0
 #endif
 
+#ifdef SHADOW_PAGE_TABLES
+// Paged atlases (interface/shared/page_tables.h): the includer binds the tables as
+// `uint page_tables[]` and defines SHADOW_PAGE_TABLES. A lookup reads the nearest texel
+// through its own page, so a filter never reads across a page border into another
+// face's page: no guard texels are needed.
+#include "../interface/shared/page_tables.h"
+
+// The atlas texel of texel `t` of a page whose table entry is `entry` (`t` may be any
+// face texel: only its place in the page counts); z < 0 when the page has no place.
+ivec3 shadow_page_at(uint entry, ivec2 t) {
+  if (entry == 0u) return ivec3(0, 0, -1);
+  const uint coord_mask = (1u << ANTUMBRA_PAGE_COORD_BITS) - 1u;
+  ivec2 page = ivec2(uvec2(entry, entry >> ANTUMBRA_PAGE_ROW_SHIFT) & uvec2(coord_mask));
+  int layer = int((entry >> ANTUMBRA_PAGE_LAYER_SHIFT) & ((1u << ANTUMBRA_PAGE_LAYER_BITS) - 1u));
+  const int shift = int(ANTUMBRA_PAGE_SHIFT);
+  return ivec3((page << shift) + (t & ((1 << shift) - 1)), layer);
+}
+
+// The table entry of page `page` of a `texels`-wide face whose table starts at `table`.
+uint shadow_page_entry(int table, int texels, ivec2 page) {
+  int pages_x = (texels + (1 << int(ANTUMBRA_PAGE_SHIFT)) - 1) >> int(ANTUMBRA_PAGE_SHIFT);
+  return page_tables[table + page.y * pages_x + page.x];
+}
+
+// A paged face as one lookup reads it: its table and the entry of the page its centre
+// lies in, read once. A filter's taps mostly fall in that page and then read no table
+// word: only taps in other pages wait for a table read before their texel fetch.
+struct ShadowPages {
+  int table;        // the face's table's first word (page_tables.h); -1: not paged
+  int texels;       // the face's size in texels
+  ivec2 home;       // the page of the lookup's centre
+  uint home_entry;  // and its entry
+};
+
+ivec2 shadow_page_texel_of(ShadowPages p, vec2 face_uv) {
+  return clamp(ivec2(face_uv * float(p.texels)), ivec2(0), ivec2(p.texels - 1));
+}
+
+ShadowPages shadow_pages(int table, float texels, vec2 centre_uv) {
+  ShadowPages p = ShadowPages(table, int(texels), ivec2(-1), 0u);
+  if (table < 0) return p;
+  p.home = shadow_page_texel_of(p, centre_uv) >> int(ANTUMBRA_PAGE_SHIFT);
+  p.home_entry = shadow_page_entry(table, p.texels, p.home);
+  return p;
+}
+
+// The atlas texel of face uv (clamped to the face) of a paged face: its nearest texel.
+ivec3 shadow_page_lookup(ShadowPages p, vec2 face_uv) {
+  ivec2 t = shadow_page_texel_of(p, face_uv);
+  ivec2 page = t >> int(ANTUMBRA_PAGE_SHIFT);
+  uint entry = all(equal(page, p.home)) ? p.home_entry : shadow_page_entry(p.table, p.texels, page);
+  return shadow_page_at(entry, t);
+}
+
+// Stored depth there (far depth without a page).
+float shadow_page_depth(sampler2DArray atlas, ShadowPages p, vec2 face_uv) {
+  ivec3 at = shadow_page_lookup(p, face_uv);
+  return at.z < 0 ? 1.0 : texelFetch(atlas, at, 0).r;
+}
+
+// The colour map's tint there (white, nearest pane at the far plane, without a page).
+vec4 shadow_page_tint(sampler2DArray colour, ShadowPages p, vec2 face_uv) {
+  ivec3 at = shadow_page_lookup(p, face_uv);
+  return at.z < 0 ? vec4(1.0) : texelFetch(colour, at, 0);
+}
+#endif
+
 struct ShadowCoord {
   vec2 uv;       // face uv (0..1)
   float layer;   // atlas layer (the face's place, not its record's index)
@@ -75,47 +142,9 @@ struct ShadowCoord {
   float texels;  // the face's size in texels
   float share;   // the face's size over the atlas's (its uv square in the layer)
 #ifdef SHADOW_PAGE_TABLES
-  int table;  // a paged light's face: its page table's first word (page_tables.h); else -1
+  ShadowPages pages;  // a paged light's face (pages.table >= 0), read at uv
 #endif
 };
-
-#ifdef SHADOW_PAGE_TABLES
-// Paged atlases (interface/shared/page_tables.h): the includer binds the tables as
-// `uint page_tables[]` and defines SHADOW_PAGE_TABLES. A lookup reads the nearest texel
-// through its own page, so a filter never reads across a page border into another
-// face's page: no guard texels are needed.
-#include "../interface/shared/page_tables.h"
-
-// The atlas texel of face texel `t` (0..texels - 1 per axis) of the face whose table
-// starts at `table`; z < 0 when its page has no place (far depth).
-ivec3 shadow_page_texel(int table, int texels, ivec2 t, int atlas_size) {
-  const int shift = int(ANTUMBRA_PAGE_SHIFT);
-  int pages_x = (texels + (1 << shift) - 1) >> shift;
-  uint entry = page_tables[table + (t.y >> shift) * pages_x + (t.x >> shift)];
-  if (entry == 0u) return ivec3(0, 0, -1);
-  int side = atlas_size >> shift;
-  int page = int(entry - 1u);
-  int in_layer = page % (side * side);
-  ivec2 corner = ivec2(in_layer % side, in_layer / side) << shift;
-  return ivec3(corner + (t & ((1 << shift) - 1)), page / (side * side));
-}
-
-// Stored depth at face uv (clamped to the face) of a paged face: its nearest texel.
-float shadow_page_depth(sampler2DArray atlas, int table, float texels, vec2 face_uv) {
-  int n = int(texels);
-  ivec2 t = clamp(ivec2(face_uv * texels), ivec2(0), ivec2(n - 1));
-  ivec3 at = shadow_page_texel(table, n, t, textureSize(atlas, 0).x);
-  return at.z < 0 ? 1.0 : texelFetch(atlas, at, 0).r;
-}
-
-// The colour map's tint there (white, nearest pane at the far plane, without a page).
-vec4 shadow_page_tint(sampler2DArray colour, int table, float texels, vec2 face_uv) {
-  int n = int(texels);
-  ivec2 t = clamp(ivec2(face_uv * texels), ivec2(0), ivec2(n - 1));
-  ivec3 at = shadow_page_texel(table, n, t, textureSize(colour, 0).x);
-  return at.z < 0 ? vec4(1.0) : texelFetch(colour, at, 0);
-}
-#endif
 
 float shadow_face_texels(ShadowLight l, float atlas_size) {
   return l.projection.y > 0.0 ? l.projection.y : atlas_size;
@@ -231,13 +260,14 @@ vec3 shadow_offset_position(ShadowLight l, vec3 world_pos, vec3 normal, float fa
 // Orthographic maps: points outside the box's xy square or above its near plane are
 // invalid (lit); below the far plane, depth > 1 reads as lit like a light's range.
 // `index`: the face record `face` was read from (< 0: none).
-ShadowCoord shadow_coord(ShadowFace face, ShadowLight l, int index, vec3 world_pos) {
+ShadowCoord shadow_face_coord(ShadowFace face, ShadowLight l, int index, vec3 world_pos) {
   float share = l.projection.z > 0.0 ? l.projection.z : 1.0;
   float texels = l.projection.y > 0.0 ? l.projection.y : 65536.0;
 #ifdef SHADOW_PAGE_TABLES
   int table =
       l.projection.z < 0.0 && index >= 0 ? int(face.info.y >> ANTUMBRA_FACE_LAYER_SHIFT) : -1;
-  ShadowCoord c = ShadowCoord(vec2(0.0), 0.0, vec2(0.0), 1.0, 0.0, false, texels, share, table);
+  ShadowCoord c = ShadowCoord(vec2(0.0), 0.0, vec2(0.0), 1.0, 0.0, false, texels, share,
+                              ShadowPages(table, int(texels), ivec2(-1), 0u));
 #else
   ShadowCoord c = ShadowCoord(vec2(0.0), 0.0, vec2(0.0), 1.0, 0.0, false, texels, share);
 #endif
@@ -261,12 +291,23 @@ ShadowCoord shadow_coord(ShadowFace face, ShadowLight l, int index, vec3 world_p
   return c;
 }
 
+// shadow_face_coord, and for a paged face the entry of the page its uv lies in.
+ShadowCoord shadow_coord(ShadowFace face, ShadowLight l, int index, vec3 world_pos) {
+  ShadowCoord c = shadow_face_coord(face, l, index, world_pos);
+#ifdef SHADOW_PAGE_TABLES
+  if (c.valid && c.depth < 1.0 && c.pages.table >= 0) {
+    c.pages = shadow_pages(c.pages.table, c.texels, c.uv);
+  }
+#endif
+  return c;
+}
+
 // Invalid coordinates (no faces, nearer than the near plane) and points beyond the
 // light's range (depth > 1) read as lit.
 float shadow_hard_coord(sampler2DArray atlas, ShadowCoord c) {
   if (!c.valid || c.depth >= 1.0) return 1.0;
 #ifdef SHADOW_PAGE_TABLES
-  if (c.table >= 0) return c.depth <= shadow_page_depth(atlas, c.table, c.texels, c.uv) ? 1.0 : 0.0;
+  if (c.pages.table >= 0) return c.depth <= shadow_page_depth(atlas, c.pages, c.uv) ? 1.0 : 0.0;
 #endif
   float stored = textureLod(atlas, vec3(shadow_atlas_uv(c, c.uv), c.layer), 0.0).r;
   return c.depth <= stored ? 1.0 : 0.0;

@@ -60,8 +60,8 @@ void main() {
       int texels = int(light.projection.y);
       ivec2 t = clamp(ivec2((vec2(local) + 0.5) / float(cell) * float(texels)), ivec2(0),
                       ivec2(texels - 1));
-      at = shadow_page_texel(int(faces[face].info.y >> ANTUMBRA_FACE_LAYER_SHIFT), texels, t,
-                             textureSize(atlas, 0).x);
+      int table = int(faces[face].info.y >> ANTUMBRA_FACE_LAYER_SHIFT);
+      at = shadow_page_at(shadow_page_entry(table, texels, t >> int(ANTUMBRA_PAGE_SHIFT)), t);
       placed = at.z >= 0;
     }
     float depth = placed ? texelFetch(atlas, at, 0).r : 1.0;

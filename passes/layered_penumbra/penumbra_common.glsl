@@ -46,8 +46,8 @@ bool penumbra_blocker_depth(ShadowLight sl, ShadowCoord c, vec2 at, float light_
       vec2 offset = (vec2(x, y) - 0.5 * float(taps - 1)) * step_uv;
       vec2 tap = clamp(c.uv + offset, vec2(0.5 * texel), vec2(1.0 - 0.5 * texel));
 #ifdef SHADOW_PAGE_TABLES
-      float stored = c.table >= 0
-                         ? shadow_page_depth(atlas, c.table, c.texels, tap)
+      float stored = c.pages.table >= 0
+                         ? shadow_page_depth(atlas, c.pages, tap)
                          : textureLod(atlas, vec3(tap * c.share + c.origin, c.layer), 0.0).r;
 #else
       float stored = textureLod(atlas, vec3(tap * c.share + c.origin, c.layer), 0.0).r;
@@ -91,8 +91,8 @@ PenumbraSample estimate_penumbra(ShadowLight light, vec3 world, vec3 n_world, bo
   vec2 at = shadow_atlas_uv(c, c.uv);
 #ifdef HAS_ESM
 #ifdef SHADOW_PAGE_TABLES
-  float stored = c.table >= 0 ? shadow_page_depth(atlas, c.table, c.texels, c.uv)
-                              : textureLod(atlas, vec3(at, c.layer), 0.0).r;
+  float stored = c.pages.table >= 0 ? shadow_page_depth(atlas, c.pages, c.uv)
+                                    : textureLod(atlas, vec3(at, c.layer), 0.0).r;
 #else
   float stored = textureLod(atlas, vec3(at, c.layer), 0.0).r;
 #endif
@@ -108,8 +108,8 @@ PenumbraSample estimate_penumbra(ShadowLight light, vec3 world, vec3 n_world, bo
   // surface, offset towards the light) is not tinted by it.
   if (sl.params.w > 0.5) {
 #ifdef SHADOW_PAGE_TABLES
-    vec4 tint = c.table >= 0 ? shadow_page_tint(colour_atlas, c.table, c.texels, c.uv)
-                             : textureLod(colour_atlas, vec3(at, c.layer), 0.0);
+    vec4 tint = c.pages.table >= 0 ? shadow_page_tint(colour_atlas, c.pages, c.uv)
+                                   : textureLod(colour_atlas, vec3(at, c.layer), 0.0);
 #else
     vec4 tint = textureLod(colour_atlas, vec3(at, c.layer), 0.0);
 #endif

@@ -323,6 +323,7 @@ void FaceDecision::record(fgvk::ExecuteContext& context, const AtlasFrame& frame
   push.page_reach = layout.page_reach;
   push.table_stride = page_slots_;
   push.pool_pages = pool_pages_;
+  push.pool_side = layout.face_size >> shared::kPageShift;
   push.frame_number = static_cast<std::uint32_t>(context.frame.frame_index);
   if (receivers_) {
     const fgvk::BoundImage& depth = context.bindings.required_image(port::kDepth);

@@ -60,6 +60,8 @@ ANTUMBRA_PUSH_CONSTANTS(DecisionPush) {
   uint pool_pages;    // pages in the pool
   uint frame_number;  // this frame's, for the pages' ages
   uint reclaim_pass;  // shadow_pool_reclaim.comp: 0 counts the buckets, 1 fills them
+  uint pool_side;     // pages per side of an atlas layer (atlas width >> ANTUMBRA_PAGE_SHIFT)
+  uint pool_padding;  // keeps the block a whole number of uvec2s, as the C++ struct is
 };
 
 ANTUMBRA_BINDING(kDecideShadowIn, 0)   // this frame's shadow data as the CPU wrote it

@@ -2,13 +2,15 @@
 #extension GL_GOOGLE_include_directive : require
 #include "face_decision_interface.h"
 #include "page_pool_interface.h"
+#include "../interface/shared/page_tables.h"
 
 // Publishes the page tables the readers bind (docs/technique.md, "Page pool"): one thread
 // per table word. An entry whose pool page another face took this frame, or freed as
 // stale, is dropped with its page's "holds the epoch" bit; an entry whose page does not
 // hold its face's current depth (the face changed and the page was not drawn again) is
 // dropped and its page freed. So every published entry names a page holding this frame's
-// depth of its face, and a lookup without a page reads far depth (lit).
+// depth of its face, and a lookup without a page reads far depth (lit). Published entries
+// name the page's layer, column and row (page_tables.h), not the pool's page number.
 
 layout(local_size_x = kPoolGroup) in;
 
@@ -33,6 +35,14 @@ layout(std430, binding = kPoolPublished) writeonly buffer Published {
   uint published[];
 };
 
+// Pool page `page` as page_tables.h publishes it.
+uint published_entry(uint page) {
+  uint per_layer = pool_side * pool_side;
+  uint in_layer = page % per_layer;
+  return ANTUMBRA_PAGE_PLACED | ((page / per_layer) << ANTUMBRA_PAGE_LAYER_SHIFT) |
+         ((in_layer / pool_side) << ANTUMBRA_PAGE_ROW_SHIFT) | (in_layer % pool_side);
+}
+
 void main() {
   uint word = pool_thread();
   if (word >= layers * table_stride) return;
@@ -51,5 +61,5 @@ void main() {
       entry = 0u;
     }
   }
-  published[word] = entry;
+  published[word] = entry == 0u ? 0u : published_entry(entry - 1u);
 }

@@ -36,8 +36,7 @@ struct FilterCoord {
   float scale;  // ShadowLight.projection.x: 1 point, tan(half fov) spot, half width sun
   bool ortho;   // directional light: depth linear in metres (0 at near, far at 1)
 #ifdef SHADOW_PAGE_TABLES
-  int table;     // a paged face's table (ShadowCoord.table), else -1
-  float texels;  // its size in texels
+  ShadowPages pages;  // a paged face (ShadowCoord.pages), else pages.table = -1
 #endif
 };
 
@@ -52,7 +51,7 @@ vec3 filter_project(mat4 view_proj, vec3 p) {
 bool filter_coord(ShadowLight light, int layer, vec3 p_world, vec3 n_world, out FilterCoord c) {
 #ifdef SHADOW_PAGE_TABLES
   c = FilterCoord(vec2(0.0), 0.0, 0.0, vec2(0.0), 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, vec2(0.0), 1.0,
-                  false, -1, 1.0);
+                  false, ShadowPages(-1, 1, ivec2(-1), 0u));
 #else
   c = FilterCoord(vec2(0.0), 0.0, 0.0, vec2(0.0), 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, vec2(0.0), 1.0,
                   false);
@@ -71,8 +70,7 @@ bool filter_coord(ShadowLight light, int layer, vec3 p_world, vec3 n_world, out 
   c.texel = 1.0 / shadow_face_texels(sl, float(textureSize(atlas, 0).x));
   c.share = base.share;
 #ifdef SHADOW_PAGE_TABLES
-  c.table = base.table;
-  c.texels = base.texels;
+  c.pages = base.pages;
 #endif
   c.origin = base.origin;
   c.scale = sl.projection.x;
@@ -110,7 +108,7 @@ float filter_fetch(FilterCoord c, inout vec2 offset) {
   vec2 uv = clamp(c.uv + offset, vec2(0.5 * c.texel), vec2(1.0 - 0.5 * c.texel));
   offset = uv - c.uv;
 #ifdef SHADOW_PAGE_TABLES
-  if (c.table >= 0) return shadow_page_depth(atlas, c.table, c.texels, uv);
+  if (c.pages.table >= 0) return shadow_page_depth(atlas, c.pages, uv);
 #endif
   return textureLod(atlas, vec3(uv * c.share + c.origin, c.layer), 0.0).r;
 }
