@@ -37,7 +37,8 @@ gpu::DescriptorSetLayoutBuilder raster_bindings() {
        {shared::kRasterClusters, shared::kRasterIndices, shared::kRasterVertices,
         shared::kRasterFaces, shared::kRasterCounters, shared::kRasterItems, shared::kRasterDepth,
         shared::kRasterTint, shared::kRasterMaterials, shared::kRasterPages,
-        shared::kRasterResolveList, shared::kRasterAttributes, shared::kRasterPoolTables}) {
+        shared::kRasterResolveList, shared::kRasterAttributes, shared::kRasterPoolTables,
+        shared::kRasterClusterBlocks}) {
     b.storage_buffer(binding, VK_SHADER_STAGE_COMPUTE_BIT);
   }
   b.add(shared::kRasterSrgbTextures, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT,
@@ -113,6 +114,8 @@ void ComputeRasterizer::upload_geometry(fgvk::ExecuteContext& context) {
     return buffer;
   };
   clusters_ = create(geometry.clusters, ".clusters");
+  cluster_blocks_ =
+      create(cluster_block_spheres(geometry.clusters, geometry.static_clusters), ".clusterBlocks");
   indices_ = create(geometry.indices, ".clusterIndices");
   cluster_count_ = static_cast<std::uint32_t>(geometry.clusters.size());
   translucent_clusters_ = geometry.translucent_clusters;
@@ -356,6 +359,8 @@ void ComputeRasterizer::bind(fgvk::ExecuteContext& context, const ComputePipelin
   if (&pipeline == &resolve_ && storage_colour_) {
     descriptors.storage_image(shared::kRasterColour, context.bindings.image(port::kColour)->view);
   }
+  if (&pipeline == &cull_)
+    descriptors.storage_buffer(shared::kRasterClusterBlocks, cluster_blocks_);
   if (&pipeline == &resolve_ && decision_.pool()) {
     descriptors.storage_buffer(shared::kRasterPoolTables, decision_.tables());
   }

@@ -124,6 +124,7 @@ class ComputeRasterizer {
   std::vector<std::uint32_t> scratch_offsets_;
   std::vector<std::uint32_t> face_sizes_;
   gpu::Buffer clusters_;
+  gpu::Buffer cluster_blocks_;  // raster_clusters.hpp, cluster_block_spheres
   gpu::Buffer indices_;
   std::uint32_t cluster_count_ = 0;
   std::uint32_t translucent_clusters_ = 0;

@@ -113,6 +113,9 @@ ANTUMBRA_BINDING(kRasterSrgbTextures, 14)  // texture2DArray[kTextureBuckets]
 ANTUMBRA_BINDING(kRasterSampler, 15)
 // PAGE_POOL: the records' page tables (page_pool_interface.h), which the resolve follows.
 ANTUMBRA_BINDING(kRasterPoolTables, 16)
+// vec4 per kCullGroup clusters (a cull workgroup's): a sphere holding all of their spheres,
+// w < 0 when one of them is dynamic (its bounds move: the block is never skipped).
+ANTUMBRA_BINDING(kRasterClusterBlocks, 17)
 
 // shadow_raster_resolve.comp's square workgroups.
 const uint kResolveGroup = 16;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -149,6 +150,37 @@ std::vector<shared::RasterCluster> place_dynamic_clusters(const scene::Scene& sc
     out[i].mesh_max = glm::vec4(mesh.bounds.max, 0.0f);
   }
   return out;
+}
+
+std::vector<glm::vec4> cluster_block_spheres(const std::vector<shared::RasterCluster>& clusters,
+                                             std::uint32_t static_clusters) {
+  const std::size_t group = shared::kCullGroup;
+  std::vector<glm::vec4> blocks((clusters.size() + group - 1) / group);
+  for (std::size_t b = 0; b < blocks.size(); ++b) {
+    const std::size_t first = b * group;
+    const std::size_t end = std::min(clusters.size(), first + group);
+    if (end > static_clusters) {
+      blocks[b] = glm::vec4(0.0f, 0.0f, 0.0f, -1.0f);
+      continue;
+    }
+    // Centred on the box of the spheres' extents, wide enough for the farthest sphere.
+    glm::vec3 lo(std::numeric_limits<float>::max());
+    glm::vec3 hi(std::numeric_limits<float>::lowest());
+    for (std::size_t c = first; c < end; ++c) {
+      const glm::vec4 s = clusters[c].sphere;
+      lo = glm::min(lo, glm::vec3(s) - s.w);
+      hi = glm::max(hi, glm::vec3(s) + s.w);
+    }
+    const glm::vec3 centre = 0.5f * (lo + hi);
+    float radius = 0.0f;
+    for (std::size_t c = first; c < end; ++c) {
+      const glm::vec4 s = clusters[c].sphere;
+      radius = std::max(radius, glm::length(glm::vec3(s) - centre) + s.w);
+    }
+    // A float's rounding must not leave a cluster's edge outside.
+    blocks[b] = glm::vec4(centre, radius * (1.0f + 1e-5f) + 1e-6f);
+  }
+  return blocks;
 }
 
 }  // namespace antumbra::passes

@@ -40,6 +40,12 @@ RasterGeometry build_raster_geometry(const scene::Scene& scene);
 std::vector<shared::RasterCluster> place_dynamic_clusters(const scene::Scene& scene,
                                                           const RasterGeometry& geometry);
 
+// A sphere per kCullGroup consecutive clusters (the cull's workgroups) holding all of
+// their spheres, so that a workgroup whose block misses a face skips its clusters
+// unread; w = -1 for a block with a dynamic cluster (index >= static_clusters).
+std::vector<glm::vec4> cluster_block_spheres(const std::vector<shared::RasterCluster>& clusters,
+                                             std::uint32_t static_clusters);
+
 // True when every edge of the mesh (vertices welded by position) borders exactly two
 // triangles, in opposite directions: a closed, consistently wound surface, whose faces
 // turned away from a light outside it are always hidden behind faces turned towards it.

@@ -10,6 +10,9 @@
 // "Compute shadow rasteriser") among the pages the decision draws ("Receiver-driven
 // pages": a region is a page). Tests, all conservative: the light's range, the face's
 // frustum and, for a closed mesh seen from outside its bounds, a normal cone facing away.
+// The first two are made for the workgroup's block of clusters first (one sphere around
+// them all): a block out of a face's range or frustum skips its clusters unread, which is
+// most blocks when many lights each light a small part of a large scene.
 
 layout(local_size_x = kCullGroup) in;
 
@@ -30,6 +33,9 @@ layout(std430, binding = kRasterResolveList) readonly buffer List {
 };
 layout(std430, binding = kRasterPages) readonly buffer Pages {
   uint drawn_pages[];
+};
+layout(std430, binding = kRasterClusterBlocks) readonly buffer Blocks {
+  vec4 blocks[];
 };
 
 const float kHalfPi = 1.57079632679;
@@ -108,28 +114,33 @@ void emit_items(uint c, uint f, uint list, vec2 lo, vec2 hi, bool small, uint si
   }
 }
 
+// False when the sphere lies outside the light's range or the face's clip volume
+// 0 <= z <= w, |x|, |y| <= w (planes from the rows of the matrix, in world space).
+bool sphere_in_face(RasterFace face, bool ortho, vec4 sphere) {
+  if (!ortho && distance(sphere.xyz, face.light.xyz) - sphere.w > face.light.w) return false;
+  mat4 m = transpose(face.view_proj);
+  return !(sphere_outside(m[3] + m[0], sphere) || sphere_outside(m[3] - m[0], sphere) ||
+           sphere_outside(m[3] + m[1], sphere) || sphere_outside(m[3] - m[1], sphere) ||
+           sphere_outside(m[2], sphere) || sphere_outside(m[3] - m[2], sphere));
+}
+
 void main() {
   uint c = gl_GlobalInvocationID.x;
-  if (c >= cluster_count) return;
   uint f = records[face_first + gl_GlobalInvocationID.y] - face_first;  // within the chunk
-  RasterCluster cluster = clusters[c];
   RasterFace face = faces[face_first + f];
+  bool ortho = face.params.y > 0.5;
+  vec4 block = blocks[gl_WorkGroupID.x];  // the same for the whole workgroup
+  if (block.w >= 0.0 && !sphere_in_face(face, ortho, block)) return;
+  if (c >= cluster_count) return;
+  RasterCluster cluster = clusters[c];
   bool translucent = (cluster.info.z & kClusterTranslucent) != 0u;
   uint list = (cluster.info.z & kClusterCut) != 0u ? kListCut : kListDepth;
   if (translucent && tint_mode != 0u) {
     if (face.info.w == 0u) return;  // an untinted light's colour layers are never read
     list = kListTint;
   }
-  bool ortho = face.params.y > 0.5;
   vec4 sphere = cluster.sphere;
-  if (!ortho && distance(sphere.xyz, face.light.xyz) - sphere.w > face.light.w) return;
-  // Planes of the clip volume 0 <= z <= w, |x|, |y| <= w, in world space (rows of the matrix).
-  mat4 m = transpose(face.view_proj);
-  if (sphere_outside(m[3] + m[0], sphere) || sphere_outside(m[3] - m[0], sphere) ||
-      sphere_outside(m[3] + m[1], sphere) || sphere_outside(m[3] - m[1], sphere) ||
-      sphere_outside(m[2], sphere) || sphere_outside(m[3] - m[2], sphere)) {
-    return;
-  }
+  if (!sphere_in_face(face, ortho, sphere)) return;
   if (!ortho && (cluster.info.z & kClusterClosed) != 0u) {
     vec3 l = face.light.xyz;
     bool inside = all(greaterThanEqual(l, cluster.mesh_min.xyz)) &&

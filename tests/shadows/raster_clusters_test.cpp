@@ -92,6 +92,31 @@ TEST(RasterClusters, AtriumClustersCoverEveryTriangleOnceWithItsFlags) {
   EXPECT_GT(closed, 0) << "the atrium's boxes and columns are closed";
 }
 
+// The cull's block spheres (one per kCullGroup clusters) hold every cluster's sphere, and a
+// block with a dynamic cluster is never skipped (its bounds move with the mesh).
+TEST(RasterClusters, BlockSpheresHoldTheirClustersAndDynamicBlocksAreNeverSkipped) {
+  auto loaded = scene::load_scene_file((source_dir() / "data/scenes/atrium-dynamic.json").string());
+  ASSERT_TRUE(loaded.ok());
+  const passes::RasterGeometry geometry = passes::build_raster_geometry(loaded.value());
+  ASSERT_LT(geometry.static_clusters, geometry.clusters.size()) << "the scene has a dynamic mesh";
+  const std::vector<glm::vec4> blocks =
+      passes::cluster_block_spheres(geometry.clusters, geometry.static_clusters);
+  const std::size_t group = shared::kCullGroup;
+  ASSERT_EQ(blocks.size(), (geometry.clusters.size() + group - 1) / group);
+  for (std::size_t c = 0; c < geometry.clusters.size(); ++c) {
+    const glm::vec4 block = blocks[c / group];
+    const glm::vec4 sphere = geometry.clusters[c].sphere;
+    if (c >= geometry.static_clusters) {
+      EXPECT_LT(block.w, 0.0f) << "cluster " << c << " is dynamic";
+      continue;
+    }
+    if (block.w < 0.0f) continue;  // a static cluster sharing its block with a dynamic one
+    EXPECT_LE(glm::length(glm::vec3(sphere) - glm::vec3(block)) + sphere.w, block.w)
+        << "cluster " << c;
+  }
+  EXPECT_GE(blocks.front().w, 0.0f) << "the first block is all static";
+}
+
 // Cut clusters (one-sided or alpha-tested materials) are flagged for the cut list and
 // counted, translucent ones too, and every cluster's triangles keep the winding the
 // merged geometry uploads, mirrored meshes included (docs/technique.md, "Compute shadow
