@@ -91,12 +91,17 @@ uint shadow_page_entry(int table, int texels, ivec2 page) {
 
 // A paged face as one lookup reads it: its table and the entry of the page its centre
 // lies in, read once. A filter's taps mostly fall in that page and then read no table
-// word: only taps in other pages wait for a table read before their texel fetch.
+// word: only taps in other pages wait for a table read before their texel fetch. A
+// filter of many taps (shadow_pages_around) also holds the three pages beside the centre's
+// towards its nearer corner, so that a kernel reaching half a page or less reads no table
+// word in its loop at all.
 struct ShadowPages {
   int table;        // the face's table's first word (page_tables.h); -1: not paged
   int texels;       // the face's size in texels
   ivec2 home;       // the page of the lookup's centre
   uint home_entry;  // and its entry
+  ivec2 step;       // towards the held neighbours, -1 or 1 per axis (0: none that way)
+  uvec3 near;       // entries of home + (step.x, 0), home + (0, step.y), home + step
 };
 
 ivec2 shadow_page_texel_of(ShadowPages p, vec2 face_uv) {
@@ -104,19 +109,44 @@ ivec2 shadow_page_texel_of(ShadowPages p, vec2 face_uv) {
 }
 
 ShadowPages shadow_pages(int table, float texels, vec2 centre_uv) {
-  ShadowPages p = ShadowPages(table, int(texels), ivec2(-1), 0u);
+  ShadowPages p = ShadowPages(table, int(texels), ivec2(-1), 0u, ivec2(0), uvec3(0u));
   if (table < 0) return p;
   p.home = shadow_page_texel_of(p, centre_uv) >> int(ANTUMBRA_PAGE_SHIFT);
   p.home_entry = shadow_page_entry(table, p.texels, p.home);
   return p;
 }
 
+// `p` (shadow_pages at `centre_uv`) with the neighbours a kernel of up to half a page
+// around the centre may reach; the three reads are independent of each other.
+ShadowPages shadow_pages_around(ShadowPages p, vec2 centre_uv) {
+  if (p.table < 0) return p;
+  const int page = 1 << int(ANTUMBRA_PAGE_SHIFT);
+  ivec2 t = shadow_page_texel_of(p, centre_uv);
+  ivec2 step = mix(ivec2(1), ivec2(-1), lessThan(t & (page - 1), ivec2(page / 2)));
+  int pages_x = (p.texels + page - 1) >> int(ANTUMBRA_PAGE_SHIFT);
+  ivec2 beside = p.home + step;
+  bvec2 outside = bvec2(beside.x < 0 || beside.x >= pages_x, beside.y < 0 || beside.y >= pages_x);
+  p.step = mix(step, ivec2(0), outside);
+  if (p.step.x != 0) p.near.x = shadow_page_entry(p.table, p.texels, p.home + ivec2(p.step.x, 0));
+  if (p.step.y != 0) p.near.y = shadow_page_entry(p.table, p.texels, p.home + ivec2(0, p.step.y));
+  if (p.step.x != 0 && p.step.y != 0)
+    p.near.z = shadow_page_entry(p.table, p.texels, p.home + p.step);
+  return p;
+}
+
+// The entry of page `page` of `p`: held, or read from the table.
+uint shadow_page_entry_of(ShadowPages p, ivec2 page) {
+  ivec2 d = page - p.home;
+  if (d == ivec2(0)) return p.home_entry;
+  bvec2 held = bvec2(d.x == 0 || d.x == p.step.x, d.y == 0 || d.y == p.step.y);
+  if (all(held)) return d.y == 0 ? p.near.x : (d.x == 0 ? p.near.y : p.near.z);
+  return shadow_page_entry(p.table, p.texels, page);
+}
+
 // The atlas texel of face uv (clamped to the face) of a paged face: its nearest texel.
 ivec3 shadow_page_lookup(ShadowPages p, vec2 face_uv) {
   ivec2 t = shadow_page_texel_of(p, face_uv);
-  ivec2 page = t >> int(ANTUMBRA_PAGE_SHIFT);
-  uint entry = all(equal(page, p.home)) ? p.home_entry : shadow_page_entry(p.table, p.texels, page);
-  return shadow_page_at(entry, t);
+  return shadow_page_at(shadow_page_entry_of(p, t >> int(ANTUMBRA_PAGE_SHIFT)), t);
 }
 
 // Stored depth there (far depth without a page).
@@ -267,7 +297,7 @@ ShadowCoord shadow_face_coord(ShadowFace face, ShadowLight l, int index, vec3 wo
   int table =
       l.projection.z < 0.0 && index >= 0 ? int(face.info.y >> ANTUMBRA_FACE_LAYER_SHIFT) : -1;
   ShadowCoord c = ShadowCoord(vec2(0.0), 0.0, vec2(0.0), 1.0, 0.0, false, texels, share,
-                              ShadowPages(table, int(texels), ivec2(-1), 0u));
+                              ShadowPages(table, int(texels), ivec2(-1), 0u, ivec2(0), uvec3(0u)));
 #else
   ShadowCoord c = ShadowCoord(vec2(0.0), 0.0, vec2(0.0), 1.0, 0.0, false, texels, share);
 #endif

@@ -39,6 +39,9 @@ bool penumbra_blocker_depth(ShadowLight sl, ShadowCoord c, vec2 at, float light_
             : clamp(search_scale * light_size / (z_receiver * sl.projection.x), texel, 0.25);
   int taps = int(search_taps);
   float step_uv = taps > 1 ? 2.0 * radius / float(taps - 1) : 0.0;
+#ifdef SHADOW_PAGE_TABLES
+  c.pages = shadow_pages_around(c.pages, c.uv);
+#endif
   float blocker_sum = 0.0;
   int blockers = 0;
   for (int y = 0; y < taps; ++y) {

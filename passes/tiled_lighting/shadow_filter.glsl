@@ -51,7 +51,7 @@ vec3 filter_project(mat4 view_proj, vec3 p) {
 bool filter_coord(ShadowLight light, int layer, vec3 p_world, vec3 n_world, out FilterCoord c) {
 #ifdef SHADOW_PAGE_TABLES
   c = FilterCoord(vec2(0.0), 0.0, 0.0, vec2(0.0), 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, vec2(0.0), 1.0,
-                  false, ShadowPages(-1, 1, ivec2(-1), 0u));
+                  false, ShadowPages(-1, 1, ivec2(-1), 0u, ivec2(0), uvec3(0u)));
 #else
   c = FilterCoord(vec2(0.0), 0.0, 0.0, vec2(0.0), 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, vec2(0.0), 1.0,
                   false);
@@ -123,7 +123,7 @@ float filter_hard(FilterCoord c) {
 }
 
 // Box filter of taps x taps texels spaced `spacing` texels apart.
-float filter_pcf(FilterCoord c, int taps, float spacing) {
+float filter_pcf_taps(FilterCoord c, int taps, float spacing) {
   int half_taps = taps / 2;
   float sum = 0.0;
   for (int y = -half_taps; y <= half_taps; ++y) {
@@ -132,6 +132,14 @@ float filter_pcf(FilterCoord c, int taps, float spacing) {
     }
   }
   return sum / float(taps * taps);
+}
+
+// The same, holding the pages its taps reach first (shadow_pages_around).
+float filter_pcf(FilterCoord c, int taps, float spacing) {
+#ifdef SHADOW_PAGE_TABLES
+  c.pages = shadow_pages_around(c.pages, c.uv);
+#endif
+  return filter_pcf_taps(c, taps, spacing);
 }
 
 // PCSS (docs/technique.md 3): blocker search over BLOCKER_SEARCH^2 taps in a region scaled by
@@ -148,6 +156,9 @@ float filter_pcss(FilterCoord c, float light_size) {
   float search = c.ortho ? light_size * c.linear * face / (2.0 * c.scale)
                          : light_size * 0.5 * face / c.scale * (c.linear - c.near) / c.linear;
   search = clamp(search, 1.0, max_radius);
+#ifdef SHADOW_PAGE_TABLES
+  c.pages = shadow_pages_around(c.pages, c.uv);  // the search and the filter stay within
+#endif
   int half_search = BLOCKER_SEARCH / 2;
   float spacing = half_search > 0 ? search / float(half_search) : 0.0;
   float blocker_sum = 0.0;
@@ -170,7 +181,7 @@ float filter_pcss(FilterCoord c, float light_size) {
   // metres there (2 * scale / face for the sun).
   float texel_span = c.ortho ? 2.0 * c.scale : 2.0 * c.linear * c.scale;
   float radius = clamp(0.5 * penumbra * face / texel_span, 0.0, max_radius);
-  return filter_pcf(c, KERNEL, radius / max(max_radius, 1.0));
+  return filter_pcf_taps(c, KERNEL, radius / max(max_radius, 1.0));
 }
 
 #endif

@@ -147,6 +147,14 @@ class AtlasGpuTest : public gpu::testing::GpuTest {
     return c;
   }
 
+  // The scene as it stands, with every mesh static: what a fresh render should show.
+  scene::Scene frozen() const {
+    scene::Scene out = scene_;
+    for (auto& mesh : out.meshes) mesh.dynamic = false;
+    out.dynamic_objects.clear();
+    return out;
+  }
+
   // One frame, then the details of its SHD010 note once the GPU is done (Pass::collect
   // replaces the recorded counts with the GPU's); an empty object without one.
   base::Json face_stats_frame() {

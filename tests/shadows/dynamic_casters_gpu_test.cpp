@@ -80,14 +80,6 @@ class DynamicCastersGpuTest : public AtlasGpuTest {
     return std::move(parsed.value());
   }
 
-  // The scene as it stands, with every mesh static: what a fresh render should show.
-  scene::Scene frozen() const {
-    scene::Scene out = scene_;
-    for (auto& mesh : out.meshes) mesh.dynamic = false;
-    out.dynamic_objects.clear();
-    return out;
-  }
-
   // Runs the crate for a few frames, then checks the last image against a fresh render
   // of the crate frozen where it ended.
   void crate_matches_a_fresh_render(bool compute, const base::Json& params = base::Json::object()) {

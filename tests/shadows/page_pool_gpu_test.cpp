@@ -191,6 +191,37 @@ TEST_F(PagePoolGpuTest, AMovedLightRedrawsIntoThePool) {
   }
 }
 
+// A dynamic caster moving through the atrium: each frame redraws only the pages of the
+// faces that see it (the other faces keep theirs in the pool), and where it stops the
+// image is a fresh render's of the scene frozen there.
+TEST_F(PagePoolGpuTest, AMovingCasterRedrawsItsFacesPagesToAFreshRendersImage) {
+  auto loaded = scene::load_scene_file((source_dir() / "data/scenes/atrium-dynamic.json").string());
+  ASSERT_TRUE(loaded.ok()) << loaded.diagnostics().to_text();
+  scene_ = std::move(loaded.value());
+  ASSERT_FALSE(scene_.dynamic_objects.empty());
+  load_desc(pool_graph("data/graphs/hard.json", true));
+  const PoolCounts first = pool_frame();
+  const auto start = read_hdr();
+  ASSERT_GT(first.drawn, 0u);
+  std::uint32_t most_drawn = 0;
+  std::uint32_t kept = 0;
+  for (int i = 0; i < 4; ++i) {
+    const PoolCounts c = pool_frame();
+    most_drawn = std::max(most_drawn, c.drawn);
+    kept += c.kept;
+    EXPECT_EQ(c.missing, 0u);
+  }
+  const auto image = read_hdr();
+  EXPECT_NE(image, start) << "the caster and its shadow moved";
+  EXPECT_GT(most_drawn, 0u) << "the faces that see the caster are redrawn";
+  EXPECT_LT(most_drawn, first.drawn) << "and no others";
+  EXPECT_GT(kept, 0u);
+  scene_ = frozen();
+  load_desc(pool_graph("data/graphs/hard.json", true));
+  pool_frame();
+  EXPECT_EQ(read_hdr(), image) << "the pages drawn for the caster hold it where it is";
+}
+
 // Settings the pool cannot work with are compiler errors at the parameter or port, and a
 // reader of the paged atlas must bind its tables.
 TEST_F(PagePoolGpuTest, BadPoolSettingsAreCompilerErrors) {
