@@ -37,6 +37,8 @@
 //   ShadowCoord shadow_coord(ShadowFace face, ShadowLight l, int index, vec3 world_pos)
 //   vec2  shadow_atlas_uv(ShadowCoord c, vec2 face_uv)             clamped to the face
 //   float shadow_hard_coord(sampler2DArray atlas, ShadowCoord c)    1 lit, 0 shadowed
+//   float shadow_coord_depth(sampler2DArray atlas, ShadowCoord c, vec2 face_uv)  stored depth
+//   vec4  shadow_coord_tint(sampler2DArray colour, ShadowCoord c, vec2 face_uv)  its tint
 //   int   shadow_cascade_count(ShadowLight l)                       1 unless directional
 //   ShadowLight shadow_face_light(ShadowLight l, mat4 face_view_proj) a cascade's own scale
 // Convenience, when the includer defines SHADOW_FACES (the name of its ShadowFace
@@ -332,15 +334,28 @@ ShadowCoord shadow_coord(ShadowFace face, ShadowLight l, int index, vec3 world_p
   return c;
 }
 
+// Stored depth at face uv of the lookup's face: through its page table when it is paged,
+// else in its square (shadow_atlas_uv clamps to the face's texel centres).
+float shadow_coord_depth(sampler2DArray atlas, ShadowCoord c, vec2 face_uv) {
+#ifdef SHADOW_PAGE_TABLES
+  if (c.pages.table >= 0) return shadow_page_depth(atlas, c.pages, face_uv);
+#endif
+  return textureLod(atlas, vec3(shadow_atlas_uv(c, face_uv), c.layer), 0.0).r;
+}
+
+// The colour map's tint there, the same way.
+vec4 shadow_coord_tint(sampler2DArray colour, ShadowCoord c, vec2 face_uv) {
+#ifdef SHADOW_PAGE_TABLES
+  if (c.pages.table >= 0) return shadow_page_tint(colour, c.pages, face_uv);
+#endif
+  return textureLod(colour, vec3(shadow_atlas_uv(c, face_uv), c.layer), 0.0);
+}
+
 // Invalid coordinates (no faces, nearer than the near plane) and points beyond the
 // light's range (depth > 1) read as lit.
 float shadow_hard_coord(sampler2DArray atlas, ShadowCoord c) {
   if (!c.valid || c.depth >= 1.0) return 1.0;
-#ifdef SHADOW_PAGE_TABLES
-  if (c.pages.table >= 0) return c.depth <= shadow_page_depth(atlas, c.pages, c.uv) ? 1.0 : 0.0;
-#endif
-  float stored = textureLod(atlas, vec3(shadow_atlas_uv(c, c.uv), c.layer), 0.0).r;
-  return c.depth <= stored ? 1.0 : 0.0;
+  return c.depth <= shadow_coord_depth(atlas, c, c.uv) ? 1.0 : 0.0;
 }
 
 #ifdef SHADOW_FACES

@@ -93,12 +93,7 @@ PenumbraSample estimate_penumbra(ShadowLight light, vec3 world, vec3 n_world, bo
   // their own surface stay near 1, which is what keeps ESM free of acne.
   vec2 at = shadow_atlas_uv(c, c.uv);
 #ifdef HAS_ESM
-#ifdef SHADOW_PAGE_TABLES
-  float stored = c.pages.table >= 0 ? shadow_page_depth(atlas, c.pages, c.uv)
-                                    : textureLod(atlas, vec3(at, c.layer), 0.0).r;
-#else
-  float stored = textureLod(atlas, vec3(at, c.layer), 0.0).r;
-#endif
+  float stored = shadow_coord_depth(atlas, c, c.uv);
   float occluder = shadow_linearise_light(sl, stored);
   float depth_range = max(sl.position_range.w, 1e-3);
   result.esm = clamp(exp(-esm_constant * max(c.linear - occluder, 0.0) / depth_range), 0.0, 1.0);
@@ -110,12 +105,7 @@ PenumbraSample estimate_penumbra(ShadowLight light, vec3 world, vec3 n_world, bo
   // plane (shadow_colour.frag). A receiver not behind that pane (a lit pane's own
   // surface, offset towards the light) is not tinted by it.
   if (sl.params.w > 0.5) {
-#ifdef SHADOW_PAGE_TABLES
-    vec4 tint = c.pages.table >= 0 ? shadow_page_tint(colour_atlas, c.pages, c.uv)
-                                   : textureLod(colour_atlas, vec3(at, c.layer), 0.0);
-#else
-    vec4 tint = textureLod(colour_atlas, vec3(at, c.layer), 0.0);
-#endif
+    vec4 tint = shadow_coord_tint(colour_atlas, c, c.uv);
     if (c.linear > tint.a * sl.position_range.w) result.colour = pack_colour(vec4(tint.rgb, 1.0));
   }
 #endif

@@ -30,6 +30,7 @@ uint content_base(uint layer) {
 }
 
 #include "page_pool.glsl"
+#include "pool_page.glsl"
 
 layout(std430, binding = kPoolPublished) writeonly buffer Published {
   uint published[];
@@ -37,10 +38,9 @@ layout(std430, binding = kPoolPublished) writeonly buffer Published {
 
 // Pool page `page` as page_tables.h publishes it.
 uint published_entry(uint page) {
-  uint per_layer = pool_side * pool_side;
-  uint in_layer = page % per_layer;
-  return ANTUMBRA_PAGE_PLACED | ((page / per_layer) << ANTUMBRA_PAGE_LAYER_SHIFT) |
-         ((in_layer / pool_side) << ANTUMBRA_PAGE_ROW_SHIFT) | (in_layer % pool_side);
+  uvec3 place = pool_page_place(page, pool_side);
+  return ANTUMBRA_PAGE_PLACED | (place.z << ANTUMBRA_PAGE_LAYER_SHIFT) |
+         (place.y << ANTUMBRA_PAGE_ROW_SHIFT) | place.x;
 }
 
 void main() {

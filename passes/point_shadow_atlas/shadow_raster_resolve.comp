@@ -2,6 +2,9 @@
 #extension GL_GOOGLE_include_directive : require
 #include "compute_raster_interface.h"
 #include "../interface/shared/shadow_data.h"
+#ifdef PAGE_POOL
+#include "pool_page.glsl"
+#endif
 
 // Writes finished pages from the scratch into the graph's images (x, y: texels of the
 // page; z: an entry of the page list, which names the record and its page, record | page
@@ -57,10 +60,9 @@ void main() {
   // its scratch for the next chunk.
   uint pool_entry = tables[(place >> ANTUMBRA_FACE_LAYER_SHIFT) + page];
   bool placed = pool_entry != 0u;
-  uint per_layer = pool_side * pool_side;
-  uint in_layer = (pool_entry - 1u) % per_layer;
-  uvec2 corner = uvec2(in_layer % pool_side, in_layer / pool_side) << kRasterRegionShift;
-  ivec3 texel = ivec3(ivec2(corner + gl_GlobalInvocationID.xy), int((pool_entry - 1u) / per_layer));
+  uvec3 pool_place = pool_page_place(pool_entry - 1u, pool_side);
+  uvec2 corner = pool_place.xy << kRasterRegionShift;
+  ivec3 texel = ivec3(ivec2(corner + gl_GlobalInvocationID.xy), int(pool_place.z));
 #else
   // Its square at its place (shadow_data.h, ShadowFace.info.y).
   uint cell_mask = (1u << ANTUMBRA_FACE_CELL_BITS) - 1u;
