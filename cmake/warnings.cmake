@@ -10,6 +10,13 @@ function(antumbra_target_defaults target)
   if(ANTUMBRA_WERROR)
     target_compile_options(${target} PRIVATE -Werror $<$<CXX_COMPILER_ID:GNU>:-Wno-error=restrict>)
   endif()
+  # A unity build (cmake/unity.cmake) pastes each source into a generated file, so GCC takes a
+  # test's fixture in an anonymous namespace for one defined in a header and warns that the
+  # TEST_F class deriving from it has internal linkage: true of every such fixture, and
+  # meaningless when the "header" is one translation unit's source.
+  if(ANTUMBRA_UNITY_BUILD)
+    target_compile_options(${target} PRIVATE $<$<CXX_COMPILER_ID:GNU>:-Wno-subobject-linkage>)
+  endif()
   if(ANTUMBRA_SANITIZE)
     target_compile_options(${target} PRIVATE -fsanitize=address,undefined -fno-omit-frame-pointer)
     target_link_options(${target} PRIVATE -fsanitize=address,undefined)

@@ -399,6 +399,16 @@ class Parser {
 
 }  // namespace
 
+const char* json_type_name(const Json& value) {
+  if (value.is_number_integer()) return "integer";
+  if (value.is_number()) return "number";
+  if (value.is_string()) return "string";
+  if (value.is_boolean()) return "boolean";
+  if (value.is_array()) return "array";
+  if (value.is_object()) return "object";
+  return "null";
+}
+
 std::string pointer_append(std::string_view pointer, std::string_view token) {
   std::string out(pointer);
   out += '/';

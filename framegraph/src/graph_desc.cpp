@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "antumbra/base/json_document.hpp"
 #include "antumbra/fg/registry.hpp"
 #include "antumbra/fg/vocabulary.hpp"
 
@@ -17,16 +18,6 @@ constexpr std::uint32_t kMaxLayers = 2048;
 constexpr std::uint32_t kMaxViewportDivisor = 64;
 constexpr double kMaxScale = 8.0;
 
-std::string json_type_name(const Json& value) {
-  if (value.is_number_integer()) return "integer";
-  if (value.is_number()) return "number";
-  if (value.is_string()) return "string";
-  if (value.is_boolean()) return "boolean";
-  if (value.is_array()) return "array";
-  if (value.is_object()) return "object";
-  return "null";
-}
-
 class GraphParser {
  public:
   explicit GraphParser(const JsonDocument& doc) : doc_(doc) {}
@@ -35,7 +26,8 @@ class GraphParser {
     GraphDesc graph;
     const Json& root = doc_.root();
     if (!root.is_object()) {
-      error(codes::kWrongType, "a graph file must be a JSON object, not " + json_type_name(root),
+      error(codes::kWrongType,
+            std::string("a graph file must be a JSON object, not ") + base::json_type_name(root),
             "");
       return std::move(diags_);
     }
@@ -71,7 +63,7 @@ class GraphParser {
 
   void wrong_type(const Json& value, const std::string& pointer, std::string_view expected) {
     error(codes::kWrongType,
-          "expected " + std::string(expected) + ", found " + json_type_name(value), pointer);
+          "expected " + std::string(expected) + ", found " + base::json_type_name(value), pointer);
   }
 
   // Rejects keys outside `allowed`, suggesting the nearest allowed one.

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <map>
 
+#include "antumbra/base/json_document.hpp"
 #include "antumbra/fg/compiler_phases.hpp"
 #include "antumbra/fg/vocabulary.hpp"
 
@@ -13,16 +14,6 @@ std::string number_text(double value) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%g", value);
   return buf;
-}
-
-std::string json_type_name(const Json& value) {
-  if (value.is_number_integer()) return "integer";
-  if (value.is_number()) return "number";
-  if (value.is_string()) return "string";
-  if (value.is_boolean()) return "boolean";
-  if (value.is_array()) return "array";
-  if (value.is_object()) return "object";
-  return "null";
 }
 
 std::string join(const std::vector<std::string>& items) {
@@ -43,15 +34,17 @@ bool check_param(const JsonDocument& doc, const ParamDesc& param, const Json& va
     case ParamType::boolean:
       if (!value.is_boolean())
         return fail(codes::kParamType,
-                    who + " expects true or false, found " + json_type_name(value));
+                    who + " expects true or false, found " + base::json_type_name(value));
       return true;
     case ParamType::string:
       if (!value.is_string())
-        return fail(codes::kParamType, who + " expects a string, found " + json_type_name(value));
+        return fail(codes::kParamType,
+                    who + " expects a string, found " + base::json_type_name(value));
       return true;
     case ParamType::enumeration: {
       if (!value.is_string())
-        return fail(codes::kParamType, who + " expects a string, found " + json_type_name(value));
+        return fail(codes::kParamType,
+                    who + " expects a string, found " + base::json_type_name(value));
       const auto s = value.get<std::string>();
       if (std::find(param.choices.begin(), param.choices.end(), s) != param.choices.end())
         return true;
@@ -64,7 +57,7 @@ bool check_param(const JsonDocument& doc, const ParamDesc& param, const Json& va
       const bool integer = param.type == ParamType::integer;
       if (integer ? !value.is_number_integer() : !value.is_number()) {
         return fail(codes::kParamType, who + " expects " + (integer ? "an integer" : "a number") +
-                                           ", found " + json_type_name(value));
+                                           ", found " + base::json_type_name(value));
       }
       const double v = value.get<double>();
       if ((param.min && v < *param.min) || (param.max && v > *param.max)) {

@@ -20,7 +20,7 @@ using editor::NodeGraph;
 
 namespace {
 
-const fs::path kRoot = ANTUMBRA_SOURCE_DIR;
+const fs::path kShippedRoot = ANTUMBRA_SOURCE_DIR;
 
 const fgvk::PassRegistry& registry() {
   static const fgvk::PassRegistry kRegistry = passes::builtin_pass_registry();
@@ -29,7 +29,7 @@ const fgvk::PassRegistry& registry() {
 
 std::vector<fs::path> shipped_graphs() {
   std::vector<fs::path> out;
-  for (const auto& entry : fs::directory_iterator(kRoot / "data" / "graphs")) {
+  for (const auto& entry : fs::directory_iterator(kShippedRoot / "data" / "graphs")) {
     if (entry.path().extension() == ".json") out.push_back(entry.path());
   }
   std::sort(out.begin(), out.end());
@@ -192,8 +192,8 @@ TEST(ShippedNodeGraphs, AddingAPassAtTheEndMovesNothingElse) {
 // 3): the three sources are one pass from the penumbra, so none has slack; the G-buffer and
 // the shadow maps (graphics) could overlap the light layering (compute) at best.
 TEST(ShippedNodeGraphs, DefaultGraphScheduleWithUnitWeights) {
-  const auto result =
-      fg::compile_file((kRoot / "data/graphs/layered-ssss.json").string(), registry().reflection());
+  const auto result = fg::compile_file((kShippedRoot / "data/graphs/layered-ssss.json").string(),
+                                       registry().reflection());
   ASSERT_TRUE(result.ok()) << result.diagnostics().to_text();
   const fg::Plan& plan = result.value();
   const fg::Schedule s = fg::analyse_schedule(fg::schedule_input(plan, fg::unit_weights(plan)));

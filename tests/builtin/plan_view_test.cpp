@@ -19,7 +19,7 @@ using namespace antumbra;
 
 namespace {
 
-const fs::path kRoot = ANTUMBRA_SOURCE_DIR;
+const fs::path kSourceRoot = ANTUMBRA_SOURCE_DIR;
 
 void expect_same_barriers(const std::vector<editor::PlanViewBarrier>& shown,
                           const base::Json& listed, const std::string& where) {
@@ -70,7 +70,7 @@ TEST(PlanView, EqualsThePlanJsonOfEveryShippedGraph) {
   const auto registry = passes::builtin_pass_registry();
   int graphs = 0;
   int shared = 0;
-  for (const auto& entry : fs::directory_iterator(kRoot / "data" / "graphs")) {
+  for (const auto& entry : fs::directory_iterator(kSourceRoot / "data" / "graphs")) {
     if (entry.path().extension() != ".json") continue;
     const auto result = fg::compile_file(entry.path().string(), registry.reflection());
     ASSERT_TRUE(result.ok()) << result.diagnostics().to_text();

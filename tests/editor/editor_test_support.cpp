@@ -136,6 +136,25 @@ constexpr auto kBuffer = fg::ResourceKind::buffer;
 
 }  // namespace
 
+std::vector<std::string> lines(const std::string& text) {
+  std::vector<std::string> out;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) out.push_back(line);
+  return out;
+}
+
+// The lines of `b` that differ from `a`.
+std::vector<std::string> changed_lines(const std::string& a, const std::string& b) {
+  const auto la = lines(a);
+  const auto lb = lines(b);
+  EXPECT_EQ(la.size(), lb.size());
+  std::vector<std::string> out;
+  for (std::size_t i = 0; i < la.size() && i < lb.size(); ++i) {
+    if (la[i] != lb[i]) out.push_back(lb[i]);
+  }
+  return out;
+}
+
 fg::Registry make_fake_registry() {
   fg::Registry registry;
   registry.add(pass("light-layering",

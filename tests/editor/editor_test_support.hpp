@@ -27,6 +27,10 @@ T take(base::Result<T> result) {
   return std::move(result.value());
 }
 void write(const std::filesystem::path& file, const std::string& text);
+// The lines of `text`, without their line ends.
+std::vector<std::string> lines(const std::string& text);
+// The lines of `b` that differ from `a` (the same line count is expected).
+std::vector<std::string> changed_lines(const std::string& a, const std::string& b);
 // Every field of every light equal, in order (gtest failures name the light).
 void expect_same_lights(const std::vector<scene::PointLight>& expected,
                         const std::vector<scene::PointLight>& actual);

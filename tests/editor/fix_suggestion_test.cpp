@@ -1,5 +1,5 @@
 // Suggested fixes: computed by search, verified by re-colouring, applied as one undoable
-// command, and really bringing the layout under the cap (also on random layouts).
+// command, and really bringing the layout under the layer_cap (also on random layouts).
 #include <chrono>
 #include <cstdio>
 #include <random>
@@ -18,7 +18,7 @@ namespace {
 
 using testing::fixture;
 
-layering::LayeringOptions cap(int k) {
+layering::LayeringOptions layer_cap(int k) {
   layering::LayeringOptions options;
   options.max_layers = k;
   return options;
@@ -49,7 +49,7 @@ SceneDocument scene_of(const std::vector<Lamp>& lamps, bool sun = false) {
   return testing::take(SceneDocument::parse(text.str(), "generated.json"));
 }
 
-// The fix, applied to a copy of the lights, really fits the cap.
+// The fix, applied to a copy of the lights, really fits the layer_cap.
 void expect_fix_fits(const std::vector<scene::PointLight>& lights, const LayerFix& fix, int k) {
   std::vector<scene::PointLight> fixed = lights;
   ASSERT_LT(fix.light, fixed.size());
@@ -62,7 +62,7 @@ void expect_fix_fits(const std::vector<scene::PointLight>& lights, const LayerFi
     EXPECT_EQ(fix.new_position.y, fix.old_position.y);  // moves stay on the ground plane
     fixed[fix.light].position = fix.new_position;
   }
-  const LayerReport report = analyse_layers(fixed, cap(k));
+  const LayerReport report = analyse_layers(fixed, layer_cap(k));
   EXPECT_FALSE(report.over_cap()) << fix.description;
   EXPECT_LE(report.layers_needed, k);
   EXPECT_EQ(report.layers_needed, fix.layers_needed);
@@ -80,7 +80,7 @@ std::vector<scene::PointLight> lights_with(std::vector<scene::PointLight> lights
 
 TEST(SuggestFix, NothingToFixWhenTheLayoutFits) {
   const auto doc = SceneDocument::load(fixture("lamps.json"));
-  const FixSuggestion s = suggest_fix(doc->lights(), cap(3));
+  const FixSuggestion s = suggest_fix(doc->lights(), layer_cap(3));
   EXPECT_FALSE(s.needed);
   EXPECT_EQ(s.best(), nullptr);
   EXPECT_NE(s.message.find("fits"), std::string::npos) << s.message;
@@ -89,7 +89,7 @@ TEST(SuggestFix, NothingToFixWhenTheLayoutFits) {
 TEST(SuggestFix, ShrinksOneRangeOfATriangleAsOneUndoableStep) {
   auto doc = testing::take(SceneDocument::load(fixture("lamps.json")));
   doc.set_position(2, {1.5f, 2.0f, 1.0f});  // lamp c between a and b: 4 layers needed
-  LayerStatus status(cap(3));
+  LayerStatus status(layer_cap(3));
   ASSERT_TRUE(status.update(doc).over_cap());
   const FixSuggestion s = status.suggestion(doc);  // a copy: the cache changes with the edit
   ASSERT_TRUE(s.needed);
@@ -119,7 +119,7 @@ TEST(SuggestFix, ShrinksOneRangeOfATriangleAsOneUndoableStep) {
   // The saved file says the same to the engine.
   const auto scene = scene::parse_scene_text(doc.to_text(), doc.file().string());
   ASSERT_TRUE(scene.ok());
-  EXPECT_FALSE(analyse_layers(scene->lights, cap(3)).over_cap());
+  EXPECT_FALSE(analyse_layers(scene->lights, layer_cap(3)).over_cap());
   ASSERT_TRUE(doc.undo());
   EXPECT_TRUE(status.update(doc).over_cap());
 
@@ -132,7 +132,7 @@ TEST(SuggestFix, ShrinksOneRangeOfATriangleAsOneUndoableStep) {
 TEST(SuggestFix, AStaleFixIsRefused) {
   auto doc = testing::take(SceneDocument::load(fixture("lamps.json")));
   doc.set_position(2, {1.5f, 2.0f, 1.0f});
-  const FixSuggestion s = suggest_fix(doc.lights(), cap(3));
+  const FixSuggestion s = suggest_fix(doc.lights(), layer_cap(3));
   ASSERT_NE(s.best(), nullptr);
   doc.set_name(s.best()->light, "renamed");
   EXPECT_FALSE(apply_fix(doc, *s.best()));
@@ -151,7 +151,7 @@ std::vector<Lamp> two_groups_of_four() {
 
 TEST(SuggestFix, ChangesOneLightPerGroupWhenNoSingleLightFixExists) {
   const SceneDocument doc = scene_of(two_groups_of_four());
-  const FixSuggestion s = suggest_fix(doc.lights(), cap(3));
+  const FixSuggestion s = suggest_fix(doc.lights(), layer_cap(3));
   EXPECT_TRUE(s.needed);
   EXPECT_FALSE(s.range_fix.has_value());
   EXPECT_FALSE(s.move_fix.has_value());
@@ -165,13 +165,13 @@ TEST(SuggestFix, ChangesOneLightPerGroupWhenNoSingleLightFixExists) {
   EXPECT_EQ(s.changes().size(), 2u);
   EXPECT_EQ(s.description(), s.multi_fix->description);
   EXPECT_NE(s.message.find(s.multi_fix->description), std::string::npos) << s.message;
-  EXPECT_FALSE(analyse_layers(lights_with(doc.lights(), *s.multi_fix), cap(3)).over_cap());
+  EXPECT_FALSE(analyse_layers(lights_with(doc.lights(), *s.multi_fix), layer_cap(3)).over_cap());
 }
 
 TEST(SuggestFix, DefaultAtriumAtCapThreeGetsASeveralLightFix) {
   auto doc = testing::take(SceneDocument::load(testing::source_file("data/scenes/atrium.json")));
   const std::vector<scene::PointLight> before = doc.lights();
-  LayerStatus status(cap(3));
+  LayerStatus status(layer_cap(3));
   ASSERT_TRUE(status.update(doc).over_cap());
   EXPECT_EQ(status.report().layers_needed, 4);     // a 4x4 grid where every 2x2 block is a K4
   const FixSuggestion s = status.suggestion(doc);  // a copy: the cache changes with the edit
@@ -189,13 +189,13 @@ TEST(SuggestFix, DefaultAtriumAtCapThreeGetsASeveralLightFix) {
       EXPECT_GE(change.new_range, 0.5f * change.old_range);  // the default limit
     }
   }
-  // The real colouring of the changed lights fits the cap.
-  const LayerReport fixed = analyse_layers(lights_with(doc.lights(), fix), cap(3));
+  // The real colouring of the changed lights fits the layer_cap.
+  const LayerReport fixed = analyse_layers(lights_with(doc.lights(), fix), layer_cap(3));
   EXPECT_FALSE(fixed.over_cap()) << fix.description;
   EXPECT_LE(fixed.layers_needed, 3);
   EXPECT_EQ(fixed.layers_needed, fix.layers_needed);
 
-  // Applied: one undo step that brings the document under the cap ...
+  // Applied: one undo step that brings the document under the layer_cap ...
   const std::size_t steps = doc.history().undo_count();
   const EditResult applied = apply_fix(doc, s);
   ASSERT_TRUE(applied) << applied.message;
@@ -207,7 +207,7 @@ TEST(SuggestFix, DefaultAtriumAtCapThreeGetsASeveralLightFix) {
   EXPECT_FALSE(status.suggestion(doc).needed);
   const auto scene = scene::parse_scene_text(doc.to_text(), doc.file().string());
   ASSERT_TRUE(scene.ok());
-  EXPECT_FALSE(analyse_layers(scene->lights, cap(3)).over_cap());
+  EXPECT_FALSE(analyse_layers(scene->lights, layer_cap(3)).over_cap());
   // ... and one undo restores every light exactly; redo makes every change again.
   ASSERT_TRUE(doc.undo());
   testing::expect_same_lights(before, doc.lights());
@@ -219,7 +219,7 @@ TEST(SuggestFix, DefaultAtriumAtCapThreeGetsASeveralLightFix) {
 
 TEST(SuggestFix, AStaleSeveralLightFixChangesNothing) {
   auto doc = scene_of(two_groups_of_four());
-  const FixSuggestion s = suggest_fix(doc.lights(), cap(3));
+  const FixSuggestion s = suggest_fix(doc.lights(), layer_cap(3));
   ASSERT_TRUE(s.multi_fix.has_value()) << s.message;
   ASSERT_TRUE(doc.set_name(s.multi_fix->changes.back().light, "renamed"));
   const std::vector<scene::PointLight> before = doc.lights();
@@ -238,7 +238,7 @@ TEST(SuggestFix, SaysWhyWhenNoFixExistsWithinTheLimits) {
   const SceneDocument doc = scene_of(lamps);
   FixSearchOptions limits;
   limits.max_move = 1.0f;
-  const FixSuggestion s = suggest_fix(doc.lights(), cap(3), limits);
+  const FixSuggestion s = suggest_fix(doc.lights(), layer_cap(3), limits);
   EXPECT_TRUE(s.needed);
   EXPECT_EQ(s.best(), nullptr);
   EXPECT_FALSE(s.multi_fix.has_value());
@@ -256,7 +256,7 @@ TEST(SuggestFix, SaysWhyWhenNoFixExistsWithinTheLimits) {
   const auto atrium = SceneDocument::load(testing::source_file("data/scenes/atrium.json"));
   limits = {};
   limits.max_lights_changed = 3;
-  const FixSuggestion a = suggest_fix(atrium->lights(), cap(3), limits);
+  const FixSuggestion a = suggest_fix(atrium->lights(), layer_cap(3), limits);
   EXPECT_FALSE(a.multi_fix.has_value());
   EXPECT_NE(a.message.find("at most 3 lights"), std::string::npos) << a.message;
 }
@@ -267,7 +267,7 @@ float largest_fitting_range(std::vector<scene::PointLight> lights, std::size_t i
   for (int cm = static_cast<int>(std::ceil(old_range * 100.0f)) - 1; cm >= 1; --cm) {
     lights[i].range = static_cast<float>(cm / 100.0);
     if (lights[i].range >= old_range) continue;
-    if (!analyse_layers(lights, cap(k)).over_cap()) return lights[i].range;
+    if (!analyse_layers(lights, layer_cap(k)).over_cap()) return lights[i].range;
   }
   return 0.0f;
 }
@@ -282,7 +282,7 @@ TEST(SuggestFix, RandomLayoutsWithAFixedSeed) {
   int multi_fixes = 0;
   for (int layout = 0; layout < 40; ++layout) {
     SCOPED_TRACE("layout " + std::to_string(layout));
-    const bool sun = layout % 4 >= 2;  // the sun's own layer raises the cap it needs by one
+    const bool sun = layout % 4 >= 2;  // the sun's own layer raises the layer_cap it needs by one
     const int k = 2 + layout % 2 + (sun ? 1 : 0);
     std::vector<Lamp> lamps(8 + rng() % 10);
     for (Lamp& lamp : lamps) {
@@ -294,8 +294,8 @@ TEST(SuggestFix, RandomLayoutsWithAFixedSeed) {
       if (rng() % 3 == 0) lamp.spot_angle = 20 + static_cast<int>(rng() % 60);
     }
     SceneDocument doc = scene_of(lamps, sun);
-    const FixSuggestion s = suggest_fix(doc.lights(), cap(k));
-    EXPECT_EQ(s.needed, analyse_layers(doc.lights(), cap(k)).over_cap());
+    const FixSuggestion s = suggest_fix(doc.lights(), layer_cap(k));
+    EXPECT_EQ(s.needed, analyse_layers(doc.lights(), layer_cap(k)).over_cap());
     if (!s.needed) continue;
     ++over_cap;
     if (s.range_fix) {
@@ -321,15 +321,15 @@ TEST(SuggestFix, RandomLayoutsWithAFixedSeed) {
     }
     if (const LayerFix* fix = s.best()) {
       ASSERT_TRUE(apply_fix(doc, *fix));
-      EXPECT_FALSE(analyse_layers(doc.lights(), cap(k)).over_cap());
+      EXPECT_FALSE(analyse_layers(doc.lights(), layer_cap(k)).over_cap());
       ASSERT_TRUE(doc.undo());
-      EXPECT_TRUE(analyse_layers(doc.lights(), cap(k)).over_cap());
+      EXPECT_TRUE(analyse_layers(doc.lights(), layer_cap(k)).over_cap());
     } else if (s.multi_fix) {  // several lights: one step, and undo restores every one
       ++multi_fixes;
       EXPECT_NE(s.message.find("no change to one light"), std::string::npos) << s.message;
       const std::vector<scene::PointLight> before = doc.lights();
       ASSERT_TRUE(apply_fix(doc, s));
-      EXPECT_FALSE(analyse_layers(doc.lights(), cap(k)).over_cap()) << s.message;
+      EXPECT_FALSE(analyse_layers(doc.lights(), layer_cap(k)).over_cap()) << s.message;
       ASSERT_TRUE(doc.undo());
       testing::expect_same_lights(before, doc.lights());
     } else {
@@ -355,7 +355,7 @@ namespace {
 double milliseconds_to_suggest(std::span<const scene::PointLight> lights, int k,
                                FixSuggestion& out) {
   const auto start = std::chrono::steady_clock::now();
-  out = suggest_fix(lights, cap(k));
+  out = suggest_fix(lights, layer_cap(k));
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
       .count();
 }
@@ -395,7 +395,7 @@ TEST(SuggestFixTiming, TheAtriumAnd1024Lights) {
   ASSERT_TRUE(s.multi_fix.has_value()) << s.message;
   EXPECT_EQ(s.multi_fix->changes.size(), 2u);
 
-  // Over the cap everywhere (the atrium's king graph, 32x32): far past any fix of a few
+  // Over the layer_cap everywhere (the atrium's king graph, 32x32): far past any fix of a few
   // lights, so the search must give up quickly, saying why.
   std::vector<Lamp> dense = grid_of_1024(1.5f);
   for (Lamp& lamp : dense) lamp.range = 1.1f;  // diagonals 2.12 m apart conflict

@@ -12,6 +12,7 @@
 namespace antumbra::editor {
 namespace {
 
+using testing::changed_lines;
 using testing::fixture;
 using testing::read;
 using testing::source_file;
@@ -23,24 +24,6 @@ class GraphDocumentTest : public ::testing::Test {
   }
   fg::Registry registry_ = testing::make_fake_registry();
 };
-
-std::vector<std::string> lines(const std::string& text) {
-  std::vector<std::string> out;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) out.push_back(line);
-  return out;
-}
-
-std::vector<std::string> changed_lines(const std::string& a, const std::string& b) {
-  const auto la = lines(a);
-  const auto lb = lines(b);
-  EXPECT_EQ(la.size(), lb.size());
-  std::vector<std::string> out;
-  for (std::size_t i = 0; i < la.size() && i < lb.size(); ++i) {
-    if (la[i] != lb[i]) out.push_back(lb[i]);
-  }
-  return out;
-}
 
 TEST_F(GraphDocumentTest, ListsPassesAndParamsFromTheReflection) {
   const GraphDocument doc = load(fixture("graph.json"));

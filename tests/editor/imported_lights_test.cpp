@@ -18,7 +18,7 @@ using testing::read;
 using testing::ScratchDir;
 using testing::take;
 
-void expect_engine_agrees(const SceneDocument& doc) {
+void expect_engine_reads_the_same(const SceneDocument& doc) {
   const auto parsed = scene::parse_scene_text(doc.to_text(), doc.file().string());
   ASSERT_TRUE(parsed.ok()) << parsed.diagnostics().to_text() << "\n" << doc.to_text();
   testing::expect_same_lights(parsed->lights, doc.lights());
@@ -45,7 +45,7 @@ TEST(ImportedLights, AreListedAfterTheFilesOwnAsTheEngineHasThem) {
   EXPECT_EQ(doc.lights()[1].name, "lamp/bulb node");
   EXPECT_EQ(doc.origin(1), LightOrigin::imported);
   EXPECT_EQ(doc.imported_lights().size(), 3u);
-  expect_engine_agrees(doc);
+  expect_engine_reads_the_same(doc);
 }
 
 TEST(ImportedLights, AnEditBecomesAnOverrideAndUndoRemovesIt) {
@@ -63,11 +63,11 @@ TEST(ImportedLights, AnEditBecomesAnOverrideAndUndoRemovesIt) {
   EXPECT_EQ(doc.lights()[1].position, glm::vec3(0, 4, 0));  // still the glTF's
   EXPECT_EQ(doc.json()["lights"][1],
             base::Json::parse(R"({"name": "lamp/cone", "intensity": 7.0})"));
-  expect_engine_agrees(doc);
+  expect_engine_reads_the_same(doc);
 
   ASSERT_TRUE(doc.set_position(1, {1, 3, 0}));  // edits the override's keys
   EXPECT_EQ(doc.json()["lights"][1]["position"], base::Json::parse("[1.0, 3.0, 0.0]"));
-  expect_engine_agrees(doc);
+  expect_engine_reads_the_same(doc);
 
   doc.save();
   EXPECT_EQ(read(dir.path() / "lit.gltf"), gltf_before);  // the model is never rewritten
@@ -80,7 +80,7 @@ TEST(ImportedLights, AnEditBecomesAnOverrideAndUndoRemovesIt) {
   EXPECT_EQ(doc.json()["lights"].size(), 1u);
   EXPECT_EQ(doc.origin(2), LightOrigin::imported);
   EXPECT_EQ(doc.lights()[2].name, "lamp/cone");
-  expect_engine_agrees(doc);
+  expect_engine_reads_the_same(doc);
 }
 
 TEST(ImportedLights, DeletingAnOverrideRevertsAndImportedLightsKeepTheirNames) {
@@ -93,7 +93,7 @@ TEST(ImportedLights, DeletingAnOverrideRevertsAndImportedLightsKeepTheirNames) {
   EXPECT_EQ(doc.lights().size(), 4u);
   EXPECT_EQ(doc.lights()[2].name, "lamp/cone");
   EXPECT_EQ(doc.lights()[2].intensity, gltf_intensity);
-  expect_engine_agrees(doc);
+  expect_engine_reads_the_same(doc);
 
   EXPECT_FALSE(doc.delete_light(1));  // imported: refused, nothing changes
   EXPECT_FALSE(doc.set_name(1, "renamed"));
@@ -108,7 +108,7 @@ TEST(ImportedLights, DeletingAnOverrideRevertsAndImportedLightsKeepTheirNames) {
   EXPECT_NEAR(doc.lights()[1].spot_outer, doc.lights()[3].spot_outer, 1e-4f);
   // Written with the editor's 4 decimals.
   EXPECT_LT(glm::length(doc.lights()[1].direction - doc.lights()[3].direction), 1e-4f);
-  expect_engine_agrees(doc);
+  expect_engine_reads_the_same(doc);
 }
 
 TEST(ImportedLights, ASpotsConeAndDirectionAreEditable) {
@@ -124,7 +124,7 @@ TEST(ImportedLights, ASpotsConeAndDirectionAreEditable) {
   EXPECT_NEAR(doc.lights()[1].direction.x, 0.0f, 1e-6f);
   EXPECT_NEAR(doc.lights()[1].direction.y, -h, 1e-4f);
   EXPECT_NEAR(doc.lights()[1].direction.z, h, 1e-4f);
-  expect_engine_agrees(doc);
+  expect_engine_reads_the_same(doc);
   // Refused, nothing changes: a cone past 90 degrees, an inner cone wider than the cone,
   // a zero direction, and a direction or a cone for a point light.
   const std::string before = doc.to_text();
@@ -144,10 +144,10 @@ TEST(ImportedLights, EditsAtTheLimitsStayLoadable) {
   // dragged to it must not be written past it.
   const float outer = doc.lights()[2].spot_outer;
   ASSERT_TRUE(doc.set_spot_angles(2, outer, outer));
-  expect_engine_agrees(doc);
+  expect_engine_reads_the_same(doc);
   ASSERT_TRUE(doc.set_spot_angles(1, 20.0f, 0.0f));  // an inner cone of 0 is valid
   EXPECT_EQ(doc.lights()[1].spot_inner, 0.0f);
-  expect_engine_agrees(doc);
+  expect_engine_reads_the_same(doc);
   // The glTF's sun made a point light: a real range and radius, not the sun's.
   const int sun = doc.find_light("lamp/sun");
   ASSERT_GE(sun, 0);
@@ -156,7 +156,7 @@ TEST(ImportedLights, EditsAtTheLimitsStayLoadable) {
       doc.lights()[static_cast<std::size_t>(doc.find_light("lamp/sun"))];
   EXPECT_TRUE(std::isfinite(was_sun.range));
   EXPECT_LT(was_sun.size, 1.0f);
-  expect_engine_agrees(doc);
+  expect_engine_reads_the_same(doc);
   const auto reloaded = scene::parse_scene_text(doc.to_text(), doc.file().string());
   EXPECT_TRUE(reloaded.ok()) << reloaded.diagnostics().to_text();
 }
@@ -176,7 +176,7 @@ TEST(ImportedLights, NamesOfHiddenImportedLightsAreTaken) {
   EXPECT_LT(doc.find_light("lamp/sun"), 0);  // hidden: the scene has its own sun
   // Named so, "own" would silently become an override of that sun: a second sun.
   EXPECT_FALSE(doc.set_name(1, "lamp/sun"));
-  expect_engine_agrees(doc);
+  expect_engine_reads_the_same(doc);
 }
 
 TEST(ImportedLights, TheSelectionFollowsItsLightThroughARevert) {

@@ -15,7 +15,7 @@ namespace {
 
 using testing::fixture;
 
-const fg::Registry& registry() {
+const fg::Registry& fake_registry() {
   static const fg::Registry kRegistry = testing::make_fake_registry();
   return kRegistry;
 }
@@ -53,7 +53,7 @@ TEST(LoadPath, BadJsonIsLocatedAtLineAndColumnUnderTheTextsName) {
 
 TEST(LoadPath, AGraphErrorCarriesItsJsonPointerAndPosition) {
   const auto plan =
-      fg::compile_graph(fg::GraphSource::from_text(with_unknown_type(), "g.json"), registry());
+      fg::compile_graph(fg::GraphSource::from_text(with_unknown_type(), "g.json"), fake_registry());
   ASSERT_FALSE(plan.ok());
   const base::Diagnostic* d = plan.diagnostics().find(codes::graph::kUnknownPassType);
   ASSERT_NE(d, nullptr) << plan.diagnostics().to_text();
@@ -66,9 +66,9 @@ TEST(LoadPath, AGraphErrorCarriesItsJsonPointerAndPosition) {
 
 TEST(LoadPath, AFileAndItsTextUnderItsNameLoadAlike) {
   const std::string path = fixture("live_graph.json").string();
-  const auto from_file = fg::compile_graph(fg::GraphSource::from_file(path), registry());
+  const auto from_file = fg::compile_graph(fg::GraphSource::from_file(path), fake_registry());
   const auto from_text =
-      fg::compile_graph(fg::GraphSource::from_text(testing::read(path), path), registry());
+      fg::compile_graph(fg::GraphSource::from_text(testing::read(path), path), fake_registry());
   ASSERT_TRUE(from_file.ok()) << from_file.diagnostics().to_text();
   ASSERT_TRUE(from_text.ok()) << from_text.diagnostics().to_text();
   EXPECT_EQ(from_file->file, path);
@@ -81,11 +81,11 @@ TEST(LoadPath, AFileAndItsTextUnderItsNameLoadAlike) {
 // what it breaks is reported like the file's own mistakes.
 TEST(LoadPath, TheHostsEditRunsBeforeTheCompile) {
   const auto source = fg::GraphSource::from_file(fixture("live_graph.json").string());
-  const auto hdr =
-      fg::compile_graph(source, registry(), {}, [](fg::GraphDesc& graph) { graph.output = "hdr"; });
+  const auto hdr = fg::compile_graph(source, fake_registry(), {},
+                                     [](fg::GraphDesc& graph) { graph.output = "hdr"; });
   ASSERT_TRUE(hdr.ok()) << hdr.diagnostics().to_text();
   EXPECT_EQ(hdr->resources.at(static_cast<std::size_t>(hdr->output)).name, "hdr");
-  const auto buffer = fg::compile_graph(source, registry(), {},
+  const auto buffer = fg::compile_graph(source, fake_registry(), {},
                                         [](fg::GraphDesc& graph) { graph.output = "table"; });
   ASSERT_FALSE(buffer.ok());
   const base::Diagnostic* d = buffer.diagnostics().find(codes::graph::kOutputNotImage);
@@ -97,7 +97,7 @@ TEST(LoadPath, TheHostsEditRunsBeforeTheCompile) {
 // The editor's document is read through the same path: the same located diagnostics.
 TEST(LoadPath, TheEditorsDocumentReadsThroughIt) {
   const std::string bad = "{ \"version\": 1,\n  \"passes\": {}\n}\n";
-  const auto document = GraphDocument::parse(bad, "doc.json", lookup_in(registry()));
+  const auto document = GraphDocument::parse(bad, "doc.json", lookup_in(fake_registry()));
   const auto graph = fg::read_graph(fg::GraphSource::from_text(bad, "doc.json"));
   ASSERT_FALSE(document.ok());
   ASSERT_FALSE(graph.ok());

@@ -38,10 +38,10 @@ fg::PortDesc port(std::string name, fg::PortDirection direction, fg::ResourceKin
 
 constexpr auto kIn = fg::PortDirection::input;
 constexpr auto kOut = fg::PortDirection::output;
-constexpr auto kImage = fg::ResourceKind::image;
+constexpr auto kImageKind = fg::ResourceKind::image;
 
 // source -> filter (optional buffer mask) -> sink.
-fg::Registry registry() {
+fg::Registry node_registry() {
   fg::Registry r;
   const auto desc = [](const char* type, std::vector<fg::PortDesc> ports) {
     fg::PassDesc d;
@@ -51,12 +51,12 @@ fg::Registry registry() {
     return d;
   };
   fg::PassDesc source =
-      desc("source", {port("image", kOut, kImage, {fg::Format::rgba16f, fg::Format::rgba32f})});
-  fg::PassDesc filter = desc(
-      "filter",
-      {port("src", kIn, kImage), port("mask", kIn, kImage, {}, true), port("dst", kOut, kImage)});
-  fg::PassDesc sink =
-      desc("sink", {port("src", kIn, kImage), port("ldr", kOut, kImage, {fg::Format::rgba8})});
+      desc("source", {port("image", kOut, kImageKind, {fg::Format::rgba16f, fg::Format::rgba32f})});
+  fg::PassDesc filter =
+      desc("filter", {port("src", kIn, kImageKind), port("mask", kIn, kImageKind, {}, true),
+                      port("dst", kOut, kImageKind)});
+  fg::PassDesc sink = desc(
+      "sink", {port("src", kIn, kImageKind), port("ldr", kOut, kImageKind, {fg::Format::rgba8})});
   r.add(std::move(source));
   r.add(std::move(filter));
   r.add(std::move(sink));
@@ -83,7 +83,7 @@ constexpr const char* kGraph = R"({
 })";
 
 const fg::Registry& test_registry() {
-  static const fg::Registry kRegistry = registry();
+  static const fg::Registry kRegistry = node_registry();
   return kRegistry;
 }
 

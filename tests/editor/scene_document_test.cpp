@@ -12,6 +12,7 @@
 namespace antumbra::editor {
 namespace {
 
+using testing::changed_lines;
 using testing::expect_same_lights;
 using testing::fixture;
 using testing::read;
@@ -19,25 +20,6 @@ using testing::source_file;
 
 SceneDocument load(const std::filesystem::path& file) {
   return testing::take(SceneDocument::load(file));
-}
-
-std::vector<std::string> lines(const std::string& text) {
-  std::vector<std::string> out;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) out.push_back(line);
-  return out;
-}
-
-// The lines of `b` that differ from `a` (same line count required).
-std::vector<std::string> changed_lines(const std::string& a, const std::string& b) {
-  const auto la = lines(a);
-  const auto lb = lines(b);
-  EXPECT_EQ(la.size(), lb.size());
-  std::vector<std::string> out;
-  for (std::size_t i = 0; i < la.size() && i < lb.size(); ++i) {
-    if (la[i] != lb[i]) out.push_back(lb[i]);
-  }
-  return out;
 }
 
 // The engine's parser reads the document's text to the same lights the editor shows.

@@ -20,7 +20,7 @@ using namespace antumbra::render_testing;
 
 namespace {
 
-constexpr VkExtent2D kView{320, 180};
+constexpr VkExtent2D kShimmerView{320, 180};
 
 struct View {
   gpu::HostImage shadowed;
@@ -34,7 +34,7 @@ class CascadeShimmerTest : public RenderTest {
   gpu::HostImage render(const std::string& graph_file, const scene::Camera& camera,
                         const char* resource) {
     fg::GraphDesc graph = load_graph_file(source_dir() / "data" / "graphs" / graph_file);
-    runtime::RenderSession* session = open_session(kView);
+    runtime::RenderSession* session = open_session(kShimmerView);
     EXPECT_NE(session, nullptr) << skip_reason_;
     if (session == nullptr) return {};
     load_graph_ok(*session, graph);
@@ -70,26 +70,28 @@ struct Agreement {
 };
 
 Agreement compare(const View& a, const View& b) {
-  const float aspect = static_cast<float>(kView.width) / static_cast<float>(kView.height);
+  const float aspect =
+      static_cast<float>(kShimmerView.width) / static_cast<float>(kShimmerView.height);
   const glm::mat4 a_inverse = glm::inverse(a.camera.view_projection(aspect));
   const glm::mat4 b_matrix = b.camera.view_projection(aspect);
   Agreement result;
-  for (std::uint32_t y = 1; y + 1 < kView.height; ++y) {
-    for (std::uint32_t x = 1; x + 1 < kView.width; ++x) {
+  for (std::uint32_t y = 1; y + 1 < kShimmerView.height; ++y) {
+    for (std::uint32_t x = 1; x + 1 < kShimmerView.width; ++x) {
       const float d = a.depth.at(x, y, 0);
       if (d >= 1.0f) continue;
       const glm::vec2 ndc{
-          (static_cast<float>(x) + 0.5f) / static_cast<float>(kView.width) * 2.0f - 1.0f,
-          (static_cast<float>(y) + 0.5f) / static_cast<float>(kView.height) * 2.0f - 1.0f};
+          (static_cast<float>(x) + 0.5f) / static_cast<float>(kShimmerView.width) * 2.0f - 1.0f,
+          (static_cast<float>(y) + 0.5f) / static_cast<float>(kShimmerView.height) * 2.0f - 1.0f};
       glm::vec4 world = a_inverse * glm::vec4(ndc, d, 1.0f);
       world /= world.w;
       glm::vec4 clip = b_matrix * world;
       clip /= clip.w;
-      const float bx = (clip.x * 0.5f + 0.5f) * static_cast<float>(kView.width) - 0.5f;
-      const float by = (clip.y * 0.5f + 0.5f) * static_cast<float>(kView.height) - 0.5f;
+      const float bx = (clip.x * 0.5f + 0.5f) * static_cast<float>(kShimmerView.width) - 0.5f;
+      const float by = (clip.y * 0.5f + 0.5f) * static_cast<float>(kShimmerView.height) - 0.5f;
       const auto qx = static_cast<std::int64_t>(std::lround(bx));
       const auto qy = static_cast<std::int64_t>(std::lround(by));
-      if (qx < 1 || qy < 1 || qx + 1 >= kView.width || qy + 1 >= kView.height) continue;
+      if (qx < 1 || qy < 1 || qx + 1 >= kShimmerView.width || qy + 1 >= kShimmerView.height)
+        continue;
       const auto ux = static_cast<std::uint32_t>(qx);
       const auto uy = static_cast<std::uint32_t>(qy);
       // The same surface: the depth there within a small tolerance of the reprojection,

@@ -27,10 +27,10 @@ using namespace antumbra::render_testing;
 
 namespace {
 
-constexpr VkExtent2D kView{320, 180};
+constexpr VkExtent2D kWidthView{320, 180};
 constexpr float kLightHeight = 4.0f;
 constexpr float kLightRadius = 0.25f;
-constexpr std::uint32_t kFace = 256;  // atlas faces: PCSS's 23 taps then reach 0.7 m
+constexpr std::uint32_t kWidthFace = 256;  // atlas faces: PCSS's 23 taps then reach 0.7 m
 
 float analytic_width(float slab) {
   return 2.0f * kLightRadius * slab / (kLightHeight - slab);
@@ -91,14 +91,14 @@ class PenumbraWidthTest : public RenderTest {
     for (auto& r : graph.resources) {
       if (r.name == "atlas" || r.name == "moments" || r.name == "penumbraMap" ||
           r.name == "peeled") {
-        r.size = fg::SizeSpec{false, 1.0, 1.0, kFace, kFace};
+        r.size = fg::SizeSpec{false, 1.0, 1.0, kWidthFace, kWidthFace};
       }
     }
     if (edit) edit(graph);
     for (auto& p : graph.passes) {
       if (p.type == "shadow-pcss") p.params["kernel"] = "23";
     }
-    runtime::RenderSession* session = open_session(kView);
+    runtime::RenderSession* session = open_session(kWidthView);
     EXPECT_NE(session, nullptr) << skip_reason_;
     if (session == nullptr) return std::nullopt;
     load_graph_ok(*session, graph);
@@ -115,18 +115,19 @@ class PenumbraWidthTest : public RenderTest {
   // Visibility along z = 0 on the floor, binned by x (every scene has the same camera).
   static Profile profile(const Frame& shadowed, const Frame& unshadowed) {
     const auto scene = scene::parse_scene_text(scene_text(kLightHeight / 2), "penumbra-width.json");
-    const float aspect = static_cast<float>(kView.width) / static_cast<float>(kView.height);
+    const float aspect =
+        static_cast<float>(kWidthView.width) / static_cast<float>(kWidthView.height);
     const glm::mat4 inverse = glm::inverse(scene.value().camera.view_projection(aspect));
     Profile p;
     p.sum.assign(240, 0.0f);
     p.count.assign(240, 0);
-    for (std::uint32_t y = 0; y < kView.height; ++y) {
-      for (std::uint32_t x = 0; x < kView.width; ++x) {
+    for (std::uint32_t y = 0; y < kWidthView.height; ++y) {
+      for (std::uint32_t x = 0; x < kWidthView.width; ++x) {
         const float d = shadowed.depth.at(x, y, 0);
         if (d >= 1.0f) continue;
         const glm::vec2 ndc{
-            (static_cast<float>(x) + 0.5f) / static_cast<float>(kView.width) * 2.0f - 1.0f,
-            (static_cast<float>(y) + 0.5f) / static_cast<float>(kView.height) * 2.0f - 1.0f};
+            (static_cast<float>(x) + 0.5f) / static_cast<float>(kWidthView.width) * 2.0f - 1.0f,
+            (static_cast<float>(y) + 0.5f) / static_cast<float>(kWidthView.height) * 2.0f - 1.0f};
         glm::vec4 w = inverse * glm::vec4(ndc, d, 1.0f);
         w /= w.w;
         if (std::abs(w.y) > 0.01f || std::abs(w.z) > 0.08f) continue;  // the floor, near z = 0
@@ -264,7 +265,7 @@ TEST_F(PenumbraWidthTest, EstimatorsFollowSimilarTriangles) {
       // the ray crosses it (SdfLeaksThroughOccludersThinnerThanItsCone).
       if (std::string(graph) == "sdf.json" && slab == kHigh) continue;
       const float expected = 0.8f * analytic_width(slab);
-      const float texel = 2.0f * kLightHeight / kFace;
+      const float texel = 2.0f * kLightHeight / kWidthFace;
       widths[slab == kLow ? 0 : 1] = measure(graph, slab);
       EXPECT_NEAR(widths[slab == kLow ? 0 : 1], expected, 0.3f * expected + 2.0f * texel);
     }
@@ -293,7 +294,7 @@ TEST_F(PenumbraWidthTest, SdfLeaksThroughOccludersThinnerThanItsCone) {
 // Fixed filters: the width does not follow the geometry (tripling W changes it by far
 // less), and hard shadows stay within a few texels.
 TEST_F(PenumbraWidthTest, FixedFiltersDoNotFollowTheGeometry) {
-  const float texel = 2.0f * kLightHeight / kFace;
+  const float texel = 2.0f * kLightHeight / kWidthFace;
   EXPECT_LT(measure("hard.json", kHigh), 3.0f * texel);
   for (const char* graph : {"pcf.json", "evsm4.json"}) {
     SCOPED_TRACE(graph);
@@ -313,7 +314,7 @@ TEST_F(PenumbraWidthTest, WedgesDoNotOverestimateTheUmbra) {
   const auto wedges = visibility("penumbra-wedges.json", scene);
   const auto single = visibility("penumbra-wedges.json", scene, peeling(1));
   ASSERT_TRUE(reference && wedges && single);
-  const float texel = 2.0f * kLightHeight / kFace;
+  const float texel = 2.0f * kLightHeight / kWidthFace;
   const float expected = umbra_end(*reference);
   std::printf(
       "umbra ends at %.3f m (reference), %.3f (3 layers), %.3f (outer wedges only); "
@@ -378,7 +379,7 @@ TEST_F(PenumbraWidthTest, WedgesFollowSimilarTrianglesUnderASpotLight) {
   const auto wedges = visibility("penumbra-wedges.json", scene);
   ASSERT_TRUE(reference && wedges);
   // The spot's face spans 2 tan(60 degrees) across: texels 1.7x the cube faces'.
-  const float texel = 2.0f * std::tan(glm::radians(60.0f)) * kLightHeight / kFace;
+  const float texel = 2.0f * std::tan(glm::radians(60.0f)) * kLightHeight / kWidthFace;
   const float expected = 0.8f * analytic_width(kHigh);
   std::printf(
       "spot light: 10-90 width %.3f m (reference %.3f, 0.8 W = %.3f); umbra ends at "

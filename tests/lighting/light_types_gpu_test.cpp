@@ -23,7 +23,7 @@ using namespace antumbra::lighting_testing;
 
 namespace {
 
-fg::GraphDesc parse(const std::string& text) {
+fg::GraphDesc parse_graph_text(const std::string& text) {
   auto document = base::parse_json(text, "light_types.json");
   if (!document.ok()) throw std::runtime_error(document.diagnostics().to_text());
   auto graph = fg::parse_graph(document.value());
@@ -113,7 +113,7 @@ float check_profile(const std::string& what, const std::vector<std::pair<float, 
 class LightTypesTest : public RenderTest {
  protected:
   gpu::HostImage render(runtime::RenderSession& session, const std::string& graph) {
-    load_graph_ok(session, parse(graph));
+    load_graph_ok(session, parse_graph_text(graph));
     session.render(2, nullptr);
     return read_resource(session, "hdr");
   }

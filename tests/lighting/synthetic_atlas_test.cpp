@@ -27,7 +27,7 @@ namespace {
 
 constexpr std::uint32_t kFace = 64;
 constexpr float kNear = 0.05f;
-const glm::vec3 kLight{0.0f, 4.0f, 0.0f};
+const glm::vec3 kSyntheticLight{0.0f, 4.0f, 0.0f};
 constexpr float kRange = 12.0f;
 const glm::vec3 kBoxMin{-0.5f, 1.8f, -0.5f};
 const glm::vec3 kBoxMax{0.5f, 2.2f, 0.5f};
@@ -38,19 +38,19 @@ glm::mat4 face_view_proj(std::uint32_t face) {
   static const glm::vec3 kUps[6] = {{0, -1, 0}, {0, -1, 0}, {0, 0, 1},
                                     {0, 0, -1}, {0, -1, 0}, {0, -1, 0}};
   const glm::mat4 proj = glm::perspectiveRH_ZO(glm::radians(90.0f), 1.0f, kNear, kRange);
-  return proj * glm::lookAtRH(kLight, kLight + kDirs[face], kUps[face]);
+  return proj * glm::lookAtRH(kSyntheticLight, kSyntheticLight + kDirs[face], kUps[face]);
 }
 
 // Nearest hit of the ray (light + t dir) with the floor plane y = 0 and the box.
 float cast(const glm::vec3& dir) {
   float best = std::numeric_limits<float>::infinity();
-  if (dir.y < 0.0f) best = -kLight.y / dir.y;
+  if (dir.y < 0.0f) best = -kSyntheticLight.y / dir.y;
   float t0 = 0.0f;
   float t1 = best;
   for (int a = 0; a < 3; ++a) {
     const float inv = 1.0f / dir[a];
-    float n = (kBoxMin[a] - kLight[a]) * inv;
-    float f = (kBoxMax[a] - kLight[a]) * inv;
+    float n = (kBoxMin[a] - kSyntheticLight[a]) * inv;
+    float f = (kBoxMax[a] - kSyntheticLight[a]) * inv;
     if (n > f) std::swap(n, f);
     t0 = std::max(t0, n);
     t1 = std::min(t1, f);
@@ -94,11 +94,11 @@ class AtlasFillPass final : public fgvk::Pass {
         for (std::uint32_t x = 0; x < kFace; ++x) {
           const glm::vec2 ndc = (glm::vec2(x, y) + 0.5f) / float(kFace) * 2.0f - 1.0f;
           const glm::vec4 far = inv * glm::vec4(ndc, 1.0f, 1.0f);
-          const glm::vec3 dir = glm::normalize(glm::vec3(far) / far.w - kLight);
+          const glm::vec3 dir = glm::normalize(glm::vec3(far) / far.w - kSyntheticLight);
           const float t = cast(dir);
           float d = 1.0f;
           if (std::isfinite(t)) {
-            const glm::vec4 clip = view_proj * glm::vec4(kLight + t * dir, 1.0f);
+            const glm::vec4 clip = view_proj * glm::vec4(kSyntheticLight + t * dir, 1.0f);
             d = std::clamp(clip.z / clip.w, 0.0f, 1.0f);
           }
           depth[(face * kFace + y) * kFace + x] = d;
@@ -112,7 +112,7 @@ class AtlasFillPass final : public fgvk::Pass {
     for (std::uint32_t i = 0; i < passes::kMaxShadowLights; ++i) {
       passes::ShadowLight light;  // no atlas slot
       if (i == 0) {
-        light.position_range = glm::vec4(kLight, kRange);
+        light.position_range = glm::vec4(kSyntheticLight, kRange);
         light.params = glm::vec4(0.5f, kNear, 0.0f, 0.0f);
       }
       std::memcpy(bytes + passes::kShadowLightsOffset + i * sizeof light, &light, sizeof light);
@@ -204,7 +204,7 @@ class SyntheticAtlasTest : public ExecutorTest {
     RenderTest::SetUp();
     scene::Scene scene = floor_scene();
     add_box(scene, 0.5f * (kBoxMin + kBoxMax), kBoxMax - kBoxMin);
-    add_light(scene, kLight, {1.0f, 1.0f, 1.0f}, 20.0f, kRange, 0.5f);
+    add_light(scene, kSyntheticLight, {1.0f, 1.0f, 1.0f}, 20.0f, kRange, 0.5f);
     if (!open(std::move(scene), {{AtlasFillPass::describe(), &make_atlas_fill},
                                  {DepthUsagePass::describe(), &make_depth_usage}})) {
       GTEST_SKIP() << skip_reason_;

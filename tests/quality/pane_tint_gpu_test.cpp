@@ -24,7 +24,7 @@ class PaneTintGpu : public RenderTest {};
 constexpr float kCameraHeight = 4.0f;
 constexpr float kLightHeight = 2.5f;
 constexpr float kPaneHeight = 1.5f;  // centre of a 2 cm thick pane, 1 m square
-constexpr float kFovY = 60.0f;
+constexpr float kPaneFovY = 60.0f;
 const glm::vec4 kTransmittance{1.0f, 0.6f, 0.2f, 0.8f};
 
 glm::vec3 pane_tint() {
@@ -59,14 +59,16 @@ scene::Scene pane_scene() {
   light.size = 0.05f;
   s.lights.push_back(light);
   s.ambient = glm::vec3(0.0f);
-  finish_test_scene(s, {0.0f, kCameraHeight, 0.0f}, {0.0f, 0.0f, 0.0f}, {0.0f, 0.0f, -1.0f}, kFovY);
+  finish_test_scene(s, {0.0f, kCameraHeight, 0.0f}, {0.0f, 0.0f, 0.0f}, {0.0f, 0.0f, -1.0f},
+                    kPaneFovY);
   return s;
 }
 
 // Column of the middle row that sees world x on a horizontal plane `depth` below the camera.
 std::uint32_t column_of(float x, float depth, const app::FloatImage& image) {
   const float aspect = float(image.width) / float(image.height);
-  const float half = depth * std::tan(kFovY * 0.5f * std::numbers::pi_v<float> / 180.0f) * aspect;
+  const float half =
+      depth * std::tan(kPaneFovY * 0.5f * std::numbers::pi_v<float> / 180.0f) * aspect;
   return static_cast<std::uint32_t>((x / half * 0.5f + 0.5f) * float(image.width));
 }
 

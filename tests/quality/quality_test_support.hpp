@@ -13,6 +13,11 @@
 
 namespace antumbra::quality_testing {
 
+// The 10%-90% width of a uniformly bright disk's shadow crossing a straight edge, as a
+// fraction of the full (0%-100%) penumbra width: the disk covers 10% when the edge is
+// 0.687 radii from its centre.
+inline constexpr double kDiskTenNinety = 0.6872;
+
 std::filesystem::path graph_path(const std::string& name);  // data/graphs/<name>.json
 std::filesystem::path quality_data_dir();                   // tests/data/quality
 

@@ -188,9 +188,8 @@ TEST_F(ReferenceGpu, ProgressiveRaysEndAtTheOneFrameImage) {
 }
 
 // 10%-90% width of the transition as a fraction of the full penumbra width, for a
-// straight edge: a uniformly bright disk ("projected") covers 10% when the edge is
-// 0.687 radii from its centre; the uniform sphere average is linear (0.8).
-constexpr double kDiskTenNinety = 0.6872;
+// straight edge: the uniform sphere average is linear (0.8); a uniformly bright disk
+// ("projected"): kDiskTenNinety (quality_test_support.hpp).
 constexpr double kLinearTenNinety = 0.8;
 
 void check_penumbra_width(RenderTest& test, runtime::RenderSession& session, const char* weighting,

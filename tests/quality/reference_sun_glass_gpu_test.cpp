@@ -24,10 +24,7 @@ namespace {
 
 using render_testing::RenderTest;
 
-constexpr double kPi = 3.14159265358979323846;
-// 10%-90% width of a uniformly bright disc crossing a straight edge, as a fraction of the
-// full (0%-100%) penumbra width (reference_gpu_test.cpp derives it).
-constexpr double kDiskTenNinety = 0.6872;
+constexpr double kSunPi = 3.14159265358979323846;
 
 class ReferenceSunGlassGpu : public RenderTest {
  protected:
@@ -86,7 +83,7 @@ class ReferenceSunGlassGpu : public RenderTest {
                                  float fov_y_degrees) {
     const VkExtent2D e = session.viewport();
     const double aspect = double(e.width) / double(e.height);
-    return 2.0 * camera_height * std::tan(fov_y_degrees * 0.5 * kPi / 180.0) * aspect /
+    return 2.0 * camera_height * std::tan(fov_y_degrees * 0.5 * kSunPi / 180.0) * aspect /
            double(e.width);
   }
 };
@@ -152,7 +149,7 @@ void ReferenceSunGlassGpu::check_sun_penumbra(runtime::RenderSession* session,
   const double mpp = metres_per_pixel(*session, setup.camera_height, setup.fov_y_degrees);
   const double measured = pixels * mpp / kDiskTenNinety;
   const double expected =
-      2.0 * double(setup.blocker) * std::tan(double(angular_radius) * kPi / 180.0);
+      2.0 * double(setup.blocker) * std::tan(double(angular_radius) * kSunPi / 180.0);
   std::printf(
       "sun penumbra, %s (angular radius %.1f deg): 10-90%% width %.2f px = %.4f m -> full "
       "width %.4f m, 2 (d_r - d_b) tan(a) = %.4f m (ratio %.3f)\n",

@@ -106,7 +106,6 @@ TEST_F(TechniqueQualityGpu, LayeredSoftEdgeWidthFollowsSimilarTriangles) {
   const double metres_per_pixel = 2.0 * setup.camera_height *
                                   std::tan(setup.fov_y_degrees * 0.5 * 3.14159265358979 / 180.0) *
                                   aspect / double(extent.width);
-  constexpr double kDiskTenNinety = 0.6872;  // see reference_gpu_test.cpp
   for (const char* name :
        {"layered-ssss", "layered-ssss-min", "layered-ssss-blocker", "layered-ssss-esm"}) {
     load_graph_ok(*session, graph_for_hdr(graph_path(name)));

@@ -21,7 +21,7 @@ using nlohmann::json;
 
 constexpr float kPi = std::numbers::pi_v<float>;
 
-fs::path fresh_dir(const std::string& name) {
+fs::path fresh_lights_dir(const std::string& name) {
   fs::path dir = fs::temp_directory_path() / ("antumbra_gltf_lights_" + name);
   fs::remove_all(dir);
   fs::create_directories(dir);
@@ -39,7 +39,7 @@ void expect_near(glm::vec3 actual, glm::vec3 expected, const std::string& what) 
 }
 
 TEST(GltfLights, OneOfEachTypeImportsPlacedAndConverted) {
-  const fs::path dir = fresh_dir("types");
+  const fs::path dir = fresh_lights_dir("types");
   antumbra::testing::write_json(dir / "lit.gltf", lit_quad());
   const auto result = load_gltf((dir / "lit.gltf").string());
   ASSERT_TRUE(result.ok()) << result.diagnostics().to_text();
@@ -79,7 +79,7 @@ TEST(GltfLights, OneOfEachTypeImportsPlacedAndConverted) {
 TEST(GltfLights, DimLightsWithoutRangeStopWhereTheyFadeOut) {
   json doc = lit_quad();
   doc["extensions"]["KHR_lights_punctual"]["lights"][1]["intensity"] = 0.1;
-  const fs::path dir = fresh_dir("dim");
+  const fs::path dir = fresh_lights_dir("dim");
   antumbra::testing::write_json(dir / "lit.gltf", doc);
   const auto result = load_gltf((dir / "lit.gltf").string());
   ASSERT_TRUE(result.ok()) << result.diagnostics().to_text();
@@ -118,7 +118,7 @@ TEST(GltfLights, BadLightsAreLocatedWarningsAndSkipped) {
   for (const BadLight& c : cases) {
     json doc = lit_quad();
     doc["extensions"]["KHR_lights_punctual"]["lights"][0] = c.light;
-    const fs::path dir = fresh_dir("bad");
+    const fs::path dir = fresh_lights_dir("bad");
     const fs::path file = dir / "bad.gltf";
     antumbra::testing::write_json(file, doc);
     const auto result = load_gltf(file.string());
@@ -136,7 +136,7 @@ TEST(GltfLights, BadLightsAreLocatedWarningsAndSkipped) {
   // tinygltf refuses a light without a type outright; the warning still says where.
   json doc = lit_quad();
   doc["extensions"]["KHR_lights_punctual"]["lights"][0] = {{"intensity", 1}};
-  const fs::path file = fresh_dir("untyped") / "untyped.gltf";
+  const fs::path file = fresh_lights_dir("untyped") / "untyped.gltf";
   antumbra::testing::write_json(file, doc);
   const auto untyped = load_gltf(file.string());
   EXPECT_FALSE(untyped.ok());
@@ -148,7 +148,7 @@ TEST(GltfLights, BadLightsAreLocatedWarningsAndSkipped) {
 TEST(GltfLights, ABadNodeReferenceIsAWarningAndALiteralNaNIsASyntaxError) {
   json doc = lit_quad();
   doc["nodes"][1]["extensions"]["KHR_lights_punctual"]["light"] = 7;
-  const fs::path dir = fresh_dir("reference");
+  const fs::path dir = fresh_lights_dir("reference");
   antumbra::testing::write_json(dir / "ref.gltf", doc);
   const auto result = load_gltf((dir / "ref.gltf").string());
   ASSERT_TRUE(result.ok()) << result.diagnostics().to_text();
@@ -171,7 +171,7 @@ TEST(GltfLights, ABadNodeReferenceIsAWarningAndALiteralNaNIsASyntaxError) {
 // The scene places the model: lights follow the object's transform (ranges and sizes
 // scale with it) and are named "<object>/<light>".
 TEST(GltfLights, SceneObjectsBringTheirLightsPlaced) {
-  const fs::path dir = fresh_dir("scene");
+  const fs::path dir = fresh_lights_dir("scene");
   antumbra::testing::write_json(dir / "lit.gltf", lit_quad());
   antumbra::testing::write_json(
       dir / "scene.json",
@@ -194,7 +194,7 @@ TEST(GltfLights, SceneObjectsBringTheirLightsPlaced) {
 }
 
 TEST(GltfLights, SceneEntriesOverrideImportedLightsByName) {
-  const fs::path dir = fresh_dir("override");
+  const fs::path dir = fresh_lights_dir("override");
   antumbra::testing::write_json(dir / "lit.gltf", lit_quad());
   const json base = {{"version", 1},
                      {"camera", {{"position", {0, 5, 10}}, {"target", {0, 0, 0}}}},
@@ -239,7 +239,7 @@ TEST(GltfLights, SceneEntriesOverrideImportedLightsByName) {
 }
 
 TEST(GltfLights, AModelWithLightsReplacesTheDefaultRig) {
-  const fs::path dir = fresh_dir("whole");
+  const fs::path dir = fresh_lights_dir("whole");
   antumbra::testing::write_json(dir / "lit.gltf", lit_quad());
   const auto result = load_scene_file((dir / "lit.gltf").string());
   ASSERT_TRUE(result.ok()) << result.diagnostics().to_text();

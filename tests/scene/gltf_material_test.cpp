@@ -14,9 +14,9 @@ namespace antumbra::scene {
 namespace {
 
 namespace fs = std::filesystem;
-const std::string kAssimp = ANTUMBRA_GLTF_MODELS_DIR;
+const std::string kAssimpModels = ANTUMBRA_GLTF_MODELS_DIR;
 
-fs::path fresh_dir(const std::string& name) {
+fs::path fresh_material_dir(const std::string& name) {
   fs::path dir = fs::temp_directory_path() / ("antumbra_gltf_material_" + name);
   fs::remove_all(dir);
   fs::create_directories(dir);
@@ -25,7 +25,7 @@ fs::path fresh_dir(const std::string& name) {
 
 // The test quad with one textured material whose base colour image is `uri`.
 nlohmann::json textured_quad(const std::string& uri) {
-  nlohmann::json doc = testing::quad_gltf(2.0f, 0.0f);
+  nlohmann::json doc = antumbra::testing::quad_gltf(2.0f, 0.0f);
   doc["materials"] =
       nlohmann::json::array({{{"name", "checker"},
                               {"alphaMode", "MASK"},
@@ -40,7 +40,7 @@ nlohmann::json textured_quad(const std::string& uri) {
 }
 
 TEST(GltfMaterial, TexturedBoxHasItsSrgbBaseColourImage) {
-  const std::string path = kAssimp + "/BoxTextured-glTF/BoxTextured.gltf";
+  const std::string path = kAssimpModels + "/BoxTextured-glTF/BoxTextured.gltf";
   if (!fs::exists(path)) GTEST_SKIP() << "assimp-testmodels not installed";
   const auto result = load_gltf(path);
   ASSERT_TRUE(result.ok()) << result.diagnostics().to_text();
@@ -59,7 +59,7 @@ TEST(GltfMaterial, TexturedBoxHasItsSrgbBaseColourImage) {
   // Binary and embedded copies decode to the same pixels.
   for (const char* other : {"/BoxTextured-glTF-Binary/BoxTextured.glb",
                             "/BoxTextured-glTF-Embedded/BoxTextured.gltf"}) {
-    const auto copy = load_gltf(kAssimp + other);
+    const auto copy = load_gltf(kAssimpModels + other);
     ASSERT_TRUE(copy.ok()) << copy.diagnostics().to_text();
     ASSERT_EQ(copy->textures.size(), 1u);
     EXPECT_EQ(copy->textures[0].image->rgba, t.image->rgba) << other;
@@ -67,7 +67,7 @@ TEST(GltfMaterial, TexturedBoxHasItsSrgbBaseColourImage) {
 }
 
 TEST(GltfMaterial, ImagesAreDecodedOncePerCache) {
-  const std::string path = kAssimp + "/BoxTextured-glTF/BoxTextured.gltf";
+  const std::string path = kAssimpModels + "/BoxTextured-glTF/BoxTextured.gltf";
   if (!fs::exists(path)) GTEST_SKIP() << "assimp-testmodels not installed";
   ImageCache cache;
   const auto a = load_gltf(path, {}, &cache);
@@ -79,7 +79,7 @@ TEST(GltfMaterial, ImagesAreDecodedOncePerCache) {
 }
 
 TEST(GltfMaterial, TextureTransformsAndSecondCoordinateSetImport) {
-  const std::string path = kAssimp + "/textureTransform/TextureTransformTest.gltf";
+  const std::string path = kAssimpModels + "/textureTransform/TextureTransformTest.gltf";
   if (!fs::exists(path)) GTEST_SKIP() << "assimp-testmodels not installed";
   const auto result = load_gltf(path);
   ASSERT_TRUE(result.ok()) << result.diagnostics().to_text();
@@ -105,12 +105,13 @@ TEST(GltfMaterial, TextureTransformsAndSecondCoordinateSetImport) {
 }
 
 TEST(GltfMaterial, MaskSamplerAndTangentsOfAGeneratedQuad) {
-  const fs::path dir = fresh_dir("mask");
-  testing::write_file(dir / "checker.png",
-                      testing::png_bytes(8, 8, testing::checkerboard_rgba(4, 2)));
+  const fs::path dir = fresh_material_dir("mask");
+  antumbra::testing::write_file(
+      dir / "checker.png",
+      antumbra::testing::png_bytes(8, 8, antumbra::testing::checkerboard_rgba(4, 2)));
   nlohmann::json doc = textured_quad("checker.png");
   doc["materials"][0]["normalTexture"] = {{"index", 0}, {"scale", 0.5}};
-  testing::write_json(dir / "quad.gltf", doc);
+  antumbra::testing::write_json(dir / "quad.gltf", doc);
   const auto result = load_gltf((dir / "quad.gltf").string());
   ASSERT_TRUE(result.ok()) << result.diagnostics().to_text();
   const Material& m = result->materials[0];
@@ -160,7 +161,8 @@ std::vector<std::uint8_t> png_header(std::uint32_t w, std::uint32_t h) {
 }
 
 TEST(GltfMaterial, BrokenImagesFallBackToTheFactorWithALocatedWarning) {
-  std::vector<std::uint8_t> truncated = testing::png_bytes(8, 8, testing::checkerboard_rgba(4, 2));
+  std::vector<std::uint8_t> truncated =
+      antumbra::testing::png_bytes(8, 8, antumbra::testing::checkerboard_rgba(4, 2));
   truncated.resize(truncated.size() / 2);
   const std::vector<BadImage> cases = {
       {"missing.png", {}, "not found"},
@@ -172,9 +174,9 @@ TEST(GltfMaterial, BrokenImagesFallBackToTheFactorWithALocatedWarning) {
       {"huge.png", png_header(16385, 100), "past the limit"},
   };
   for (const BadImage& c : cases) {
-    const fs::path dir = fresh_dir(std::string("bad_") + c.name);
-    if (!c.bytes.empty()) testing::write_file(dir / c.name, c.bytes);
-    testing::write_json(dir / "quad.gltf", textured_quad(c.name));
+    const fs::path dir = fresh_material_dir(std::string("bad_") + c.name);
+    if (!c.bytes.empty()) antumbra::testing::write_file(dir / c.name, c.bytes);
+    antumbra::testing::write_json(dir / "quad.gltf", textured_quad(c.name));
     const auto result = load_gltf((dir / "quad.gltf").string());
     ASSERT_TRUE(result.ok()) << c.name << ": " << result.diagnostics().to_text();
     const base::Diagnostic* d = result.diagnostics().find(codes::scene::kGltfImage);
@@ -192,14 +194,18 @@ TEST(GltfMaterial, BrokenImagesFallBackToTheFactorWithALocatedWarning) {
 // Ten thousand images each under the per-image limit must not add up to more than one
 // file's budget: the image past it falls back to its factors, with the budget in the warning.
 TEST(GltfMaterial, ImagesPastTheFilesPixelBudgetFallBackToTheirFactors) {
-  const fs::path dir = fresh_dir("pixel_budget");
-  testing::write_file(dir / "a.png", testing::png_bytes(8, 8, testing::checkerboard_rgba(4, 2)));
-  testing::write_file(dir / "b.png", testing::png_bytes(8, 8, testing::checkerboard_rgba(2, 4)));
+  const fs::path dir = fresh_material_dir("pixel_budget");
+  antumbra::testing::write_file(
+      dir / "a.png",
+      antumbra::testing::png_bytes(8, 8, antumbra::testing::checkerboard_rgba(4, 2)));
+  antumbra::testing::write_file(
+      dir / "b.png",
+      antumbra::testing::png_bytes(8, 8, antumbra::testing::checkerboard_rgba(2, 4)));
   nlohmann::json doc = textured_quad("a.png");
   doc["images"].push_back({{"uri", "b.png"}});
   doc["textures"].push_back({{"source", 1}, {"sampler", 0}});
   doc["materials"][0]["emissiveTexture"] = {{"index", 1}};
-  testing::write_json(dir / "quad.gltf", doc);
+  antumbra::testing::write_json(dir / "quad.gltf", doc);
   GltfLimits limits;
   limits.images.max_total_pixels = 100;  // room for one 8x8 image, not two
   const auto result = load_gltf((dir / "quad.gltf").string(), limits);
@@ -220,14 +226,15 @@ TEST(GltfMaterial, ImagesPastTheFilesPixelBudgetFallBackToTheirFactors) {
 // A glTF names only files beside it or below it: tinygltf opens whatever a URI names (an
 // absolute path, a device, a pipe), so such URIs are refused before it runs unless allowed.
 TEST(GltfMaterial, UrisOutsideTheFilesFolderAreRefusedUnlessAllowed) {
-  const fs::path dir = fresh_dir("outside");
-  testing::write_file(dir / "checker.png",
-                      testing::png_bytes(8, 8, testing::checkerboard_rgba(4, 2)));
+  const fs::path dir = fresh_material_dir("outside");
+  antumbra::testing::write_file(
+      dir / "checker.png",
+      antumbra::testing::png_bytes(8, 8, antumbra::testing::checkerboard_rgba(4, 2)));
   fs::create_directories(dir / "model" / "sub");
   const std::vector<std::string> uris = {"../checker.png", "sub/%2E%2E/%2E%2E/checker.png",
                                          (dir / "checker.png").string()};
   for (const std::string& uri : uris) {
-    testing::write_json(dir / "model" / "quad.gltf", textured_quad(uri));
+    antumbra::testing::write_json(dir / "model" / "quad.gltf", textured_quad(uri));
     const auto refused = load_gltf((dir / "model" / "quad.gltf").string());
     ASSERT_FALSE(refused.ok()) << uri;
     const base::Diagnostic* d = refused.diagnostics().find(codes::scene::kGltfPathOutside);
@@ -249,21 +256,23 @@ TEST(GltfMaterial, UrisOutsideTheFilesFolderAreRefusedUnlessAllowed) {
   }
   // Inside the folder, ".." that stays inside is fine.
   fs::create_directories(dir / "model" / "tex");
-  testing::write_file(dir / "model" / "tex" / "c.png",
-                      testing::png_bytes(8, 8, testing::checkerboard_rgba(4, 2)));
-  testing::write_json(dir / "model" / "quad.gltf", textured_quad("tex/../tex/c.png"));
+  antumbra::testing::write_file(
+      dir / "model" / "tex" / "c.png",
+      antumbra::testing::png_bytes(8, 8, antumbra::testing::checkerboard_rgba(4, 2)));
+  antumbra::testing::write_json(dir / "model" / "quad.gltf", textured_quad("tex/../tex/c.png"));
   const auto inside = load_gltf((dir / "model" / "quad.gltf").string());
   ASSERT_TRUE(inside.ok()) << inside.diagnostics().to_text();
   EXPECT_EQ(inside.diagnostics().find(codes::scene::kGltfPathOutside), nullptr);
 }
 
 TEST(GltfMaterial, ATextureIndexThatNamesNothingIsALocatedError) {
-  const fs::path dir = fresh_dir("bad_index");
-  testing::write_file(dir / "checker.png",
-                      testing::png_bytes(8, 8, testing::checkerboard_rgba(4, 2)));
+  const fs::path dir = fresh_material_dir("bad_index");
+  antumbra::testing::write_file(
+      dir / "checker.png",
+      antumbra::testing::png_bytes(8, 8, antumbra::testing::checkerboard_rgba(4, 2)));
   nlohmann::json doc = textured_quad("checker.png");
   doc["materials"][0]["emissiveTexture"] = {{"index", 7}};
-  testing::write_json(dir / "quad.gltf", doc);
+  antumbra::testing::write_json(dir / "quad.gltf", doc);
   const auto result = load_gltf((dir / "quad.gltf").string());
   ASSERT_FALSE(result.ok());
   const base::Diagnostic* d = result.diagnostics().find(codes::scene::kGltfBadReference);
@@ -288,13 +297,17 @@ TEST(GltfMaterial, LoadsReportTheirProgressThroughTheCache) {
   const fs::path dir = fs::temp_directory_path() / "antumbra_gltf_progress";
   fs::remove_all(dir);
   fs::create_directories(dir);
-  testing::write_file(dir / "a.png", testing::png_bytes(8, 8, testing::checkerboard_rgba(4, 2)));
-  testing::write_file(dir / "b.png", testing::png_bytes(4, 4, testing::checkerboard_rgba(2, 2)));
+  antumbra::testing::write_file(
+      dir / "a.png",
+      antumbra::testing::png_bytes(8, 8, antumbra::testing::checkerboard_rgba(4, 2)));
+  antumbra::testing::write_file(
+      dir / "b.png",
+      antumbra::testing::png_bytes(4, 4, antumbra::testing::checkerboard_rgba(2, 2)));
   nlohmann::json doc = textured_quad("a.png");
   doc["images"].push_back({{"uri", "b.png"}});
   doc["textures"].push_back({{"source", 1}});
   doc["materials"][0]["emissiveTexture"] = {{"index", 1}};
-  testing::write_json(dir / "two.gltf", doc);
+  antumbra::testing::write_json(dir / "two.gltf", doc);
 
   struct Event {
     std::string stage;

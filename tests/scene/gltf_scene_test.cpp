@@ -17,7 +17,7 @@ namespace fs = std::filesystem;
 const std::string kBox =
     std::string(ANTUMBRA_GLTF_MODELS_DIR) + "/BoxTextured-glTF/BoxTextured.gltf";
 
-fs::path fresh_dir(const std::string& name) {
+fs::path fresh_scene_dir(const std::string& name) {
   fs::path dir = fs::temp_directory_path() / ("antumbra_gltf_scene_" + name);
   fs::remove_all(dir);
   fs::create_directories(dir);
@@ -51,7 +51,7 @@ TEST(GltfScene, AModelOpensFramedLitAndTextured) {
 }
 
 TEST(GltfScene, TheFilesCameraIsUsed) {
-  const fs::path dir = fresh_dir("camera");
+  const fs::path dir = fresh_scene_dir("camera");
   nlohmann::json doc = antumbra::testing::quad_gltf(2.0f, 0.0f);
   doc["materials"] = nlohmann::json::array({{{"name", "grey"}}});
   doc["cameras"] = nlohmann::json::array(
@@ -74,7 +74,7 @@ TEST(GltfScene, TheFilesCameraIsUsed) {
 }
 
 TEST(GltfScene, ASavedSceneFileWinsOverTheGeneratedOne) {
-  const fs::path dir = fresh_dir("saved");
+  const fs::path dir = fresh_scene_dir("saved");
   nlohmann::json doc = antumbra::testing::quad_gltf(2.0f, 0.0f);
   doc["materials"] = nlohmann::json::array({{{"name", "grey"}}});
   antumbra::testing::write_json(dir / "quad.gltf", doc);
@@ -90,7 +90,7 @@ TEST(GltfScene, ASavedSceneFileWinsOverTheGeneratedOne) {
 }
 
 TEST(GltfScene, ABrokenModelFailsWithItsOwnDiagnostics) {
-  const fs::path dir = fresh_dir("broken");
+  const fs::path dir = fresh_scene_dir("broken");
   std::ofstream(dir / "bad.glb") << "not a glb";
   const auto result = load_scene_file((dir / "bad.glb").string());
   ASSERT_FALSE(result.ok());

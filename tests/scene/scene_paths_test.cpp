@@ -66,9 +66,9 @@ TEST(ScenePaths, AGltfOutsideTheFilesFolderIsRefusedUnlessAllowed) {
   const fs::path dir = fs::temp_directory_path() / "antumbra_scene_paths";
   fs::remove_all(dir);
   fs::create_directories(dir / "scenes");
-  nlohmann::json quad = testing::quad_gltf(2.0f, 0.0f);
+  nlohmann::json quad = antumbra::testing::quad_gltf(2.0f, 0.0f);
   quad["materials"] = nlohmann::json::array({nlohmann::json::object()});
-  testing::write_json(dir / "quad.gltf", quad);
+  antumbra::testing::write_json(dir / "quad.gltf", quad);
   const std::string file = (dir / "scenes" / "s.json").string();
   expect_refused_then_allowed(R"({"name": "q", "gltf": "../quad.gltf"})", file, "/objects/0/gltf",
                               "'..'");
@@ -92,13 +92,14 @@ TEST(ScenePaths, TheOptionReachesTheGltfsOwnUris) {
   const fs::path dir = fs::temp_directory_path() / "antumbra_scene_paths_uri";
   fs::remove_all(dir);
   fs::create_directories(dir / "model");
-  testing::write_file(dir / "checker.png",
-                      testing::png_bytes(8, 8, testing::checkerboard_rgba(4, 2)));
-  nlohmann::json gltf = testing::quad_gltf(2.0f, 0.0f);
+  antumbra::testing::write_file(
+      dir / "checker.png",
+      antumbra::testing::png_bytes(8, 8, antumbra::testing::checkerboard_rgba(4, 2)));
+  nlohmann::json gltf = antumbra::testing::quad_gltf(2.0f, 0.0f);
   gltf["materials"] = {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}};
   gltf["textures"] = {{{"source", 0}}};
   gltf["images"] = {{{"uri", "../checker.png"}}};
-  testing::write_json(dir / "model" / "quad.gltf", gltf);
+  antumbra::testing::write_json(dir / "model" / "quad.gltf", gltf);
   const std::string file = (dir / "s.json").string();
   const auto refused =
       parse_scene_text(scene_text(R"({"name": "q", "gltf": "model/quad.gltf"})"), file);

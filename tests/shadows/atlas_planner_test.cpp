@@ -21,10 +21,6 @@ using passes::AtlasSettings;
 
 namespace {
 
-scene::Scene atrium() {
-  return test::atrium_scene();
-}
-
 glm::mat4 camera_of(const scene::Scene& s) {
   return s.camera.view_projection(16.0f / 9.0f);
 }
@@ -46,7 +42,7 @@ std::uint32_t visible_count(const scene::Scene& s, std::size_t light) {
 }  // namespace
 
 TEST(AtlasPlanner, FirstFrameRendersEveryVisibleFaceOfAtrium) {
-  const auto scene = atrium();
+  const auto scene = test::atrium_scene();
   AtlasPlanner planner;
   const auto& f = planner.plan(scene, camera_of(scene), 1, 0, settings());
   EXPECT_TRUE(f.clear_all);
@@ -70,7 +66,7 @@ TEST(AtlasPlanner, FirstFrameRendersEveryVisibleFaceOfAtrium) {
 }
 
 TEST(AtlasPlanner, UnchangedSecondFrameRendersNothing) {
-  const auto scene = atrium();
+  const auto scene = test::atrium_scene();
   AtlasPlanner planner;
   const auto rendered = planner.plan(scene, camera_of(scene), 1, 0, settings()).stats.rendered;
   const auto& f = planner.plan(scene, camera_of(scene), 1, 1, settings());
@@ -81,7 +77,7 @@ TEST(AtlasPlanner, UnchangedSecondFrameRendersNothing) {
 }
 
 TEST(AtlasPlanner, MovingOneLightRerendersOnlyItsVisibleFaces) {
-  auto scene = atrium();
+  auto scene = test::atrium_scene();
   AtlasPlanner planner;
   planner.plan(scene, camera_of(scene), 1, 0, settings());
   scene.lights[5].position.x += 0.25f;
@@ -97,7 +93,7 @@ TEST(AtlasPlanner, MovingOneLightRerendersOnlyItsVisibleFaces) {
 }
 
 TEST(AtlasPlanner, GeometryChangeOrInvalidateRerendersEverything) {
-  const auto scene = atrium();
+  const auto scene = test::atrium_scene();
   AtlasPlanner planner;
   const auto first = planner.plan(scene, camera_of(scene), 1, 0, settings()).stats.rendered;
   EXPECT_EQ(planner.plan(scene, camera_of(scene), 2, 1, settings()).stats.rendered, first);
@@ -109,7 +105,7 @@ TEST(AtlasPlanner, GeometryChangeOrInvalidateRerendersEverything) {
 }
 
 TEST(AtlasPlanner, CacheOffRendersEveryVisibleFaceEachFrame) {
-  const auto scene = atrium();
+  const auto scene = test::atrium_scene();
   AtlasPlanner planner;
   auto s = settings();
   s.cache = false;
@@ -120,7 +116,7 @@ TEST(AtlasPlanner, CacheOffRendersEveryVisibleFaceEachFrame) {
 }
 
 TEST(AtlasPlanner, CulledFaceIsRenderedWhenItComesIntoView) {
-  auto scene = atrium();
+  auto scene = test::atrium_scene();
   AtlasPlanner planner;
   const auto& first = planner.plan(scene, camera_of(scene), 1, 0, settings());
   const auto culled = first.stats.culled;
@@ -141,7 +137,7 @@ TEST(AtlasPlanner, CulledFaceIsRenderedWhenItComesIntoView) {
 }
 
 TEST(AtlasPlanner, CullingOffKeepsEveryFace) {
-  const auto scene = atrium();
+  const auto scene = test::atrium_scene();
   AtlasPlanner planner;
   auto s = settings();
   s.cull_faces = false;
@@ -151,7 +147,7 @@ TEST(AtlasPlanner, CullingOffKeepsEveryFace) {
 }
 
 TEST(AtlasPlanner, LightsThatDoNotFitAreNamedAndGetNoLayers) {
-  auto scene = atrium();
+  auto scene = test::atrium_scene();
   scene.lights[1].casts_shadows = false;
   AtlasPlanner planner;
   const auto& f = planner.plan(scene, camera_of(scene), 1, 0, settings(18));  // 3 slots
@@ -167,7 +163,7 @@ TEST(AtlasPlanner, LightsThatDoNotFitAreNamedAndGetNoLayers) {
 }
 
 TEST(AtlasPlanner, ReassignedSlotIsRerendered) {
-  auto scene = atrium();
+  auto scene = test::atrium_scene();
   AtlasPlanner planner;
   planner.plan(scene, camera_of(scene), 1, 0, settings());
   scene.lights[0].casts_shadows = false;  // every later light moves down one slot
@@ -216,7 +212,7 @@ TEST(PointShadowAtlasReflection, PortsAndParams) {
 TEST(AtlasPlanner, LayersAreAllocatedByLightType) {
   // Point 6 layers, spot 1, the sun one per cascade, in light order; the type is passed
   // to consumers.
-  scene::Scene s = atrium();
+  scene::Scene s = test::atrium_scene();
   s.lights.resize(3);
   s.lights[1].type = scene::LightType::spot;
   s.lights[1].direction = {0.0f, -1.0f, 0.0f};
@@ -260,7 +256,7 @@ TEST(AtlasPlanner, LayersAreAllocatedByLightType) {
 }
 
 TEST(AtlasPlanner, SunIsRefittedWhenTheCameraMoves) {
-  scene::Scene s = atrium();
+  scene::Scene s = test::atrium_scene();
   s.lights.resize(1);
   s.lights[0].type = scene::LightType::directional;
   s.lights[0].direction = {0.0f, -1.0f, 0.0f};
@@ -275,7 +271,7 @@ TEST(AtlasPlanner, SunIsRefittedWhenTheCameraMoves) {
 // Receiver culling: the GPU decides what is drawn, the planner hands it every visible face
 // and the epoch each layer should hold, which changes only with the face.
 TEST(AtlasPlanner, GpuDecisionGetsEveryVisibleFaceAndStableEpochs) {
-  auto scene = atrium();
+  auto scene = test::atrium_scene();
   AtlasPlanner planner;
   AtlasSettings s = settings();
   s.gpu_decides = true;
@@ -305,7 +301,7 @@ TEST(AtlasPlanner, GpuDecisionGetsEveryVisibleFaceAndStableEpochs) {
 
 // The CPU's own decision gives a drawn face a new epoch and keeps a cached face's.
 TEST(AtlasPlanner, DrawnFacesGetNewEpochsCachedOnesKeepTheirs) {
-  auto scene = atrium();
+  auto scene = test::atrium_scene();
   AtlasPlanner planner;
   const auto first = planner.plan(scene, camera_of(scene), 1, 0, settings());
   const auto second = planner.plan(scene, camera_of(scene), 1, 1, settings());
@@ -328,7 +324,7 @@ TEST(AtlasPlanner, DrawnFacesGetNewEpochsCachedOnesKeepTheirs) {
 // size, has no square (projection.z < 0) and each record names its page table's first
 // word (record x (256 / 128)^2) above its face number.
 TEST(AtlasPlanner, APagePoolGivesEveryLightItsSizeAndATable) {
-  const auto scene = atrium();
+  const auto scene = test::atrium_scene();
   AtlasSettings s = settings(6);
   s.records = 96;
   s.gpu_decides = true;
@@ -385,7 +381,7 @@ TEST(PoolFit, HalvesOnMissingPagesAndDoublesBackWhenCalm) {
 
 // The planner draws a pool's faces at most at the cap and names the lights it shrank.
 TEST(AtlasPlanner, APoolCapShrinksFacesAndSaysWhich) {
-  const auto scene = atrium();
+  const auto scene = test::atrium_scene();
   AtlasSettings s = settings(6);
   s.records = 96;
   s.gpu_decides = true;

@@ -51,10 +51,6 @@ AtlasSettings settings() {
   return s;
 }
 
-scene::Scene atrium() {
-  return test::atrium_scene();
-}
-
 // Every atrium light has its six layers.
 AtlasSettings atrium_settings() {
   AtlasSettings s = settings();
@@ -157,7 +153,7 @@ TEST(DynamicCasters, FacesGoThroughTheStaticCacheOnlyWhileTheirLightStands) {
 // drawn at least every maxStale + 1 frames, the ones waiting longest first, and a waiting
 // light shows the position and matrices its faces were drawn with.
 TEST(DynamicCasters, BudgetDefersLightsRoundRobinAndNeverPastMaxStale) {
-  scene::Scene s = atrium();
+  scene::Scene s = test::atrium_scene();
   const auto base = s.lights;
   AtlasPlanner planner;
   AtlasSettings st = atrium_settings();
@@ -199,7 +195,7 @@ TEST(DynamicCasters, BudgetDefersLightsRoundRobinAndNeverPastMaxStale) {
 // The budget also bounds how much moving lights draw: with 12 faces a frame, at most 12
 // optional faces are drawn on frames nothing is forced.
 TEST(DynamicCasters, BudgetCapsTheFacesDrawnPerFrame) {
-  scene::Scene s = atrium();
+  scene::Scene s = test::atrium_scene();
   const auto base = s.lights;
   AtlasPlanner planner;
   AtlasSettings st = atrium_settings();

@@ -41,10 +41,6 @@ void expect_disjoint(const FacePacker& packer, std::uint32_t layers) {
   }
 }
 
-scene::Scene atrium() {
-  return test::atrium_scene();
-}
-
 }  // namespace
 
 TEST(FacePacker, SmallSquaresShareALayerOnAGrid) {
@@ -112,7 +108,7 @@ TEST(FacePacker, WithoutSharingEachSquareTakesALayerAtItsCorner) {
 // 16 point lights want 96 faces of 256^2 in 6 layers of 256^2: the atlas holds 96 faces
 // of 64^2, so every light gets 64^2 faces, none more, none left out.
 TEST(FacePackerPlanner, AFullAtlasDrawsEveryLightSmallerInsteadOfDroppingLights) {
-  const auto scene = atrium();
+  const auto scene = test::atrium_scene();
   ASSERT_EQ(scene.lights.size(), 16u);
   passes::AtlasSettings s;
   s.layers = 6;
@@ -153,7 +149,7 @@ TEST(FacePackerPlanner, AFullAtlasDrawsEveryLightSmallerInsteadOfDroppingLights)
 // layer cannot hold a point light's six faces (every light unshadowed); two hold the first
 // light's, and the others, not fitting, go without from the last one up.
 TEST(FacePackerPlanner, LightsThatFitNowhereAreUnshadowedFromTheEnd) {
-  const auto scene = atrium();
+  const auto scene = test::atrium_scene();
   passes::AtlasSettings s;
   s.layers = 1;
   s.face_size = 32;  // 4 faces of 16^2 a layer: not even one point light's six
@@ -176,7 +172,7 @@ TEST(FacePackerPlanner, LightsThatFitNowhereAreUnshadowedFromTheEnd) {
 TEST(FacePackerPlanner, FourThousandLightsAllGetFaces) {
   // As many as a scene file may have (SC028): every light a scene can hold can cast.
   static_assert(scene::kMaxSceneLights == shared::kMaxShadowLights);
-  auto scene = atrium();
+  auto scene = test::atrium_scene();
   const auto first = scene.lights.front();
   scene.lights.clear();
   for (int i = 0; i < 4096; ++i) {

@@ -25,7 +25,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path source_dir() {
+fs::path repo_dir() {
   return fs::path(ANTUMBRA_TEST_SOURCE_DIR);
 }
 
@@ -49,7 +49,7 @@ TEST(RasterClusters, PrimitivesAreClosedAndCutOrFlippedMeshesAreNot) {
 }
 
 TEST(RasterClusters, AtriumClustersCoverEveryTriangleOnceWithItsFlags) {
-  auto loaded = scene::load_scene_file((source_dir() / "data/scenes/atrium.json").string());
+  auto loaded = scene::load_scene_file((repo_dir() / "data/scenes/atrium.json").string());
   ASSERT_TRUE(loaded.ok());
   const scene::Scene& scene = loaded.value();
   const passes::RasterGeometry geometry = passes::build_raster_geometry(scene);
@@ -95,7 +95,7 @@ TEST(RasterClusters, AtriumClustersCoverEveryTriangleOnceWithItsFlags) {
 // The cull's block spheres (one per kCullGroup clusters) hold every cluster's sphere, and a
 // block with a dynamic cluster is never skipped (its bounds move with the mesh).
 TEST(RasterClusters, BlockSpheresHoldTheirClustersAndDynamicBlocksAreNeverSkipped) {
-  auto loaded = scene::load_scene_file((source_dir() / "data/scenes/atrium-dynamic.json").string());
+  auto loaded = scene::load_scene_file((repo_dir() / "data/scenes/atrium-dynamic.json").string());
   ASSERT_TRUE(loaded.ok());
   const passes::RasterGeometry geometry = passes::build_raster_geometry(loaded.value());
   ASSERT_LT(geometry.static_clusters, geometry.clusters.size()) << "the scene has a dynamic mesh";
@@ -190,7 +190,7 @@ namespace {
 // the file (so that diagnostics can point at them).
 fg::Result<fg::Plan> compile_atlas_graph(const std::string& rasterizer, const std::string& format,
                                          const nlohmann::json& params = nlohmann::json::object()) {
-  std::ifstream in(source_dir() / "tests/data/shadows/atlas.json");
+  std::ifstream in(repo_dir() / "tests/data/shadows/atlas.json");
   auto json = nlohmann::json::parse(in);
   json["resources"]["atlas"]["format"] = format;
   for (auto& p : json["passes"]) {
@@ -306,7 +306,7 @@ TEST(AtlasParams, AutoRasterizerChoosesByDeviceAndFormat) {
   const auto registry = passes::builtin_pass_registry();
   const auto compile_for = [&](const std::string& format, std::optional<fg::DeviceTraits> device,
                                const nlohmann::json& params = nlohmann::json::object()) {
-    std::ifstream in(source_dir() / "tests/data/shadows/atlas.json");
+    std::ifstream in(repo_dir() / "tests/data/shadows/atlas.json");
     auto json = nlohmann::json::parse(in);
     json["resources"]["atlas"]["format"] = format;
     for (auto& p : json["passes"]) {
@@ -359,7 +359,7 @@ TEST(GBufferParams, AutoRasterizerChoosesByDeviceAndDepthFormat) {
   const auto registry = passes::builtin_pass_registry();
   const auto compile_for = [&](const std::string& depth, std::optional<fg::DeviceTraits> device,
                                const nlohmann::json& params = nlohmann::json::object()) {
-    std::ifstream in(source_dir() / "data/graphs/hard.json");
+    std::ifstream in(repo_dir() / "data/graphs/hard.json");
     auto json = nlohmann::json::parse(in);
     json["resources"]["depth"]["format"] = depth;
     for (auto& p : json["passes"]) {

@@ -3,15 +3,12 @@
 #include <cstdio>
 
 namespace antumbra::editor_app {
-namespace {
 
-void print(const base::Diagnostics& diagnostics) {
+void print_diagnostics(const base::Diagnostics& diagnostics) {
   for (const auto& d : diagnostics) {
     if (d.severity != base::Severity::note) std::printf("  %s\n", base::format_text(d).c_str());
   }
 }
-
-}  // namespace
 
 editor::EditResult EditorState::edit_structure(
     const std::function<editor::EditResult(editor::GraphEdits&)>& edit) {
@@ -57,10 +54,10 @@ void EditorState::frame_presented() {
   // A refused file made no new frame: the status keeps saying so instead of timing one.
   if (!graph_refused()) set_message(message() + " (file seen -> new frame " + ms + ")");
   std::printf("editor: %s; graph: %s\n", message().c_str(), reload_summary().c_str());
-  print(diagnostics());
+  print_diagnostics(diagnostics());
   // What the new frame's passes report (a layer cap that is still too low) is said again
   // after every reload, not only the first time it appeared.
-  print(session_.frame_diagnostics());
+  print_diagnostics(session_.frame_diagnostics());
   std::fflush(stdout);
 }
 

@@ -18,6 +18,9 @@
 
 namespace antumbra::editor_app {
 
+// Prints each warning and error on its own line (stdout), notes left out.
+void print_diagnostics(const base::Diagnostics& diagnostics);
+
 using editor::DocKind;
 
 class EditorState : public editor::EditSession {

@@ -33,12 +33,6 @@ namespace fs = std::filesystem;
 
 constexpr int kTimingWindowFrames = 30;  // per-pass GPU times: medians over this many
 
-void print(const base::Diagnostics& diagnostics) {
-  for (const auto& d : diagnostics) {
-    if (d.severity != base::Severity::note) std::printf("  %s\n", base::format_text(d).c_str());
-  }
-}
-
 std::string window_title(const EditorState& state, const fs::path& scene, const fs::path& graph) {
   return std::string(state.dirty() ? "* " : "") + "antumbra edit - " + scene.filename().string() +
          ", " + graph.filename().string();
@@ -186,8 +180,8 @@ std::optional<Documents> load_documents(const WindowedOptions& options,
   progress.finish();
   images->set_progress({});
   auto graph = editor::GraphDocument::load(graph_path, editor::lookup_in(registry.reflection()));
-  print(scene.diagnostics());
-  print(graph.diagnostics());
+  print_diagnostics(scene.diagnostics());
+  print_diagnostics(graph.diagnostics());
   if (!scene.ok() || !graph.ok()) return std::nullopt;
   if (scene->recovery_available() || graph->recovery_available()) {
     std::printf("note: a recovery file with unsaved edits exists beside the scene or graph\n");
@@ -483,7 +477,7 @@ int run_windowed_editor(const WindowedOptions& options) {
   EditorState state(renderer, std::move(documents->scene), std::move(documents->graph),
                     editor::lookup_in(session.pass_registry().reflection()));
   const bool started = state.start(documents->images.get());
-  print(state.diagnostics());
+  print_diagnostics(state.diagnostics());
   if (!started) return runtime::kExitDiagnostics;
   documents->images.reset();  // the scene holds the images it uses; the rest can go
   if (!options.select.empty() && !select_light(state, options.select)) {

@@ -7,6 +7,12 @@
 #include "antumbra/base/diagnostic_codes.hpp"
 
 namespace antumbra::scene::detail {
+
+bool fail(GltfIssue& issue, const char* code, std::string message, std::string pointer) {
+  issue = GltfIssue{code, std::move(message), std::move(pointer)};
+  return false;
+}
+
 namespace {
 
 constexpr int kByte = TINYGLTF_COMPONENT_TYPE_BYTE;
@@ -58,11 +64,6 @@ struct Layout {
   int component_type = 0;
   bool normalized = false;
 };
-
-bool fail(GltfIssue& issue, const char* code, std::string message, std::string pointer) {
-  issue = GltfIssue{code, std::move(message), std::move(pointer)};
-  return false;
-}
 
 bool validate(const tinygltf::Model& model, int index, const std::string& referrer, int type,
               std::initializer_list<int> component_types, const char* what, Layout& out,

@@ -25,6 +25,9 @@ struct GltfIssue {
   std::string pointer;
 };
 
+// Fills `issue` and returns false, so that a reader can `return fail(issue, ...)`.
+bool fail(GltfIssue& issue, const char* code, std::string message, std::string pointer);
+
 // `referrer` is the pointer of the value holding the accessor index (for bad indices).
 bool read_positions(const tinygltf::Model& model, int accessor, const std::string& referrer,
                     std::vector<glm::vec3>& out, GltfIssue& issue);

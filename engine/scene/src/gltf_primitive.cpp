@@ -10,11 +10,6 @@ constexpr int kModeTriangles = TINYGLTF_MODE_TRIANGLES;
 constexpr int kModeStrip = TINYGLTF_MODE_TRIANGLE_STRIP;
 constexpr int kModeFan = TINYGLTF_MODE_TRIANGLE_FAN;
 
-bool fail(GltfIssue& issue, const char* code, std::string message, std::string pointer) {
-  issue = GltfIssue{code, std::move(message), std::move(pointer)};
-  return false;
-}
-
 int attribute(const tinygltf::Primitive& prim, const char* name) {
   const auto it = prim.attributes.find(name);
   return it == prim.attributes.end() ? -1 : it->second;

@@ -70,4 +70,8 @@ Result<JsonDocument> load_json_file(const std::string& path, const JsonParseOpti
 std::string pointer_append(std::string_view pointer, std::string_view token);
 std::string pointer_append(std::string_view pointer, std::size_t index);
 
+// What a diagnostic says it found: "integer", "number", "string", "boolean", "array",
+// "object" or "null".
+const char* json_type_name(const Json& value);
+
 }  // namespace antumbra::base
