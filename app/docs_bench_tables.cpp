@@ -239,6 +239,55 @@ BenchTable materials_table(const ResultFile& file) {
   return table;
 }
 
+// "1300 of 2048, 0 missing": the page pool's pages needed against all it has, and those
+// needed without a place (the atlas's SHD010 note, "pool").
+std::string pool_pages(const ResultFile& file, const std::string& name) {
+  const Located s = file.scenario(name, "pages");
+  if (status_of(s) != "ok") return failed(s);
+  const base::Json* notes = s.value->contains("notes") ? &(*s.value)["notes"] : nullptr;
+  if (notes == nullptr || !notes->is_array()) return "-";
+  for (std::size_t i = 0; i < notes->size(); ++i) {
+    const Located note{&(*notes)[i], s.pointer + "/notes/" + std::to_string(i)};
+    if (!note.value->is_object() || note.value->value("code", std::string()) != "SHD010" ||
+        !note.value->contains("details") || !(*note.value)["details"].contains("pool")) {
+      continue;
+    }
+    const auto count = [&](const char* key) {
+      return std::to_string(
+          static_cast<long long>(file.number(note, std::string("/details/pool/") + key, "pages")));
+    };
+    return count("needed") + " of " + count("pages") + ", " + count("missing") + " missing";
+  }
+  return "-";
+}
+
+// The same lights in squares (no pool): the moving table's atrium row, the "many" rows.
+std::string squares_of(const Scenario& paged) {
+  if (paged.lights == 16) return "moving/ssss-11/1080p/16l/compute/screen/vis";
+  std::string name = paged.name;
+  name.replace(0, name.find('/'), "many");
+  return name.substr(0, name.rfind('/'));
+}
+
+// The page pool (issue: every light shadowed) against the same lights in squares.
+BenchTable pages_table(const ResultFile& file) {
+  BenchTable table{
+      "layered SSSS 11, compute shadow raster, compute G-buffer; whole frame / "
+      "shadow atlas, ms",
+      {"lights (moving), scene", "page pool", "in squares", "pool: penumbra",
+       "pool: tiled lighting", "pool: pages needed"},
+      {}};
+  for (const auto& s : builtin_scenarios(1.0)) {
+    if (s.table != "pages") continue;
+    table.rows.push_back(
+        {moving_row_label(file, s.name, "pages"), frame_and_atlas(file, s.name, "pages"),
+         frame_and_atlas(file, squares_of(s), "pages"),
+         pass_ms(file, s.name, "layered-penumbra", "pages"),
+         pass_ms(file, s.name, "tiled-lighting", "pages"), pool_pages(file, s.name)});
+  }
+  return table;
+}
+
 }  // namespace
 
 std::vector<TableKind> bench_table_kinds() {
@@ -249,6 +298,10 @@ std::vector<TableKind> bench_table_kinds() {
       {"penumbra", 1, "antumbra bench --scenario penumbra/", bench_lines<penumbra_table>},
       {"dynamic", 1, "antumbra bench --scenario dynamic/", bench_lines<dynamic_table>},
       {"materials", 1, "antumbra bench --scenario materials/", bench_lines<materials_table>},
+      {"pages", 1,
+       "antumbra bench --scenario pages/ --scenario many/ --scenario "
+       "moving/ssss-11/1080p/16l/compute/screen/vis",
+       bench_lines<pages_table>},
   };
 }
 

@@ -24,7 +24,7 @@ struct TableKind {
                                        const std::string& link_base);
 };
 
-// Every kind: moving, vis, table1, penumbra, dynamic, materials (bench.json); quality,
+// Every kind: moving, vis, table1, penumbra, dynamic, materials, pages (bench.json); quality,
 // quality-overlap and ranking (quality JSON, one file per size).
 const std::vector<TableKind>& table_kinds();
 // nullptr when no kind has that name.

@@ -31,7 +31,7 @@ std::string generated(const std::string& text) {
 TEST(DocsTables, FixturesNameOnlyBuiltinScenarios) {
   std::set<std::string> builtin;
   for (const auto& s : builtin_scenarios(1.0)) builtin.insert(s.name);
-  for (const char* file : {"moving", "table1", "penumbra", "dynamic", "materials"}) {
+  for (const char* file : {"moving", "table1", "penumbra", "dynamic", "materials", "pages"}) {
     const auto json =
         nlohmann::json::parse(read(kFixtures / "results" / (std::string(file) + ".json")));
     for (const auto& s : json["scenarios"]) {
@@ -45,7 +45,7 @@ TEST(DocsTables, FixturesNameOnlyBuiltinScenarios) {
 TEST(DocsTables, GeneratesTheExpectedMarkdown) {
   const auto result = generate(read(kFixtures / "template.md"));
   EXPECT_TRUE(result.diagnostics.empty()) << diagnostics_text(result.diagnostics);
-  EXPECT_EQ(result.regions, 10u);
+  EXPECT_EQ(result.regions, 11u);
   EXPECT_EQ(result.text, read(kFixtures / "expected.md"));
 }
 

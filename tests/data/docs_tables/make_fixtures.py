@@ -17,7 +17,7 @@ def scenario(name, index, atlas=True, status="ok"):
     frame = sum(p["medianMs"] for p in out)
     if status != "ok":
         out, frame = [], 0.0
-    return {"scenario": name, "table": name.split("/")[0], "lights": int(name.split("/")[3][:-1])
+    return {"scenario": name, "table": name.split("/")[0], "lights": int(name.split("/")[3].split("l")[0])
             if name.count("/") >= 3 else 16, "movingLights": 64 if "/1024l" in name else
             int(name.split("/")[3][:-1]) if name.startswith("moving/") else 0,
             "scene": "district.json" if "/1024l" in name else "atrium.json", "status": status,
@@ -67,6 +67,31 @@ write("dynamic.json", bench(dynamic, **{"dynamic/ssss-11/1080p/16l/compute": "er
 materials = [f"materials/ssss-11/1080p/16l/{scene}{s}" for scene in ("atrium", "atrium-cutouts")
              for s in ("", "/compute", "/compute/screen", "/compute/screen/vis")]
 write("materials.json", bench(materials))
+
+# The page pool's rows and the same lights in squares; the paged rows carry the atlas's
+# SHD010 note with the pool's counts (the city's with pages missing), the atrium's squares
+# row none.
+paged = [f"pages/ssss-11/1080p/{rows}/compute/screen/vis/pool{pool}"
+         for rows, pool in (("16l-16m", 32), ("1024l-64m", 512), ("1024l-1024m", 512),
+                            ("4096l-1024m", 512))]
+squares = ["moving/ssss-11/1080p/16l/compute/screen/vis"] + [
+    f"many/ssss-11/1080p/{rows}/compute/screen/vis"
+    for rows in ("1024l-64m", "1024l-1024m", "4096l-1024m")]
+pages = bench(paged + squares)
+for i, s in enumerate(pages["scenarios"]):
+    name = s["scenario"]
+    lights = 16 if "/16l" in name else int(name.split("/")[3].split("l")[0])
+    s["lights"], s["movingLights"] = lights, 16 if lights == 16 else int(name.split("-")[-1].split("m")[0])
+    s["scene"] = {16: "atrium.json", 1024: "district.json", 4096: "city.json"}[lights]
+    s["passes"].insert(2, {"name": "penumbra", "type": "layered-penumbra", "medianMs": 0.2 + i / 100.0,
+                           "p10Ms": 0.2, "p90Ms": 0.2, "frames": 60, "cpuMedianMs": 0.01})
+    if name.startswith("pages/"):
+        pool = {"needed": 100 * (i + 1), "pages": 2048 if lights == 16 else 8192,
+                "missing": 3 if lights == 4096 else 0, "kept": 0, "taken": 0, "evicted": 0,
+                "bytes": 1 << 27}
+        s["notes"] = [{"code": "SHD010", "severity": "note", "pass": "shadowMaps",
+                       "message": "shadow faces", "details": {"pool": pool}}]
+write("pages.json", pages)
 
 
 def quality(width, height, scale):
