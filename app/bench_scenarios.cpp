@@ -423,6 +423,15 @@ void fit_page_pool(fg::GraphDesc& graph, std::uint32_t pool_layers) {
     if (r.name == "shadowData") records = (r.buffer_size - 16 - std::uint64_t{64} * 4096) / 80;
   }
   const std::uint64_t pages_side = (face + 127) / 128;  // interface/shared/page_tables.h
+  // Layers on top for the records' fallback tiles (pageFallback: 16 tiles to a page,
+  // ANTUMBRA_FALLBACK_TILES_PER_PAGE, after the pool's pages), so `pool_layers` stays the
+  // pages faces take, as before the tiles.
+  const std::uint64_t per_layer = pages_side * pages_side;
+  const std::uint64_t fallback = (records + 15) / 16;
+  const auto extra = static_cast<std::uint32_t>((fallback + per_layer - 1) / per_layer);
+  for (auto& r : graph.resources) {
+    if (r.name == "atlas" || r.name == "shadowColour") r.layers = pool_layers + extra;
+  }
   fg::ResourceDesc tables;
   tables.name = "pageTables";
   tables.kind = fg::ResourceKind::buffer;

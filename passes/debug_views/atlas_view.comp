@@ -7,7 +7,8 @@
 // black = cleared / nothing within range); without it, each cell is a whole layer and raw
 // depth is shown as 1 - depth. With SHADOW_PAGE_TABLES, a paged light's face is read
 // through its page table (interface/shared/page_tables.h), a page without a place in the
-// pool dark red: what the pool holds of each face, and what it misses.
+// pool dark red and a needed page read from its face's fallback tile (a coarser level)
+// in amber: what the pool holds of each face, and what it misses.
 
 #include "../interface/shared/workgroups.h"
 layout(local_size_x = ANTUMBRA_IMAGE_GROUP, local_size_y = ANTUMBRA_IMAGE_GROUP) in;
@@ -56,13 +57,16 @@ void main() {
     ivec3 at = ivec3(texel, layer);
 #ifdef SHADOW_PAGE_TABLES
     bool placed = true;
+    bool fallback = false;
     if (faces[face].info.x < ANTUMBRA_MAX_SHADOW_LIGHTS && light.projection.z < 0.0) {
       int texels = int(light.projection.y);
       ivec2 t = clamp(ivec2((vec2(local) + 0.5) / float(cell) * float(texels)), ivec2(0),
                       ivec2(texels - 1));
       int table = int(faces[face].info.y >> ANTUMBRA_FACE_LAYER_SHIFT);
-      at = shadow_page_at(shadow_page_entry(table, texels, t >> int(ANTUMBRA_PAGE_SHIFT)), t);
+      uint entry = shadow_page_entry(table, texels, t >> int(ANTUMBRA_PAGE_SHIFT));
+      at = shadow_page_at(entry, t, texels);
       placed = at.z >= 0;
+      fallback = placed && (entry & ANTUMBRA_PAGE_PLACED) == 0u;
     }
     float depth = placed ? texelFetch(atlas, at, 0).r : 1.0;
 #else
@@ -81,6 +85,7 @@ void main() {
     colour = vec3(value);
 #ifdef SHADOW_PAGE_TABLES
     if (!placed) colour = vec3(0.35, 0.0, 0.0);
+    if (fallback) colour = mix(vec3(0.3, 0.15, 0.0), vec3(1.0, 0.7, 0.2), value);
 #endif
     // One-pixel grid lines so neighbouring faces stay apart.
     if (local.x == 0u || local.y == 0u) colour = vec3(0.2, 0.2, 0.5);

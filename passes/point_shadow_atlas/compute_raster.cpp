@@ -239,7 +239,8 @@ void ComputeRasterizer::execute(fgvk::ExecuteContext& context, const AtlasFrame&
                       .cull_groups = group_count(cluster_count_, shared::kCullGroup),
                       .page_culling = settings.pages,
                       .page_reach = settings.page_reach,
-                      .pool_pages = settings.pool_pages};
+                      .pool_pages = settings.pool_pages,
+                      .pool_fallback = settings.pool_fallback};
   decision_.record(context, frame, staging, decision_layout_);
   for (std::size_t first = 0; first < layers.size(); first += chunk_faces_) {
     const Chunk chunk{
@@ -510,6 +511,7 @@ void ComputeRasterizer::resolve(fgvk::ExecuteContext& context, shared::RasterPus
   context.gpu.begin_label(context.cmd, context.pass.name + ".resolve");
   push.face_first = list_first;
   push.pool_side = atlas_size_ >> shared::kPageShift;
+  push.pool_fallback = decision_layout_.pool_pages;  // the fallback tiles' first page
   bind(context, resolve_, push);
   vkCmdDispatchIndirect(context.cmd, decision_.args(), DecisionLayout::resolve_args(args_index));
   context.gpu.end_label(context.cmd);

@@ -31,7 +31,9 @@ struct ComputeRasterSettings {
   // (docs/technique.md, "Receiver-driven pages"); off, every page of a needed face.
   bool pages = true;
   float page_reach = 1.0f;  // the blocker searches' reach the pages cover (shadow_receivers.comp)
-  std::uint32_t pool_pages = 0;  // with a page pool (prepare's `pool`): the atlas's pages
+  // with a page pool (prepare's `pool`): the pages faces take; the fallback tiles' follow
+  std::uint32_t pool_pages = 0;
+  bool pool_fallback = false;  // pageFallback: needed pages without a place go to fallback tiles
 };
 
 struct ComputeRasterStats {

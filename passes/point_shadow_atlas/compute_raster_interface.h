@@ -87,6 +87,8 @@ ANTUMBRA_PUSH_CONSTANTS(RasterPush) {
   uint page_words;  // shadow_cull.comp: uints of page bits per record in kRasterPages
   // shadow_raster_resolve.comp, PAGE_POOL: pool pages per side of a layer (page_pool_interface.h)
   uint pool_side;
+  // and the first of the pages that hold the records' fallback tiles (page_tables.h)
+  uint pool_fallback;
 };
 // shadow_cull.comp reads the records drawn from kRasterResolveList at face_first, and
 // shadow_raster_resolve.comp the pages drawn (record | page << 16) at face_first

@@ -324,6 +324,7 @@ void FaceDecision::record(fgvk::ExecuteContext& context, const AtlasFrame& frame
   push.table_stride = page_slots_;
   push.pool_pages = pool_pages_;
   push.pool_side = layout.face_size >> shared::kPageShift;
+  push.pool_fallback = layout.pool_fallback ? 1u : 0u;
   push.frame_number = static_cast<std::uint32_t>(context.frame.frame_index);
   if (receivers_) {
     const fgvk::BoundImage& depth = context.bindings.required_image(port::kDepth);

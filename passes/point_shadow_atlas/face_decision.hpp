@@ -63,7 +63,10 @@ struct DecisionLayout {
   std::uint32_t cull_groups = 0;  // the cull's workgroups along the clusters
   bool page_culling = true;       // only the needed pages of a needed face
   float page_reach = 1.0f;        // DecisionPush::page_reach
-  std::uint32_t pool_pages = 0;   // the page pool's pages (0: no pool; page_pool_interface.h)
+  // the page pool's pages faces take (0: no pool; page_pool_interface.h); the records'
+  // fallback tiles lie in the pages after them (page_tables.h)
+  std::uint32_t pool_pages = 0;
+  bool pool_fallback = false;  // DecisionPush::pool_fallback
   [[nodiscard]] std::uint32_t chunks() const { return (records + chunk_faces - 1) / chunk_faces; }
   [[nodiscard]] std::uint32_t page_list(std::uint32_t chunk) const {
     return chunks() * chunk_faces + chunk * chunk_faces * page_slots(face_size);

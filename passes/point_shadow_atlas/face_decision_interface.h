@@ -56,12 +56,12 @@ ANTUMBRA_PUSH_CONSTANTS(DecisionPush) {
   float page_margin;   // texels around a pixel's lookup whose pages it needs
   float page_reach;    // the blocker searches' scale of the light's size the pages cover
   // The page pool (page_pool_interface.h; PAGE_POOL variants only).
-  uint table_stride;  // page-table words per record
-  uint pool_pages;    // pages in the pool
-  uint frame_number;  // this frame's, for the pages' ages
-  uint reclaim_pass;  // shadow_pool_reclaim.comp: 0 counts the buckets, 1 fills them
-  uint pool_side;     // pages per side of an atlas layer (atlas width >> ANTUMBRA_PAGE_SHIFT)
-  uint pool_padding;  // keeps the block a whole number of uvec2s, as the C++ struct is
+  uint table_stride;   // page-table words per record
+  uint pool_pages;     // pages in the pool
+  uint frame_number;   // this frame's, for the pages' ages
+  uint reclaim_pass;   // shadow_pool_reclaim.comp: 0 counts the buckets, 1 fills them
+  uint pool_side;      // pages per side of an atlas layer (atlas width >> ANTUMBRA_PAGE_SHIFT)
+  uint pool_fallback;  // 1: a needed page without a pool page goes to its fallback tile
 };
 
 ANTUMBRA_BINDING(kDecideShadowIn, 0)   // this frame's shadow data as the CPU wrote it

@@ -9,6 +9,7 @@
 #include "common/shadow_data.hpp"
 #include "pages.h"
 #include "point_shadow_atlas_pass.hpp"
+#include "pool_fit.hpp"
 
 namespace antumbra::passes {
 namespace {
@@ -72,16 +73,22 @@ void check_pool(const fg::PlanPass& pass, const PointShadowAtlasParams& params,
   const fg::PlanResource* tables = bound_resource(pass, plan, port::kPageTables);
   if (tables == nullptr)
     wants.emplace_back("`pageTables` bound (the readers find pages through it)");
+  const fg::PlanResource* data = bound_resource(pass, plan, port::kShadowData);
+  const std::uint32_t records = face_records(data != nullptr ? data->buffer_size : 0, atlas.layers);
+  const std::uint64_t side = (size + shared::kPageSize - 1) / shared::kPageSize;
+  const std::uint64_t pages = std::uint64_t{atlas.layers} * side * side;
+  const std::uint32_t fallback = params.page_fallback ? pool_fallback_pages(records) : 0u;
+  if (params.page_fallback && pages <= fallback) {
+    wants.emplace_back("more than the " + std::to_string(fallback) + " pages its " +
+                       std::to_string(records) + " face records' fallback tiles take (the " +
+                       "atlas has " + std::to_string(pages) + "): more layers or fewer records");
+  }
   for (const std::string& want : wants) {
     add_pass_error(graph, pass, codes::graph::kParamRange, "pagePool needs " + want,
                    "/params/pagePool", diagnostics);
   }
   if (tables == nullptr) return;
-  const fg::PlanResource* data = bound_resource(pass, plan, port::kShadowData);
-  const std::uint64_t side = (size + shared::kPageSize - 1) / shared::kPageSize;
-  const std::uint64_t needed =
-      std::uint64_t{face_records(data != nullptr ? data->buffer_size : 0, atlas.layers)} * side *
-      side * 4;
+  const std::uint64_t needed = std::uint64_t{records} * side * side * 4;
   if (tables->buffer_size < needed) {
     add_pass_error(graph, pass, codes::shadow_atlas::kShadowDataTooSmall,
                    "the pageTables buffer '" + tables->name + "' holds " +
@@ -316,18 +323,6 @@ void add_face_choice_params(fg::ParamTable<PointShadowAtlasParams>& table) {
                 "lightSizeScale 1; set it to at least their product). Larger values draw "
                 "more pages."},
            &PointShadowAtlasParams::page_reach)
-      .add({.name = "pagePool",
-            .type = fg::ParamType::boolean,
-            .default_value = false,
-            .description =
-                "The atlas's layers become one pool of 128^2 pages, and a light's faces "
-                "(each its own size, up to the atlas's) take pages only where a visible "
-                "pixel needs them, through page tables (`pageTables`, which every reader of "
-                "the atlas binds). A full pool gives the least recently needed pages to the "
-                "needed ones; a needed page left without one reads as lit, and SHD010 counts "
-                "it. Needs rasterizer \"compute\", an r32f square atlas, receiverCulling "
-                "and receiverPages with `depth` bound (docs/technique.md, \"Page pool\")."},
-           &PointShadowAtlasParams::page_pool)
       .choice(
           {.name = "resolution",
            .type = fg::ParamType::enumeration,
@@ -355,6 +350,34 @@ void add_face_choice_params(fg::ParamTable<PointShadowAtlasParams>& table) {
             .description = "With resolution \"screen\": the smallest face size, a power of "
                            "two (faces are never larger than the atlas's)."},
            &PointShadowAtlasParams::min_resolution);
+}
+
+// The page pool (docs/technique.md, "Page pool").
+void add_pool_params(fg::ParamTable<PointShadowAtlasParams>& table) {
+  table
+      .add({.name = "pagePool",
+            .type = fg::ParamType::boolean,
+            .default_value = false,
+            .description =
+                "The atlas's layers become one pool of 128^2 pages, and a light's faces "
+                "(each its own size, up to the atlas's) take pages only where a visible "
+                "pixel needs them, through page tables (`pageTables`, which every reader of "
+                "the atlas binds). A full pool gives the least recently needed pages to the "
+                "needed ones; a needed page left without one reads its face's coarser level "
+                "(pageFallback), and SHD010 counts it. Needs rasterizer \"compute\", an r32f "
+                "square atlas, receiverCulling and receiverPages with `depth` bound "
+                "(docs/technique.md, \"Page pool\")."},
+           &PointShadowAtlasParams::page_pool)
+      .add({.name = "pageFallback",
+            .type = fg::ParamType::boolean,
+            .default_value = true,
+            .description =
+                "With pagePool: every face record keeps a 32^2 tile of its face in pages "
+                "reserved at the pool's end (a page per 16 records), and a needed page the "
+                "full pool has no place for is drawn there at a coarser level (the farthest "
+                "depth of the texels each tile texel covers) and read from it, instead of "
+                "reading as lit until the faces shrink (docs/technique.md, \"Page pool\")."},
+           &PointShadowAtlasParams::page_fallback);
 }
 
 // How much is drawn per frame when much changes (dynamic meshes, moving lights).
@@ -487,6 +510,7 @@ const fg::ParamTable<PointShadowAtlasParams>& PointShadowAtlasPass::param_table(
     add_rasterizer_param(table);
     add_sun_params(table);
     add_face_choice_params(table);
+    add_pool_params(table);
     add_update_params(table);
     return table;
   }();

@@ -390,7 +390,8 @@ void PointShadowAtlasPass::execute(fgvk::ExecuteContext& context) {
                       .tint = colour_,
                       .pages = params_.receiver_pages,
                       .page_reach = params_.page_reach,
-                      .pool_pages = pool_pages()},
+                      .pool_pages = pool_pages(),
+                      .pool_fallback = pool_reserve() > 0},
                      {slot.staging, lights_high_});
     return;
   }

@@ -53,6 +53,7 @@ struct PointShadowAtlasParams {
   bool receiver_pages = true;
   float page_reach = 1.0f;
   bool page_pool = false;
+  bool page_fallback = true;  // pageFallback: a needed page without a place reads a coarser level
   FaceResolution resolution = FaceResolution::fixed;
   float resolution_scale = 1.0f;
   std::uint32_t min_resolution = 64;
@@ -94,6 +95,7 @@ class PointShadowAtlasPass final : public fgvk::Pass {
   [[nodiscard]] base::Json face_sizes() const;
   // The page pool's pages (0 without one) and SHD010's account of them.
   [[nodiscard]] std::uint32_t pool_pages() const;
+  [[nodiscard]] std::uint32_t pool_reserve() const;
   [[nodiscard]] base::Json pool_details(const FaceDecisionStats::Pool& pool) const;
   void report_fit(fgvk::ExecuteContext& context, const AtlasFrame& frame);
   [[nodiscard]] fgvk::PassMessage face_stats(const std::string& pass,

@@ -10,6 +10,7 @@
 #include "antumbra/base/text.hpp"
 #include "pages.h"
 #include "point_shadow_atlas_pass.hpp"
+#include "pool_fit.hpp"
 
 namespace antumbra::passes {
 
@@ -159,17 +160,27 @@ fgvk::PassMessage PointShadowAtlasPass::face_stats(
   return {pass, codes::shadow_atlas::kFaceStats, base::Severity::note, text, std::move(details)};
 }
 
+// The pages faces take: the atlas's, less the fallback tiles' at the end (pool_fit.hpp;
+// the compiler's FG033 keeps some).
 std::uint32_t PointShadowAtlasPass::pool_pages() const {
   if (!settings_.page_pool) return 0;
   const std::uint32_t side = settings_.face_size >> shared::kPageShift;
-  return settings_.layers * side * side;
+  const std::uint32_t all = settings_.layers * side * side;
+  return all - std::min(all, pool_reserve());
+}
+
+// Pages at the pool's end for the records' fallback tiles (pageFallback; pool_fit.hpp).
+std::uint32_t PointShadowAtlasPass::pool_reserve() const {
+  return settings_.page_pool && params_.page_fallback ? pool_fallback_pages(settings_.records) : 0u;
 }
 
 // SHD010's `pool`: the page pool's pages and what the GPU did with them (face_decision.hpp).
 base::Json PointShadowAtlasPass::pool_details(const FaceDecisionStats::Pool& pool) const {
   const std::uint64_t page_bytes = std::uint64_t{shared::kPageSize} * shared::kPageSize * 4;
+  const std::uint32_t fallback = pool_reserve();
   return base::Json::object({{"pages", pool.pages},
-                             {"bytes", pool.pages * page_bytes},
+                             {"fallbackPages", fallback},
+                             {"bytes", (std::uint64_t{pool.pages} + fallback) * page_bytes},
                              {"needed", pool.kept + pool.taken + pool.missing},
                              {"kept", pool.kept},
                              {"taken", pool.taken},

@@ -6,7 +6,15 @@
 #include <algorithm>
 #include <cstdint>
 
+#include "../interface/shared/page_tables.h"
+
 namespace antumbra::passes {
+
+// Pool pages reserved at the pool's end for `records` face records' fallback tiles
+// (interface/shared/page_tables.h): a needed page without a place reads its face's tile.
+[[nodiscard]] constexpr std::uint32_t pool_fallback_pages(std::uint32_t records) {
+  return (records + ANTUMBRA_FALLBACK_TILES_PER_PAGE - 1) / ANTUMBRA_FALLBACK_TILES_PER_PAGE;
+}
 
 // The pool's counts of one frame (FaceDecisionStats::Pool).
 struct PoolCounts {

@@ -13,7 +13,9 @@
 // Drawn records go to their chunk's record list, which its cull works through, and their
 // drawn pages to its page list and bits (kDecidePages), which its resolve and cull follow;
 // on a frame whose atlas contents are unknown (fill_first > 0) every page not drawn is
-// filled with far depth instead.
+// filled with far depth instead. With the page pool, a needed page that finds no pool page
+// is drawn into its face's fallback tile (page_tables.h), once per epoch: what the filled
+// bits of `content` record there.
 
 layout(local_size_x = kDecideGroup) in;
 
@@ -163,7 +165,8 @@ Survey survey(bool candidate) {
 #ifdef PAGE_POOL
     uint mapped = map_pages(w, draw);
     r.missing = r.missing || mapped != draw;
-    draw = mapped;
+    // Those left without a place go to the fallback tile unless it holds them already.
+    draw = mapped | (pool_fallback != 0u ? draw & ~mapped & ~filled_bits(w) : 0u);
 #else
     r.filled += uint(bitCount(valid_bits(w) & ~need & ~current & ~filled_bits(w)));
 #endif
@@ -205,7 +208,11 @@ void draw_pages(uint record, Survey r) {
     // face has no page there: its lookups read far depth).
     uint fill = valid_bits(w) & ~need & ~current & ~filled;
 #ifdef PAGE_POOL
-    draw = mapped_bits(w, draw);
+    // The pages with a pool page, then those going to the fallback tile (filled bits:
+    // the tile holds them at this epoch), which the resolve tells apart by their table.
+    uint mapped = mapped_bits(w, draw);
+    uint coarse = pool_fallback != 0u ? draw & ~mapped & ~filled : 0u;
+    draw = mapped | coarse;
     fill = 0u;
 #endif
     for (uint bits = draw; bits != 0u; bits &= bits - 1u) {
@@ -215,8 +222,13 @@ void draw_pages(uint record, Survey r) {
       list[at++] = record | ((w * 32u + uint(findLSB(bits))) << kEntryPageShift) | kEntryFill;
     }
     drawn_pages[record * page_words + w] = draw;
+#ifdef PAGE_POOL
+    content[base + 1u + w] = current | mapped;
+    content[base + 1u + page_words + w] = filled | coarse;
+#else
     content[base + 1u + w] = current | draw;
     content[base + 1u + page_words + w] = (filled | fill) & ~draw;
+#endif
   }
   content[base] = g_request.epoch;
   atomicAdd(stats[kStatDrawn], 1u);
@@ -264,6 +276,8 @@ void main() {
     // Laid out anew: its pages went back to the pool (shadow_pool_reclaim.comp).
     for (uint k = 0u; k < table_stride; ++k) tables[i * table_stride + k] = 0u;
     table_sizes[i] = g_request.size;
+    // Its fallback tile's blocks are laid out for the old size too.
+    for (uint w = 0u; w < page_words; ++w) content[content_base(i) + 1u + page_words + w] = 0u;
   }
 #endif
   g_any_needed = receivers == 0u;

@@ -9,8 +9,10 @@
 // stale, is dropped with its page's "holds the epoch" bit; an entry whose page does not
 // hold its face's current depth (the face changed and the page was not drawn again) is
 // dropped and its page freed. So every published entry names a page holding this frame's
-// depth of its face, and a lookup without a page reads far depth (lit). Published entries
-// name the page's layer, column and row (page_tables.h), not the pool's page number.
+// depth of its face. A page without one whose fallback tile holds its face's current epoch
+// (shadow_face_decide.comp drew it there) publishes the tile; else a lookup there reads far
+// depth (lit). Published entries name the page's layer, column and row (page_tables.h),
+// not the pool's page number.
 
 layout(local_size_x = kPoolGroup) in;
 
@@ -43,13 +45,21 @@ uint published_entry(uint page) {
          (place.y << ANTUMBRA_PAGE_ROW_SHIFT) | place.x;
 }
 
+// Record `record`'s fallback tile as page_tables.h publishes it (the reserved pages
+// follow the pool's pool_pages).
+uint fallback_entry(uint record) {
+  uvec3 tile = pool_fallback_tile(record, pool_pages, pool_side);
+  return ANTUMBRA_PAGE_FALLBACK | (tile.z << ANTUMBRA_FALLBACK_LAYER_SHIFT) |
+         (tile.y << ANTUMBRA_FALLBACK_ROW_SHIFT) | tile.x;
+}
+
 void main() {
   uint word = pool_thread();
   if (word >= layers * table_stride) return;
   uint entry = tables[word];
+  uint record = word / table_stride;
+  uint k = word % table_stride;
   if (entry != 0u) {
-    uint record = word / table_stride;
-    uint k = word % table_stride;
     uint base = content_base(record);
     uint bits = base + 1u + (k >> 5u);
     bool owned = owners[entry - 1u] == word + 1u;
@@ -61,5 +71,12 @@ void main() {
       entry = 0u;
     }
   }
-  published[word] = entry == 0u ? 0u : published_entry(entry - 1u);
+  if (entry != 0u) {
+    published[word] = published_entry(entry - 1u);
+    return;
+  }
+  uint base = content_base(record);
+  bool coarse = k < page_words * 32u && content[base] == requests[record].epoch &&
+                page_bit(content[base + 1u + page_words + (k >> 5u)], k);
+  published[word] = coarse ? fallback_entry(record) : 0u;
 }

@@ -4,6 +4,7 @@
 #include "../interface/shared/shadow_data.h"
 #ifdef PAGE_POOL
 #include "pool_page.glsl"
+#include "../common/page_fallback.glsl"
 #endif
 
 // Writes finished pages from the scratch into the graph's images (x, y: texels of the
@@ -13,7 +14,12 @@
 // this frame; pages.h). WRITE_DEPTH, the depth
 // scratch into an r32f atlas (a depth atlas is filled by copies instead); WRITE_COLOUR,
 // a tinted face's tint scratch into the rgba8 colour map. A record's info.y says where
-// its depth is in the scratch, info.w - 1 its tint slot (0: untinted).
+// its depth is in the scratch, info.w - 1 its tint slot (0: untinted). PAGE_POOL: a drawn
+// page the pool had no place for goes to its block of the record's fallback tile
+// (page_fallback.glsl): one thread a tile texel takes the farthest depth of the page
+// texels it covers (a coarser level that keeps receivers from shadowing themselves;
+// casters thinner than a tile texel are lost, shadows shrink by at most one) and a white
+// tint, and cleans those texels of the scratch itself, so no other thread touches them.
 
 layout(local_size_x = kResolveGroup, local_size_y = kResolveGroup) in;
 
@@ -42,6 +48,48 @@ layout(std430, binding = kRasterTint) buffer Tint {
 layout(binding = kRasterColour, rgba8) uniform writeonly image2DArray colour;
 #endif
 
+#ifdef PAGE_POOL
+// Writes this thread's fallback tile texel when it is the first of its block, from the
+// page texels the block covers. `corner`: the page's first face texel; `offset`: this
+// thread's texel in the page.
+void resolve_fallback(RasterFace face, uint size, uvec2 corner, uvec2 offset) {
+  uvec2 page_width;
+  uvec2 block_width;
+  page_fallback_widths(corner, size, page_width, block_width);
+  uvec2 q = offset * block_width / page_width;
+  bvec2 first = bvec2(offset.x == 0u || (offset.x - 1u) * block_width.x / page_width.x < q.x,
+                      offset.y == 0u || (offset.y - 1u) * block_width.y / page_width.y < q.y);
+  if (!all(first)) return;
+  uvec2 end = min(((q + 1u) * page_width + block_width - 1u) / block_width, page_width);
+  uint table = face.info.x >> ANTUMBRA_FACE_LAYER_SHIFT;
+  uvec3 tile = pool_fallback_tile(table / (pool_side * pool_side), pool_fallback, pool_side);
+  uvec2 in_tile = page_fallback_texel(corner + offset, size);
+  ivec3 texel = ivec3(ivec2((tile.xy << ANTUMBRA_PAGE_FALLBACK_SHIFT) + in_tile), int(tile.z));
+#ifdef WRITE_DEPTH
+  uint farthest = 0u;  // depths are non-negative floats: their bits order as they do
+  for (uint y = offset.y; y < end.y; ++y) {
+    for (uint x = offset.x; x < end.x; ++x) {
+      uint at = face.info.y + (corner.y + y) * size + corner.x + x;
+      farthest = max(farthest, depth[at]);
+      if (reset_scratch != 0u) depth[at] = kRasterClearDepth;
+    }
+  }
+  imageStore(atlas, texel, vec4(uintBitsToFloat(farthest)));
+#endif
+#ifdef WRITE_COLOUR
+  if (face.info.w > 0u) {
+    imageStore(colour, texel, unpackUnorm4x8(kRasterClearTint));
+    uint slots = (face.info.w - 1u) * floatBitsToUint(face.params.w);
+    for (uint y = offset.y; y < end.y && reset_scratch != 0u; ++y) {
+      for (uint x = offset.x; x < end.x; ++x) {
+        tint[slots + (corner.y + y) * size + corner.x + x] = kRasterClearTint;
+      }
+    }
+  }
+#endif
+}
+#endif
+
 void main() {
   uint entry = records[face_first + gl_GlobalInvocationID.z];
   RasterFace face = faces[entry & 0xFFFFu];
@@ -56,13 +104,16 @@ void main() {
   uint place = face.info.x;
 #ifdef PAGE_POOL
   // Its pool page (the record's table starts at place >> ANTUMBRA_FACE_LAYER_SHIFT).
-  // A page without one (never, while the compiler holds receiverPages on) still cleans
-  // its scratch for the next chunk.
+  // A page without one goes to the record's fallback tile (resolve_fallback).
   uint pool_entry = tables[(place >> ANTUMBRA_FACE_LAYER_SHIFT) + page];
   bool placed = pool_entry != 0u;
   uvec3 pool_place = pool_page_place(pool_entry - 1u, pool_side);
   uvec2 corner = pool_place.xy << kRasterRegionShift;
   ivec3 texel = ivec3(ivec2(corner + gl_GlobalInvocationID.xy), int(pool_place.z));
+  if (!placed && !fill) {
+    resolve_fallback(face, size, p - gl_GlobalInvocationID.xy, gl_GlobalInvocationID.xy);
+    return;
+  }
 #else
   // Its square at its place (shadow_data.h, ShadowFace.info.y).
   uint cell_mask = (1u << ANTUMBRA_FACE_CELL_BITS) - 1u;

@@ -239,13 +239,15 @@ class AtlasGpuTest : public gpu::testing::GpuTest {
     return texels;
   }
   // The shadowData buffer as the last frame left it.
-  std::vector<std::byte> read_shadow_data() {
+  std::vector<std::byte> read_shadow_data() { return read_buffer("shadowData"); }
+  // A graph buffer as the last frame left it.
+  std::vector<std::byte> read_buffer(const char* resource) {
     frames_->wait_all();
-    const gpu::Buffer* buffer = executor_->gpu_buffer("shadowData");
+    const gpu::Buffer* buffer = executor_->gpu_buffer(resource);
     EXPECT_NE(buffer, nullptr);
     if (buffer == nullptr) return {};
     auto readback = gpu::Buffer::create(ctx(), buffer->size(), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                        gpu::MemoryUsage::readback, "test.shadowData.readback");
+                                        gpu::MemoryUsage::readback, "test.buffer.readback");
     ctx().submit_immediate([&](VkCommandBuffer cmd) {
       gpu::buffer_barrier(cmd, buffer->handle(), VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
                           VK_ACCESS_2_MEMORY_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT,

@@ -13,6 +13,16 @@
 // 2^ANTUMBRA_PAGE_SHIFT texels). Written decoded so that a lookup finds its texel with
 // shifts and masks alone: the pool's own page numbers (layer p / (s x s), s = atlas width /
 // 2^ANTUMBRA_PAGE_SHIFT) would cost a lookup two integer divisions by s per tap.
+//
+// A page that a visible pixel needs but that found no place in the pool reads its face's
+// coarser level instead (docs/technique.md, "Page pool", "A pool too small"): every record
+// owns a fallback tile of ANTUMBRA_PAGE_FALLBACK_SIZE^2 texels in pages reserved at the
+// pool's end, where each page of the face has a block of
+// max(ANTUMBRA_PAGE_FALLBACK_SIZE / pages per side, 1) texels per side (fewer when the page
+// is cut smaller) holding the farthest depth of the page texels it covers. Such an entry
+// is ANTUMBRA_PAGE_FALLBACK | layer << ANTUMBRA_FALLBACK_LAYER_SHIFT | tile row <<
+// ANTUMBRA_FALLBACK_ROW_SHIFT | tile column, in tiles of the layer; page_fallback.glsl
+// maps a face texel into it.
 #ifndef ANTUMBRA_PAGE_TABLES_H
 #define ANTUMBRA_PAGE_TABLES_H
 
@@ -21,7 +31,19 @@
 #define ANTUMBRA_PAGE_COORD_BITS 5u
 #define ANTUMBRA_PAGE_ROW_SHIFT 5u
 #define ANTUMBRA_PAGE_LAYER_SHIFT 10u
-#define ANTUMBRA_PAGE_LAYER_BITS 21u  // bits 10..30: any layer count Vulkan allows
+#define ANTUMBRA_PAGE_LAYER_BITS 20u  // bits 10..29: any layer count Vulkan allows
 #define ANTUMBRA_PAGE_PLACED 0x80000000u
+// A needed page without a place, read from its face's fallback tile.
+#define ANTUMBRA_PAGE_FALLBACK 0x40000000u
+// A fallback tile's side: at least one texel per page of the largest paged face (4096
+// texels, 32 pages: FG033), 16 tiles to a page.
+#define ANTUMBRA_PAGE_FALLBACK_SIZE 32u
+#define ANTUMBRA_PAGE_FALLBACK_SHIFT 5u
+#define ANTUMBRA_FALLBACK_COORD_BITS 7u  // tiles per side of a layer: up to 4096 / 32
+#define ANTUMBRA_FALLBACK_ROW_SHIFT 7u
+#define ANTUMBRA_FALLBACK_LAYER_SHIFT 14u
+#define ANTUMBRA_FALLBACK_LAYER_BITS 16u  // bits 14..29
+// Fallback tiles per pool page.
+#define ANTUMBRA_FALLBACK_TILES_PER_PAGE 16u
 
 #endif
