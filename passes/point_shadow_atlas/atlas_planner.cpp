@@ -81,7 +81,7 @@ const AtlasFrame& AtlasPlanner::plan(const scene::Scene& scene, const glm::mat4&
       keep_light(work);
     }
   }
-  const PackerStats packed = packer_.stats();
+  const PackerStats packed = packer_.stats(owned_end_);
   frame_.stats.layers_used = packed.layers_used;
   frame_.stats.texels_held = packed.texels;
   return frame_;
@@ -99,7 +99,19 @@ void AtlasPlanner::begin_frame(const scene::Scene& scene, std::uint32_t frame_in
   }
   const std::uint32_t pages_side =
       (settings.face_size + shared::kPageSize - 1) >> shared::kPageShift;
-  table_stride_ = settings.page_pool ? pages_side * pages_side : 0u;
+  const std::uint32_t stride = settings.page_pool ? pages_side * pages_side : 0u;
+  // The last frame's records, kept: only those some light owned need resetting (an
+  // unowned record's place names its table, so a new stride resets them all).
+  std::vector<ShadowFace> faces = std::move(frame_.faces);
+  std::vector<std::uint32_t> epochs = std::move(frame_.epochs);
+  std::uint32_t reset_end = std::min(owned_end_, records);
+  if (faces.size() != records || !contents_known_ || stride != table_stride_) {
+    faces.assign(records, ShadowFace{});
+    epochs.assign(records, 0u);
+    reset_end = records;
+    owned_end_ = 0;  // a new layout: nothing is owned
+  }
+  table_stride_ = stride;
   frame_ = AtlasFrame{};
   frame_.clear_all = !contents_known_;
   contents_known_ = true;
@@ -107,17 +119,22 @@ void AtlasPlanner::begin_frame(const scene::Scene& scene, std::uint32_t frame_in
       static_cast<std::uint32_t>(std::min<std::size_t>(scene.lights.size(), kMaxShadowLights));
   frame_.header.counts = {light_count, records, settings.face_size, frame_index};
   frame_.lights.assign(light_count, ShadowLight{});
-  frame_.faces.assign(records, ShadowFace{});
-  frame_.epochs.assign(records, 0u);
-  for (std::uint32_t record = 0; record < records; ++record) {  // until a light owns it
+  frame_.faces = std::move(faces);
+  frame_.epochs = std::move(epochs);
+  for (std::uint32_t record = 0; record < reset_end; ++record) {  // until a light owns it
+    frame_.faces[record] = ShadowFace{};
     frame_.faces[record].info = {0xFFFFFFFFu, face_info_y(0u, record), 0u, 0u};
+    frame_.epochs[record] = 0u;
   }
 }
 
 // Layers whose contents a dynamic mesh entered or left are stale.
 void AtlasPlanner::mark_dynamic(const SceneMotion& motion) {
   if (motion.moved.empty()) return;
-  for (LayerState& state : layers_) {
+  // Records past owned_end_ are released: nothing valid to mark.
+  const std::size_t end = std::min<std::size_t>(owned_end_, layers_.size());
+  for (std::size_t i = 0; i < end; ++i) {
+    LayerState& state = layers_[i];
     if (!state.valid || state.dynamic_dirty) continue;
     state.dynamic_dirty = std::any_of(
         motion.moved.begin(), motion.moved.end(),
@@ -153,13 +170,15 @@ void AtlasPlanner::claim_lights(const scene::Scene& scene, const AtlasSettings& 
                        .wanted = light_resolution(light, next, settings)});
     next += faces;
   }
-  // Records no light owns this frame hold nothing useful any more.
-  for (std::uint32_t record = next; record < records; ++record) {
+  // Records no light owns this frame hold nothing useful any more (those past the last
+  // frame's owned ones were released then).
+  for (std::uint32_t record = next; record < std::min(owned_end_, records); ++record) {
     layers_[record].valid = false;
     layers_[record].shown = false;
     layers_[record].owner.clear();
     packer_.release(record);
   }
+  owned_end_ = next;
 }
 
 namespace {

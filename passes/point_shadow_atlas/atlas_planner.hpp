@@ -241,6 +241,10 @@ class AtlasPlanner {
   FacePacker packer_;
   std::uint32_t next_epoch_ = 1;
   std::uint32_t table_stride_ = 0;  // page-table words per record (page pool), else 0
+  // Records [0, owned_end_) had an owner on the last frame; the others are released and
+  // their ShadowFace in frame_.faces reads "no owner" already: a frame's work on records
+  // is proportional to the records lights own, not to the records the graph holds.
+  std::uint32_t owned_end_ = 0;
   bool contents_known_ = false;
   AtlasFrame frame_;
 };

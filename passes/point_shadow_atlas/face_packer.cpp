@@ -70,11 +70,12 @@ std::optional<FacePlace> FacePacker::place(std::uint32_t record, std::uint32_t s
   return std::nullopt;
 }
 
-PackerStats FacePacker::stats() const {
+PackerStats FacePacker::stats(std::uint32_t records) const {
   PackerStats s;
   for (const Layer& layer : layers_) s.layers_used += layer.used > 0 ? 1u : 0u;
-  for (const Record& r : records_) {
-    if (r.placed) s.texels += std::uint64_t{r.size} * r.size;
+  const std::size_t end = std::min<std::size_t>(records, records_.size());
+  for (std::size_t i = 0; i < end; ++i) {
+    if (records_[i].placed) s.texels += std::uint64_t{records_[i].size} * records_[i].size;
   }
   return s;
 }

@@ -50,7 +50,9 @@ class FacePacker {
   [[nodiscard]] static std::uint32_t smallest(std::uint32_t layer_size);
   [[nodiscard]] static bool valid_size(std::uint32_t size, std::uint32_t layer_size);
 
-  [[nodiscard]] PackerStats stats() const;
+  // Of records [0, records) (no others hold a square: a planner's records past the last
+  // light's are released).
+  [[nodiscard]] PackerStats stats(std::uint32_t records = ~0u) const;
   [[nodiscard]] std::uint32_t layer_size() const { return layer_size_; }
   [[nodiscard]] std::uint32_t records() const {
     return static_cast<std::uint32_t>(records_.size());

@@ -348,6 +348,42 @@ TEST(AtlasPlanner, APagePoolGivesEveryLightItsSizeAndATable) {
   }
 }
 
+// A frame resets only the records lights owned on the last one (a graph's records past
+// its lights cost nothing): records a light gives up read "no owner" again, with no
+// epoch, and are owned again when lights come back; the same frames on a planner that
+// starts anew give the same records.
+TEST(AtlasPlanner, RecordsLightsGiveUpReadUnownedAndComeBack) {
+  auto scene = test::atrium_scene();
+  AtlasSettings s = settings(32);
+  s.face_size = 1024;
+  s.records = 6144;
+  s.gpu_decides = true;
+  s.page_pool = true;
+  AtlasPlanner planner;
+  const auto all = planner.plan(scene, camera_of(scene), 1, 0, s);
+  const auto owned = static_cast<std::uint32_t>(scene.lights.size()) * 6;
+  ASSERT_EQ(all.faces.size(), 6144u);
+  for (std::uint32_t record = 0; record < owned; ++record) {
+    EXPECT_EQ(all.faces[record].info.x, record / 6) << "record " << record;
+  }
+  auto fewer = scene;
+  fewer.lights.resize(4);
+  const auto few = planner.plan(fewer, camera_of(fewer), 1, 1, s);
+  AtlasPlanner fresh;
+  const auto expected = fresh.plan(fewer, camera_of(fewer), 1, 1, s);
+  for (std::uint32_t record = 24; record < 6144; ++record) {
+    EXPECT_EQ(few.faces[record].info, expected.faces[record].info) << "record " << record;
+    EXPECT_EQ(few.faces[record].info.x, 0xFFFFFFFFu) << "record " << record;
+    EXPECT_EQ(few.faces[record].view_proj, expected.faces[record].view_proj) << "record " << record;
+    EXPECT_EQ(few.epochs[record], 0u) << "record " << record;
+  }
+  const auto back = planner.plan(scene, camera_of(scene), 1, 2, s);
+  for (std::uint32_t record = 0; record < owned; ++record) {
+    EXPECT_EQ(back.faces[record].info.x, record / 6) << "record " << record;
+    EXPECT_NE(back.epochs[record], 0u) << "record " << record;
+  }
+}
+
 // A pool too small halves the face-size cap from the largest face drawn; a pool with room
 // to spare for faces twice as wide doubles it after PoolFit::kCalmFrames frames, up to no
 // cap; counts of frames planned before a change are ignored (they come back late).
