@@ -76,12 +76,12 @@
 #include "../interface/shared/page_tables.h"
 #include "page_fallback.glsl"
 
-// The atlas texel of texel `t` of a `texels`-wide face's page whose table entry is
-// `entry` (`t` may be any face texel: only its place in the page counts, but for a
-// fallback entry); z < 0 when the page has neither a place nor a fallback.
-ivec3 shadow_page_at(uint entry, ivec2 t, int texels) {
+// The atlas texel of texel `t` of a page whose table entry is `entry` (`t` may be any face
+// texel: only its place in the page counts, and for a fallback entry the page's place in
+// the face); z < 0 when the page has neither a place nor a fallback.
+ivec3 shadow_page_at(uint entry, ivec2 t) {
   if ((entry & ANTUMBRA_PAGE_PLACED) == 0u) {
-    return entry == 0u ? ivec3(0, 0, -1) : page_fallback_at(entry, uvec2(t), uint(texels));
+    return entry == 0u ? ivec3(0, 0, -1) : page_fallback_at(entry, uvec2(t));
   }
   const uint coord_mask = (1u << ANTUMBRA_PAGE_COORD_BITS) - 1u;
   ivec2 page = ivec2(uvec2(entry, entry >> ANTUMBRA_PAGE_ROW_SHIFT) & uvec2(coord_mask));
@@ -153,7 +153,7 @@ uint shadow_page_entry_of(ShadowPages p, ivec2 page) {
 // The atlas texel of face uv (clamped to the face) of a paged face: its nearest texel.
 ivec3 shadow_page_lookup(ShadowPages p, vec2 face_uv) {
   ivec2 t = shadow_page_texel_of(p, face_uv);
-  return shadow_page_at(shadow_page_entry_of(p, t >> int(ANTUMBRA_PAGE_SHIFT)), t, p.texels);
+  return shadow_page_at(shadow_page_entry_of(p, t >> int(ANTUMBRA_PAGE_SHIFT)), t);
 }
 
 // Stored depth there (far depth without a page).

@@ -64,7 +64,7 @@ void main() {
                       ivec2(texels - 1));
       int table = int(faces[face].info.y >> ANTUMBRA_FACE_LAYER_SHIFT);
       uint entry = shadow_page_entry(table, texels, t >> int(ANTUMBRA_PAGE_SHIFT));
-      at = shadow_page_at(entry, t, texels);
+      at = shadow_page_at(entry, t);
       placed = at.z >= 0;
       fallback = placed && (entry & ANTUMBRA_PAGE_PLACED) == 0u;
     }

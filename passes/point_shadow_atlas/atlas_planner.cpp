@@ -178,6 +178,7 @@ void AtlasPlanner::claim_lights(const scene::Scene& scene, const AtlasSettings& 
     layers_[record].owner.clear();
     packer_.release(record);
   }
+  frame_.live_records = frame_.clear_all ? records : std::max(std::min(owned_end_, records), next);
   owned_end_ = next;
 }
 

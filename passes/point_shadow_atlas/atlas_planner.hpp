@@ -126,6 +126,11 @@ struct AtlasFrame {
   std::vector<std::string> unshadowed;  // casters left without a slot (atlas full)
   std::vector<DegradedLight> degraded;  // casters drawn smaller than wanted (atlas full)
   bool clear_all = false;  // the whole atlas has undefined contents (first frame, reload)
+  // Records [0, live_records) are what the GPU takes this frame (the upload, the face
+  // decision): every record on a clear_all frame, else those a light owns now or owned
+  // on the last frame (which read "no owner" once more). The others read "no owner"
+  // already, wherever the GPU holds them: work per frame follows the lights.
+  std::uint32_t live_records = 0;
   AtlasStats stats;
 };
 

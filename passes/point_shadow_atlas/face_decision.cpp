@@ -211,7 +211,7 @@ void FaceDecision::ensure_pool(fgvk::ExecuteContext& context, std::uint32_t laye
 void FaceDecision::write_requests(Slot& slot, const AtlasFrame& frame,
                                   const DecisionLayout& layout) const {
   auto* out = reinterpret_cast<shared::FaceRequest*>(slot.requests.mapped());
-  for (std::uint32_t layer = 0; layer < layers_; ++layer) {
+  for (std::uint32_t layer = 0; layer < std::min(frame.live_records, layers_); ++layer) {
     // As the rasteriser and the receivers size it (atlas_planner.hpp).
     const std::uint32_t side =
         layer < frame.faces.size() ? face_size(frame, layer) : layout.face_size;
@@ -236,8 +236,9 @@ void FaceDecision::reset(fgvk::ExecuteContext& context, const ShadowStaging& sta
               VK_ACCESS_2_TRANSFER_WRITE_BIT);
     vkCmdFillBuffer(cmd, pool_counters_, 0, VK_WHOLE_SIZE, 0u);
   }
-  copy_shadow_data(cmd, staging, shadow_in_, shadow_data_bytes(layers_));
-  vkCmdFillBuffer(cmd, needed_, 0, VK_WHOLE_SIZE, 0u);
+  copy_shadow_data(cmd, staging, shadow_in_, shadow_data_bytes(live_));
+  vkCmdFillBuffer(cmd, needed_, 0, std::max<VkDeviceSize>(VkDeviceSize{live_} * page_words_ * 4, 4),
+                  0u);
   vkCmdFillBuffer(cmd, stats_, 0, VK_WHOLE_SIZE, 0u);
   if (frame.clear_all || !content_cleared_) {
     vkCmdFillBuffer(cmd, content_, 0, VK_WHOLE_SIZE, 0u);
@@ -300,6 +301,9 @@ void FaceDecision::record(fgvk::ExecuteContext& context, const AtlasFrame& frame
   const auto layers = static_cast<std::uint32_t>(frame.faces.size());
   ensure_buffers(context, layers, layout);
   if (pool_) ensure_pool(context, layers, layout);
+  // The records it decides on: the others read "no owner" (AtlasFrame::live_records), in
+  // the graph's shadow data too, and the pool frees their pages (page_pool.glsl).
+  live_ = std::min(frame.live_records, layers);
   Slot& slot = slots_[context.frame.slot];
   write_requests(slot, frame, layout);
   const VkCommandBuffer cmd = context.cmd;
@@ -308,7 +312,7 @@ void FaceDecision::record(fgvk::ExecuteContext& context, const AtlasFrame& frame
 
   shared::DecisionPush push{};
   push.light_count = frame.header.counts.x;
-  push.layers = layers;
+  push.layers = live_;
   push.receivers = receivers_ ? 1u : 0u;
   push.chunk_faces = layout.chunk_faces;
   push.chunks = layout.chunks();
@@ -340,7 +344,7 @@ void FaceDecision::record(fgvk::ExecuteContext& context, const AtlasFrame& frame
   if (pool_) reclaim(context, slot, push);
   bind(context, decide_, slot);
   vkCmdPushConstants(cmd, decide_.layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
-  vkCmdDispatch(cmd, group_count(std::max(push.copy_vec4s, layers), shared::kDecideGroup), 1, 1);
+  vkCmdDispatch(cmd, group_count(std::max(push.copy_vec4s, live_), shared::kDecideGroup), 1, 1);
   if (pool_) publish(context, slot, push);
   barriers(cmd, {list_, args_, content_, drawn_, stats_}, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
            kStorage, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT,
@@ -372,7 +376,7 @@ void FaceDecision::publish(fgvk::ExecuteContext& context, Slot& slot,
                            const shared::DecisionPush& push) {
   const VkCommandBuffer cmd = context.cmd;
   compute_to_compute(cmd, {tables_, table_sizes_, owners_, ages_, content_, pool_counters_});
-  const glm::uvec2 groups = pool_groups(layers_ * page_slots_);
+  const glm::uvec2 groups = pool_groups(live_ * page_slots_);
   bind(context, publish_, slot);
   vkCmdPushConstants(cmd, publish_.layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
   vkCmdDispatch(cmd, groups.x, groups.y, 1);

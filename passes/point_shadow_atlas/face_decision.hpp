@@ -137,6 +137,7 @@ class FaceDecision {
   ComputePipeline receivers_pipeline_;
   ComputePipeline decide_;
   std::uint32_t layers_ = 0;
+  std::uint32_t live_ = 0;  // this frame's AtlasFrame::live_records (at most layers_)
   std::uint32_t list_capacity_ = 0;
   std::uint32_t args_capacity_ = 0;
   gpu::Buffer shadow_in_;  // device copy of the staging data (read by every tile)

@@ -433,12 +433,14 @@ void PointShadowAtlasPass::upload(fgvk::ExecuteContext& context, const AtlasFram
   for (std::size_t i = 0; i < frame.lights.size() && i < tinted_.size(); ++i) {
     lights[i].params.w = tinted_[i] ? 1.0f : 0.0f;
   }
+  // The records the GPU takes this frame: the others read "no owner" already.
   std::memcpy(out + kShadowFacesOffset, frame.faces.data(),
-              frame.faces.size() * sizeof(ShadowFace));
+              std::size_t{frame.live_records} * sizeof(ShadowFace));
   // The compute rasteriser's decision publishes it (after deciding info.z/w).
   if (params_.rasterizer == ShadowRasterizer::hardware) {
     copy_shadow_data(context.cmd, {slot.staging, lights_high_},
-                     context.bindings.buffer(port::kShadowData)->buffer, bytes);
+                     context.bindings.buffer(port::kShadowData)->buffer,
+                     shadow_data_bytes(frame.live_records));
   }
 
   // Entries grouped by how they are drawn (draw_layered draws each group in one call).

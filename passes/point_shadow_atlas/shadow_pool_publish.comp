@@ -33,6 +33,7 @@ uint content_base(uint layer) {
 
 #include "page_pool.glsl"
 #include "pool_page.glsl"
+#include "../common/page_fallback.glsl"
 
 layout(std430, binding = kPoolPublished) writeonly buffer Published {
   uint published[];
@@ -49,8 +50,10 @@ uint published_entry(uint page) {
 // follow the pool's pool_pages).
 uint fallback_entry(uint record) {
   uvec3 tile = pool_fallback_tile(record, pool_pages, pool_side);
+  uint shift = page_fallback_shift(requests[record].size);
   return ANTUMBRA_PAGE_FALLBACK | (tile.z << ANTUMBRA_FALLBACK_LAYER_SHIFT) |
-         (tile.y << ANTUMBRA_FALLBACK_ROW_SHIFT) | tile.x;
+         (shift << ANTUMBRA_FALLBACK_BLOCK_SHIFT) | (tile.y << ANTUMBRA_FALLBACK_ROW_SHIFT) |
+         tile.x;
 }
 
 void main() {

@@ -49,21 +49,17 @@ layout(binding = kRasterColour, rgba8) uniform writeonly image2DArray colour;
 #endif
 
 #ifdef PAGE_POOL
-// Writes this thread's fallback tile texel when it is the first of its block, from the
-// page texels the block covers. `corner`: the page's first face texel; `offset`: this
-// thread's texel in the page.
+// Writes this thread's fallback tile texel when it is the first of its block (2^shift page
+// texels per side, cut at the page's edge), from the page texels the block covers.
+// `corner`: the page's first face texel; `offset`: this thread's texel in the page.
 void resolve_fallback(RasterFace face, uint size, uvec2 corner, uvec2 offset) {
-  uvec2 page_width;
-  uvec2 block_width;
-  page_fallback_widths(corner, size, page_width, block_width);
-  uvec2 q = offset * block_width / page_width;
-  bvec2 first = bvec2(offset.x == 0u || (offset.x - 1u) * block_width.x / page_width.x < q.x,
-                      offset.y == 0u || (offset.y - 1u) * block_width.y / page_width.y < q.y);
-  if (!all(first)) return;
-  uvec2 end = min(((q + 1u) * page_width + block_width - 1u) / block_width, page_width);
+  uint shift = page_fallback_shift(size);
+  if (any(notEqual(offset & uvec2((1u << shift) - 1u), uvec2(0u)))) return;
+  uvec2 end =
+      min(offset + (1u << shift), min(uvec2(size) - corner, uvec2(1u << kRasterRegionShift)));
   uint table = face.info.x >> ANTUMBRA_FACE_LAYER_SHIFT;
   uvec3 tile = pool_fallback_tile(table / (pool_side * pool_side), pool_fallback, pool_side);
-  uvec2 in_tile = page_fallback_texel(corner + offset, size);
+  uvec2 in_tile = page_fallback_texel(corner + offset, shift);
   ivec3 texel = ivec3(ivec2((tile.xy << ANTUMBRA_PAGE_FALLBACK_SHIFT) + in_tile), int(tile.z));
 #ifdef WRITE_DEPTH
   uint farthest = 0u;  // depths are non-negative floats: their bits order as they do

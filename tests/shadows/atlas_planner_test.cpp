@@ -350,8 +350,8 @@ TEST(AtlasPlanner, APagePoolGivesEveryLightItsSizeAndATable) {
 
 // A frame resets only the records lights owned on the last one (a graph's records past
 // its lights cost nothing): records a light gives up read "no owner" again, with no
-// epoch, and are owned again when lights come back; the same frames on a planner that
-// starts anew give the same records.
+// epoch, as a planner that starts anew gives them, and are owned again when lights come
+// back; the GPU takes the records owned now or on the last frame (every one at first).
 TEST(AtlasPlanner, RecordsLightsGiveUpReadUnownedAndComeBack) {
   auto scene = test::atrium_scene();
   AtlasSettings s = settings(32);
@@ -363,12 +363,14 @@ TEST(AtlasPlanner, RecordsLightsGiveUpReadUnownedAndComeBack) {
   const auto all = planner.plan(scene, camera_of(scene), 1, 0, s);
   const auto owned = static_cast<std::uint32_t>(scene.lights.size()) * 6;
   ASSERT_EQ(all.faces.size(), 6144u);
+  EXPECT_EQ(all.live_records, 6144u) << "a first frame: the GPU takes every record once";
   for (std::uint32_t record = 0; record < owned; ++record) {
     EXPECT_EQ(all.faces[record].info.x, record / 6) << "record " << record;
   }
   auto fewer = scene;
   fewer.lights.resize(4);
   const auto few = planner.plan(fewer, camera_of(fewer), 1, 1, s);
+  EXPECT_EQ(few.live_records, owned) << "the records given up read \"no owner\" once more";
   AtlasPlanner fresh;
   const auto expected = fresh.plan(fewer, camera_of(fewer), 1, 1, s);
   for (std::uint32_t record = 24; record < 6144; ++record) {
@@ -377,7 +379,9 @@ TEST(AtlasPlanner, RecordsLightsGiveUpReadUnownedAndComeBack) {
     EXPECT_EQ(few.faces[record].view_proj, expected.faces[record].view_proj) << "record " << record;
     EXPECT_EQ(few.epochs[record], 0u) << "record " << record;
   }
-  const auto back = planner.plan(scene, camera_of(scene), 1, 2, s);
+  EXPECT_EQ(planner.plan(fewer, camera_of(fewer), 1, 2, s).live_records, 24u)
+      << "then only the four lights' records";
+  const auto back = planner.plan(scene, camera_of(scene), 1, 3, s);
   for (std::uint32_t record = 0; record < owned; ++record) {
     EXPECT_EQ(back.faces[record].info.x, record / 6) << "record " << record;
     EXPECT_NE(back.epochs[record], 0u) << "record " << record;

@@ -112,7 +112,7 @@ class PagePoolGpuTest : public AtlasGpuTest {
         named.insert(((entry >> 10) & 0xFFFFFu) * kPagesPerLayer + ((entry >> 5) & 31u) * kSide +
                      (entry & 31u));
       } else if ((entry & 0x40000000u) != 0u) {
-        named.insert(((entry >> 14) & 0xFFFFu) * kPagesPerLayer +
+        named.insert(((entry >> 17) & 0x1FFFu) * kPagesPerLayer +
                      (((entry >> 7) & 127u) / kTilesAcross) * kSide +
                      (entry & 127u) / kTilesAcross);
       }

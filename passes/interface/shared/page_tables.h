@@ -17,12 +17,12 @@
 // A page that a visible pixel needs but that found no place in the pool reads its face's
 // coarser level instead (docs/technique.md, "Page pool", "A pool too small"): every record
 // owns a fallback tile of ANTUMBRA_PAGE_FALLBACK_SIZE^2 texels in pages reserved at the
-// pool's end, where each page of the face has a block of
-// max(ANTUMBRA_PAGE_FALLBACK_SIZE / pages per side, 1) texels per side (fewer when the page
-// is cut smaller) holding the farthest depth of the page texels it covers. Such an entry
-// is ANTUMBRA_PAGE_FALLBACK | layer << ANTUMBRA_FALLBACK_LAYER_SHIFT | tile row <<
-// ANTUMBRA_FALLBACK_ROW_SHIFT | tile column, in tiles of the layer; page_fallback.glsl
-// maps a face texel into it.
+// pool's end, where each page of the face has a block of a power of two texels per side,
+// up to ANTUMBRA_PAGE_FALLBACK_SIZE / pages per side, each holding the farthest depth of
+// the 2^shift x 2^shift page texels it covers. Such an entry is ANTUMBRA_PAGE_FALLBACK |
+// layer << ANTUMBRA_FALLBACK_LAYER_SHIFT | shift << ANTUMBRA_FALLBACK_BLOCK_SHIFT | tile
+// row << ANTUMBRA_FALLBACK_ROW_SHIFT | tile column, in tiles of the layer;
+// page_fallback.glsl maps a face texel into it.
 #ifndef ANTUMBRA_PAGE_TABLES_H
 #define ANTUMBRA_PAGE_TABLES_H
 
@@ -41,8 +41,10 @@
 #define ANTUMBRA_PAGE_FALLBACK_SHIFT 5u
 #define ANTUMBRA_FALLBACK_COORD_BITS 7u  // tiles per side of a layer: up to 4096 / 32
 #define ANTUMBRA_FALLBACK_ROW_SHIFT 7u
-#define ANTUMBRA_FALLBACK_LAYER_SHIFT 14u
-#define ANTUMBRA_FALLBACK_LAYER_BITS 16u  // bits 14..29
+#define ANTUMBRA_FALLBACK_BLOCK_SHIFT 14u
+#define ANTUMBRA_FALLBACK_BLOCK_BITS 3u  // bits 14..16: page texels per tile texel, log2
+#define ANTUMBRA_FALLBACK_LAYER_SHIFT 17u
+#define ANTUMBRA_FALLBACK_LAYER_BITS 13u  // bits 17..29: 8192 layers (SHD006: 2048)
 // Fallback tiles per pool page.
 #define ANTUMBRA_FALLBACK_TILES_PER_PAGE 16u
 
