@@ -66,7 +66,7 @@ void main() {
       uint entry = shadow_page_entry(table, texels, t >> int(ANTUMBRA_PAGE_SHIFT));
       at = shadow_page_at(entry, t);
       placed = at.z >= 0;
-      fallback = placed && (entry & ANTUMBRA_PAGE_PLACED) == 0u;
+      fallback = (entry & ANTUMBRA_PAGE_FALLBACK) != 0u;
     }
     float depth = placed ? texelFetch(atlas, at, 0).r : 1.0;
 #else
