@@ -2,8 +2,7 @@
 // pool", "A pool too small"): where a face texel of a page without a place in the pool is
 // read from, shared by the resolve that writes the tile (shadow_raster_resolve.comp), the
 // publish that names it (shadow_pool_publish.comp) and the lookups that read it
-// (shadow_sampling.glsl's shadow_page_at decodes both kinds of entry alike). Each page of
-// the face has a block of the tile,
+// (shadow_sampling.glsl, the atlas view). Each page of the face has a block of the tile,
 // 2^-shift of the page's texels per side, so a tile texel never mixes texels of two
 // pages (the resolve writes a page's block from that page's own depth alone) and a lookup
 // finds its tile texel with shifts alone: no division on the lookups' path.
@@ -39,6 +38,18 @@ uvec2 page_fallback_texel(uvec2 t, uint shift) {
   uvec2 page = t >> ANTUMBRA_PAGE_SHIFT;
   uvec2 offset = t & uvec2((1u << ANTUMBRA_PAGE_SHIFT) - 1u);
   return (page << (ANTUMBRA_PAGE_SHIFT - shift)) + (offset >> shift);
+}
+
+// The atlas texel of face texel `t` through fallback entry `entry` (page_tables.h).
+ivec3 page_fallback_at(uint entry, uvec2 t) {
+  const uint coord_mask = (1u << ANTUMBRA_FALLBACK_COORD_BITS) - 1u;
+  uvec2 tile = uvec2(entry, entry >> ANTUMBRA_FALLBACK_ROW_SHIFT) & uvec2(coord_mask);
+  uint shift =
+      (entry >> ANTUMBRA_FALLBACK_BLOCK_SHIFT) & ((1u << ANTUMBRA_FALLBACK_BLOCK_BITS) - 1u);
+  uint layer =
+      (entry >> ANTUMBRA_FALLBACK_LAYER_SHIFT) & ((1u << ANTUMBRA_FALLBACK_LAYER_BITS) - 1u);
+  uvec2 texel = (tile << ANTUMBRA_PAGE_FALLBACK_SHIFT) + page_fallback_texel(t, shift);
+  return ivec3(ivec2(texel), int(layer));
 }
 
 #endif

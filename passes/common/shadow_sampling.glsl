@@ -74,25 +74,20 @@
 // face's page: no guard texels are needed. A needed page the pool had no place for reads
 // its face's fallback tile (page_fallback.glsl): a coarser level, never another face's.
 #include "../interface/shared/page_tables.h"
+#include "page_fallback.glsl"
 
 // The atlas texel of texel `t` of a page whose table entry is `entry` (`t` may be any face
 // texel: only its place in the page counts, and for a fallback entry the page's place in
-// the face); z < 0 when the page has no texels. Both kinds of entry decode alike
-// (page_tables.h): a branch to a fallback path cost the tiled lighting 3-5 % on a GPU
-// even where no entry took it.
+// the face); z < 0 when the page has neither a place nor a fallback.
 ivec3 shadow_page_at(uint entry, ivec2 t) {
-  if (entry == 0u) return ivec3(0, 0, -1);
+  if ((entry & ANTUMBRA_PAGE_PLACED) == 0u) {
+    return entry == 0u ? ivec3(0, 0, -1) : page_fallback_at(entry, uvec2(t));
+  }
   const uint coord_mask = (1u << ANTUMBRA_PAGE_COORD_BITS) - 1u;
-  uvec2 corner = (uvec2(entry, entry >> ANTUMBRA_PAGE_ROW_SHIFT) & uvec2(coord_mask))
-                 << ANTUMBRA_PAGE_UNIT_SHIFT;
-  uint shift = (entry >> ANTUMBRA_PAGE_BLOCK_SHIFT) & ((1u << ANTUMBRA_PAGE_BLOCK_BITS) - 1u);
-  uint layer = (entry >> ANTUMBRA_PAGE_LAYER_SHIFT) & ((1u << ANTUMBRA_PAGE_LAYER_BITS) - 1u);
-  uint block =
-      ((entry >> ANTUMBRA_PAGE_FALLBACK_BIT) & 1u) * ((1u << ANTUMBRA_PAGE_SHIFT) >> shift);
-  uvec2 face = uvec2(t);
-  uvec2 texel = corner + (face >> ANTUMBRA_PAGE_SHIFT) * block +
-                ((face & uvec2((1u << ANTUMBRA_PAGE_SHIFT) - 1u)) >> shift);
-  return ivec3(ivec2(texel), int(layer));
+  ivec2 page = ivec2(uvec2(entry, entry >> ANTUMBRA_PAGE_ROW_SHIFT) & uvec2(coord_mask));
+  int layer = int((entry >> ANTUMBRA_PAGE_LAYER_SHIFT) & ((1u << ANTUMBRA_PAGE_LAYER_BITS) - 1u));
+  const int shift = int(ANTUMBRA_PAGE_SHIFT);
+  return ivec3((page << shift) + (t & ((1 << shift) - 1)), layer);
 }
 
 // The table entry of page `page` of a `texels`-wide face whose table starts at `table`.

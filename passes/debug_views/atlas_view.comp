@@ -66,7 +66,7 @@ void main() {
       uint entry = shadow_page_entry(table, texels, t >> int(ANTUMBRA_PAGE_SHIFT));
       at = shadow_page_at(entry, t);
       placed = at.z >= 0;
-      fallback = (entry & ANTUMBRA_PAGE_FALLBACK) != 0u;
+      fallback = placed && (entry & ANTUMBRA_PAGE_PLACED) == 0u;
     }
     float depth = placed ? texelFetch(atlas, at, 0).r : 1.0;
 #else

@@ -39,13 +39,11 @@ layout(std430, binding = kPoolPublished) writeonly buffer Published {
   uint published[];
 };
 
-// Pool page `page` as page_tables.h publishes it: its corner in units of
-// 2^ANTUMBRA_PAGE_UNIT_SHIFT texels, shift 0.
+// Pool page `page` as page_tables.h publishes it.
 uint published_entry(uint page) {
   uvec3 place = pool_page_place(page, pool_side);
-  const uint units = ANTUMBRA_PAGE_SHIFT - ANTUMBRA_PAGE_UNIT_SHIFT;
   return ANTUMBRA_PAGE_PLACED | (place.z << ANTUMBRA_PAGE_LAYER_SHIFT) |
-         ((place.y << units) << ANTUMBRA_PAGE_ROW_SHIFT) | (place.x << units);
+         (place.y << ANTUMBRA_PAGE_ROW_SHIFT) | place.x;
 }
 
 // Record `record`'s fallback tile as page_tables.h publishes it (the reserved pages
@@ -53,8 +51,9 @@ uint published_entry(uint page) {
 uint fallback_entry(uint record) {
   uvec3 tile = pool_fallback_tile(record, pool_pages, pool_side);
   uint shift = page_fallback_shift(requests[record].size);
-  return ANTUMBRA_PAGE_PLACED | ANTUMBRA_PAGE_FALLBACK | (tile.z << ANTUMBRA_PAGE_LAYER_SHIFT) |
-         (shift << ANTUMBRA_PAGE_BLOCK_SHIFT) | (tile.y << ANTUMBRA_PAGE_ROW_SHIFT) | tile.x;
+  return ANTUMBRA_PAGE_FALLBACK | (tile.z << ANTUMBRA_FALLBACK_LAYER_SHIFT) |
+         (shift << ANTUMBRA_FALLBACK_BLOCK_SHIFT) | (tile.y << ANTUMBRA_FALLBACK_ROW_SHIFT) |
+         tile.x;
 }
 
 void main() {

@@ -109,10 +109,14 @@ class PagePoolGpuTest : public AtlasGpuTest {
     constexpr std::uint32_t kTilesAcross = 128 / 32;
     std::set<std::uint32_t> named;  // layer x kPagesPerLayer + row x kSide + column
     for (const std::uint32_t entry : read_tables()) {
-      // A pool page's corner or a fallback tile's, in units of 32 texels: its page.
-      if ((entry & 0x80000000u) == 0u) continue;
-      named.insert(((entry >> 17) & 0x1FFFu) * kPagesPerLayer +
-                   (((entry >> 7) & 127u) / kTilesAcross) * kSide + (entry & 127u) / kTilesAcross);
+      if ((entry & 0x80000000u) != 0u) {
+        named.insert(((entry >> 10) & 0xFFFFFu) * kPagesPerLayer + ((entry >> 5) & 31u) * kSide +
+                     (entry & 31u));
+      } else if ((entry & 0x40000000u) != 0u) {
+        named.insert(((entry >> 17) & 0x1FFFu) * kPagesPerLayer +
+                     (((entry >> 7) & 127u) / kTilesAcross) * kSide +
+                     (entry & 127u) / kTilesAcross);
+      }
     }
     std::vector<std::uint32_t> pages;
     for (std::uint32_t page = 0; page < layers * kPagesPerLayer; ++page) {
@@ -287,10 +291,9 @@ TEST_F(PagePoolGpuTest, ASmallPoolFallsBackToItsFacesCoarserLevel) {
   EXPECT_EQ(small.taken, small.pages);
   EXPECT_EQ(small.missing, full.taken - small.pages);
   const auto [darker, lighter] = darker_lighter(luminance(read_hdr()), lit);
-  std::printf(
-      "small pool: %zu pixels lighter than every page drawn with the fallback, %zu "
-      "without; %zu darker\n",
-      lighter, without_lighter, darker);
+  std::printf("small pool: %zu pixels lighter than every page drawn with the fallback, %zu "
+              "without; %zu darker\n",
+              lighter, without_lighter, darker);
   EXPECT_EQ(darker, 0u) << "the coarser level never shadows more than the face";
   EXPECT_LT(lighter * 2, without_lighter)
       << "the fallback keeps most of the missing pages' shadows (" << lighter << " lighter "
