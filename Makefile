@@ -133,6 +133,8 @@ docs-tables: configure
 
 bench: build
 	$(BUILD)/bench/antumbra_bench_graph
+	$(BUILD)/bench/antumbra_bench_layering
+	$(BUILD)/bench/antumbra_bench_atlas_planner
 
 clean:
 	rm -rf $(BUILD) $(ASAN_BUILD) $(FUZZ_BUILD) out
