@@ -291,9 +291,10 @@ TEST_F(PagePoolGpuTest, ASmallPoolFallsBackToItsFacesCoarserLevel) {
   EXPECT_EQ(small.taken, small.pages);
   EXPECT_EQ(small.missing, full.taken - small.pages);
   const auto [darker, lighter] = darker_lighter(luminance(read_hdr()), lit);
-  std::printf("small pool: %zu pixels lighter than every page drawn with the fallback, %zu "
-              "without; %zu darker\n",
-              lighter, without_lighter, darker);
+  std::printf(
+      "small pool: %zu pixels lighter than every page drawn with the fallback, %zu "
+      "without; %zu darker\n",
+      lighter, without_lighter, darker);
   EXPECT_EQ(darker, 0u) << "the coarser level never shadows more than the face";
   EXPECT_LT(lighter * 2, without_lighter)
       << "the fallback keeps most of the missing pages' shadows (" << lighter << " lighter "
