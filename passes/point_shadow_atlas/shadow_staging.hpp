@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 
 #include <vulkan/vulkan.h>
 
@@ -20,14 +21,16 @@ struct ShadowStaging {
 };
 
 // The header, `staging.lights` light entries and the face records up to `bytes`: a scene of
-// 16 lights does not move 4096 entries a frame.
+// 16 lights does not move 4096 entries a frame. No face record region when `bytes` holds
+// none (no record is live: a scene without lights; Vulkan refuses an empty region).
 inline void copy_shadow_data(VkCommandBuffer cmd, const ShadowStaging& staging, VkBuffer dst,
                              std::size_t bytes) {
   const std::array<VkBufferCopy, 2> regions{
       VkBufferCopy{0, 0, shadow_lights_bytes(staging.lights)},
-      VkBufferCopy{kShadowFacesOffset, kShadowFacesOffset, bytes - kShadowFacesOffset}};
-  vkCmdCopyBuffer(cmd, staging.buffer, dst, static_cast<std::uint32_t>(regions.size()),
-                  regions.data());
+      VkBufferCopy{kShadowFacesOffset, kShadowFacesOffset,
+                   bytes > kShadowFacesOffset ? bytes - kShadowFacesOffset : 0}};
+  const std::uint32_t count = regions[1].size > 0 ? 2u : 1u;
+  vkCmdCopyBuffer(cmd, staging.buffer, dst, count, regions.data());
 }
 
 }  // namespace antumbra::passes
