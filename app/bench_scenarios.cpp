@@ -416,8 +416,7 @@ void fit_page_pool(fg::GraphDesc& graph, std::uint32_t pool_layers) {
   if (pool_layers == 0) return;
   std::uint64_t records = 0;
   std::uint32_t face = 0;
-  for (auto& r : graph.resources) {
-    if (r.name == "atlas" || r.name == "shadowColour") r.layers = pool_layers;
+  for (const auto& r : graph.resources) {
     if (r.name == "atlas") face = r.size.width;
     // fit_shadow_resources' layout: header, 4096 lights, 80-byte face records.
     if (r.name == "shadowData") records = (r.buffer_size - 16 - std::uint64_t{64} * 4096) / 80;
