@@ -190,7 +190,7 @@ void add_many_table(std::vector<Scenario>& out, double scale, const DistrictRows
 // Page pool (docs/technique.md, "Page pool"): the many table's rows and the atrium's 16
 // moving lights with the atlas a pool of pages that visible pixels need, far fewer layers
 // than the squares take: 32 of 1024^2 for the atrium (128 MiB of depth), 512 of 512^2
-// for the district and the city (512 MiB).
+// for the district and the city (512 MiB); the atrium also with the min-filtered maps.
 void add_pages_table(std::vector<Scenario>& out, double scale, const DistrictRows& rows) {
   struct Row {
     const char* scene;
@@ -202,13 +202,22 @@ void add_pages_table(std::vector<Scenario>& out, double scale, const DistrictRow
                            {kDistrictScene, kDistrictLights, kDistrictMovingLights, 512},
                            {kDistrictScene, kDistrictLights, kDistrictLights, 512},
                            {kCityScene, kCityLights, kCityLights / 4, 512}};
-  for (const Row& row : kRows) {
+  // The atrium also with the seed's min-filtered maps, filtered through the tables.
+  struct Variant {
+    const Row* row;
+    const char* technique;
+  };
+  std::vector<Variant> variants;
+  for (const Row& row : kRows) variants.push_back({&row, "ssss"});
+  variants.insert(variants.begin() + 1, {&kRows[0], "ssss-min"});
+  for (const auto& [row_of, name] : variants) {
+    const Row& row = *row_of;
     const bool many = row.lights >= kDistrictLights;
     const int lights = many ? row.lights / kDistrictLights * rows.lights : row.lights;
     const int moving =
         many ? std::min(row.moving * rows.lights / kDistrictLights, lights) : row.moving;
     Scenario s =
-        make("pages", technique("ssss"), 11, 1080, lights, many ? scale * rows.scale : scale);
+        make("pages", technique(name), 11, 1080, lights, many ? scale * rows.scale : scale);
     s.name += "-";
     s.name += std::to_string(moving);
     s.name += "m";
@@ -429,7 +438,9 @@ void fit_page_pool(fg::GraphDesc& graph, std::uint32_t pool_layers) {
   const std::uint64_t fallback = (records + 15) / 16;
   const auto extra = static_cast<std::uint32_t>((fallback + per_layer - 1) / per_layer);
   for (auto& r : graph.resources) {
-    if (r.name == "atlas" || r.name == "shadowColour") r.layers = pool_layers + extra;
+    // The min-filtered map keeps the pool's layout (shadow-min-filter over a paged atlas).
+    if (r.name == "atlas" || r.name == "shadowColour" || r.name == "minDepth")
+      r.layers = pool_layers + extra;
   }
   fg::ResourceDesc tables;
   tables.name = "pageTables";

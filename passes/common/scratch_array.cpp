@@ -64,12 +64,16 @@ FaceGroups face_groups(VkExtent2D extent, std::uint32_t group, std::uint32_t gro
   return groups;
 }
 
-gpu::DescriptorSetLayoutBuilder face_step_bindings() {
+gpu::DescriptorSetLayoutBuilder face_step_bindings(bool paged) {
   constexpr VkShaderStageFlags kCompute = VK_SHADER_STAGE_COMPUTE_BIT;
   gpu::DescriptorSetLayoutBuilder builder;
   builder.storage_buffer(kFaceStepShadowData, kCompute)
       .combined_image_sampler(kFaceStepInput, kCompute)
       .storage_image(kFaceStepOutput, kCompute);
+  if (paged) {
+    builder.storage_buffer(kFaceStepPageTables, kCompute)
+        .storage_buffer(kFaceStepRecords, kCompute);
+  }
   return builder;
 }
 
@@ -78,15 +82,23 @@ void dispatch_face_step(fgvk::ExecuteContext& context, const ComputePipeline& pi
                         const FaceGroups& groups, std::uint32_t layers) {
   const VkCommandBuffer cmd = context.cmd;
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.pipeline);
-  gpu::PushDescriptors()
-      .storage_buffer(kFaceStepShadowData, step.shadow_data)
+  gpu::PushDescriptors descriptors;
+  descriptors.storage_buffer(kFaceStepShadowData, step.shadow_data)
       .combined_image_sampler(kFaceStepInput, step.input, context.samplers.nearest_clamp,
                               step.input_layout)
-      .storage_image(kFaceStepOutput, step.output, step.output_layout)
-      .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.layout);
+      .storage_image(kFaceStepOutput, step.output, step.output_layout);
+  if (step.records != VK_NULL_HANDLE) {
+    descriptors.storage_buffer(kFaceStepPageTables, step.page_tables)
+        .storage_buffer(kFaceStepRecords, step.records);
+  }
+  descriptors.push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.layout);
   vkCmdPushConstants(cmd, pipeline.layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, constant_bytes,
                      constants);
-  vkCmdDispatch(cmd, groups.x, groups.y, layers);
+  if (step.records != VK_NULL_HANDLE) {
+    vkCmdDispatchIndirect(cmd, step.records, 0);
+  } else {
+    vkCmdDispatch(cmd, groups.x, groups.y, layers);
+  }
 }
 
 }  // namespace antumbra::passes

@@ -45,11 +45,15 @@ FaceGroups face_groups(VkExtent2D extent, std::uint32_t group, std::uint32_t gro
 // One dispatch of a per-face derived map (both steps of shadow-min-filter and
 // shadow-moments): the shadow data at binding 0, `input` sampled (nearest) at 1, `output`
 // as a storage image at 2 (their interface headers use these numbers), one push-constant
-// block, `groups` per layer for `layers` layers.
+// block, `groups` per layer for `layers` layers; over a paged atlas, its page tables at 3
+// (derived_pages.glsl) and a list of the records to do at 4, whose first three words are
+// the dispatch's arguments (an indirect dispatch: `groups` and `layers` are not used).
 inline constexpr std::uint32_t kFaceStepShadowData = 0;
 inline constexpr std::uint32_t kFaceStepInput = 1;
 inline constexpr std::uint32_t kFaceStepOutput = 2;
-gpu::DescriptorSetLayoutBuilder face_step_bindings();
+inline constexpr std::uint32_t kFaceStepPageTables = 3;
+inline constexpr std::uint32_t kFaceStepRecords = 4;
+gpu::DescriptorSetLayoutBuilder face_step_bindings(bool paged = false);
 
 struct FaceStep {
   VkBuffer shadow_data = VK_NULL_HANDLE;
@@ -57,6 +61,8 @@ struct FaceStep {
   VkImageLayout input_layout = VK_IMAGE_LAYOUT_UNDEFINED;
   VkImageView output = VK_NULL_HANDLE;
   VkImageLayout output_layout = VK_IMAGE_LAYOUT_UNDEFINED;
+  VkBuffer page_tables = VK_NULL_HANDLE;  // paged: the tables
+  VkBuffer records = VK_NULL_HANDLE;      // paged: the listed records and the arguments
 };
 void dispatch_face_step(fgvk::ExecuteContext& context, const ComputePipeline& pipeline,
                         const FaceStep& step, const void* constants, std::uint32_t constant_bytes,

@@ -15,6 +15,22 @@ uint pack_colour(vec4 c) {
   return (b.r << 24u) | (b.g << 16u) | (b.b << 8u) | b.a;
 }
 
+#if defined(MIN_FILTER) && defined(SHADOW_PAGE_TABLES)
+// A paged face's min-filtered depth at lookup `c`: the filtered map keeps the pool's layout
+// at 1/factor (derived_pages.glsl), so the entry of the lookup's page names its texel there
+// too. A page read from its face's fallback tile has no filtered texels: the tile's own
+// depth (the farthest of the texels it stands for) stands in.
+float penumbra_page_min_depth(ShadowCoord c) {
+  ivec2 t = shadow_page_texel_of(c.pages, c.uv);
+  uint entry = shadow_page_entry_of(c.pages, t >> int(ANTUMBRA_PAGE_SHIFT));
+  ivec3 at = shadow_page_at(entry, t);
+  if (at.z < 0) return 1.0;
+  if ((entry & ANTUMBRA_PAGE_PLACED) == 0u) return texelFetch(atlas, at, 0).r;
+  int factor = textureSize(atlas, 0).x / textureSize(min_depth, 0).x;
+  return texelFetch(min_depth, ivec3(at.xy / factor, at.z), 0).r;
+}
+#endif
+
 // Finds the blockers between lookup `c` and the light: false when there is none, else
 // their mean linear depth in `z_blocker` (PCSS step 1, or the min-filtered map's stand-in).
 bool penumbra_blocker_depth(ShadowLight sl, ShadowCoord c, vec2 at, float light_size,
@@ -23,7 +39,12 @@ bool penumbra_blocker_depth(ShadowLight sl, ShadowCoord c, vec2 at, float light_
   // The min-filtered map holds the nearest depth around the lookup: a blocker exists
   // when it is nearer than the receiver, and its depth stands in for the search's
   // average (seed 000: cheaper, slightly wider penumbrae near contact edges).
+#ifdef SHADOW_PAGE_TABLES
+  float nearest = c.pages.table >= 0 ? penumbra_page_min_depth(c)
+                                     : textureLod(min_depth, vec3(at, c.layer), 0.0).r;
+#else
   float nearest = textureLod(min_depth, vec3(at, c.layer), 0.0).r;
+#endif
   int blockers = nearest < c.depth ? 1 : 0;
   float blocker_sum = blockers > 0 ? shadow_linearise_light(sl, nearest) : 0.0;
 #else

@@ -31,9 +31,69 @@ float nearest_under(ivec2 p, int layer) {
   return nearest;
 }
 
+#ifdef PAGED
+// The nearest of the `extent` atlas texels from `at` (inside one page): quads gathered when
+// the extent is even, single texels at a face's odd edge.
+float nearest_in(ivec3 at, ivec2 extent) {
+  float nearest = 1.0;
+  if (((extent.x | extent.y) & 1) != 0) {
+    for (int y = 0; y < extent.y; ++y) {
+      for (int x = 0; x < extent.x; ++x)
+        nearest = min(nearest, texelFetch(atlas, at + ivec3(x, y, 0), 0).r);
+    }
+    return nearest;
+  }
+  vec2 texel = 1.0 / vec2(textureSize(atlas, 0).xy);
+  for (int y = 0; y < extent.y; y += 2) {
+    for (int x = 0; x < extent.x; x += 2) {
+      vec2 uv = vec2(at.xy + ivec2(x, y) + 1) * texel;
+      vec4 g = textureGather(atlas, vec3(uv, float(at.z)), 0);
+      nearest = min(nearest, min(min(g.x, g.y), min(g.z, g.w)));
+    }
+  }
+  return nearest;
+}
+
+// Every placed page of paged face `f`: each output texel of the page's block the nearest
+// of its factor x factor atlas texels (cut at the face's edge).
+void downsample_pages(DerivedPaged f) {
+  const int page = 1 << int(ANTUMBRA_PAGE_SHIFT);
+  int per_page = min_per_page();
+  int used = (min(f.texels, page) + int(factor) - 1) / int(factor);
+  uint pages = uint(f.pages_x * f.pages_x);
+  for (uint k = min_first_page(); k < pages; k += min_page_stride()) {
+    ivec2 at_page = ivec2(int(k) % f.pages_x, int(k) / f.pages_x);
+    ivec3 place = derived_page_place(f, at_page);
+    if (place.z < 0) continue;  // uniform: the whole workgroup reads one entry
+    for (int y = int(gl_LocalInvocationID.y); y < used; y += GROUP) {
+      for (int x = int(gl_LocalInvocationID.x); x < used; x += GROUP) {
+        ivec2 p = ivec2(x, y);
+        ivec2 face_texel = at_page * page + p * int(factor);
+        if (any(greaterThanEqual(face_texel, ivec2(f.texels)))) continue;  // the last page's cut
+        ivec2 extent = min(ivec2(int(factor)), ivec2(f.texels) - face_texel);
+        float nearest = nearest_in(ivec3(place.xy * page + p * int(factor), place.z), extent);
+        imageStore(coarse, ivec3(place.xy * per_page + p, place.z), vec4(nearest));
+      }
+    }
+  }
+}
+#endif
+
 void main() {
+#ifdef PAGED
+  uint record = min_record();  // listed: needed
+#else
   uint record = gl_WorkGroupID.z;
-  if (!derived_layer_needed(record, force_all != 0u)) return;
+  if (!derived_layer_needed(record, force_all != 0u))
+    return;  // uniform per workgroup: before any barrier
+#endif
+#ifdef PAGED
+  DerivedPaged paged = derived_paged(record);
+  if (paged.table >= 0) {
+    downsample_pages(paged);
+    return;
+  }
+#endif
   ivec2 size = derived_face_extent(record, imageSize(coarse).xy);
   ivec2 corner = derived_face_origin(record, imageSize(coarse).xy);
   int layer = derived_face_layer(record);

@@ -44,10 +44,75 @@ void filter_block(ivec2 block, int layer, ivec2 corner, ivec2 size, int r) {
   barrier();  // the next block overwrites the tile
 }
 
+#ifdef PAGED
+// filter_block for a paged face `f` (`extent` output texels per side): the tile reads each
+// texel through its own page's entry (texels of pages without a place read as far), and the
+// block's texels inside page `at_page` (placed at `place`) are written.
+void filter_paged_block(DerivedPaged f, ivec2 block, ivec2 at_page, ivec3 place, int extent,
+                        int r) {
+  int per_page = min_per_page();
+  int span_r = GROUP + 2 * r;
+  ivec2 origin = block - r;
+  ivec2 local = ivec2(gl_LocalInvocationID.xy);
+  for (int y = local.y; y < span_r; y += GROUP) {
+    for (int x = local.x; x < span_r; x += GROUP) {
+      ivec2 q = clamp(origin + ivec2(x, y), ivec2(0), ivec2(extent - 1));
+      ivec3 q_place = derived_page_place(f, q / per_page);
+      tile[y][x] =
+          q_place.z < 0 ? 1.0 : texelFetch(coarse, derived_page_texel(q_place, q, per_page), 0).r;
+    }
+  }
+  barrier();
+  for (int y = local.y; y < span_r; y += GROUP) {
+    float m = 1.0;
+    for (int dx = 0; dx <= 2 * r; ++dx) m = min(m, tile[y][local.x + dx]);
+    rows[y][local.x] = m;
+  }
+  barrier();
+  ivec2 p = block + local;
+  if (all(lessThan(p, ivec2(extent))) && all(equal(p / per_page, at_page))) {
+    float m = 1.0;
+    for (int dy = 0; dy <= 2 * r; ++dy) m = min(m, rows[local.y + dy][local.x]);
+    imageStore(min_out, derived_page_texel(place, p, per_page), vec4(m));
+  }
+  barrier();  // the next block overwrites the tile
+}
+
+// Every placed page of paged face `f`, in blocks of GROUP^2 output texels.
+void filter_pages(DerivedPaged f, int r) {
+  const int page = 1 << int(ANTUMBRA_PAGE_SHIFT);
+  int per_page = min_per_page();
+  int used = (min(f.texels, page) + int(factor) - 1) / int(factor);
+  int extent = (f.texels + int(factor) - 1) / int(factor);
+  uint pages = uint(f.pages_x * f.pages_x);
+  for (uint k = min_first_page(); k < pages; k += min_page_stride()) {
+    ivec2 at_page = ivec2(int(k) % f.pages_x, int(k) / f.pages_x);
+    ivec3 place = derived_page_place(f, at_page);
+    if (place.z < 0) continue;  // uniform: before any barrier
+    for (int y = 0; y < used; y += GROUP) {
+      for (int x = 0; x < used; x += GROUP) {
+        filter_paged_block(f, at_page * per_page + ivec2(x, y), at_page, place, extent, r);
+      }
+    }
+  }
+}
+#endif
+
 void main() {
+#ifdef PAGED
+  uint record = min_record();  // listed: needed
+#else
   uint record = gl_WorkGroupID.z;
   if (!derived_layer_needed(record, force_all != 0u))
     return;  // uniform per workgroup: before any barrier
+#endif
+#ifdef PAGED
+  DerivedPaged paged = derived_paged(record);
+  if (paged.table >= 0) {
+    filter_pages(paged, min(int(radius), MAX_RADIUS));
+    return;
+  }
+#endif
   ivec2 size = derived_face_extent(record, textureSize(coarse, 0).xy);
   ivec2 corner = derived_face_origin(record, textureSize(coarse, 0).xy);
   int layer = derived_face_layer(record);

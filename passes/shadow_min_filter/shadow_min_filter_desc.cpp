@@ -5,8 +5,32 @@
 #include "common/ports.hpp"
 #include "shadow_min_filter_pass.hpp"
 #include "shared/limits.h"
+#include "shared/page_tables.h"
 
 namespace antumbra::passes {
+namespace {
+
+// Over a paged atlas the map keeps the pool's layout (derived_pages.glsl): an output texel
+// must cover atlas texels of one page, so the factor divides the page size.
+void check(const fg::PlanPass& pass, const ShadowMinFilterParams& /*params*/, const fg::Plan& plan,
+           const fg::GraphDesc& graph, base::Diagnostics& diagnostics) {
+  const auto* atlas = bound_resource(pass, plan, port::kAtlas);
+  const auto* out = bound_resource(pass, plan, port::kMinDepth);
+  if (atlas == nullptr || out == nullptr || bound_index(pass, port::kPageTables) < 0) return;
+  if (out->extent.width == 0 || atlas->extent.width % out->extent.width != 0) return;  // FG092
+  const std::uint32_t factor = atlas->extent.width / out->extent.width;
+  constexpr std::uint32_t kPage = 1u << ANTUMBRA_PAGE_SHIFT;
+  if (kPage % factor == 0) return;
+  add_pass_error(graph, pass, codes::graph::kPortContract,
+                 "'" + out->name + "' is " + std::to_string(out->extent.width) + " wide, " +
+                     std::to_string(factor) + " atlas texels per texel; over a paged atlas " +
+                     "that must divide its " + std::to_string(kPage) +
+                     "-texel pages (a power of two up to " + std::to_string(kPage) + ")",
+                 "/out/minDepth", diagnostics);
+}
+
+}  // namespace
+
 fg::PassDesc ShadowMinFilterPass::describe() {
   using fg::Access;
   using fg::Format;
@@ -23,6 +47,7 @@ fg::PassDesc ShadowMinFilterPass::describe() {
                           "Shadow faces of every light (point-shadow-atlas)."),
       compute_buffer_input(port::kShadowData,
                            "Which faces are owned and which were drawn this frame."),
+      page_tables_input(),
       {.name = port::kMinDepth,
        .direction = PortDirection::output,
        .access = Access::storage_write,
@@ -38,6 +63,7 @@ fg::PassDesc ShadowMinFilterPass::describe() {
   };
   const auto& table = param_table();
   desc.params = table.descs();
+  desc.check = table.check(&check);
   return desc;
 }
 

@@ -5,7 +5,9 @@
 // shadow_min_filter_desc.cpp, shaders beside.
 //
 // Faces the atlas serves from its static cache keep their filtered result: only faces
-// drawn this frame (ShadowFace.info.w) are refiltered, except on the first frame.
+// drawn this frame (ShadowFace.info.w) are refiltered, except on the first frame. Over a
+// paged atlas (pageTables bound) the map keeps the pool's layout and only the pages with
+// a place are filtered, each reading its neighbours through the face's table.
 
 #include <string>
 #include <vector>
@@ -15,6 +17,7 @@
 #include "antumbra/gpu/resources.hpp"
 #include "common/pass_support.hpp"
 #include "common/scratch_array.hpp"
+#include "shadow_min_filter_interface.h"
 
 namespace antumbra::passes {
 
@@ -38,6 +41,14 @@ class ShadowMinFilterPass final : public fgvk::Pass {
   // barriers are the pass's own (graph resources get theirs from the plan).
   ScratchArray coarse_;
   VkImage filtered_for_ = VK_NULL_HANDLE;  // output image all faces were filtered into
+  bool page_tables_ = false;               // the atlas is paged
+  // Paged: lists the records to filter and resets the steps' indirect arguments.
+  VkBuffer list_records(fgvk::ExecuteContext& context, VkBuffer shadow_data, std::uint32_t records,
+                        const FaceGroups& groups, const shared::ShadowMinFilterPush& constants);
+
+  gpu::Buffer records_;  // min_list.comp's list, after the steps' arguments
+  std::uint32_t records_capacity_ = 0;
+  ComputePipeline list_;
   ComputePipeline downsample_;
   ComputePipeline separable_;
   std::vector<std::string> shader_files_;

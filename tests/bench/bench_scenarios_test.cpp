@@ -245,11 +245,14 @@ TEST(BenchScenarios, MovingScenesHaveTheirLightsAfterTheLightCount) {
 }
 
 }  // namespace
-// The pages table: the many table's rows and the atrium's moving lights, each drawn into a
-// page pool of a fixed number of layers.
+// The pages table: the many table's rows and the atrium's moving lights (also with the
+// min-filtered maps), each drawn into a page pool of a fixed number of layers.
 TEST(BenchScenarios, PagesTableDrawsIntoAFixedPool) {
   const auto pages = select_scenarios(builtin_scenarios(1.0), {"pages/"});
-  ASSERT_EQ(pages.size(), 4u);
+  ASSERT_EQ(pages.size(), 5u);
+  const auto& min = named(pages, "pages/ssss-min-11/1080p/16l-16m/compute/screen/vis/pool32");
+  EXPECT_EQ(min.graph, "layered-ssss-min.json");
+  EXPECT_EQ(min.pool_layers, 32u);
   const auto& atrium = named(pages, "pages/ssss-11/1080p/16l-16m/compute/screen/vis/pool32");
   const auto& city = named(pages, "pages/ssss-11/1080p/4096l-1024m/compute/screen/vis/pool512");
   EXPECT_EQ(atrium.pool_layers, 32u);
@@ -269,13 +272,13 @@ TEST(BenchScenarios, PagesTableDrawsIntoAFixedPool) {
   }
 }
 
-// A pool row's graph: the atlas and its colour map pool_layers deep plus the layers its
-// records' fallback tiles take, a pageTables buffer with a table for every face record
+// A pool row's graph: the atlas, its colour map and min-filtered map pool_layers deep plus the
+// layers its records' fallback tiles take, a pageTables buffer with a table for every face record
 // shadowData holds, written by the atlas pass and bound by exactly the passes that read
 // the atlas.
 TEST(BenchScenarios, FitPagePoolBindsTheTablesToEveryReaderOfTheAtlas) {
   fg::GraphDesc graph;
-  for (const char* name : {"atlas", "shadowColour", "depth"}) {
+  for (const char* name : {"atlas", "shadowColour", "depth", "minDepth"}) {
     fg::ResourceDesc r;
     r.name = name;
     r.layers = 2046;
@@ -298,15 +301,16 @@ TEST(BenchScenarios, FitPagePoolBindsTheTablesToEveryReaderOfTheAtlas) {
   other.inputs.push_back({"depth", "depth", "/passes/2/in/depth"});
   graph.passes = {atlas, reader, other};
   fit_page_pool(graph, 0);
-  EXPECT_EQ(graph.resources.size(), 4u) << "no pool: nothing changes";
+  EXPECT_EQ(graph.resources.size(), 5u) << "no pool: nothing changes";
   fit_page_pool(graph, 512);
   // 6144 records' fallback tiles take 384 pages: 24 more layers of 16.
   EXPECT_EQ(graph.resources[0].layers, 512u + 24u);
   EXPECT_EQ(graph.resources[1].layers, 512u + 24u);
   EXPECT_EQ(graph.resources[2].layers, 2046u);
-  ASSERT_EQ(graph.resources.size(), 5u);
-  EXPECT_EQ(graph.resources[4].name, "pageTables");
-  EXPECT_EQ(graph.resources[4].buffer_size, 6144u * 16 * 4) << "16 pages of 128^2 per face";
+  EXPECT_EQ(graph.resources[3].layers, 512u + 24u) << "the min-filtered map keeps the pool's";
+  ASSERT_EQ(graph.resources.size(), 6u);
+  EXPECT_EQ(graph.resources[5].name, "pageTables");
+  EXPECT_EQ(graph.resources[5].buffer_size, 6144u * 16 * 4) << "16 pages of 128^2 per face";
   EXPECT_EQ(graph.passes[0].params["pagePool"], true);
   EXPECT_EQ(graph.passes[0].outputs.back().port, "pageTables");
   EXPECT_EQ(graph.passes[1].inputs.back().port, "pageTables");

@@ -11,6 +11,8 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <functional>
+#include <map>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -205,7 +207,8 @@ std::vector<float> luminance(const std::vector<std::uint16_t>& hdr) {
 // and layered SSSS (blocker searches, ESM, tints) light the atrium exactly as faces in
 // squares do, and every page drawn took a place in the pool.
 TEST_F(PagePoolGpuTest, PagedFacesLightAsSquaresDo) {
-  for (const char* file : {"data/graphs/hard.json", "data/graphs/layered-ssss.json"}) {
+  for (const char* file : {"data/graphs/hard.json", "data/graphs/layered-ssss.json",
+                           "data/graphs/layered-ssss-min.json"}) {
     load_desc(pool_graph(file, false));
     const PoolCounts squares = pool_frame();
     const auto expected = read_hdr();
@@ -225,6 +228,132 @@ TEST_F(PagePoolGpuTest, PagedFacesLightAsSquaresDo) {
     EXPECT_EQ(second.drawn, 0u) << file << ": nothing moved";
     EXPECT_EQ(read_hdr(), expected) << file;
   }
+}
+
+namespace {
+
+// What shadow-min-filter should hold over a paged atlas (derived_pages.glsl), from the
+// atlas's own texels: per face page with a place, each texel of the page's block of the
+// filtered map is the nearest depth of the (2 r + 1)^2 downsampled texels around it (each
+// the nearest of its factor^2 atlas texels), clamped to the face, those of pages without a
+// place far; every texel is found through the face's table.
+struct PagedMinReference {
+  std::uint32_t factor = 8, radius = 3, atlas_size = kPoolFace;
+  std::function<std::vector<float>(std::uint32_t)> atlas_layer;
+  std::map<std::uint32_t, std::vector<float>> layers;
+
+  float atlas_at(std::uint32_t layer, std::uint32_t x, std::uint32_t y) {
+    auto it = layers.find(layer);
+    if (it == layers.end()) it = layers.emplace(layer, atlas_layer(layer)).first;
+    return it->second[std::size_t{y} * atlas_size + x];
+  }
+  // The downsampled texel q of a face of `texels` whose table is `table`.
+  float coarse(const std::uint32_t* table, std::uint32_t texels, glm::ivec2 q) {
+    const std::uint32_t pages_x = (texels + 127) / 128;
+    const glm::uvec2 t = glm::uvec2(q) * factor;
+    const std::uint32_t entry = table[(t.y / 128) * pages_x + t.x / 128];
+    if ((entry & 0x80000000u) == 0u) return 1.0f;
+    const glm::uvec2 corner{(entry & 31u) * 128, ((entry >> 5) & 31u) * 128};
+    float nearest = 1.0f;
+    for (std::uint32_t y = t.y; y < std::min(t.y + factor, texels); ++y) {
+      for (std::uint32_t x = t.x; x < std::min(t.x + factor, texels); ++x) {
+        nearest = std::min(
+            nearest, atlas_at((entry >> 10) & 0xFFFFFu, corner.x + x % 128, corner.y + y % 128));
+      }
+    }
+    return nearest;
+  }
+  float filtered(const std::uint32_t* table, std::uint32_t texels, glm::ivec2 p) {
+    const int extent = static_cast<int>((texels + factor - 1) / factor);
+    const int r = static_cast<int>(radius);
+    float nearest = 1.0f;
+    for (int dy = -r; dy <= r; ++dy) {
+      for (int dx = -r; dx <= r; ++dx) {
+        nearest = std::min(
+            nearest, coarse(table, texels, glm::clamp(p + glm::ivec2(dx, dy), 0, extent - 1)));
+      }
+    }
+    return nearest;
+  }
+};
+
+}  // namespace
+
+// Over a paged atlas the min filter keeps the pool's layout, 1/8 of its texels per side:
+// every page with a place holds in its block of the filtered map what the filter over the
+// face's own texels gives (near page borders, its neighbours' texels, found through the
+// table); the penumbra reads it through the same entry, and the layered image it gives is
+// not the blocker search's.
+TEST_F(PagePoolGpuTest, TheMinFilterFiltersEveryPlacedPageThroughItsTable) {
+  load_desc(pool_graph("data/graphs/layered-ssss.json", true));
+  pool_frame();
+  const auto searched = read_hdr();
+  load_desc(pool_graph("data/graphs/layered-ssss-min.json", true));
+  pool_frame();
+  EXPECT_NE(read_hdr(), searched) << "the blockers come from the filtered map";
+
+  const auto data = read_shadow_data();
+  const std::vector<std::uint32_t> tables = read_tables();
+  PagedMinReference reference;
+  reference.atlas_layer = [&](std::uint32_t layer) {
+    std::vector<float> texels(std::size_t{kPoolFace} * kPoolFace);
+    read_raw("atlas", VK_IMAGE_ASPECT_COLOR_BIT, layer, {kPoolFace, kPoolFace}, 4, texels.data());
+    return texels;
+  };
+  constexpr std::uint32_t kMin = kPoolFace / 8;
+  std::map<std::uint32_t, std::vector<float>> min_layers;
+  std::size_t checked = 0, wrong = 0, spread = 0, near = 0;
+  for (std::uint32_t record = 0; record < 96; ++record) {
+    passes::ShadowFace face;
+    std::memcpy(&face, data.data() + passes::kShadowFacesOffset + record * sizeof face,
+                sizeof face);
+    if (face.info.x >= passes::kMaxShadowLights) continue;
+    passes::ShadowLight light;
+    std::memcpy(&light, data.data() + passes::kShadowLightsOffset + face.info.x * sizeof light,
+                sizeof light);
+    ASSERT_LT(light.projection.z, 0.0f) << "every light is paged";
+    const auto texels = static_cast<std::uint32_t>(light.projection.y);
+    const std::uint32_t* table = tables.data() + (face.info.y >> 3);
+    const std::uint32_t pages_x = (texels + 127) / 128;
+    const std::uint32_t per_page = 128 / reference.factor;
+    const std::uint32_t used = (std::min(texels, 128u) + reference.factor - 1) / reference.factor;
+    for (std::uint32_t k = 0; k < pages_x * pages_x; ++k) {
+      const std::uint32_t entry = table[k];
+      if ((entry & 0x80000000u) == 0u) continue;
+      const std::uint32_t layer = (entry >> 10) & 0xFFFFFu;
+      auto it = min_layers.find(layer);
+      if (it == min_layers.end()) {
+        std::vector<float> texels_of(std::size_t{kMin} * kMin);
+        read_raw("minDepth", VK_IMAGE_ASPECT_COLOR_BIT, layer, {kMin, kMin}, 4, texels_of.data());
+        it = min_layers.emplace(layer, std::move(texels_of)).first;
+      }
+      const glm::uvec2 page{k % pages_x, k / pages_x};
+      const glm::uvec2 place{entry & 31u, (entry >> 5) & 31u};
+      for (std::uint32_t y = 0; y < used; ++y) {
+        for (std::uint32_t x = 0; x < used; ++x) {
+          const glm::ivec2 p(page * per_page + glm::uvec2(x, y));
+          const float expected = reference.filtered(table, texels, p);
+          const glm::uvec2 at = place * per_page + glm::uvec2(x, y);
+          const float got = it->second[std::size_t{at.y} * kMin + at.x];
+          ++checked;
+          if (got != expected && wrong++ < 5) {
+            ADD_FAILURE() << "record " << record << " page " << k << " texel (" << x << ", " << y
+                          << "): " << got << ", expected " << expected;
+          }
+          if (expected < 1.0f) ++near;
+          if (expected < reference.coarse(table, texels, p)) ++spread;
+        }
+      }
+    }
+  }
+  std::printf(
+      "paged min filter: %zu texels checked, %zu with a blocker, %zu nearer than their "
+      "own block\n",
+      checked, near, spread);
+  EXPECT_EQ(wrong, 0u);
+  EXPECT_GT(checked, 1000u);
+  EXPECT_GT(near, checked / 10) << "the faces hold casters";
+  EXPECT_GT(spread, 0u) << "the filter reaches past each texel's own block";
 }
 
 namespace {
@@ -438,9 +567,16 @@ TEST_F(PagePoolGpuTest, BadPoolSettingsAreCompilerErrors) {
     std::erase_if(p.inputs, [](const auto& in) { return in.port == "pageTables"; });
   }
   error_at(blind, "FG037", "/passes/2", "bind its pageTables output 'pageTables'");
-  // Derived maps (here the min filter) cannot read through the tables yet.
-  error_at(pool_graph("data/graphs/layered-ssss-min.json", true), "FG037", "/passes/3",
-           "a shadow-min-filter pass has no pageTables input");
+  // The moment maps cannot read through the tables yet.
+  error_at(pool_graph("data/graphs/vsm.json", true), "FG037", "/passes/2",
+           "a shadow-moments pass has no pageTables input");
+  // The min filter does, keeping the pool's layout: its texels must not straddle pages.
+  fg::GraphDesc coarse = pool_graph("data/graphs/layered-ssss-min.json", true);
+  for (auto& r : coarse.resources) {
+    if (r.name == "minDepth") r.size = {false, 1.0, 1.0, 2, 2};
+  }
+  error_at(coarse, "FG092", "/passes/3/out/minDepth",
+           "256 atlas texels per texel; over a paged atlas that must divide its 128-texel pages");
 }
 
 // The atlas view reads a paged atlas's faces through their tables: with every needed page
