@@ -58,10 +58,10 @@ float nearest_in(ivec3 at, ivec2 extent) {
 // of its factor x factor atlas texels (cut at the face's edge).
 void downsample_pages(DerivedPaged f) {
   const int page = 1 << int(ANTUMBRA_PAGE_SHIFT);
-  int per_page = min_per_page();
-  int used = (min(f.texels, page) + int(factor) - 1) / int(factor);
+  int per_page = derived_per_page();
+  int used = derived_page_used(f.texels);
   uint pages = uint(f.pages_x * f.pages_x);
-  for (uint k = min_first_page(); k < pages; k += min_page_stride()) {
+  for (uint k = derived_first_page(); k < pages; k += derived_page_stride()) {
     ivec2 at_page = ivec2(int(k) % f.pages_x, int(k) / f.pages_x);
     ivec3 place = derived_page_place(f, at_page);
     if (place.z < 0) continue;  // uniform: the whole workgroup reads one entry
@@ -81,7 +81,7 @@ void downsample_pages(DerivedPaged f) {
 
 void main() {
 #ifdef PAGED
-  uint record = min_record();  // listed: needed
+  uint record = derived_record();  // listed: needed
 #else
   uint record = gl_WorkGroupID.z;
   if (!derived_layer_needed(record, force_all != 0u))

@@ -50,7 +50,7 @@ void filter_block(ivec2 block, int layer, ivec2 corner, ivec2 size, int r) {
 // block's texels inside page `at_page` (placed at `place`) are written.
 void filter_paged_block(DerivedPaged f, ivec2 block, ivec2 at_page, ivec3 place, int extent,
                         int r) {
-  int per_page = min_per_page();
+  int per_page = derived_per_page();
   int span_r = GROUP + 2 * r;
   ivec2 origin = block - r;
   ivec2 local = ivec2(gl_LocalInvocationID.xy);
@@ -80,12 +80,11 @@ void filter_paged_block(DerivedPaged f, ivec2 block, ivec2 at_page, ivec3 place,
 
 // Every placed page of paged face `f`, in blocks of GROUP^2 output texels.
 void filter_pages(DerivedPaged f, int r) {
-  const int page = 1 << int(ANTUMBRA_PAGE_SHIFT);
-  int per_page = min_per_page();
-  int used = (min(f.texels, page) + int(factor) - 1) / int(factor);
+  int per_page = derived_per_page();
+  int used = derived_page_used(f.texels);
   int extent = (f.texels + int(factor) - 1) / int(factor);
   uint pages = uint(f.pages_x * f.pages_x);
-  for (uint k = min_first_page(); k < pages; k += min_page_stride()) {
+  for (uint k = derived_first_page(); k < pages; k += derived_page_stride()) {
     ivec2 at_page = ivec2(int(k) % f.pages_x, int(k) / f.pages_x);
     ivec3 place = derived_page_place(f, at_page);
     if (place.z < 0) continue;  // uniform: before any barrier
@@ -100,7 +99,7 @@ void filter_pages(DerivedPaged f, int r) {
 
 void main() {
 #ifdef PAGED
-  uint record = min_record();  // listed: needed
+  uint record = derived_record();  // listed: needed
 #else
   uint record = gl_WorkGroupID.z;
   if (!derived_layer_needed(record, force_all != 0u))

@@ -14,11 +14,8 @@ ANTUMBRA_SHARED_BEGIN
 ANTUMBRA_BINDING(kMinShadowData, 0)
 ANTUMBRA_BINDING(kMinInput, 1)
 ANTUMBRA_BINDING(kMinOutput, 2)
-// A paged atlas only: its page tables (point-shadow-atlas's pageTables), and the records
-// to filter this frame, listed by min_list.comp after the steps' dispatch arguments.
-ANTUMBRA_BINDING(kMinPageTables, 3)
-ANTUMBRA_BINDING(kMinRecords, 4)
-const uint kMinListGroup = 64;  // min_list.comp: a face record per thread
+// Over a paged atlas also the page tables and the listed records at
+// interface/shared/derived_maps.h's kDerivedPageTables and kDerivedRecords.
 
 // Both dispatches take the same block.
 ANTUMBRA_PUSH_CONSTANTS(ShadowMinFilterPush) {

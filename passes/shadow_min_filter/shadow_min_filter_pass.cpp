@@ -1,12 +1,10 @@
 #include "shadow_min_filter_pass.hpp"
 
 #include <algorithm>
-#include <array>
 
 #include "antumbra/gpu/commands.hpp"
 #include "antumbra/gpu/context.hpp"
 #include "antumbra/gpu/pipelines.hpp"
-#include "common/own_buffer_sync.hpp"
 #include "common/ports.hpp"
 #include "common/shadow_data.hpp"
 #include "shadow_min_filter_interface.h"
@@ -17,8 +15,7 @@ namespace {
 
 using shared::ShadowMinFilterPush;
 static_assert(shared::kMinShadowData == kFaceStepShadowData &&
-              shared::kMinInput == kFaceStepInput && shared::kMinOutput == kFaceStepOutput &&
-              shared::kMinPageTables == kFaceStepPageTables);
+              shared::kMinInput == kFaceStepInput && shared::kMinOutput == kFaceStepOutput);
 
 constexpr std::uint32_t kGroup = ANTUMBRA_MIN_FILTER_GROUP;  // min_common.glsl's GROUP
 constexpr std::uint32_t kGroupsPerAxis = 2;  // per layer: 2x2 workgroups loop over the face
@@ -42,44 +39,7 @@ void ShadowMinFilterPass::prepare(fgvk::PrepareContext& context) {
                                        sizeof(ShadowMinFilterPush));
   separable_ = build_compute_pipeline(context, separable, face_step_bindings(page_tables_),
                                       sizeof(ShadowMinFilterPush));
-  if (page_tables_) {
-    auto list = load_shader(context, "shadow_min_filter/min_list.comp", shader_files_, defines);
-    list_ = build_compute_pipeline(context, list, face_step_bindings(true),
-                                   sizeof(ShadowMinFilterPush));
-  }
-}
-
-VkBuffer ShadowMinFilterPass::list_records(fgvk::ExecuteContext& context, VkBuffer shadow_data,
-                                           std::uint32_t records, const FaceGroups& groups,
-                                           const ShadowMinFilterPush& constants) {
-  const VkCommandBuffer cmd = context.cmd;
-  if (!records_ || records > records_capacity_) {
-    records_capacity_ = records;
-    records_ = gpu::Buffer::create(context.gpu, 16 + VkDeviceSize{records} * 4,
-                                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
-                                       VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT |
-                                       VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                   gpu::MemoryUsage::gpu_only, context.pass.name + ".records");
-  }
-  // Last frame's steps read the list and the arguments before they are reset.
-  own_sync::after_all(cmd, {records_}, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
-                      VK_ACCESS_2_TRANSFER_WRITE_BIT);
-  const std::array<std::uint32_t, 4> args{groups.x, groups.y, 0u, records};
-  vkCmdUpdateBuffer(cmd, records_, 0, sizeof args, args.data());
-  own_sync::transfer_to_compute(cmd, {records_});
-  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, list_.pipeline);
-  gpu::PushDescriptors()
-      .storage_buffer(kFaceStepShadowData, shadow_data)
-      .storage_buffer(kFaceStepRecords, records_)
-      .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, list_.layout);
-  vkCmdPushConstants(cmd, list_.layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof constants,
-                     &constants);
-  vkCmdDispatch(cmd, (records + shared::kMinListGroup - 1) / shared::kMinListGroup, 1, 1);
-  own_sync::barriers(cmd, {records_}, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                     own_sync::kStorageReadWrite,
-                     VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                     VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
-  return records_;
+  if (page_tables_) records_.prepare(context, shader_files_);
 }
 
 void ShadowMinFilterPass::execute(fgvk::ExecuteContext& context) {
@@ -108,8 +68,9 @@ void ShadowMinFilterPass::execute(fgvk::ExecuteContext& context) {
   const std::uint32_t layers =
       face_records(b.buffer(port::kShadowData)->size, std::min(atlas.layers, out.layers));
   // Paged: the steps' workgroups only for the records listed as changed (derived_pages.glsl).
-  const VkBuffer records =
-      page_tables_ ? list_records(context, shadow_data, layers, groups, constants) : VK_NULL_HANDLE;
+  const VkBuffer records = page_tables_
+                               ? records_.list(context, shadow_data, layers, groups, force_all)
+                               : VK_NULL_HANDLE;
 
   dispatch_face_step(context, downsample_,
                      {shadow_data, atlas.array_view, atlas.layout, coarse_.array_view(),

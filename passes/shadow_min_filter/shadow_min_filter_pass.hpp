@@ -15,9 +15,9 @@
 #include "antumbra/fg/param_table.hpp"
 #include "antumbra/fgvk/pass.hpp"
 #include "antumbra/gpu/resources.hpp"
+#include "common/derived_records.hpp"
 #include "common/pass_support.hpp"
 #include "common/scratch_array.hpp"
-#include "shadow_min_filter_interface.h"
 
 namespace antumbra::passes {
 
@@ -42,13 +42,7 @@ class ShadowMinFilterPass final : public fgvk::Pass {
   ScratchArray coarse_;
   VkImage filtered_for_ = VK_NULL_HANDLE;  // output image all faces were filtered into
   bool page_tables_ = false;               // the atlas is paged
-  // Paged: lists the records to filter and resets the steps' indirect arguments.
-  VkBuffer list_records(fgvk::ExecuteContext& context, VkBuffer shadow_data, std::uint32_t records,
-                        const FaceGroups& groups, const shared::ShadowMinFilterPush& constants);
-
-  gpu::Buffer records_;  // min_list.comp's list, after the steps' arguments
-  std::uint32_t records_capacity_ = 0;
-  ComputePipeline list_;
+  DerivedRecordList records_;              // paged: the records to filter this frame
   ComputePipeline downsample_;
   ComputePipeline separable_;
   std::vector<std::string> shader_files_;
