@@ -190,7 +190,8 @@ void add_many_table(std::vector<Scenario>& out, double scale, const DistrictRows
 // Page pool (docs/technique.md, "Page pool"): the many table's rows and the atrium's 16
 // moving lights with the atlas a pool of pages that visible pixels need, far fewer layers
 // than the squares take: 32 of 1024^2 for the atrium (128 MiB of depth), 512 of 512^2
-// for the district and the city (512 MiB); the atrium also with the min-filtered maps.
+// for the district and the city (512 MiB); the atrium also with the min-filtered maps and
+// with EVSM4's moment maps, both filtered through the tables.
 void add_pages_table(std::vector<Scenario>& out, double scale, const DistrictRows& rows) {
   struct Row {
     const char* scene;
@@ -202,7 +203,7 @@ void add_pages_table(std::vector<Scenario>& out, double scale, const DistrictRow
                            {kDistrictScene, kDistrictLights, kDistrictMovingLights, 512},
                            {kDistrictScene, kDistrictLights, kDistrictLights, 512},
                            {kCityScene, kCityLights, kCityLights / 4, 512}};
-  // The atrium also with the seed's min-filtered maps, filtered through the tables.
+  // The atrium also with the seed's min-filtered maps and with EVSM4, through the tables.
   struct Variant {
     const Row* row;
     const char* technique;
@@ -210,14 +211,16 @@ void add_pages_table(std::vector<Scenario>& out, double scale, const DistrictRow
   std::vector<Variant> variants;
   for (const Row& row : kRows) variants.push_back({&row, "ssss"});
   variants.insert(variants.begin() + 1, {&kRows[0], "ssss-min"});
+  variants.insert(variants.begin() + 2, {&kRows[0], "evsm4"});
   for (const auto& [row_of, name] : variants) {
     const Row& row = *row_of;
     const bool many = row.lights >= kDistrictLights;
     const int lights = many ? row.lights / kDistrictLights * rows.lights : row.lights;
     const int moving =
         many ? std::min(row.moving * rows.lights / kDistrictLights, lights) : row.moving;
-    Scenario s =
-        make("pages", technique(name), 11, 1080, lights, many ? scale * rows.scale : scale);
+    const Technique& t = technique(name);
+    const int kernel = t.kernels.empty() ? 0 : 11;
+    Scenario s = make("pages", t, kernel, 1080, lights, many ? scale * rows.scale : scale);
     s.name += "-";
     s.name += std::to_string(moving);
     s.name += "m";
@@ -438,8 +441,10 @@ void fit_page_pool(fg::GraphDesc& graph, std::uint32_t pool_layers) {
   const std::uint64_t fallback = (records + 15) / 16;
   const auto extra = static_cast<std::uint32_t>((fallback + per_layer - 1) / per_layer);
   for (auto& r : graph.resources) {
-    // The min-filtered map keeps the pool's layout (shadow-min-filter over a paged atlas).
-    if (r.name == "atlas" || r.name == "shadowColour" || r.name == "minDepth")
+    // The derived maps keep the pool's layout (shadow-min-filter, shadow-moments over a
+    // paged atlas).
+    if (r.name == "atlas" || r.name == "shadowColour" || r.name == "minDepth" ||
+        r.name == "moments")
       r.layers = pool_layers + extra;
   }
   fg::ResourceDesc tables;

@@ -2,6 +2,7 @@
 
 #include "antumbra/base/diagnostic_codes.hpp"
 #include "ports.hpp"
+#include "shared/page_tables.h"
 
 namespace antumbra::passes {
 
@@ -31,6 +32,23 @@ void add_pass_error(const fg::GraphDesc& graph, const fg::PlanPass& pass, const 
   diagnostics.add(graph.document.make(code, base::Severity::error,
                                       "pass '" + pass.name + "' (" + pass.type + "): " + message,
                                       pointer));
+}
+
+void check_paged_map_factor(const fg::PlanPass& pass, const fg::Plan& plan, fg::PortId map,
+                            const fg::GraphDesc& graph, base::Diagnostics& diagnostics) {
+  const auto* atlas = bound_resource(pass, plan, port::kAtlas);
+  const auto* out = bound_resource(pass, plan, map);
+  if (atlas == nullptr || out == nullptr || bound_index(pass, port::kPageTables) < 0) return;
+  if (out->extent.width == 0 || atlas->extent.width % out->extent.width != 0) return;  // FG092
+  const std::uint32_t factor = atlas->extent.width / out->extent.width;
+  constexpr std::uint32_t kPage = 1u << ANTUMBRA_PAGE_SHIFT;
+  if (kPage % factor == 0) return;
+  add_pass_error(graph, pass, codes::graph::kPortContract,
+                 "'" + out->name + "' is " + std::to_string(out->extent.width) + " wide, " +
+                     std::to_string(factor) + " atlas texels per texel; over a paged atlas " +
+                     "that must divide its " + std::to_string(kPage) +
+                     "-texel pages (a power of two up to " + std::to_string(kPage) + ")",
+                 "/out/" + std::string(map.name()), diagnostics);
 }
 
 }  // namespace antumbra::passes

@@ -25,4 +25,10 @@ void add_pass_error(const fg::GraphDesc& graph, const fg::PlanPass& pass, const 
                     const std::string& message, const std::string& suffix,
                     base::Diagnostics& diagnostics);
 
+// A map derived from a paged atlas (`pageTables` bound to `pass`) keeps the pool's layout
+// (derived_pages.glsl): each of its texels must cover atlas texels of one page, so the
+// atlas texels per map texel (bound at `map`) must divide the page size (FG092).
+void check_paged_map_factor(const fg::PlanPass& pass, const fg::Plan& plan, fg::PortId map,
+                            const fg::GraphDesc& graph, base::Diagnostics& diagnostics);
+
 }  // namespace antumbra::passes

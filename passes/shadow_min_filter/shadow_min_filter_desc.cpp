@@ -5,28 +5,13 @@
 #include "common/ports.hpp"
 #include "shadow_min_filter_pass.hpp"
 #include "shared/limits.h"
-#include "shared/page_tables.h"
 
 namespace antumbra::passes {
 namespace {
 
-// Over a paged atlas the map keeps the pool's layout (derived_pages.glsl): an output texel
-// must cover atlas texels of one page, so the factor divides the page size.
 void check(const fg::PlanPass& pass, const ShadowMinFilterParams& /*params*/, const fg::Plan& plan,
            const fg::GraphDesc& graph, base::Diagnostics& diagnostics) {
-  const auto* atlas = bound_resource(pass, plan, port::kAtlas);
-  const auto* out = bound_resource(pass, plan, port::kMinDepth);
-  if (atlas == nullptr || out == nullptr || bound_index(pass, port::kPageTables) < 0) return;
-  if (out->extent.width == 0 || atlas->extent.width % out->extent.width != 0) return;  // FG092
-  const std::uint32_t factor = atlas->extent.width / out->extent.width;
-  constexpr std::uint32_t kPage = 1u << ANTUMBRA_PAGE_SHIFT;
-  if (kPage % factor == 0) return;
-  add_pass_error(graph, pass, codes::graph::kPortContract,
-                 "'" + out->name + "' is " + std::to_string(out->extent.width) + " wide, " +
-                     std::to_string(factor) + " atlas texels per texel; over a paged atlas " +
-                     "that must divide its " + std::to_string(kPage) +
-                     "-texel pages (a power of two up to " + std::to_string(kPage) + ")",
-                 "/out/minDepth", diagnostics);
+  check_paged_map_factor(pass, plan, port::kMinDepth, graph, diagnostics);
 }
 
 }  // namespace

@@ -16,4 +16,11 @@ layout(set = 0, binding = kMomentsShadowData) readonly buffer Shadows {
 
 #include "../common/derived_faces.glsl"
 
+#ifdef PAGED
+// A paged atlas (pageTables bound): the map keeps the pool's layout at 1/factor
+// (derived_pages.glsl), and each step walks a listed face's pages, skipping those without
+// a place.
+#include "../common/derived_pages.glsl"
+#endif
+
 #endif

@@ -31,10 +31,21 @@ void check(const fg::PlanPass& pass, const ShadowMomentsParams& params, const fg
   } else if (technique == MomentTechnique::msm && out->format != fg::Format::rgba32f) {
     problem = "is rgba16f; msm needs rgba32f";
   }
-  if (problem.empty()) return;
-  add_pass_error(graph, pass, codes::moments::kFormat,
-                 "'" + out->name + "' (" + std::string(fg::to_string(out->format)) + ") " + problem,
-                 "/params/technique", diagnostics);
+  if (!problem.empty()) {
+    add_pass_error(
+        graph, pass, codes::moments::kFormat,
+        "'" + out->name + "' (" + std::string(fg::to_string(out->format)) + ") " + problem,
+        "/params/technique", diagnostics);
+  }
+  // Over a paged atlas the map keeps the pool's layout (derived_pages.glsl); a summed-area
+  // table sums across a face's pages, which that layout does not hold together.
+  check_paged_map_factor(pass, plan, port::kMoments, graph, diagnostics);
+  if (technique == MomentTechnique::vssm && bound_index(pass, port::kPageTables) >= 0) {
+    add_pass_error(graph, pass, codes::graph::kPortUnbound,
+                   "vssm's summed-area tables are not built over a paged atlas: use vsm, evsm2, "
+                   "evsm4 or msm, or an atlas without pagePool",
+                   "/in/pageTables", diagnostics);
+  }
 }
 
 }  // namespace
@@ -56,6 +67,7 @@ fg::PassDesc ShadowMomentsPass::describe() {
                           "Shadow faces of every light (point-shadow-atlas)."),
       compute_buffer_input(port::kShadowData,
                            "Face owners, ranges and which faces were drawn this frame."),
+      page_tables_input(),
       {.name = port::kMoments,
        .direction = PortDirection::output,
        .access = Access::storage_write,

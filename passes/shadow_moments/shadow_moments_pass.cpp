@@ -41,11 +41,15 @@ ShadowMomentsPass::ShadowMomentsPass(const fg::PlanPass& pass)
 
 void ShadowMomentsPass::prepare(fgvk::PrepareContext& context) {
   const VkFormat format = context.bindings.required_image(port::kMoments).format;
-  const std::vector<gpu::ShaderDefine> defines{
+  std::vector<gpu::ShaderDefine> defines{
       {"MOMENTS_TECHNIQUE", std::to_string(static_cast<int>(params_.storage.technique))},
       {"MOMENTS_HALF", is_half_moments(format) ? "1" : "0"},
       {"MOMENTS_FORMAT", storage_format(format)},
   };
+  // A paged atlas (its tables bound): the map keeps the pool's layout, and the steps walk
+  // each listed face's pages through its table (derived_pages.glsl); never vssm (a check).
+  page_tables_ = context.bindings.buffer(port::kPageTables) != nullptr;
+  if (page_tables_) defines.push_back({"PAGED", "1"});
   shader_files_.clear();
   auto convert =
       load_shader(context, "shadow_moments/moments_convert.comp", shader_files_, defines);
@@ -53,9 +57,11 @@ void ShadowMomentsPass::prepare(fgvk::PrepareContext& context) {
   auto blur = load_shader(
       context, sat ? "shadow_moments/moments_sat.comp" : "shadow_moments/moments_blur.comp",
       shader_files_, defines);
-  convert_ =
-      build_compute_pipeline(context, convert, face_step_bindings(), sizeof(ShadowMomentsPush));
-  blur_ = build_compute_pipeline(context, blur, face_step_bindings(), sizeof(ShadowMomentsPush));
+  convert_ = build_compute_pipeline(context, convert, face_step_bindings(page_tables_),
+                                    sizeof(ShadowMomentsPush));
+  blur_ = build_compute_pipeline(context, blur, face_step_bindings(page_tables_),
+                                 sizeof(ShadowMomentsPush));
+  if (page_tables_) records_.prepare(context, shader_files_);
   filtered_for_ = VK_NULL_HANDLE;  // new pipelines (a technique change): redo every face
 }
 
@@ -78,15 +84,21 @@ void ShadowMomentsPass::execute(fgvk::ExecuteContext& context) {
   // One z per face record: a record's face is a square of its layer (derived_faces.glsl).
   const std::uint32_t layers =
       face_records(b.buffer(port::kShadowData)->size, std::min(atlas.layers, out.layers));
+  // Paged: the steps' workgroups only for the records listed as changed (derived_pages.glsl).
+  const VkBuffer tables = page_tables_ ? b.buffer(port::kPageTables)->buffer : VK_NULL_HANDLE;
+  const VkBuffer records = page_tables_
+                               ? records_.list(context, shadow_data, layers, groups, force_all)
+                               : VK_NULL_HANDLE;
 
-  dispatch_face_step(
-      context, convert_,
-      {shadow_data, atlas.array_view, atlas.layout, raw_.array_view(), VK_IMAGE_LAYOUT_GENERAL},
-      &constants, sizeof constants, groups, layers);
+  dispatch_face_step(context, convert_,
+                     {shadow_data, atlas.array_view, atlas.layout, raw_.array_view(),
+                      VK_IMAGE_LAYOUT_GENERAL, tables, records},
+                     &constants, sizeof constants, groups, layers);
   raw_.end_write(cmd);
   dispatch_face_step(
       context, blur_,
-      {shadow_data, raw_.array_view(), VK_IMAGE_LAYOUT_GENERAL, out.array_view, out.layout},
+      {shadow_data, raw_.array_view(), VK_IMAGE_LAYOUT_GENERAL, out.array_view, out.layout, tables,
+       records},
       &constants, sizeof constants,
       params_.storage.technique == MomentTechnique::vssm ? FaceGroups{groups.span, 1, 1} : groups,
       layers);

@@ -17,6 +17,7 @@
 #include "antumbra/fg/param_table.hpp"
 #include "antumbra/fgvk/pass.hpp"
 #include "antumbra/gpu/resources.hpp"
+#include "common/derived_records.hpp"
 #include "common/moment_technique.hpp"
 #include "common/pass_support.hpp"
 #include "common/scratch_array.hpp"
@@ -45,6 +46,8 @@ class ShadowMomentsPass final : public fgvk::Pass {
   // so its barriers are the pass's own (graph resources get theirs from the plan).
   ScratchArray raw_;
   VkImage filtered_for_ = VK_NULL_HANDLE;  // output image every face was filtered into
+  bool page_tables_ = false;               // the atlas is paged
+  DerivedRecordList records_;              // paged: the records to redo this frame
   ComputePipeline convert_;
   ComputePipeline blur_;  // the box prefilter, or for vssm the summed-area table
   std::vector<std::string> shader_files_;

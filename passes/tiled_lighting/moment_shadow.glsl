@@ -33,14 +33,64 @@ vec4 moments_bilinear(vec2 face_uv, float layer, float texels, float share, vec2
   return mix(mix(m00, m10, f.x), mix(m01, m11, f.x), f.y);
 }
 
+#ifdef SHADOW_PAGE_TABLES
+// Atlas texels per moment-map texel (shadow-moments' factor).
+int moments_factor() {
+  return max(textureSize(atlas, 0).x / max(textureSize(moments_map, 0).x, 1), 1);
+}
+
+// Moment texel `t` of paged face `c` (light `l`): shadow-moments over a paged atlas keeps
+// the pool's layout at 1/factor (derived_pages.glsl), so the entry of t's page names its
+// texel too. A page without a place reads its face's fallback tile as moments (the coarser
+// level), else far depth, as its depth lookups do.
+vec4 moments_page_texel(ShadowCoord c, ShadowLight l, ivec2 t, int factor) {
+  int per_page = (1 << int(ANTUMBRA_PAGE_SHIFT)) / factor;
+  uint entry = shadow_page_entry_of(c.pages, t / per_page);
+  if ((entry & ANTUMBRA_PAGE_PLACED) != 0u) {
+    const uint coord_mask = (1u << ANTUMBRA_PAGE_COORD_BITS) - 1u;
+    ivec2 place = ivec2(uvec2(entry, entry >> ANTUMBRA_PAGE_ROW_SHIFT) & uvec2(coord_mask));
+    int layer = int((entry >> ANTUMBRA_PAGE_LAYER_SHIFT) & ((1u << ANTUMBRA_PAGE_LAYER_BITS) - 1u));
+    return texelFetch(moments_map, ivec3(place * per_page + (t & (per_page - 1)), layer), 0);
+  }
+  ivec3 at = shadow_page_at(entry, t * factor);
+  return moments_encode(shadow_depth_fraction(l, at.z < 0 ? 1.0 : texelFetch(atlas, at, 0).r));
+}
+
+// moments_bilinear for a paged face: each of the four texels through its own page, so the
+// filter never reads another face's texels across a page border (no guard texels).
+vec4 moments_bilinear_paged(ShadowCoord c, ShadowLight l) {
+  int factor = moments_factor();
+  int extent = max((c.pages.texels + factor - 1) / factor, 1);
+  float texels = float(extent);
+  vec2 pos = clamp(c.uv, vec2(0.5 / texels), vec2(1.0 - 0.5 / texels)) * texels - 0.5;
+  ivec2 base = ivec2(floor(pos));
+  vec2 f = pos - vec2(base);
+  ivec2 a = clamp(base, ivec2(0), ivec2(extent - 1));
+  ivec2 b = clamp(base + 1, ivec2(0), ivec2(extent - 1));
+  vec4 m00 = moments_page_texel(c, l, ivec2(a.x, a.y), factor);
+  vec4 m10 = moments_page_texel(c, l, ivec2(b.x, a.y), factor);
+  vec4 m01 = moments_page_texel(c, l, ivec2(a.x, b.y), factor);
+  vec4 m11 = moments_page_texel(c, l, ivec2(b.x, b.y), factor);
+  return mix(mix(m00, m10, f.x), mix(m01, m11, f.x), f.y);
+}
+#endif
+
 float moment_shadow_face(ShadowLight light, int layer, vec3 p_world, vec3 n_world) {
   // The face's texels in the moment map (per-light resolution shares the layer's square).
   float share = light.projection.z > 0.0 ? light.projection.z : 1.0;
   float texels = max(float(textureSize(moments_map, 0).x) * share, 1.0);
+#ifdef SHADOW_PAGE_TABLES
+  if (light.projection.z < 0.0) texels = max(light.projection.y / float(moments_factor()), 1.0);
+#endif
   ShadowLookup q = shadow_offset_lookup(light, layer, p_world, n_world, texels);
   ShadowCoord c = shadow_coord(shadow_faces[q.layer], q.light, q.layer, q.position);
   if (!c.valid || c.depth >= 1.0) return 1.0;
+#ifdef SHADOW_PAGE_TABLES
+  vec4 m = c.pages.table >= 0 ? moments_bilinear_paged(c, q.light)
+                              : moments_bilinear(c.uv, c.layer, texels, share, c.origin);
+#else
   vec4 m = moments_bilinear(c.uv, c.layer, texels, share, c.origin);
+#endif
   return moments_visibility(m, shadow_depth_fraction(q.light, c.depth), MOMENT_EPSILON,
                             BLEEDING_REDUCTION);
 }

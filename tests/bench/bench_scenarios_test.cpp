@@ -246,10 +246,12 @@ TEST(BenchScenarios, MovingScenesHaveTheirLightsAfterTheLightCount) {
 
 }  // namespace
 // The pages table: the many table's rows and the atrium's moving lights (also with the
-// min-filtered maps), each drawn into a page pool of a fixed number of layers.
+// min-filtered maps and EVSM4), each drawn into a page pool of a fixed number of layers.
 TEST(BenchScenarios, PagesTableDrawsIntoAFixedPool) {
   const auto pages = select_scenarios(builtin_scenarios(1.0), {"pages/"});
-  ASSERT_EQ(pages.size(), 5u);
+  ASSERT_EQ(pages.size(), 6u);
+  EXPECT_EQ(named(pages, "pages/evsm4/1080p/16l-16m/compute/screen/vis/pool32").graph,
+            "evsm4.json");
   const auto& min = named(pages, "pages/ssss-min-11/1080p/16l-16m/compute/screen/vis/pool32");
   EXPECT_EQ(min.graph, "layered-ssss-min.json");
   EXPECT_EQ(min.pool_layers, 32u);
@@ -278,7 +280,7 @@ TEST(BenchScenarios, PagesTableDrawsIntoAFixedPool) {
 // the atlas.
 TEST(BenchScenarios, FitPagePoolBindsTheTablesToEveryReaderOfTheAtlas) {
   fg::GraphDesc graph;
-  for (const char* name : {"atlas", "shadowColour", "depth", "minDepth"}) {
+  for (const char* name : {"atlas", "shadowColour", "depth", "minDepth", "moments"}) {
     fg::ResourceDesc r;
     r.name = name;
     r.layers = 2046;
@@ -301,16 +303,17 @@ TEST(BenchScenarios, FitPagePoolBindsTheTablesToEveryReaderOfTheAtlas) {
   other.inputs.push_back({"depth", "depth", "/passes/2/in/depth"});
   graph.passes = {atlas, reader, other};
   fit_page_pool(graph, 0);
-  EXPECT_EQ(graph.resources.size(), 5u) << "no pool: nothing changes";
+  EXPECT_EQ(graph.resources.size(), 6u) << "no pool: nothing changes";
   fit_page_pool(graph, 512);
   // 6144 records' fallback tiles take 384 pages: 24 more layers of 16.
   EXPECT_EQ(graph.resources[0].layers, 512u + 24u);
   EXPECT_EQ(graph.resources[1].layers, 512u + 24u);
   EXPECT_EQ(graph.resources[2].layers, 2046u);
   EXPECT_EQ(graph.resources[3].layers, 512u + 24u) << "the min-filtered map keeps the pool's";
-  ASSERT_EQ(graph.resources.size(), 6u);
-  EXPECT_EQ(graph.resources[5].name, "pageTables");
-  EXPECT_EQ(graph.resources[5].buffer_size, 6144u * 16 * 4) << "16 pages of 128^2 per face";
+  EXPECT_EQ(graph.resources[4].layers, 512u + 24u) << "the moments keep the pool's";
+  ASSERT_EQ(graph.resources.size(), 7u);
+  EXPECT_EQ(graph.resources[6].name, "pageTables");
+  EXPECT_EQ(graph.resources[6].buffer_size, 6144u * 16 * 4) << "16 pages of 128^2 per face";
   EXPECT_EQ(graph.passes[0].params["pagePool"], true);
   EXPECT_EQ(graph.passes[0].outputs.back().port, "pageTables");
   EXPECT_EQ(graph.passes[1].inputs.back().port, "pageTables");

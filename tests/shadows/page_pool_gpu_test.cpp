@@ -230,6 +230,40 @@ TEST_F(PagePoolGpuTest, PagedFacesLightAsSquaresDo) {
   }
 }
 
+// The filtered shadow maps over a paged atlas keep the pool's layout too: converted and
+// box-filtered per page, neighbours read through the table (those of pages without a place
+// as far depth, as faces in squares fill them), and looked up through the entries of the
+// four texels' pages, they light the atrium exactly as the same maps of faces in squares
+// do; and they are what shadows it (softer than the hard shadows).
+TEST_F(PagePoolGpuTest, PagedMomentMapsLightAsSquaresDo) {
+  load_desc(pool_graph("data/graphs/lighting.json", false));
+  face_stats_frame();  // no shadow atlas, no pool counts
+  const auto unshadowed = luminance(read_hdr());
+  load_desc(pool_graph("data/graphs/hard.json", true));
+  pool_frame();
+  const auto hard = read_hdr();
+  for (const char* file :
+       {"data/graphs/vsm.json", "data/graphs/evsm4.json", "data/graphs/msm.json"}) {
+    load_desc(pool_graph(file, false));
+    pool_frame();
+    const auto squares = read_hdr();
+    load_desc(pool_graph(file, true));
+    const PoolCounts paged = pool_frame();
+    EXPECT_GT(paged.taken, 0u) << file;
+    EXPECT_EQ(paged.missing, 0u) << file;
+    const auto image = read_hdr();
+    EXPECT_EQ(image, squares) << file;
+    EXPECT_NE(image, hard) << file;
+    const auto lit = luminance(image);
+    std::size_t shadowed = 0;
+    for (std::size_t i = 0; i < lit.size() && i < unshadowed.size(); ++i) {
+      if (lit[i] < unshadowed[i] * 0.7f) ++shadowed;
+    }
+    std::printf("%s paged: %zu pixels shadowed\n", file, shadowed);
+    EXPECT_GT(shadowed, 50u) << file << ": the moments shadow the atrium";
+  }
+}
+
 namespace {
 
 // What shadow-min-filter should hold over a paged atlas (derived_pages.glsl), from the
@@ -567,9 +601,16 @@ TEST_F(PagePoolGpuTest, BadPoolSettingsAreCompilerErrors) {
     std::erase_if(p.inputs, [](const auto& in) { return in.port == "pageTables"; });
   }
   error_at(blind, "FG037", "/passes/2", "bind its pageTables output 'pageTables'");
-  // The moment maps cannot read through the tables yet.
-  error_at(pool_graph("data/graphs/vsm.json", true), "FG037", "/passes/2",
-           "a shadow-moments pass has no pageTables input");
+  // VSSM's summed-area tables are not built over a paged atlas; the other moment maps are,
+  // whose texels must not straddle pages either.
+  error_at(pool_graph("data/graphs/vssm.json", true), "FG037", "/passes/2",
+           "vssm's summed-area tables are not built over a paged atlas");
+  fg::GraphDesc wide = pool_graph("data/graphs/vsm.json", true);
+  for (auto& r : wide.resources) {
+    if (r.name == "moments") r.size = {false, 1.0, 1.0, 2, 2};
+  }
+  error_at(wide, "FG092", "/passes/2/out/moments",
+           "256 atlas texels per texel; over a paged atlas that must divide its 128-texel pages");
   // The min filter does, keeping the pool's layout: its texels must not straddle pages.
   fg::GraphDesc coarse = pool_graph("data/graphs/layered-ssss-min.json", true);
   for (auto& r : coarse.resources) {
