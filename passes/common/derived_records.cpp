@@ -5,6 +5,7 @@
 #include "antumbra/gpu/commands.hpp"
 #include "antumbra/gpu/pipelines.hpp"
 #include "common/own_buffer_sync.hpp"
+#include "common/ports.hpp"
 #include "shared/derived_maps.h"
 
 namespace antumbra::passes {
@@ -54,6 +55,19 @@ VkBuffer DerivedRecordList::list(fgvk::ExecuteContext& context, VkBuffer shadow_
                      VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                      VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
   return records_;
+}
+
+DerivedRecordList::StepBuffers DerivedRecordList::step_buffers(fgvk::ExecuteContext& context,
+                                                               std::uint32_t records,
+                                                               const FaceGroups& groups,
+                                                               bool force_all) {
+  const auto& b = context.bindings;
+  StepBuffers buffers{.shadow_data = b.buffer(port::kShadowData)->buffer};
+  if (const fgvk::BoundBuffer* tables = b.buffer(port::kPageTables); tables != nullptr) {
+    buffers.page_tables = tables->buffer;
+    buffers.records = list(context, buffers.shadow_data, records, groups, force_all);
+  }
+  return buffers;
 }
 
 }  // namespace antumbra::passes

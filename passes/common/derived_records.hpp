@@ -28,6 +28,17 @@ class DerivedRecordList {
   VkBuffer list(fgvk::ExecuteContext& context, VkBuffer shadow_data, std::uint32_t records,
                 const FaceGroups& groups, bool force_all);
 
+  // What both steps of a derived map bind besides their images (FaceStep's buffers): the
+  // shadow data, and when the pass's `pageTables` is bound, the tables and the list of
+  // `records` (listed here) that the steps' indirect dispatches follow.
+  struct StepBuffers {
+    VkBuffer shadow_data = VK_NULL_HANDLE;
+    VkBuffer page_tables = VK_NULL_HANDLE;
+    VkBuffer records = VK_NULL_HANDLE;
+  };
+  StepBuffers step_buffers(fgvk::ExecuteContext& context, std::uint32_t records,
+                           const FaceGroups& groups, bool force_all);
+
  private:
   gpu::Buffer records_;  // the arguments, then the listed records
   std::uint32_t capacity_ = 0;

@@ -46,8 +46,6 @@ void ShadowMinFilterPass::execute(fgvk::ExecuteContext& context) {
   const auto& b = context.bindings;
   const auto& atlas = b.required_image(port::kAtlas);
   const auto& out = b.required_image(port::kMinDepth);
-  const VkBuffer shadow_data = b.buffer(port::kShadowData)->buffer;
-  const VkBuffer tables = page_tables_ ? b.buffer(port::kPageTables)->buffer : VK_NULL_HANDLE;
   const VkCommandBuffer cmd = context.cmd;
 
   coarse_.ensure(context.gpu, out.extent, out.layers, VK_FORMAT_R32_SFLOAT,
@@ -68,18 +66,16 @@ void ShadowMinFilterPass::execute(fgvk::ExecuteContext& context) {
   const std::uint32_t layers =
       face_records(b.buffer(port::kShadowData)->size, std::min(atlas.layers, out.layers));
   // Paged: the steps' workgroups only for the records listed as changed (derived_pages.glsl).
-  const VkBuffer records = page_tables_
-                               ? records_.list(context, shadow_data, layers, groups, force_all)
-                               : VK_NULL_HANDLE;
+  const auto buffers = records_.step_buffers(context, layers, groups, force_all);
 
   dispatch_face_step(context, downsample_,
-                     {shadow_data, atlas.array_view, atlas.layout, coarse_.array_view(),
-                      VK_IMAGE_LAYOUT_GENERAL, tables, records},
+                     {buffers.shadow_data, atlas.array_view, atlas.layout, coarse_.array_view(),
+                      VK_IMAGE_LAYOUT_GENERAL, buffers.page_tables, buffers.records},
                      &constants, sizeof constants, groups, layers);
   coarse_.end_write(cmd);
   dispatch_face_step(context, separable_,
-                     {shadow_data, coarse_.array_view(), VK_IMAGE_LAYOUT_GENERAL, out.array_view,
-                      out.layout, tables, records},
+                     {buffers.shadow_data, coarse_.array_view(), VK_IMAGE_LAYOUT_GENERAL,
+                      out.array_view, out.layout, buffers.page_tables, buffers.records},
                      &constants, sizeof constants, groups, layers);
 }
 

@@ -69,7 +69,6 @@ void ShadowMomentsPass::execute(fgvk::ExecuteContext& context) {
   const auto& b = context.bindings;
   const auto& atlas = b.required_image(port::kAtlas);
   const auto& out = b.required_image(port::kMoments);
-  const VkBuffer shadow_data = b.buffer(port::kShadowData)->buffer;
   const VkCommandBuffer cmd = context.cmd;
 
   raw_.ensure(context.gpu, out.extent, out.layers, VK_FORMAT_R32G32B32A32_SFLOAT,
@@ -85,20 +84,17 @@ void ShadowMomentsPass::execute(fgvk::ExecuteContext& context) {
   const std::uint32_t layers =
       face_records(b.buffer(port::kShadowData)->size, std::min(atlas.layers, out.layers));
   // Paged: the steps' workgroups only for the records listed as changed (derived_pages.glsl).
-  const VkBuffer tables = page_tables_ ? b.buffer(port::kPageTables)->buffer : VK_NULL_HANDLE;
-  const VkBuffer records = page_tables_
-                               ? records_.list(context, shadow_data, layers, groups, force_all)
-                               : VK_NULL_HANDLE;
+  const auto buffers = records_.step_buffers(context, layers, groups, force_all);
 
   dispatch_face_step(context, convert_,
-                     {shadow_data, atlas.array_view, atlas.layout, raw_.array_view(),
-                      VK_IMAGE_LAYOUT_GENERAL, tables, records},
+                     {buffers.shadow_data, atlas.array_view, atlas.layout, raw_.array_view(),
+                      VK_IMAGE_LAYOUT_GENERAL, buffers.page_tables, buffers.records},
                      &constants, sizeof constants, groups, layers);
   raw_.end_write(cmd);
   dispatch_face_step(
       context, blur_,
-      {shadow_data, raw_.array_view(), VK_IMAGE_LAYOUT_GENERAL, out.array_view, out.layout, tables,
-       records},
+      {buffers.shadow_data, raw_.array_view(), VK_IMAGE_LAYOUT_GENERAL, out.array_view, out.layout,
+       buffers.page_tables, buffers.records},
       &constants, sizeof constants,
       params_.storage.technique == MomentTechnique::vssm ? FaceGroups{groups.span, 1, 1} : groups,
       layers);
