@@ -26,6 +26,7 @@
 #include "gbuffer/gbuffer_interface.h"
 #include "gbuffer/visibility_interface.h"
 #include "interface/shared/bvh.h"
+#include "interface/shared/derived_maps.h"
 #include "interface/shared/frame_uniforms.h"
 #include "interface/shared/glsl_cpp.h"
 #include "interface/shared/layer_palette.h"
@@ -68,6 +69,7 @@ const std::vector<std::string> kHeaders{
     "gbuffer/gbuffer_interface.h",
     "gbuffer/visibility_interface.h",
     "interface/shared/bvh.h",
+    "interface/shared/derived_maps.h",
     "interface/shared/frame_uniforms.h",
     "interface/shared/glsl_cpp.h",
     "interface/shared/layer_palette.h",
@@ -203,6 +205,10 @@ struct PushCase {
 const std::vector<PushCase>& push_cases() {
   static const std::vector<PushCase> kCases{
       {"tonemap/tonemap_interface.h", "tonemap/tonemap.frag", {}, sizeof(shared::TonemapPush)},
+      {"interface/shared/derived_maps.h",
+       "common/derived_list.comp",
+       {},
+       sizeof(shared::DerivedListPush)},
       {"colour_grade/colour_grade_interface.h", "colour_grade/colour_grade.comp", kGradeRgba16f,
        sizeof(shared::ColourGradePush)},
       {"deferred_lighting/deferred_lighting_interface.h",
@@ -299,6 +305,21 @@ struct BindingCase {
 const std::vector<BindingCase>& binding_cases() {
   static const std::vector<BindingCase> kCases{
       {"tonemap/tonemap_interface.h", "tonemap/tonemap.frag", {}, "hdr", shared::kTonemapHdr},
+      {"interface/shared/derived_maps.h",
+       "common/derived_list.comp",
+       {},
+       "Records",
+       shared::kDerivedRecords},
+      {"interface/shared/derived_maps.h",
+       "shadow_min_filter/min_separable.comp",
+       {{"PAGED", "1"}},
+       "PageTables",
+       shared::kDerivedPageTables},
+      {"interface/shared/derived_maps.h",
+       "shadow_moments/moments_blur.comp",
+       {{"MOMENTS_TECHNIQUE", "2"}, {"MOMENTS_FORMAT", "rgba32f"}, {"PAGED", "1"}},
+       "Records",
+       shared::kDerivedRecords},
       {"colour_grade/colour_grade_interface.h", "colour_grade/colour_grade.comp", kGradeRgba16f,
        "source_image", shared::kColourGradeSource},
       {"colour_grade/colour_grade_interface.h", "colour_grade/colour_grade.comp", kGradeRgba16f,
