@@ -12,6 +12,7 @@
 
 #include "../interface/shared/derived_maps.h"
 #include "../interface/shared/page_tables.h"
+#include "page_entry.glsl"
 
 layout(set = 0, binding = kDerivedPageTables) readonly buffer PageTables {
   uint page_tables[];
@@ -69,11 +70,7 @@ DerivedPaged derived_paged(uint record) {
 // z < 0 when it has no place (no page, or only a fallback tile: page_tables.h).
 ivec3 derived_page_place(DerivedPaged f, ivec2 page) {
   uint entry = page_tables[f.table + page.y * f.pages_x + page.x];
-  if ((entry & ANTUMBRA_PAGE_PLACED) == 0u) return ivec3(0, 0, -1);
-  const uint coord_mask = (1u << ANTUMBRA_PAGE_COORD_BITS) - 1u;
-  uvec2 at = uvec2(entry, entry >> ANTUMBRA_PAGE_ROW_SHIFT) & uvec2(coord_mask);
-  return ivec3(ivec2(at),
-               int((entry >> ANTUMBRA_PAGE_LAYER_SHIFT) & ((1u << ANTUMBRA_PAGE_LAYER_BITS) - 1u)));
+  return (entry & ANTUMBRA_PAGE_PLACED) == 0u ? ivec3(0, 0, -1) : page_entry_place(entry);
 }
 
 // The derived map's texel of derived face texel `t` (`per_page` derived texels to a page

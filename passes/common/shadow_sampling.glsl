@@ -74,6 +74,7 @@
 // face's page: no guard texels are needed. A needed page the pool had no place for reads
 // its face's fallback tile (page_fallback.glsl): a coarser level, never another face's.
 #include "../interface/shared/page_tables.h"
+#include "page_entry.glsl"
 #include "page_fallback.glsl"
 
 // The atlas texel of texel `t` of a page whose table entry is `entry` (`t` may be any face
@@ -83,11 +84,9 @@ ivec3 shadow_page_at(uint entry, ivec2 t) {
   if ((entry & ANTUMBRA_PAGE_PLACED) == 0u) {
     return entry == 0u ? ivec3(0, 0, -1) : page_fallback_at(entry, uvec2(t));
   }
-  const uint coord_mask = (1u << ANTUMBRA_PAGE_COORD_BITS) - 1u;
-  ivec2 page = ivec2(uvec2(entry, entry >> ANTUMBRA_PAGE_ROW_SHIFT) & uvec2(coord_mask));
-  int layer = int((entry >> ANTUMBRA_PAGE_LAYER_SHIFT) & ((1u << ANTUMBRA_PAGE_LAYER_BITS) - 1u));
+  ivec3 place = page_entry_place(entry);
   const int shift = int(ANTUMBRA_PAGE_SHIFT);
-  return ivec3((page << shift) + (t & ((1 << shift) - 1)), layer);
+  return ivec3((place.xy << shift) + (t & ((1 << shift) - 1)), place.z);
 }
 
 // The table entry of page `page` of a `texels`-wide face whose table starts at `table`.

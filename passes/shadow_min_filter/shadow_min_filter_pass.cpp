@@ -29,17 +29,17 @@ ShadowMinFilterPass::ShadowMinFilterPass(const fg::PlanPass& pass)
 void ShadowMinFilterPass::prepare(fgvk::PrepareContext& context) {
   // A paged atlas (its tables bound): the filtered map keeps the pool's layout, and the
   // steps walk each face's pages through its table (derived_pages.glsl).
-  page_tables_ = context.bindings.buffer(port::kPageTables) != nullptr;
+  const bool paged = context.bindings.buffer(port::kPageTables) != nullptr;
   std::vector<gpu::ShaderDefine> defines;
-  if (page_tables_) defines.push_back({"PAGED", "1"});
+  if (paged) defines.push_back({"PAGED", "1"});
   auto down = load_shader(context, "shadow_min_filter/min_downsample.comp", shader_files_, defines);
   auto separable =
       load_shader(context, "shadow_min_filter/min_separable.comp", shader_files_, defines);
-  downsample_ = build_compute_pipeline(context, down, face_step_bindings(page_tables_),
-                                       sizeof(ShadowMinFilterPush));
-  separable_ = build_compute_pipeline(context, separable, face_step_bindings(page_tables_),
+  downsample_ =
+      build_compute_pipeline(context, down, face_step_bindings(paged), sizeof(ShadowMinFilterPush));
+  separable_ = build_compute_pipeline(context, separable, face_step_bindings(paged),
                                       sizeof(ShadowMinFilterPush));
-  if (page_tables_) records_.prepare(context, shader_files_);
+  if (paged) records_.prepare(context, shader_files_);
 }
 
 void ShadowMinFilterPass::execute(fgvk::ExecuteContext& context) {

@@ -41,7 +41,6 @@ class ShadowMinFilterPass final : public fgvk::Pass {
   // barriers are the pass's own (graph resources get theirs from the plan).
   ScratchArray coarse_;
   VkImage filtered_for_ = VK_NULL_HANDLE;  // output image all faces were filtered into
-  bool page_tables_ = false;               // the atlas is paged
   DerivedRecordList records_;              // paged: the records to filter this frame
   ComputePipeline downsample_;
   ComputePipeline separable_;

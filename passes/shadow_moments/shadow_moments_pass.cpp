@@ -48,8 +48,8 @@ void ShadowMomentsPass::prepare(fgvk::PrepareContext& context) {
   };
   // A paged atlas (its tables bound): the map keeps the pool's layout, and the steps walk
   // each listed face's pages through its table (derived_pages.glsl); never vssm (a check).
-  page_tables_ = context.bindings.buffer(port::kPageTables) != nullptr;
-  if (page_tables_) defines.push_back({"PAGED", "1"});
+  const bool paged = context.bindings.buffer(port::kPageTables) != nullptr;
+  if (paged) defines.push_back({"PAGED", "1"});
   shader_files_.clear();
   auto convert =
       load_shader(context, "shadow_moments/moments_convert.comp", shader_files_, defines);
@@ -57,11 +57,11 @@ void ShadowMomentsPass::prepare(fgvk::PrepareContext& context) {
   auto blur = load_shader(
       context, sat ? "shadow_moments/moments_sat.comp" : "shadow_moments/moments_blur.comp",
       shader_files_, defines);
-  convert_ = build_compute_pipeline(context, convert, face_step_bindings(page_tables_),
+  convert_ = build_compute_pipeline(context, convert, face_step_bindings(paged),
                                     sizeof(ShadowMomentsPush));
-  blur_ = build_compute_pipeline(context, blur, face_step_bindings(page_tables_),
-                                 sizeof(ShadowMomentsPush));
-  if (page_tables_) records_.prepare(context, shader_files_);
+  blur_ =
+      build_compute_pipeline(context, blur, face_step_bindings(paged), sizeof(ShadowMomentsPush));
+  if (paged) records_.prepare(context, shader_files_);
   filtered_for_ = VK_NULL_HANDLE;  // new pipelines (a technique change): redo every face
 }
 

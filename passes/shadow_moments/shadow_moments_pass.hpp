@@ -46,7 +46,6 @@ class ShadowMomentsPass final : public fgvk::Pass {
   // so its barriers are the pass's own (graph resources get theirs from the plan).
   ScratchArray raw_;
   VkImage filtered_for_ = VK_NULL_HANDLE;  // output image every face was filtered into
-  bool page_tables_ = false;               // the atlas is paged
   DerivedRecordList records_;              // paged: the records to redo this frame
   ComputePipeline convert_;
   ComputePipeline blur_;  // the box prefilter, or for vssm the summed-area table

@@ -46,13 +46,9 @@ int moments_factor() {
 vec4 moments_page_texel(ShadowCoord c, ShadowLight l, ivec2 t, int factor) {
   int per_page = (1 << int(ANTUMBRA_PAGE_SHIFT)) / factor;
   uint entry = shadow_page_entry_of(c.pages, t / per_page);
-  if ((entry & ANTUMBRA_PAGE_PLACED) != 0u) {
-    const uint coord_mask = (1u << ANTUMBRA_PAGE_COORD_BITS) - 1u;
-    ivec2 place = ivec2(uvec2(entry, entry >> ANTUMBRA_PAGE_ROW_SHIFT) & uvec2(coord_mask));
-    int layer = int((entry >> ANTUMBRA_PAGE_LAYER_SHIFT) & ((1u << ANTUMBRA_PAGE_LAYER_BITS) - 1u));
-    return texelFetch(moments_map, ivec3(place * per_page + (t & (per_page - 1)), layer), 0);
-  }
-  ivec3 at = shadow_page_at(entry, t * factor);
+  ivec3 at = shadow_page_at(entry, t * factor);  // the block's first atlas texel
+  if ((entry & ANTUMBRA_PAGE_PLACED) != 0u)
+    return texelFetch(moments_map, ivec3(at.xy / factor, at.z), 0);
   return moments_encode(shadow_depth_fraction(l, at.z < 0 ? 1.0 : texelFetch(atlas, at, 0).r));
 }
 
