@@ -19,6 +19,7 @@ void AtlasPlanner::invalidate() {
     layer.shown = false;
     layer.cache_valid = false;
     layer.dynamic_dirty = false;
+    layer.dirty_pages.clear();
   }
 }
 
@@ -63,7 +64,7 @@ const AtlasFrame& AtlasPlanner::plan(const scene::Scene& scene, const glm::mat4&
                                      std::uint64_t geometry_version, std::uint32_t frame_index,
                                      const AtlasSettings& settings, const SceneMotion& motion) {
   begin_frame(scene, frame_index, settings);
-  mark_dynamic(motion);
+  mark_dynamic(motion, settings);
   claim_lights(scene, settings);
   place_claims(scene, settings);
   work_.clear();
@@ -128,17 +129,28 @@ void AtlasPlanner::begin_frame(const scene::Scene& scene, std::uint32_t frame_in
   }
 }
 
-// Layers whose contents a dynamic mesh entered or left are stale.
-void AtlasPlanner::mark_dynamic(const SceneMotion& motion) {
+// Layers whose contents a dynamic mesh entered or left are stale: with the GPU's
+// decision only the pages inside its old and new bounds (dirty_pages.hpp), else the face.
+void AtlasPlanner::mark_dynamic(const SceneMotion& motion, const AtlasSettings& settings) {
   if (motion.moved.empty()) return;
   // Records past owned_end_ are released: nothing valid to mark.
   const std::size_t end = std::min<std::size_t>(owned_end_, layers_.size());
   for (std::size_t i = 0; i < end; ++i) {
     LayerState& state = layers_[i];
     if (!state.valid || state.dynamic_dirty) continue;
-    state.dynamic_dirty = std::any_of(
-        motion.moved.begin(), motion.moved.end(),
-        [&](const auto& box) { return shadow_faces::box_may_touch(state.key.view_proj, box); });
+    for (const scene::Aabb& box : motion.moved) {
+      if (!shadow_faces::box_may_touch(state.key.view_proj, box)) continue;
+      if (!settings.gpu_decides) {
+        state.dynamic_dirty = true;
+        break;
+      }
+      const PageRect rect = box_pages(state.key.view_proj, state.key.resolution, box);
+      if (rect.empty()) continue;
+      const std::uint32_t pages_x =
+          (state.key.resolution + shared::kPageSize - 1u) >> shared::kPageShift;
+      state.dirty_pages.resize((pages_x * pages_x + 31u) / 32u, 0u);
+      rect.mark(pages_x, state.dirty_pages);
+    }
   }
 }
 
@@ -374,7 +386,8 @@ void AtlasPlanner::wish_light(const scene::Scene& scene, const Claim& claim,
     out_face.info = {i, face_info_y(face, layer), 0u, 0u};
     const LayerState& state = layers_[layer];
     const bool holds = state.valid && state.key == face_key(layer, geometry_version, work);
-    if ((work.visible & (1u << face)) != 0u && (!holds || state.dynamic_dirty)) {
+    const bool dirty = state.dynamic_dirty || !state.dirty_pages.empty();
+    if ((work.visible & (1u << face)) != 0u && (!holds || dirty)) {
       work.needed |= 1u << face;
       // Nothing of this face can be shown while it waits.
       if (!(state.valid && state.shown)) work.must = true;
@@ -548,6 +561,13 @@ void AtlasPlanner::plan_candidate(std::uint32_t layer, bool visible, const FaceK
     state.key = key;
     state.epoch = next_epoch_++;
     state.dynamic_dirty = false;
+    state.dirty_pages.clear();  // a new epoch: every page is drawn anew where needed
+  } else if (!state.dirty_pages.empty()) {
+    for (const std::uint32_t bits : state.dirty_pages) {
+      frame_.stats.dynamic_pages += static_cast<std::uint32_t>(std::popcount(bits));
+    }
+    frame_.dirty_pages.push_back({layer, std::move(state.dirty_pages)});
+    state.dirty_pages.clear();
   }
   frame_.epochs[layer] = state.epoch;
   if (!visible) {

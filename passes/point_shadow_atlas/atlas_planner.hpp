@@ -14,12 +14,14 @@
 #include <limits>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <glm/glm.hpp>
 
 #include "antumbra/scene/scene.hpp"
 #include "common/shadow_data.hpp"
+#include "dirty_pages.hpp"
 #include "face_packer.hpp"
 #include "face_resolution.hpp"
 
@@ -82,13 +84,15 @@ struct SceneMotion {
 enum class FaceUpdate : std::uint8_t { all, over_cache, fill_cache };
 
 struct AtlasStats {
-  std::uint32_t total = 0;        // faces of shadowed lights (6 point, 1 spot, 1-4 sun)
-  std::uint32_t culled = 0;       // not needed for the visible image
-  std::uint32_t rendered = 0;     // drawn this frame
-  std::uint32_t cached = 0;       // needed and still valid from an earlier frame
-  std::uint32_t candidates = 0;   // gpu_decides: visible faces handed to the GPU's decision
-  std::uint64_t texels = 0;       // of the faces drawn (each light's face size squared)
-  std::uint32_t dynamic = 0;      // drawn because dynamic meshes moved through them
+  std::uint32_t total = 0;       // faces of shadowed lights (6 point, 1 spot, 1-4 sun)
+  std::uint32_t culled = 0;      // not needed for the visible image
+  std::uint32_t rendered = 0;    // drawn this frame
+  std::uint32_t cached = 0;      // needed and still valid from an earlier frame
+  std::uint32_t candidates = 0;  // gpu_decides: visible faces handed to the GPU's decision
+  std::uint64_t texels = 0;      // of the faces drawn (each light's face size squared)
+  std::uint32_t dynamic = 0;     // drawn because dynamic meshes moved through them
+  // gpu_decides: pages handed to the GPU as dirty (dynamic meshes moved through them)
+  std::uint32_t dynamic_pages = 0;
   std::uint32_t over_cache = 0;   // drawn over their static cache (fill_cache included)
   std::uint32_t deferred = 0;     // needed but left for a later frame (budget)
   std::uint32_t forced = 0;       // drawn past the budget (never drawn, or too stale)
@@ -123,6 +127,13 @@ struct AtlasFrame {
   // Per layer: which contents it should hold. A new epoch whenever the face's key
   // changes, it is drawn (CPU decision) or cached contents are not allowed; 0: none.
   std::vector<std::uint32_t> epochs;
+  // gpu_decides: layers whose pages dynamic meshes moved through, at an epoch that stays:
+  // only those pages are drawn again (FaceRequest::dirty).
+  struct DirtyPages {
+    std::uint32_t layer = 0;
+    std::vector<std::uint32_t> bits;  // bit k: page k of the face (row-major)
+  };
+  std::vector<DirtyPages> dirty_pages;
   std::vector<std::string> unshadowed;  // casters left without a slot (atlas full)
   std::vector<DegradedLight> degraded;  // casters drawn smaller than wanted (atlas full)
   bool clear_all = false;  // the whole atlas has undefined contents (first frame, reload)
@@ -167,9 +178,11 @@ class AtlasPlanner {
     std::uint32_t epoch = 0;
     std::uint32_t resolution = 0;  // a light's first layer: its last choice (hysteresis)
     bool dynamic_dirty = false;    // dynamic meshes moved through it since it was drawn
-    bool shown = false;            // holds the face of its light's shown (last drawn) state
-    FaceKey wanted;                // last frame's key: a key that holds still is worth caching
-    bool cache_valid = false;      // the static cache holds the static meshes for cache_key
+    // gpu_decides: bits of the pages they moved through, not yet sent (empty: none)
+    std::vector<std::uint32_t> dirty_pages;
+    bool shown = false;        // holds the face of its light's shown (last drawn) state
+    FaceKey wanted;            // last frame's key: a key that holds still is worth caching
+    bool cache_valid = false;  // the static cache holds the static meshes for cache_key
     FaceKey cache_key;
     // A light's first layer: what it was last drawn with (shown while it waits for the
     // budget), whose it is, and for how many frames it has waited.
@@ -211,7 +224,7 @@ class AtlasPlanner {
   // Fills frame_.lights/faces with this frame's wish for a placed claim.
   void wish_light(const scene::Scene& scene, const Claim& claim, const glm::mat4& camera_view_proj,
                   std::uint64_t geometry_version, const AtlasSettings& settings, LightWork& work);
-  void mark_dynamic(const SceneMotion& motion);
+  void mark_dynamic(const SceneMotion& motion, const AtlasSettings& settings);
   void apply_budget(const AtlasSettings& settings);
   // Publishes a waiting light as it was last drawn.
   void keep_light(const LightWork& work);

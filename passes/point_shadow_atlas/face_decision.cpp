@@ -37,7 +37,7 @@ gpu::DescriptorSetLayoutBuilder decision_bindings(bool pool) {
   for (const std::uint32_t binding :
        {shared::kDecideShadowIn, shared::kDecideShadowOut, shared::kDecideRequests,
         shared::kDecideNeeded, shared::kDecideContent, shared::kDecidePages, shared::kDecideArgs,
-        shared::kDecideList, shared::kDecideStats}) {
+        shared::kDecideList, shared::kDecideStats, shared::kDecideDirty}) {
     b.storage_buffer(binding, VK_SHADER_STAGE_COMPUTE_BIT);
   }
   if (pool) {
@@ -190,6 +190,15 @@ void FaceDecision::ensure_buffers(fgvk::ExecuteContext& context, std::uint32_t l
   }
 }
 
+// Room in this slot for the page bits of `layers` dirty layers (FaceRequest::dirty).
+void FaceDecision::ensure_dirty(fgvk::ExecuteContext& context, Slot& slot, std::size_t layers) {
+  const VkDeviceSize bytes = VkDeviceSize{page_words_} * 4 * std::max<std::size_t>(layers, 1);
+  if (slot.dirty && slot.dirty.size() >= bytes) return;
+  slot.dirty = gpu::Buffer::create(
+      context.gpu, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, gpu::MemoryUsage::upload,
+      context.pass.name + ".dirtyPages." + std::to_string(context.frame.slot));
+}
+
 // The pool's buffers for `layers` records and layout.pool_pages pages: made anew (nothing
 // held) when either changes.
 void FaceDecision::ensure_pool(fgvk::ExecuteContext& context, std::uint32_t layers,
@@ -215,10 +224,21 @@ void FaceDecision::write_requests(Slot& slot, const AtlasFrame& frame,
     // As the rasteriser and the receivers size it (atlas_planner.hpp).
     const std::uint32_t side =
         layer < frame.faces.size() ? face_size(frame, layer) : layout.face_size;
-    out[layer] = {layer < frame.epochs.size() ? frame.epochs[layer] : 0u, 0u, side * side, side};
+    out[layer] = {layer < frame.epochs.size() ? frame.epochs[layer] : 0u, 0u, side * side, side,
+                  shared::kDirtyNone};
   }
   for (std::size_t i = 0; i < frame.render_layers.size(); ++i) {
     out[frame.render_layers[i]].record = static_cast<std::uint32_t>(i) + 1u;
+  }
+  // Each dirty layer's page bits, page_words_ uints (a face has at most page_slots_ pages).
+  auto* bits = reinterpret_cast<std::uint32_t*>(slot.dirty.mapped());
+  std::uint32_t at = 0;
+  for (const AtlasFrame::DirtyPages& dirty : frame.dirty_pages) {
+    if (dirty.layer >= std::min(frame.live_records, layers_)) continue;
+    out[dirty.layer].dirty = at + 1u;
+    for (std::uint32_t w = 0; w < page_words_; ++w) {
+      bits[at++] = w < dirty.bits.size() ? dirty.bits[w] : 0u;
+    }
   }
 }
 
@@ -278,6 +298,7 @@ void FaceDecision::bind(fgvk::ExecuteContext& context, const ComputePipeline& pi
       .storage_buffer(shared::kDecideArgs, args_)
       .storage_buffer(shared::kDecideList, list_)
       .storage_buffer(shared::kDecideStats, stats_)
+      .storage_buffer(shared::kDecideDirty, slot.dirty)
       .uniform_buffer(shared::kReceiverFrame, context.frame.frame_uniforms);
   if (pool_) {
     descriptors.storage_buffer(shared::kPoolTables, tables_)
@@ -305,6 +326,7 @@ void FaceDecision::record(fgvk::ExecuteContext& context, const AtlasFrame& frame
   // the graph's shadow data too, and the pool frees their pages (page_pool.glsl).
   live_ = std::min(frame.live_records, layers);
   Slot& slot = slots_[context.frame.slot];
+  ensure_dirty(context, slot, frame.dirty_pages.size());
   write_requests(slot, frame, layout);
   const VkCommandBuffer cmd = context.cmd;
   context.gpu.begin_label(cmd, context.pass.name + ".decide");

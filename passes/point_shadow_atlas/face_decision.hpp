@@ -118,11 +118,13 @@ class FaceDecision {
   struct Slot {
     gpu::Buffer requests;  // FaceRequest per layer
     gpu::Buffer readback;  // counters
+    gpu::Buffer dirty;     // page bits of the layers with dirty pages (FaceRequest::dirty)
     std::uint64_t frame_index = 0;
     bool written = false;
   };
   void ensure_buffers(fgvk::ExecuteContext& context, std::uint32_t layers,
                       const DecisionLayout& layout);
+  void ensure_dirty(fgvk::ExecuteContext& context, Slot& slot, std::size_t layers);
   void write_requests(Slot& slot, const AtlasFrame& frame, const DecisionLayout& layout) const;
   void reset(fgvk::ExecuteContext& context, const ShadowStaging& staging, const AtlasFrame& frame,
              const DecisionLayout& layout);

@@ -29,7 +29,15 @@ struct FaceRequest {
   uint record;  // 1 + the face's RasterFace record when it is a candidate, else 0
   uint texels;  // texels the face has (its width squared)
   uint size;    // its width in texels
+  // 1 + the first uint of its dirty pages in kDecideDirty (page_words uints: bit k, page
+  // k; dirty_pages.hpp), kDirtyNone without any: pages dynamic meshes moved through since
+  // they were drawn at the same epoch. The decision forgets that they hold the epoch, so
+  // the needed ones among them are drawn again and the pool frees the others; the rest of
+  // the face stays as it is.
+  uint dirty;
 };
+
+const uint kDirtyNone = 0;
 
 // Counters of shadow_face_decide.comp (uint each), read back for the report.
 const uint kStatDrawn = 0;
@@ -87,6 +95,8 @@ ANTUMBRA_BINDING(kDecideList, 7)
 ANTUMBRA_BINDING(kDecideStats, 8)     // uint[kStatCount]
 ANTUMBRA_BINDING(kReceiverDepth, 9)   // the G-buffer depth (sampler2D)
 ANTUMBRA_BINDING(kReceiverFrame, 10)  // FrameUniforms
+// page_words uints per layer that has dirty pages (FaceRequest::dirty), written by the CPU
+ANTUMBRA_BINDING(kDecideDirty, 18)
 
 ANTUMBRA_SHARED_END
 

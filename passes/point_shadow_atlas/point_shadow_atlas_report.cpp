@@ -110,6 +110,7 @@ fgvk::PassMessage PointShadowAtlasPass::face_stats(
                      {"receiverCulling", settings_.gpu_decides},
                      {"faceSizes", face_sizes()},
                      {"dynamic", s.dynamic},
+                     {"dynamicPages", s.dynamic_pages},
                      {"overStaticCache", s.over_cache},
                      {"deferred", s.deferred},
                      {"forced", s.forced},
@@ -132,6 +133,9 @@ fgvk::PassMessage PointShadowAtlasPass::face_stats(
   if (s.dynamic > 0 || s.over_cache > 0) {
     text += " (" + std::to_string(s.dynamic) + " for moved dynamic meshes, " +
             std::to_string(s.over_cache) + " over the static cache)";
+  }
+  if (s.dynamic_pages > 0) {
+    text += " (" + std::to_string(s.dynamic_pages) + " pages to redraw for moved dynamic meshes)";
   }
   if (s.deferred > 0 || s.forced > 0) {
     text += "; budget: " + std::to_string(s.deferred) + " waiting (at most " +

@@ -46,6 +46,9 @@ layout(std430, binding = kDecideList) writeonly buffer List {
 layout(std430, binding = kDecideStats) buffer Stats {
   uint stats[];
 };
+layout(std430, binding = kDecideDirty) readonly buffer Dirty {
+  uint dirty_bits[];
+};
 
 const uint kFaceVec4s = ANTUMBRA_SHADOW_FACE_VEC4S;  // ShadowFace: mat4 view_proj, uvec4 info
 
@@ -141,6 +144,19 @@ uint mapped_bits(uint w, uint draw) {
   return mapped;
 }
 #endif
+
+// Pages dynamic meshes moved through since they were drawn (FaceRequest::dirty): they no
+// longer hold the epoch's depth, nor do their fallback blocks, so a needed one is drawn
+// again this frame (into its pool page, which it keeps) and the pool frees the others
+// (shadow_pool_publish.comp); the face's other pages stay as they are.
+void forget_dirty_pages() {
+  uint base = content_base(g_layer);
+  for (uint w = 0u; w < page_words; ++w) {
+    uint keep = ~dirty_bits[g_request.dirty - 1u + w];
+    content[base + 1u + w] &= keep;
+    content[base + 1u + page_words + w] &= keep;
+  }
+}
 
 // What this frame draws and fills of a candidate's pages (bits per word, counted), and
 // whether the pages anyone reads (the needed ones, all when none is) hold the face's
@@ -280,6 +296,7 @@ void main() {
     for (uint w = 0u; w < page_words; ++w) content[content_base(i) + 1u + page_words + w] = 0u;
   }
 #endif
+  if (g_held && g_request.dirty != kDirtyNone) forget_dirty_pages();
   g_any_needed = receivers == 0u;
   for (uint w = 0u; w < page_words && !g_any_needed; ++w) {
     g_any_needed = needed[i * page_words + w] != 0u;

@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <bit>
+#include <set>
+#include <utility>
 
 #include <gtest/gtest.h>
 #include <glm/gtc/matrix_transform.hpp>
@@ -208,5 +210,119 @@ TEST(DynamicCasters, BudgetCapsTheFacesDrawnPerFrame) {
     const auto& frame = planner.plan(s, camera_of(s), 1, f, st);
     EXPECT_LE(frame.stats.rendered, 12u + frame.stats.forced) << "frame " << f;
     EXPECT_GT(frame.stats.deferred, 0u);
+  }
+}
+
+namespace {
+
+// The pages of a 1024-texel face (8 x 8 pages) that the sampled points of `box` project to.
+std::set<std::pair<std::uint32_t, std::uint32_t>> sampled_pages(const glm::mat4& view_proj,
+                                                                const scene::Aabb& box) {
+  std::set<std::pair<std::uint32_t, std::uint32_t>> out;
+  constexpr int kSteps = 12;
+  for (int i = 0; i <= kSteps; ++i) {
+    for (int j = 0; j <= kSteps; ++j) {
+      for (int k = 0; k <= kSteps; ++k) {
+        const glm::vec3 t = glm::vec3(i, j, k) / static_cast<float>(kSteps);
+        const glm::vec4 clip = view_proj * glm::vec4(glm::mix(box.min, box.max, t), 1.0f);
+        const glm::vec2 uv = glm::vec2(clip) / clip.w * 0.5f + 0.5f;
+        if (clip.w <= 0.0f || glm::any(glm::lessThan(uv, glm::vec2(0.0f))) ||
+            glm::any(glm::greaterThanEqual(uv, glm::vec2(1.0f)))) {
+          continue;
+        }
+        const glm::uvec2 page = glm::uvec2(uv * 1024.0f) / 128u;
+        out.emplace(page.x, page.y);
+      }
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+// A box the face sees covers a rectangle of its pages around every point of it; a box
+// beside the face or beyond its far plane none; a box across the light's plane every page.
+TEST(DynamicCasters, BoxPagesHoldEveryPageTheBoxProjectsTo) {
+  namespace sf = passes::shadow_faces;
+  const glm::vec3 light{0.0f, 3.0f, 0.0f};
+  const glm::mat4 down = sf::face_view_proj(light, 3, 0.05f, 6.0f);  // -Y
+  const scene::Aabb crate{{0.5f, 0.5f, -0.3f}, {1.1f, 1.1f, 0.3f}};
+  const passes::PageRect rect = passes::box_pages(down, 1024, crate);
+  ASSERT_FALSE(rect.empty());
+  EXPECT_LT(rect.pages(), 64u / 4) << "a crate 2 m below is a small part of the face";
+  const auto pages = sampled_pages(down, crate);
+  ASSERT_FALSE(pages.empty());
+  for (const auto& [x, y] : pages) {
+    EXPECT_TRUE(x >= rect.first.x && x <= rect.last.x && y >= rect.first.y && y <= rect.last.y)
+        << "page " << x << ", " << y;
+  }
+  // Not much more than those: the rectangle around them, a texel wider.
+  std::uint32_t low_x = 99, high_x = 0;
+  for (const auto& page : pages) {
+    low_x = std::min(low_x, page.first);
+    high_x = std::max(high_x, page.first);
+  }
+  EXPECT_LE(rect.last.x - rect.first.x, high_x - low_x + 1u);
+  EXPECT_TRUE(passes::box_pages(down, 1024, {{-0.3f, 3.5f, -0.3f}, {0.3f, 4.0f, 0.3f}}).empty())
+      << "above the light: behind its -Y face";
+  EXPECT_TRUE(passes::box_pages(down, 1024, {{5.0f, 2.0f, -0.3f}, {5.6f, 2.5f, 0.3f}}).empty())
+      << "beside the face";
+  EXPECT_TRUE(passes::box_pages(down, 1024, {{-0.3f, -4.0f, -0.3f}, {0.3f, -3.5f, 0.3f}}).empty())
+      << "beyond the far plane, 6 m down";
+  const passes::PageRect across = passes::box_pages(down, 1024, {{-1, 2.5f, -1}, {1, 3.5f, 1}});
+  EXPECT_EQ(across.pages(), 64u) << "around the light: every page";
+  EXPECT_EQ(passes::box_pages(down, 100, crate).pages(), 1u) << "a face of one page";
+  std::vector<std::uint32_t> bits(2, 0u);  // 8 x 8 pages
+  passes::PageRect{{1u, 2u}, {3u, 3u}}.mark(8, bits);
+  passes::PageRect{}.mark(8, bits);
+  EXPECT_EQ(bits[0], 0xEu << 16 | 0xEu << 24);
+  EXPECT_EQ(bits[1], 0u);
+}
+
+// With the GPU's decision (compute rasteriser, receiver culling) a moved crate keeps its
+// faces' epochs and names only the pages around its old and new bounds for them, which the
+// decision draws again (FaceRequest::dirty); the far light's faces are untouched.
+TEST(DynamicCasters, AMovedCrateDirtiesOnlyThePagesAroundItWhenTheGpuDecides) {
+  scene::Scene s = crate_scene();
+  AtlasPlanner planner;
+  AtlasSettings st = settings();
+  st.face_size = 1024;
+  st.cull_faces = false;
+  st.gpu_decides = true;
+  planner.plan(s, camera_of(s), 1, 0, st);
+  const std::vector<std::uint32_t> epochs = planner.plan(s, camera_of(s), 1, 1, st).epochs;
+  EXPECT_TRUE(planner.last().dirty_pages.empty());
+  const Move m = move_crate(s, {0.3f, 0.0f, 0.0f});
+  const auto& moved = planner.plan(s, camera_of(s), 1, 2, st, m.motion());
+  EXPECT_EQ(moved.epochs, epochs) << "no face is drawn anew";
+  ASSERT_FALSE(moved.dirty_pages.empty());
+  std::uint32_t pages = 0;
+  bool below = false;
+  for (const auto& [layer, bits] : moved.dirty_pages) {
+    EXPECT_LT(layer, 6u) << "the far light's faces never see the crate";
+    ASSERT_EQ(bits.size(), 2u) << "8 x 8 pages";
+    const std::uint32_t count = std::popcount(bits[0]) + std::popcount(bits[1]);
+    pages += count;
+    EXPECT_LT(count, 64u) << "layer " << layer << ": part of its face";
+    if (layer == 3u) {  // -Y looks straight at it: both boxes' pages
+      below = true;
+      const glm::mat4& view_proj = moved.faces[layer].view_proj;
+      for (const scene::Aabb& box : m.moved) {
+        for (const auto& [x, y] : sampled_pages(view_proj, box)) {
+          const std::uint32_t k = y * 8 + x;
+          EXPECT_NE(bits[k / 32] & (1u << (k % 32)), 0u) << "page " << x << ", " << y;
+        }
+      }
+    }
+  }
+  EXPECT_TRUE(below);
+  EXPECT_EQ(moved.stats.dynamic_pages, pages);
+  EXPECT_TRUE(planner.plan(s, camera_of(s), 1, 3, st, {}).dirty_pages.empty())
+      << "sent once: nothing moved since";
+  // The lamp moves too: its faces take new epochs (every page anew), no dirty pages.
+  s.lights[0].position.x += 0.1f;
+  const Move again = move_crate(s, {0.3f, 0.0f, 0.0f});
+  for (const auto& entry : planner.plan(s, camera_of(s), 1, 4, st, again.motion()).dirty_pages) {
+    EXPECT_GE(entry.layer, 6u);
   }
 }

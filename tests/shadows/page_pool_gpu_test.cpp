@@ -13,6 +13,7 @@
 #include <fstream>
 #include <functional>
 #include <map>
+#include <optional>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -191,6 +192,18 @@ void main() {
   }
 };
 
+// Face record `record` of the shadow data `data` and its light; none without an owner.
+std::optional<std::pair<passes::ShadowFace, passes::ShadowLight>> owned_face(
+    const std::vector<std::byte>& data, std::uint32_t record) {
+  passes::ShadowFace face;
+  std::memcpy(&face, data.data() + passes::kShadowFacesOffset + record * sizeof face, sizeof face);
+  if (face.info.x >= passes::kMaxShadowLights) return std::nullopt;
+  passes::ShadowLight light;
+  std::memcpy(&light, data.data() + passes::kShadowLightsOffset + face.info.x * sizeof light,
+              sizeof light);
+  return std::pair{face, light};
+}
+
 // The brightness of every pixel of an rgba16f image.
 std::vector<float> luminance(const std::vector<std::uint16_t>& hdr) {
   std::vector<float> out;
@@ -338,13 +351,9 @@ TEST_F(PagePoolGpuTest, TheMinFilterFiltersEveryPlacedPageThroughItsTable) {
   std::map<std::uint32_t, std::vector<float>> min_layers;
   std::size_t checked = 0, wrong = 0, spread = 0, near = 0;
   for (std::uint32_t record = 0; record < 96; ++record) {
-    passes::ShadowFace face;
-    std::memcpy(&face, data.data() + passes::kShadowFacesOffset + record * sizeof face,
-                sizeof face);
-    if (face.info.x >= passes::kMaxShadowLights) continue;
-    passes::ShadowLight light;
-    std::memcpy(&light, data.data() + passes::kShadowLightsOffset + face.info.x * sizeof light,
-                sizeof light);
+    const auto owned = owned_face(data, record);
+    if (!owned) continue;
+    const auto& [face, light] = *owned;
     ASSERT_LT(light.projection.z, 0.0f) << "every light is paged";
     const auto texels = static_cast<std::uint32_t>(light.projection.y);
     const std::uint32_t* table = tables.data() + (face.info.y >> 3);
@@ -548,6 +557,123 @@ TEST_F(PagePoolGpuTest, AMovingCasterRedrawsItsFacesPagesToAFreshRendersImage) {
   load_desc(pool_graph("data/graphs/hard.json", true));
   pool_frame();
   EXPECT_EQ(read_hdr(), image) << "the pages drawn for the caster hold it where it is";
+}
+
+namespace {
+
+// Where a face (world -> clip `view_proj`, `size` texels) may see `box`, in texels, two
+// wider each side: x, y first texel, z, w last; the whole face when the box lies across
+// the light's plane; x > z when the face cannot see it.
+glm::ivec4 seen_texels(const glm::mat4& view_proj, std::uint32_t size, const scene::Aabb& box) {
+  glm::vec2 low(1e9f), high(-1e9f);
+  int behind = 0;
+  for (int i = 0; i < 8; ++i) {
+    const glm::vec3 p{(i & 1) != 0 ? box.max.x : box.min.x, (i & 2) != 0 ? box.max.y : box.min.y,
+                      (i & 4) != 0 ? box.max.z : box.min.z};
+    const glm::vec4 clip = view_proj * glm::vec4(p, 1.0f);
+    if (clip.w <= 0.0f) {
+      ++behind;
+      continue;
+    }
+    const glm::vec2 texel = (glm::vec2(clip) / clip.w * 0.5f + 0.5f) * static_cast<float>(size);
+    low = glm::min(low, texel);
+    high = glm::max(high, texel);
+  }
+  const int last = static_cast<int>(size) - 1;
+  if (behind == 8) return {1, 1, 0, 0};
+  if (behind > 0) return {0, 0, last, last};
+  const glm::ivec2 first = glm::max(glm::ivec2(glm::floor(low)) - 2, glm::ivec2(0));
+  const glm::ivec2 end = glm::min(glm::ivec2(glm::floor(high)) + 2, glm::ivec2(last));
+  return {first, end};
+}
+
+}  // namespace
+
+// A dynamic caster moving redraws only the pool pages inside its old and new bounds as
+// its faces see them (the planner's dirty pages, FaceRequest::dirty), not every page of
+// every face it touches: a test pattern written into the other placed pages of those
+// faces survives the frame it moves on. (That the redrawn pages hold it where it is, the
+// test above checks against a fresh render.)
+TEST_F(PagePoolGpuTest, AMovedCasterRedrawsOnlyThePagesInsideItsOldAndNewBounds) {
+  auto loaded = scene::load_scene_file((source_dir() / "data/scenes/atrium-dynamic.json").string());
+  ASSERT_TRUE(loaded.ok()) << loaded.diagnostics().to_text();
+  scene_ = std::move(loaded.value());
+  load_desc(pool_graph("data/graphs/hard.json", true));
+  pool_frame();
+  pool_frame();
+  // Each dynamic mesh's bounds over the frames around the next one.
+  std::vector<scene::Aabb> swept;
+  for (std::size_t m = 0; m < scene_.meshes.size(); ++m) {
+    if (!scene_.meshes[m].dynamic) continue;
+    scene::Aabb box;
+    for (std::uint64_t f = frames_->frame_number(); f < frames_->frame_number() + 4; ++f) {
+      scene::Scene at = scene_;
+      scene::animate_objects(at, f == 0 ? 0 : f - 1);
+      box.expand(at.meshes[m].bounds.min);
+      box.expand(at.meshes[m].bounds.max);
+    }
+    swept.push_back(box);
+  }
+  ASSERT_FALSE(swept.empty());
+  const auto data = read_shadow_data();
+  const std::vector<std::uint32_t> tables = read_tables();
+  std::vector<std::uint32_t> pattern;  // pool pages: layer x kPagesPerLayer + row x side + column
+  std::size_t in_touched_faces = 0;
+  for (std::uint32_t record = 0; record < 96; ++record) {
+    const auto owned = owned_face(data, record);
+    if (!owned) continue;
+    const auto& [face, light] = *owned;
+    const auto texels = static_cast<std::uint32_t>(light.projection.y);
+    const std::uint32_t pages_x = (texels + 127) / 128;
+    std::vector<glm::ivec4> seen;
+    for (const scene::Aabb& box : swept) {
+      const glm::ivec4 r = seen_texels(face.view_proj, texels, box);
+      if (r.x <= r.z && r.y <= r.w) seen.push_back(r);
+    }
+    const std::uint32_t* table = tables.data() + (face.info.y >> 3);
+    for (std::uint32_t k = 0; k < pages_x * pages_x; ++k) {
+      const std::uint32_t entry = table[k];
+      if ((entry & 0x80000000u) == 0u) continue;
+      const glm::ivec2 first = glm::ivec2(k % pages_x, k / pages_x) * 128;
+      const glm::ivec2 last = first + 127;
+      const bool crossed = std::any_of(seen.begin(), seen.end(), [&](const glm::ivec4& r) {
+        return first.x <= r.z && last.x >= r.x && first.y <= r.w && last.y >= r.y;
+      });
+      if (crossed) continue;
+      pattern.push_back(((entry >> 10) & 0xFFFFFu) * kPagesPerLayer +
+                        ((entry >> 5) & 31u) * (kPoolFace / 128) + (entry & 31u));
+      if (!seen.empty()) ++in_touched_faces;
+    }
+  }
+  ASSERT_GT(in_touched_faces, 0u) << "faces the caster touches have pages away from it";
+  write_pattern(pattern, kPoolFace / 128);
+  const PoolCounts moved = pool_frame();
+  EXPECT_GT(moved.drawn, 0u) << "the pages the caster crosses are drawn again";
+  std::map<std::uint32_t, std::vector<float>> layers;
+  std::size_t survived = 0;
+  for (const std::uint32_t page : pattern) {
+    const std::uint32_t layer = page / kPagesPerLayer;
+    auto it = layers.find(layer);
+    if (it == layers.end()) {
+      std::vector<float> texels(std::size_t{kPoolFace} * kPoolFace);
+      read_raw("atlas", VK_IMAGE_ASPECT_COLOR_BIT, layer, {kPoolFace, kPoolFace}, 4, texels.data());
+      it = layers.emplace(layer, std::move(texels)).first;
+    }
+    const glm::uvec2 corner = glm::uvec2(page % kPagesPerLayer % (kPoolFace / 128),
+                                         page % kPagesPerLayer / (kPoolFace / 128)) *
+                              128u;
+    bool zero = true;
+    for (std::uint32_t y = 0; y < 128 && zero; ++y) {
+      for (std::uint32_t x = 0; x < 128 && zero; ++x) {
+        zero = it->second[std::size_t{corner.y + y} * kPoolFace + corner.x + x] == 0.0f;
+      }
+    }
+    if (zero) ++survived;
+  }
+  std::printf(
+      "moved caster: %u pages drawn; %zu pages away from it kept (%zu in faces it touches)\n",
+      moved.drawn, survived, in_touched_faces);
+  EXPECT_EQ(survived, pattern.size()) << "no page away from the caster is drawn again";
 }
 
 // Settings the pool cannot work with are compiler errors at the parameter or port (a pool
