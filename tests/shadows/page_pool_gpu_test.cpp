@@ -676,6 +676,46 @@ TEST_F(PagePoolGpuTest, AMovedCasterRedrawsOnlyThePagesInsideItsOldAndNewBounds)
   EXPECT_EQ(survived, pattern.size()) << "no page away from the caster is drawn again";
 }
 
+// The district's 1024 lights on data/graphs/page-pool.json as shipped, from the scene's
+// camera: every light has its six faces in the pool (in squares, 2046 whole-face layers
+// held 341 lights: the 21 halls nearest the camera), and the lights past the 341st cast
+// shadows one can see. Taking their shadows away lights up pixels (a third of those all
+// the shadows cover at 160x90: the far halls are small on screen) and darkens none.
+TEST_F(PagePoolGpuTest, TheDistrictsLightsPastThe341stCastVisibleShadows) {
+  auto loaded = scene::load_scene_file((source_dir() / "data/scenes/district.json").string());
+  ASSERT_TRUE(loaded.ok()) << loaded.diagnostics().to_text();
+  scene_ = std::move(loaded.value());
+  ASSERT_EQ(scene_.lights.size(), 1024u);
+  auto document = base::load_json_file((source_dir() / "data/graphs/page-pool.json").string());
+  ASSERT_TRUE(document.ok());
+  auto graph = fg::parse_graph(document.value());
+  ASSERT_TRUE(graph.ok()) << graph.diagnostics().to_text();
+  load_desc(graph.value());
+  const auto image_with_shadows = [&](std::size_t first, std::size_t end) {
+    for (std::size_t i = 0; i < scene_.lights.size(); ++i) {
+      scene_.lights[i].casts_shadows = i < first || i >= end;
+    }
+    face_stats_frame();
+    const base::Json stats = face_stats_frame();
+    EXPECT_EQ(stats["pool"]["missing"].get<std::uint32_t>(), 0u);
+    return std::pair{luminance(read_hdr()), stats["total"].get<std::uint32_t>()};
+  };
+  const auto [shadowed, faces] = image_with_shadows(0, 0);
+  EXPECT_EQ(faces, 6144u) << "six faces for every light";
+  const auto [past, past_faces] = image_with_shadows(341, 1024);
+  EXPECT_EQ(past_faces, 341u * 6u);
+  const auto none = image_with_shadows(0, 1024).first;
+  const auto [darker, lighter] = darker_lighter(past, shadowed);
+  const auto all = darker_lighter(none, shadowed).second;
+  std::printf(
+      "district: %zu pixels lighter without the shadows of lights 342-1024 (%zu darker), %zu "
+      "without any shadow, of %zu\n",
+      lighter, darker, all, shadowed.size());
+  EXPECT_GE(lighter, 30u) << "their shadows covered those pixels";
+  EXPECT_GT(lighter * 5, all) << "a good part of all the shadows seen";
+  EXPECT_EQ(darker, 0u);
+}
+
 // Settings the pool cannot work with are compiler errors at the parameter or port (a pool
 // no larger than its fallback tiles among them), and a reader of the paged atlas must bind
 // its tables.
