@@ -192,7 +192,17 @@ const fg::ParamTable<AtlasViewParams>& AtlasViewPass::param_table() {
                 .min = 0.0,
                 .max = 64.0,
                 .description = "Grid columns; 0 picks the count that gives the largest cells."},
-               &AtlasViewParams::columns);
+               &AtlasViewParams::columns)
+          .add({.name = "pool",
+                .type = fg::ParamType::boolean,
+                .default_value = false,
+                .description =
+                    "With a paged atlas (pageTables and shadowData bound): its layers as they "
+                    "lie in memory, a cell per layer, each 128^2 page tinted with the colour of "
+                    "the light that owns it (the layer palette by light index) and shaded by "
+                    "depth, pages of fallback tiles amber, pages no table names near black. "
+                    "Off: each face through its table."},
+               &AtlasViewParams::pool);
   return kTable;
 }
 

@@ -29,6 +29,10 @@ ANTUMBRA_BINDING(kAtlasViewShadowData, 1)
 ANTUMBRA_BINDING(kAtlasViewOut, 2)
 // SHADOW_PAGE_TABLES: a paged atlas's tables (interface/shared/page_tables.h)
 ANTUMBRA_BINDING(kAtlasViewPageTables, 3)
+// POOL_VIEW: per pool page, 1 + the light that owns it, kAtlasPoolTiles for a page of
+// fallback tiles, 0 for none (atlas_pool_owners.comp writes it from the tables)
+ANTUMBRA_BINDING(kAtlasViewOwners, 4)
+const uint kAtlasPoolTiles = 0xFFFFFFFFu;
 // cascade_view.comp
 ANTUMBRA_BINDING(kCascadeViewFrame, 0)
 ANTUMBRA_BINDING(kCascadeViewShadowData, 1)
@@ -61,8 +65,19 @@ ANTUMBRA_PUSH_CONSTANTS(AtlasViewPush) {
   uint first_face;
   uint face_count;
   uint columns;
-  uint cell;    // cell size in output pixels
-  uint layers;  // array layers of the atlas
+  uint cell;       // cell size in output pixels
+  uint layers;     // array layers of the atlas
+  uint pool_side;  // POOL_VIEW: pages per side of a layer (a cell per layer)
+};
+#endif
+
+// atlas_pool_owners.comp (atlas-view's `pool`): one thread per page-table word.
+#if defined(__cplusplus) || defined(ANTUMBRA_ATLAS_POOL_SHADER)
+const uint kAtlasPoolGroup = 64;
+ANTUMBRA_PUSH_CONSTANTS(AtlasPoolPush) {
+  uint table_words;  // words of the page tables read (records x side^2)
+  uint side;         // pages per side of a layer
+  uint pages;        // pool pages: layers x side^2 (the owners' length)
 };
 #endif
 

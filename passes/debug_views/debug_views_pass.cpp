@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <cmath>
 
+#include "antumbra/gpu/commands.hpp"
 #include "antumbra/gpu/context.hpp"
 #include "antumbra/gpu/pipelines.hpp"
 #include "common/frame_resources.hpp"
 #include "common/ports.hpp"
 #include "common/shadow_data.hpp"
 #include "debug_views_interface.h"
+#include "interface/shared/page_tables.h"
 
 namespace antumbra::passes {
 namespace {
@@ -107,13 +109,67 @@ void AtlasViewPass::prepare(fgvk::PrepareContext& context) {
   // without it the view shows the pool's layers as they are.
   page_tables_ = linearise_ && context.bindings.buffer(port::kPageTables) != nullptr;
   if (page_tables_) defines.push_back({"SHADOW_PAGE_TABLES", "1"});
+  pool_view_ = page_tables_ && params_.pool;
+  if (pool_view_) defines.push_back({"POOL_VIEW", "1"});
   auto shader = load_shader(context, "debug_views/atlas_view.comp", shader_files_, defines);
   gpu::DescriptorSetLayoutBuilder builder;
   builder.combined_image_sampler(shared::kAtlasViewAtlas, kCompute);
   if (linearise_) builder.storage_buffer(shared::kAtlasViewShadowData, kCompute);
   if (page_tables_) builder.storage_buffer(shared::kAtlasViewPageTables, kCompute);
+  if (pool_view_) builder.storage_buffer(shared::kAtlasViewOwners, kCompute);
   builder.storage_image(shared::kAtlasViewOut, kCompute);
   compute_ = build_compute_pipeline(context, shader, builder, sizeof(AtlasViewPush));
+  if (!pool_view_) return;
+  auto owners = load_shader(context, "debug_views/atlas_pool_owners.comp", shader_files_);
+  gpu::DescriptorSetLayoutBuilder owner_bindings;
+  owner_bindings.storage_buffer(shared::kAtlasViewShadowData, kCompute)
+      .storage_buffer(shared::kAtlasViewPageTables, kCompute)
+      .storage_buffer(shared::kAtlasViewOwners, kCompute);
+  owners_pipeline_ =
+      build_compute_pipeline(context, owners, owner_bindings, sizeof(shared::AtlasPoolPush));
+}
+
+// Which light owns each pool page, from the published tables (atlas_pool_owners.comp):
+// cleared, then scattered, each step after the last frame's reads of the buffer.
+void AtlasViewPass::record_owners(fgvk::ExecuteContext& context, std::uint32_t layers,
+                                  std::uint32_t side) {
+  const auto& b = context.bindings;
+  const VkCommandBuffer cmd = context.cmd;
+  const std::uint32_t pages = layers * side * side;
+  const VkDeviceSize bytes = VkDeviceSize{std::max(pages, 1u)} * 4;
+  if (!owners_ || owners_.size() < bytes) {
+    owners_ = gpu::Buffer::create(
+        context.gpu, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+        gpu::MemoryUsage::gpu_only, context.pass.name + ".poolOwners");
+  }
+  gpu::buffer_barrier(cmd, owners_.handle(), VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                      VK_ACCESS_2_SHADER_STORAGE_READ_BIT, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+                      VK_ACCESS_2_TRANSFER_WRITE_BIT);
+  vkCmdFillBuffer(cmd, owners_.handle(), 0, VK_WHOLE_SIZE, 0u);
+  gpu::buffer_barrier(cmd, owners_.handle(), VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+                      VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                      VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+  const auto& tables = *b.buffer(port::kPageTables);
+  const std::uint32_t records = face_records(b.buffer(port::kShadowData)->size, layers);
+  const auto table_words = static_cast<std::uint32_t>(
+      std::min<VkDeviceSize>(VkDeviceSize{records} * side * side, tables.size / 4));
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, owners_pipeline_.pipeline);
+  gpu::PushDescriptors()
+      .storage_buffer(shared::kAtlasViewShadowData, b.buffer(port::kShadowData)->buffer)
+      .storage_buffer(shared::kAtlasViewPageTables, tables.buffer)
+      .storage_buffer(shared::kAtlasViewOwners, owners_)
+      .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, owners_pipeline_.layout);
+  const shared::AtlasPoolPush push{table_words, side, pages};
+  vkCmdPushConstants(cmd, owners_pipeline_.layout, kCompute, 0, sizeof push, &push);
+  // Groups along x up to the device limit, the rest spilled into y.
+  constexpr std::uint32_t kMaxGroupsX = 65535;
+  const std::uint32_t groups =
+      std::max((table_words + shared::kAtlasPoolGroup - 1) / shared::kAtlasPoolGroup, 1u);
+  const std::uint32_t x = std::min(groups, kMaxGroupsX);
+  vkCmdDispatch(cmd, x, (groups + x - 1) / x, 1);
+  gpu::buffer_barrier(cmd, owners_.handle(), VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                      VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                      VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
 }
 
 void AtlasViewPass::execute(fgvk::ExecuteContext& context) {
@@ -122,8 +178,13 @@ void AtlasViewPass::execute(fgvk::ExecuteContext& context) {
   const auto& view = b.required_image(port::kView);
   const auto first = params_.first_face;
   // With shadowData: face records (faces smaller than a layer share layers), else layers.
-  const std::uint32_t shown =
-      linearise_ ? face_records(b.buffer(port::kShadowData)->size, atlas.layers) : atlas.layers;
+  const std::uint32_t side = atlas.extent.width >> ANTUMBRA_PAGE_SHIFT;
+  if (pool_view_) record_owners(context, atlas.layers, side);
+  // With shadowData: face records (faces smaller than a layer share layers), else layers;
+  // the pool view shows layers.
+  const std::uint32_t shown = linearise_ && !pool_view_
+                                  ? face_records(b.buffer(port::kShadowData)->size, atlas.layers)
+                                  : atlas.layers;
   const std::uint32_t available = shown > first ? shown - first : 1u;
   const std::uint32_t faces = std::min(params_.faces, available);
   std::uint32_t columns = 1;
@@ -140,9 +201,10 @@ void AtlasViewPass::execute(fgvk::ExecuteContext& context) {
   if (page_tables_) {
     descriptors.storage_buffer(shared::kAtlasViewPageTables, b.buffer(port::kPageTables)->buffer);
   }
+  if (pool_view_) descriptors.storage_buffer(shared::kAtlasViewOwners, owners_);
   descriptors.storage_image(shared::kAtlasViewOut, view.view, view.layout)
       .push(context.gpu, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, compute_.layout);
-  const AtlasViewPush constants{first, faces, columns, cell, shown};
+  const AtlasViewPush constants{first, faces, columns, cell, shown, side};
   vkCmdPushConstants(cmd, compute_.layout, kCompute, 0, sizeof constants, &constants);
   dispatch_groups(cmd, view.extent, ANTUMBRA_IMAGE_GROUP);
 }

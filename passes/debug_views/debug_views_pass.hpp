@@ -13,6 +13,7 @@
 
 #include "antumbra/fg/param_table.hpp"
 #include "antumbra/fgvk/pass.hpp"
+#include "antumbra/gpu/resources.hpp"
 #include "common/pass_support.hpp"
 
 namespace antumbra::passes {
@@ -64,6 +65,7 @@ struct AtlasViewParams {
   std::uint32_t first_face = 0;
   std::uint32_t faces = 24;
   std::uint32_t columns = 0;  // 0: chosen from the view's aspect
+  bool pool = false;          // a paged atlas's layers as they lie, pages tinted by owner
 };
 
 class AtlasViewPass final : public fgvk::Pass {
@@ -80,7 +82,11 @@ class AtlasViewPass final : public fgvk::Pass {
   AtlasViewParams params_;
   bool linearise_ = false;
   bool page_tables_ = false;  // `pageTables` bound (with shadowData): faces through their tables
+  bool pool_view_ = false;    // `pool` over a paged atlas: its layers, pages by owner
   ComputePipeline compute_;
+  ComputePipeline owners_pipeline_;  // atlas_pool_owners.comp
+  gpu::Buffer owners_;               // per pool page (kAtlasViewOwners)
+  void record_owners(fgvk::ExecuteContext& context, std::uint32_t layers, std::uint32_t side);
   std::vector<std::string> shader_files_;
 };
 

@@ -28,6 +28,7 @@
 #include "antumbra/gpu/resources.hpp"
 
 #include "atlas_gpu_fixture.hpp"
+#include "debug_views/debug_palette.hpp"
 
 namespace {
 
@@ -72,6 +73,28 @@ class PagePoolGpuTest : public AtlasGpuTest {
       }
     }
     return graph;
+  }
+
+  // An atlas-view pass with `params` over the paged atlas, its tables and shadow data,
+  // writing the rgba8 image "atlasView" of `size`.
+  static void add_atlas_view(fg::GraphDesc& graph, base::Json params, VkExtent2D size) {
+    fg::ResourceDesc view;
+    view.name = "atlasView";
+    view.format = fg::Format::rgba8;
+    view.pointer = "/resources/atlasView";
+    view.size = {false, 1.0, 1.0, size.width, size.height};
+    graph.resources.push_back(view);
+    fg::PassInstanceDesc pass;
+    pass.name = "atlasView";
+    pass.type = "atlas-view";
+    pass.pointer = "/passes/" + std::to_string(graph.passes.size());
+    pass.params = std::move(params);
+    pass.side_effects = true;
+    pass.inputs = {{"atlas", "atlas", pass.pointer + "/in/atlas"},
+                   {"shadowData", "shadowData", pass.pointer + "/in/shadowData"},
+                   {"pageTables", "pageTables", pass.pointer + "/in/pageTables"}};
+    pass.outputs = {{"view", "atlasView", pass.pointer + "/out/view"}};
+    graph.passes.push_back(pass);
   }
 
   // Whether passes of `type` can read a paged atlas (have a pageTables input).
@@ -716,6 +739,85 @@ TEST_F(PagePoolGpuTest, TheDistrictsLightsPastThe341stCastVisibleShadows) {
   EXPECT_EQ(darker, 0u);
 }
 
+// atlas-view with `pool`: a cell per layer of a pool too small for the view (six layers of
+// 16 pages) and of one larger than it needs (96), each page in the colour of the light whose table
+// names it (the layer palette by light index, shaded by depth), the pages of fallback tiles amber,
+// the others near black.
+TEST_F(PagePoolGpuTest, TheAtlasViewShowsThePoolsPagesByOwner) {
+  constexpr VkExtent2D kView{768, 512};
+  struct Seen {
+    std::size_t lights = 0, tiles = 0, empty = 0;
+    PoolCounts counts;
+  };
+  const auto view_of = [&](std::uint32_t layers, std::uint32_t columns) {
+    fg::GraphDesc graph = pool_graph("data/graphs/hard.json", true, layers);
+    add_atlas_view(graph, {{"pool", true}, {"faces", layers}, {"columns", columns}}, kView);
+    load_desc(graph);
+    Seen seen;
+    seen.counts = pool_frame();
+    // Each pool page's owner as the tables say: a light, kTiles, or none.
+    constexpr int kNone = -1, kTiles = -2;
+    constexpr std::uint32_t kSide = kPoolFace / 128;
+    std::vector<int> owner(layers * kPagesPerLayer, kNone);
+    const auto data = read_shadow_data();
+    const std::vector<std::uint32_t> tables = read_tables();
+    for (std::uint32_t word = 0; word < tables.size(); ++word) {
+      const std::uint32_t entry = tables[word];
+      const auto owned = owned_face(data, word / kPagesPerLayer);
+      if (!owned || entry == 0u) continue;
+      if ((entry & 0x80000000u) != 0u) {
+        owner[((entry >> 10) & 0xFFFFFu) * kPagesPerLayer + ((entry >> 5) & 31u) * kSide +
+              (entry & 31u)] = static_cast<int>(owned->first.info.x);
+      } else {
+        owner[((entry >> 17) & 0x1FFFu) * kPagesPerLayer + (((entry >> 7) & 127u) / 4) * kSide +
+              (entry & 127u) / 4] = kTiles;
+      }
+    }
+    std::vector<std::uint8_t> pixels(std::size_t{kView.width} * kView.height * 4);
+    read_raw("atlasView", VK_IMAGE_ASPECT_COLOR_BIT, 0, kView, 4, pixels.data());
+    const std::uint32_t cell =
+        std::min(kView.width / columns, kView.height / ((layers + columns - 1) / columns));
+    auto& [lights, tiles, empty, counts] = seen;
+    for (std::uint32_t page = 0; page < owner.size(); ++page) {
+      const std::uint32_t layer = page / kPagesPerLayer;
+      const glm::uvec2 at =
+          glm::uvec2(layer % columns, layer / columns) * cell +
+          (glm::uvec2(page % kSide, page % kPagesPerLayer / kSide) * 2u + 1u) * cell / (2u * kSide);
+      const std::uint8_t* p = &pixels[(std::size_t{at.y} * kView.width + at.x) * 4];
+      const glm::vec3 got(p[0], p[1], p[2]);
+      if (owner[page] == kNone) {
+        ++empty;
+        EXPECT_LE(std::max({got.r, got.g, got.b}), 12.0f) << "page " << page << " is nobody's";
+      } else if (owner[page] == kTiles) {
+        ++tiles;
+        EXPECT_TRUE(got.r > got.g && got.g > got.b) << "page " << page << ": amber";
+      } else {
+        ++lights;
+        const std::uint32_t c =
+            passes::kLayerPalette[static_cast<std::uint32_t>(owner[page]) & 31u];
+        const glm::vec3 palette((c >> 16) & 255u, (c >> 8) & 255u, c & 255u);
+        const float shade =
+            std::max({got.r, got.g, got.b}) / std::max({palette.r, palette.g, palette.b});
+        EXPECT_GE(shade, 0.29f) << "page " << page;
+        EXPECT_LE(glm::length(got - palette * shade), 6.0f)
+            << "page " << page << " of light " << owner[page] << ": (" << got.r << ", " << got.g
+            << ", " << got.b << ")";
+      }
+    }
+    std::printf("pool view, %u layers: %zu pages of lights, %zu of fallback tiles, %zu nobody's\n",
+                layers, lights, tiles, empty);
+    return seen;
+  };
+  const Seen small = view_of(6, 3);
+  EXPECT_GT(small.counts.missing, 0u);
+  EXPECT_GT(small.lights, 50u);
+  EXPECT_GT(small.tiles, 0u) << "needed pages without a place went to their fallback tiles";
+  const Seen large = view_of(96, 12);
+  EXPECT_EQ(large.counts.missing, 0u);
+  EXPECT_GT(large.lights, small.lights);
+  EXPECT_GT(large.empty, 0u) << "a pool larger than the view needs has pages nobody holds";
+}
+
 // Settings the pool cannot work with are compiler errors at the parameter or port (a pool
 // no larger than its fallback tiles among them), and a reader of the paged atlas must bind
 // its tables.
@@ -793,22 +895,7 @@ TEST_F(PagePoolGpuTest, BadPoolSettingsAreCompilerErrors) {
 TEST_F(PagePoolGpuTest, TheAtlasViewShowsFacesThroughTheirTables) {
   const auto view_of = [&](std::uint32_t layers) {
     fg::GraphDesc graph = pool_graph("data/graphs/hard.json", true, layers);
-    fg::ResourceDesc view;
-    view.name = "atlasView";
-    view.format = fg::Format::rgba8;
-    view.pointer = "/resources/atlasView";
-    graph.resources.push_back(view);
-    fg::PassInstanceDesc pass;
-    pass.name = "atlasView";
-    pass.type = "atlas-view";
-    pass.pointer = "/passes/" + std::to_string(graph.passes.size());
-    pass.params = {{"faces", 96}};
-    pass.side_effects = true;
-    pass.inputs = {{"atlas", "atlas", pass.pointer + "/in/atlas"},
-                   {"shadowData", "shadowData", pass.pointer + "/in/shadowData"},
-                   {"pageTables", "pageTables", pass.pointer + "/in/pageTables"}};
-    pass.outputs = {{"view", "atlasView", pass.pointer + "/out/view"}};
-    graph.passes.push_back(pass);
+    add_atlas_view(graph, {{"faces", 96}}, kViewport);
     load_desc(graph);
     const PoolCounts counts = pool_frame();
     std::vector<std::uint8_t> pixels(std::size_t{kViewport.width} * kViewport.height * 4);
