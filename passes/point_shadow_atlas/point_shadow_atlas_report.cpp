@@ -134,9 +134,6 @@ fgvk::PassMessage PointShadowAtlasPass::face_stats(
     text += " (" + std::to_string(s.dynamic) + " for moved dynamic meshes, " +
             std::to_string(s.over_cache) + " over the static cache)";
   }
-  if (s.dynamic_pages > 0) {
-    text += " (" + std::to_string(s.dynamic_pages) + " pages to redraw for moved dynamic meshes)";
-  }
   if (s.deferred > 0 || s.forced > 0) {
     text += "; budget: " + std::to_string(s.deferred) + " waiting (at most " +
             std::to_string(s.stalest) + " frames behind), " + std::to_string(s.forced) + " past it";
@@ -160,6 +157,10 @@ fgvk::PassMessage PointShadowAtlasPass::face_stats(
            std::to_string(g.cached) + " cached" +
            (gpu ? " (GPU counts of frame " + std::to_string(g.frame_index) + ")"
                 : " (GPU counts pending)");
+    if (s.dynamic_pages > 0) {
+      text += "; this frame " + std::to_string(s.dynamic_pages) +
+              " pages sent to be redrawn where dynamic meshes moved";
+    }
   }
   return {pass, codes::shadow_atlas::kFaceStats, base::Severity::note, text, std::move(details)};
 }
