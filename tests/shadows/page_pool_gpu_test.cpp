@@ -821,6 +821,10 @@ TEST_F(PagePoolGpuTest, TheAtlasViewShowsThePoolsPagesByOwner) {
   EXPECT_EQ(large.counts.missing, 0u);
   EXPECT_GT(large.lights, small.lights);
   EXPECT_GT(large.empty, 0u) << "a pool larger than the view needs has pages nobody holds";
+  // Frame after frame the owners are cleared and scattered again behind the last frame's
+  // reads (synchronization validation watches).
+  pool_frame();
+  pool_frame();
 }
 
 // Settings the pool cannot work with are compiler errors at the parameter or port (a pool
