@@ -138,6 +138,8 @@ void AtlasPlanner::mark_dynamic(const SceneMotion& motion, const AtlasSettings& 
   for (std::size_t i = 0; i < end; ++i) {
     LayerState& state = layers_[i];
     if (!state.valid || state.dynamic_dirty) continue;
+    const std::uint32_t pages_x =
+        (state.key.resolution + shared::kPageSize - 1u) >> shared::kPageShift;
     for (const scene::Aabb& box : motion.moved) {
       if (!shadow_faces::box_may_touch(state.key.view_proj, box)) continue;
       if (!settings.gpu_decides) {
@@ -146,8 +148,6 @@ void AtlasPlanner::mark_dynamic(const SceneMotion& motion, const AtlasSettings& 
       }
       const PageRect rect = box_pages(state.key.view_proj, state.key.resolution, box);
       if (rect.empty()) continue;
-      const std::uint32_t pages_x =
-          (state.key.resolution + shared::kPageSize - 1u) >> shared::kPageShift;
       state.dirty_pages.resize((pages_x * pages_x + 31u) / 32u, 0u);
       rect.mark(pages_x, state.dirty_pages);
     }

@@ -14,16 +14,6 @@ std::uint32_t PageRect::pages() const {
   return side.x * side.y;
 }
 
-void PageRect::unite(const PageRect& other) {
-  if (other.empty()) return;
-  if (empty()) {
-    *this = other;
-    return;
-  }
-  first = glm::min(first, other.first);
-  last = glm::max(last, other.last);
-}
-
 void PageRect::mark(std::uint32_t pages_x, std::vector<std::uint32_t>& bits) const {
   for (std::uint32_t y = first.y; y <= last.y && !empty(); ++y) {
     for (std::uint32_t x = first.x; x <= last.x; ++x) {

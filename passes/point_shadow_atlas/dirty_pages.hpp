@@ -20,8 +20,6 @@ struct PageRect {
 
   [[nodiscard]] bool empty() const { return first.x > last.x || first.y > last.y; }
   [[nodiscard]] std::uint32_t pages() const;
-  // The smallest rectangle holding both.
-  void unite(const PageRect& other);
   // Sets its pages' bits in `bits` (bit k: page k of a face `pages_x` pages wide, row-major;
   // as many uints as that face's pages take).
   void mark(std::uint32_t pages_x, std::vector<std::uint32_t>& bits) const;
