@@ -108,26 +108,49 @@ struct ShadowPages {
   uint home_entry;  // and its entry
   ivec2 step;       // towards the held neighbours, -1 or 1 per axis (0: none that way)
   uvec3 near;       // entries of home + (step.x, 0), home + (0, step.y), home + step
+  // Every tap of the lookup lies in the home page, which has a place (shadow_pages_around):
+  // xy the atlas texel minus the face texel there, z its layer; z < 0: taps read the table.
+  ivec3 direct;
 };
+
+// A paged face's lookup before its home page is read (`table` < 0: not paged).
+ShadowPages shadow_pages_unread(int table, int texels) {
+  return ShadowPages(table, texels, ivec2(-1), 0u, ivec2(0), uvec3(0u), ivec3(0, 0, -1));
+}
 
 ivec2 shadow_page_texel_of(ShadowPages p, vec2 face_uv) {
   return clamp(ivec2(face_uv * float(p.texels)), ivec2(0), ivec2(p.texels - 1));
 }
 
 ShadowPages shadow_pages(int table, float texels, vec2 centre_uv) {
-  ShadowPages p = ShadowPages(table, int(texels), ivec2(-1), 0u, ivec2(0), uvec3(0u));
+  ShadowPages p = shadow_pages_unread(table, int(texels));
   if (table < 0) return p;
   p.home = shadow_page_texel_of(p, centre_uv) >> int(ANTUMBRA_PAGE_SHIFT);
   p.home_entry = shadow_page_entry(table, p.texels, p.home);
   return p;
 }
 
-// `p` (shadow_pages at `centre_uv`) with the neighbours a kernel of up to half a page
-// around the centre may reach; the three reads are independent of each other.
-ShadowPages shadow_pages_around(ShadowPages p, vec2 centre_uv) {
+// `p` (shadow_pages at `centre_uv`) made ready for a filter whose taps lie within `reach`
+// (face uv) of the centre. When they all fall in the home page and it has a place, the
+// taps read the atlas at a fixed offset from their face texel (ShadowPages.direct): no
+// entry to pick or decode per tap, as cheap as a face in a square. Otherwise it holds the
+// neighbours a kernel of up to half a page around the centre may reach; the three reads
+// are independent of each other.
+ShadowPages shadow_pages_around(ShadowPages p, vec2 centre_uv, float reach) {
   if (p.table < 0) return p;
   const int page = 1 << int(ANTUMBRA_PAGE_SHIFT);
   ivec2 t = shadow_page_texel_of(p, centre_uv);
+  if ((p.home_entry & ANTUMBRA_PAGE_PLACED) != 0u) {
+    // A texel of margin each way: a tap's uv is the centre's plus an offset rounded once.
+    ivec2 lo = max(shadow_page_texel_of(p, centre_uv - reach) - 1, ivec2(0));
+    ivec2 hi = min(shadow_page_texel_of(p, centre_uv + reach) + 1, ivec2(p.texels - 1));
+    ivec2 first = p.home * page;
+    if (all(greaterThanEqual(lo, first)) && all(lessThan(hi, first + page))) {
+      ivec3 place = page_entry_place(p.home_entry);
+      p.direct = ivec3((place.xy - p.home) * page, place.z);
+      return p;
+    }
+  }
   ivec2 step = mix(ivec2(1), ivec2(-1), lessThan(t & (page - 1), ivec2(page / 2)));
   int pages_x = (p.texels + page - 1) >> int(ANTUMBRA_PAGE_SHIFT);
   ivec2 beside = p.home + step;
@@ -152,6 +175,7 @@ uint shadow_page_entry_of(ShadowPages p, ivec2 page) {
 // The atlas texel of face uv (clamped to the face) of a paged face: its nearest texel.
 ivec3 shadow_page_lookup(ShadowPages p, vec2 face_uv) {
   ivec2 t = shadow_page_texel_of(p, face_uv);
+  if (p.direct.z >= 0) return ivec3(t + p.direct.xy, p.direct.z);
   return shadow_page_at(shadow_page_entry_of(p, t >> int(ANTUMBRA_PAGE_SHIFT)), t);
 }
 
@@ -303,7 +327,7 @@ ShadowCoord shadow_face_coord(ShadowFace face, ShadowLight l, int index, vec3 wo
   int table =
       l.projection.z < 0.0 && index >= 0 ? int(face.info.y >> ANTUMBRA_FACE_LAYER_SHIFT) : -1;
   ShadowCoord c = ShadowCoord(vec2(0.0), 0.0, vec2(0.0), 1.0, 0.0, false, texels, share,
-                              ShadowPages(table, int(texels), ivec2(-1), 0u, ivec2(0), uvec3(0u)));
+                              shadow_pages_unread(table, int(texels)));
 #else
   ShadowCoord c = ShadowCoord(vec2(0.0), 0.0, vec2(0.0), 1.0, 0.0, false, texels, share);
 #endif

@@ -61,7 +61,7 @@ bool penumbra_blocker_depth(ShadowLight sl, ShadowCoord c, vec2 at, float light_
   int taps = int(search_taps);
   float step_uv = taps > 1 ? 2.0 * radius / float(taps - 1) : 0.0;
 #ifdef SHADOW_PAGE_TABLES
-  c.pages = shadow_pages_around(c.pages, c.uv);
+  c.pages = shadow_pages_around(c.pages, c.uv, radius);
 #endif
   float blocker_sum = 0.0;
   int blockers = 0;

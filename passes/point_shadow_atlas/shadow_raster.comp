@@ -210,6 +210,38 @@ void cover(Tri tri, int x, int y) {
   }
 }
 
+// Narrows [lo, hi] (texel columns) to those whose centres on row centre `py` may lie on the
+// inner side of edge e, by a margin of float error and one texel: cover() still tests each
+// texel exactly, so the span only skips texels certainly outside. An edge nearly parallel
+// to the row gives a crossing too uncertain to narrow by.
+void edge_span(vec4 e, float py, inout float lo, inout float hi) {
+  float r = e.y * py + e.z;  // the edge function at x + 0.5 = 0
+  float error = 1e-6 * (abs(e.y * py) + abs(e.z) + abs(e.x) * 8192.0) + 1e-6;
+  if (abs(e.x) * 65536.0 <= error) {
+    if (r + abs(e.x) * 8192.0 + error < 0.0) hi = lo - 1.0;  // nowhere on the row
+    return;
+  }
+  float cross = -r / e.x - 0.5;  // column where the edge crosses the row
+  float margin = error / abs(e.x) + 1.0;
+  if (e.x > 0.0) {
+    lo = max(lo, cross - margin);
+  } else {
+    hi = min(hi, cross + margin);
+  }
+}
+
+// Columns of row y the triangle may cover, within its box (empty: x > y).
+ivec2 row_span(Tri tri, int y) {
+  float py = float(y) + 0.5;
+  float lo = float(tri.box.x);
+  float hi = float(tri.box.z);
+  edge_span(tri.e0, py, lo, hi);
+  edge_span(tri.e1, py, lo, hi);
+  edge_span(tri.e2, py, lo, hi);
+  if (!(lo <= hi)) return ivec2(1, 0);
+  return ivec2(max(int(floor(lo)), tri.box.x), min(int(ceil(hi)), tri.box.z));
+}
+
 void walk(Tri tri) {
   for (int y = tri.box.y; y <= tri.box.w; ++y) {
     for (int x = tri.box.x; x <= tri.box.z; ++x) cover(tri, x, y);
@@ -278,6 +310,12 @@ int clip_polygon(int n, vec4 plane) {
   return m;
 }
 
+// Whether a clip-space vertex lies inside every plane clip_triangle cuts with.
+bool inside_planes(vec4 v) {
+  return v.z >= 0.0 && v.x + kGuard * v.w >= 0.0 && -v.x + kGuard * v.w >= 0.0 &&
+         v.y + kGuard * v.w >= 0.0 && -v.y + kGuard * v.w >= 0.0;
+}
+
 // Clips g_poly[0..2] in place; returns the vertex count (0: nothing left).
 int clip_triangle() {
   const vec4 planes[5] =
@@ -312,6 +350,82 @@ vec2 vertex_uv(uint index) {
 }
 #endif
 
+// The texel rectangle work item `region` covers on the face (kRegionWholeFace: all of it).
+ivec4 region_box(uint region) {
+  if (region == kRegionWholeFace) return ivec4(0, 0, ivec2(int(g_size) - 1));
+  uint region_size = 1u << kRasterRegionShift;
+  uint regions_x = (g_size + region_size - 1u) / region_size;
+  ivec2 region_lo = ivec2(uvec2(region % regions_x, region / regions_x) * region_size);
+  return ivec4(region_lo, min(region_lo + int(region_size) - 1, ivec2(int(g_size) - 1)));
+}
+
+// Projects, clips and emits this thread's triangle of the cluster into `box`.
+void draw_triangle(RasterCluster cluster, uint triangle, ivec4 box) {
+  uint first = cluster.info.x + 3u * triangle;
+  uint i0 = indices[first];
+  uint i1 = indices[first + 1u];
+  uint i2 = indices[first + 2u];
+  vec3 p[3] = vec3[3](vertex_position(i0), vertex_position(i1), vertex_position(i2));
+  // Surfaces turned towards the light: only they tint (a closed pane counts once), and
+  // only they cast where the material is one-sided.
+  bool facing_only = g_list == kListTint;
+#ifdef CUT
+  facing_only = facing_only || (g_material.more.y & ANTUMBRA_MATERIAL_DOUBLE_SIDED) == 0u;
+#endif
+  if (facing_only) {
+    vec3 n = cross(p[1] - p[0], p[2] - p[0]);
+    mat4 m = g_face.view_proj;
+    vec3 depth_axis = vec3(m[0][2], m[1][2], m[2][2]);
+    float away = g_face.params.y > 0.5 ? dot(depth_axis, n) : dot(n, p[0] - g_face.light.xyz);
+    if (away >= 0.0) return;
+  }
+  vec4 clip0 = g_face.view_proj * vec4(p[0], 1.0);
+  vec4 clip1 = g_face.view_proj * vec4(p[1], 1.0);
+  vec4 clip2 = g_face.view_proj * vec4(p[2], 1.0);
+#ifndef CUT
+  // Most triangles need no clipping: they skip the polygon arrays, which dynamic indexing
+  // puts in slow per-thread memory on GPUs (clipping an unclipped triangle keeps it as is).
+  if (inside_planes(clip0) && inside_planes(clip1) && inside_planes(clip2)) {
+    emit(to_texels(clip0), to_texels(clip1), to_texels(clip2), box);
+    return;
+  }
+#endif
+  g_poly[0] = clip0;
+  g_poly[1] = clip1;
+  g_poly[2] = clip2;
+#ifdef CUT
+  if (g_cut) {
+    g_uv[0] = vertex_uv(i0);
+    g_uv[1] = vertex_uv(i1);
+    g_uv[2] = vertex_uv(i2);
+  }
+#define UVS_OF(k) , over_w(k)
+#else
+#define UVS_OF(k)
+#endif
+  int n = clip_triangle();
+  vec3 s0 = to_texels(g_poly[0]);
+  for (int k = 1; k + 1 < n; ++k) {
+    emit(s0, to_texels(g_poly[k]), to_texels(g_poly[k + 1]) UVS_OF(0) UVS_OF(k) UVS_OF(k + 1), box);
+  }
+}
+
+// The workgroup as 16 x 8 threads over each queued triangle's rows, each row from where
+// the triangle may start to where it may end on it (row_span: a triangle covers at most
+// half its rectangle): no division per texel (scalarised on CPU devices such as lavapipe).
+void walk_large() {
+  uint large = min(s_large_count, kRasterGroup);
+  int tx = int(gl_LocalInvocationIndex % 16u);
+  int ty = int(gl_LocalInvocationIndex / 16u);
+  for (uint j = 0u; j < large; ++j) {
+    Tri tri = s_large[j];
+    for (int y = tri.box.y + ty; y <= tri.box.w; y += 8) {
+      ivec2 span = row_span(tri, y);
+      for (int x = span.x + tx; x <= span.y; x += 16) cover(tri, x, y);
+    }
+  }
+}
+
 void main() {
   uint item_index = gl_WorkGroupID.y * kMaxGroupsX + gl_WorkGroupID.x;
   if (item_index >= min(counts[g_list], list_capacity(g_list))) return;  // uniform over the group
@@ -319,75 +433,18 @@ void main() {
   RasterCluster cluster = clusters[item.x];
   g_face = faces[face_first + (item.y & 0xFFFFu)];
   g_size = g_face.info.z;
-  uint region = item.y >> 16;
-  uint region_size = 1u << kRasterRegionShift;
-  uint regions_x = (g_size + region_size - 1u) / region_size;
-  ivec2 region_lo = ivec2(uvec2(region % regions_x, region / regions_x) * region_size);
-  ivec4 box = ivec4(region_lo, min(region_lo + int(region_size) - 1, ivec2(int(g_size) - 1)));
-  if (region == kRegionWholeFace) box = ivec4(0, 0, ivec2(int(g_size) - 1));
+  ivec4 box = region_box(item.y >> 16);
 #ifdef CUT
   g_material = materials[cluster.info.w];
   g_cut = (g_material.more.y & ANTUMBRA_MATERIAL_ALPHA_TESTED) != 0u;
-  bool one_sided = (g_material.more.y & ANTUMBRA_MATERIAL_DOUBLE_SIDED) == 0u;
 #endif
   vec4 t = materials[cluster.info.w].transmittance;
   g_tint = mix(vec3(1.0), clamp(t.rgb, 0.0, 1.0), clamp(t.a, 0.0, 1.0));
 
   if (gl_LocalInvocationIndex == 0u) s_large_count = 0u;
   barrier();
-  uint triangle = gl_LocalInvocationIndex;
-  if (triangle < cluster.info.y) {
-    uint first = cluster.info.x + 3u * triangle;
-    uint i0 = indices[first];
-    uint i1 = indices[first + 1u];
-    uint i2 = indices[first + 2u];
-    vec3 p[3] = vec3[3](vertex_position(i0), vertex_position(i1), vertex_position(i2));
-    // Surfaces turned towards the light: only they tint (a closed pane counts once), and
-    // only they cast where the material is one-sided.
-    bool facing_only = g_list == kListTint;
-#ifdef CUT
-    facing_only = facing_only || one_sided;
-#endif
-    bool keep = true;
-    if (facing_only) {
-      vec3 n = cross(p[1] - p[0], p[2] - p[0]);
-      mat4 m = g_face.view_proj;
-      vec3 depth_axis = vec3(m[0][2], m[1][2], m[2][2]);
-      float away = g_face.params.y > 0.5 ? dot(depth_axis, n) : dot(n, p[0] - g_face.light.xyz);
-      keep = away < 0.0;
-    }
-    if (keep) {
-      g_poly[0] = g_face.view_proj * vec4(p[0], 1.0);
-      g_poly[1] = g_face.view_proj * vec4(p[1], 1.0);
-      g_poly[2] = g_face.view_proj * vec4(p[2], 1.0);
-#ifdef CUT
-      if (g_cut) {
-        g_uv[0] = vertex_uv(i0);
-        g_uv[1] = vertex_uv(i1);
-        g_uv[2] = vertex_uv(i2);
-      }
-#define UVS_OF(k) , over_w(k)
-#else
-#define UVS_OF(k)
-#endif
-      int n = clip_triangle();
-      vec3 s0 = to_texels(g_poly[0]);
-      for (int k = 1; k + 1 < n; ++k) {
-        emit(s0, to_texels(g_poly[k]), to_texels(g_poly[k + 1]) UVS_OF(0) UVS_OF(k) UVS_OF(k + 1),
-             box);
-      }
-    }
-  }
+  if (gl_LocalInvocationIndex < cluster.info.y)
+    draw_triangle(cluster, gl_LocalInvocationIndex, box);
   barrier();
-  // The workgroup as 16 x 8 threads over each queued triangle's rectangle: no division
-  // per texel (scalarised on CPU devices such as lavapipe).
-  uint large = min(s_large_count, kRasterGroup);
-  int tx = int(gl_LocalInvocationIndex % 16u);
-  int ty = int(gl_LocalInvocationIndex / 16u);
-  for (uint j = 0u; j < large; ++j) {
-    Tri tri = s_large[j];
-    for (int y = tri.box.y + ty; y <= tri.box.w; y += 8) {
-      for (int x = tri.box.x + tx; x <= tri.box.z; x += 16) cover(tri, x, y);
-    }
-  }
+  walk_large();
 }

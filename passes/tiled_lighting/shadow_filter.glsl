@@ -51,7 +51,7 @@ vec3 filter_project(mat4 view_proj, vec3 p) {
 bool filter_coord(ShadowLight light, int layer, vec3 p_world, vec3 n_world, out FilterCoord c) {
 #ifdef SHADOW_PAGE_TABLES
   c = FilterCoord(vec2(0.0), 0.0, 0.0, vec2(0.0), 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, vec2(0.0), 1.0,
-                  false, ShadowPages(-1, 1, ivec2(-1), 0u, ivec2(0), uvec3(0u)));
+                  false, shadow_pages_unread(-1, 1));
 #else
   c = FilterCoord(vec2(0.0), 0.0, 0.0, vec2(0.0), 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, vec2(0.0), 1.0,
                   false);
@@ -137,7 +137,7 @@ float filter_pcf_taps(FilterCoord c, int taps, float spacing) {
 // The same, holding the pages its taps reach first (shadow_pages_around).
 float filter_pcf(FilterCoord c, int taps, float spacing) {
 #ifdef SHADOW_PAGE_TABLES
-  c.pages = shadow_pages_around(c.pages, c.uv);
+  c.pages = shadow_pages_around(c.pages, c.uv, float(taps / 2) * spacing * c.texel);
 #endif
   return filter_pcf_taps(c, taps, spacing);
 }
@@ -157,7 +157,8 @@ float filter_pcss(FilterCoord c, float light_size) {
                          : light_size * 0.5 * face / c.scale * (c.linear - c.near) / c.linear;
   search = clamp(search, 1.0, max_radius);
 #ifdef SHADOW_PAGE_TABLES
-  c.pages = shadow_pages_around(c.pages, c.uv);  // the search and the filter stay within
+  // The search and the filter stay within max_radius texels.
+  c.pages = shadow_pages_around(c.pages, c.uv, max_radius * c.texel);
 #endif
   int half_search = BLOCKER_SEARCH / 2;
   float spacing = half_search > 0 ? search / float(half_search) : 0.0;
