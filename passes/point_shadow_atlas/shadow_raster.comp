@@ -77,6 +77,8 @@ layout(std430, binding = kRasterAttributes) readonly buffer Attributes {
 
 // Texels above which the workgroup walks a triangle together.
 const int kSmallTexels = 32;
+// Columns from which a row's span (row_span) is worth its three divisions.
+const int kSpanTexels = 48;
 
 struct Tri {
   vec4 e0;  // edge functions (A, B, C): inside where A x + B y + C >= 0 for all three
@@ -310,12 +312,6 @@ int clip_polygon(int n, vec4 plane) {
   return m;
 }
 
-// Whether a clip-space vertex lies inside every plane clip_triangle cuts with.
-bool inside_planes(vec4 v) {
-  return v.z >= 0.0 && v.x + kGuard * v.w >= 0.0 && -v.x + kGuard * v.w >= 0.0 &&
-         v.y + kGuard * v.w >= 0.0 && -v.y + kGuard * v.w >= 0.0;
-}
-
 // Clips g_poly[0..2] in place; returns the vertex count (0: nothing left).
 int clip_triangle() {
   const vec4 planes[5] =
@@ -377,22 +373,11 @@ void draw_triangle(RasterCluster cluster, uint triangle, ivec4 box) {
     mat4 m = g_face.view_proj;
     vec3 depth_axis = vec3(m[0][2], m[1][2], m[2][2]);
     float away = g_face.params.y > 0.5 ? dot(depth_axis, n) : dot(n, p[0] - g_face.light.xyz);
-    if (away >= 0.0) return;
+    if (!(away < 0.0)) return;  // NaN too, as before
   }
-  vec4 clip0 = g_face.view_proj * vec4(p[0], 1.0);
-  vec4 clip1 = g_face.view_proj * vec4(p[1], 1.0);
-  vec4 clip2 = g_face.view_proj * vec4(p[2], 1.0);
-#ifndef CUT
-  // Most triangles need no clipping: they skip the polygon arrays, which dynamic indexing
-  // puts in slow per-thread memory on GPUs (clipping an unclipped triangle keeps it as is).
-  if (inside_planes(clip0) && inside_planes(clip1) && inside_planes(clip2)) {
-    emit(to_texels(clip0), to_texels(clip1), to_texels(clip2), box);
-    return;
-  }
-#endif
-  g_poly[0] = clip0;
-  g_poly[1] = clip1;
-  g_poly[2] = clip2;
+  g_poly[0] = g_face.view_proj * vec4(p[0], 1.0);
+  g_poly[1] = g_face.view_proj * vec4(p[1], 1.0);
+  g_poly[2] = g_face.view_proj * vec4(p[2], 1.0);
 #ifdef CUT
   if (g_cut) {
     g_uv[0] = vertex_uv(i0);
@@ -419,8 +404,9 @@ void walk_large() {
   int ty = int(gl_LocalInvocationIndex / 16u);
   for (uint j = 0u; j < large; ++j) {
     Tri tri = s_large[j];
+    bool wide = tri.box.z - tri.box.x >= kSpanTexels;
     for (int y = tri.box.y + ty; y <= tri.box.w; y += 8) {
-      ivec2 span = row_span(tri, y);
+      ivec2 span = wide ? row_span(tri, y) : tri.box.xz;
       for (int x = span.x + tx; x <= span.y; x += 16) cover(tri, x, y);
     }
   }
