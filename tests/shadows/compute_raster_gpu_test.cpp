@@ -111,7 +111,10 @@ void ComputeRasterGpuTest::expect_agreement(fg::Format compute_format) {
       "compute vs hardware: %zu texels in range, %zu on an edge moved by one texel, %zu "
       "mismatched (worst %.4f m)\n",
       total.compared, total.shifted, total.mismatched, static_cast<double>(total.worst));
-  EXPECT_LT(total.shifted, total.compared / 100) << "edges are a thin share of the faces";
+  // 161 of 3.33 M on lavapipe. The compute walk skips texels by row spans (shadow_raster.comp,
+  // row_span): spans a 0.6 texel too narrow each side made 2235 edge texels differ, which a
+  // bound of 1 % let pass.
+  EXPECT_LT(total.shifted, total.compared / 5000) << "edges are a thin share of the faces";
 }
 
 TEST_F(ComputeRasterGpuTest, StorageAtlasAgreesWithHardwareExceptAtEdges) {
