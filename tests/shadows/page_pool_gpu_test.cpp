@@ -30,12 +30,13 @@
 #include "atlas_gpu_fixture.hpp"
 #include "page_pool_fixture.hpp"
 
-// A pool as large as the atlas holds every needed page: hard shadows (one texel a lookup)
-// and layered SSSS (blocker searches, ESM, tints) light the atrium exactly as faces in
-// squares do, and every page drawn took a place in the pool.
+// A pool as large as the atlas holds every needed page: hard shadows (one texel a lookup),
+// PCF and PCSS (kernels read at a fixed offset when they stay in their page, through the
+// table when they cross its edge) and layered SSSS (blocker searches, ESM, tints) light the
+// atrium exactly as faces in squares do, and every page drawn took a place in the pool.
 TEST_F(PagePoolGpuTest, PagedFacesLightAsSquaresDo) {
-  for (const char* file : {"data/graphs/hard.json", "data/graphs/layered-ssss.json",
-                           "data/graphs/layered-ssss-min.json"}) {
+  for (const char* file : {"data/graphs/hard.json", "data/graphs/pcf.json", "data/graphs/pcss.json",
+                           "data/graphs/layered-ssss.json", "data/graphs/layered-ssss-min.json"}) {
     load_desc(pool_graph(file, false));
     const PoolCounts squares = pool_frame();
     const auto expected = read_hdr();
