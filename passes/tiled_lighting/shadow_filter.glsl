@@ -177,8 +177,9 @@ float filter_pcss(FilterCoord c, float light_size) {
                          : light_size * 0.5 * face / c.scale * (c.linear - c.near) / c.linear;
   search = clamp(search, 1.0, max_radius);
 #ifdef SHADOW_PAGE_TABLES
-  // The search and the filter stay within max_radius texels.
-  c.pages = shadow_pages_around(c.pages, c.uv, max_radius * c.texel);
+  // The search and the filter stay within max_radius texels (the search within one when
+  // KERNEL is 1, whose max_radius is 0).
+  c.pages = shadow_pages_around(c.pages, c.uv, max(max_radius, 1.0) * c.texel);
   c = filter_direct(c);
 #endif
   int half_search = BLOCKER_SEARCH / 2;
