@@ -16,6 +16,51 @@ float sat_scale(ivec2 size) {
   return float(0xFFFFFFFFu / texels);
 }
 
+// A box [lo, hi) in texels, clipped to a face of `extent` texels a side, as the 16 integer
+// boxes around its fractional edges: corners x in xs by y in ys, each box's weight the
+// product of its x and y edges' (the integral of the texels is bilinear in the corners).
+struct SatBox {
+  ivec4 xs;  // a, a + 1, b, b + 1 (a = floor(lo), b = floor(hi))
+  ivec4 ys;
+  vec2 wx[2];  // the weights of xs.xy, then of xs.zw
+  vec2 wy[2];
+  vec2 size;  // hi - lo
+};
+
+SatBox sat_box(vec2 lo, vec2 hi, vec2 extent) {
+  lo = clamp(lo, vec2(0.0), extent - 1.0);
+  hi = clamp(hi, lo + 1.0, extent);
+  ivec2 a = ivec2(floor(lo));
+  ivec2 b = ivec2(floor(hi));
+  vec2 fa = lo - vec2(a);
+  vec2 fb = hi - vec2(b);
+  SatBox box;
+  box.xs = ivec4(a.x, a.x + 1, b.x, b.x + 1);
+  box.ys = ivec4(a.y, a.y + 1, b.y, b.y + 1);
+  box.wx = vec2[2](vec2(1.0 - fa.x, fa.x), vec2(1.0 - fb.x, fb.x));
+  box.wy = vec2[2](vec2(1.0 - fa.y, fa.y), vec2(1.0 - fb.y, fb.y));
+  box.size = hi - lo;
+  return box;
+}
+
+// The weighted sum of `box`'s 16 integer boxes from the table's values at its corners
+// (c[j][i] at xs[i], ys[j]), each box summed in uint first so that wrapping cancels.
+vec2 sat_weighted_sum(SatBox box, uvec2 c[4][4]) {
+  vec2 sum = vec2(0.0);
+  for (int y0 = 0; y0 < 2; ++y0) {
+    for (int y1 = 2; y1 < 4; ++y1) {
+      for (int x0 = 0; x0 < 2; ++x0) {
+        for (int x1 = 2; x1 < 4; ++x1) {
+          uvec2 part = c[y1][x1] - c[y1][x0] - c[y0][x1] + c[y0][x0];
+          sum +=
+              vec2(part) * (box.wx[0][x0] * box.wx[1][x1 - 2] * box.wy[0][y0] * box.wy[1][y1 - 2]);
+        }
+      }
+    }
+  }
+  return sum;
+}
+
 #ifdef SAT_MAP
 // The sum of a face's texels [0, corner) (corner in whole texels, clamped to [0, last + 1]);
 // the face's table starts at the layer's texel `first` and sums from there (one table per
@@ -29,38 +74,16 @@ uvec2 sat_corner(ivec2 corner, ivec2 first, ivec2 last, int layer) {
 // Mean moments over the box [lo, hi) in texels of a face whose texels are [0, last] (the
 // layer's [first, first + last]), in a table of `scale`
 // (sat_scale of the whole layer's size):
-// the box is clipped to the face, its fractional edges weighted exactly (the integral
-// of the texels is bilinear in the box's corners; the four integer boxes around each
-// fractional edge pair are summed in uint first, so wrapping cancels).
+// the box is clipped to the face, its fractional edges weighted exactly (sat_box).
 vec2 sat_box_mean(vec2 lo, vec2 hi, ivec2 first, ivec2 last, int layer, float scale) {
-  vec2 extent = vec2(last + 1);
-  lo = clamp(lo, vec2(0.0), extent - 1.0);
-  hi = clamp(hi, lo + 1.0, extent);
-  ivec2 a = ivec2(floor(lo));
-  ivec2 b = ivec2(floor(hi));
-  vec2 fa = lo - vec2(a);
-  vec2 fb = hi - vec2(b);
-  uvec2 c[4][4];  // corners x in {a, a+1, b, b+1} by y in the same
-  ivec4 xs = ivec4(a.x, a.x + 1, b.x, b.x + 1);
-  ivec4 ys = ivec4(a.y, a.y + 1, b.y, b.y + 1);
+  SatBox box = sat_box(lo, hi, vec2(last + 1));
+  uvec2 c[4][4];
   for (int j = 0; j < 4; ++j) {
-    for (int i = 0; i < 4; ++i) c[j][i] = sat_corner(ivec2(xs[i], ys[j]), first, last, layer);
-  }
-  vec2 wx[2] = vec2[2](vec2(1.0 - fa.x, fa.x), vec2(1.0 - fb.x, fb.x));
-  vec2 wy[2] = vec2[2](vec2(1.0 - fa.y, fa.y), vec2(1.0 - fb.y, fb.y));
-  vec2 sum = vec2(0.0);
-  for (int y0 = 0; y0 < 2; ++y0) {
-    for (int y1 = 2; y1 < 4; ++y1) {
-      for (int x0 = 0; x0 < 2; ++x0) {
-        for (int x1 = 2; x1 < 4; ++x1) {
-          uvec2 box = c[y1][x1] - c[y1][x0] - c[y0][x1] + c[y0][x0];
-          sum += vec2(box) * (wx[0][x0] * wx[1][x1 - 2] * wy[0][y0] * wy[1][y1 - 2]);
-        }
-      }
+    for (int i = 0; i < 4; ++i) {
+      c[j][i] = sat_corner(ivec2(box.xs[i], box.ys[j]), first, last, layer);
     }
   }
-  vec2 size = hi - lo;
-  return sum / (scale * size.x * size.y);
+  return sat_weighted_sum(box, c) / (scale * box.size.x * box.size.y);
 }
 #endif
 

@@ -37,15 +37,9 @@ void check(const fg::PlanPass& pass, const ShadowMomentsParams& params, const fg
         "'" + out->name + "' (" + std::string(fg::to_string(out->format)) + ") " + problem,
         "/params/technique", diagnostics);
   }
-  // Over a paged atlas the map keeps the pool's layout (derived_pages.glsl); a summed-area
-  // table sums across a face's pages, which that layout does not hold together.
+  // Over a paged atlas the map keeps the pool's layout (derived_pages.glsl); VSSM's
+  // summed-area tables are then one per page (moments_sat.comp).
   check_paged_map_factor(pass, plan, port::kMoments, graph, diagnostics);
-  if (technique == MomentTechnique::vssm && bound_index(pass, port::kPageTables) >= 0) {
-    add_pass_error(graph, pass, codes::graph::kPortUnbound,
-                   "vssm's summed-area tables are not built over a paged atlas: use vsm, evsm2, "
-                   "evsm4 or msm, or an atlas without pagePool",
-                   "/in/pageTables", diagnostics);
-  }
 }
 
 }  // namespace

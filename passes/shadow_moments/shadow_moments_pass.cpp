@@ -47,7 +47,7 @@ void ShadowMomentsPass::prepare(fgvk::PrepareContext& context) {
       {"MOMENTS_FORMAT", storage_format(format)},
   };
   // A paged atlas (its tables bound): the map keeps the pool's layout, and the steps walk
-  // each listed face's pages through its table (derived_pages.glsl); never vssm (a check).
+  // each listed face's pages through its table (derived_pages.glsl); vssm sums per page.
   const bool paged = context.bindings.buffer(port::kPageTables) != nullptr;
   if (paged) defines.push_back({"PAGED", "1"});
   shader_files_.clear();

@@ -7,6 +7,7 @@
 // pool cannot work with are compiler errors.
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
@@ -62,7 +63,10 @@ TEST_F(PagePoolGpuTest, PagedFacesLightAsSquaresDo) {
 // box-filtered per page, neighbours read through the table (those of pages without a place
 // as far depth, as faces in squares fill them), and looked up through the entries of the
 // four texels' pages, they light the atrium exactly as the same maps of faces in squares
-// do; and they are what shadows it (softer than the hard shadows).
+// do; and they are what shadows it (softer than the hard shadows). VSSM's summed-area
+// tables are one per page, a box the sum of its parts in the pages it covers: a box inside
+// one page sums the same integers as the face's table in a square, one across pages adds
+// its parts' float sums in another order, which may move a half-float's last bit or two.
 TEST_F(PagePoolGpuTest, PagedMomentMapsLightAsSquaresDo) {
   load_desc(pool_graph("data/graphs/lighting.json", false));
   face_stats_frame();  // no shadow atlas, no pool counts
@@ -70,8 +74,8 @@ TEST_F(PagePoolGpuTest, PagedMomentMapsLightAsSquaresDo) {
   load_desc(pool_graph("data/graphs/hard.json", true));
   pool_frame();
   const auto hard = read_hdr();
-  for (const char* file :
-       {"data/graphs/vsm.json", "data/graphs/evsm4.json", "data/graphs/msm.json"}) {
+  for (const char* file : {"data/graphs/vsm.json", "data/graphs/evsm4.json", "data/graphs/msm.json",
+                           "data/graphs/vssm.json"}) {
     load_desc(pool_graph(file, false));
     pool_frame();
     const auto squares = read_hdr();
@@ -80,7 +84,24 @@ TEST_F(PagePoolGpuTest, PagedMomentMapsLightAsSquaresDo) {
     EXPECT_GT(paged.taken, 0u) << file;
     EXPECT_EQ(paged.missing, 0u) << file;
     const auto image = read_hdr();
-    EXPECT_EQ(image, squares) << file;
+    if (std::string(file).find("vssm") == std::string::npos) {
+      EXPECT_EQ(image, squares) << file;
+    } else {
+      ASSERT_EQ(image.size(), squares.size());
+      std::size_t moved = 0;
+      float worst = 0.0f;
+      for (std::size_t i = 0; i < image.size(); ++i) {
+        const float a = glm::unpackHalf1x16(image[i]);
+        const float b = glm::unpackHalf1x16(squares[i]);
+        if (a == b) continue;
+        ++moved;
+        worst = std::max(worst, std::abs(a - b) / std::max(std::abs(b), 1e-3f));
+      }
+      std::printf("%s paged: %zu of %zu channels differ from squares, at most %.2g relative\n",
+                  file, moved, image.size(), static_cast<double>(worst));
+      EXPECT_LE(moved, image.size() / 100) << file;
+      EXPECT_LE(worst, 2e-3f) << file << ": a half-float's last bits, no more";
+    }
     EXPECT_NE(image, hard) << file;
     const auto lit = luminance(image);
     std::size_t shadowed = 0;
@@ -280,6 +301,34 @@ TEST_F(PagePoolGpuTest, ASmallPoolFallsBackToItsFacesCoarserLevel) {
   EXPECT_LT(moved_lighter * 2, without_lighter + 2);
 }
 
+// VSSM over a pool too small for the view: a box's parts in pages without a place read the
+// face's fallback tile there (its coarser level, 4 x 4 points over the part) or, without
+// the fallback, far depth. The tile keeps some of what the missing pages shadow (less than
+// hard shadows keep: a soft filter box spreads the tile's farthest depths), and neither
+// reads another face's depth or a texel nobody drew: few pixels come out darker than with
+// every page drawn (a coarser blocker estimate widens some penumbrae).
+TEST_F(PagePoolGpuTest, VssmOverASmallPoolReadsTheCoarserLevel) {
+  load_desc(pool_graph("data/graphs/vssm.json", true));
+  const PoolCounts full = pool_frame();
+  EXPECT_EQ(full.missing, 0u);
+  const auto lit = luminance(read_hdr());
+  load_desc(pool_graph("data/graphs/vssm.json", true, 6, false));
+  pool_frame();
+  const auto [without_darker, without_lighter] = darker_lighter(luminance(read_hdr()), lit);
+  load_desc(pool_graph("data/graphs/vssm.json", true, 6));
+  const PoolCounts small = pool_frame();
+  EXPECT_GT(small.missing, 0u);
+  const auto [darker, lighter] = darker_lighter(luminance(read_hdr()), lit);
+  std::printf(
+      "vssm, small pool: %zu pixels lighter than every page drawn with the fallback, %zu "
+      "without; %zu and %zu darker\n",
+      lighter, without_lighter, darker, without_darker);
+  ASSERT_GT(without_lighter, 0u) << "without the fallback, missing pages read as far";
+  EXPECT_LT(lighter * 4, without_lighter * 3) << "the coarser level keeps shadows";
+  EXPECT_LE(darker, lit.size() / 200) << "nothing read that no page or tile holds";
+  EXPECT_LE(without_darker, lit.size() / 200) << "far depth where nothing is held";
+}
+
 // A pool too small for the view draws every light's faces smaller (pool_fit.hpp) until it
 // holds what the view needs, and says so (SHD005 with the cap); the lit image then has no
 // missing page.
@@ -379,10 +428,9 @@ TEST_F(PagePoolGpuTest, BadPoolSettingsAreCompilerErrors) {
     std::erase_if(p.inputs, [](const auto& in) { return in.port == "pageTables"; });
   }
   error_at(blind, "FG037", "/passes/2", "bind its pageTables output 'pageTables'");
-  // VSSM's summed-area tables are not built over a paged atlas; the other moment maps are,
-  // whose texels must not straddle pages either.
-  error_at(pool_graph("data/graphs/vssm.json", true), "FG037", "/passes/2",
-           "vssm's summed-area tables are not built over a paged atlas");
+  // The moment maps keep the pool's layout (VSSM's summed-area tables one per page): their
+  // texels must not straddle pages.
+  EXPECT_TRUE(compile_graph(pool_graph("data/graphs/vssm.json", true)).ok());
   fg::GraphDesc wide = pool_graph("data/graphs/vsm.json", true);
   for (auto& r : wide.resources) {
     if (r.name == "moments") r.size = {false, 1.0, 1.0, 2, 2};
