@@ -203,7 +203,7 @@ void add_pages_table(std::vector<Scenario>& out, double scale, const DistrictRow
                            {kDistrictScene, kDistrictLights, kDistrictMovingLights, 512},
                            {kDistrictScene, kDistrictLights, kDistrictLights, 512},
                            {kCityScene, kCityLights, kCityLights / 4, 512}};
-  // The atrium also with the seed's min-filtered maps and with EVSM4, through the tables.
+  // The atrium also with the seed's min-filtered maps, EVSM4 and VSSM, through the tables.
   struct Variant {
     const Row* row;
     const char* technique;
@@ -212,6 +212,7 @@ void add_pages_table(std::vector<Scenario>& out, double scale, const DistrictRow
   for (const Row& row : kRows) variants.push_back({&row, "ssss"});
   variants.insert(variants.begin() + 1, {&kRows[0], "ssss-min"});
   variants.insert(variants.begin() + 2, {&kRows[0], "evsm4"});
+  variants.insert(variants.begin() + 3, {&kRows[0], "vssm"});
   for (const auto& [row_of, name] : variants) {
     const Row& row = *row_of;
     const bool many = row.lights >= kDistrictLights;

@@ -246,12 +246,13 @@ TEST(BenchScenarios, MovingScenesHaveTheirLightsAfterTheLightCount) {
 
 }  // namespace
 // The pages table: the many table's rows and the atrium's moving lights (also with the
-// min-filtered maps and EVSM4), each drawn into a page pool of a fixed number of layers.
+// min-filtered maps, EVSM4 and VSSM), each drawn into a page pool of a fixed number of layers.
 TEST(BenchScenarios, PagesTableDrawsIntoAFixedPool) {
   const auto pages = select_scenarios(builtin_scenarios(1.0), {"pages/"});
-  ASSERT_EQ(pages.size(), 6u);
+  ASSERT_EQ(pages.size(), 7u);
   EXPECT_EQ(named(pages, "pages/evsm4/1080p/16l-16m/compute/screen/vis/pool32").graph,
             "evsm4.json");
+  EXPECT_EQ(named(pages, "pages/vssm/1080p/16l-16m/compute/screen/vis/pool32").graph, "vssm.json");
   const auto& min = named(pages, "pages/ssss-min-11/1080p/16l-16m/compute/screen/vis/pool32");
   EXPECT_EQ(min.graph, "layered-ssss-min.json");
   EXPECT_EQ(min.pool_layers, 32u);
