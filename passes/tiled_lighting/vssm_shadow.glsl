@@ -75,7 +75,7 @@ vec2 vssm_page_part(ShadowCoord c, ShadowLight l, SatBox box, ivec2 page, ivec2 
       for (int i = 0; i < 4; ++i) corner[j][i] = unit * uint(lx[i] * ly[j]);
     }
   }
-  return sat_weighted_sum(box, corner);
+  return sat_weighted_sum(corner, box.wx, box.wy);
 }
 
 // sat_box_mean over paged face `c` (light `l`, `extent` map texels a side, `factor` atlas
@@ -124,8 +124,10 @@ float vssm_shadow_face(ShadowLight light, int layer, vec3 p_world, vec3 n_world)
   float share = light.projection.z > 0.0 ? light.projection.z : 1.0;
   ivec2 map = textureSize(moments_map, 0).xy;
   float texels = max(float(map.x) * share, 1.0);
+#ifdef SHADOW_PAGE_TABLES
   int factor = max(textureSize(atlas, 0).x / max(map.x, 1), 1);
   if (light.projection.z < 0.0) texels = max(light.projection.y / float(factor), 1.0);  // paged
+#endif
   ShadowLookup q = shadow_offset_lookup(light, layer, p_world, n_world, texels);
   VssmFace f;
   f.c = shadow_coord(shadow_faces[q.layer], q.light, q.layer, q.position);
@@ -133,8 +135,10 @@ float vssm_shadow_face(ShadowLight light, int layer, vec3 p_world, vec3 n_world)
   f.light = q.light;
   f.last = ivec2(ceil(vec2(map) * share)) - 1;
   f.first = ivec2(round(f.c.origin * vec2(map)));  // the face's corner in the table
+#ifdef SHADOW_PAGE_TABLES
   f.extent = max((int(light.projection.y) + factor - 1) / factor, 1);
   f.factor = factor;
+#endif
   f.scale = sat_scale(map);
   float t = shadow_depth_fraction(q.light, f.c.depth);
   vec2 centre = f.c.uv * texels;
