@@ -7,7 +7,8 @@
 // and the code short; a face is at most a few hundred texels a side. Over a paged atlas
 // (PAGED) the table is one per placed page instead, summing from the page's own corner:
 // the pool does not keep a face's pages together, and the lookup adds up the pages a box
-// covers (vssm_shadow.glsl).
+// covers (vssm_shadow.glsl). There the record list launches several workgroups per face,
+// which take its pages in turn.
 
 #include "moments_common.glsl"
 #include "../common/summed_area.glsl"
@@ -50,9 +51,9 @@ void sum_pages(DerivedPaged f, float scale) {
   for (uint k = derived_first_page(); k < pages; k += derived_page_stride()) {
     ivec3 place = derived_page_place(f, ivec2(int(k) % f.pages_x, int(k) / f.pages_x));
     if (place.z < 0) continue;  // uniform: the whole workgroup reads one entry
+    // Pages lie apart in the map, so the next page's rows may start while this page's
+    // columns are summed: no barrier between them.
     sum_block(place.xy * per_page, ivec2(used), place.z, scale);
-    memoryBarrierImage();
-    barrier();  // the next page's rows start before this page's columns end otherwise
   }
 }
 #endif

@@ -69,7 +69,11 @@ vec2 vssm_page_part(ShadowCoord c, ShadowLight l, SatBox box, ivec2 page, ivec2 
       }
     }
   } else {
-    vec2 m = vssm_tile_part(l, entry, first, ivec4(lx.x, ly.x, lx.w, ly.w), factor);
+    // The texels the part covers: up to b's, or b - 1's where b's weight is 0.
+    ivec2 end = clamp(ivec2(box.xs.z, box.ys.z) - first +
+                          ivec2(box.wx[1].y > 0.0 ? 1 : 0, box.wy[1].y > 0.0 ? 1 : 0),
+                      ivec2(0), size);
+    vec2 m = vssm_tile_part(l, entry, first, ivec4(lx.x, ly.x, end), factor);
     uvec2 unit = uvec2(round(m * scale));
     for (int j = 0; j < 4; ++j) {
       for (int i = 0; i < 4; ++i) corner[j][i] = unit * uint(lx[i] * ly[j]);
