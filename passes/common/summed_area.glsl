@@ -27,19 +27,27 @@ struct SatBox {
   vec2 size;  // hi - lo
 };
 
-SatBox sat_box(vec2 lo, vec2 hi, vec2 extent) {
+// The box [lo, hi) clipped to `extent`: its whole-texel corners a, b and fractions fa, fb.
+void sat_edges(vec2 lo, vec2 hi, vec2 extent, out ivec2 a, out ivec2 b, out vec2 fa, out vec2 fb,
+               out vec2 size) {
   lo = clamp(lo, vec2(0.0), extent - 1.0);
   hi = clamp(hi, lo + 1.0, extent);
-  ivec2 a = ivec2(floor(lo));
-  ivec2 b = ivec2(floor(hi));
-  vec2 fa = lo - vec2(a);
-  vec2 fb = hi - vec2(b);
+  a = ivec2(floor(lo));
+  b = ivec2(floor(hi));
+  fa = lo - vec2(a);
+  fb = hi - vec2(b);
+  size = hi - lo;
+}
+
+SatBox sat_box(vec2 lo, vec2 hi, vec2 extent) {
+  ivec2 a, b;
+  vec2 fa, fb;
   SatBox box;
+  sat_edges(lo, hi, extent, a, b, fa, fb, box.size);
   box.xs = ivec4(a.x, a.x + 1, b.x, b.x + 1);
   box.ys = ivec4(a.y, a.y + 1, b.y, b.y + 1);
   box.wx = vec2[2](vec2(1.0 - fa.x, fa.x), vec2(1.0 - fb.x, fb.x));
   box.wy = vec2[2](vec2(1.0 - fa.y, fa.y), vec2(1.0 - fb.y, fb.y));
-  box.size = hi - lo;
   return box;
 }
 
@@ -75,18 +83,13 @@ uvec2 sat_corner(ivec2 corner, ivec2 first, ivec2 last, int layer) {
 // layer's [first, first + last]), in a table of `scale`
 // (sat_scale of the whole layer's size):
 // the box is clipped to the face, its fractional edges weighted exactly (sat_box).
-// Its first lines repeat sat_box's rather than call it: through sat_box (and the paged
-// lookup's texture-size query, since compiled out) the squares' VSSM lighting measured
-// 1.03-1.05x on the lent H100; written out, its optimised SPIR-V is the earlier one's but
-// for four copies of the weight arrays into sat_weighted_sum.
+// Not through sat_box: with the struct's copy the squares' VSSM lighting measured
+// 1.03-1.05x on the lent H100; this way its optimised SPIR-V is the earlier one's but for
+// four copies of the weight arrays into sat_weighted_sum.
 vec2 sat_box_mean(vec2 lo, vec2 hi, ivec2 first, ivec2 last, int layer, float scale) {
-  vec2 extent = vec2(last + 1);
-  lo = clamp(lo, vec2(0.0), extent - 1.0);
-  hi = clamp(hi, lo + 1.0, extent);
-  ivec2 a = ivec2(floor(lo));
-  ivec2 b = ivec2(floor(hi));
-  vec2 fa = lo - vec2(a);
-  vec2 fb = hi - vec2(b);
+  ivec2 a, b;
+  vec2 fa, fb, size;
+  sat_edges(lo, hi, vec2(last + 1), a, b, fa, fb, size);
   uvec2 c[4][4];
   ivec4 xs = ivec4(a.x, a.x + 1, b.x, b.x + 1);
   ivec4 ys = ivec4(a.y, a.y + 1, b.y, b.y + 1);
@@ -95,7 +98,6 @@ vec2 sat_box_mean(vec2 lo, vec2 hi, ivec2 first, ivec2 last, int layer, float sc
   }
   vec2 wx[2] = vec2[2](vec2(1.0 - fa.x, fa.x), vec2(1.0 - fb.x, fb.x));
   vec2 wy[2] = vec2[2](vec2(1.0 - fa.y, fa.y), vec2(1.0 - fb.y, fb.y));
-  vec2 size = hi - lo;
   return sat_weighted_sum(c, wx, wy) / (scale * size.x * size.y);
 }
 #endif
