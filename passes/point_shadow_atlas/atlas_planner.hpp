@@ -140,7 +140,8 @@ struct AtlasFrame {
   // Records [0, live_records) are what the GPU takes this frame (the upload, the face
   // decision): every record on a clear_all frame, else those a light owns now or owned
   // on the last frame (which read "no owner" once more). The others read "no owner"
-  // already, wherever the GPU holds them: work per frame follows the lights.
+  // already in the face decision's own copy, which writes the graph's shadowData whole
+  // (that buffer need not keep last frame's words): work per frame follows the lights.
   std::uint32_t live_records = 0;
   AtlasStats stats;
 };

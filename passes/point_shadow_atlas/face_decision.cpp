@@ -352,6 +352,7 @@ void FaceDecision::record(fgvk::ExecuteContext& context, const AtlasFrame& frame
   push.pool_side = layout.face_size >> shared::kPageShift;
   push.pool_fallback = layout.pool_fallback ? 1u : 0u;
   push.frame_number = static_cast<std::uint32_t>(context.frame.frame_index);
+  push.records = layers;
   if (receivers_) {
     const fgvk::BoundImage& depth = context.bindings.required_image(port::kDepth);
     push.depth_size = {depth.extent.width, depth.extent.height};
@@ -366,7 +367,7 @@ void FaceDecision::record(fgvk::ExecuteContext& context, const AtlasFrame& frame
   if (pool_) reclaim(context, slot, push);
   bind(context, decide_, slot);
   vkCmdPushConstants(cmd, decide_.layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
-  vkCmdDispatch(cmd, group_count(std::max(push.copy_vec4s, live_), shared::kDecideGroup), 1, 1);
+  vkCmdDispatch(cmd, group_count(std::max(push.copy_vec4s, layers), shared::kDecideGroup), 1, 1);
   if (pool_) publish(context, slot, push);
   barriers(cmd, {list_, args_, content_, drawn_, stats_}, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
            kStorage, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT,

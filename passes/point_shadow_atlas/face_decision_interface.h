@@ -70,6 +70,8 @@ ANTUMBRA_PUSH_CONSTANTS(DecisionPush) {
   uint reclaim_pass;   // shadow_pool_reclaim.comp: 0 counts the buckets, 1 fills them
   uint pool_side;      // pages per side of an atlas layer (atlas width >> ANTUMBRA_PAGE_SHIFT)
   uint pool_fallback;  // 1: a needed page without a pool page goes to its fallback tile
+  uint records;        // face records in the shadow data; those from `layers` on are no light's
+  uint pad;            // the C++ struct's size: a multiple of its uvec2's alignment
 };
 
 ANTUMBRA_BINDING(kDecideShadowIn, 0)   // this frame's shadow data as the CPU wrote it

@@ -433,14 +433,20 @@ void PointShadowAtlasPass::upload(fgvk::ExecuteContext& context, const AtlasFram
   for (std::size_t i = 0; i < frame.lights.size() && i < tinted_.size(); ++i) {
     lights[i].params.w = tinted_[i] ? 1.0f : 0.0f;
   }
-  // The records the GPU takes this frame: the others read "no owner" already.
+  // The compute rasteriser's decision takes the records it decides on this frame: the
+  // others read "no owner" in its own copy, which it writes whole into the graph's
+  // buffer (after deciding info.z/w). The hardware path copies into the graph's buffer
+  // itself, so all of them: that buffer need not hold last frame's words (a new one
+  // after a reload, or memory it shares with other transient resources).
+  const bool hardware = params_.rasterizer == ShadowRasterizer::hardware;
+  const std::uint32_t records =
+      hardware ? static_cast<std::uint32_t>(frame.faces.size()) : frame.live_records;
   std::memcpy(out + kShadowFacesOffset, frame.faces.data(),
-              std::size_t{frame.live_records} * sizeof(ShadowFace));
-  // The compute rasteriser's decision publishes it (after deciding info.z/w).
-  if (params_.rasterizer == ShadowRasterizer::hardware) {
+              std::size_t{records} * sizeof(ShadowFace));
+  if (hardware) {
     copy_shadow_data(context.cmd, {slot.staging, lights_high_},
                      context.bindings.buffer(port::kShadowData)->buffer,
-                     shadow_data_bytes(frame.live_records));
+                     shadow_data_bytes(records));
   }
 
   // Entries grouped by how they are drawn (draw_layered draws each group in one call).

@@ -276,8 +276,16 @@ void fill_unknown(Survey r) {
 void main() {
   uint i = gl_GlobalInvocationID.x;
   if (i < copy_vec4s) words_out[i] = words_in[i];  // lights past them are never read
-  if (i >= layers) return;
   uint face = header_vec4s + i * kFaceVec4s;
+  if (i >= layers) {
+    // No light's record (AtlasFrame::live_records), written all the same: the graph's
+    // shadowData need not hold last frame's words (a new buffer after a reload, or memory
+    // it shares with other transient resources), and readers walk every record.
+    if (i < records) {
+      for (uint k = 0u; k < kFaceVec4s; ++k) words_out[face + k] = words_in[face + k];
+    }
+    return;
+  }
   for (uint k = 0u; k < 4u; ++k) words_out[face + k] = words_in[face + k];
   uvec4 info = words_in[face + 4u];
   g_layer = i;
