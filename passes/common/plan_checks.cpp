@@ -34,6 +34,18 @@ void add_pass_error(const fg::GraphDesc& graph, const fg::PlanPass& pass, const 
                                       pointer));
 }
 
+void check_kept_between_frames(const fg::PlanPass& pass, const fg::Plan& plan, fg::PortId port,
+                               const std::string& what, const fg::GraphDesc& graph,
+                               base::Diagnostics& diagnostics) {
+  const auto* resource = bound_resource(pass, plan, port);
+  if (resource == nullptr || resource->persistent || resource->imported) return;
+  add_pass_error(graph, pass, codes::graph::kNotKeptBetweenFrames,
+                 "'" + resource->name + "' must be persistent (\"persistent\": true): it keeps " +
+                     what + " from frame to frame, and a transient resource's contents are " +
+                     "undefined at its first use in each frame",
+                 "/out/" + std::string(port.name()), diagnostics);
+}
+
 void check_paged_map_factor(const fg::PlanPass& pass, const fg::Plan& plan, fg::PortId map,
                             const fg::GraphDesc& graph, base::Diagnostics& diagnostics) {
   const auto* atlas = bound_resource(pass, plan, port::kAtlas);

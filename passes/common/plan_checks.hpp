@@ -25,6 +25,14 @@ void add_pass_error(const fg::GraphDesc& graph, const fg::PlanPass& pass, const 
                     const std::string& message, const std::string& suffix,
                     base::Diagnostics& diagnostics);
 
+// An output `pass` keeps work in from frame to frame (`what`: cached faces, their filtered
+// texels) must be persistent or imported: a transient's contents are undefined at its first
+// use in each frame (docs/architecture.md, plan_barriers), and may be another resource's
+// whose memory it shares (FG093, at the port).
+void check_kept_between_frames(const fg::PlanPass& pass, const fg::Plan& plan, fg::PortId port,
+                               const std::string& what, const fg::GraphDesc& graph,
+                               base::Diagnostics& diagnostics);
+
 // A map derived from a paged atlas (`pageTables` bound to `pass`) keeps the pool's layout
 // (derived_pages.glsl): each of its texels must cover atlas texels of one page, so the
 // atlas texels per map texel (bound at `map`) must divide the page size (FG092).

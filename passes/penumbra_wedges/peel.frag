@@ -55,7 +55,14 @@ void main() {
   float share = sl.projection.z > 0.0 ? sl.projection.z : 1.0;  // 0: the whole layer
   float texel = 2.0 * d * sl.projection.x / max(extent.x * share, 1.0);
   float slope = texel * min(sqrt(max(1.0 - facing * facing, 0.0)) / facing, 8.0);
-  float front = textureLod(previous, vec3(gl_FragCoord.xy / extent, float(layer)), 0.0).r;
+  vec2 map_uv = gl_FragCoord.xy / extent;
+#ifdef PAGED
+  // The second layer peels from the atlas (paged), the third from this pass's second.
+  float front = first_paged != 0u ? wedge_first_depth(previous, layer, map_uv)
+                                  : textureLod(previous, vec3(map_uv, float(layer)), 0.0).r;
+#else
+  float front = textureLod(previous, vec3(map_uv, float(layer)), 0.0).r;
+#endif
   // Nothing in front (the layer before found no surface here): nothing behind it either.
   if (front >= 1.0 || d <= wedge_linearise(sl, front) + gap + 2.0 * slope) discard;
 }

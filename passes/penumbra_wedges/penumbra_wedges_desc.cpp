@@ -32,17 +32,23 @@ void check(const fg::PlanPass& pass, const PenumbraWedgesParams& params, const f
                        std::to_string(params.peeling_depth) + "); unbind it or peel 3 layers",
                    "/out/peeled", diagnostics);
   }
+  // A segment per layer the wedges are drawn into: the atlas's, or over a page pool the
+  // penumbra map's (a face record each).
   const auto* atlas = bound_resource(pass, plan, port::kAtlas);
-  if (atlas != nullptr) {
-    const double bytes = static_cast<double>(atlas->layers) * params.edges_per_face *
+  const auto* map = bound_resource(pass, plan, port::kPenumbraMap);
+  const bool paged = bound_resource(pass, plan, port::kPageTables) != nullptr;
+  const auto* segments = paged && map != nullptr ? map : atlas;
+  if (segments != nullptr) {
+    const double bytes = static_cast<double>(segments->layers) * params.edges_per_face *
                          static_cast<double>(sizeof(shared::Silhouette));
     if (bytes > kMaxSilhouetteBytes) {
       char text[240];
       std::snprintf(text, sizeof text,
-                    "%u atlas layers x %u edges x %zu bytes need a %.0f MiB silhouette buffer, "
+                    "%u %s layers x %u edges x %zu bytes need a %.0f MiB silhouette buffer, "
                     "over the %.0f MiB one storage buffer may take here; lower edgesPerFace",
-                    atlas->layers, params.edges_per_face, sizeof(shared::Silhouette),
-                    bytes / (1024.0 * 1024.0), kMaxSilhouetteBytes / (1024.0 * 1024.0));
+                    segments->layers, paged ? "penumbra map" : "atlas", params.edges_per_face,
+                    sizeof(shared::Silhouette), bytes / (1024.0 * 1024.0),
+                    kMaxSilhouetteBytes / (1024.0 * 1024.0));
       add_pass_error(graph, pass, codes::wedges::kSilhouettesTooLarge, text, "/params/edgesPerFace",
                      diagnostics);
     }
@@ -77,6 +83,16 @@ fg::PassDesc PenumbraWedgesPass::describe() {
        .access = Access::storage_read,
        .stage = Stage::shader,
        .description = "Face matrices and owners (point-shadow-atlas)."},
+      {.name = port::kPageTables,
+       .kind = fg::ResourceKind::buffer,
+       .access = Access::storage_read,
+       .stage = Stage::shader,
+       .optional = true,
+       .description = "A paged atlas's page tables (point-shadow-atlas's pageTables, with "
+                      "pagePool): Z1 is read through them, and each face record keeps its "
+                      "layers of this pass's maps in the layer of its number (records past "
+                      "the penumbra map's layers keep hard edges). Required when the atlas "
+                      "is paged, else leave it unbound."},
       {.name = port::kPenumbraMap,
        .direction = PortDirection::output,
        .access = Access::color_attachment,
@@ -157,7 +173,8 @@ const fg::ParamTable<PenumbraWedgesParams>& PenumbraWedgesPass::param_table() {
                 .max = 262144.0,
                 .description = "Silhouette edges a spot light may draw wedges for (a point "
                                "light 6x); more are dropped with PW002. 64 bytes each per "
-                               "atlas layer, at most 1 GiB in all (PW005)."},
+                               "atlas layer (over a page pool, per penumbra map layer), at "
+                               "most 1 GiB in all (PW005)."},
                &PenumbraWedgesParams::edges_per_face);
   return kTable;
 }

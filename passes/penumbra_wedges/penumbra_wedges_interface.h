@@ -53,6 +53,9 @@ ANTUMBRA_BINDING(kWedgeSecond, 8)
 ANTUMBRA_BINDING(kWedgeMaterials, 9)
 ANTUMBRA_BINDING(kWedgeSrgbTextures, 10)
 ANTUMBRA_BINDING(kWedgeSampler, 11)
+// Over a page pool (point-shadow-atlas pagePool): its page tables, through which the
+// atlas (Z1) is read; shaders compiled with PAGED.
+ANTUMBRA_BINDING(kWedgePageTables, 12)
 
 ANTUMBRA_PUSH_CONSTANTS(PenumbraWedgesPush) {
   uint edge_count;
@@ -64,8 +67,8 @@ ANTUMBRA_PUSH_CONSTANTS(PenumbraWedgesPush) {
   float beta;     // metres: inner fragments this far behind Z1 are dropped
   float gap;      // metres: peeling skips surfaces this close behind the layer in front
   uint peeling_depth;
-  uint pad0;
-  vec2 extent;  // the rendering's size in texels
+  uint first_paged;  // 1: kWedgeFirst is the atlas and a page pool (read through the tables)
+  vec2 extent;       // the rendering's size in texels
 };
 
 ANTUMBRA_SHARED_END

@@ -15,6 +15,7 @@
 #include "common/frame_data.hpp"
 #include "common/frame_resources.hpp"
 #include "common/ports.hpp"
+#include "common/shadow_data.hpp"
 #include "penumbra_wedges_interface.h"
 #include "shared/limits.h"
 #include "shared/material_textures.h"
@@ -37,8 +38,9 @@ constexpr VkFormat kSecondFormat = VK_FORMAT_D32_SFLOAT;
 constexpr VkFormat kWedgeDepthFormat = VK_FORMAT_D16_UNORM;
 constexpr std::uint32_t kGroup = ANTUMBRA_WEDGE_GROUP;
 
-gpu::DescriptorSetLayoutBuilder wedge_bindings() {
+gpu::DescriptorSetLayoutBuilder wedge_bindings(bool paged) {
   gpu::DescriptorSetLayoutBuilder b;
+  if (paged) b.storage_buffer(shared::kWedgePageTables, kStages);
   b.storage_buffer(shared::kWedgeShadowData, kStages)
       .storage_buffer(shared::kWedgeVertices, kStages)
       .storage_buffer(shared::kWedgeEdges, kStages)
@@ -104,12 +106,29 @@ PenumbraWedgesPass::PenumbraWedgesPass(const fg::PlanPass& pass)
     : params_(param_table().read(pass.params)) {
 }
 
+std::uint32_t PenumbraWedgesPass::drawn_layers(const fgvk::PassBindings& bindings) const {
+  const std::uint32_t map = bindings.required_image(port::kPenumbraMap).layers;
+  if (!paged_) return std::min(bindings.required_image(port::kAtlas).layers, map);
+  const std::size_t bytes = bindings.buffer(port::kShadowData)->size;
+  return std::min(face_records(bytes, 1), map);
+}
+
+void PenumbraWedgesPass::shared_descriptors(gpu::PushDescriptors& descriptors,
+                                            const fgvk::PassBindings& bindings) const {
+  descriptors.storage_buffer(shared::kWedgeShadowData, bindings.buffer(port::kShadowData)->buffer);
+  if (paged_) {
+    descriptors.storage_buffer(shared::kWedgePageTables,
+                               bindings.buffer(port::kPageTables)->buffer);
+  }
+}
+
 void PenumbraWedgesPass::prepare(fgvk::PrepareContext& context) {
   name_ = context.pass.name;
   const auto& b = context.bindings;
   const auto& penumbra = b.required_image(port::kPenumbraMap);
+  paged_ = b.buffer(port::kPageTables) != nullptr;
   // The compiler caps the buffer at 1 GiB (PW005); a device may bind less.
-  const std::uint32_t layers = std::min(b.required_image(port::kAtlas).layers, penumbra.layers);
+  const std::uint32_t layers = drawn_layers(b);
   const VkDeviceSize silhouette_bytes =
       VkDeviceSize{layers} * params_.edges_per_face * sizeof(Silhouette);
   if (silhouette_bytes > context.gpu.limits().maxStorageBufferRange) {
@@ -125,13 +144,18 @@ void PenumbraWedgesPass::prepare(fgvk::PrepareContext& context) {
     throw fgvk::PassError("penumbra-wedges: silhouette buffer too large", diagnostics);
   }
   shader_files_.clear();
-  const gpu::DescriptorSetLayoutBuilder bindings = wedge_bindings();
-  auto silhouettes = load_shader(context, "penumbra_wedges/silhouettes.comp", shader_files_);
-  auto args = load_shader(context, "penumbra_wedges/wedge_args.comp", shader_files_);
-  auto peel_vert = load_shader(context, "penumbra_wedges/peel.vert", shader_files_);
-  auto peel_frag = load_shader(context, "penumbra_wedges/peel.frag", shader_files_);
-  auto wedge_vert = load_shader(context, "penumbra_wedges/wedge.vert", shader_files_);
-  auto wedge_frag = load_shader(context, "penumbra_wedges/wedge.frag", shader_files_);
+  const gpu::DescriptorSetLayoutBuilder bindings = wedge_bindings(paged_);
+  std::vector<gpu::ShaderDefine> defines;
+  if (paged_) defines.push_back({"PAGED", "1"});
+  const auto shader = [&](std::string_view file) {
+    return load_shader(context, file, shader_files_, defines);
+  };
+  auto silhouettes = shader("penumbra_wedges/silhouettes.comp");
+  auto args = shader("penumbra_wedges/wedge_args.comp");
+  auto peel_vert = shader("penumbra_wedges/peel.vert");
+  auto peel_frag = shader("penumbra_wedges/peel.frag");
+  auto wedge_vert = shader("penumbra_wedges/wedge.vert");
+  auto wedge_frag = shader("penumbra_wedges/wedge.frag");
   for (const Shader* s : {&silhouettes, &args, &peel_vert, &peel_frag, &wedge_vert, &wedge_frag}) {
     check_shader_interface(name_, *s, bindings, sizeof(PenumbraWedgesPush));
   }
@@ -176,7 +200,7 @@ void PenumbraWedgesPass::execute(fgvk::ExecuteContext& context) {
   const auto& b = context.bindings;
   const auto& atlas = b.required_image(port::kAtlas);
   const auto& penumbra = b.required_image(port::kPenumbraMap);
-  const std::uint32_t layers = std::min(atlas.layers, penumbra.layers);
+  const std::uint32_t layers = drawn_layers(b);
   update_edges(context);
   ensure_images(context, penumbra.extent, layers);
 
@@ -215,7 +239,8 @@ void PenumbraWedgesPass::execute(fgvk::ExecuteContext& context) {
   if (params_.peeling_depth >= 2) {
     begin_depth_target(cmd, second_.handle(), kSecondFormat);
     peel(context,
-         {atlas.array_view, atlas.layout, &second_views_, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL},
+         {atlas.array_view, atlas.layout, &second_views_, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
+          paged_},
          penumbra.extent, layers);
     gpu::ImageBarrier readable;
     readable.image = second_.handle();
@@ -240,7 +265,8 @@ void PenumbraWedgesPass::execute(fgvk::ExecuteContext& context) {
 
 // One block for every dispatch and draw; `layer` and `extent` are the rendering's.
 void PenumbraWedgesPass::push_constants(VkCommandBuffer cmd, std::uint32_t layers,
-                                        std::uint32_t layer, VkExtent2D extent) const {
+                                        std::uint32_t layer, VkExtent2D extent,
+                                        bool first_paged) const {
   const PenumbraWedgesPush push{
       .edge_count = edge_count_,
       .capacity = params_.edges_per_face,
@@ -251,7 +277,7 @@ void PenumbraWedgesPass::push_constants(VkCommandBuffer cmd, std::uint32_t layer
       .beta = params_.beta,
       .gap = params_.gap,
       .peeling_depth = params_.peeling_depth,
-      .pad0 = 0,
+      .first_paged = first_paged ? 1u : 0u,
       .extent = {static_cast<float>(extent.width), static_cast<float>(extent.height)}};
   vkCmdPushConstants(cmd, layout_, kStages, 0, sizeof push, &push);
 }
@@ -369,9 +395,8 @@ void PenumbraWedgesPass::extract(fgvk::ExecuteContext& context, std::uint32_t la
   const VkBuffer vertices =
       context.frame.vertices != VK_NULL_HANDLE ? context.frame.vertices : edges_.handle();
   gpu::PushDescriptors descriptors;
-  descriptors
-      .storage_buffer(shared::kWedgeShadowData, context.bindings.buffer(port::kShadowData)->buffer)
-      .storage_buffer(shared::kWedgeVertices, vertices)
+  shared_descriptors(descriptors, context.bindings);
+  descriptors.storage_buffer(shared::kWedgeVertices, vertices)
       .storage_buffer(shared::kWedgeEdges, edges_.handle())
       .storage_buffer(shared::kWedgeNormals, normals_.handle())
       .storage_buffer(shared::kWedgeSilhouettes, silhouettes_buffer_.handle())
@@ -414,7 +439,8 @@ void PenumbraWedgesPass::extract(fgvk::ExecuteContext& context, std::uint32_t la
 // on the first frame that has such casters (lazy_pipeline.hpp).
 void PenumbraWedgesPass::prepare_cut_peel(fgvk::PrepareContext& context,
                                           const gpu::DescriptorSetLayoutBuilder& bindings) {
-  const std::vector<gpu::ShaderDefine> cut{{"CUT", ""}};
+  std::vector<gpu::ShaderDefine> cut{{"CUT", ""}};
+  if (paged_) cut.push_back({"PAGED", "1"});
   auto vert = load_shader(context, "penumbra_wedges/peel.vert", shader_files_, cut);
   auto frag = load_shader(context, "penumbra_wedges/peel.frag", shader_files_, cut);
   check_shader_interface(name_, vert, bindings, sizeof(PenumbraWedgesPush));
@@ -443,8 +469,9 @@ void PenumbraWedgesPass::peel(fgvk::ExecuteContext& context, const PeelStep& ste
   const VkCommandBuffer cmd = context.cmd;
   if (context.frame.index_count == 0 || targets.size() < layers) return;
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, peel_);
-  gpu::PushDescriptors()
-      .storage_buffer(shared::kWedgeShadowData, context.bindings.buffer(port::kShadowData)->buffer)
+  gpu::PushDescriptors descriptors;
+  shared_descriptors(descriptors, context.bindings);
+  descriptors
       .combined_image_sampler(shared::kWedgeFirst, step.previous, context.samplers.nearest_clamp,
                               step.previous_layout)
       .storage_buffer(shared::kWedgeMaterials, context.frame.materials)
@@ -467,7 +494,7 @@ void PenumbraWedgesPass::peel(fgvk::ExecuteContext& context, const PeelStep& ste
     rendering.pDepthAttachment = &depth;
     gpu::cmd_begin_rendering(cmd, &rendering);
     set_viewport(cmd, extent);
-    push_constants(cmd, layers, layer, extent);
+    push_constants(cmd, layers, layer, extent, step.previous_paged);
     bind_scene_geometry(cmd, context.frame);
     draw_by_class(cmd, context.frame, pipelines, kBothHalves);
     gpu::cmd_end_rendering(cmd);
@@ -481,9 +508,9 @@ void PenumbraWedgesPass::draw_wedges(fgvk::ExecuteContext& context, std::uint32_
   begin_depth_target(cmd, wedge_depth_.handle(), kWedgeDepthFormat);
   const bool second = params_.peeling_depth >= 2;
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, wedges_);
-  gpu::PushDescriptors()
-      .storage_buffer(shared::kWedgeShadowData, context.bindings.buffer(port::kShadowData)->buffer)
-      .storage_buffer(shared::kWedgeSilhouettes, silhouettes_buffer_.handle())
+  gpu::PushDescriptors descriptors;
+  shared_descriptors(descriptors, context.bindings);
+  descriptors.storage_buffer(shared::kWedgeSilhouettes, silhouettes_buffer_.handle())
       .combined_image_sampler(shared::kWedgeFirst, atlas.array_view, context.samplers.nearest_clamp,
                               atlas.layout)
       .combined_image_sampler(shared::kWedgeSecond,
@@ -536,16 +563,29 @@ void PenumbraWedgesPass::report(fgvk::ExecuteContext& context) const {
                 "%u edges (%u open) over %u welded vertices, %u depth layers; %.1f MiB of its own "
                 "and %.1f MiB in the graph's penumbraMap and peeled",
                 edge_count_, boundary_edges_, welded_vertices_, params_.peeling_depth, own, graph);
+  std::string message = text;
+  base::Json details = {{"edges", edge_count_},
+                        {"openEdges", boundary_edges_},
+                        {"weldedVertices", welded_vertices_},
+                        {"peelingDepth", params_.peeling_depth},
+                        {"privateMiB", own},
+                        {"graphMiB", graph}};
+  if (paged_) {
+    // Over a page pool a face record's maps are the layer of its number: the map's layers
+    // bound which records get wedges.
+    const std::uint32_t drawn = drawn_layers(context.bindings);
+    const std::uint32_t records = face_records(context.bindings.buffer(port::kShadowData)->size, 1);
+    message += "; over a page pool: face records 0-" + std::to_string(drawn - 1) + " of " +
+               std::to_string(records) + " have layers in the penumbra map";
+    if (drawn < records) message += " (the others' shadows keep hard edges)";
+    details["recordsWithMaps"] = drawn;
+    details["records"] = records;
+  }
   context.report.replace({.pass = name_,
                           .code = codes::wedges::kSummary,
                           .severity = base::Severity::note,
-                          .message = text,
-                          .details = {{"edges", edge_count_},
-                                      {"openEdges", boundary_edges_},
-                                      {"weldedVertices", welded_vertices_},
-                                      {"peelingDepth", params_.peeling_depth},
-                                      {"privateMiB", own},
-                                      {"graphMiB", graph}}});
+                          .message = message,
+                          .details = details});
   if (last_dropped_ > 0) context.report.replace(dropped_message(last_dropped_));
 }
 

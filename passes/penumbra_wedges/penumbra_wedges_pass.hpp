@@ -54,6 +54,7 @@ class PenumbraWedgesPass final : public fgvk::Pass {
     VkImageLayout previous_layout = VK_IMAGE_LAYOUT_UNDEFINED;
     const std::vector<gpu::ImageView>* targets = nullptr;
     VkImageLayout target_layout = VK_IMAGE_LAYOUT_UNDEFINED;
+    bool previous_paged = false;  // `previous` is the atlas, a page pool
   };
   void peel(fgvk::ExecuteContext& context, const PeelStep& step, VkExtent2D extent,
             std::uint32_t layers);
@@ -61,12 +62,21 @@ class PenumbraWedgesPass final : public fgvk::Pass {
                         const gpu::DescriptorSetLayoutBuilder& bindings);
   void draw_wedges(fgvk::ExecuteContext& context, std::uint32_t layers);
   void push_constants(VkCommandBuffer cmd, std::uint32_t layers, std::uint32_t layer,
-                      VkExtent2D extent) const;
+                      VkExtent2D extent, bool first_paged = false) const;
   void report(fgvk::ExecuteContext& context) const;
   [[nodiscard]] fgvk::PassMessage dropped_message(std::uint32_t dropped) const;
 
+  // The layers drawn: a face record each (the atlas's layers, or over a page pool the
+  // records the penumbra map has layers for).
+  [[nodiscard]] std::uint32_t drawn_layers(const fgvk::PassBindings& bindings) const;
+  // Descriptors every dispatch and draw binds besides its own: the shadow data, and over
+  // a page pool its tables.
+  void shared_descriptors(gpu::PushDescriptors& descriptors,
+                          const fgvk::PassBindings& bindings) const;
+
   PenumbraWedgesParams params_;
   std::string name_;
+  bool paged_ = false;  // the atlas is a page pool (pageTables bound): shaders with PAGED
   gpu::DescriptorSetLayout set_layout_;
   gpu::PipelineLayout layout_;
   gpu::Pipeline silhouettes_;

@@ -16,19 +16,19 @@ layout(location = 0) in float in_theta;
 layout(location = 1) flat in uint in_outer;
 layout(location = 0) out vec2 out_penumbra;
 
-float layer_distance(sampler2DArray map, ShadowLight sl) {
-  float depth = textureLod(map, vec3(gl_FragCoord.xy / extent, float(layer)), 0.0).r;
+float layer_distance(float depth, ShadowLight sl) {
   return depth >= 1.0 ? 3.0e38 : wedge_linearise(sl, depth);
 }
 
 void main() {
   ShadowLight sl = shadow_lights[shadow_faces[layer].info.x];
   float d = wedge_linearise(sl, gl_FragCoord.z);
-  float z1 = layer_distance(first_layer, sl);
+  vec2 map_uv = gl_FragCoord.xy / extent;
+  float z1 = layer_distance(wedge_first_depth(first_layer, layer, map_uv), sl);
   if (in_outer != 0u) {
     if (d >= z1) discard;
   } else {
-    float z2 = layer_distance(second_layer, sl);
+    float z2 = layer_distance(textureLod(second_layer, vec3(map_uv, float(layer)), 0.0).r, sl);
     if (d > z2 || d > z1 + beta) discard;
   }
   out_penumbra = vec2(in_theta, in_outer != 0u ? d : -d);

@@ -15,6 +15,17 @@ layout(set = 0, binding = kWedgeShadowData, std430) readonly buffer ShadowData {
   ShadowFace shadow_faces[];
 };
 
+#ifdef PAGED
+// A page pool (docs/technique.md, "Page pool"): a paged light's faces have no place of
+// their own in the atlas, so this pass keeps each face record's depth layers and penumbra
+// map in the layer of the record's number and reads Z1 through the record's page table.
+#define SHADOW_PAGE_TABLES
+layout(set = 0, binding = kWedgePageTables, std430) readonly buffer PageTables {
+  uint page_tables[];
+};
+#include "../common/shadow_sampling.glsl"
+#endif
+
 bool wedge_light_supported(ShadowLight l) {
   return l.params.z >= 0.0 && l.direction_type.w < 1.5;  // point or spot with faces
 }
@@ -24,10 +35,14 @@ uint wedge_segment_capacity(ShadowLight l) {
 }
 
 // Whether face record `record` lies where this pass draws its wedges: at the corner of
-// the layer of its own number. Faces packed into shared layers (shadow_data.h; per-light
-// resolution or a full atlas) are not drawn into yet: their lights' edges stay as the
-// lighting's hard test draws them (penumbra_map_shadow.glsl).
+// the layer of its own number, or paged (any record below `layers`, the penumbra map's).
+// Faces packed into shared layers (shadow_data.h; per-light resolution or a full atlas)
+// are not drawn into yet: their lights' edges stay as the lighting's hard test draws them
+// (penumbra_map_shadow.glsl).
 bool wedge_face_in_own_layer(uint record, ShadowFace face) {
+#ifdef PAGED
+  if (shadow_lights[face.info.x].projection.z < 0.0) return true;  // paged: no place but ours
+#endif
   uint layer = (face.info.y >> ANTUMBRA_FACE_LAYER_SHIFT) & ((1u << ANTUMBRA_FACE_LAYER_BITS) - 1u);
   return layer == record && (face.info.y >> ANTUMBRA_FACE_COLUMN_SHIFT) == 0u;
 }
@@ -39,6 +54,22 @@ int wedge_face_light(uint layer) {
   if (face.info.z == 0u || face.info.x >= ANTUMBRA_MAX_SHADOW_LIGHTS) return -1;
   if (!wedge_face_in_own_layer(layer, face)) return -1;
   return wedge_light_supported(shadow_lights[face.info.x]) ? int(face.info.x) : -1;
+}
+
+// Z1, the atlas's depth, at `map_uv` of face record `record` (the rendering's uv: its
+// layer is the record's). A face in its own layer lies at the layer's corner; a paged
+// face's texel is read through its page table, far depth where its page has no place.
+float wedge_first_depth(sampler2DArray atlas, uint record, vec2 map_uv) {
+#ifdef PAGED
+  ShadowFace face = shadow_faces[record];
+  ShadowLight l = shadow_lights[face.info.x];
+  if (l.projection.z < 0.0) {
+    ShadowPages p =
+        shadow_pages(int(face.info.y >> ANTUMBRA_FACE_LAYER_SHIFT), l.projection.y, map_uv);
+    return shadow_page_depth(atlas, p, map_uv);
+  }
+#endif
+  return textureLod(atlas, vec3(map_uv, float(record)), 0.0).r;
 }
 
 float wedge_linearise(ShadowLight l, float depth) {

@@ -106,6 +106,9 @@ void check(const fg::PlanPass& pass, const PointShadowAtlasParams& params, const
   const auto* atlas = bound_resource(pass, plan, port::kAtlas);
   const auto* data = bound_resource(pass, plan, port::kShadowData);
   if (atlas == nullptr) return;  // a required port: the compiler has reported it
+  check_kept_between_frames(pass, plan, port::kAtlas, "the faces it caches", graph, diagnostics);
+  check_kept_between_frames(pass, plan, port::kColour, "the tints of the faces it caches", graph,
+                            diagnostics);
   if (atlas->layers > kMaxAtlasLayers) {
     add_pass_error(graph, pass, codes::shadow_atlas::kTooManyLayers,
                    "the atlas '" + atlas->name + "' has " + std::to_string(atlas->layers) +

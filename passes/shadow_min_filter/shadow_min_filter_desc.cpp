@@ -12,6 +12,8 @@ namespace {
 void check(const fg::PlanPass& pass, const ShadowMinFilterParams& /*params*/, const fg::Plan& plan,
            const fg::GraphDesc& graph, base::Diagnostics& diagnostics) {
   check_paged_map_factor(pass, plan, port::kMinDepth, graph, diagnostics);
+  check_kept_between_frames(pass, plan, port::kMinDepth, "the filtered texels of cached faces",
+                            graph, diagnostics);
 }
 
 }  // namespace

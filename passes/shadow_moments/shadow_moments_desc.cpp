@@ -17,6 +17,8 @@ void check(const fg::PlanPass& pass, const ShadowMomentsParams& params, const fg
            const fg::GraphDesc& graph, base::Diagnostics& diagnostics) {
   const auto* out = bound_resource(pass, plan, port::kMoments);
   if (out == nullptr) return;
+  check_kept_between_frames(pass, plan, port::kMoments, "the moments of cached faces", graph,
+                            diagnostics);
   const MomentTechnique technique = params.storage.technique;
   const bool four = out->format == fg::Format::rgba16f || out->format == fg::Format::rgba32f;
   const bool table = out->format == fg::Format::rg32ui;

@@ -39,10 +39,18 @@ float penumbra_map_face(ShadowLight sl, int layer, vec3 p_world, vec3 n_world) {
   if (!filter_coord(sl, layer, p_world, n_world, c)) return 1.0;
   float lit = filter_hard(c);
   // penumbra-wedges draws only faces at the corner of their own layer (wedges_common.glsl,
-  // wedge_face_in_own_layer); a face packed elsewhere keeps its hard edge.
+  // wedge_face_in_own_layer); a face packed elsewhere keeps its hard edge. Over a page
+  // pool it keeps each paged face in the layer of its record, where the map has one.
+  vec2 uv = clamp(c.uv, vec2(0.5 * c.texel), vec2(1.0 - 0.5 * c.texel));
+#ifdef SHADOW_PAGE_TABLES
+  bool paged = c.pages.table >= 0;
+  if (paged && layer >= textureSize(penumbra_map, 0).z) return lit;
+  if (!paged && (int(c.layer) != layer || any(notEqual(c.origin, vec2(0.0))))) return lit;
+  vec3 at = paged ? vec3(uv, float(layer)) : vec3(uv * c.share + c.origin, c.layer);
+#else
   if (int(c.layer) != layer || any(notEqual(c.origin, vec2(0.0)))) return lit;
-  vec3 at = vec3(clamp(c.uv, vec2(0.5 * c.texel), vec2(1.0 - 0.5 * c.texel)) * c.share + c.origin,
-                 c.layer);
+  vec3 at = vec3(uv * c.share + c.origin, c.layer);
+#endif
   vec2 texel = textureLod(penumbra_map, at, 0.0).rg;
   float wedge = texel.g;
   if (lit > 0.5) {

@@ -366,6 +366,34 @@ TEST(BuiltinGraphs, SdfGraphMistakesAreLocated) {
   expect_mistakes_located("sdf.json", cases);
 }
 
+// Caches kept between frames: the atlas (its cached faces), its colour map (their tints),
+// the min-filtered map and the moments (their cached faces' texels) declared without
+// "persistent" are refused at the port that writes them: a transient's contents are
+// undefined at its first use in each frame, and another resource may share its memory.
+TEST(BuiltinGraphs, CachesThatAreNotPersistentAreLocated) {
+  const auto layers_kept = [](const char* format) {
+    return "\"format\": \"" + std::string(format) +
+           "\",\n      \"size\": [\n        1024,\n        1024\n      ],\n      \"layers\": 96,\n"
+           "      \"persistent\": true";
+  };
+  const auto dropped = [&](const char* format) {
+    const std::string kept = layers_kept(format);
+    return kept.substr(0, kept.rfind(','));
+  };
+  const Mistake min_cases[] = {
+      {layers_kept("d32f"), dropped("d32f"), "FG093", "/passes/2/out/atlas"},
+      {layers_kept("rgba8"), dropped("rgba8"), "FG093", "/passes/2/out/colour"},
+      {"        128\n      ],\n      \"layers\": 96,\n      \"persistent\": true",
+       "        128\n      ],\n      \"layers\": 96", "FG093", "/passes/3/out/minDepth"},
+  };
+  expect_mistakes_located("layered-ssss-min.json", min_cases);
+  const Mistake vsm_cases[] = {
+      {"\"size\": [256, 256], \"layers\": 96, \"persistent\": true",
+       "\"size\": [256, 256], \"layers\": 96", "FG093", "/passes/2/out/moments"},
+  };
+  expect_mistakes_located("vsm.json", vsm_cases);
+}
+
 // Penumbra wedges: a peeling depth of 0 (or 4), the third layer missing for peelingDepth 3
 // or bound without it, a third layer of another size, a penumbra map that does not divide
 // the atlas, and the lighting without the map are refused at their place in the file.

@@ -79,6 +79,9 @@ inline constexpr const char* kLayerCapExceedsStorage = "FG090";  // cap k > laye
 // A port's declared size or layer contract (fg::PortDesc::size_of, layers_of) is broken:
 // "same size as `shadow`", "an exact integer fraction of `atlas`".
 inline constexpr const char* kPortContract = "FG092";
+// A pass keeps work in an output from frame to frame (cached shadow faces, their filtered
+// maps): the resource must be persistent (or imported: the host's to keep).
+inline constexpr const char* kNotKeptBetweenFrames = "FG093";
 
 // The executor could not realise a valid plan on this device.
 inline constexpr const char* kRealiseFailed = "FG100";
