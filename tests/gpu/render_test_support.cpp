@@ -110,6 +110,10 @@ gpu::HostImage read_resource(runtime::RenderSession& session, const std::string&
   if (image == nullptr || bound == nullptr) {
     throw std::runtime_error("resource \"" + resource + "\" is not a realised image");
   }
+  if (layer >= bound->layers) {
+    throw std::out_of_range("resource \"" + resource + "\" has " + std::to_string(bound->layers) +
+                            " layer(s); layer " + std::to_string(layer) + " was asked for");
+  }
   return gpu::read_image(session.gpu(), *image, bound->layout, layer);
 }
 
