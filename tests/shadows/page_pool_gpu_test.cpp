@@ -114,6 +114,54 @@ TEST_F(PagePoolGpuTest, PagedPenumbraWedgesLightAsSquaresDo) {
   EXPECT_EQ(read_hdr(), squares);
 }
 
+// No seam at page borders: a filter whose taps cross from one page of a face into the next
+// reads that page wherever the pool put it. The pool places a face's neighbouring pages
+// apart (not as the face lays them out), and PCF and PCSS light the atrium exactly as the
+// same faces in squares do, where no border exists.
+TEST_F(PagePoolGpuTest, FiltersCrossPageBordersWithoutASeam) {
+  for (const char* file : {"data/graphs/pcf.json", "data/graphs/pcss.json"}) {
+    load_desc(pool_graph(file, false));
+    pool_frame();
+    const auto squares = read_hdr();
+    load_desc(pool_graph(file, true));
+    EXPECT_EQ(pool_frame().missing, 0u) << file;
+    // Borders between two placed pages of a face, and those whose sides lie apart in the
+    // pool (a filter crossing one reads a page that is not the texel beside it).
+    const auto data = read_shadow_data();
+    const std::vector<std::uint32_t> tables = read_tables();
+    std::size_t borders = 0, apart = 0;
+    for (std::uint32_t record = 0; record < 96; ++record) {
+      const auto owned = owned_face(data, record);
+      if (!owned) continue;
+      const auto& [face, light] = *owned;
+      const std::uint32_t pages_x = (static_cast<std::uint32_t>(light.projection.y) + 127) / 128;
+      const std::uint32_t* table = tables.data() + (face.info.y >> 3);
+      const auto place = [&](std::uint32_t x, std::uint32_t y) -> std::optional<glm::uvec3> {
+        const std::uint32_t entry = table[y * pages_x + x];
+        if ((entry & 0x80000000u) == 0u) return std::nullopt;
+        return glm::uvec3(entry & 31u, (entry >> 5) & 31u, (entry >> 10) & 0xFFFFFu);
+      };
+      for (std::uint32_t y = 0; y < pages_x; ++y) {
+        for (std::uint32_t x = 0; x < pages_x; ++x) {
+          const auto here = place(x, y);
+          if (!here) continue;
+          for (const glm::uvec2 step : {glm::uvec2(1, 0), glm::uvec2(0, 1)}) {
+            if (x + step.x >= pages_x || y + step.y >= pages_x) continue;
+            const auto next = place(x + step.x, y + step.y);
+            if (!next) continue;
+            ++borders;
+            apart += *next != *here + glm::uvec3(step, 0u) ? 1u : 0u;
+          }
+        }
+      }
+    }
+    std::printf("%s paged: %zu borders between placed pages, %zu of them apart in the pool\n", file,
+                borders, apart);
+    EXPECT_GT(apart, 20u) << file << ": borders whose pages lie apart";
+    EXPECT_EQ(read_hdr(), squares) << file << ": no seam";
+  }
+}
+
 namespace {
 
 // VSSM over a pool against squares: a box across pages adds its parts' float sums in
