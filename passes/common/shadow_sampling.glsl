@@ -89,6 +89,12 @@ ivec3 shadow_page_at(uint entry, ivec2 t) {
   return ivec3((place.xy << shift) + (t & ((1 << shift) - 1)), place.z);
 }
 
+// The first word of a paged face's page table (page_tables.h: ShadowFace.info.y above the
+// face bits; its light has projection.z < 0).
+int shadow_face_table(ShadowFace face) {
+  return int(face.info.y >> ANTUMBRA_FACE_LAYER_SHIFT);
+}
+
 // The table entry of page `page` of a `texels`-wide face whose table starts at `table`.
 uint shadow_page_entry(int table, int texels, ivec2 page) {
   int pages_x = (texels + (1 << int(ANTUMBRA_PAGE_SHIFT)) - 1) >> int(ANTUMBRA_PAGE_SHIFT);
@@ -324,8 +330,7 @@ ShadowCoord shadow_face_coord(ShadowFace face, ShadowLight l, int index, vec3 wo
   float share = l.projection.z > 0.0 ? l.projection.z : 1.0;
   float texels = l.projection.y > 0.0 ? l.projection.y : 65536.0;
 #ifdef SHADOW_PAGE_TABLES
-  int table =
-      l.projection.z < 0.0 && index >= 0 ? int(face.info.y >> ANTUMBRA_FACE_LAYER_SHIFT) : -1;
+  int table = l.projection.z < 0.0 && index >= 0 ? shadow_face_table(face) : -1;
   ShadowCoord c = ShadowCoord(vec2(0.0), 0.0, vec2(0.0), 1.0, 0.0, false, texels, share,
                               shadow_pages_unread(table, int(texels)));
 #else

@@ -226,7 +226,7 @@ void PenumbraWedgesPass::execute(fgvk::ExecuteContext& context) {
     if (slot.dropped.mapped() != nullptr) std::memset(slot.dropped.mapped(), 0, dropped_bytes);
   }
   last_slot_ = context.frame.slot;
-  report(context);
+  report(context, layers);
 
   extract(context, layers);
   const VkCommandBuffer cmd = context.cmd;
@@ -543,7 +543,7 @@ void PenumbraWedgesPass::draw_wedges(fgvk::ExecuteContext& context, std::uint32_
 // A note in every frame's report: what the wedges are drawn from and their memory; a
 // warning when a light's silhouette did not fit its segment (those edges draw no wedge,
 // so their shadow edge stays hard).
-void PenumbraWedgesPass::report(fgvk::ExecuteContext& context) const {
+void PenumbraWedgesPass::report(fgvk::ExecuteContext& context, std::uint32_t layers) const {
   const auto& penumbra = context.bindings.required_image(port::kPenumbraMap);
   const double texels =
       static_cast<double>(penumbra.extent.width) * penumbra.extent.height * penumbra.layers;
@@ -573,12 +573,11 @@ void PenumbraWedgesPass::report(fgvk::ExecuteContext& context) const {
   if (paged_) {
     // Over a page pool a face record's maps are the layer of its number: the map's layers
     // bound which records get wedges.
-    const std::uint32_t drawn = drawn_layers(context.bindings);
     const std::uint32_t records = face_records(context.bindings.buffer(port::kShadowData)->size, 1);
-    message += "; over a page pool: face records 0-" + std::to_string(drawn - 1) + " of " +
+    message += "; over a page pool: face records 0-" + std::to_string(layers - 1) + " of " +
                std::to_string(records) + " have layers in the penumbra map";
-    if (drawn < records) message += " (the others' shadows keep hard edges)";
-    details["recordsWithMaps"] = drawn;
+    if (layers < records) message += " (the others' shadows keep hard edges)";
+    details["recordsWithMaps"] = layers;
     details["records"] = records;
   }
   context.report.replace({.pass = name_,

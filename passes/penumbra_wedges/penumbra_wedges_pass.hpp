@@ -63,7 +63,8 @@ class PenumbraWedgesPass final : public fgvk::Pass {
   void draw_wedges(fgvk::ExecuteContext& context, std::uint32_t layers);
   void push_constants(VkCommandBuffer cmd, std::uint32_t layers, std::uint32_t layer,
                       VkExtent2D extent, bool first_paged = false) const;
-  void report(fgvk::ExecuteContext& context) const;
+  // `layers`: those drawn this frame (drawn_layers).
+  void report(fgvk::ExecuteContext& context, std::uint32_t layers) const;
   [[nodiscard]] fgvk::PassMessage dropped_message(std::uint32_t dropped) const;
 
   // The layers drawn: a face record each (the atlas's layers, or over a page pool the

@@ -64,8 +64,7 @@ float wedge_first_depth(sampler2DArray atlas, uint record, vec2 map_uv) {
   ShadowFace face = shadow_faces[record];
   ShadowLight l = shadow_lights[face.info.x];
   if (l.projection.z < 0.0) {
-    ShadowPages p =
-        shadow_pages(int(face.info.y >> ANTUMBRA_FACE_LAYER_SHIFT), l.projection.y, map_uv);
+    ShadowPages p = shadow_pages(shadow_face_table(face), l.projection.y, map_uv);
     return shadow_page_depth(atlas, p, map_uv);
   }
 #endif
